@@ -1,0 +1,15 @@
+# Project-wide compiler flags: strict warnings, optional -Werror, sanitizers and coverage.
+add_library(tamias_warnings INTERFACE)
+target_compile_options(tamias_warnings INTERFACE -Wall -Wextra -Wpedantic -Wshadow -Wconversion
+                                                 -Wno-sign-conversion)
+if(TAMIAS_WERROR)
+  target_compile_options(tamias_warnings INTERFACE -Werror)
+endif()
+if(TAMIAS_SANITIZE)
+  add_compile_options(-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)
+  add_link_options(-fsanitize=address,undefined)
+endif()
+if(TAMIAS_COVERAGE)
+  add_compile_options(--coverage -O0)
+  add_link_options(--coverage)
+endif()

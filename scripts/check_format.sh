@@ -1,0 +1,7 @@
+#!/usr/bin/env bash
+# Fails when a C++ file differs from .clang-format's layout.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+files=$(git ls-files '*.cpp' '*.hpp')
+[ -z "$files" ] && exit 0
+clang-format --dry-run --Werror $files

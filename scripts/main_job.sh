@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# The main job: build, run the V&V suite and write the evidence into reports/.
+#   scripts/main_job.sh [--quick]   (--quick skips the coverage build)
+set -uo pipefail
+cd "$(dirname "$0")/.."
+t0=$(date +%s)
+phase() { printf '\n== [%4ds] %s\n' "$(( $(date +%s) - t0 ))" "$*"; }
+quick=0; [ "${1:-}" = "--quick" ] && quick=1
+
+phase "set-up (Debian packages)"
+./scripts/setup.sh || exit 1
+phase "build (Release)"
+cmake -S . -B build -G Ninja -DTAMIAS_WERROR=ON >/dev/null && cmake --build build -j2 || exit 1
+mkdir -p reports/data
+rm -f reports/data/*.json
+
+phase "verification programs"
+while read -r prog; do
+    [ -n "$prog" ] || continue
+    p0=$(date +%s)
+    "$prog" reports/data || echo "   $(basename "$prog") exited non-zero (its checks say why)"
+    echo "   $(basename "$prog"): $(( $(date +%s) - p0 )) s"
+done < build/verification_programs.txt
+
+if [ $quick -eq 0 ]; then
+    phase "coverage build and run (gcovr)"
+    cmake -S . -B build-coverage -G Ninja -DCMAKE_BUILD_TYPE=Debug -DTAMIAS_COVERAGE=ON \
+          -DTAMIAS_BUILD_VERIFICATION=OFF >/dev/null &&
+        cmake --build build-coverage -j2 >/dev/null &&
+        ctest --test-dir build-coverage -j2 -LE compile_fail >/dev/null
+    gcovr -r . --filter 'src/' --json-summary reports/data/coverage.json \
+          --html-details reports/coverage.html build-coverage >/dev/null 2>&1 ||
+        echo "   gcovr failed"
+fi
+
+phase "tests and traceability report"
+/usr/bin/python3 traceability/build_report.py --source . --build build --out reports
+status=$?
+phase "done (exit $status): open reports/index.html"
+exit $status

@@ -1,0 +1,43 @@
+#pragma once
+#include "tamias2d/units/angle.hpp"
+#include "tamias2d/units/vec2.hpp"
+
+namespace tamias2d::model::dd08 {
+using namespace tamias2d::units;
+
+/// Unit collision normal: dimensionless (the SRS gives n the unit m, an erratum: with it, j
+/// would come out in kg s^-1 instead of N s).
+using Normal = Vec2<double>;
+
+/// Inverse mass properties of one body at one contact; a static body has zeros.
+struct InverseInertia {
+    InverseMass inv_m;
+    InverseMomentOfInertia inv_I;
+};
+
+/// \srs{DD8} The denominator of DD8 generalised to two contact points 1 and 2 of the same pair:
+/// K12 = (1/mA + 1/mB) |n|^2 + (r_A1 x n)(r_A2 x n)/I_A + (r_B1 x n)(r_B2 x n)/I_B with |n| = 1.
+/// K11 is DD8's own denominator; K12 couples two simultaneous contacts (see the solver).
+inline InverseMass normal_mass_coupling(InverseInertia A, InverseInertia B, Vec2<Length> r_A1,
+                                        Vec2<Length> r_B1, Vec2<Length> r_A2, Vec2<Length> r_B2,
+                                        Normal n) {
+    const auto a1 = per_radian(cross(r_A1, n));
+    const auto a2 = per_radian(cross(r_A2, n));
+    const auto b1 = per_radian(cross(r_B1, n));
+    const auto b2 = per_radian(cross(r_B2, n));
+    return A.inv_m + B.inv_m + A.inv_I * a1 * a2 + B.inv_I * b1 * b2;
+}
+
+/// \srs{DD8} DD8's denominator: the inverse effective mass of the pair along n at P.
+inline InverseMass effective_mass_inverse(InverseInertia A, InverseInertia B, Vec2<Length> r_AP,
+                                          Vec2<Length> r_BP, Normal n) {
+    return normal_mass_coupling(A, B, r_AP, r_BP, r_AP, r_BP, n);
+}
+
+/// \srs{DD8} Impulse for collision response: j = -(1 + C_R) (v_i^AB . n) / K, where
+/// K = effective_mass_inverse(...) and v_i^AB . n is the normal relative velocity before.
+inline Impulse collision_impulse(Dimensionless C_R, Velocity v_rel_n, InverseMass K) {
+    return -(1.0 + C_R) * v_rel_n / K;
+}
+
+} // namespace tamias2d::model::dd08

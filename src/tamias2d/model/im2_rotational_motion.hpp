@@ -1,0 +1,26 @@
+#pragma once
+#include "tamias2d/model/dd06_angular_velocity.hpp"
+#include "tamias2d/model/dd07_angular_acceleration.hpp"
+#include "tamias2d/model/t4_rotational_second_law.hpp"
+
+namespace tamias2d::model::im2 {
+using namespace tamias2d::units;
+
+/// \srs{IM2} The ODE of rotational motion: alpha_i(t) = d omega_i / dt = tau_i(t) / I_i (T4).
+inline AngularAcceleration angular_acceleration(Torque tau, MomentOfInertia I) {
+    return t4::angular_acceleration(tau, I);
+}
+
+struct RotationalState {
+    Angle phi; ///< unwrapped; the API wraps to [0, 2 pi) on output (SRS Table 2)
+    AngularVelocity omega;
+};
+
+/// \srs{IM2} One semi-implicit Euler step, the rotational twin of im1::step:
+/// omega(t + dt) = omega(t) + alpha dt (DD7), phi(t + dt) = phi(t) + omega(t + dt) dt (DD6).
+inline RotationalState step(RotationalState s, AngularAcceleration alpha, Time dt) {
+    const AngularVelocity omega = s.omega + dd07::angular_velocity_change_over(alpha, dt);
+    return {s.phi + dd06::angle_over(omega, dt), omega};
+}
+
+} // namespace tamias2d::model::im2

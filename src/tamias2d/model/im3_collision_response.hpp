@@ -1,0 +1,50 @@
+#pragma once
+#include "tamias2d/model/dd08_collision_impulse.hpp"
+#include "tamias2d/model/dd09_chasles_theorem.hpp"
+#include "tamias2d/model/dd11_relative_velocity.hpp"
+
+namespace tamias2d::model::im3 {
+using namespace tamias2d::units;
+using dd08::InverseInertia;
+using dd08::Normal;
+
+struct Velocities {
+    Vec2<Velocity> v;
+    AngularVelocity omega;
+};
+
+/// \srs{IM3} Applies a normal impulse j n at P to A and -j n to B (T2):
+/// v_A' = v_A + j n / m_A, v_B' = v_B - j n / m_B,
+/// omega_A' = omega_A + (r_AP x j n) / I_A, omega_B' = omega_B - (r_BP x j n) / I_B.
+inline void apply_impulse(Velocities& A, Velocities& B, InverseInertia a, InverseInertia b,
+                          Vec2<Length> r_AP, Vec2<Length> r_BP, Normal n, Impulse j) {
+    const Vec2<Impulse> J = j * n;
+    A.v += a.inv_m * J;
+    B.v -= b.inv_m * J;
+    A.omega += a.inv_I * per_radian(cross(r_AP, J));
+    B.omega -= b.inv_I * per_radian(cross(r_BP, J));
+}
+
+/// \srs{IM3} Normal relative velocity of A with respect to B at P: (v^AP - v^BP) . n (DD9, DD11).
+inline Velocity normal_relative_velocity(const Velocities& A, const Velocities& B,
+                                         Vec2<Length> r_AP, Vec2<Length> r_BP, Normal n) {
+    return dot(dd11::relative_velocity(dd09::point_velocity(A.v, A.omega, r_AP),
+                                       dd09::point_velocity(B.v, B.omega, r_BP)),
+               n);
+}
+
+/// \srs{IM3} Collision response for one vertex-edge contact (A5, no friction A6): the impulse of
+/// DD8 applied as above. n points from B into A (A's outward velocity is +n), so approaching
+/// bodies have v^AB . n < 0. Returns j (zero when the bodies are already separating).
+inline Impulse resolve(Velocities& A, Velocities& B, InverseInertia a, InverseInertia b,
+                       Vec2<Length> r_AP, Vec2<Length> r_BP, Normal n, Dimensionless C_R) {
+    const Velocity vn = normal_relative_velocity(A, B, r_AP, r_BP, n);
+    if (vn >= Velocity{})
+        return Impulse{};
+    const Impulse j =
+        dd08::collision_impulse(C_R, vn, dd08::effective_mass_inverse(a, b, r_AP, r_BP, n));
+    apply_impulse(A, B, a, b, r_AP, r_BP, n, j);
+    return j;
+}
+
+} // namespace tamias2d::model::im3
