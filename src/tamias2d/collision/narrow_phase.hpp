@@ -1,0 +1,29 @@
+// Narrow phase (T5, A5, LC1): contact manifolds for each pair of shape types.
+// Shapes are given in their body frames with the body transforms; the body centres of mass
+// (world frame) are needed to express anchors relative to them.
+#pragma once
+
+#include "tamias2d/collision/manifold.hpp"
+#include "tamias2d/geometry/shapes.hpp"
+
+namespace tamias2d {
+
+/// Points are reported when the separation is below `margin` (m), so that the solver sees
+/// contacts a little before they touch (speculative contacts; no tunnelling at game speeds).
+struct CollideInput {
+    Transform xf_a;
+    Vec2d center_a; ///< body A centre of mass, world frame
+    Transform xf_b;
+    Vec2d center_b;
+    double margin = 0.0;
+};
+
+Manifold collide_circles(const Circle& a, const Circle& b, const CollideInput& in);
+Manifold collide_polygon_circle(const Polygon& a, const Circle& b, const CollideInput& in);
+Manifold collide_polygons(const Polygon& a, const Polygon& b, const CollideInput& in);
+
+/// Dispatches on the shape types. A circle-polygon pair is computed as polygon-circle with the
+/// roles swapped and the result flipped, so the normal still points from a into b.
+Manifold collide(const Geometry& a, const Geometry& b, const CollideInput& in);
+
+} // namespace tamias2d

@@ -1,0 +1,59 @@
+// Plain-double geometry for the engine's hot paths: the engine stores SI values as doubles and
+// wraps them in Boost.Units quantities only where it calls the model layer (inlined, free).
+#pragma once
+
+#include <cmath>
+
+#include "tamias2d/units/vec2.hpp"
+
+namespace tamias2d {
+
+/// A vector in metres, m s^-1, N ... as the field it sits in says (SI, A3/A4 axes).
+using Vec2d = units::Vec2<double>;
+
+/// A rotation by angle phi (radians, CCW positive, A4) as its cosine and sine.
+struct Rot {
+    double c = 1.0;
+    double s = 0.0;
+    static Rot from_angle(double phi) { return {std::cos(phi), std::sin(phi)}; }
+};
+
+constexpr Vec2d rotate(Rot q, Vec2d v) {
+    return {q.c * v.x - q.s * v.y, q.s * v.x + q.c * v.y};
+}
+constexpr Vec2d inv_rotate(Rot q, Vec2d v) {
+    return {q.c * v.x + q.s * v.y, -q.s * v.x + q.c * v.y};
+}
+
+/// A rigid transform: rotate, then translate.
+struct Transform {
+    Vec2d p{};
+    Rot q{};
+};
+
+constexpr Vec2d transform_point(const Transform& t, Vec2d v) {
+    return rotate(t.q, v) + t.p;
+}
+constexpr Vec2d inv_transform_point(const Transform& t, Vec2d v) {
+    return inv_rotate(t.q, v - t.p);
+}
+
+/// The in-plane perpendicular (CCW): cross(w, v) for w = 1.
+constexpr Vec2d left_perp(Vec2d v) {
+    return {-v.y, v.x};
+}
+constexpr Vec2d right_perp(Vec2d v) {
+    return {v.y, -v.x};
+}
+
+inline double length(Vec2d v) {
+    return std::sqrt(v.x * v.x + v.y * v.y);
+}
+
+/// Unit vector along v, or (0, 0) for a zero vector.
+inline Vec2d normalize(Vec2d v) {
+    const double l = length(v);
+    return l > 0.0 ? Vec2d{v.x / l, v.y / l} : Vec2d{};
+}
+
+} // namespace tamias2d
