@@ -1,0 +1,45 @@
+// What a body is made from (SRS R2). Every field is in SI units, stated beside it.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "tamias2d/math/vec2d.hpp"
+
+namespace tamias2d {
+
+/// Static bodies never move; kinematic bodies move with their velocity and are not pushed;
+/// dynamic bodies obey IM1/IM2 and collisions.
+enum class BodyType : std::uint8_t { static_body, kinematic, dynamic };
+
+/// Time-varying loads (SRS IM1's F_i(t), IM2's tau_i(t)) at the centre of mass.
+struct Load {
+    Vec2d force{};       ///< N
+    double torque = 0.0; ///< N m, CCW positive (A4)
+};
+
+/// Called once per step with the simulation time t (s) at the start of the step; the returned
+/// load acts through the step (held constant over its substeps).
+using LoadFunction = std::function<Load(double t)>;
+
+struct BodyDef {
+    BodyType type = BodyType::dynamic;
+    Vec2d position{};              ///< m, world position of the body origin
+    double angle = 0.0;            ///< rad, orientation phi (any real; read back in [0, 2 pi))
+    Vec2d linear_velocity{};       ///< m s^-1, of the centre of mass
+    double angular_velocity = 0.0; ///< rad s^-1, CCW positive
+    Vec2d force{};                 ///< N, persistent force at the centre of mass
+    double torque = 0.0;           ///< N m, persistent torque
+    /// kg, > 0. Overrides the mass computed from the shapes and their densities (DD1).
+    std::optional<double> mass;
+    /// kg m^2 about the centre of mass, > 0. Overrides the computed moment of inertia (DD14).
+    std::optional<double> inertia;
+    double gravity_scale = 1.0;  ///< multiplies the world's gravity for this body
+    bool fixed_rotation = false; ///< no rotation: infinite moment of inertia
+    LoadFunction load;           ///< optional F(t), tau(t), added to the persistent loads
+    std::string name;            ///< free text, for scene files and reports
+};
+
+} // namespace tamias2d

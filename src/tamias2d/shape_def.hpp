@@ -1,0 +1,30 @@
+// What a shape is made from: its geometry and its material (SRS R3).
+#pragma once
+
+#include <span>
+
+#include "tamias2d/geometry/shapes.hpp"
+
+namespace tamias2d {
+
+struct Material {
+    double density = 1.0;     ///< kg m^-2 (2D: mass per area), > 0
+    double restitution = 0.0; ///< C_R (DD12), in [0, 1]
+    /// Coulomb friction coefficient, >= 0. Default 0: the SRS assumes no friction (A6); LC2.
+    double friction = 0.0;
+};
+
+struct ShapeDef {
+    Geometry geometry{};
+    Material material{};
+};
+
+/// A rectangle w x h (m) centred on the body origin (or on `center`, rotated by `angle`).
+ShapeDef box_shape(double width, double height, Material material = {}, Vec2d center = {},
+                   double angle = 0.0);
+/// A circle of radius r (m).
+ShapeDef circle_shape(double radius, Material material = {}, Vec2d center = {});
+/// The convex hull of 3 to 8 points (m, body frame).
+ShapeDef polygon_shape(std::span<const Vec2d> points, Material material = {});
+
+} // namespace tamias2d

@@ -1,0 +1,112 @@
+// The world: the space in which rigid bodies move and collide (SRS R1).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "tamias2d/body_def.hpp"
+#include "tamias2d/body_state.hpp"
+#include "tamias2d/contact_info.hpp"
+#include "tamias2d/geometry/aabb.hpp"
+#include "tamias2d/handles.hpp"
+#include "tamias2d/shape_def.hpp"
+#include "tamias2d/world_def.hpp"
+
+namespace tamias2d {
+
+struct RayCastHit {
+    ShapeId shape;
+    BodyId body;
+    Vec2d point{};         ///< m
+    Vec2d normal{};        ///< unit, outward from the shape
+    double fraction = 0.0; ///< along the ray's translation, in [0, 1]
+};
+
+/// Every mutating call validates its input first (SRS R4) and throws ValidationError or
+/// InvalidHandle (errors.hpp) without changing anything: the world is left exactly as it was.
+class World {
+  public:
+    explicit World(const WorldDef& def = {});
+    ~World();
+    World(World&&) noexcept;
+    World& operator=(World&&) noexcept;
+    World(const World&) = delete;
+    World& operator=(const World&) = delete;
+
+    // --- bodies and shapes (R1, R2, R3) ---
+    BodyId create_body(const BodyDef& def);
+    /// Destroys the body, its shapes and its contacts.
+    void destroy_body(BodyId body);
+    ShapeId create_shape(BodyId body, const ShapeDef& def);
+    void destroy_shape(ShapeId shape);
+    bool is_valid(BodyId body) const;
+    bool is_valid(ShapeId shape) const;
+    std::vector<BodyId> bodies() const; ///< in creation order of their slots
+    std::vector<ShapeId> shapes(BodyId body) const;
+    std::size_t body_count() const;
+
+    // --- stepping (R5, R6, R7, R8) ---
+    /// Advances by dt (s, > 0 and finite).
+    void step(double dt);
+    double time() const;       ///< s, simulated so far
+    void set_gravity(Vec2d g); ///< m s^-2 (GD2)
+    Vec2d gravity() const;
+    const WorldDef& settings() const;
+
+    // --- body state (R2, Table 2) ---
+    BodyState state(BodyId body) const;
+    Vec2d position(BodyId body) const;     ///< m, centre of mass
+    Vec2d origin(BodyId body) const;       ///< m, body origin (where shapes are placed from)
+    double orientation(BodyId body) const; ///< rad in [0, 2 pi)
+    Vec2d velocity(BodyId body) const;
+    double angular_velocity(BodyId body) const;
+    double mass(BodyId body) const;        ///< kg (0 for static and kinematic bodies)
+    double inertia(BodyId body) const;     ///< kg m^2 about the centre of mass
+    Vec2d local_center(BodyId body) const; ///< m, centre of mass in the body frame
+    BodyType type(BodyId body) const;
+    const std::string& name(BodyId body) const;
+
+    void set_transform(BodyId body, Vec2d origin, double angle);
+    void set_velocity(BodyId body, Vec2d v);
+    void set_angular_velocity(BodyId body, double omega);
+
+    // --- loads (R2, IM1, IM2) ---
+    /// Persistent force at the centre of mass (N) and torque (N m): act every step until changed.
+    void set_force(BodyId body, Vec2d force);
+    void set_torque(BodyId body, double torque);
+    /// One-step force at a world point (N at m): the torque r x F (DD13) comes with it.
+    void apply_force(BodyId body, Vec2d force, Vec2d world_point);
+    void apply_torque(BodyId body, double torque);
+    /// Instantaneous impulse J (N s) at a world point: dv = J / m (DD10), domega = r x J / I.
+    void apply_impulse(BodyId body, Vec2d impulse, Vec2d world_point);
+    /// Time-varying load F(t), tau(t); an empty function removes it.
+    void set_load(BodyId body, LoadFunction load);
+
+    // --- energy and momentum (SRS 5.2.7) ---
+    double kinetic_energy() const;   ///< J, DD15 incl. rotation, all bodies
+    double potential_energy() const; ///< J, DD16 with the world's gravity, origin as reference
+    Vec2d linear_momentum() const;   ///< N s, GD1
+
+    // --- contacts (R7) and queries ---
+    /// Touching pairs after the last step, in a deterministic order.
+    std::span<const ContactInfo> contacts() const;
+    std::span<const ContactEvent> contact_begin_events() const;
+    std::span<const ContactEvent> contact_end_events() const;
+    std::vector<ShapeId> query_aabb(const Aabb& box) const;
+    std::vector<ShapeId> query_point(Vec2d point) const;
+    std::optional<RayCastHit> ray_cast(Vec2d origin, Vec2d translation) const;
+
+    /// A hash of the complete simulation state (bit patterns of every double): equal hashes
+    /// mean bitwise-equal worlds. Used by the determinism and strong-guarantee tests.
+    std::uint64_t state_hash() const;
+
+    struct Impl;
+
+  private:
+    std::unique_ptr<Impl> impl_;
+};
+
+} // namespace tamias2d
