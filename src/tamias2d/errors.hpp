@@ -1,0 +1,50 @@
+// The library's exceptions. Bad input is rejected before anything is mutated (R4), and the
+// error names the field, the offending value and the SRS data constraint it breaks, so a user
+// can fix the input and an auditor can trace the check to the SRS.
+#pragma once
+
+#include <charconv>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace tamias2d {
+
+namespace detail {
+/// Shortest round-trip text of a double ("-1", "0.1", "nan", "inf").
+inline std::string format_value(double v) {
+    char buf[32];
+    const auto r = std::to_chars(buf, buf + sizeof buf, v);
+    return std::string(buf, r.ptr);
+}
+inline std::string validation_message(const std::string& field, double value,
+                                      const std::string& rule, const std::string& constraint) {
+    const std::string head = field + " = " + format_value(value) + ": ";
+    return rule.empty() ? head + "violates " + constraint : head + rule + " (" + constraint + ")";
+}
+} // namespace detail
+
+/// An input violates a data constraint (SRS section 5.2.6 and its extensions, R4).
+struct ValidationError : std::invalid_argument {
+    std::string field;      ///< e.g. "shape.radius"
+    double value;           ///< the offending value (NaN for non-numeric defects)
+    std::string constraint; ///< the SRS data-constraint label, e.g. "DCX_shape"
+
+    /// what(): "shape.radius = -1: violates DCX_shape".
+    ValidationError(std::string field_, double value_, std::string constraint_)
+        : ValidationError(std::move(field_), value_, std::string{}, std::move(constraint_)) {}
+
+    /// what(): "shape.radius = -1: must be > 0 (DCX_shape)". `rule` says what is required.
+    ValidationError(std::string field_, double value_, const std::string& rule,
+                    std::string constraint_)
+        : std::invalid_argument(detail::validation_message(field_, value_, rule, constraint_)),
+          field(std::move(field_)), value(value_), constraint(std::move(constraint_)) {}
+};
+
+/// A body, shape or proxy handle that is stale or was never issued (a use-after-free turned into
+/// an error instead of a crash).
+struct InvalidHandle : std::invalid_argument {
+    using std::invalid_argument::invalid_argument;
+};
+
+} // namespace tamias2d

@@ -1,0 +1,134 @@
+#include "tamias2d/geometry/mass_properties.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "tamias2d/errors.hpp"
+#include "tamias2d/model/dd01_center_of_mass.hpp"
+#include "tamias2d/model/dd14_moment_of_inertia.hpp"
+
+namespace tamias2d {
+namespace {
+
+namespace dd01 = model::dd01;
+namespace dd14 = model::dd14;
+using units::from_value;
+using units::Length;
+using units::Mass;
+
+// The model layer is unit-typed; the engine stores doubles. These wrap at the call site.
+Mass kg(double m) {
+    return from_value<Mass>(m);
+}
+Length metres(double l) {
+    return from_value<Length>(l);
+}
+units::Vec2<Length> metres(Vec2d v) {
+    return units::vec_from_values<Length>(v.x, v.y);
+}
+Vec2d plain(units::Vec2<Length> v) {
+    return {v.x.value(), v.y.value()};
+}
+
+void require_density(double density) {
+    if (!std::isfinite(density) || density < 0.0)
+        throw ValidationError("shape.density", density, "must be finite and >= 0", "DCX_density");
+}
+
+double cross(Vec2d a, Vec2d b) {
+    return a.x * b.y - a.y * b.x;
+}
+
+} // namespace
+
+double area(const Circle& c) {
+    return std::numbers::pi * c.radius * c.radius;
+}
+
+double area(const Polygon& p) {
+    double twice = 0.0;
+    for (int i = 1; i + 1 < p.count; ++i)
+        twice += cross(p.vertices[i] - p.vertices[0], p.vertices[i + 1] - p.vertices[0]);
+    return 0.5 * twice;
+}
+
+MassData compute_mass(const Circle& c, double density) {
+    require_density(density);
+    const double m = density * area(c);
+    /// \srs{DD14} uniform disc about its centre
+    return {m, c.center, dd14::disc(kg(m), metres(c.radius)).value()};
+}
+
+MassData compute_mass(const Polygon& p, double density) {
+    require_density(density);
+    // Triangle fan. The centre is DD1 over the triangles, each a point mass at its centroid;
+    // the fan is rooted at vertex 0 (not the origin) so shapes far from the body origin keep
+    // their precision. A zero density still needs the geometric centroid: use unit weights.
+    const double weight = density > 0.0 ? density : 1.0;
+    const Vec2d origin = p.vertices[0];
+    dd01::PointMass parts[max_polygon_vertices];
+    int n = 0;
+    for (int i = 1; i + 1 < p.count; ++i) {
+        const Vec2d e1 = p.vertices[i] - origin;
+        const Vec2d e2 = p.vertices[i + 1] - origin;
+        const double m = weight * 0.5 * cross(e1, e2);
+        parts[n++] = {kg(m), metres(Vec2d{(e1.x + e2.x) / 3.0, (e1.y + e2.y) / 3.0})};
+    }
+    /// \srs{DD1} centre of mass of the fan
+    const Vec2d c_rel = plain(dd01::center_of_mass(std::span<const dd01::PointMass>(parts, n)));
+    const Vec2d center = c_rel + origin;
+    if (density == 0.0)
+        return {0.0, center, 0.0};
+
+    // Inertia about the centre: the polygon is convex and contains its centre, so the fan
+    // rooted there has positive triangles, each given by DD14's triangle-about-vertex form.
+    double mass = 0.0;
+    double inertia = 0.0;
+    for (int i = 0; i < p.count; ++i) {
+        const Vec2d a = p.vertices[i] - center;
+        const Vec2d b = p.vertices[(i + 1) % p.count] - center;
+        const double m = density * 0.5 * cross(a, b);
+        mass += m;
+        /// \srs{DD14} triangle (centre, a, b) about the centre
+        inertia += dd14::triangle_about_vertex(kg(m), metres(a), metres(b)).value();
+    }
+    return {mass, center, inertia};
+}
+
+MassData compute_mass(const Geometry& g, double density) {
+    return g.type == ShapeType::circle ? compute_mass(g.circle, density)
+                                       : compute_mass(g.polygon, density);
+}
+
+MassData combine(std::span<const MassData> parts) {
+    MassData out;
+    if (parts.empty())
+        return out;
+    std::vector<dd01::PointMass> points;
+    points.reserve(parts.size());
+    Vec2d mean{};
+    for (const MassData& d : parts) {
+        out.mass += d.mass;
+        points.push_back({kg(d.mass), metres(d.center)});
+        mean += d.center;
+    }
+    if (!(out.mass > 0.0)) {
+        const double inv = 1.0 / double(parts.size());
+        out.center = {mean.x * inv, mean.y * inv};
+        out.mass = 0.0;
+        return out;
+    }
+    /// \srs{DD1} combined centre of mass
+    out.center = plain(dd01::center_of_mass(points));
+    for (const MassData& d : parts) {
+        const double dist = length(d.center - out.center);
+        /// \srs{DD14} parallel-axis theorem
+        out.inertia += dd14::parallel_axis(from_value<units::MomentOfInertia>(d.inertia),
+                                           kg(d.mass), metres(dist))
+                           .value();
+    }
+    return out;
+}
+
+} // namespace tamias2d

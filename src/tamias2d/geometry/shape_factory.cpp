@@ -1,0 +1,205 @@
+#include "tamias2d/geometry/shape_factory.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "tamias2d/errors.hpp"
+#include "tamias2d/geometry/mass_properties.hpp"
+
+namespace tamias2d {
+namespace {
+
+void require_finite(double v, const std::string& field) {
+    if (!std::isfinite(v))
+        throw ValidationError(field, v, "must be finite", "DCX_finite");
+}
+
+void require_finite(Vec2d v, const std::string& field) {
+    require_finite(v.x, field + ".x");
+    require_finite(v.y, field + ".y");
+}
+
+void require_positive(double v, const std::string& field) {
+    require_finite(v, field);
+    if (!(v > 0.0))
+        throw ValidationError(field, v, "must be > 0", "DCX_shape");
+}
+
+double cross(Vec2d a, Vec2d b) {
+    return a.x * b.y - a.y * b.x;
+}
+
+/// Distance from p to the line through a and b (a != b).
+double distance_to_line(Vec2d a, Vec2d b, Vec2d p) {
+    return std::abs(cross(b - a, p - a)) / length(b - a);
+}
+
+/// Fills normals and centroid from CCW vertices.
+Polygon finish(Polygon p) {
+    for (int i = 0; i < p.count; ++i) {
+        const Vec2d e = p.vertices[(i + 1) % p.count] - p.vertices[i];
+        p.normals[i] = normalize(right_perp(e)); // outward for CCW order
+    }
+    p.centroid = compute_mass(p, 1.0).center;
+    return p;
+}
+
+} // namespace
+
+Polygon make_box(double half_w, double half_h, Vec2d center, double angle) {
+    require_positive(half_w, "shape.half_width");
+    require_positive(half_h, "shape.half_height");
+    require_finite(center, "shape.center");
+    require_finite(angle, "shape.angle");
+    // Axis-aligned boxes skip the rotation so their vertices are exact.
+    const Rot q = angle == 0.0 ? Rot{} : Rot::from_angle(angle);
+    const Vec2d corners[4] = {
+        {-half_w, -half_h}, {half_w, -half_h}, {half_w, half_h}, {-half_w, half_h}};
+    const Vec2d normals[4] = {{0.0, -1.0}, {1.0, 0.0}, {0.0, 1.0}, {-1.0, 0.0}};
+    Polygon p;
+    p.count = 4;
+    for (int i = 0; i < 4; ++i) {
+        p.vertices[i] = rotate(q, corners[i]) + center;
+        p.normals[i] = rotate(q, normals[i]);
+    }
+    p.centroid = center;
+    return p;
+}
+
+Polygon make_polygon(std::span<const Vec2d> points) {
+    if (points.size() < 3)
+        throw ValidationError("polygon.points.size", double(points.size()), "must be >= 3",
+                              "DCX_shape");
+    for (std::size_t i = 0; i < points.size(); ++i)
+        require_finite(points[i], "polygon.points[" + std::to_string(i) + "]");
+
+    // Andrew's monotone chain: O(n log n), no recursion, deterministic for a given input set.
+    std::vector<Vec2d> pts(points.begin(), points.end());
+    std::sort(pts.begin(), pts.end(),
+              [](Vec2d a, Vec2d b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+    const auto [lo_y, hi_y] =
+        std::minmax_element(pts.begin(), pts.end(), [](Vec2d a, Vec2d b) { return a.y < b.y; });
+    const double extent = std::max(pts.back().x - pts.front().x, hi_y->y - lo_y->y);
+    if (!(extent > 0.0))
+        throw ValidationError("polygon.extent", extent, "points must not all coincide",
+                              "DCX_shape");
+    const double tol = hull_weld_tolerance * extent;
+
+    std::vector<Vec2d> hull(2 * pts.size());
+    std::size_t k = 0;
+    // Strict left turns only: exactly collinear points are dropped here.
+    for (const Vec2d& p : pts) { // lower chain
+        while (k >= 2 && cross(hull[k - 1] - hull[k - 2], p - hull[k - 2]) <= 0.0)
+            --k;
+        hull[k++] = p;
+    }
+    for (std::size_t i = pts.size() - 1, t = k + 1; i-- > 0;) { // upper chain
+        while (k >= t && cross(hull[k - 1] - hull[k - 2], pts[i] - hull[k - 2]) <= 0.0)
+            --k;
+        hull[k++] = pts[i];
+    }
+    hull.resize(k - 1); // the last point repeats the first
+
+    // Weld and drop nearly collinear vertices: a vertex within `tol` of the chord of its
+    // neighbours adds nothing but round-off (a coincident neighbour is a special case).
+    // The nearest one goes first, so the result does not depend on where the loop starts.
+    while (hull.size() > 3) {
+        std::size_t worst = 0;
+        double worst_d = tol;
+        const std::size_t n = hull.size();
+        for (std::size_t i = 0; i < n; ++i) {
+            const double d = distance_to_line(hull[(i + n - 1) % n], hull[(i + 1) % n], hull[i]);
+            if (d < worst_d) {
+                worst_d = d;
+                worst = i;
+            }
+        }
+        if (worst_d >= tol)
+            break;
+        hull.erase(hull.begin() + static_cast<std::ptrdiff_t>(worst));
+    }
+
+    if (hull.size() < 3)
+        throw ValidationError("polygon.hull_count", double(hull.size()),
+                              "must be >= 3 (points are collinear)", "DCX_shape");
+    double twice_area = 0.0;
+    double min_height = extent;
+    for (std::size_t i = 0, n = hull.size(); i < n; ++i) {
+        twice_area += cross(hull[i] - hull[0], hull[(i + 1) % n] - hull[0]);
+        min_height = std::min(min_height,
+                              distance_to_line(hull[(i + n - 1) % n], hull[(i + 1) % n], hull[i]));
+    }
+    if (!(min_height >= tol) || !(twice_area > 2.0 * tol * extent))
+        throw ValidationError("polygon.area", 0.5 * twice_area, "must not be near zero",
+                              "DCX_shape");
+    if (hull.size() > std::size_t(max_polygon_vertices))
+        throw ValidationError("polygon.hull_count", double(hull.size()),
+                              "must be <= " + std::to_string(max_polygon_vertices), "DCX_shape");
+
+    Polygon p;
+    p.count = static_cast<int>(hull.size());
+    std::copy(hull.begin(), hull.end(), p.vertices.begin());
+    return finish(p);
+}
+
+Circle make_circle(double radius, Vec2d center) {
+    require_positive(radius, "shape.radius");
+    require_finite(center, "shape.center");
+    return {center, radius};
+}
+
+Geometry to_geometry(const Circle& c) {
+    Geometry g;
+    g.type = ShapeType::circle;
+    g.circle = c;
+    return g;
+}
+
+Geometry to_geometry(const Polygon& p) {
+    Geometry g;
+    g.type = ShapeType::polygon;
+    g.polygon = p;
+    return g;
+}
+
+void validate(const Circle& c) {
+    require_positive(c.radius, "shape.radius");
+    require_finite(c.center, "shape.center");
+}
+
+void validate(const Polygon& p) {
+    if (p.count < 3 || p.count > max_polygon_vertices)
+        throw ValidationError("polygon.count", double(p.count),
+                              "must be in [3, " + std::to_string(max_polygon_vertices) + "]",
+                              "DCX_shape");
+    for (int i = 0; i < p.count; ++i) {
+        require_finite(p.vertices[i], "polygon.vertices[" + std::to_string(i) + "]");
+        require_finite(p.normals[i], "polygon.normals[" + std::to_string(i) + "]");
+    }
+    require_finite(p.centroid, "polygon.centroid");
+    for (int i = 0; i < p.count; ++i) {
+        const Vec2d a = p.vertices[i];
+        const Vec2d b = p.vertices[(i + 1) % p.count];
+        const Vec2d c = p.vertices[(i + 2) % p.count];
+        const std::string at = "polygon.vertices[" + std::to_string((i + 1) % p.count) + "]";
+        const double turn = cross(b - a, c - b);
+        if (!(turn > 0.0))
+            throw ValidationError(at + ".turn", turn, "must be > 0 (convex, CCW)", "DCX_shape");
+        const Vec2d n = normalize(right_perp(b - a));
+        const Vec2d dn = p.normals[i] - n;
+        if (!(length(dn) < 1e-9))
+            throw ValidationError("polygon.normals[" + std::to_string(i) + "].error", length(dn),
+                                  "must be the unit outward edge normal", "DCX_shape");
+    }
+}
+
+void validate(const Geometry& g) {
+    if (g.type == ShapeType::circle)
+        validate(g.circle);
+    else
+        validate(g.polygon);
+}
+
+} // namespace tamias2d

@@ -1,0 +1,39 @@
+// Building valid shapes. Every shape the engine sees comes through here (or through validate),
+// so the narrow phase and the mass computation may assume: finite coordinates, positive sizes,
+// convex counter-clockwise polygons of 3..8 vertices with unit outward normals and no
+// collinear or coincident vertices. Bad input throws ValidationError naming the field (R4).
+#pragma once
+
+#include <span>
+
+#include "tamias2d/geometry/shapes.hpp"
+
+namespace tamias2d {
+
+/// A box of half extents (half_w, half_h) m centred at `center` (body frame), rotated by
+/// `angle` rad (CCW, A4). Vertices start at the lower-left corner of the unrotated box.
+/// Throws ValidationError (DCX_shape, DCX_finite) for non-positive or non-finite input.
+Polygon make_box(double half_w, double half_h, Vec2d center = {}, double angle = 0.0);
+
+/// The convex hull of `points` (m, body frame). Points closer than a relative welding tolerance
+/// (1e-6 of the cloud's extent) are merged, and collinear points dropped. Throws
+/// ValidationError when an input is not finite (DCX_finite), or the hull has fewer than 3
+/// vertices, no area, or more than max_polygon_vertices vertices (DCX_shape).
+Polygon make_polygon(std::span<const Vec2d> points);
+
+/// A circle of `radius` m (> 0) centred at `center` (body frame).
+Circle make_circle(double radius, Vec2d center = {});
+
+/// Wraps a shape in the tagged Geometry the world stores.
+Geometry to_geometry(const Circle& c);
+Geometry to_geometry(const Polygon& p);
+
+/// Checks a hand-made shape against the invariants the factories guarantee (same errors).
+void validate(const Circle& c);
+void validate(const Polygon& p);
+void validate(const Geometry& g);
+
+/// The relative tolerance used to weld hull points and to reject slivers.
+inline constexpr double hull_weld_tolerance = 1e-6;
+
+} // namespace tamias2d
