@@ -143,6 +143,9 @@ def _comment_block_above(lines, idx):
     """Lines of the comment block directly above lines[idx] (0-based), top to bottom."""
     block = []
     j = idx - 1
+    # BOOST_TEST_DECORATOR(...) lines may sit between the comment and the macro.
+    while j >= 0 and lines[j].strip().startswith("BOOST_TEST_DECORATOR"):
+        j -= 1
     in_c = False
     while j >= 0:
         s = lines[j].strip()
@@ -394,8 +397,11 @@ def boost_cases(text):
                                      for k in kids)
         if is_data:
             consumed.update(u["children"])
+            labs = eff_labels(uid)
+            for k in kids:  # BOOST_TEST_DECORATOR labels land on the samples
+                labs += [x for x in k["labels"] if x not in labs]
             cases.append({"path": path_of(uid), "file": u["file"], "line": u["line"],
-                          "labels": eff_labels(uid), "enabled": eff_enabled(uid),
+                          "labels": labs, "enabled": eff_enabled(uid) and any(k["enabled"] for k in kids),
                           "decl_names": [u["name"]],
                           "samples": [path_of(k) for k in u["children"]]})
         elif not kids and u["num"] >= 0x10000:

@@ -1,0 +1,286 @@
+"""Join SRS items with code sites and tests; compute statuses, gaps, orphans, matrices, gate."""
+from __future__ import annotations
+
+import os
+
+import yaml
+
+from .srsdata import KIND_NAMES, KIND_ORDER, natural_key
+
+STATUSES = ["verified", "failing", "untested", "not implemented"]
+# Kinds that must be verified for the gate (exit status) to pass.
+GATED_KINDS = ["TM", "GD", "DD", "IM", "R"]
+# Kinds with nothing to implement: evidence can only come from tests labelled with them.
+LABEL_ONLY_KINDS = {
+    "GS": "Goal statements are verified only by tests labelled with the goal itself; the "
+          "harness does not infer a goal's status from the items it uses.",
+    "A": "Assumptions are verified only by tests labelled with the assumption (e.g. tests that "
+         "check the library enforces or documents the simplification).",
+    "NFR": "Non-functional requirements are verified only by tests or verification checks "
+           "labelled with them (benchmarks, peer comparisons, usability studies).",
+    "UC": "Unlikely changes describe the design's stability; they are verified only by tests "
+          "labelled with them.",
+    "LC": "Likely changes are verified only by tests labelled with them (e.g. a test that the "
+          "extension point exists).",
+    "DC": "Data constraints are verified by tests labelled with them (input validation).",
+}
+FAILING = ("failed", "error")
+
+
+def load_config(path):
+    cfg = {"category_labels": []}
+    if path and os.path.exists(path):
+        with open(path, encoding="utf-8") as fh:
+            cfg.update(yaml.safe_load(fh) or {})
+    return cfg
+
+
+def item_status(code_sites, tests):
+    passed = [t for t in tests if t["status"] == "passed"]
+    failing = [t for t in tests if t["status"] in FAILING]
+    if failing:
+        return "failing"
+    if passed:
+        return "verified"
+    if code_sites or tests:
+        return "untested"
+    return "not implemented"
+
+
+def analyse(srs, code_sites, tests, config):
+    labels = set(srs.items)
+    category = set(config.get("category_labels") or [])
+    sites_by = {}
+    for s in code_sites:
+        sites_by.setdefault(s["label"], []).append(s)
+    tests_by = {}
+    for t in tests:
+        t["srs_labels"] = [x for x in t["labels"] if x in labels]
+        for x in t["srs_labels"]:
+            tests_by.setdefault(x, []).append(t)
+
+    items = []
+    for lab in srs.order:
+        it = srs.items[lab]
+        sites = sites_by.get(lab, [])
+        its_tests = sorted(tests_by.get(lab, []), key=lambda t: (t["status"] not in FAILING, t["id"]))
+        status = item_status(sites, its_tests)
+        notes = []
+        if it["kind"] in LABEL_ONLY_KINDS:
+            notes.append(LABEL_ONLY_KINDS[it["kind"]])
+        lib_sites = [s for s in sites if s["area"] in ("library", "application")]
+        if sites and not lib_sites:
+            notes.append("Tagged only outside the library (" +
+                         ", ".join(sorted({s['area'] for s in sites})) + "): no src/ or apps/ code names it.")
+        skipped = [t for t in its_tests if t["status"] in ("skipped", "notrun")]
+        if skipped:
+            notes.append(f"{len(skipped)} labelled test(s) did not run (skipped/disabled/not run).")
+        if status == "verified" and not sites and it["kind"] in GATED_KINDS:
+            notes.append("Verified by tests, but no code carries its \\srs tag.")
+        items.append({
+            "label": lab, "kind": it["kind"], "alias": it.get("alias"), "title": it.get("title"),
+            "status": status, "gated": it["kind"] in GATED_KINDS,
+            "code_sites": sites, "tests": [t["id"] for t in its_tests],
+            "tests_passed": sum(t["status"] == "passed" for t in its_tests),
+            "tests_failing": sum(t["status"] in FAILING for t in its_tests),
+            "tests_other": len(skipped),
+            "uses": it["uses"], "ref_by": srs.ref_by.get(lab, []),
+            "seed_ref_by": it.get("seed_ref_by"), "errata": it.get("errata", []),
+            "source": it.get("source"), "equation": it.get("equation"),
+            "seed_equation": it.get("seed_equation"), "description": it.get("description"),
+            "srs_notes": it.get("notes"), "symbols": it.get("symbols", []),
+            "file": it.get("_file"), "notes": notes,
+        })
+
+    # Totals per kind.
+    by_kind = {}
+    for k in srs.kinds_present():
+        row = {"kind": k, "name": KIND_NAMES.get(k, k), "total": 0}
+        for s in STATUSES:
+            row[s] = 0
+        by_kind[k] = row
+    by_status = {s: 0 for s in STATUSES}
+    for i in items:
+        by_kind[i["kind"]]["total"] += 1
+        by_kind[i["kind"]][i["status"]] += 1
+        by_status[i["status"]] += 1
+    for row in by_kind.values():
+        row["with_code"] = sum(1 for i in items if i["kind"] == row["kind"] and i["code_sites"])
+        row["with_tests"] = sum(1 for i in items if i["kind"] == row["kind"] and i["tests"])
+        row["verified_percent"] = round(100.0 * row["verified"] / row["total"], 1) if row["total"] else 0.0
+
+    # Gaps (SRS -> evidence) and orphans (evidence -> SRS).
+    gaps = {
+        "no_code": [i["label"] for i in items if not i["code_sites"]],
+        "no_test": [i["label"] for i in items if not i["tests"]],
+        "no_passing_test": [i["label"] for i in items if i["tests_passed"] == 0],
+    }
+    orphan_tags = [dict(s, alias_of=srs.aliases.get(s["label"])) for s in code_sites
+                   if s["label"] not in labels]
+    orphan_labels = {}
+    category_use = {}
+    for t in tests:
+        for x in t["labels"]:
+            if x in labels:
+                continue
+            target = category_use if x in category else orphan_labels
+            target.setdefault(x, []).append(t["id"])
+    orphans = {
+        "code_tags": orphan_tags,
+        "test_labels": [{"label": k, "alias_of": srs.aliases.get(k), "tests": v}
+                        for k, v in sorted(orphan_labels.items(), key=lambda kv: natural_key(kv[0]))],
+        "unlabelled_tests": [t["id"] for t in tests if not t["srs_labels"]
+                             and not any(x in category for x in t["labels"])],
+    }
+    category_labels = [{"label": k, "tests": v} for k, v in sorted(category_use.items())]
+
+    # Test totals.
+    test_totals = {}
+    for t in tests:
+        o = test_totals.setdefault(t["origin"], {"total": 0})
+        o["total"] += 1
+        o[t["status"]] = o.get(t["status"], 0) + 1
+    missing_oracle = [t["id"] for t in tests if not t.get("oracle")]
+
+    # Gate.
+    reasons = []
+    failing_tests = [t for t in tests if t["status"] in FAILING]
+    if failing_tests:
+        reasons.append(f"{len(failing_tests)} test(s) or check(s) fail: " +
+                       ", ".join(t["id"] for t in failing_tests[:12]) +
+                       (" ..." if len(failing_tests) > 12 else ""))
+    ungated = [i for i in items if i["gated"] and i["tests_passed"] == 0]
+    if ungated:
+        reasons.append(f"{len(ungated)} R/IM/TM/GD/DD item(s) have no passing test: " +
+                       ", ".join(i["label"] for i in ungated))
+    failing_items = [i for i in items if i["gated"] and i["status"] == "failing"]
+    if failing_items:
+        reasons.append(f"{len(failing_items)} R/IM/TM/GD/DD item(s) have failing tests: " +
+                       ", ".join(i["label"] for i in failing_items))
+    if not items:
+        reasons.append("no SRS items were loaded")
+    gate = {"passed": not reasons, "exit_code": 0 if not reasons else 1, "reasons": reasons,
+            "gated_kinds": GATED_KINDS}
+    return {"items": items, "by_kind": by_kind, "by_status": by_status, "gaps": gaps,
+            "orphans": orphans, "category_labels": category_labels, "test_totals": test_totals,
+            "missing_oracle": missing_oracle, "gate": gate}
+
+
+# --------------------------------------------------------------------------- matrices
+MATRIX_SPECS = [
+    {"id": "table3", "number": 3, "rows": ["GS", "R"], "cols": ["IM", "R", "DC"],
+     "caption": "Goal statements and requirements (rows) against the instance models, "
+                "requirements and data constraints they use (columns)"},
+    {"id": "table4", "number": 4, "rows": ["TM", "GD", "DD", "IM", "LC"], "cols": ["A"],
+     "caption": "Theoretical models, general and data definitions, instance models and likely "
+                "changes (rows) against the assumptions they use (columns)"},
+    {"id": "table5", "number": 5, "rows": ["TM", "GD", "DD", "IM"], "cols": ["TM", "GD", "DD", "IM"],
+     "caption": "Theoretical models, general and data definitions and instance models (rows) "
+                "against the items of the same sections they use (columns)"},
+]
+
+
+def build_matrices(srs):
+    out = []
+    for spec in MATRIX_SPECS:
+        rows = [lab for k in spec["rows"] for lab in srs.by_kind(k)]
+        cols = [lab for k in spec["cols"] for lab in srs.by_kind(k)]
+        colset = set(cols)
+        cells = {r: [c for c in srs.items[r]["uses"] if c in colset] for r in rows}
+        out.append(dict(spec, row_labels=rows, col_labels=cols, cells=cells,
+                        empty_rows=[r for r in rows if not cells[r]],
+                        empty_cols=[c for c in cols if not any(c in v for v in cells.values())]))
+    return out
+
+
+def load_seed_tables(path):
+    if not path or not os.path.exists(path):
+        return None
+    with open(path, encoding="utf-8") as fh:
+        return yaml.safe_load(fh)
+
+
+def compare_seed(srs, matrices, seed):
+    """Differences between the seed's hand-made tables and the regenerated ones."""
+    if not seed:
+        return []
+    regen = {m["id"]: m for m in matrices}
+    results = []
+    for t in seed.get("tables", []):
+        m = regen.get(t["id"])
+        res = {"id": t["id"], "number": t.get("number"), "caption": t.get("caption"),
+               "missing": bool(t.get("missing")), "notes": t.get("notes", []),
+               "seed_lines": t.get("seed_lines"), "seed_columns": t.get("columns", []),
+               "seed_rows": t.get("rows", []), "differences": [], "comparison": None}
+        results.append(res)
+        if t.get("missing") or m is None:
+            continue
+        groups = t.get("column_groups") or {}
+
+        def data_mark(row, col):
+            uses = srs.items[row]["uses"] if row in srs.items else []
+            if col in groups:
+                kind = groups[col].get("kind")
+                return any(srs.items.get(u, {}).get("kind") == kind for u in uses)
+            return col in uses
+
+        diffs = res["differences"]
+        seen_rows = set()
+        unresolved = {}
+        for r in t.get("rows", []):
+            if r.get("unresolved"):
+                key = (r.get("printed_as", r["label"]), tuple(r.get("marks") or []))
+                unresolved[key] = unresolved.get(key, 0) + 1
+        for (printed, marks), count in unresolved.items():
+            times = f" ({count} rows)" if count > 1 else ""
+            diffs.append({"row": printed, "column": None, "type": "unresolved seed row",
+                          "detail": f"row printed as '{printed}'{times} with marks "
+                                    f"{', '.join(marks) if marks else 'none'}: its label is lost in the "
+                                    "seed text, so it cannot be compared"})
+        for r in t.get("rows", []):
+            lab = r["label"]
+            if r.get("unresolved"):
+                continue
+            seen_rows.add(lab)
+            if lab not in srs.items:
+                diffs.append({"row": lab, "column": None, "type": "row not in SRS data",
+                              "detail": f"the seed has a row {lab}, srs/ has no such item"})
+                continue
+            for c in t.get("columns", []):
+                s = c in (r.get("marks") or [])
+                d = data_mark(lab, c)
+                if s and not d:
+                    diffs.append({"row": lab, "column": c, "type": "only in seed",
+                                  "detail": f"seed marks {lab} x {c}; srs/ {lab}.uses does not"})
+                elif d and not s:
+                    diffs.append({"row": lab, "column": c, "type": "only in data",
+                                  "detail": f"srs/ {lab}.uses gives {lab} x {c}; the seed has no mark"})
+            # Marks in regenerated columns the seed table does not have at all.
+            extra = [c for c in m["cells"].get(lab, []) if c not in t.get("columns", [])
+                     and not any(srs.items[c]["kind"] == g.get("kind") for g in groups.values())]
+            for c in extra:
+                diffs.append({"row": lab, "column": c, "type": "column absent from seed",
+                              "detail": f"srs/ {lab}.uses gives {lab} x {c}; the seed table has no column {c}"})
+        for lab in m["row_labels"]:
+            if lab not in seen_rows:
+                diffs.append({"row": lab, "column": None, "type": "row absent from seed",
+                              "detail": f"{lab} is an SRS item of a row kind but has no row in the seed table"
+                                        + (f" (uses {', '.join(m['cells'][lab])})" if m["cells"][lab] else "")})
+        # Side-by-side comparison matrix over the union of rows/columns.
+        rows = [r["label"] for r in t.get("rows", []) if not r.get("unresolved")]
+        rows += [x for x in m["row_labels"] if x not in rows]
+        cols = list(t.get("columns", []))
+        grouped_kinds = {g.get("kind") for g in groups.values()}
+        cols += [c for c in m["col_labels"] if c not in cols and srs.items[c]["kind"] not in grouped_kinds]
+        seedmarks = {r["label"]: set(r.get("marks") or []) for r in t.get("rows", []) if not r.get("unresolved")}
+        cells = {}
+        for r in rows:
+            for c in cols:
+                s = c in seedmarks.get(r, set())
+                d = data_mark(r, c) if r in srs.items else False
+                if s or d:
+                    cells[f"{r}|{c}"] = "both" if s and d else ("seed" if s else "data")
+        res["comparison"] = {"rows": rows, "cols": cols, "cells": cells,
+                             "seed_rows": sorted(seedmarks, key=natural_key),
+                             "seed_cols": t.get("columns", [])}
+    return results

@@ -1,0 +1,202 @@
+#!/usr/bin/python3
+"""Build the Tamias2D traceability report.
+
+    traceability/build_report.py --source <repo root> --build <build dir> --out <reports dir>
+
+Runs the tests once (every Boost.Test binary with --list_content=DOT and a JUnit logger, the
+other CTest entries through ctest --output-junit), joins them with srs/*.yaml, the \\srs{}
+code tags and reports/data/*.json, and writes index.html, traceability.md and
+traceability.json into the output directory. Exit status: 0 when every R/IM/TM/GD/DD item has
+a passing test and nothing fails, 1 otherwise, 2 on a usage error. See docs/traceability.md.
+"""
+from __future__ import annotations
+
+import argparse
+import datetime as _dt
+import json
+import os
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+if __package__ in (None, ""):
+    sys.path.insert(0, os.path.dirname(HERE))
+    __package__ = "traceability"  # noqa: A001 - allow `python3 traceability/build_report.py`
+
+from traceability import SCHEMA_VERSION  # noqa: E402
+from traceability import analysis, evidence, graphs, render_html, render_md, srsdata, vvdata  # noqa: E402
+
+
+def parse_args(argv):
+    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
+                                formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--source", default=os.path.dirname(HERE), help="repository root (default: parent of traceability/)")
+    p.add_argument("--build", default=None, help="CMake build directory (default: <source>/build)")
+    p.add_argument("--out", default=None, help="report directory (default: <source>/reports)")
+    p.add_argument("--srs", default=None, help="SRS directory (default: <source>/srs)")
+    p.add_argument("--data", default=None, help="verification results (default: <out>/data)")
+    p.add_argument("--results", default=None,
+                   help="raw test results directory (default: <out>/raw); written when tests run, read always")
+    p.add_argument("--no-run", action="store_true",
+                   help="do not run tests; use the results already in --results (e.g. pre-made fixtures)")
+    p.add_argument("--no-checker", action="store_true", help="do not call srs/check_srs.py --json")
+    p.add_argument("--seed-tables", default=os.path.join(HERE, "seed_tables.yaml"))
+    p.add_argument("--config", default=os.path.join(HERE, "config.yaml"))
+    p.add_argument("--timeout", type=float, default=1800, help="seconds per test binary (default 1800)")
+    p.add_argument("--jobs", type=int, default=1, help="ctest -j for non-Boost entries (default 1)")
+    p.add_argument("--date", default=None, help="timestamp to print (default: now, or SOURCE_DATE_EPOCH)")
+    p.add_argument("--quiet", action="store_true")
+    return p.parse_args(argv)
+
+
+def git_info(root):
+    info = {"root": os.path.abspath(root), "git_commit": None, "git_branch": None, "git_dirty": None}
+    try:
+        info["git_commit"] = subprocess.run(["git", "-C", root, "rev-parse", "HEAD"], capture_output=True,
+                                            text=True, timeout=30).stdout.strip() or None
+        info["git_branch"] = subprocess.run(["git", "-C", root, "rev-parse", "--abbrev-ref", "HEAD"],
+                                            capture_output=True, text=True, timeout=30).stdout.strip() or None
+        st = subprocess.run(["git", "-C", root, "status", "--porcelain", "--untracked-files=no"],
+                            capture_output=True, text=True, timeout=60)
+        info["git_dirty"] = bool(st.stdout.strip()) if st.returncode == 0 else None
+    except (OSError, subprocess.TimeoutExpired):
+        pass
+    return info
+
+
+def timestamp(arg):
+    if arg:
+        return arg
+    sde = os.environ.get("SOURCE_DATE_EPOCH")
+    if sde and sde.isdigit():
+        return _dt.datetime.fromtimestamp(int(sde), _dt.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
+    return _dt.datetime.now(_dt.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
+
+
+def build(args, log=print):
+    source = os.path.abspath(args.source)
+    build_dir = os.path.abspath(args.build or os.path.join(source, "build"))
+    out = os.path.abspath(args.out or os.path.join(source, "reports"))
+    srs_dir = os.path.abspath(args.srs or os.path.join(source, "srs"))
+    data_dir = os.path.abspath(args.data or os.path.join(out, "data"))
+    results_dir = os.path.abspath(args.results or os.path.join(out, "raw"))
+    os.makedirs(out, exist_ok=True)
+    warnings = []
+
+    srs = srsdata.load_srs(srs_dir)
+    warnings += srs.warnings
+    config = analysis.load_config(args.config)
+
+    checker = {"message": "not run (--no-checker)", "disagreements": None}
+    if not args.no_checker:
+        data, msg = srsdata.run_checker(source)
+        checker["message"] = msg
+        if isinstance(data, dict):
+            checker["disagreements"] = data.get("disagreements")
+
+    code_sites = evidence.scan_code_tags(source)
+
+    run_manifest = None
+    if not args.no_run:
+        os.makedirs(results_dir, exist_ok=True)
+        run_manifest = evidence.run_tests(build_dir, results_dir, timeout=args.timeout, jobs=args.jobs,
+                                          log=(lambda m: None) if args.quiet else log)
+    tests, ctests, tinfo = evidence.collect_tests(source, results_dir, warnings)
+    if run_manifest is None:
+        run_manifest = tinfo.get("manifest")
+
+    programs, cov = vvdata.load_data_dir(data_dir, warnings)
+    tests += vvdata.checks_as_tests(programs)
+    for p in programs:
+        for c in p["checks"]:
+            c["status"] = "passed" if c.get("passed") is True else "failed"
+    vvdata.render_plots(programs, out, warnings)
+
+    res = analysis.analyse(srs, code_sites, tests, config)
+    matrices = analysis.build_matrices(srs)
+    seed_cmp = analysis.compare_seed(srs, matrices, analysis.load_seed_tables(args.seed_tables))
+    status_of = {i["label"]: i["status"] for i in res["items"]}
+    gr = graphs.render_graphs(srs, status_of, out, warnings)
+    missing_oracle = res["missing_oracle"]
+    if missing_oracle:
+        warnings.append(f"{len(missing_oracle)} test(s)/check(s) state no oracle: " +
+                        ", ".join(missing_oracle[:10]) + (" ..." if len(missing_oracle) > 10 else ""))
+
+    report = {
+        "schema": "tamias2d-traceability",
+        "schema_version": SCHEMA_VERSION,
+        "generated": timestamp(args.date),
+        "source": git_info(source),
+        "inputs": {"srs_dir": srs_dir, "srs_files": srs.files, "build_dir": build_dir,
+                   "results_dir": results_dir, "data_dir": data_dir, "out_dir": out,
+                   "ran_tests": not args.no_run, "seed_tables": os.path.abspath(args.seed_tables)},
+        "gate": res["gate"],
+        "summary": {
+            "by_status": res["by_status"],
+            "by_kind": list(res["by_kind"].values()),
+            "tests": res["test_totals"],
+            "counts": {"items": len(res["items"]), "code_sites": len(code_sites), "tests": len(tests),
+                       "orphan_code_tags": len(res["orphans"]["code_tags"]),
+                       "orphan_test_labels": len(res["orphans"]["test_labels"]),
+                       "errata": len(srs.errata),
+                       "refby_disagreements": 0, "warnings": 0},
+        },
+        "items": res["items"],
+        "tests": tests,
+        "code_sites": code_sites,
+        "gaps": res["gaps"],
+        "orphans": res["orphans"],
+        "category_labels": res["category_labels"],
+        "missing_oracle": missing_oracle,
+        "registration": tinfo["registration"],
+        "boost_binaries": tinfo["boost_binaries"],
+        "matrices": [{k: m[k] for k in ("id", "number", "caption", "rows", "cols", "row_labels", "col_labels",
+                                        "cells", "empty_rows", "empty_cols")} for m in matrices],
+        "seed_tables": seed_cmp,
+        "errata": srs.errata,
+        "refby_disagreements": srsdata.refby_disagreements(srs),
+        "checker": checker,
+        "graphs": gr,
+        "verification": programs,
+        "coverage": vvdata.coverage_summary(cov),
+        "run": run_manifest,
+        "warnings": warnings,
+    }
+    report["summary"]["counts"]["refby_disagreements"] = len(report["refby_disagreements"])
+    report["summary"]["counts"]["warnings"] = len(warnings) + len(tinfo["registration"])
+    warnings += tinfo["registration"]
+
+    with open(os.path.join(out, "index.html"), "w", encoding="utf-8") as fh:
+        fh.write(render_html.render(report))
+    with open(os.path.join(out, "traceability.md"), "w", encoding="utf-8") as fh:
+        fh.write(render_md.render(report))
+    js = dict(report)
+    js["graphs"] = [{k: v for k, v in g.items() if k != "inline"} for g in gr]
+    js["items"] = [{k: v for k, v in i.items()} for i in report["items"]]
+    with open(os.path.join(out, "traceability.json"), "w", encoding="utf-8") as fh:
+        json.dump(js, fh, indent=1, sort_keys=False, default=str)
+        fh.write("\n")
+    return report
+
+
+def main(argv=None):
+    args = parse_args(sys.argv[1:] if argv is None else argv)
+    if not os.path.isdir(args.source):
+        print(f"build_report: --source {args.source} is not a directory", file=sys.stderr)
+        return 2
+    report = build(args, log=(lambda m: None) if args.quiet else (lambda m: print(m, file=sys.stderr)))
+    g = report["gate"]
+    if not args.quiet:
+        s = report["summary"]["by_status"]
+        out = report["inputs"]["out_dir"]
+        print(f"[traceability] {len(report['items'])} items: " + ", ".join(f"{v} {k}" for k, v in s.items()),
+              file=sys.stderr)
+        print(f"[traceability] gate {'PASS' if g['passed'] else 'FAIL'}; report: {os.path.join(out, 'index.html')}",
+              file=sys.stderr)
+        for r in g["reasons"]:
+            print(f"[traceability]   - {r}", file=sys.stderr)
+    return g["exit_code"]
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,153 @@
+"""reports/traceability.md: the same content as index.html in a diffable form."""
+from __future__ import annotations
+
+from .srsdata import KIND_NAMES
+
+
+def _esc(s):
+    return str(s if s is not None else "").replace("|", "\\|").replace("\n", " ")
+
+
+def _table(header, rows):
+    out = ["| " + " | ".join(header) + " |", "|" + "|".join("---" for _ in header) + "|"]
+    out += ["| " + " | ".join(_esc(c) for c in row) + " |" for row in rows]
+    return "\n".join(out) + "\n"
+
+
+def render(r):
+    L = []
+    w = L.append
+    src = r["source"]
+    w("# Tamias2D: SRS traceability and V&V evidence\n")
+    w(f"Generated {r['generated']} · commit `{(src.get('git_commit') or 'unknown')[:12]}`"
+      f"{' (dirty tree)' if src.get('git_dirty') else ''} · "
+      f"{'tests run' if r['inputs']['ran_tests'] else 'pre-recorded results'} · schema {r['schema_version']}\n")
+    g = r["gate"]
+    if g["passed"]:
+        w("**Gate: PASS (exit 0).** Every R/IM/TM/GD/DD item has a passing test and nothing fails.\n")
+    else:
+        w(f"**Gate: FAIL (exit {g['exit_code']}).** Reasons:\n")
+        for x in g["reasons"]:
+            w(f"- {x}")
+        w("")
+    s = r["summary"]
+    w("## 1. Summary\n")
+    w("Items by status: " + ", ".join(f"{k}: {v}" for k, v in s["by_status"].items()) +
+      f" (of {len(r['items'])}).\n")
+    w(_table(["Kind", "Name", "Items", "Verified", "Failing", "Untested", "Not impl.", "With code", "With tests", "Verified %"],
+             [[k["kind"], k["name"], k["total"], k["verified"], k["failing"], k["untested"],
+               k["not implemented"], k["with_code"], k["with_tests"], k["verified_percent"]] for k in s["by_kind"]]))
+    w(_table(["Origin", "Total", "Passed", "Failed", "Error", "Skipped", "Not run"],
+             [[o, t.get("total", 0), t.get("passed", 0), t.get("failed", 0), t.get("error", 0),
+               t.get("skipped", 0), t.get("notrun", 0)] for o, t in sorted(s["tests"].items())]))
+    tests = {t["id"]: t for t in r["tests"]}
+    w("## 2. Items\n")
+    w(_table(["Label", "Kind", "Alias", "Title", "Status", "Code sites", "Tests (status)", "Errata"],
+             [[i["label"], i["kind"], i.get("alias") or "", i.get("title") or "", i["status"],
+               "; ".join(f"{c['file']}:{c['line']}" for c in i["code_sites"]) or "—",
+               "; ".join(f"{t} ({tests[t]['status']})" for t in i["tests"]) or "—",
+               ", ".join(i["errata"])] for i in r["items"]]))
+    notes = [(i["label"], n) for i in r["items"] for n in i["notes"]]
+    if notes:
+        w("Notes:\n")
+        for lab, n in notes:
+            w(f"- {lab}: {n}")
+        w("")
+    w("### Oracles of the labelled tests\n")
+    rows = []
+    for i in r["items"]:
+        for t in i["tests"]:
+            rows.append([i["label"], t, tests[t]["status"], tests[t].get("oracle") or "(none stated)"])
+    w(_table(["Item", "Test / check", "Status", "Oracle"], rows) if rows else "None.\n")
+    w("## 3. Gaps and orphans\n")
+    gp = r["gaps"]
+    w(f"- No code tag ({len(gp['no_code'])}): {', '.join(gp['no_code']) or 'none'}")
+    w(f"- No labelled test or check ({len(gp['no_test'])}): {', '.join(gp['no_test']) or 'none'}")
+    w(f"- No passing test or check ({len(gp['no_passing_test'])}): {', '.join(gp['no_passing_test']) or 'none'}")
+    o = r["orphans"]
+    w(f"- Orphan code tags ({len(o['code_tags'])}): " +
+      (", ".join(f"`\\srs{{{x['label']}}}` at {x['file']}:{x['line']}" for x in o["code_tags"]) or "none"))
+    w(f"- Orphan test labels ({len(o['test_labels'])}): " +
+      (", ".join(f"{x['label']} ({', '.join(x['tests'])})" for x in o["test_labels"]) or "none"))
+    w(f"- Tests without an oracle ({len(r['missing_oracle'])}): {', '.join(r['missing_oracle']) or 'none'}")
+    for x in r["registration"]:
+        w(f"- Registration: {x}")
+    w("")
+    w("## 4. Traceability matrices\n")
+    seed = {t["id"]: t for t in r["seed_tables"]}
+    for m in r["matrices"]:
+        w(f"### Table {m['number']} (regenerated from srs/ `uses`): {m['caption']}\n")
+        if m["row_labels"] and m["col_labels"]:
+            w(_table([""] + m["col_labels"],
+                     [[row] + ["X" if c in m["cells"][row] else "" for c in m["col_labels"]] for row in m["row_labels"]]))
+        else:
+            w("No items of these kinds yet.\n")
+        st = seed.get(m["id"])
+        if not st:
+            continue
+        if st["missing"]:
+            w(f"**Seed Table {m['number']} is missing from the seed text.** " + " ".join(st["notes"]) + "\n")
+            continue
+        w(f"Seed Table {m['number']} as printed (traceability/seed_tables.yaml):\n")
+        w(_table([""] + st["seed_columns"],
+                 [[row.get("printed_as") or row["label"]] + ["X" if c in (row.get("marks") or []) else "" for c in st["seed_columns"]]
+                  for row in st["seed_rows"]]))
+        if st["differences"]:
+            w(f"Differences, seed vs regenerated ({len(st['differences'])}):\n")
+            w(_table(["Row", "Column", "Type", "Detail"],
+                     [[d["row"], d["column"] or "", d["type"], d["detail"]] for d in st["differences"]]))
+        for n in st["notes"]:
+            w(f"- {n}")
+        w("")
+    w("## 5. Graphs\n")
+    for gph in r["graphs"]:
+        w(f"- {gph['title']}: [{gph['svg'] or gph['dot']}]({gph['svg'] or gph['dot']}) ({gph['nodes']} nodes, {gph['edges']} edges)")
+    w("")
+    w("## 6. SRS errata\n")
+    if r["errata"]:
+        w(_table(["Id", "Items", "Kind", "Seed text", "Problem", "Correct reading", "Compile-fail"],
+                 [[e["id"], ", ".join(e.get("items", [])), e.get("kind") or "", e.get("seed_text") or "",
+                   e.get("problem") or "", e.get("correct_reading") or "", e.get("compile_fail") or ""]
+                  for e in r["errata"]]))
+    else:
+        w("No errata loaded.\n")
+    w(f"### Ref. By disagreements (seed vs computed from `uses`): {len(r['refby_disagreements'])}\n")
+    if r["refby_disagreements"]:
+        w(_table(["Item", "Seed Ref. By", "Computed Ref. By", "Only in seed", "Only computed"],
+                 [[d["label"], ", ".join(d["seed_ref_by"]), ", ".join(d["computed_ref_by"]),
+                   ", ".join(d["only_in_seed"]), ", ".join(d["only_in_data"])] for d in r["refby_disagreements"]]))
+    w(f"srs/check_srs.py cross-check: {r['checker']['message']}\n")
+    w("## 7. V&V evidence\n")
+    if not r["verification"]:
+        w("No verification results in reports/data/.\n")
+    for p in r["verification"]:
+        w(f"### {p['program']}\n\n{p.get('description') or ''} (data/{p['file']})\n")
+        if p["checks"]:
+            w(_table(["Check", "Labels", "Status", "Oracle", "Details"],
+                     [[c.get("name"), ", ".join(c.get("labels") or []), c["status"], c.get("oracle") or "",
+                       c.get("details") or ""] for c in p["checks"]]))
+        for t in p["tables"]:
+            w(f"**{t.get('name', '')}**\n")
+            w(_table([str(c) for c in t.get("columns", [])],
+                     [row if isinstance(row, list) else [row] for row in t.get("rows", [])]))
+        for s_ in p["series"]:
+            if s_.get("svg"):
+                w(f"![{s_.get('name')}]({s_['svg']})\n")
+    w("## 8. Coverage\n")
+    cov = r["coverage"]
+    if cov:
+        t = cov["totals"]
+        w(f"Lines {t.get('line_percent')}% ({t.get('line_covered')}/{t.get('line_total')}), "
+          f"functions {t.get('function_percent')}%, branches {t.get('branch_percent')}%.\n")
+    else:
+        w("No reports/data/coverage.json.\n")
+    w("## 9. Warnings\n")
+    for x in r["warnings"]:
+        w(f"- {x}")
+    if not r["warnings"]:
+        w("None.")
+    w("")
+    return "\n".join(L)
+
+
+__all__ = ["render", "KIND_NAMES"]

@@ -1,0 +1,287 @@
+"""Self-test of the traceability harness against the fixture repository in fixtures/repo.
+
+The fixture has one failing item (IM2), untested items (T1, R2 with code only; LC1 with only
+a disabled test), items with nothing (GS1, A1, DD2, DC1), an orphan test label (R99) and an
+orphan code tag (DD99). Run: /usr/bin/python3 -m unittest discover -s traceability/tests -t .
+"""
+import json
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import unittest
+
+from traceability import analysis, build_report, evidence, vvdata
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+FIX = os.path.join(HERE, "fixtures")
+REPO = os.path.join(FIX, "repo")
+SCRIPT = os.path.join(os.path.dirname(HERE), "build_report.py")
+HAVE_DOT = shutil.which("dot") is not None
+
+
+def run_harness(repo, out, extra=()):
+    argv = ["--source", repo, "--build", os.path.join(repo, "no-build"), "--out", out,
+            "--results", os.path.join(repo, "results"), "--data", os.path.join(repo, "data"),
+            "--no-run", "--no-checker", "--seed-tables", os.path.join(FIX, "seed_tables.yaml"),
+            "--date", "2000-01-01 00:00 UTC", "--quiet", *extra]
+    return build_report.main(argv)
+
+
+class FixtureReport(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.mkdtemp(prefix="trace-selftest-")
+        cls.out = os.path.join(cls.tmp, "reports")
+        cls.exit_code = run_harness(REPO, cls.out)
+        with open(os.path.join(cls.out, "traceability.json"), encoding="utf-8") as fh:
+            cls.report = json.load(fh)
+        cls.items = {i["label"]: i for i in cls.report["items"]}
+        cls.tests = {t["id"]: t for t in cls.report["tests"]}
+
+    @classmethod
+    def tearDownClass(cls):
+        shutil.rmtree(cls.tmp, ignore_errors=True)
+
+    def test_exit_code_is_nonzero_with_reasons(self):
+        self.assertEqual(self.exit_code, 1)
+        gate = self.report["gate"]
+        self.assertFalse(gate["passed"])
+        joined = " ".join(gate["reasons"])
+        self.assertIn("model_tests:model/im2_spin", joined)
+        for lab in ("T1", "DD2", "IM2", "R2"):
+            self.assertIn(lab, joined)
+
+    def test_item_statuses(self):
+        expected = {
+            "IM1": "verified", "DD1": "verified", "R1": "verified", "NFR1": "verified",
+            "IM2": "failing",
+            "T1": "untested", "R2": "untested", "LC1": "untested",
+            "GS1": "not implemented", "A1": "not implemented", "DD2": "not implemented",
+            "DC1": "not implemented",
+        }
+        self.assertEqual({k: v["status"] for k, v in self.items.items()}, expected)
+
+    def test_totals_per_kind(self):
+        by_kind = {row["kind"]: row for row in self.report["summary"]["by_kind"]}
+        self.assertEqual(by_kind["IM"]["total"], 2)
+        self.assertEqual(by_kind["IM"]["verified"], 1)
+        self.assertEqual(by_kind["IM"]["failing"], 1)
+        self.assertEqual(by_kind["IM"]["verified_percent"], 50.0)
+        self.assertEqual(self.report["summary"]["by_status"],
+                         {"verified": 4, "failing": 1, "untested": 3, "not implemented": 4})
+        self.assertNotIn("GD", by_kind)  # general_definitions.yaml is an empty list
+
+    def test_orphans_both_directions(self):
+        orphans = self.report["orphans"]
+        self.assertEqual([o["label"] for o in orphans["code_tags"]], ["DD99"])
+        self.assertEqual(orphans["code_tags"][0]["file"], "src/solver.cpp")
+        self.assertEqual(orphans["code_tags"][0]["line"], 3)
+        self.assertEqual([o["label"] for o in orphans["test_labels"]], ["R99"])
+        self.assertEqual(orphans["test_labels"][0]["tests"], ["model_tests:model/mystery"])
+        # category labels are not orphans
+        self.assertEqual({c["label"] for c in self.report["category_labels"]}, {"compile_fail", "traceability"})
+        gaps = self.report["gaps"]
+        self.assertEqual(gaps["no_code"], ["GS1", "A1", "DD2", "DC1", "R1", "NFR1", "LC1"])
+        self.assertEqual(gaps["no_test"], ["GS1", "A1", "T1", "DD2", "DC1", "R2"])
+
+    def test_code_sites(self):
+        sites = {(s["label"], s["file"], s["line"]) for s in self.report["code_sites"]}
+        self.assertIn(("DD1", "src/model/model.hpp", 2), sites)
+        self.assertIn(("IM2", "src/model/model.hpp", 8), sites)
+        self.assertIn(("T1", "src/model/model.hpp", 13), sites)  # inside a /** */ block
+        self.assertNotIn("FAKE", {s["label"] for s in self.report["code_sites"]})
+
+    def test_tests_and_oracles(self):
+        t = self.tests["model_tests:model/im1_free_fall"]
+        self.assertEqual(t["status"], "passed")
+        self.assertEqual(t["labels"], ["IM1", "DD1"])
+        self.assertEqual(t["file"], "tests/model/test_model.cpp")
+        self.assertEqual(t["oracle"], "closed form x(t) = x0 + v0 t + g t^2 / 2 "
+                                      "(exact for the symplectic Euler step at t = n dt).")
+        spin = self.tests["model_tests:model/im2_spin"]
+        self.assertEqual(spin["status"], "failed")
+        self.assertEqual(spin["oracle"], "angular momentum is conserved without torque")
+        self.assertIn("1 == 2", spin["details"])
+        data = self.tests["model_tests:model/im1_samples"]
+        self.assertEqual(data["status"], "passed")
+        self.assertEqual(data["labels"], ["IM1"])
+        self.assertEqual(data["samples"], "3 samples: 3 passed")
+        self.assertEqual(data["oracle"], "three hand-computed trajectories")
+        self.assertEqual(self.tests["model_tests:model/lc1_edge_edge"]["status"], "skipped")
+        self.assertEqual(self.tests["ctest:cli_smoke"]["oracle"],
+                         "the CLI exits 0 and prints the final state of a falling body")
+        self.assertEqual(self.tests["peer_compare:step_time_within_2x_of_peer"]["labels"], ["NFR1"])
+        self.assertIn("model_tests:model/mystery", self.report["missing_oracle"])
+        self.assertNotIn("model_tests:model/im1_free_fall", self.report["missing_oracle"])
+        self.assertTrue(any("@LC1" in x for x in self.report["registration"]))
+
+    def test_item_evidence_lists(self):
+        im1 = self.items["IM1"]
+        self.assertEqual(im1["tests_passed"], 3)
+        self.assertIn("peer_compare:trajectory_matches_closed_form", im1["tests"])
+        self.assertTrue(any("no code carries" in n for n in self.items["R1"]["notes"]))
+        self.assertTrue(any("verified only by tests" in n for n in self.items["GS1"]["notes"]))
+
+    def test_matrices_and_seed_comparison(self):
+        m = {x["id"]: x for x in self.report["matrices"]}
+        self.assertEqual(m["table3"]["cells"]["R1"], ["IM1", "DC1"])
+        self.assertEqual(m["table4"]["cells"]["IM1"], ["A1"])
+        self.assertEqual(m["table5"]["cells"]["IM2"], ["T1"])
+        self.assertIn("DD2", m["table5"]["empty_rows"])
+        seed = {x["id"]: x for x in self.report["seed_tables"]}
+        d3 = {(d["row"], d["column"], d["type"]) for d in seed["table3"]["differences"]}
+        self.assertEqual(d3, {("GS1", "R1", "only in seed"),
+                              ("R1", "Data Constraints", "only in data"),
+                              ("R9", None, "row not in SRS data"),
+                              ("R2", None, "row absent from seed")})
+        d4 = {(d["row"], d["column"], d["type"]) for d in seed["table4"]["differences"]}
+        self.assertEqual(d4, {("T??", None, "unresolved seed row"), ("IM2", "A1", "only in seed"),
+                              ("DD2", None, "row absent from seed")})
+        self.assertTrue(seed["table5"]["missing"])
+
+    def test_errata_and_refby(self):
+        self.assertEqual([e["id"] for e in self.report["errata"]], ["E1"])
+        rb = {d["label"]: d for d in self.report["refby_disagreements"]}
+        self.assertEqual(rb["DD1"]["only_in_seed"], ["IM2"])
+        self.assertEqual(rb["A1"]["only_in_data"], ["LC1"])
+
+    def test_outputs_written(self):
+        html_path = os.path.join(self.out, "index.html")
+        self.assertTrue(os.path.exists(html_path))
+        with open(html_path, encoding="utf-8") as fh:
+            page = fh.read()
+        for needle in ('id="item-IM2"', "Gate: FAIL", 'id="orphan-tags"', "DD99", "R99",
+                       "Seed Table 5 is missing", 'id="erratum-E1"', "peer_compare"):
+            self.assertIn(needle, page)
+        self.assertNotIn("<link ", page)  # self-contained: no external stylesheet
+        self.assertTrue(os.path.exists(os.path.join(self.out, "traceability.md")))
+        self.assertEqual(self.report["schema_version"], "1.0")
+        self.assertTrue(os.path.exists(os.path.join(self.out, "plots", "peer_compare__Error_vs_step_size.svg")))
+        self.assertEqual(self.report["coverage"]["totals"]["line_percent"], 80.0)
+        if HAVE_DOT:
+            for g in ("graph_table3", "graph_table4", "graph_table5", "graph_all"):
+                self.assertTrue(os.path.exists(os.path.join(self.out, "graphs", g + ".svg")), g)
+            self.assertIn("<svg", page)
+
+
+class GreenFixture(unittest.TestCase):
+    """A variant where every gated item passes: exit status 0."""
+
+    def test_exit_zero_when_everything_gated_passes(self):
+        tmp = tempfile.mkdtemp(prefix="trace-green-")
+        try:
+            repo = os.path.join(tmp, "repo")
+            shutil.copytree(REPO, repo)
+            junit = os.path.join(repo, "results", "boost", "model_tests.junit.xml")
+            with open(junit, encoding="utf-8") as fh:
+                text = fh.read()
+            start = text.index("<failure")
+            end = text.index("</system-err>", start) + len("</system-err>")
+            with open(junit, "w", encoding="utf-8") as fh:
+                fh.write(text[:start] + text[end:])
+            for name, content in (("theoretical_models.yaml", "[]\n"),
+                                  ("requirements.yaml", None), ("data_definitions.yaml", None)):
+                path = os.path.join(repo, "srs", name)
+                if content is not None:
+                    with open(path, "w", encoding="utf-8") as fh:
+                        fh.write(content)
+                else:  # keep only the first item
+                    with open(path, encoding="utf-8") as fh:
+                        text = fh.read()
+                    second = text.index("\n- label:")
+                    with open(path, "w", encoding="utf-8") as fh:
+                        fh.write(text[:second + 1])
+            out = os.path.join(tmp, "reports")
+            self.assertEqual(run_harness(repo, out), 0)
+            with open(os.path.join(out, "traceability.json"), encoding="utf-8") as fh:
+                rep = json.load(fh)
+            self.assertTrue(rep["gate"]["passed"])
+            self.assertEqual({i["label"]: i["status"] for i in rep["items"] if i["gated"]},
+                             {"DD1": "verified", "IM1": "verified", "IM2": "verified", "R1": "verified"})
+            with open(os.path.join(out, "index.html"), encoding="utf-8") as fh:
+                self.assertIn("Gate: PASS", fh.read())
+        finally:
+            shutil.rmtree(tmp, ignore_errors=True)
+
+
+class ScriptEntryPoint(unittest.TestCase):
+    def test_runs_as_a_script(self):
+        tmp = tempfile.mkdtemp(prefix="trace-cli-")
+        try:
+            proc = subprocess.run(
+                ["/usr/bin/python3", SCRIPT, "--source", REPO, "--out", tmp, "--no-run", "--no-checker",
+                 "--results", os.path.join(REPO, "results"), "--data", os.path.join(REPO, "data"), "--quiet"],
+                capture_output=True, text=True, timeout=300)
+            self.assertEqual(proc.returncode, 1, proc.stderr)
+            self.assertTrue(os.path.exists(os.path.join(tmp, "index.html")))
+        finally:
+            shutil.rmtree(tmp, ignore_errors=True)
+
+    def test_missing_source_is_a_usage_error(self):
+        self.assertEqual(build_report.main(["--source", "/nonexistent/dir", "--quiet"]), 2)
+
+
+class Units(unittest.TestCase):
+    def test_status_rules(self):
+        p = {"status": "passed"}
+        f = {"status": "failed"}
+        s = {"status": "skipped"}
+        self.assertEqual(analysis.item_status([], [p]), "verified")
+        self.assertEqual(analysis.item_status([1], [p, f]), "failing")
+        self.assertEqual(analysis.item_status([1], []), "untested")
+        self.assertEqual(analysis.item_status([], [s]), "untested")
+        self.assertEqual(analysis.item_status([], []), "not implemented")
+
+    def test_comment_spans(self):
+        spans, inb = evidence._comment_spans('x = "\\srs{A}"; // \\srs{B}', False, False)
+        self.assertEqual(len(spans), 1)
+        self.assertFalse(inb)
+        spans, inb = evidence._comment_spans("int a; /* start", False, False)
+        self.assertTrue(inb)
+        spans, inb = evidence._comment_spans(" * \\srs{C} */ int b;", True, False)
+        self.assertEqual(spans[0][0], 0)
+        self.assertFalse(inb)
+        spans, _ = evidence._comment_spans('s = "#x"  # \\srs{D}', False, True)
+        self.assertEqual(len(spans), 1)
+
+    def test_nested_suites_inherit_labels(self):
+        dot = "\n".join([
+            'digraph G {rankdir=LR;',
+            'tu1[shape=ellipse,peripheries=2,fontname=Helvetica,color=green,label="m"];',
+            '{',
+            'tu2[shape=Mrecord,fontname=Helvetica,color=green,label="outer|a.cpp(3)|labels: @R1"];',
+            'tu1 -> tu2;',
+            '{',
+            'tu3[shape=Mrecord,fontname=Helvetica,color=yellow,label="inner|a.cpp(4)"];',
+            'tu2 -> tu3;',
+            '{',
+            'tu65536[shape=Mrecord,fontname=Helvetica,color=green,label="c|a.cpp(5)|labels: @IM3"];',
+            'tu3 -> tu65536;',
+            '}', '}',
+            'tu65537[shape=Mrecord,fontname=Helvetica,color=green,label="tmpl<int>|a.cpp(9)"];',
+            'tu1 -> tu65537;',
+            '}', '}'])
+        cases = evidence.boost_cases(dot)
+        self.assertEqual([c["path"] for c in cases], [["outer", "inner", "c"], ["tmpl<int>"]])
+        self.assertEqual(cases[0]["labels"], ["IM3", "R1"])
+        self.assertFalse(cases[0]["enabled"])  # its suite is disabled
+        self.assertEqual(cases[1]["labels"], [])
+
+    def test_oracle_block_forms(self):
+        lines = ["// Something else", "// Oracle: a = b", "//   continued", "BOOST_AUTO_TEST_CASE(x) {}",
+                 "", "/* Oracle: c */", "BOOST_TEST_DECORATOR(*utf::label(\"R1\"))",
+                 "BOOST_DATA_TEST_CASE(y, data) {}", "", "BOOST_AUTO_TEST_CASE(z) {}"]
+        ora = [evidence._oracle_from_block(evidence._comment_block_above(lines, i)) for i in (3, 7, 9)]
+        self.assertEqual(ora, ["a = b continued", "c", None])
+
+    def test_verification_schema_validation(self):
+        self.assertEqual(vvdata.validate({"program": "p", "checks": [], "tables": [], "series": []}), [])
+        errs = vvdata.validate({"checks": [{"name": "c", "passed": "yes"}],
+                                "series": [{"lines": [{"x": [1, 2], "y": [1]}]}]})
+        self.assertEqual(len(errs), 3)
+
+
+if __name__ == "__main__":
+    unittest.main()

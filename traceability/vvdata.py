@@ -1,0 +1,172 @@
+"""Verification-program results (reports/data/*.json), their plots, and gcovr coverage."""
+from __future__ import annotations
+
+import json
+import os
+import re
+
+
+def _slug(s):
+    return re.sub(r"[^A-Za-z0-9_.-]+", "_", str(s)).strip("_") or "x"
+
+
+def validate(doc):
+    """Return a list of schema problems (empty when the document is valid)."""
+    errs = []
+    if not isinstance(doc, dict):
+        return ["top level is not an object"]
+    if not isinstance(doc.get("program"), str):
+        errs.append("'program' missing or not a string")
+    for key in ("checks", "tables", "series"):
+        if key in doc and not isinstance(doc[key], list):
+            errs.append(f"'{key}' is not a list")
+    for i, c in enumerate(doc.get("checks") or []):
+        if not isinstance(c, dict):
+            errs.append(f"checks[{i}] is not an object")
+            continue
+        if not isinstance(c.get("name"), str):
+            errs.append(f"checks[{i}].name missing")
+        if not isinstance(c.get("passed"), bool):
+            errs.append(f"checks[{i}].passed is not a boolean")
+        if not isinstance(c.get("labels", []), list):
+            errs.append(f"checks[{i}].labels is not a list")
+    for i, t in enumerate(doc.get("tables") or []):
+        if not isinstance(t, dict) or not isinstance(t.get("columns"), list) or not isinstance(t.get("rows"), list):
+            errs.append(f"tables[{i}] needs 'columns' and 'rows' lists")
+    for i, s in enumerate(doc.get("series") or []):
+        if not isinstance(s, dict) or not isinstance(s.get("lines"), list):
+            errs.append(f"series[{i}] needs a 'lines' list")
+            continue
+        for j, ln in enumerate(s["lines"]):
+            if not isinstance(ln, dict) or len(ln.get("x") or []) != len(ln.get("y") or []):
+                errs.append(f"series[{i}].lines[{j}]: x and y must be lists of equal length")
+    return errs
+
+
+def load_data_dir(data_dir, warnings):
+    """Returns (programs, coverage). Programs are the valid documents with their file name."""
+    programs, coverage = [], None
+    if not os.path.isdir(data_dir):
+        return programs, coverage
+    for fn in sorted(os.listdir(data_dir)):
+        if not fn.endswith(".json"):
+            continue
+        path = os.path.join(data_dir, fn)
+        try:
+            with open(path, encoding="utf-8") as fh:
+                doc = json.load(fh)
+        except (OSError, ValueError) as exc:
+            warnings.append(f"data/{fn}: unreadable JSON ({exc})")
+            programs.append({"file": fn, "program": fn, "invalid": [f"unreadable: {exc}"],
+                             "checks": [], "tables": [], "series": []})
+            continue
+        if fn == "coverage.json":
+            coverage = doc
+            continue
+        errs = validate(doc)
+        if errs:
+            warnings.append(f"data/{fn}: does not follow the verification schema: " + "; ".join(errs[:5]))
+        if not isinstance(doc, dict):
+            doc = {}
+        programs.append({"file": fn, "program": str(doc.get("program") or fn),
+                         "description": doc.get("description", ""), "invalid": errs,
+                         "checks": [c for c in doc.get("checks") or [] if isinstance(c, dict)],
+                         "tables": [t for t in doc.get("tables") or [] if isinstance(t, dict)],
+                         "series": [s for s in doc.get("series") or [] if isinstance(s, dict)]})
+    return programs, coverage
+
+
+def checks_as_tests(programs):
+    tests = []
+    for p in programs:
+        if p["invalid"] and not p["checks"]:
+            # An unreadable result file is evidence of a broken verification run.
+            tests.append({"id": f"{p['program']}:<results file>", "name": "<results file>",
+                          "origin": "verification", "binary": p["program"], "status": "error",
+                          "labels": [], "oracle": None, "file": f"data/{p['file']}", "line": None,
+                          "details": "; ".join(p["invalid"]), "samples": None, "enabled": True})
+        for c in p["checks"]:
+            passed = c.get("passed")
+            tests.append({"id": f"{p['program']}:{c.get('name')}", "name": str(c.get("name")),
+                          "origin": "verification", "binary": p["program"],
+                          "status": "passed" if passed is True else "failed",
+                          "labels": [str(x) for x in c.get("labels") or []],
+                          "oracle": c.get("oracle"), "file": f"data/{p['file']}", "line": None,
+                          "details": str(c.get("details") or ""), "samples": None, "enabled": True})
+    return tests
+
+
+def render_plots(programs, out_dir, warnings):
+    """One SVG per series into <out_dir>/plots/. Sets series['svg'] (relative path)."""
+    series_all = [(p, s) for p in programs for s in p["series"]]
+    if not series_all:
+        return
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        matplotlib.rcParams["svg.hashsalt"] = "tamias2d"
+        matplotlib.rcParams["svg.fonttype"] = "none"
+        import matplotlib.pyplot as plt
+    except Exception as exc:  # pragma: no cover - matplotlib is a Debian package here
+        warnings.append(f"matplotlib unavailable, no plots: {exc}")
+        return
+    plot_dir = os.path.join(out_dir, "plots")
+    os.makedirs(plot_dir, exist_ok=True)
+    used = set()
+    for p, s in series_all:
+        name = f"{_slug(p['program'])}__{_slug(s.get('name'))}"
+        base, n = name, 2
+        while name in used:
+            name, n = f"{base}_{n}", n + 1
+        used.add(name)
+        fig, ax = plt.subplots(figsize=(6.4, 4.0), dpi=100)
+        try:
+            for ln in s.get("lines") or []:
+                xs, ys = ln.get("x") or [], ln.get("y") or []
+                if len(xs) != len(ys):
+                    continue
+                pts = [(x, y) for x, y in zip(xs, ys) if x is not None and y is not None]
+                if s.get("log_x"):
+                    pts = [(x, y) for x, y in pts if x > 0]
+                if s.get("log_y"):
+                    pts = [(x, y) for x, y in pts if y > 0]
+                if not pts:
+                    continue
+                marker = "o" if len(pts) <= 30 else None
+                ax.plot([a for a, _ in pts], [b for _, b in pts], marker=marker, markersize=3,
+                        linewidth=1.4, label=str(ln.get("label", "")))
+            if s.get("log_x"):
+                ax.set_xscale("log")
+            if s.get("log_y"):
+                ax.set_yscale("log")
+            ax.set_xlabel(str(s.get("x_label", "")))
+            ax.set_ylabel(str(s.get("y_label", "")))
+            ax.set_title(str(s.get("name", "")), fontsize=11)
+            ax.grid(True, which="both", alpha=0.3)
+            if any(ln.get("label") for ln in s.get("lines") or []):
+                ax.legend(fontsize=8)
+            fig.tight_layout()
+            path = os.path.join(plot_dir, name + ".svg")
+            fig.savefig(path, format="svg", metadata={"Date": None})
+            s["svg"] = f"plots/{name}.svg"
+        except Exception as exc:
+            warnings.append(f"plot {p['program']}/{s.get('name')} failed: {exc}")
+        finally:
+            plt.close(fig)
+
+
+def coverage_summary(cov):
+    """Normalise a gcovr --json-summary document."""
+    if not isinstance(cov, dict):
+        return None
+    files = []
+    for f in cov.get("files") or []:
+        files.append({k: f.get(k) for k in ("filename", "line_total", "line_covered", "line_percent",
+                                            "function_total", "function_covered", "function_percent",
+                                            "branch_total", "branch_covered", "branch_percent")})
+    files.sort(key=lambda f: (f.get("line_percent") if f.get("line_percent") is not None else 101,
+                              f.get("filename") or ""))
+    tot = {k: cov.get(k) for k in ("line_total", "line_covered", "line_percent", "function_total",
+                                   "function_covered", "function_percent", "branch_total",
+                                   "branch_covered", "branch_percent")}
+    return {"totals": tot, "files": files, "format": cov.get("gcovr/summary_format_version")}
