@@ -23,6 +23,7 @@ import time
 import xml.etree.ElementTree as ET
 
 CODE_DIRS = ["src", "apps", "verification"]
+CMAKE_DIRS = ["cmake", "src", "apps", "tests", "examples", "verification"]
 CODE_EXTS = (".hpp", ".h", ".hh", ".hxx", ".cpp", ".cc", ".cxx", ".c", ".ipp", ".inl",
              ".py", ".cmake", ".txt", ".sh")
 TEST_SRC_EXTS = (".cpp", ".cc", ".cxx", ".hpp", ".h", ".ipp")
@@ -218,8 +219,12 @@ ADD_TEST = re.compile(r"^\s*add_test\s*\(\s*(?:NAME\s+)?([^\s)]+)", re.I)
 def scan_cmake_oracles(source_root):
     """`# Oracle:` comment blocks directly above add_test(NAME x ...) in CMake files."""
     out = {}
-    for path in _walk(source_root, (".cmake",)):
-        if not (path.endswith("CMakeLists.txt") or path.endswith(".cmake")):
+    paths = [os.path.join(source_root, "CMakeLists.txt")]
+    for d in CMAKE_DIRS:
+        if os.path.isdir(os.path.join(source_root, d)):
+            paths += list(_walk(os.path.join(source_root, d), (".cmake",)))
+    for path in paths:
+        if not os.path.exists(path) or not (path.endswith("CMakeLists.txt") or path.endswith(".cmake")):
             continue
         try:
             with open(path, encoding="utf-8", errors="replace") as fh:

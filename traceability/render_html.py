@@ -187,11 +187,12 @@ The harness exits non-zero when any {E('/'.join(g['gated_kinds']))} item lacks a
 any test or check fails. This report is complete nonetheless; the reasons are:<ul>{lis}</ul></div>""")
 
     def _linkify(self, text):
-        # Turn bare SRS labels in a reason line into links.
-        def rep(m):
-            lab = m.group(0)
-            return f'<a href="#item-{lab}">{lab}</a>' if lab in self.items else lab
-        return re.sub(r"\b[A-Z]{1,3}\d+\b", rep, text)
+        # Turn bare SRS labels in a reason line (already HTML-escaped) into links.
+        if not self.items:
+            return text
+        labels = sorted(self.items, key=len, reverse=True)
+        pat = re.compile(r"(?<![\w:/.@-])(" + "|".join(re.escape(x) for x in labels) + r")(?![\w@])")
+        return pat.sub(lambda m: f'<a href="#item-{E(m.group(1))}">{E(m.group(1))}</a>', text)
 
     def summary(self):
         r = self.r

@@ -160,10 +160,15 @@ def load_srs(srs_dir: str) -> Srs:
     else:
         srs.warnings.append("srs/errata.yaml not found: no errata listed")
     known_errata = {e["id"] for e in srs.errata}
+    unknown = {}
     for lab in srs.order:
         for eid in srs.items[lab]["errata"]:
             if eid not in known_errata:
-                srs.warnings.append(f"{lab} cites erratum {eid}, which is not in srs/errata.yaml")
+                unknown.setdefault(eid, []).append(lab)
+    if unknown:
+        srs.warnings.append(f"{len(unknown)} erratum id(s) cited by items but absent from srs/errata.yaml: " +
+                            "; ".join(f"{e} ({', '.join(labs)})" for e, labs in
+                                      sorted(unknown.items(), key=lambda kv: natural_key(kv[0]))))
     return srs
 
 
