@@ -313,7 +313,7 @@ def _cycles(items):
     return None
 
 
-def check(srs_dir=HERE, seeds_dir=None):
+def check(srs_dir=HERE, seeds_dir=None, use_seeds=True):
     res = Result()
     # 1. Items.
     for fname, kinds in ITEM_FILES.items():
@@ -397,7 +397,7 @@ def check(srs_dir=HERE, seeds_dir=None):
             res.error(f"{lab}: alias {al} is not a Drasil name of seed 001 (meta.yaml drasil_names)")
     if len(set(names.values())) != len(names):
         res.error("meta.yaml: drasil_names maps two names to one label")
-    sdir = _find_seed_dir(seeds_dir)
+    sdir = _find_seed_dir(seeds_dir) if use_seeds else None
     seed001 = glob.glob(os.path.join(sdir, "001_*.txt")) if sdir else []
     if seed001:
         with open(seed001[0], encoding="utf-8") as fh:
@@ -603,7 +603,7 @@ def _cell(text):
     if text is None:
         return ""
     s = " ".join(str(text).split())
-    return s.replace("|", "\\|")
+    return s.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;").replace("|", "\\|")
 
 
 def _labels(xs):
@@ -637,8 +637,13 @@ def errata_markdown(res):
     out.append("| --- | --- | --- | --- | --- | --- | --- |")
     for e in res.errata:
         items = _labels(e.get("items") or [])
+        where = []
         if e.get("section"):
-            items += f" (seed {e.get('seeds', ['000'])[0] if len(e.get('seeds', ['000'])) == 1 else '000/001'} section {e['section']})"
+            where.append(f"§{e['section']}")
+        if e.get("seeds", ["000"]) != ["000"]:
+            where.append("seeds " + " and ".join(e["seeds"]))
+        if where:
+            items += f" ({'; '.join(where)})"
         out.append(f"| {e['id']} | {_cell(items)} | {e['kind']} | {_cell(e['seed_text'])} | "
                    f"{_cell(e['problem'])} | {_cell(e['correct_reading'])} | "
                    f"{'yes' if e.get('compile_fail') else 'no'} |")
@@ -724,6 +729,8 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--srs-dir", default=HERE, help="directory of the SRS YAML files")
     ap.add_argument("--seeds-dir", default=None, help="directory of the seed documents")
+    ap.add_argument("--no-seeds", action="store_true",
+                    help="do not cross-check the aliases against the seed 001 text")
     ap.add_argument("--json", metavar="OUT", help="write the computed graph as JSON")
     ap.add_argument("--errata-md", metavar="OUT", help="(re)generate the errata document")
     ap.add_argument("--check-errata-md", metavar="DOC",
@@ -731,7 +738,7 @@ def main(argv=None):
     ap.add_argument("-q", "--quiet", action="store_true", help="print errors only")
     args = ap.parse_args(argv)
 
-    res = check(args.srs_dir, args.seeds_dir)
+    res = check(args.srs_dir, args.seeds_dir, use_seeds=not args.no_seeds)
     if args.quiet:
         for e in res.errors:
             print(f"error: {e}", file=sys.stderr)
