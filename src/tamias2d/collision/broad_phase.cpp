@@ -1,0 +1,67 @@
+#include "tamias2d/collision/broad_phase.hpp"
+
+#include <algorithm>
+
+namespace tamias2d {
+
+void BroadPhase::mark_moved(int proxy) {
+    if (moved_[proxy] == 0) {
+        moved_[proxy] = 1;
+        move_buffer_.push_back(proxy);
+    }
+}
+
+int BroadPhase::create_proxy(const Aabb& tight, std::uint32_t user, bool is_static) {
+    const int t = is_static ? 1 : 0;
+    const int proxy = trees_[t].create_proxy(inflated(tight, margin_), user) * 2 + t;
+    if (std::size_t(proxy) >= moved_.size())
+        moved_.resize(std::size_t(proxy) + 2, 0);
+    moved_[proxy] = 0; // an id freed earlier may have been left marked
+    mark_moved(proxy);
+    return proxy;
+}
+
+void BroadPhase::destroy_proxy(int proxy) {
+    // Its move-buffer entry (if any) is skipped by update_pairs: flag 0 means "not moved".
+    moved_[proxy] = 0;
+    tree(proxy).destroy_proxy(node(proxy));
+}
+
+void BroadPhase::move_proxy(int proxy, const Aabb& tight) {
+    if (contains(fat_aabb(proxy), tight))
+        return;
+    tree(proxy).move_proxy(node(proxy), inflated(tight, margin_));
+    mark_moved(proxy);
+}
+
+void BroadPhase::update_pairs(std::vector<Pair>& out) {
+    const std::size_t first = out.size();
+    for (const int p : move_buffer_) {
+        if (moved_[p] != 1)
+            continue; // destroyed since it moved, or a duplicate entry already handled
+        moved_[p] = 2;
+        const Aabb box = fat_aabb(p);
+        const std::uint32_t user = user_data(p);
+        auto visit = [&](int q) {
+            // Two moved proxies find each other twice: keep the query of the greater id.
+            if (q == p || (moved_[q] != 0 && q > p))
+                return true;
+            const std::uint32_t other = user_data(q);
+            out.emplace_back(std::min(user, other), std::max(user, other));
+            return true;
+        };
+        trees_[0].query(box, [&](int id) { return visit(id * 2); });
+        if (!is_static(p)) // static proxies never pair with each other
+            trees_[1].query(box, [&](int id) { return visit(id * 2 + 1); });
+    }
+    for (const int p : move_buffer_)
+        moved_[p] = 0;
+    move_buffer_.clear();
+    // Deterministic output whatever the tree layout; duplicates only arise if two proxies
+    // share user data.
+    const auto begin = out.begin() + static_cast<std::ptrdiff_t>(first);
+    std::sort(begin, out.end());
+    out.erase(std::unique(begin, out.end()), out.end());
+}
+
+} // namespace tamias2d

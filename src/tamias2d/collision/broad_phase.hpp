@@ -1,0 +1,95 @@
+// Broad phase: which shape pairs might touch. Each shape is a proxy with a fattened box in one
+// of two dynamic AABB trees (static shapes in their own tree, so static-static pairs are never
+// looked for). A proxy is re-inserted only when its tight box leaves the fat one, and only
+// re-inserted ("moved") proxies are queried for new pairs: a resting scene costs nothing here.
+#pragma once
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "tamias2d/collision/dynamic_tree.hpp"
+
+namespace tamias2d {
+
+class BroadPhase {
+  public:
+    using Pair = std::pair<std::uint32_t, std::uint32_t>;
+
+    /// `margin` (m) fattens every box, so small motions need no tree update.
+    explicit BroadPhase(double margin = 0.1) : margin_(margin) {}
+
+    /// A proxy for a shape with tight box `tight` and user data `user` (the shape index).
+    /// New proxies count as moved: the next update_pairs finds their pairs.
+    int create_proxy(const Aabb& tight, std::uint32_t user, bool is_static = false);
+    void destroy_proxy(int proxy);
+    /// Re-inserts (and marks moved) only when `tight` is no longer inside the fat box.
+    void move_proxy(int proxy, const Aabb& tight);
+
+    const Aabb& fat_aabb(int proxy) const { return tree(proxy).aabb(node(proxy)); }
+    std::uint32_t user_data(int proxy) const { return tree(proxy).user_data(node(proxy)); }
+    bool is_static(int proxy) const { return (proxy & 1) != 0; }
+
+    /// Appends every pair of proxies whose fat boxes overlap (IM4) and of which at least one
+    /// moved since the last call, once each, as (min user, max user), sorted; then forgets
+    /// the moves. Static-static pairs are never reported. Allocation-free once `out` and the
+    /// internal buffers have grown to the scene's size.
+    void update_pairs(std::vector<Pair>& out);
+
+    /// Calls f(proxy) for every proxy whose fat box overlaps `box` (IM4), dynamic tree first.
+    /// f may return bool: false stops the query.
+    template <class F> void query(const Aabb& box, F&& f) const;
+
+    /// Calls f(proxy, max_fraction) -> double for proxies the segment crosses; see
+    /// DynamicTree::ray_cast for the meaning of the return value.
+    template <class F> void ray_cast(Vec2d origin, Vec2d translation, F&& f) const;
+
+    int proxy_count() const { return trees_[0].proxy_count() + trees_[1].proxy_count(); }
+    double margin() const { return margin_; }
+    const DynamicTree& dynamic_tree() const { return trees_[0]; }
+    const DynamicTree& static_tree() const { return trees_[1]; }
+
+  private:
+    // Proxy id = tree node id * 2 + (1 if static): no lookup table, and ids stay small.
+    static int node(int proxy) { return proxy >> 1; }
+    const DynamicTree& tree(int proxy) const { return trees_[proxy & 1]; }
+    DynamicTree& tree(int proxy) { return trees_[proxy & 1]; }
+    void mark_moved(int proxy);
+
+    double margin_;
+    DynamicTree trees_[2]; ///< [0] dynamic and kinematic, [1] static
+    std::vector<int> move_buffer_;
+    /// Per proxy id: 0 not moved, 1 moved, 2 moved and already queried this update.
+    std::vector<std::uint8_t> moved_;
+};
+
+template <class F> void BroadPhase::query(const Aabb& box, F&& f) const {
+    bool go_on = true;
+    for (int t = 0; t < 2 && go_on; ++t) {
+        trees_[t].query(box, [&](int id) {
+            const int proxy = id * 2 + t;
+            if constexpr (std::is_same_v<std::invoke_result_t<F&, int>, void>) {
+                f(proxy);
+                return true;
+            } else {
+                go_on = f(proxy);
+                return go_on;
+            }
+        });
+    }
+}
+
+template <class F> void BroadPhase::ray_cast(Vec2d origin, Vec2d translation, F&& f) const {
+    double best = 1.0; // fraction of the full ray still worth searching
+    for (int t = 0; t < 2 && best > 0.0; ++t) {
+        // The second tree casts the ray as clipped by the first: rescale its fractions.
+        const double scale = best;
+        trees_[t].ray_cast(origin, scale * translation, [&](int id, double tree_max) {
+            const double v = f(id * 2 + t, tree_max * scale);
+            best = v < best ? v : best;
+            return v / scale;
+        });
+    }
+}
+
+} // namespace tamias2d

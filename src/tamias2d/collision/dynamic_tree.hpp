@@ -1,0 +1,149 @@
+// A dynamic AABB tree: a binary bounding-volume hierarchy over boxes that move. Leaves are
+// inserted where they enlarge the tree's surface least (a greedy surface-area heuristic) and
+// AVL-style rotations keep it balanced, so queries and updates cost O(log n). Nodes live in
+// one array with a free list; queries walk it with a fixed stack and never allocate.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "tamias2d/geometry/aabb.hpp"
+
+namespace tamias2d {
+
+class DynamicTree {
+  public:
+    static constexpr int null_node = -1;
+    /// Enough for any AVL-balanced tree that fits in memory (height <= 1.44 log2 n).
+    static constexpr int max_stack = 256;
+
+    /// A leaf holding `box`; returns its id (stable until destroyed, then reused).
+    int create_proxy(const Aabb& box, std::uint32_t user);
+    void destroy_proxy(int id);
+    /// Replaces a leaf's box (remove and re-insert). The caller decides when it is worth it.
+    void move_proxy(int id, const Aabb& box);
+
+    const Aabb& aabb(int id) const { return nodes_[id].box; }
+    std::uint32_t user_data(int id) const { return nodes_[id].user; }
+
+    /// Calls f(id) for every leaf whose box overlaps `box` by IM4. f may return bool:
+    /// false stops the query.
+    template <class F> void query(const Aabb& box, F&& f) const;
+
+    /// Calls f(id, max_fraction) -> double for every leaf whose box the segment
+    /// origin -> origin + max_fraction * translation crosses. f returns the new max fraction
+    /// (the hit fraction clips the ray, max_fraction continues, 0 stops).
+    template <class F> void ray_cast(Vec2d origin, Vec2d translation, F&& f) const;
+
+    int proxy_count() const { return proxy_count_; }
+    int height() const { return root_ == null_node ? 0 : nodes_[root_].height; }
+    /// Sum of internal node perimeters over the root's: a quality measure (lower is better).
+    double area_ratio() const;
+    /// Checks parent links, heights, enclosure and the free list (tests).
+    bool validate() const;
+
+  private:
+    struct Node {
+        Aabb box{};
+        int parent = null_node; ///< or the next free node
+        int child1 = null_node;
+        int child2 = null_node;
+        int height = -1; ///< 0 leaf, -1 free
+        std::uint32_t user = 0;
+        bool leaf() const { return child1 == null_node; }
+    };
+
+    int allocate_node();
+    void free_node(int id);
+    void insert_leaf(int leaf);
+    void remove_leaf(int leaf);
+    int balance(int a);
+    int validate_subtree(int id, int parent) const;
+
+    std::vector<Node> nodes_;
+    int root_ = null_node;
+    int free_list_ = null_node;
+    int proxy_count_ = 0;
+};
+
+namespace detail {
+/// The segment o + t d, t in [0, t_max], crosses box b (slab test; closed box).
+inline bool segment_crosses(const Aabb& b, Vec2d o, Vec2d d, double t_max) {
+    double lo = 0.0;
+    double hi = t_max;
+    const double os[2] = {o.x, o.y};
+    const double ds[2] = {d.x, d.y};
+    const double mins[2] = {b.min_x, b.min_y};
+    const double maxs[2] = {b.max_x, b.max_y};
+    for (int k = 0; k < 2; ++k) {
+        if (ds[k] == 0.0) {
+            if (os[k] < mins[k] || os[k] > maxs[k])
+                return false;
+            continue;
+        }
+        double t1 = (mins[k] - os[k]) / ds[k];
+        double t2 = (maxs[k] - os[k]) / ds[k];
+        if (t1 > t2)
+            std::swap(t1, t2);
+        lo = t1 > lo ? t1 : lo;
+        hi = t2 < hi ? t2 : hi;
+        if (lo > hi)
+            return false;
+    }
+    return true;
+}
+} // namespace detail
+
+template <class F> void DynamicTree::query(const Aabb& box, F&& f) const {
+    if (root_ == null_node)
+        return;
+    std::array<int, max_stack> stack;
+    int top = 0;
+    stack[top++] = root_;
+    while (top > 0) {
+        const Node& n = nodes_[stack[--top]];
+        if (!overlaps(n.box, box))
+            continue;
+        if (n.leaf()) {
+            const int id = static_cast<int>(&n - nodes_.data());
+            if constexpr (std::is_same_v<std::invoke_result_t<F&, int>, void>) {
+                f(id);
+            } else {
+                if (!f(id))
+                    return;
+            }
+        } else {
+            stack[top++] = n.child1;
+            stack[top++] = n.child2;
+        }
+    }
+}
+
+template <class F> void DynamicTree::ray_cast(Vec2d origin, Vec2d translation, F&& f) const {
+    if (root_ == null_node)
+        return;
+    double max_fraction = 1.0;
+    std::array<int, max_stack> stack;
+    int top = 0;
+    stack[top++] = root_;
+    while (top > 0) {
+        const Node& n = nodes_[stack[--top]];
+        if (!detail::segment_crosses(n.box, origin, translation, max_fraction))
+            continue;
+        if (n.leaf()) {
+            const double v = f(static_cast<int>(&n - nodes_.data()), max_fraction);
+            if (v <= 0.0)
+                return;
+            if (v < max_fraction)
+                max_fraction = v;
+        } else {
+            stack[top++] = n.child1;
+            stack[top++] = n.child2;
+        }
+    }
+}
+
+} // namespace tamias2d
