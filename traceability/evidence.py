@@ -269,12 +269,18 @@ def parse_ctest_json(path):
         if isinstance(labels, str):
             labels = labels.split(";")
         cmd = t.get("command") or []
-        tests.append({"index": idx, "name": t.get("name"), "command": cmd,
+        name = t.get("name") or ""
+        blabel = _boost_label(cmd)
+        if not cmd and "@" in name:
+            # ctest omits "command" when the executable does not exist (not built yet):
+            # keep it a Boost entry so that the report says "not built".
+            blabel = name.rsplit("@", 1)[1]
+        tests.append({"index": idx, "name": name, "command": cmd,
                       "labels": [str(x) for x in labels],
                       "cwd": props.get("WORKING_DIRECTORY"),
                       "disabled": bool(props.get("DISABLED")),
                       "will_fail": bool(props.get("WILL_FAIL")),
-                      "boost_label": _boost_label(cmd)})
+                      "boost_label": blabel})
     return tests
 
 
@@ -289,9 +295,10 @@ def boost_binaries(ctests):
     """Distinct Boost.Test executables: {key: {path, cwd, labels: [registered labels]}}."""
     by_path = {}
     for t in ctests:
-        if t["boost_label"] is None or not t["command"]:
+        if t["boost_label"] is None:
             continue
-        b = by_path.setdefault(t["command"][0], {"path": t["command"][0], "cwd": t["cwd"],
+        path = t["command"][0] if t["command"] else t["name"].rsplit("@", 1)[0]
+        b = by_path.setdefault(path, {"path": path, "cwd": t["cwd"],
                                                  "labels": [], "ctest_names": []})
         b["labels"].append(t["boost_label"])
         b["ctest_names"].append(t["name"])
@@ -441,7 +448,11 @@ def parse_junit(path):
         elif tc.find("skipped") is not None:
             status = "skipped"
             so = tc.find("system-out")
-            message = (so.text or "") if so is not None else ""
+            why = tc.find("skipped").get("message") or ""
+            message = why + "\n" + ((so.text or "") if so is not None else "")
+            if why.startswith(("Unable to find executable", "Required files missing",
+                               "Fixture dependency failed", "Failed to start")):
+                status = "error"  # registered but could not run: not a legitimate skip
         # CTest's JUnit carries status="run|fail|disabled|notrun"
         cstat = tc.get("status")
         if cstat == "fail" and status == "passed":
@@ -487,6 +498,12 @@ def run_tests(build_dir, results_dir, timeout=1800, jobs=1, log=print):
     manifest = {"build_dir": os.path.abspath(build_dir), "started": time.strftime("%Y-%m-%dT%H:%M:%S"),
                 "commands": [], "binaries": {}, "ctest_junit": None, "errors": []}
     ctest_json = os.path.join(results_dir, "ctest.json")
+    # Never let results of an earlier run pass for this one.
+    stale = [ctest_json, os.path.join(results_dir, "ctest_junit.xml")]
+    stale += [os.path.join(results_dir, "boost", f) for f in os.listdir(os.path.join(results_dir, "boost"))]
+    for f in stale:
+        if os.path.isfile(f):
+            os.remove(f)
     if not os.path.isdir(build_dir):
         manifest["errors"].append(f"build directory {build_dir} does not exist: no tests were run")
         _write_json(os.path.join(results_dir, "runs.json"), manifest)
@@ -506,6 +523,15 @@ def run_tests(build_dir, results_dir, timeout=1800, jobs=1, log=print):
         junit = os.path.join(results_dir, "boost", key + ".junit.xml")
         if os.path.exists(junit):
             os.remove(junit)
+        if not os.path.exists(b["path"]):
+            msg = f"{key}: test binary {b['path']} does not exist (not built?)"
+            manifest["errors"].append(msg)
+            manifest["binaries"][key] = {"path": b["path"], "cwd": b["cwd"], "missing": True}
+            for f in (dot, junit):
+                if os.path.exists(f):
+                    os.remove(f)
+            log(f"[traceability] {msg}")
+            continue
         log(f"[traceability] {key}: listing and running")
         c1 = [b["path"], "--list_content=DOT"]
         rc1, d1, _, _ = _run(c1, b["cwd"], 300, stderr_to=dot)
@@ -593,7 +619,10 @@ def collect_tests(source_root, results_dir, warnings):
                  "run_exit": run.get("run_exit"), "cases": 0, "problems": []}
         info["boost_binaries"][key] = binfo
         if not os.path.exists(dot_path) or os.path.getsize(dot_path) == 0:
-            msg = f"{key}: no --list_content=DOT listing; its test cases are unknown"
+            if run.get("missing"):
+                msg = f"{key}: test binary {b['path']} was not built; its test cases are unknown"
+            else:
+                msg = f"{key}: no --list_content=DOT listing; its test cases are unknown"
             warnings.append(msg)
             binfo["problems"].append(msg)
             for lab in b["labels"]:

@@ -133,6 +133,7 @@ class Html:
         self.items = {i["label"]: i for i in report["items"]}
         self.tests = {t["id"]: t for t in report["tests"]}
         self.test_anchor = {t["id"]: f"test-{n}" for n, t in enumerate(report["tests"], 1)}
+        self.categories = {c["label"] for c in report.get("category_labels", [])}
         self.parts = []
 
     # helpers
@@ -140,6 +141,8 @@ class Html:
         self.parts.append(s)
 
     def link(self, label):
+        if label in self.categories:
+            return f'<code class="mute" title="category label (traceability/config.yaml), not an SRS item">{E(label)}</code>'
         if label in self.items:
             it = self.items[label]
             return (f'<a href="#item-{E(label)}" title="{E((it.get("title") or "") + " [" + it["status"] + "]")}">'

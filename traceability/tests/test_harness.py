@@ -223,6 +223,44 @@ class ScriptEntryPoint(unittest.TestCase):
         self.assertEqual(build_report.main(["--source", "/nonexistent/dir", "--quiet"]), 2)
 
 
+@unittest.skipUnless(shutil.which("ctest"), "ctest not installed")
+class LiveRun(unittest.TestCase):
+    """Run mode against a hand-written CTestTestfile.cmake: real ctest, a Boost entry whose
+    binary was never built, one passing and one failing plain entry."""
+
+    def test_run_mode_with_real_ctest(self):
+        tmp = tempfile.mkdtemp(prefix="trace-live-")
+        try:
+            build = os.path.join(tmp, "build")
+            os.makedirs(build)
+            with open(os.path.join(build, "CTestTestfile.cmake"), "w", encoding="utf-8") as fh:
+                fh.write('add_test(ghost@IM1 "%s" "--run_test=@IM1")\n'
+                         'set_tests_properties(ghost@IM1 PROPERTIES LABELS "IM1")\n'
+                         'add_test(cli_smoke "/bin/true")\n'
+                         'set_tests_properties(cli_smoke PROPERTIES LABELS "R1")\n'
+                         'add_test(bad_cli "/bin/false")\n'
+                         'set_tests_properties(bad_cli PROPERTIES LABELS "R1")\n'
+                         % os.path.join(build, "ghost"))
+            out = os.path.join(tmp, "reports")
+            code = build_report.main(["--source", REPO, "--build", build, "--out", out,
+                                      "--data", os.path.join(REPO, "data"), "--no-checker", "--quiet"])
+            self.assertEqual(code, 1)
+            with open(os.path.join(out, "traceability.json"), encoding="utf-8") as fh:
+                rep = json.load(fh)
+            tests = {t["id"]: t for t in rep["tests"]}
+            self.assertEqual(tests["ctest:cli_smoke"]["status"], "passed")
+            self.assertEqual(tests["ctest:bad_cli"]["status"], "failed")
+            self.assertEqual(tests["ghost@IM1"]["status"], "error")
+            self.assertIn("not built", tests["ghost@IM1"]["details"])
+            items = {i["label"]: i["status"] for i in rep["items"]}
+            self.assertEqual(items["R1"], "failing")
+            self.assertEqual(items["IM1"], "failing")  # the unbuilt binary is an error, not a pass
+            self.assertTrue(rep["inputs"]["ran_tests"])
+            self.assertTrue(os.path.exists(os.path.join(out, "raw", "runs.json")))
+        finally:
+            shutil.rmtree(tmp, ignore_errors=True)
+
+
 class Units(unittest.TestCase):
     def test_status_rules(self):
         p = {"status": "passed"}
