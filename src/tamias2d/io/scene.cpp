@@ -1,0 +1,1145 @@
+#include "tamias2d/io/scene.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <initializer_list>
+#include <limits>
+#include <sstream>
+#include <utility>
+
+#include <nlohmann/json.hpp>
+
+#include "tamias2d/errors.hpp"
+#include "tamias2d/io/scene_generators.hpp"
+#include "tamias2d/world.hpp"
+
+namespace tamias2d::io {
+
+using ojson = nlohmann::ordered_json;
+
+// ---------------------------------------------------------------------------------------------
+// Time functions
+// ---------------------------------------------------------------------------------------------
+
+double TimeFunction::operator()(double t) const {
+    switch (kind) {
+    case Kind::constant:
+        return value;
+    case Kind::sinusoid:
+        return offset + amplitude * std::sin(omega * t + phase);
+    case Kind::step:
+        return t < time ? before : after;
+    case Kind::ramp:
+        if (t <= t0)
+            return from;
+        if (t >= t1)
+            return to;
+        return from + (to - from) * ((t - t0) / (t1 - t0));
+    }
+    return 0.0;
+}
+
+Load SceneLoads::operator()(double t) const {
+    Load l;
+    if (force_x)
+        l.force.x = (*force_x)(t);
+    if (force_y)
+        l.force.y = (*force_y)(t);
+    if (torque)
+        l.torque = (*torque)(t);
+    return l;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Errors
+// ---------------------------------------------------------------------------------------------
+
+namespace {
+
+std::string where(const std::string& origin, const std::string& pointer, int line, int column) {
+    if (line > 0)
+        return origin + ":" + std::to_string(line) + ":" + std::to_string(column);
+    return origin + ": " + (pointer.empty() ? std::string("(root)") : pointer);
+}
+
+} // namespace
+
+SceneError::SceneError(std::string origin_, std::string pointer_, int line_, int column_,
+                       std::string field_, std::string constraint_, std::string detail_)
+    : std::runtime_error(where(origin_, pointer_, line_, column_) + ": " + detail_),
+      origin(std::move(origin_)), pointer(std::move(pointer_)), line(line_), column(column_),
+      field(std::move(field_)), constraint(std::move(constraint_)), detail(std::move(detail_)) {}
+
+namespace {
+
+// Rules of the scene format that are no SRS data constraint carry this in place of a label.
+constexpr const char* format_rule = "scene format";
+
+/// RFC 6901 escaping of one reference token.
+std::string escape_token(std::string_view key) {
+    std::string out;
+    for (const char c : key) {
+        if (c == '~')
+            out += "~0";
+        else if (c == '/')
+            out += "~1";
+        else
+            out += c;
+    }
+    return out;
+}
+
+std::string child(const std::string& ptr, std::string_view key) {
+    return ptr + "/" + escape_token(key);
+}
+std::string child(const std::string& ptr, std::size_t index) {
+    return ptr + "/" + std::to_string(index);
+}
+
+/// The parser's state: the origin for messages and the named materials.
+struct Ctx {
+    std::string origin;
+    std::map<std::string, Material> materials;
+    std::optional<Material> default_material; // materials["default"]
+    std::map<std::string, std::string> names; // body name -> pointer of first use
+};
+
+[[noreturn]] void fail(const Ctx& ctx, const std::string& ptr, std::string field,
+                       std::string message, std::string constraint = {}) {
+    throw SceneError(ctx.origin, ptr, 0, 0, std::move(field),
+                     constraint == format_rule ? std::string{} : std::move(constraint),
+                     std::move(message));
+}
+
+/// "radius = -1: must be > 0 (DCX_shape)"
+[[noreturn]] void fail_value(const Ctx& ctx, const std::string& ptr, const std::string& field,
+                             double value, const std::string& rule, const std::string& constraint) {
+    fail(ctx, ptr, field, detail::validation_message(field, value, rule, constraint), constraint);
+}
+
+/// Maps a ValidationError from the library or a generator to the scene: `base` is the pointer
+/// of the object whose keys the error's field names ("container.width" -> base/container/width).
+[[noreturn]] void fail_from(const Ctx& ctx, const std::string& base, const ValidationError& e,
+                            bool map_field) {
+    std::string ptr = base;
+    if (map_field) {
+        std::string f = e.field;
+        for (const std::string_view suffix : {".x", ".y"}) {
+            if (f.size() > suffix.size() && f.ends_with(suffix)) {
+                f.resize(f.size() - suffix.size());
+                ptr = child(ptr, f) + (suffix == ".x" ? "/0" : "/1");
+                f.clear();
+                break;
+            }
+        }
+        if (!f.empty()) {
+            std::size_t start = 0;
+            for (std::size_t dot; (dot = f.find('.', start)) != std::string::npos; start = dot + 1)
+                ptr = child(ptr, std::string_view(f).substr(start, dot - start));
+            ptr = child(ptr, std::string_view(f).substr(start));
+        }
+    }
+    fail(ctx, ptr, e.field, e.what(), e.constraint);
+}
+
+const char* type_name(const ojson& v) {
+    switch (v.type()) {
+    case ojson::value_t::null:
+        return "null";
+    case ojson::value_t::boolean:
+        return "a boolean";
+    case ojson::value_t::string:
+        return "a string";
+    case ojson::value_t::array:
+        return "an array";
+    case ojson::value_t::object:
+        return "an object";
+    case ojson::value_t::number_integer:
+    case ojson::value_t::number_unsigned:
+    case ojson::value_t::number_float:
+        return "a number";
+    default:
+        return "an unsupported value";
+    }
+}
+
+[[noreturn]] void fail_type(const Ctx& ctx, const std::string& ptr, const std::string& field,
+                            const ojson& v, const std::string& expected) {
+    fail(ctx, ptr, field,
+         (field.empty() ? std::string{} : field + ": ") + "expected " + expected + ", got " +
+             type_name(v),
+         format_rule);
+}
+
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j)
+        row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t diag = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t up = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] != b[j - 1] ? 1 : 0)});
+            diag = up;
+        }
+    }
+    return row[b.size()];
+}
+
+using Keys = std::initializer_list<std::string_view>;
+
+/// Rejects keys outside `allowed` (in document order), suggesting the nearest allowed key.
+void check_keys(const Ctx& ctx, const ojson& obj, const std::string& ptr, Keys allowed,
+                const std::string& what) {
+    for (const auto& [key, value] : obj.items()) {
+        if (std::find(allowed.begin(), allowed.end(), key) != allowed.end())
+            continue;
+        std::string best;
+        std::size_t best_d = 3;
+        std::string list;
+        for (const std::string_view a : allowed) {
+            list += (list.empty() ? "" : ", ") + std::string(a);
+            const std::size_t d = edit_distance(key, a);
+            if (d < best_d) {
+                best_d = d;
+                best = a;
+            }
+        }
+        fail(ctx, child(ptr, key), key,
+             "unknown key '" + key + "' in " + what +
+                 (best.empty() ? std::string{} : " (did you mean '" + best + "'?)") +
+                 "; allowed: " + list,
+             format_rule);
+    }
+}
+
+const ojson& require_object(const Ctx& ctx, const ojson& v, const std::string& ptr,
+                            const std::string& field, const std::string& what) {
+    if (!v.is_object())
+        fail_type(ctx, ptr, field, v, what);
+    return v;
+}
+
+const ojson* find(const ojson& obj, std::string_view key) {
+    const auto it = obj.find(std::string(key));
+    return it == obj.end() ? nullptr : &*it;
+}
+
+const ojson& require_key(const Ctx& ctx, const ojson& obj, const std::string& ptr,
+                         std::string_view key, const std::string& what) {
+    if (const ojson* v = find(obj, key))
+        return *v;
+    fail(ctx, child(ptr, key), std::string(key),
+         "missing required key '" + std::string(key) + "' (" + what + ")", format_rule);
+}
+
+double as_number(const Ctx& ctx, const ojson& v, const std::string& ptr, const std::string& field) {
+    if (!v.is_number())
+        fail_type(ctx, ptr, field, v, "a number");
+    const double d = v.get<double>();
+    if (!std::isfinite(d))
+        fail_value(ctx, ptr, field, d, "must be a finite number", "DCX_finite");
+    return d;
+}
+
+Vec2d as_vec2(const Ctx& ctx, const ojson& v, const std::string& ptr, const std::string& field) {
+    if (!v.is_array() || v.size() != 2)
+        fail(ctx, ptr, field,
+             field + ": expected an array [x, y] of two numbers, got " +
+                 (v.is_array() ? "an array of " + std::to_string(v.size()) + " elements"
+                               : std::string(type_name(v))),
+             format_rule);
+    return {as_number(ctx, v[0], child(ptr, std::size_t{0}), field + ".x"),
+            as_number(ctx, v[1], child(ptr, std::size_t{1}), field + ".y")};
+}
+
+long long as_integer(const Ctx& ctx, const ojson& v, const std::string& ptr,
+                     const std::string& field, long long lo, long long hi) {
+    if (!v.is_number())
+        fail_type(ctx, ptr, field, v, "an integer");
+    const std::string range =
+        "must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+    if (v.is_number_unsigned()) {
+        const auto u = v.get<unsigned long long>();
+        if (u > static_cast<unsigned long long>(hi) ||
+            (lo > 0 && u < static_cast<unsigned long long>(lo)))
+            fail_value(ctx, ptr, field, double(u), range, format_rule);
+        return static_cast<long long>(u);
+    }
+    if (v.is_number_integer()) {
+        const auto i = v.get<long long>();
+        if (i < lo || i > hi)
+            fail_value(ctx, ptr, field, double(i), range, format_rule);
+        return i;
+    }
+    const double d = v.get<double>();
+    if (!(d == std::floor(d)) || d < double(lo) || d > double(hi))
+        fail_value(ctx, ptr, field, d, range, format_rule);
+    return static_cast<long long>(d);
+}
+
+std::string as_string(const Ctx& ctx, const ojson& v, const std::string& ptr,
+                      const std::string& field) {
+    if (!v.is_string())
+        fail_type(ctx, ptr, field, v, "a string");
+    return v.get<std::string>();
+}
+
+bool as_bool(const Ctx& ctx, const ojson& v, const std::string& ptr, const std::string& field) {
+    if (!v.is_boolean())
+        fail_type(ctx, ptr, field, v, "true or false");
+    return v.get<bool>();
+}
+
+/// Optional members: leave `out` unchanged when the key is absent.
+void opt_number(const Ctx& ctx, const ojson& obj, const std::string& ptr, std::string_view key,
+                double& out) {
+    if (const ojson* v = find(obj, key))
+        out = as_number(ctx, *v, child(ptr, key), std::string(key));
+}
+void opt_vec2(const Ctx& ctx, const ojson& obj, const std::string& ptr, std::string_view key,
+              Vec2d& out) {
+    if (const ojson* v = find(obj, key))
+        out = as_vec2(ctx, *v, child(ptr, key), std::string(key));
+}
+double req_number(const Ctx& ctx, const ojson& obj, const std::string& ptr, std::string_view key,
+                  const std::string& what) {
+    return as_number(ctx, require_key(ctx, obj, ptr, key, what), child(ptr, key), std::string(key));
+}
+
+/// DCX_shape (the SRS's DCI_L, corrected): a shape dimension is > 0.
+double req_length(const Ctx& ctx, const ojson& obj, const std::string& ptr, std::string_view key,
+                  const std::string& what) {
+    const double v = req_number(ctx, obj, ptr, key, what);
+    if (!(v > 0.0))
+        fail_value(ctx, child(ptr, key), std::string(key), v, "must be > 0", "DCX_shape");
+    return v;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Materials
+// ---------------------------------------------------------------------------------------------
+
+Material parse_material_object(const Ctx& ctx, const ojson& v, const std::string& ptr, Material m) {
+    require_object(ctx, v, ptr, "material", "a material object or a material name");
+    check_keys(ctx, v, ptr, {"density", "restitution", "friction"}, "a material");
+    opt_number(ctx, v, ptr, "density", m.density);
+    opt_number(ctx, v, ptr, "restitution", m.restitution);
+    opt_number(ctx, v, ptr, "friction", m.friction);
+    if (!(m.density > 0.0))
+        fail_value(ctx, child(ptr, "density"), "density", m.density, "must be > 0", "DCX_density");
+    if (!(m.restitution >= 0.0 && m.restitution <= 1.0))
+        fail_value(ctx, child(ptr, "restitution"), "restitution", m.restitution,
+                   "must be in [0, 1]", "DCI_CR");
+    if (!(m.friction >= 0.0))
+        fail_value(ctx, child(ptr, "friction"), "friction", m.friction, "must be >= 0",
+                   "DCX_friction");
+    return m;
+}
+
+/// A "material" member: a name from "materials" or an inline object (missing fields take the
+/// defaults in `base`).
+Material parse_material_ref(const Ctx& ctx, const ojson& v, const std::string& ptr,
+                            const Material& base) {
+    if (v.is_string()) {
+        const std::string name = v.get<std::string>();
+        const auto it = ctx.materials.find(name);
+        if (it == ctx.materials.end()) {
+            std::string known;
+            for (const auto& [n, m] : ctx.materials)
+                known += (known.empty() ? "" : ", ") + n;
+            fail(ctx, ptr, "material",
+                 "unknown material '" + name + "'" +
+                     (known.empty() ? std::string("; no materials are declared")
+                                    : "; declared: " + known),
+                 format_rule);
+        }
+        return it->second;
+    }
+    if (!v.is_object())
+        fail_type(ctx, ptr, "material", v, "a material name or a material object");
+    return parse_material_object(ctx, v, ptr, base);
+}
+
+Material shape_default_material(const Ctx& ctx) {
+    return ctx.default_material.value_or(Material{});
+}
+
+Material generator_default_material(const Ctx& ctx) {
+    return ctx.default_material.value_or(Material{1.0, 0.0, 0.6});
+}
+
+// ---------------------------------------------------------------------------------------------
+// Loads
+// ---------------------------------------------------------------------------------------------
+
+TimeFunction parse_time_function(const Ctx& ctx, const ojson& v, const std::string& ptr,
+                                 const std::string& field) {
+    TimeFunction f;
+    if (v.is_number()) { // shorthand for {"kind": "constant", "value": v}
+        f.value = as_number(ctx, v, ptr, field);
+        return f;
+    }
+    require_object(ctx, v, ptr, field, "a number or a load object {\"kind\": ...}");
+    const std::string kind =
+        as_string(ctx, require_key(ctx, v, ptr, "kind", "a load"), child(ptr, "kind"), "kind");
+    const std::string what = kind + " load";
+    if (kind == "constant") {
+        check_keys(ctx, v, ptr, {"kind", "value"}, "a constant load");
+        f.kind = TimeFunction::Kind::constant;
+        f.value = req_number(ctx, v, ptr, "value", what);
+    } else if (kind == "sinusoid") {
+        check_keys(ctx, v, ptr, {"kind", "amplitude", "omega", "phase", "offset"},
+                   "a sinusoid load");
+        f.kind = TimeFunction::Kind::sinusoid;
+        f.amplitude = req_number(ctx, v, ptr, "amplitude", what);
+        f.omega = req_number(ctx, v, ptr, "omega", what);
+        opt_number(ctx, v, ptr, "phase", f.phase);
+        opt_number(ctx, v, ptr, "offset", f.offset);
+    } else if (kind == "step") {
+        check_keys(ctx, v, ptr, {"kind", "time", "before", "after"}, "a step load");
+        f.kind = TimeFunction::Kind::step;
+        f.time = req_number(ctx, v, ptr, "time", what);
+        opt_number(ctx, v, ptr, "before", f.before);
+        f.after = req_number(ctx, v, ptr, "after", what);
+    } else if (kind == "ramp") {
+        check_keys(ctx, v, ptr, {"kind", "t0", "t1", "from", "to"}, "a ramp load");
+        f.kind = TimeFunction::Kind::ramp;
+        opt_number(ctx, v, ptr, "t0", f.t0);
+        f.t1 = req_number(ctx, v, ptr, "t1", what);
+        opt_number(ctx, v, ptr, "from", f.from);
+        f.to = req_number(ctx, v, ptr, "to", what);
+        if (!(f.t1 > f.t0))
+            fail_value(ctx, child(ptr, "t1"), "t1", f.t1, "must be > t0", format_rule);
+    } else {
+        fail(ctx, child(ptr, "kind"), "kind",
+             "unknown load kind '" + kind + "'; allowed: constant, sinusoid, step, ramp",
+             format_rule);
+    }
+    return f;
+}
+
+SceneLoads parse_loads(const Ctx& ctx, const ojson& v, const std::string& ptr) {
+    require_object(ctx, v, ptr, "loads", "an object {\"force_x\", \"force_y\", \"torque\"}");
+    check_keys(ctx, v, ptr, {"force_x", "force_y", "torque"}, "loads");
+    SceneLoads loads;
+    if (const ojson* f = find(v, "force_x"))
+        loads.force_x = parse_time_function(ctx, *f, child(ptr, "force_x"), "force_x");
+    if (const ojson* f = find(v, "force_y"))
+        loads.force_y = parse_time_function(ctx, *f, child(ptr, "force_y"), "force_y");
+    if (const ojson* f = find(v, "torque"))
+        loads.torque = parse_time_function(ctx, *f, child(ptr, "torque"), "torque");
+    return loads;
+}
+
+void attach_loads(SceneBody& b) {
+    if (b.loads.empty())
+        return;
+    b.def.load = [loads = b.loads](double t) { return loads(t); };
+}
+
+// ---------------------------------------------------------------------------------------------
+// Shapes and bodies
+// ---------------------------------------------------------------------------------------------
+
+ShapeDef parse_shape(const Ctx& ctx, const ojson& v, const std::string& ptr) {
+    require_object(ctx, v, ptr, "shape", "a shape object {\"type\": ...}");
+    const std::string type =
+        as_string(ctx, require_key(ctx, v, ptr, "type", "a shape"), child(ptr, "type"), "type");
+    Material material = shape_default_material(ctx);
+    const auto read_material = [&] {
+        if (const ojson* m = find(v, "material"))
+            material = parse_material_ref(ctx, *m, child(ptr, "material"), material);
+    };
+    try {
+        if (type == "box") {
+            check_keys(ctx, v, ptr, {"type", "width", "height", "center", "angle", "material"},
+                       "a box shape");
+            const double w = req_length(ctx, v, ptr, "width", "a box shape");
+            const double h = req_length(ctx, v, ptr, "height", "a box shape");
+            Vec2d center{};
+            double angle = 0.0;
+            opt_vec2(ctx, v, ptr, "center", center);
+            opt_number(ctx, v, ptr, "angle", angle);
+            read_material();
+            return box_shape(w, h, material, center, angle);
+        }
+        if (type == "circle") {
+            check_keys(ctx, v, ptr, {"type", "radius", "center", "material"}, "a circle shape");
+            const double r = req_length(ctx, v, ptr, "radius", "a circle shape");
+            Vec2d center{};
+            opt_vec2(ctx, v, ptr, "center", center);
+            read_material();
+            return circle_shape(r, material, center);
+        }
+        if (type == "polygon") {
+            check_keys(ctx, v, ptr, {"type", "points", "material"}, "a polygon shape");
+            const ojson& pts = require_key(ctx, v, ptr, "points", "a polygon shape");
+            const std::string pp = child(ptr, "points");
+            if (!pts.is_array())
+                fail_type(ctx, pp, "points", pts, "an array of [x, y] points");
+            if (pts.size() < 3 || pts.size() > 64)
+                fail_value(ctx, pp, "points.size", double(pts.size()),
+                           "must be >= 3 (and at most 64 points, whose hull has <= 8)",
+                           "DCX_shape");
+            std::vector<Vec2d> points;
+            for (std::size_t i = 0; i < pts.size(); ++i)
+                points.push_back(as_vec2(ctx, pts[i], child(pp, i), "points"));
+            read_material();
+            try {
+                return polygon_shape(points, material);
+            } catch (const ValidationError& e) {
+                fail_from(ctx, pp, e, false);
+            }
+        }
+    } catch (const ValidationError& e) {
+        // The library's own shape checks (after ours): reported at the shape.
+        fail_from(ctx, ptr, e, false);
+    }
+    fail(ctx, child(ptr, "type"), "type",
+         "unknown shape type '" + type + "'; allowed: box, circle, polygon", format_rule);
+}
+
+BodyType parse_body_type(const Ctx& ctx, const ojson& v, const std::string& ptr) {
+    const std::string t = as_string(ctx, v, ptr, "type");
+    if (t == "dynamic")
+        return BodyType::dynamic;
+    if (t == "static")
+        return BodyType::static_body;
+    if (t == "kinematic")
+        return BodyType::kinematic;
+    fail(ctx, ptr, "type", "unknown body type '" + t + "'; allowed: dynamic, static, kinematic",
+         format_rule);
+}
+
+void claim_name(Ctx& ctx, const std::string& name, const std::string& ptr) {
+    if (name.empty())
+        return;
+    const auto [it, fresh] = ctx.names.emplace(name, ptr);
+    if (!fresh)
+        fail(ctx, ptr, "name",
+             "body name '" + name + "' is already used by " + it->second +
+                 " (names must be unique)",
+             format_rule);
+}
+
+SceneBody parse_body(Ctx& ctx, const ojson& v, const std::string& ptr) {
+    check_keys(ctx, v, ptr,
+               {"name", "type", "position", "angle", "velocity", "angular_velocity", "mass",
+                "inertia", "gravity_scale", "fixed_rotation", "force", "torque", "loads", "shapes"},
+               "a body");
+    SceneBody b;
+    b.source = ptr;
+    BodyDef& d = b.def;
+    if (const ojson* n = find(v, "name"))
+        d.name = as_string(ctx, *n, child(ptr, "name"), "name");
+    if (const ojson* t = find(v, "type"))
+        d.type = parse_body_type(ctx, *t, child(ptr, "type"));
+    opt_vec2(ctx, v, ptr, "position", d.position);        // DCI_p
+    opt_number(ctx, v, ptr, "angle", d.angle);            // DCI_phi: any real, wrapped on output
+    opt_vec2(ctx, v, ptr, "velocity", d.linear_velocity); // DCI_v
+    opt_number(ctx, v, ptr, "angular_velocity", d.angular_velocity); // DCI_omega
+    opt_vec2(ctx, v, ptr, "force", d.force);                         // DCI_F
+    opt_number(ctx, v, ptr, "torque", d.torque);                     // DCI_tau
+    opt_number(ctx, v, ptr, "gravity_scale", d.gravity_scale);
+    if (const ojson* f = find(v, "fixed_rotation"))
+        d.fixed_rotation = as_bool(ctx, *f, child(ptr, "fixed_rotation"), "fixed_rotation");
+    if (const ojson* m = find(v, "mass")) {
+        const double mass = as_number(ctx, *m, child(ptr, "mass"), "mass");
+        if (!(mass > 0.0))
+            fail_value(ctx, child(ptr, "mass"), "mass", mass, "must be > 0", "DCI_m");
+        d.mass = mass;
+    }
+    if (const ojson* i = find(v, "inertia")) {
+        const double inertia = as_number(ctx, *i, child(ptr, "inertia"), "inertia");
+        if (!(inertia > 0.0))
+            fail_value(ctx, child(ptr, "inertia"), "inertia", inertia, "must be > 0", "DCI_I");
+        d.inertia = inertia;
+    }
+    if (const ojson* l = find(v, "loads"))
+        b.loads = parse_loads(ctx, *l, child(ptr, "loads"));
+    if (const ojson* s = find(v, "shapes")) {
+        const std::string sp = child(ptr, "shapes");
+        if (!s->is_array())
+            fail_type(ctx, sp, "shapes", *s, "an array of shapes");
+        for (std::size_t i = 0; i < s->size(); ++i)
+            b.shapes.push_back(parse_shape(ctx, (*s)[i], child(sp, i)));
+    }
+    if (d.type == BodyType::dynamic && b.shapes.empty() && !d.mass)
+        fail(ctx, child(ptr, "shapes"), "shapes",
+             "a dynamic body needs at least one shape or a \"mass\" (DCI_m)", "DCI_m");
+    claim_name(ctx, d.name, child(ptr, "name"));
+    attach_loads(b);
+    return b;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Generators
+// ---------------------------------------------------------------------------------------------
+
+int gen_int(const Ctx& ctx, const ojson& v, const std::string& ptr, std::string_view key, int dflt,
+            int lo, int hi) {
+    if (const ojson* x = find(v, key))
+        return static_cast<int>(as_integer(ctx, *x, child(ptr, key), std::string(key), lo, hi));
+    return dflt;
+}
+
+std::vector<SceneBody> parse_generator(Ctx& ctx, const ojson& v, const std::string& ptr) {
+    const std::string kind =
+        as_string(ctx, v.at("generator"), child(ptr, "generator"), "generator");
+    std::string name;
+    if (const ojson* n = find(v, "name"))
+        name = as_string(ctx, *n, child(ptr, "name"), "name");
+    std::vector<SceneBody> bodies;
+    try {
+        if (kind == "pyramid") {
+            check_keys(ctx, v, ptr,
+                       {"generator", "name", "base", "box", "gap", "origin", "ground_width",
+                        "ground_height", "material"},
+                       "a pyramid generator");
+            PyramidParams p;
+            if (!name.empty())
+                p.name = name;
+            p.base = gen_int(ctx, v, ptr, "base", p.base, 1, 1000);
+            opt_number(ctx, v, ptr, "box", p.box);
+            opt_number(ctx, v, ptr, "gap", p.gap);
+            opt_vec2(ctx, v, ptr, "origin", p.origin);
+            opt_number(ctx, v, ptr, "ground_width", p.ground_width);
+            opt_number(ctx, v, ptr, "ground_height", p.ground_height);
+            p.material = generator_default_material(ctx);
+            if (const ojson* m = find(v, "material"))
+                p.material = parse_material_ref(ctx, *m, child(ptr, "material"), p.material);
+            bodies = generate_pyramid(p);
+        } else if (kind == "rain") {
+            check_keys(ctx, v, ptr,
+                       {"generator", "name", "count", "box", "spacing", "jitter", "drop_height",
+                        "seed", "container", "material"},
+                       "a rain generator");
+            RainParams p;
+            if (!name.empty())
+                p.name = name;
+            p.count = gen_int(ctx, v, ptr, "count", p.count, 0, 1000000);
+            opt_number(ctx, v, ptr, "box", p.box);
+            opt_number(ctx, v, ptr, "spacing", p.spacing);
+            opt_number(ctx, v, ptr, "jitter", p.jitter);
+            opt_number(ctx, v, ptr, "drop_height", p.drop_height);
+            if (const ojson* s = find(v, "seed"))
+                p.seed = static_cast<std::uint64_t>(as_integer(
+                    ctx, *s, child(ptr, "seed"), "seed", 0, std::numeric_limits<long long>::max()));
+            if (const ojson* c = find(v, "container")) {
+                const std::string cp = child(ptr, "container");
+                require_object(ctx, *c, cp, "container", "a container object");
+                check_keys(ctx, *c, cp, {"width", "height", "wall", "origin"}, "a container");
+                opt_number(ctx, *c, cp, "width", p.container.width);
+                opt_number(ctx, *c, cp, "height", p.container.height);
+                opt_number(ctx, *c, cp, "wall", p.container.wall);
+                opt_vec2(ctx, *c, cp, "origin", p.container.origin);
+            }
+            p.material = generator_default_material(ctx);
+            if (const ojson* m = find(v, "material"))
+                p.material = parse_material_ref(ctx, *m, child(ptr, "material"), p.material);
+            bodies = generate_rain(p);
+        } else if (kind == "elastic_pair") {
+            check_keys(ctx, v, ptr,
+                       {"generator", "name", "box", "speed", "distance", "density", "restitution"},
+                       "an elastic_pair generator");
+            ElasticPairParams p;
+            if (!name.empty())
+                p.name = name;
+            opt_number(ctx, v, ptr, "box", p.box);
+            opt_number(ctx, v, ptr, "speed", p.speed);
+            opt_number(ctx, v, ptr, "distance", p.distance);
+            opt_number(ctx, v, ptr, "density", p.density);
+            opt_number(ctx, v, ptr, "restitution", p.restitution);
+            bodies = generate_elastic_pair(p);
+        } else {
+            fail(ctx, child(ptr, "generator"), "generator",
+                 "unknown generator '" + kind + "'; allowed: pyramid, rain, elastic_pair",
+                 format_rule);
+        }
+    } catch (const ValidationError& e) {
+        // Generator parameters are named by their keys ("container.width").
+        fail_from(ctx, ptr, e, true);
+    }
+    for (SceneBody& b : bodies) {
+        b.source = ptr;
+        b.generated = true;
+        claim_name(ctx, b.def.name, ptr);
+    }
+    return bodies;
+}
+
+// ---------------------------------------------------------------------------------------------
+// The document
+// ---------------------------------------------------------------------------------------------
+
+double parse_dt(const Ctx& ctx, const ojson& v, const std::string& ptr) {
+    double dt = 0.0;
+    if (v.is_string()) { // "1/60"
+        const std::string s = v.get<std::string>();
+        const auto slash = s.find('/');
+        double num = 0.0;
+        double den = 0.0;
+        const auto parse = [](std::string_view t, double& out) {
+            const auto r = std::from_chars(t.data(), t.data() + t.size(), out);
+            return r.ec == std::errc{} && r.ptr == t.data() + t.size();
+        };
+        if (slash == std::string::npos || !parse(std::string_view(s).substr(0, slash), num) ||
+            !parse(std::string_view(s).substr(slash + 1), den) || !(den != 0.0))
+            fail(ctx, ptr, "dt",
+                 "dt: expected a number of seconds or a fraction string such as \"1/60\", got \"" +
+                     s + "\"",
+                 format_rule);
+        dt = num / den;
+        if (!std::isfinite(dt))
+            fail_value(ctx, ptr, "dt", dt, "must be a finite number", "DCX_finite");
+    } else {
+        dt = as_number(ctx, v, ptr, "dt");
+    }
+    if (!(dt > 0.0))
+        fail_value(ctx, ptr, "dt", dt, "must be > 0", "DCX_dt");
+    return dt;
+}
+
+WorldDef parse_world(const Ctx& ctx, const ojson& v, const std::string& ptr) {
+    require_object(ctx, v, ptr, "world", "an object of world settings");
+    check_keys(ctx, v, ptr,
+               {"gravity", "substeps", "contact_hertz", "contact_damping_ratio",
+                "contact_push_max_velocity", "linear_slop", "speculative_distance",
+                "restitution_threshold"},
+               "world settings");
+    WorldDef w;
+    opt_vec2(ctx, v, ptr, "gravity", w.gravity); // DCI_g
+    // Its range (DCX_dt) is the World's to check, in validate_scene.
+    if (const ojson* s = find(v, "substeps"))
+        w.substeps = static_cast<int>(as_integer(ctx, *s, child(ptr, "substeps"), "substeps",
+                                                 std::numeric_limits<int>::min(),
+                                                 std::numeric_limits<int>::max()));
+    opt_number(ctx, v, ptr, "contact_hertz", w.contact_hertz);
+    opt_number(ctx, v, ptr, "contact_damping_ratio", w.contact_damping_ratio);
+    opt_number(ctx, v, ptr, "contact_push_max_velocity", w.contact_push_max_velocity);
+    opt_number(ctx, v, ptr, "linear_slop", w.linear_slop);
+    opt_number(ctx, v, ptr, "speculative_distance", w.speculative_distance);
+    opt_number(ctx, v, ptr, "restitution_threshold", w.restitution_threshold);
+    return w;
+}
+
+void parse_materials(Ctx& ctx, const ojson& v, const std::string& ptr, Scene& scene) {
+    require_object(ctx, v, ptr, "materials", "an object of named materials");
+    for (const auto& [name, m] : v.items()) {
+        const std::string mp = child(ptr, name);
+        const Material mat = parse_material_object(ctx, m, mp, Material{});
+        ctx.materials[name] = mat;
+        scene.materials[name] = mat;
+        if (name == "default")
+            ctx.default_material = mat;
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// JSON text -> DOM, with positions for syntax errors and detection of duplicate keys
+// ---------------------------------------------------------------------------------------------
+
+class DomBuilder {
+  public:
+    using number_integer_t = ojson::number_integer_t;
+    using number_unsigned_t = ojson::number_unsigned_t;
+    using number_float_t = ojson::number_float_t;
+    using string_t = ojson::string_t;
+    using binary_t = ojson::binary_t;
+
+    static constexpr std::size_t max_depth = 128;
+
+    ojson root;
+    // Failure report.
+    bool failed = false;
+    std::size_t position = 0; // chars read when a syntax error happened (0: no position)
+    std::string message;
+    std::string pointer; // for duplicate keys and nesting
+
+    bool null() { return put(nullptr); }
+    bool boolean(bool b) { return put(b); }
+    bool number_integer(number_integer_t v) { return put(v); }
+    bool number_unsigned(number_unsigned_t v) { return put(v); }
+    bool number_float(number_float_t v, const string_t&) { return put(v); }
+    bool string(string_t& s) { return put(s); }
+    bool binary(binary_t&) { return error_at_pointer("binary values are not JSON"); }
+    bool start_object(std::size_t) { return open(ojson::object()); }
+    bool start_array(std::size_t) { return open(ojson::array()); }
+    bool end_object() { return close(); }
+    bool end_array() { return close(); }
+    bool key(string_t& k) {
+        if (stack_.back()->contains(k)) {
+            pointer = current_pointer() + "/" + escape_token(k);
+            return error_at_pointer("duplicate key '" + k + "'");
+        }
+        key_ = k;
+        return true;
+    }
+    bool parse_error(std::size_t pos, const std::string&, const nlohmann::detail::exception& e) {
+        failed = true;
+        position = pos;
+        std::string what = e.what();
+        const auto syntax = what.find("syntax error");
+        if (syntax != std::string::npos) {
+            what.erase(0, syntax);
+        } else if (const auto close = what.find("] "); close != std::string::npos) {
+            what.erase(0, close + 2);
+        }
+        if (what.starts_with("number overflow"))
+            what += " (DCX_finite)";
+        message = what;
+        return false;
+    }
+
+  private:
+    std::vector<ojson*> stack_;
+    std::vector<std::string> path_;
+    std::string key_;
+
+    std::string segment() const {
+        if (stack_.empty())
+            return {};
+        return stack_.back()->is_array() ? std::to_string(stack_.back()->size())
+                                         : escape_token(key_);
+    }
+    std::string current_pointer() const {
+        std::string p;
+        for (const std::string& s : path_)
+            p += "/" + s;
+        return p;
+    }
+    template <class V> ojson* insert(V&& v) {
+        if (stack_.empty()) {
+            root = std::forward<V>(v);
+            return &root;
+        }
+        ojson& top = *stack_.back();
+        if (top.is_array()) {
+            top.push_back(std::forward<V>(v));
+            return &top.back();
+        }
+        ojson& slot = top[key_];
+        slot = std::forward<V>(v);
+        return &slot;
+    }
+    template <class V> bool put(V&& v) {
+        insert(std::forward<V>(v));
+        return true;
+    }
+    bool open(ojson container) {
+        if (stack_.size() >= max_depth) {
+            pointer = current_pointer();
+            return error_at_pointer("nesting deeper than " + std::to_string(max_depth) + " levels");
+        }
+        std::string seg = segment();
+        ojson* p = insert(std::move(container));
+        if (!stack_.empty())
+            path_.push_back(std::move(seg));
+        stack_.push_back(p);
+        return true;
+    }
+    bool close() {
+        stack_.pop_back();
+        if (!path_.empty()) // the root has no segment
+            path_.pop_back();
+        return true;
+    }
+    bool error_at_pointer(std::string msg) {
+        failed = true;
+        message = std::move(msg);
+        return false;
+    }
+};
+
+ojson parse_json(std::string_view text, const std::string& origin) {
+    DomBuilder dom;
+    const bool ok = ojson::sax_parse(text.begin(), text.end(), &dom);
+    if (ok && !dom.failed)
+        return std::move(dom.root);
+    if (dom.position > 0) {
+        // Line and column (1-based) of the character at which the parser stopped.
+        const std::size_t at = std::min(dom.position - 1, text.size());
+        const auto nl_before = text.substr(0, at).rfind('\n');
+        const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + at, '\n'));
+        const int column =
+            static_cast<int>(nl_before == std::string_view::npos ? at + 1 : at - nl_before);
+        throw SceneError(origin, "", line, column, "",
+                         dom.message.ends_with("(DCX_finite)") ? "DCX_finite" : "", dom.message);
+    }
+    throw SceneError(origin, dom.pointer, 0, 0, "", "", dom.message);
+}
+
+} // namespace
+
+// ---------------------------------------------------------------------------------------------
+// Public functions
+// ---------------------------------------------------------------------------------------------
+
+Scene parse_scene(std::string_view json, std::string_view origin_view) {
+    Ctx ctx;
+    ctx.origin = std::string(origin_view);
+    const ojson root = parse_json(json, ctx.origin);
+    const std::string ptr;
+    require_object(ctx, root, ptr, "", "a scene object {\"dt\", \"steps\", \"bodies\", ...}");
+    check_keys(
+        ctx, root, ptr,
+        {"version", "description", "world", "dt", "steps", "output_every", "materials", "bodies"},
+        "a scene");
+    Scene scene;
+    if (const ojson* v = find(root, "version")) {
+        const long long version = as_integer(ctx, *v, "/version", "version", 1, 1);
+        (void)version;
+    }
+    if (const ojson* d = find(root, "description"))
+        scene.description = as_string(ctx, *d, "/description", "description");
+    if (const ojson* w = find(root, "world"))
+        scene.world = parse_world(ctx, *w, "/world");
+    scene.dt = parse_dt(ctx, require_key(ctx, root, ptr, "dt", "a scene"), "/dt");
+    scene.steps = static_cast<int>(as_integer(ctx, require_key(ctx, root, ptr, "steps", "a scene"),
+                                              "/steps", "steps", 0, 100000000));
+    if (const ojson* o = find(root, "output_every"))
+        scene.output_every =
+            static_cast<int>(as_integer(ctx, *o, "/output_every", "output_every", 0, 100000000));
+    if (const ojson* m = find(root, "materials"))
+        parse_materials(ctx, *m, "/materials", scene);
+
+    const ojson& bodies = require_key(ctx, root, ptr, "bodies", "a scene");
+    if (!bodies.is_array())
+        fail_type(ctx, "/bodies", "bodies", bodies, "an array of bodies and generators");
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+        const std::string bp = child(std::string("/bodies"), i);
+        const ojson& b = bodies[i];
+        require_object(ctx, b, bp, "", "a body object or a generator object");
+        if (b.contains("generator")) {
+            for (SceneBody& g : parse_generator(ctx, b, bp))
+                scene.bodies.push_back(std::move(g));
+        } else {
+            scene.bodies.push_back(parse_body(ctx, b, bp));
+        }
+    }
+    validate_scene(scene, ctx.origin);
+    return scene;
+}
+
+Scene load_scene(const std::filesystem::path& path) {
+    const std::string origin = path.string();
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        throw SceneError(origin, "", 0, 0, "", "",
+                         std::string("cannot open the scene file: ") + std::strerror(errno));
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (in.bad())
+        throw SceneError(origin, "", 0, 0, "", "", "cannot read the scene file");
+    return parse_scene(text.str(), origin);
+}
+
+void validate_scene(const Scene& scene, std::string_view origin_view) {
+    Ctx ctx;
+    ctx.origin = std::string(origin_view);
+    if (!(std::isfinite(scene.dt) && scene.dt > 0.0))
+        fail_value(ctx, "/dt", "dt", scene.dt, "must be finite and > 0", "DCX_dt");
+    if (scene.steps < 0)
+        fail_value(ctx, "/steps", "steps", scene.steps, "must be >= 0", format_rule);
+    if (scene.output_every < 0)
+        fail_value(ctx, "/output_every", "output_every", scene.output_every, "must be >= 0",
+                   format_rule);
+    std::optional<World> world;
+    try {
+        world.emplace(scene.world);
+    } catch (const ValidationError& e) {
+        // The library names world settings "world.<key>[.x|.y]".
+        ValidationError mapped = e;
+        if (mapped.field.starts_with("world."))
+            mapped.field.erase(0, 6);
+        fail_from(ctx, "/world", mapped, mapped.field.find('/') == std::string::npos);
+    }
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+        const SceneBody& b = scene.bodies[i];
+        const std::string at = b.source.empty() ? child(std::string("/bodies"), i) : b.source;
+        const std::string who = b.def.name.empty() ? std::string{} : " (body '" + b.def.name + "')";
+        try {
+            const BodyId id = world->create_body(b.def);
+            for (std::size_t s = 0; s < b.shapes.size(); ++s) {
+                try {
+                    world->create_shape(id, b.shapes[s]);
+                } catch (const ValidationError& e) {
+                    fail(ctx, b.generated ? at : child(child(at, "shapes"), s), e.field,
+                         std::string(e.what()) + who, e.constraint);
+                }
+            }
+        } catch (const ValidationError& e) {
+            fail(ctx, at, e.field, std::string(e.what()) + who, e.constraint);
+        }
+    }
+}
+
+std::vector<BodyId> build_world(const Scene& scene, World& world) {
+    validate_scene(scene);
+    std::vector<BodyId> ids;
+    ids.reserve(scene.bodies.size());
+    for (const SceneBody& b : scene.bodies) {
+        BodyDef def = b.def;
+        if (!b.loads.empty())
+            def.load = [loads = b.loads, user = b.def.load](double t) {
+                Load l = loads(t);
+                if (user) {
+                    const Load u = user(t);
+                    l.force = l.force + u.force;
+                    l.torque += u.torque;
+                }
+                return l;
+            };
+        const BodyId id = world.create_body(def);
+        for (const ShapeDef& s : b.shapes)
+            world.create_shape(id, s);
+        ids.push_back(id);
+    }
+    return ids;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Scene -> JSON
+// ---------------------------------------------------------------------------------------------
+
+namespace {
+
+ojson vec(Vec2d v) {
+    return ojson::array({v.x, v.y});
+}
+
+ojson material_json(const Material& m) {
+    ojson j = ojson::object();
+    j["density"] = m.density;
+    j["restitution"] = m.restitution;
+    j["friction"] = m.friction;
+    return j;
+}
+
+ojson time_function_json(const TimeFunction& f) {
+    ojson j = ojson::object();
+    switch (f.kind) {
+    case TimeFunction::Kind::constant:
+        j["kind"] = "constant";
+        j["value"] = f.value;
+        break;
+    case TimeFunction::Kind::sinusoid:
+        j["kind"] = "sinusoid";
+        j["amplitude"] = f.amplitude;
+        j["omega"] = f.omega;
+        j["phase"] = f.phase;
+        j["offset"] = f.offset;
+        break;
+    case TimeFunction::Kind::step:
+        j["kind"] = "step";
+        j["time"] = f.time;
+        j["before"] = f.before;
+        j["after"] = f.after;
+        break;
+    case TimeFunction::Kind::ramp:
+        j["kind"] = "ramp";
+        j["t0"] = f.t0;
+        j["t1"] = f.t1;
+        j["from"] = f.from;
+        j["to"] = f.to;
+        break;
+    }
+    return j;
+}
+
+const char* body_type_name(BodyType t) {
+    switch (t) {
+    case BodyType::static_body:
+        return "static";
+    case BodyType::kinematic:
+        return "kinematic";
+    case BodyType::dynamic:
+        return "dynamic";
+    }
+    return "dynamic";
+}
+
+} // namespace
+
+std::string scene_to_json(const Scene& scene, int indent) {
+    ojson j = ojson::object();
+    j["version"] = 1;
+    if (!scene.description.empty())
+        j["description"] = scene.description;
+    const WorldDef& w = scene.world;
+    j["world"] = {{"gravity", vec(w.gravity)},
+                  {"substeps", w.substeps},
+                  {"contact_hertz", w.contact_hertz},
+                  {"contact_damping_ratio", w.contact_damping_ratio},
+                  {"contact_push_max_velocity", w.contact_push_max_velocity},
+                  {"linear_slop", w.linear_slop},
+                  {"speculative_distance", w.speculative_distance},
+                  {"restitution_threshold", w.restitution_threshold}};
+    j["dt"] = scene.dt;
+    j["steps"] = scene.steps;
+    j["output_every"] = scene.output_every;
+    if (!scene.materials.empty()) {
+        ojson mats = ojson::object();
+        for (const auto& [name, m] : scene.materials)
+            mats[name] = material_json(m);
+        j["materials"] = std::move(mats);
+    }
+    ojson bodies = ojson::array();
+    for (const SceneBody& b : scene.bodies) {
+        const BodyDef& d = b.def;
+        ojson o = ojson::object();
+        if (!d.name.empty())
+            o["name"] = d.name;
+        o["type"] = body_type_name(d.type);
+        o["position"] = vec(d.position);
+        o["angle"] = d.angle;
+        o["velocity"] = vec(d.linear_velocity);
+        o["angular_velocity"] = d.angular_velocity;
+        if (d.mass)
+            o["mass"] = *d.mass;
+        if (d.inertia)
+            o["inertia"] = *d.inertia;
+        o["gravity_scale"] = d.gravity_scale;
+        o["fixed_rotation"] = d.fixed_rotation;
+        o["force"] = vec(d.force);
+        o["torque"] = d.torque;
+        if (!b.loads.empty()) {
+            ojson l = ojson::object();
+            if (b.loads.force_x)
+                l["force_x"] = time_function_json(*b.loads.force_x);
+            if (b.loads.force_y)
+                l["force_y"] = time_function_json(*b.loads.force_y);
+            if (b.loads.torque)
+                l["torque"] = time_function_json(*b.loads.torque);
+            o["loads"] = std::move(l);
+        }
+        ojson shapes = ojson::array();
+        for (const ShapeDef& s : b.shapes) {
+            ojson sj = ojson::object();
+            if (s.geometry.type == ShapeType::circle) {
+                sj["type"] = "circle";
+                sj["radius"] = s.geometry.circle.radius;
+                sj["center"] = vec(s.geometry.circle.center);
+            } else {
+                sj["type"] = "polygon";
+                ojson pts = ojson::array();
+                for (int k = 0; k < s.geometry.polygon.count; ++k)
+                    pts.push_back(vec(s.geometry.polygon.vertices[std::size_t(k)]));
+                sj["points"] = std::move(pts);
+            }
+            sj["material"] = material_json(s.material);
+            shapes.push_back(std::move(sj));
+        }
+        o["shapes"] = std::move(shapes);
+        bodies.push_back(std::move(o));
+    }
+    j["bodies"] = std::move(bodies);
+    return j.dump(indent);
+}
+
+} // namespace tamias2d::io

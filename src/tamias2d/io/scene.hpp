@@ -1,0 +1,122 @@
+// Scene files: a whole simulation (world settings, run length, bodies, shapes, materials, loads
+// and generated stacks) as one JSON document. The format is specified in docs/scene-format.md.
+//
+// Loading is all or nothing (SRS R4): the document is parsed, type-checked and validated in
+// full, including a dry run of every body and shape through a scratch World, before any Scene is
+// returned. An error is a SceneError naming the place (JSON pointer, or line and column for a
+// syntax error), the field, the value and the data constraint it breaks.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "tamias2d/body_def.hpp"
+#include "tamias2d/handles.hpp"
+#include "tamias2d/shape_def.hpp"
+#include "tamias2d/world_def.hpp"
+
+namespace tamias2d {
+
+class World;
+
+namespace io {
+
+/// A scalar function of time f(t) (t in s) for one load component (IM1's F_i(t), IM2's
+/// tau_i(t)). Only the fields of its kind are used; the others keep their defaults.
+struct TimeFunction {
+    enum class Kind : std::uint8_t { constant, sinusoid, step, ramp };
+    Kind kind = Kind::constant;
+    double value = 0.0;     ///< constant: f(t) = value
+    double amplitude = 0.0; ///< sinusoid: f(t) = offset + amplitude sin(omega t + phase)
+    double omega = 0.0;     ///< rad s^-1
+    double phase = 0.0;     ///< rad
+    double offset = 0.0;
+    double time = 0.0;   ///< step: f(t) = before for t < time, after for t >= time
+    double before = 0.0; ///< (step)
+    double after = 0.0;  ///< (step)
+    double t0 = 0.0;     ///< ramp: from at t <= t0, to at t >= t1, linear in between
+    double t1 = 1.0;     ///< (ramp), t1 > t0
+    double from = 0.0;   ///< (ramp)
+    double to = 0.0;     ///< (ramp)
+
+    double operator()(double t) const;
+    friend bool operator==(const TimeFunction&, const TimeFunction&) = default;
+};
+
+/// Time-varying loads of one body, each component optional; they add to BodyDef::force and
+/// BodyDef::torque.
+struct SceneLoads {
+    std::optional<TimeFunction> force_x; ///< N
+    std::optional<TimeFunction> force_y; ///< N
+    std::optional<TimeFunction> torque;  ///< N m
+    bool empty() const { return !force_x && !force_y && !torque; }
+    Load operator()(double t) const;
+    friend bool operator==(const SceneLoads&, const SceneLoads&) = default;
+};
+
+/// One body of a scene. `def.load` is set from `loads` when the scene is parsed (and again by
+/// build_world, so a hand-made SceneBody only needs `loads`).
+struct SceneBody {
+    BodyDef def;
+    std::vector<ShapeDef> shapes;
+    SceneLoads loads;
+    /// Where the body came from: the JSON pointer of its entry ("/bodies/3"), or of the
+    /// generator that made it. Used in error messages.
+    std::string source;
+    bool generated = false; ///< made by a generator (then `source` is the generator's pointer)
+};
+
+struct Scene {
+    std::string description;
+    WorldDef world;
+    double dt = 1.0 / 60.0; ///< s, > 0 (DCX_dt)
+    int steps = 0;          ///< number of steps a run takes, >= 0
+    int output_every = 0;   ///< write states every K steps (0: only the final state)
+    /// Named materials as declared (shapes hold their resolved Material).
+    std::map<std::string, Material> materials;
+    std::vector<SceneBody> bodies; ///< generated bodies expanded in place, in file order
+};
+
+/// A scene that cannot be loaded. what() is one line:
+///   "scene.json: /bodies/3/shapes/0/radius: radius = -1: must be > 0 (DCX_shape)"
+///   "scene.json:4:17: syntax error: unexpected ','; expected '[', '{', or a literal"
+struct SceneError : std::runtime_error {
+    std::string origin;     ///< file name or other origin given to the parser
+    std::string pointer;    ///< JSON pointer (RFC 6901) of the offending value, "" for the root
+    int line = 0;           ///< 1-based, syntax errors only (0 otherwise)
+    int column = 0;         ///< 1-based, syntax errors only
+    std::string field;      ///< the offending field, e.g. "radius" ("" when not a field)
+    std::string constraint; ///< data-constraint label (e.g. "DCX_shape"), "" if none applies
+    std::string detail;     ///< the message without origin and place
+
+    SceneError(std::string origin_, std::string pointer_, int line_, int column_,
+               std::string field_, std::string constraint_, std::string detail_);
+};
+
+/// Reads and parses a scene file (origin in messages: the path as given).
+Scene load_scene(const std::filesystem::path& path);
+
+/// Parses and validates a scene from JSON text; `origin` names it in error messages.
+Scene parse_scene(std::string_view json, std::string_view origin = "<scene>");
+
+/// Checks a Scene (parsed or hand-made) by building it into a scratch World: throws SceneError
+/// at the body's `source` if the World rejects any body or shape.
+void validate_scene(const Scene& scene, std::string_view origin = "<scene>");
+
+/// Creates the scene's bodies and shapes in `world` (whose settings the caller made from
+/// scene.world) and returns the body handles in scene order. The scene is validated first
+/// (validate_scene), so on error `world` is left unchanged.
+std::vector<BodyId> build_world(const Scene& scene, World& world);
+
+/// The scene as canonical JSON: generators expanded, materials inlined, boxes written as
+/// polygons. parse_scene(scene_to_json(s)) reproduces s (loads, materials and geometry).
+std::string scene_to_json(const Scene& scene, int indent = 2);
+
+} // namespace io
+} // namespace tamias2d
