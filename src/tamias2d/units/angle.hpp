@@ -11,11 +11,12 @@ namespace tamias2d::units {
 inline constexpr double two_pi = 2.0 * std::numbers::pi;
 
 /// \srs{DCO_phi} Output orientation wrapped to [0, 2 pi) (SRS Table 2).
-/// fmod keeps the sign of its argument, so negative angles need one more turn; the final
-/// comparison catches -tiny + 2 pi rounding up to exactly 2 pi.
+/// fmod keeps the sign of its argument, so negative angles need one more turn (signbit, so that
+/// the -0 of fmod(-2 pi, 2 pi) ends as +0, not "-0"); the final comparison catches -tiny + 2 pi
+/// rounding up to exactly 2 pi.
 inline double wrap_orientation(double phi) {
     double w = std::fmod(phi, two_pi);
-    if (w < 0.0)
+    if (std::signbit(w))
         w += two_pi;
     return w >= two_pi ? 0.0 : w;
 }
