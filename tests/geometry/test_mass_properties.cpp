@@ -117,7 +117,11 @@ BOOST_AUTO_TEST_CASE(bad_density_rejected, *utf::label("DCX_density")) {
         BOOST_TEST(e.constraint == "DCX_density");
     }
     BOOST_CHECK_THROW((void)compute_mass(make_circle(1.0), std::nan("")), ValidationError);
-    // Zero density is allowed (static shapes): zero mass, geometric centre.
+}
+
+// Oracle: DD1 with uniform weights: a massless (density 0) shape still reports its
+// geometric centroid, so callers can place it; mass and inertia are zero.
+BOOST_AUTO_TEST_CASE(zero_density_geometric_centre, *utf::label("DD1")) {
     const MassData z = compute_mass(make_box(1.0, 1.0, {2.0, 3.0}), 0.0);
     BOOST_TEST(z.mass == 0.0);
     BOOST_TEST(z.inertia == 0.0);

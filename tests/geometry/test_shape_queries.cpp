@@ -1,0 +1,137 @@
+// Queries on placed shapes: bounding boxes (IM4's rectangles), point containment (T5's
+// "p in A") and ray casts.
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <vector>
+
+#include "tamias2d/geometry/shape_aabb.hpp"
+#include "tamias2d/geometry/shape_factory.hpp"
+#include "tamias2d/geometry/shape_queries.hpp"
+#include "tamias2d/model/t5_collision_detection.hpp"
+
+namespace utf = boost::unit_test;
+namespace tt = boost::test_tools;
+using namespace tamias2d;
+namespace t5 = tamias2d::model::t5;
+using tamias2d::units::Length;
+
+namespace {
+
+Vec2d placed(const Transform& xf, Vec2d v) {
+    return {xf.q.c * v.x - xf.q.s * v.y + xf.p.x, xf.q.s * v.x + xf.q.c * v.y + xf.p.y};
+}
+
+std::vector<units::Vec2<Length>> world_polygon(const Polygon& p, const Transform& xf) {
+    std::vector<units::Vec2<Length>> out;
+    for (int i = 0; i < p.count; ++i) {
+        const Vec2d w = placed(xf, p.vertices[i]);
+        out.push_back(units::vec_from_values<Length>(w.x, w.y));
+    }
+    return out;
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(shape_queries)
+
+// Oracle: the box of a placed polygon is the min/max of its placed vertices; of a circle,
+// centre +- radius.
+BOOST_AUTO_TEST_CASE(aabb_encloses_tightly, *utf::label("IM4")) {
+    const Polygon tri = make_polygon(std::vector<Vec2d>{{0, 0}, {2, 0}, {0, 1}});
+    const Transform xf{{1.0, -1.0}, Rot::from_angle(std::numbers::pi / 2)};
+    const Aabb b = compute_aabb(to_geometry(tri), xf);
+    // Rotated by 90 degrees: (0,0)->(1,-1), (2,0)->(1,1), (0,1)->(0,-1).
+    BOOST_TEST(b.min_x == 0.0, tt::tolerance(1e-15));
+    BOOST_TEST(b.max_x == 1.0, tt::tolerance(1e-15));
+    BOOST_TEST(b.min_y == -1.0, tt::tolerance(1e-15));
+    BOOST_TEST(b.max_y == 1.0, tt::tolerance(1e-15));
+    const Aabb c = compute_aabb(to_geometry(make_circle(0.5, {1.0, 0.0})), xf);
+    BOOST_TEST(c.min_x == 0.5, tt::tolerance(1e-15));
+    BOOST_TEST(c.max_y == 0.5, tt::tolerance(1e-15)); // centre (1, 0) -> (1, 0)
+}
+
+// Oracle: T5's containment predicates (model::t5::contains) on random points.
+BOOST_AUTO_TEST_CASE(test_point_matches_t5, *utf::label("T5")) {
+    std::mt19937_64 rng(31);
+    std::uniform_real_distribution<double> u(-2.0, 2.0);
+    const Polygon poly =
+        make_polygon(std::vector<Vec2d>{{-1, -0.5}, {1, -0.7}, {1.2, 0.4}, {0, 1}});
+    const Circle circ = make_circle(0.8, {0.3, -0.2});
+    int inside = 0;
+    for (int k = 0; k < 5000; ++k) {
+        const Transform xf{{u(rng) * 0.2, u(rng) * 0.2}, Rot::from_angle(u(rng))};
+        const Vec2d p{u(rng), u(rng)};
+        const auto wp = world_polygon(poly, xf);
+        const bool in_poly =
+            t5::contains(t5::ConvexPolygon(wp), units::vec_from_values<Length>(p.x, p.y));
+        BOOST_TEST(test_point(to_geometry(poly), xf, p) == in_poly);
+        const Vec2d c = placed(xf, circ.center);
+        const t5::Disc disc{units::vec_from_values<Length>(c.x, c.y), Length::from_value(0.8)};
+        BOOST_TEST(test_point(to_geometry(circ), xf, p) ==
+                   t5::contains(disc, units::vec_from_values<Length>(p.x, p.y)));
+        inside += in_poly;
+    }
+    BOOST_TEST(inside > 500);
+}
+
+// Oracle: closed forms: a ray along x hits the unit box's face x = -0.5 at fraction
+// (x0 - (-0.5)) / |d|... and a circle at the near root of |o + t d - c| = r.
+BOOST_AUTO_TEST_CASE(ray_cast_closed_forms, *utf::label("T5")) {
+    const Geometry box = to_geometry(make_box(0.5, 0.5));
+    const Transform id{};
+    const auto h = ray_cast(box, id, {-2.0, 0.1}, {4.0, 0.0});
+    BOOST_TEST_REQUIRE(h.has_value());
+    BOOST_TEST(h->fraction == 1.5 / 4.0, tt::tolerance(1e-15));
+    BOOST_TEST(h->point.x == -0.5, tt::tolerance(1e-15));
+    BOOST_TEST(h->normal.x == -1.0);
+    BOOST_TEST(!ray_cast(box, id, {-2.0, 0.1}, {1.0, 0.0}).has_value()); // too short
+    BOOST_TEST(!ray_cast(box, id, {0.0, 0.0}, {4.0, 0.0}).has_value());  // starts inside
+    BOOST_TEST(!ray_cast(box, id, {-2.0, 0.6}, {4.0, 0.0}).has_value()); // misses
+    const Geometry ball = to_geometry(make_circle(1.0));
+    const Transform xf{{3.0, 4.0}, Rot::from_angle(0.3)};
+    const auto c = ray_cast(ball, xf, {0.0, 0.0}, {6.0, 8.0});
+    BOOST_TEST_REQUIRE(c.has_value());
+    BOOST_TEST(c->fraction == 4.0 / 10.0, tt::tolerance(1e-14));
+    BOOST_TEST(c->normal.x == -0.6, tt::tolerance(1e-14));
+    BOOST_TEST(c->normal.y == -0.8, tt::tolerance(1e-14));
+}
+
+// Oracle: T5 containment along the ray: random rays that hit end on the boundary (just
+// inside after, just outside before), and rays that miss never pass through the shape.
+BOOST_AUTO_TEST_CASE(ray_cast_random_consistent, *utf::label("T5")) {
+    std::mt19937_64 rng(37);
+    std::uniform_real_distribution<double> u(-3.0, 3.0);
+    const Geometry shapes[] = {
+        to_geometry(make_polygon(std::vector<Vec2d>{{-1, -0.5}, {1, -0.7}, {1.2, 0.4}, {0, 1}})),
+        to_geometry(make_circle(0.9, {0.2, 0.1}))};
+    int hits = 0;
+    for (int k = 0; k < 4000; ++k) {
+        const Geometry& g = shapes[k % 2];
+        const Transform xf{{u(rng) * 0.1, u(rng) * 0.1}, Rot::from_angle(u(rng))};
+        const Vec2d o{u(rng), u(rng)};
+        const Vec2d d{2 * u(rng), 2 * u(rng)};
+        if (test_point(g, xf, o))
+            continue; // starts inside: no hit by contract
+        const auto h = ray_cast(g, xf, o, d);
+        if (h) {
+            ++hits;
+            BOOST_TEST(h->fraction >= 0.0);
+            BOOST_TEST(h->fraction <= 1.0);
+            BOOST_TEST(std::hypot(h->normal.x, h->normal.y) == 1.0, tt::tolerance(1e-12));
+            const double e = 1e-7;
+            BOOST_TEST(test_point(g, xf, h->point + e * h->normal) == false);
+            BOOST_TEST(test_point(g, xf, h->point - e * h->normal) == true);
+            // The ray enters: it moves against the outward normal.
+            BOOST_TEST(h->normal.x * d.x + h->normal.y * d.y < 0.0);
+        } else {
+            for (int s = 0; s <= 200; ++s)
+                BOOST_TEST(!test_point(g, xf, o + (s / 200.0) * d));
+        }
+    }
+    BOOST_TEST(hits > 500);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
