@@ -1,0 +1,328 @@
+// R4 for the constraints the SRS forgot (srs/data_constraints.yaml DCX_*): finite inputs, a
+// positive time step, non-degenerate shapes, positive density, non-negative friction. Each is
+// enforced with a ValidationError naming the field and the label, and a rejected call leaves
+// the world bit-for-bit unchanged (state_hash, body count and time).
+#include <boost/test/unit_test.hpp>
+
+#include <array>
+#include <cmath>
+#include <functional>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "tamias2d/geometry/shape_factory.hpp"
+#include "validation_support.hpp"
+
+namespace utf = boost::unit_test;
+using namespace tamias2d;
+using namespace tamias2d::test;
+
+BOOST_AUTO_TEST_SUITE(project_constraints)
+
+// Oracle: positive control for the strong-guarantee check itself: a valid mutation of each kind
+// the other tests reject must change state_hash (else "unchanged" would prove nothing).
+BOOST_AUTO_TEST_CASE(state_hash_sees_every_kind_of_change, *utf::label("R4")) {
+    const std::vector<std::function<void(MovingWorld&)>> changes = {
+        [](MovingWorld& m) { m.world.create_body(BodyDef{}); },
+        [](MovingWorld& m) { m.world.create_shape(m.box, circle_shape(0.1)); },
+        [](MovingWorld& m) {
+            m.world.set_velocity(m.ball, {1.0, 0.0});
+        },
+        [](MovingWorld& m) { m.world.set_angular_velocity(m.plate, 0.0); },
+        [](MovingWorld& m) {
+            m.world.set_transform(m.box, {0.0, 0.6}, 0.0);
+        },
+        [](MovingWorld& m) {
+            m.world.set_force(m.box, {1.0, 0.0});
+        },
+        [](MovingWorld& m) { m.world.set_torque(m.box, 1.0); },
+        [](MovingWorld& m) {
+            m.world.apply_force(m.box, {1.0, 0.0}, {0.0, 1.0});
+        },
+        [](MovingWorld& m) { m.world.apply_torque(m.box, 1.0); },
+        [](MovingWorld& m) {
+            m.world.apply_impulse(m.ball, {1.0, 0.0}, {3.0, 2.0});
+        },
+        [](MovingWorld& m) {
+            m.world.set_gravity({0.0, -9.81});
+        },
+        [](MovingWorld& m) { m.world.step(1.0 / 60.0); },
+        [](MovingWorld& m) { m.world.destroy_body(m.ball); },
+    };
+    for (std::size_t i = 0; i < changes.size(); ++i) {
+        BOOST_TEST_CONTEXT("change #" << i) {
+            MovingWorld m;
+            const auto before = m.world.state_hash();
+            changes[i](m);
+            BOOST_TEST(m.world.state_hash() != before);
+        }
+    }
+}
+
+// Oracle: DCX_finite (srs/data_constraints.yaml): every real input is finite. Here: the body
+// definition's fields not covered by a Table 1 row (gravity scale), and mass and inertia,
+// whose finiteness is checked before their sign.
+BOOST_AUTO_TEST_CASE(body_definition_fields_must_be_finite,
+                     *utf::label("R4") * utf::label("DCX_finite")) {
+    MovingWorld m;
+    for (const double bad : non_finite) {
+        BOOST_TEST_CONTEXT("value = " << bad) {
+            BodyDef a;
+            a.gravity_scale = bad;
+            expect_rejected_value(
+                m.world, [&] { m.world.create_body(a); }, "gravity_scale", "DCX_finite", bad);
+            BodyDef b;
+            b.mass = bad;
+            expect_rejected_value(
+                m.world, [&] { m.world.create_body(b); }, "mass", "DCX_finite", bad);
+            BodyDef c;
+            c.inertia = bad;
+            expect_rejected_value(
+                m.world, [&] { m.world.create_body(c); }, "inertia", "DCX_finite", bad);
+        }
+    }
+}
+
+// Oracle: DCX_finite and DCX_shape: every coordinate and size of a shape is finite; the
+// factories reject it, and so does the world for a hand-made Geometry that bypassed them.
+BOOST_AUTO_TEST_CASE(shape_definition_fields_must_be_finite,
+                     *utf::label("R4") * utf::label("DCX_finite")) {
+    MovingWorld m;
+    for (const double bad : non_finite) {
+        BOOST_TEST_CONTEXT("value = " << bad) {
+            // A non-finite size is not "> 0" either; both labels are defensible, the finite
+            // check comes first.
+            expect_validation_error([&] { (void)box_shape(bad, 1.0); }, "width", "DCX_finite");
+            expect_validation_error([&] { (void)box_shape(1.0, bad); }, "height", "DCX_finite");
+            expect_validation_error(
+                [&] {
+                    (void)box_shape(1.0, 1.0, {}, {bad, 0.0});
+                },
+                "center", "DCX_finite");
+            expect_validation_error([&] { (void)box_shape(1.0, 1.0, {}, {}, bad); }, "angle",
+                                    "DCX_finite");
+            expect_validation_error([&] { (void)circle_shape(bad); }, "radius", "DCX_finite");
+            expect_validation_error(
+                [&] {
+                    (void)circle_shape(1.0, {}, {0.0, bad});
+                },
+                "center", "DCX_finite");
+            const std::array<Vec2d, 3> pts = {Vec2d{0.0, 0.0}, Vec2d{1.0, 0.0}, Vec2d{0.0, bad}};
+            expect_validation_error([&] { (void)polygon_shape(pts); }, "points", "DCX_finite");
+
+            ShapeDef circle;
+            circle.geometry.type = ShapeType::circle;
+            circle.geometry.circle = {{bad, 0.0}, 1.0};
+            expect_rejected(
+                m.world, [&] { m.world.create_shape(m.box, circle); }, "center", "DCX_finite");
+            circle.geometry.circle = {{0.0, 0.0}, bad};
+            expect_rejected(
+                m.world, [&] { m.world.create_shape(m.box, circle); }, "radius", "DCX_finite");
+
+            ShapeDef poly = box_shape(1.0, 1.0);
+            poly.geometry.polygon.vertices[2].x = bad;
+            expect_rejected(
+                m.world, [&] { m.world.create_shape(m.box, poly); }, "vertices", "DCX_finite");
+        }
+    }
+}
+
+// Oracle: DCX_finite for the material's real fields (density, C_R, friction).
+BOOST_AUTO_TEST_CASE(material_fields_must_be_finite, *utf::label("R4") * utf::label("DCX_finite")) {
+    MovingWorld m;
+    for (const double bad : non_finite) {
+        BOOST_TEST_CONTEXT("value = " << bad) {
+            for (const int field : {0, 1, 2}) {
+                Material mat;
+                const char* name = field == 0 ? "density" : field == 1 ? "restitution" : "friction";
+                (field == 0 ? mat.density : field == 1 ? mat.restitution : mat.friction) = bad;
+                BOOST_TEST_CONTEXT("field " << name) {
+                    expect_rejected_value(
+                        m.world, [&] { m.world.create_shape(m.box, circle_shape(0.2, mat)); }, name,
+                        "DCX_finite", bad);
+                }
+            }
+        }
+    }
+}
+
+// Oracle: DCX_finite for the impulse call (J and its point of application), whose inputs no
+// Table 1 row covers (J is DD10's impulse).
+BOOST_AUTO_TEST_CASE(impulse_must_be_finite, *utf::label("R4") * utf::label("DCX_finite")) {
+    MovingWorld m;
+    for (const double bad : non_finite) {
+        BOOST_TEST_CONTEXT("value = " << bad) {
+            expect_rejected_value(
+                m.world,
+                [&] {
+                    m.world.apply_impulse(m.ball, {bad, 0.0}, {3.0, 2.0});
+                },
+                "impulse", "DCX_finite", bad);
+            expect_rejected_value(
+                m.world,
+                [&] {
+                    m.world.apply_impulse(m.ball, {0.0, bad}, {3.0, 2.0});
+                },
+                "impulse", "DCX_finite", bad);
+            expect_rejected_value(
+                m.world,
+                [&] {
+                    m.world.apply_impulse(m.ball, {1.0, 0.0}, {bad, 2.0});
+                },
+                "world_point", "DCX_finite", bad);
+        }
+    }
+}
+
+// Oracle: DCX_finite for every real world setting (the solver's softness and tolerances).
+BOOST_AUTO_TEST_CASE(world_settings_must_be_finite, *utf::label("R4") * utf::label("DCX_finite")) {
+    using Field = double WorldDef::*;
+    const std::vector<std::pair<Field, const char*>> fields = {
+        {&WorldDef::contact_hertz, "contact_hertz"},
+        {&WorldDef::contact_damping_ratio, "contact_damping_ratio"},
+        {&WorldDef::contact_push_max_velocity, "contact_push_max_velocity"},
+        {&WorldDef::linear_slop, "linear_slop"},
+        {&WorldDef::speculative_distance, "speculative_distance"},
+        {&WorldDef::restitution_threshold, "restitution_threshold"},
+    };
+    for (const double bad : non_finite) {
+        for (const auto& [field, name] : fields) {
+            BOOST_TEST_CONTEXT(name << " = " << bad) {
+                WorldDef def;
+                def.*field = bad;
+                expect_validation_error([&] { World w(def); }, name, "DCX_finite");
+            }
+        }
+    }
+}
+
+// Oracle: DCX_dt (srs/data_constraints.yaml): the time step is finite and > 0; substeps
+// (h = dt / substeps) are a positive count.
+BOOST_AUTO_TEST_CASE(time_step_must_be_positive_and_finite,
+                     *utf::label("R4") * utf::label("DCX_dt")) {
+    MovingWorld m;
+    for (const double dt : {0.0, -0.0, -1.0 / 60.0, -1e-300}) {
+        BOOST_TEST_CONTEXT("dt = " << dt) {
+            expect_rejected_value(
+                m.world, [&] { m.world.step(dt); }, "dt", "DCX_dt", dt);
+        }
+    }
+    for (const double dt : non_finite) {
+        BOOST_TEST_CONTEXT("dt = " << dt) {
+            expect_rejected_value(
+                m.world, [&] { m.world.step(dt); }, "dt", "DCX_finite", dt);
+        }
+    }
+    for (const int substeps : {0, -1}) {
+        BOOST_TEST_CONTEXT("substeps = " << substeps) {
+            WorldDef def;
+            def.substeps = substeps;
+            expect_validation_error([&] { World w(def); }, "substeps", "DCX_dt");
+        }
+    }
+    const double t0 = m.world.time();
+    m.world.step(1e-6); // a tiny positive step is valid
+    BOOST_TEST(m.world.time() == t0 + 1e-6);
+}
+
+// Oracle: DCX_shape (srs/data_constraints.yaml): a convex polygon has 3 to 8 vertices, is
+// convex and counter-clockwise and has positive area. Point clouds whose hull is degenerate are
+// rejected by polygon_shape; hand-made polygons breaking an invariant by create_shape.
+BOOST_AUTO_TEST_CASE(degenerate_polygons_are_rejected,
+                     *utf::label("R4") * utf::label("DCX_shape")) {
+    using Points = std::vector<Vec2d>;
+    std::vector<std::pair<const char*, Points>> clouds = {
+        {"two points", {{0.0, 0.0}, {1.0, 0.0}}},
+        {"collinear", {{0.0, 0.0}, {1.0, 1.0}, {2.0, 2.0}, {3.0, 3.0}}},
+        {"coincident", {{1.0, 1.0}, {1.0, 1.0}, {1.0, 1.0}}},
+        {"sliver", {{0.0, 0.0}, {1.0, 0.0}, {0.5, 1e-9}}},
+    };
+    Points twelve; // a regular 12-gon: its hull has more than 8 vertices
+    for (int k = 0; k < 12; ++k)
+        twelve.push_back({std::cos(k * std::numbers::pi / 6), std::sin(k * std::numbers::pi / 6)});
+    clouds.emplace_back("12-gon", twelve);
+    for (const auto& [what, pts] : clouds) {
+        BOOST_TEST_CONTEXT(what) {
+            expect_validation_error([&] { (void)polygon_shape(pts); }, "polygon", "DCX_shape");
+        }
+    }
+
+    MovingWorld m;
+    const ShapeDef square = box_shape(1.0, 1.0);
+    std::vector<std::pair<const char*, ShapeDef>> hand_made;
+    {
+        ShapeDef cw = square; // clockwise: vertices reversed (normals re-derived accordingly)
+        auto& p = cw.geometry.polygon;
+        std::reverse(p.vertices.begin(), p.vertices.begin() + p.count);
+        hand_made.emplace_back("clockwise", cw);
+    }
+    {
+        ShapeDef concave = square; // a vertex pushed inside: a reflex angle
+        concave.geometry.polygon.vertices[2] = {0.0, 0.0};
+        hand_made.emplace_back("non-convex", concave);
+    }
+    {
+        ShapeDef few = square;
+        few.geometry.polygon.count = 2;
+        hand_made.emplace_back("two vertices", few);
+    }
+    {
+        ShapeDef many = square;
+        many.geometry.polygon.count = max_polygon_vertices + 1;
+        hand_made.emplace_back("nine vertices", many);
+    }
+    {
+        ShapeDef flat = box_shape(1.0, 1.0);
+        auto& p = flat.geometry.polygon; // all four vertices on the x axis: zero area
+        for (int i = 0; i < p.count; ++i)
+            p.vertices[std::size_t(i)].y = 0.0;
+        hand_made.emplace_back("zero area", flat);
+    }
+    for (const auto& [what, def] : hand_made) {
+        BOOST_TEST_CONTEXT(what) {
+            expect_rejected(
+                m.world, [&] { m.world.create_shape(m.box, def); }, "polygon", "DCX_shape");
+        }
+    }
+    // Positive control: a valid triangle through both paths.
+    const std::array<Vec2d, 3> tri = {Vec2d{0.0, 0.0}, Vec2d{1.0, 0.0}, Vec2d{0.0, 1.0}};
+    BOOST_CHECK_NO_THROW(m.world.create_shape(m.box, polygon_shape(tri)));
+}
+
+// Oracle: DCX_density (srs/data_constraints.yaml): rho > 0, so that m = rho A > 0 (DD1).
+BOOST_AUTO_TEST_CASE(non_positive_density_is_rejected,
+                     *utf::label("R4") * utf::label("DCX_density")) {
+    MovingWorld m;
+    for (const double rho : {0.0, -0.0, -1e-300, -1.0}) {
+        BOOST_TEST_CONTEXT("density = " << rho) {
+            expect_rejected_value(
+                m.world,
+                [&] {
+                    m.world.create_shape(m.box, box_shape(0.5, 0.5, {rho, 0.0, 0.0}));
+                },
+                "density", "DCX_density", rho);
+        }
+    }
+    BOOST_CHECK_NO_THROW(m.world.create_shape(m.box, circle_shape(0.1, {1e-6, 0.0, 0.0})));
+}
+
+// Oracle: DCX_friction (srs/data_constraints.yaml): mu >= 0 (0, the SRS regime A6, is valid).
+BOOST_AUTO_TEST_CASE(negative_friction_is_rejected,
+                     *utf::label("R4") * utf::label("DCX_friction")) {
+    MovingWorld m;
+    for (const double mu : {-1e-300, -0.1, -1.0}) {
+        BOOST_TEST_CONTEXT("friction = " << mu) {
+            expect_rejected_value(
+                m.world,
+                [&] {
+                    m.world.create_shape(m.box, circle_shape(0.2, {1.0, 0.0, mu}));
+                },
+                "friction", "DCX_friction", mu);
+        }
+    }
+    for (const double mu : {0.0, 0.6, 1e3})
+        BOOST_CHECK_NO_THROW(m.world.create_shape(m.box, circle_shape(0.2, {1.0, 0.0, mu})));
+}
+
+BOOST_AUTO_TEST_SUITE_END()
