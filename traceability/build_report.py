@@ -163,6 +163,10 @@ def build(args, log=print):
         "warnings": warnings,
     }
     report["summary"]["counts"]["refby_disagreements"] = len(report["refby_disagreements"])
+    checker["agreement"] = compare_checker(report["refby_disagreements"], checker.get("disagreements"))
+    if checker["agreement"] and not checker["agreement"]["agrees"]:
+        warnings.append("srs/check_srs.py and the harness disagree on Ref. By disagreements: " +
+                        checker["agreement"]["summary"])
     report["summary"]["counts"]["warnings"] = len(warnings) + len(tinfo["registration"])
     warnings += tinfo["registration"]
 
@@ -177,6 +181,27 @@ def build(args, log=print):
         json.dump(js, fh, indent=1, sort_keys=False, default=str)
         fh.write("\n")
     return report
+
+
+def compare_checker(own, theirs):
+    """Do srs/check_srs.py and the harness flag the same items? (None when not comparable.)"""
+    if not isinstance(theirs, list):
+        return None
+    labels = set()
+    for d in theirs:
+        if isinstance(d, dict) and d.get("label"):
+            labels.add(str(d["label"]))
+        elif isinstance(d, str):
+            labels.add(d.split(":")[0].strip())
+    mine = {d["label"] for d in own}
+    only_checker = sorted(labels - mine)
+    only_harness = sorted(mine - labels)
+    agrees = not only_checker and not only_harness
+    summary = (f"both flag the same {len(mine)} item(s)" if agrees else
+               f"only the checker flags {', '.join(only_checker) or 'none'}; "
+               f"only the harness flags {', '.join(only_harness) or 'none'}")
+    return {"agrees": agrees, "only_checker": only_checker, "only_harness": only_harness,
+            "summary": summary}
 
 
 def main(argv=None):

@@ -506,7 +506,12 @@ any test or check fails. This report is complete nonetheless; the reasons are:<u
         self.w(f'<p class="small">Cross-check with <code>srs/check_srs.py --json</code>: {E(ch["message"])}')
         if ch.get("disagreements") is not None:
             n = len(ch["disagreements"]) if hasattr(ch["disagreements"], "__len__") else "?"
-            self.w(f' — it reports {n} disagreement(s).</p><details><summary>checker output</summary><pre>'
+            ag = ch.get("agreement")
+            verdict = ""
+            if ag:
+                verdict = (f' <span class="badge st-ok">agrees</span> {E(ag["summary"])}' if ag["agrees"] else
+                           f' <span class="badge st-fail">differs</span> {E(ag["summary"])}')
+            self.w(f' — it reports {n} disagreement(s).{verdict}</p><details><summary>checker output</summary><pre>'
                    f'{E(_short_json(ch["disagreements"]))}</pre></details>')
         else:
             self.w('</p>')

@@ -116,7 +116,9 @@ def render(r):
         w(_table(["Item", "Seed Ref. By", "Computed Ref. By", "Only in seed", "Only computed"],
                  [[d["label"], ", ".join(d["seed_ref_by"]), ", ".join(d["computed_ref_by"]),
                    ", ".join(d["only_in_seed"]), ", ".join(d["only_in_data"])] for d in r["refby_disagreements"]]))
-    w(f"srs/check_srs.py cross-check: {r['checker']['message']}\n")
+    ag = r["checker"].get("agreement")
+    w(f"srs/check_srs.py cross-check: {r['checker']['message']}" +
+      (f"; {'agrees' if ag['agrees'] else 'DIFFERS'}: {ag['summary']}" if ag else "") + "\n")
     w("## 7. V&V evidence\n")
     if not r["verification"]:
         w("No verification results in reports/data/.\n")

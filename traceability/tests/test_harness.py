@@ -314,6 +314,13 @@ class Units(unittest.TestCase):
         ora = [evidence._oracle_from_block(evidence._comment_block_above(lines, i)) for i in (3, 7, 9)]
         self.assertEqual(ora, ["a = b continued", "c", None])
 
+    def test_checker_agreement(self):
+        own = [{"label": "DD1"}, {"label": "T4"}]
+        self.assertTrue(build_report.compare_checker(own, [{"label": "T4"}, {"label": "DD1"}])["agrees"])
+        ag = build_report.compare_checker(own, [{"label": "T4"}, {"label": "GD1"}])
+        self.assertEqual((ag["only_checker"], ag["only_harness"]), (["GD1"], ["DD1"]))
+        self.assertIsNone(build_report.compare_checker(own, None))
+
     def test_verification_schema_validation(self):
         self.assertEqual(vvdata.validate({"program": "p", "checks": [], "tables": [], "series": []}), [])
         errs = vvdata.validate({"checks": [{"name": "c", "passed": "yes"}],
