@@ -160,7 +160,9 @@ def analyse(srs, code_sites, tests, config):
     if not items:
         reasons.append("no SRS items were loaded")
     gate = {"passed": not reasons, "exit_code": 0 if not reasons else 1, "reasons": reasons,
-            "gated_kinds": GATED_KINDS}
+            "gated_kinds": GATED_KINDS, "failing_tests": [t["id"] for t in failing_tests],
+            "items_without_passing_test": [i["label"] for i in ungated],
+            "items_with_failing_tests": [i["label"] for i in failing_items]}
     return {"items": items, "by_kind": by_kind, "by_status": by_status, "gaps": gaps,
             "orphans": orphans, "category_labels": category_labels, "test_totals": test_totals,
             "missing_oracle": missing_oracle, "gate": gate}

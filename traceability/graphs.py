@@ -24,11 +24,11 @@ STATUS_BORDER = {"verified": "#2e7d32", "failing": "#c62828", "untested": "#ef6c
 
 VIEWS = [
     {"id": "graph_table3", "title": "Goals and requirements vs instance models, requirements and data constraints (Table 3 view)",
-     "users": ["GS", "R"], "used": ["IM", "R", "DC"], "rankdir": "LR"},
+     "users": ["GS", "R"], "used": ["IM", "R", "DC"], "rankdir": "TB"},
     {"id": "graph_table4", "title": "Assumptions and the items that use them (Table 4 view)",
-     "users": ["TM", "GD", "DD", "IM", "LC"], "used": ["A"], "rankdir": "LR"},
+     "users": ["TM", "GD", "DD", "IM", "LC"], "used": ["A"], "rankdir": "TB"},
     {"id": "graph_table5", "title": "Theoretical models, general/data definitions and instance models among themselves (Table 5 view)",
-     "users": ["TM", "GD", "DD", "IM"], "used": ["TM", "GD", "DD", "IM"], "rankdir": "LR"},
+     "users": ["TM", "GD", "DD", "IM"], "used": ["TM", "GD", "DD", "IM"], "rankdir": "TB"},
     {"id": "graph_all", "title": "All items", "users": None, "used": None, "rankdir": "LR"},
 ]
 
@@ -56,6 +56,11 @@ def view_dot(srs, status_of, view):
             if used is not None and srs.items[u]["kind"] not in used:
                 continue
             edges.append((u, lab))
+    # Items with no edge in this view are listed beside the graph, not drawn: a column of
+    # unconnected boxes says nothing a list does not, and it swamps the layout.
+    linked = {a for a, _ in edges} | {b for _, b in edges}
+    isolated = [lab for lab in nodes if lab not in linked]
+    nodes = [lab for lab in nodes if lab in linked]
     lines = [f"digraph {_q(view['id'])} {{",
              f"  rankdir={view['rankdir']}; bgcolor=transparent; nodesep=0.25; ranksep=0.6;",
              '  node [shape=box, style="rounded,filled", fontname="Helvetica", fontsize=11, penwidth=2];',
@@ -77,7 +82,7 @@ def view_dot(srs, status_of, view):
     for a, b in edges:
         lines.append(f"  {_q(a)} -> {_q(b)};")
     lines.append("}")
-    return "\n".join(lines) + "\n", len(nodes), len(edges)
+    return "\n".join(lines) + "\n", len(nodes), len(edges), isolated
 
 
 def render_graphs(srs, status_of, out_dir, warnings):
@@ -89,12 +94,12 @@ def render_graphs(srs, status_of, out_dir, warnings):
         warnings.append("Graphviz `dot` not found: graphs written as .dot only")
     out = []
     for view in VIEWS:
-        text, n, e = view_dot(srs, status_of, view)
+        text, n, e, isolated = view_dot(srs, status_of, view)
         dpath = os.path.join(gdir, view["id"] + ".dot")
         with open(dpath, "w", encoding="utf-8") as fh:
             fh.write(text)
         rec = {"id": view["id"], "title": view["title"], "dot": f"graphs/{view['id']}.dot",
-               "svg": None, "inline": None, "nodes": n, "edges": e}
+               "svg": None, "inline": None, "nodes": n, "edges": e, "isolated": isolated}
         if dot_bin and n:
             try:
                 proc = subprocess.run([dot_bin, "-Tsvg"], input=text, capture_output=True,

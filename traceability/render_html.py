@@ -91,7 +91,7 @@ td.num,th.num{text-align:right;font-variant-numeric:tabular-nums}
 .swatch{display:inline-block;width:14px;height:14px;border:2px solid #999;border-radius:3px;vertical-align:middle;margin-right:4px}
 .graph{overflow:auto;border:1px solid var(--line);border-radius:6px;padding:6px;background:#fff;max-height:900px}
 .graph svg{max-width:100%;height:auto}
-.graph.wide svg{max-width:none}
+.graph.tall{max-height:none}
 .note{background:#fff8e1;border:1px solid #f3d98b;border-radius:6px;padding:6px 12px;margin:8px 0}
 .ok-note{background:#e8f5e9;border:1px solid #a5d6a7;border-radius:6px;padding:6px 12px;margin:8px 0}
 details summary{cursor:pointer;color:var(--accent)}
@@ -184,10 +184,16 @@ commit <code>{E(commit[:12])}</code>{E(dirty)} · {E(ran)} · report schema {E(r
             self.w(f"""<div class="gate pass" id="gate"><h2>Gate: PASS (exit status 0)</h2>
 Every {E('/'.join(g['gated_kinds']))} item has a passing test and no test or check fails.</div>""")
         else:
-            lis = "".join(f"<li>{self._linkify(E(x))}</li>" for x in g["reasons"])
+            lis = "".join(f"<li>{self._linkify_tests(self._linkify(E(x)), g.get('failing_tests', []))}</li>"
+                          for x in g["reasons"])
             self.w(f"""<div class="gate fail" id="gate"><h2>Gate: FAIL (exit status {g['exit_code']})</h2>
 The harness exits non-zero when any {E('/'.join(g['gated_kinds']))} item lacks a passing test or
 any test or check fails. This report is complete nonetheless; the reasons are:<ul>{lis}</ul></div>""")
+
+    def _linkify_tests(self, text, ids):
+        for tid in ids:
+            text = text.replace(E(tid), self.tlink(tid), 1)
+        return text
 
     def _linkify(self, text):
         # Turn bare SRS labels in a reason line (already HTML-escaped) into links.
@@ -465,10 +471,13 @@ any test or check fails. This report is complete nonetheless; the reasons are:<u
             self.w(f'<h3 id="{E(g["id"])}">{E(g["title"])}</h3><p class="small mute">{g["nodes"]} nodes, {g["edges"]} edges · '
                    f'<a href="{E(g["dot"])}">DOT</a>' + (f' · <a href="{E(g["svg"])}">SVG</a>' if g.get("svg") else "") + '</p>')
             if g.get("inline"):
-                wide = " wide" if g["id"] == "graph_all" else ""
+                wide = " tall" if g["id"] == "graph_all" else ""
                 self.w(f'<div class="graph{wide}">{g["inline"]}</div>')
             else:
-                self.w('<p class="note">No SVG (Graphviz unavailable or no items).</p>')
+                self.w('<p class="note">No SVG (Graphviz unavailable or no linked items).</p>')
+            if g.get("isolated"):
+                self.w(f'<p class="small">Not drawn: items of this view with no edge in it ({len(g["isolated"])}): '
+                       f'{self.links(g["isolated"])}</p>')
         self.w('</section>')
 
     def errata(self):
