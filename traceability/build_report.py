@@ -44,6 +44,9 @@ def parse_args(argv):
     p.add_argument("--config", default=os.path.join(HERE, "config.yaml"))
     p.add_argument("--timeout", type=float, default=1800, help="seconds per test binary (default 1800)")
     p.add_argument("--jobs", type=int, default=1, help="ctest -j for non-Boost entries (default 1)")
+    p.add_argument("--junit-level", default="message",
+                   help="Boost.Test JUnit log level (default 'message': every case, failures, messages; "
+                        "'all' also logs each passing assertion and can reach tens of MB)")
     p.add_argument("--date", default=None, help="timestamp to print (default: now, or SOURCE_DATE_EPOCH)")
     p.add_argument("--quiet", action="store_true")
     return p.parse_args(argv)
@@ -100,7 +103,8 @@ def build(args, log=print):
     if not args.no_run:
         os.makedirs(results_dir, exist_ok=True)
         run_manifest = evidence.run_tests(build_dir, results_dir, timeout=args.timeout, jobs=args.jobs,
-                                          log=(lambda m: None) if args.quiet else log)
+                                          log=(lambda m: None) if args.quiet else log,
+                                          junit_level=args.junit_level)
     tests, ctests, tinfo = evidence.collect_tests(source, results_dir, warnings)
     if run_manifest is None:
         run_manifest = tinfo.get("manifest")

@@ -492,7 +492,7 @@ def _run(cmd, cwd, timeout, log=None, stderr_to=None):
     return rc, round(time.time() - t0, 3), out, err
 
 
-def run_tests(build_dir, results_dir, timeout=1800, jobs=1, log=print):
+def run_tests(build_dir, results_dir, timeout=1800, jobs=1, log=print, junit_level="message"):
     """Run everything once and write raw results into results_dir. Returns the manifest."""
     os.makedirs(os.path.join(results_dir, "boost"), exist_ok=True)
     manifest = {"build_dir": os.path.abspath(build_dir), "started": time.strftime("%Y-%m-%dT%H:%M:%S"),
@@ -535,7 +535,7 @@ def run_tests(build_dir, results_dir, timeout=1800, jobs=1, log=print):
         log(f"[traceability] {key}: listing and running")
         c1 = [b["path"], "--list_content=DOT"]
         rc1, d1, _, _ = _run(c1, b["cwd"], 300, stderr_to=dot)
-        c2 = [b["path"], f"--logger=JUNIT,all,{os.path.abspath(junit)}", "--report_level=no"]
+        c2 = [b["path"], f"--logger=JUNIT,{junit_level},{os.path.abspath(junit)}", "--report_level=no"]
         rc2, d2, _, _ = _run(c2, b["cwd"], timeout, log=os.path.join(results_dir, "boost", key + ".log"))
         manifest["binaries"][key] = {"path": b["path"], "cwd": b["cwd"], "list_exit": rc1,
                                      "run_exit": rc2, "seconds": d2, "dot": f"boost/{key}.dot",

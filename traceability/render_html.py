@@ -621,7 +621,7 @@ any test or check fails. This report is complete nonetheless; the reasons are:<u
         self.w(f'<li>Build directory: <code>{E(i["build_dir"])}</code>; raw results: <code>{E(i["results_dir"])}</code>; '
                f'verification data: <code>{E(i["data_dir"])}</code></li>')
         self.w('<li>Boost.Test: each binary is listed once with <code>--list_content=DOT</code> (test cases, '
-               'file:line, labels, inherited from suites) and run once with <code>--logger=JUNIT,all,…</code>; '
+               'file:line, labels, inherited from suites) and run once with a JUnit logger (<code>--logger=JUNIT,…</code>); '
                'data-driven cases are one test with their samples aggregated. Other CTest entries run through '
                '<code>ctest --output-junit</code>; their SRS items come from their LABELS.</li>')
         self.w('<li>Status of an item: ' + "; ".join(f"<b>{E(k)}</b> = {E(v)}" for k, v in STATUS_HELP.items()) + '.</li>')
