@@ -111,6 +111,13 @@ def build(args, log=print):
 
     programs, cov = vvdata.load_data_dir(data_dir, warnings)
     tests += vvdata.checks_as_tests(programs)
+    seen = {}
+    for t in tests:  # ids must be unique (anchors, item -> test references)
+        n = seen.get(t["id"], 0) + 1
+        seen[t["id"]] = n
+        if n > 1:
+            warnings.append(f"duplicate test id {t['id']}: the {n}. one is renamed {t['id']}#{n}")
+            t["id"] = f"{t['id']}#{n}"
     for p in programs:
         for c in p["checks"]:
             c["status"] = "passed" if c.get("passed") is True else "failed"

@@ -643,6 +643,14 @@ def collect_tests(source_root, results_dir, warnings):
             warnings.append(msg)
             binfo["problems"].append(msg)
         binfo["cases"] = len(cases)
+        if not cases:
+            msg = (f"{key}: the --list_content=DOT listing names no test case (list exit "
+                   f"{run.get('list_exit', 'unknown')}); its registered labels get an error entry")
+            warnings.append(msg)
+            binfo["problems"].append(msg)
+            for lab in b["labels"]:
+                tests.append(_synthetic(key, lab, "error", msg))
+            continue
         case_labels = set()
         for c in cases:
             status, message, samples_summary = _case_status(c, junit)
@@ -657,6 +665,16 @@ def collect_tests(source_root, results_dir, warnings):
             tests.append(t)
             if c["enabled"]:
                 case_labels.update(c["labels"])
+        rc = run.get("run_exit")
+        if junit is not None and rc not in (None, 0) and not any(
+                t["status"] in FAILING for t in tests if t.get("binary") == key):
+            msg = (f"{key}: exited with status {rc} although its JUnit result shows no failing case "
+                   "(crash at exit, leak report or a Boost.Test usage error)")
+            warnings.append(msg)
+            binfo["problems"].append(msg)
+            tests.append({"id": f"{key}:<process exit>", "name": "<process exit>", "origin": "boost",
+                          "binary": key, "status": "error", "labels": [], "oracle": None,
+                          "file": None, "line": None, "details": msg, "samples": None, "enabled": True})
         reg = set(b["labels"])
         for lab in sorted(case_labels - reg):
             info["registration"].append(f"{key}: label @{lab} is on test cases but has no CTest "

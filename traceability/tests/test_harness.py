@@ -206,6 +206,33 @@ class GreenFixture(unittest.TestCase):
             shutil.rmtree(tmp, ignore_errors=True)
 
 
+class ProcessExit(unittest.TestCase):
+    def test_nonzero_exit_without_failing_case_is_an_error(self):
+        tmp = tempfile.mkdtemp(prefix="trace-exit-")
+        try:
+            repo = os.path.join(tmp, "repo")
+            shutil.copytree(REPO, repo)
+            junit = os.path.join(repo, "results", "boost", "model_tests.junit.xml")
+            with open(junit, encoding="utf-8") as fh:
+                text = fh.read()
+            start = text.index("<failure")
+            end = text.index("</system-err>", start) + len("</system-err>")
+            with open(junit, "w", encoding="utf-8") as fh:
+                fh.write(text[:start] + text[end:])
+            with open(os.path.join(repo, "results", "runs.json"), "w", encoding="utf-8") as fh:
+                json.dump({"binaries": {"model_tests": {"run_exit": 134}}, "errors": [], "commands": []}, fh)
+            out = os.path.join(tmp, "reports")
+            self.assertEqual(run_harness(repo, out), 1)
+            with open(os.path.join(out, "traceability.json"), encoding="utf-8") as fh:
+                rep = json.load(fh)
+            tests = {t["id"]: t for t in rep["tests"]}
+            self.assertEqual(tests["model_tests:<process exit>"]["status"], "error")
+            self.assertEqual({i["label"]: i["status"] for i in rep["items"]}["IM2"], "verified")
+            self.assertIn("model_tests:<process exit>", rep["gate"]["failing_tests"])
+        finally:
+            shutil.rmtree(tmp, ignore_errors=True)
+
+
 class ScriptEntryPoint(unittest.TestCase):
     def test_runs_as_a_script(self):
         tmp = tempfile.mkdtemp(prefix="trace-cli-")
