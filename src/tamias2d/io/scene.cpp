@@ -759,7 +759,8 @@ class DomBuilder {
     bool failed = false;
     std::size_t position = 0; // chars read when a syntax error happened (0: no position)
     std::string message;
-    std::string pointer; // for duplicate keys and nesting
+    std::string pointer;    // for duplicate keys and nesting
+    std::string last_token; // the token the parser stopped at
 
     bool null() { return put(nullptr); }
     bool boolean(bool b) { return put(b); }
@@ -780,9 +781,11 @@ class DomBuilder {
         key_ = k;
         return true;
     }
-    bool parse_error(std::size_t pos, const std::string&, const nlohmann::detail::exception& e) {
+    bool parse_error(std::size_t pos, const std::string& token,
+                     const nlohmann::detail::exception& e) {
         failed = true;
         position = pos;
+        last_token = token;
         std::string what = e.what();
         const auto syntax = what.find("syntax error");
         if (syntax != std::string::npos) {
@@ -862,8 +865,16 @@ ojson parse_json(std::string_view text, const std::string& origin) {
     if (ok && !dom.failed)
         return std::move(dom.root);
     if (dom.position > 0) {
-        // Line and column (1-based) of the character at which the parser stopped.
-        const std::size_t at = std::min(dom.position - 1, text.size());
+        // Line and column (1-based) of the character at which the parser stopped, or of the
+        // end of the input. For an unexpected string or an overflowing number the parser has
+        // read the whole token: point at its start instead.
+        std::size_t at = std::min(dom.position - 1, text.size());
+        const std::string& tok = dom.last_token;
+        const bool whole_token = (tok.size() >= 2 && tok.front() == '"' && tok.back() == '"') ||
+                                 dom.message.starts_with("number overflow");
+        if (whole_token && tok.size() <= dom.position && dom.position <= text.size() &&
+            text.substr(dom.position - tok.size(), tok.size()) == tok)
+            at = dom.position - tok.size();
         const auto nl_before = text.substr(0, at).rfind('\n');
         const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + at, '\n'));
         const int column =
@@ -985,16 +996,8 @@ std::vector<BodyId> build_world(const Scene& scene, World& world) {
     ids.reserve(scene.bodies.size());
     for (const SceneBody& b : scene.bodies) {
         BodyDef def = b.def;
-        if (!b.loads.empty())
-            def.load = [loads = b.loads, user = b.def.load](double t) {
-                Load l = loads(t);
-                if (user) {
-                    const Load u = user(t);
-                    l.force = l.force + u.force;
-                    l.torque += u.torque;
-                }
-                return l;
-            };
+        if (!b.loads.empty()) // the data wins over a function set by hand (see scene.hpp)
+            def.load = [loads = b.loads](double t) { return loads(t); };
         const BodyId id = world.create_body(def);
         for (const ShapeDef& s : b.shapes)
             world.create_shape(id, s);

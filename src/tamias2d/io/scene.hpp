@@ -60,8 +60,8 @@ struct SceneLoads {
     friend bool operator==(const SceneLoads&, const SceneLoads&) = default;
 };
 
-/// One body of a scene. `def.load` is set from `loads` when the scene is parsed (and again by
-/// build_world, so a hand-made SceneBody only needs `loads`).
+/// One body of a scene. `def.load` is set from `loads` when the scene is parsed; build_world
+/// uses `loads` when it is not empty (replacing `def.load`), else `def.load` as it is.
 struct SceneBody {
     BodyDef def;
     std::vector<ShapeDef> shapes;

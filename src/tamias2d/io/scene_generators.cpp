@@ -170,8 +170,13 @@ std::vector<SceneBody> generate_elastic_pair(const ElasticPairParams& p) {
     if (!(p.distance > p.box))
         throw ValidationError("distance", p.distance, "must be > box (no initial overlap)",
                               "DCX_shape");
+    require_finite("density", p.density);
+    if (!(p.density > 0.0))
+        throw ValidationError("density", p.density, "must be > 0", "DCX_density");
+    require_finite("restitution", p.restitution);
+    if (!(p.restitution >= 0.0 && p.restitution <= 1.0))
+        throw ValidationError("restitution", p.restitution, "must be in [0, 1]", "DCI_CR");
     const Material m{p.density, p.restitution, 0.0};
-    require_material(m);
 
     std::vector<SceneBody> out;
     for (const int side : {-1, 1}) {

@@ -1,0 +1,315 @@
+// The scene format (docs/scene-format.md): what a file says is what the Scene and the World
+// get (R1, R2, R3), and canonical JSON round-trips.
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "tamias2d/io/scene.hpp"
+#include "tamias2d/world.hpp"
+
+namespace utf = boost::unit_test;
+using namespace tamias2d;
+using namespace tamias2d::io;
+
+namespace {
+
+const char* const full_scene = R"({
+  "version": 1,
+  "description": "every field",
+  "world": { "gravity": [0.5, -10], "substeps": 8, "contact_hertz": 40,
+             "contact_damping_ratio": 5, "contact_push_max_velocity": 2, "linear_slop": 0.004,
+             "speculative_distance": 0.03, "restitution_threshold": 0.5 },
+  "dt": "1/120",
+  "steps": 240,
+  "output_every": 12,
+  "materials": { "default": { "friction": 0.6 },
+                 "rubber": { "density": 1.5, "restitution": 0.8, "friction": 0.9 } },
+  "bodies": [
+    { "name": "ground", "type": "static", "position": [0, -1],
+      "shapes": [ { "type": "box", "width": 40, "height": 2 } ] },
+    { "name": "crate", "type": "dynamic", "position": [1.5, 2.5], "angle": 0.25,
+      "velocity": [2.51, -1], "angular_velocity": 2.1, "mass": 56.2, "inertia": 74.5,
+      "gravity_scale": 0.5, "fixed_rotation": false, "force": [98.1, 0], "torque": 200,
+      "loads": { "force_x": 3,
+                 "force_y": { "kind": "sinusoid", "amplitude": 2, "omega": 3, "phase": 0.5, "offset": 1 },
+                 "torque": { "kind": "ramp", "t0": 1, "t1": 3, "from": 0, "to": 4 } },
+      "shapes": [ { "type": "box", "width": 2, "height": 1, "center": [0.5, 0], "angle": 0,
+                    "material": "rubber" },
+                  { "type": "circle", "radius": 0.25, "center": [-1, 0],
+                    "material": { "density": 2, "restitution": 1 } } ] },
+    { "name": "wedge", "type": "kinematic", "velocity": [1, 0],
+      "loads": { "torque": { "kind": "step", "time": 2, "before": -1, "after": 1 } },
+      "shapes": [ { "type": "polygon", "points": [[0, 0], [2, 0], [0, 1]] } ] }
+  ]
+})";
+
+bool same_polygon(const Polygon& a, const Polygon& b, double tol) {
+    if (a.count != b.count)
+        return false;
+    // Same vertices in the same cyclic order, from any starting vertex.
+    for (int shift = 0; shift < a.count; ++shift) {
+        bool all = true;
+        for (int i = 0; i < a.count && all; ++i) {
+            const Vec2d p = a.vertices[std::size_t(i)];
+            const Vec2d q = b.vertices[std::size_t((i + shift) % a.count)];
+            all = std::abs(p.x - q.x) <= tol && std::abs(p.y - q.y) <= tol;
+        }
+        if (all)
+            return true;
+    }
+    return false;
+}
+
+void check_same(const Scene& a, const Scene& b) {
+    BOOST_TEST(a.dt == b.dt);
+    BOOST_TEST(a.steps == b.steps);
+    BOOST_TEST(a.output_every == b.output_every);
+    BOOST_TEST(a.world.gravity.x == b.world.gravity.x);
+    BOOST_TEST(a.world.gravity.y == b.world.gravity.y);
+    BOOST_TEST(a.world.substeps == b.world.substeps);
+    BOOST_TEST(a.world.contact_hertz == b.world.contact_hertz);
+    BOOST_TEST(a.world.linear_slop == b.world.linear_slop);
+    BOOST_TEST_REQUIRE(a.bodies.size() == b.bodies.size());
+    for (std::size_t i = 0; i < a.bodies.size(); ++i) {
+        BOOST_TEST_CONTEXT("body " << i) {
+            const BodyDef& x = a.bodies[i].def;
+            const BodyDef& y = b.bodies[i].def;
+            BOOST_TEST(x.name == y.name);
+            BOOST_TEST((x.type == y.type));
+            BOOST_TEST(x.position.x == y.position.x);
+            BOOST_TEST(x.position.y == y.position.y);
+            BOOST_TEST(x.angle == y.angle);
+            BOOST_TEST(x.linear_velocity.x == y.linear_velocity.x);
+            BOOST_TEST(x.linear_velocity.y == y.linear_velocity.y);
+            BOOST_TEST(x.angular_velocity == y.angular_velocity);
+            BOOST_TEST(x.force.x == y.force.x);
+            BOOST_TEST(x.torque == y.torque);
+            BOOST_TEST((x.mass == y.mass));
+            BOOST_TEST((x.inertia == y.inertia));
+            BOOST_TEST(x.gravity_scale == y.gravity_scale);
+            BOOST_TEST(x.fixed_rotation == y.fixed_rotation);
+            BOOST_TEST((a.bodies[i].loads == b.bodies[i].loads));
+            BOOST_TEST_REQUIRE(a.bodies[i].shapes.size() == b.bodies[i].shapes.size());
+            for (std::size_t s = 0; s < a.bodies[i].shapes.size(); ++s) {
+                const ShapeDef& p = a.bodies[i].shapes[s];
+                const ShapeDef& q = b.bodies[i].shapes[s];
+                BOOST_TEST((p.geometry.type == q.geometry.type));
+                BOOST_TEST(p.material.density == q.material.density);
+                BOOST_TEST(p.material.restitution == q.material.restitution);
+                BOOST_TEST(p.material.friction == q.material.friction);
+                if (p.geometry.type == ShapeType::circle) {
+                    BOOST_TEST(p.geometry.circle.radius == q.geometry.circle.radius);
+                    BOOST_TEST(p.geometry.circle.center.x == q.geometry.circle.center.x);
+                    BOOST_TEST(p.geometry.circle.center.y == q.geometry.circle.center.y);
+                } else {
+                    BOOST_TEST(same_polygon(p.geometry.polygon, q.geometry.polygon, 0.0));
+                }
+            }
+        }
+    }
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(scene_parse)
+
+// Oracle: the scene text above, read by hand against docs/scene-format.md: every value the file
+// states reaches the Scene unchanged, omitted ones take the documented defaults.
+BOOST_AUTO_TEST_CASE(every_field_reaches_the_scene,
+                     *utf::label("R1") * utf::label("R2") * utf::label("R3")) {
+    const Scene s = parse_scene(full_scene, "full");
+    BOOST_TEST(s.description == "every field");
+    BOOST_TEST(s.dt == 1.0 / 120.0); // "1/120" is the double nearest 1/120
+    BOOST_TEST(s.steps == 240);
+    BOOST_TEST(s.output_every == 12);
+    BOOST_TEST(s.world.gravity.x == 0.5);
+    BOOST_TEST(s.world.gravity.y == -10.0);
+    BOOST_TEST(s.world.substeps == 8);
+    BOOST_TEST(s.world.contact_hertz == 40.0);
+    BOOST_TEST(s.world.contact_damping_ratio == 5.0);
+    BOOST_TEST(s.world.contact_push_max_velocity == 2.0);
+    BOOST_TEST(s.world.linear_slop == 0.004);
+    BOOST_TEST(s.world.speculative_distance == 0.03);
+    BOOST_TEST(s.world.restitution_threshold == 0.5);
+    BOOST_TEST(s.materials.size() == 2u);
+    BOOST_TEST_REQUIRE(s.bodies.size() == 3u);
+
+    const SceneBody& ground = s.bodies[0];
+    BOOST_TEST(ground.def.name == "ground");
+    BOOST_TEST((ground.def.type == BodyType::static_body));
+    BOOST_TEST(ground.source == "/bodies/0");
+    BOOST_TEST(!ground.generated);
+    BOOST_TEST_REQUIRE(ground.shapes.size() == 1u);
+    const Polygon& g = ground.shapes[0].geometry.polygon;
+    BOOST_TEST(g.count == 4);
+    BOOST_TEST(g.vertices[0].x == -20.0);
+    BOOST_TEST(g.vertices[0].y == -1.0);
+    BOOST_TEST(g.vertices[2].x == 20.0);
+    BOOST_TEST(g.vertices[2].y == 1.0);
+    // "default" material: friction 0.6, other fields the library's defaults (1, 0).
+    BOOST_TEST(ground.shapes[0].material.friction == 0.6);
+    BOOST_TEST(ground.shapes[0].material.density == 1.0);
+    BOOST_TEST(ground.shapes[0].material.restitution == 0.0);
+
+    const SceneBody& crate = s.bodies[1];
+    const BodyDef& d = crate.def;
+    BOOST_TEST((d.type == BodyType::dynamic));
+    BOOST_TEST(d.position.x == 1.5);
+    BOOST_TEST(d.position.y == 2.5);
+    BOOST_TEST(d.angle == 0.25);
+    BOOST_TEST(d.linear_velocity.x == 2.51);
+    BOOST_TEST(d.linear_velocity.y == -1.0);
+    BOOST_TEST(d.angular_velocity == 2.1);
+    BOOST_TEST_REQUIRE(d.mass.has_value());
+    BOOST_TEST(*d.mass == 56.2);
+    BOOST_TEST_REQUIRE(d.inertia.has_value());
+    BOOST_TEST(*d.inertia == 74.5);
+    BOOST_TEST(d.gravity_scale == 0.5);
+    BOOST_TEST(!d.fixed_rotation);
+    BOOST_TEST(d.force.x == 98.1);
+    BOOST_TEST(d.torque == 200.0);
+    BOOST_TEST(bool(d.load));
+    BOOST_TEST_REQUIRE(crate.shapes.size() == 2u);
+    const ShapeDef& box = crate.shapes[0];
+    BOOST_TEST(box.material.density == 1.5); // named material
+    BOOST_TEST(box.material.restitution == 0.8);
+    BOOST_TEST(box.material.friction == 0.9);
+    BOOST_TEST(box.geometry.polygon.vertices[0].x == -0.5); // centre 0.5, half width 1
+    BOOST_TEST(box.geometry.polygon.vertices[1].x == 1.5);
+    const ShapeDef& ball = crate.shapes[1];
+    BOOST_TEST((ball.geometry.type == ShapeType::circle));
+    BOOST_TEST(ball.geometry.circle.radius == 0.25);
+    BOOST_TEST(ball.geometry.circle.center.x == -1.0);
+    BOOST_TEST(ball.material.density == 2.0); // inline: missing friction from "default"
+    BOOST_TEST(ball.material.restitution == 1.0);
+    BOOST_TEST(ball.material.friction == 0.6);
+
+    const SceneBody& wedge = s.bodies[2];
+    BOOST_TEST((wedge.def.type == BodyType::kinematic));
+    BOOST_TEST(wedge.shapes[0].geometry.polygon.count == 3);
+    BOOST_TEST(!wedge.loads.force_x.has_value());
+    BOOST_TEST(wedge.loads.torque.has_value());
+}
+
+// Oracle: hand evaluation of docs/scene-format.md's load formulas: constant 3; sinusoid
+// 1 + 2 sin(3 t + 0.5); ramp 0 -> 4 over t in [1, 3]; step -1 before t = 2, 1 from t = 2 on.
+BOOST_AUTO_TEST_CASE(time_varying_loads_follow_their_formulas, *utf::label("R2")) {
+    const Scene s = parse_scene(full_scene, "full");
+    const BodyDef& d = s.bodies[1].def;
+    for (const double t : {0.0, 0.5, 1.0, 2.0, 2.5, 3.0, 10.0}) {
+        BOOST_TEST_CONTEXT("t = " << t) {
+            const Load l = d.load(t);
+            BOOST_TEST(l.force.x == 3.0);
+            BOOST_TEST(l.force.y == 1.0 + 2.0 * std::sin(3.0 * t + 0.5),
+                       boost::test_tools::tolerance(1e-15));
+            const double ramp = t <= 1.0 ? 0.0 : t >= 3.0 ? 4.0 : 2.0 * (t - 1.0);
+            BOOST_TEST(l.torque == ramp, boost::test_tools::tolerance(1e-15));
+        }
+    }
+    const SceneLoads& w = s.bodies[2].loads;
+    BOOST_TEST((*w.torque)(1.999) == -1.0);
+    BOOST_TEST((*w.torque)(2.0) == 1.0);
+    BOOST_TEST((*w.torque)(5.0) == 1.0);
+}
+
+// Oracle: IM1 for a constant load: with g = 0, m = 2 kg and F_x(t) = 4 N (a load, not the
+// persistent force), v_x(t) = (F / m) t = 2 t exactly for a constant acceleration, so after
+// 60 steps of 1/60 s v_x = 2 m/s (to round-off) and the body has not turned.
+BOOST_AUTO_TEST_CASE(loads_reach_the_world, *utf::label("R2") * utf::label("R5")) {
+    const Scene s = parse_scene(R"({"world": {"gravity": [0, 0]}, "dt": "1/60", "steps": 60,
+        "bodies": [{"name": "b", "mass": 2, "loads": {"force_x": {"kind": "constant", "value": 4}},
+                    "shapes": [{"type": "circle", "radius": 0.5}]}]})",
+                                "loads");
+    World world(s.world);
+    const std::vector<BodyId> ids = build_world(s, world);
+    BOOST_TEST_REQUIRE(ids.size() == 1u);
+    BOOST_TEST(world.mass(ids[0]) == 2.0);
+    for (int i = 0; i < s.steps; ++i)
+        world.step(s.dt);
+    BOOST_TEST(world.velocity(ids[0]).x == 2.0, boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(world.velocity(ids[0]).y == 0.0);
+    BOOST_TEST(world.angular_velocity(ids[0]) == 0.0);
+}
+
+// Oracle: the scene text: build_world creates the bodies in file order with their names, types
+// and shapes (R1: the world is the space holding them).
+BOOST_AUTO_TEST_CASE(build_world_creates_the_scene_in_order, *utf::label("R1")) {
+    const Scene s = parse_scene(full_scene, "full");
+    World world(s.world);
+    const std::vector<BodyId> ids = build_world(s, world);
+    BOOST_TEST_REQUIRE(ids.size() == 3u);
+    BOOST_TEST(world.body_count() == 3u);
+    BOOST_TEST(world.name(ids[0]) == "ground");
+    BOOST_TEST(world.name(ids[1]) == "crate");
+    BOOST_TEST(world.name(ids[2]) == "wedge");
+    BOOST_TEST((world.type(ids[0]) == BodyType::static_body));
+    BOOST_TEST((world.type(ids[2]) == BodyType::kinematic));
+    BOOST_TEST(world.shapes(ids[1]).size() == 2u);
+    BOOST_TEST(world.mass(ids[1]) == 56.2); // the override, not rho A
+    BOOST_TEST(world.gravity().x == 0.5);
+    BOOST_TEST(world.settings().substeps == 8);
+}
+
+// Oracle: the strong guarantee (R4): a hand-made Scene whose third body is invalid is rejected
+// by build_world before anything is created, with the body's source pointer in the message.
+BOOST_AUTO_TEST_CASE(build_world_is_all_or_nothing, *utf::label("R4") * utf::label("DCI_m")) {
+    Scene s = parse_scene(full_scene, "full");
+    s.bodies[2].def.mass = -1.0;
+    World world(s.world);
+    world.create_body(BodyDef{});
+    const auto hash = world.state_hash();
+    try {
+        build_world(s, world);
+        BOOST_ERROR("build_world accepted a body of mass -1");
+    } catch (const SceneError& e) {
+        BOOST_TEST(e.pointer == "/bodies/2");
+        BOOST_TEST(e.constraint == "DCI_m");
+        BOOST_TEST(std::string(e.what()).find("mass") != std::string::npos);
+    }
+    BOOST_TEST(world.state_hash() == hash);
+    BOOST_TEST(world.body_count() == 1u);
+}
+
+// Oracle: the documented round-trip property: parse(scene_to_json(s)) reproduces s (values
+// bit for bit, polygons up to the starting vertex) and scene_to_json is then a fixed point.
+BOOST_AUTO_TEST_CASE(canonical_json_round_trips, *utf::label("R1") * utf::label("R2")) {
+    std::vector<std::pair<std::string, Scene>> scenes;
+    scenes.emplace_back("full", parse_scene(full_scene, "full"));
+    for (const char* name : {"two_bodies", "free_fall", "projectile", "spinning", "collision_im3",
+                             "elastic2", "pyramid20", "rain"}) {
+        const std::filesystem::path p =
+            std::filesystem::path(TAMIAS_EXAMPLE_SCENES) / (std::string(name) + ".json");
+        scenes.emplace_back(name, load_scene(p));
+    }
+    for (const auto& [name, s] : scenes) {
+        BOOST_TEST_CONTEXT(name) {
+            const std::string once = scene_to_json(s);
+            const Scene back = parse_scene(once, name + " (canonical)");
+            check_same(s, back);
+            BOOST_TEST(scene_to_json(back) == once);
+        }
+    }
+}
+
+// Oracle: the example scenes' descriptions (docs/scene-format.md): body counts by hand and by
+// the generators' formulas (pyramid N: N (N + 1) / 2 + 1; rain n: n + 1).
+BOOST_AUTO_TEST_CASE(example_scenes_load, *utf::label("R1")) {
+    const std::vector<std::pair<const char*, std::size_t>> expected = {
+        {"two_bodies", 2},       {"free_fall", 1}, {"projectile", 1},  {"spinning", 3},
+        {"collision_im3", 2},    {"elastic2", 2},  {"pyramid20", 211}, {"pyramid40", 821},
+        {"large_pyramid", 5051}, {"rain", 2001}};
+    for (const auto& [name, count] : expected) {
+        BOOST_TEST_CONTEXT(name) {
+            const Scene s = load_scene(std::filesystem::path(TAMIAS_EXAMPLE_SCENES) /
+                                       (std::string(name) + ".json"));
+            BOOST_TEST(s.bodies.size() == count);
+            BOOST_TEST(s.dt == 1.0 / 60.0);
+        }
+    }
+}
+
+BOOST_AUTO_TEST_SUITE_END()
