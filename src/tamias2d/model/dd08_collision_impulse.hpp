@@ -1,4 +1,5 @@
 #pragma once
+#include "tamias2d/model/dd12_coefficient_of_restitution.hpp"
 #include "tamias2d/units/angle.hpp"
 #include "tamias2d/units/vec2.hpp"
 
@@ -34,10 +35,18 @@ inline InverseMass effective_mass_inverse(InverseInertia A, InverseInertia B, Ve
     return normal_mass_coupling(A, B, r_AP, r_BP, r_AP, r_BP, n);
 }
 
+/// \srs{DD8} The impulse along n that takes the normal relative velocity from v_rel_n to
+/// v_target: j = -(v_rel_n - v_target) m_eff with m_eff = 1 / K. DD8 is the case
+/// v_target = -C_R v_rel_n (DD12); an iterative solver uses the same law with its own targets
+/// (0 to stop, DD12's for a bounce) and a precomputed m_eff.
+inline Impulse impulse_to_reach(Velocity v_rel_n, Velocity v_target, Mass m_eff) {
+    return -(v_rel_n - v_target) * m_eff;
+}
+
 /// \srs{DD8} Impulse for collision response: j = -(1 + C_R) (v_i^AB . n) / K, where
 /// K = effective_mass_inverse(...) and v_i^AB . n is the normal relative velocity before.
 inline Impulse collision_impulse(Dimensionless C_R, Velocity v_rel_n, InverseMass K) {
-    return -(1.0 + C_R) * v_rel_n / K;
+    return impulse_to_reach(v_rel_n, dd12::separating_normal_velocity(C_R, v_rel_n), 1.0 / K);
 }
 
 } // namespace tamias2d::model::dd08

@@ -1,0 +1,26 @@
+// A persistent contact between two shapes whose fattened boxes overlap (internal). It lives
+// from the broad phase finding the pair until the boxes separate, carrying impulses across
+// steps for warm starting.
+#pragma once
+
+#include <cstdint>
+
+#include "tamias2d/collision/manifold.hpp"
+
+namespace tamias2d {
+
+struct Contact {
+    std::uint32_t shape_a = 0, shape_b = 0; ///< shape_a < shape_b
+    Manifold manifold{};
+    double normal_impulse[2] = {0.0, 0.0}; ///< N s, accumulated (warm start)
+    double tangent_impulse[2] = {0.0, 0.0};
+    double total_normal_impulse[2] = {0.0, 0.0}; ///< N s, applied over the last step
+    double total_tangent_impulse[2] = {0.0, 0.0};
+    bool touching = false;
+
+    static std::uint64_t key(std::uint32_t a, std::uint32_t b) {
+        return (std::uint64_t(a < b ? a : b) << 32) | (a < b ? b : a);
+    }
+};
+
+} // namespace tamias2d

@@ -1,0 +1,39 @@
+// One contact manifold prepared for the solver: anchors, effective masses (DD8) and the
+// pre-solve normal velocity that restitution (DD12) refers to.
+#pragma once
+
+#include <cstdint>
+
+#include "tamias2d/math/vec2d.hpp"
+
+namespace tamias2d {
+
+struct ContactConstraintPoint {
+    Vec2d r_a{}, r_b{};                ///< m, anchors relative to the centres of mass
+    double base_separation = 0.0;      ///< m, separation minus dot(r_b - r_a, n) at preparation
+    double normal_mass = 0.0;          ///< kg, 1 / K (DD8's denominator)
+    double tangent_mass = 0.0;         ///< kg
+    double normal_impulse = 0.0;       ///< N s, accumulated in the current substep (warm start)
+    double tangent_impulse = 0.0;      ///< N s
+    double max_normal_impulse = 0.0;   ///< N s, largest seen in the step: did it push at all?
+    double total_normal_impulse = 0.0; ///< N s, everything applied over the step
+    double total_tangent_impulse = 0.0;
+    double relative_velocity = 0.0; ///< m s^-1, normal relative velocity before the step
+};
+
+struct ContactConstraint {
+    std::uint32_t body_a = 0, body_b = 0; ///< solver body indices
+    std::uint32_t contact = 0;            ///< index of the persistent contact
+    Vec2d normal{};                       ///< unit, from A into B
+    double friction = 0.0;
+    double restitution = 0.0;
+    int count = 0;
+    ContactConstraintPoint points[2]{};
+    /// The 2x2 matrix K of the two points (DD8 generalised) and its inverse, when well
+    /// conditioned: then both points are solved together, exactly.
+    double k11 = 0.0, k12 = 0.0, k22 = 0.0;
+    double inv_k11 = 0.0, inv_k12 = 0.0, inv_k22 = 0.0;
+    bool use_block = false;
+};
+
+} // namespace tamias2d

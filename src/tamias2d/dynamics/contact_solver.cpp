@@ -1,0 +1,201 @@
+#include "tamias2d/dynamics/contact_solver.hpp"
+
+#include <algorithm>
+
+#include "tamias2d/dynamics/model_bridge.hpp"
+#include "tamias2d/dynamics/two_point_lcp.hpp"
+
+namespace tamias2d {
+
+namespace {
+
+/// Ratio bound on K's condition for solving two points together (Box2D 2.4 uses 1000 too):
+/// beyond it the two rows are nearly the same constraint and the sequential solve is safer.
+constexpr double max_condition_number = 1000.0;
+
+Vec2d tangent_of(Vec2d n) {
+    return right_perp(n);
+}
+
+/// Separation of a point now, from the separation at preparation and the substep motions
+/// (rotations linearised: r' ~ r + dq x r, accurate for the small rotations of a step).
+double current_separation(const ContactConstraintPoint& cp, const SolverBody& a,
+                          const SolverBody& b, Vec2d n) {
+    const Vec2d da = a.dp + a.dq * left_perp(cp.r_a);
+    const Vec2d db = b.dp + b.dq * left_perp(cp.r_b);
+    return cp.base_separation + dot(db - da, n);
+}
+
+/// Normal velocity the point must reach in this iteration (m s^-1): a speculative gap may be
+/// closed within the substep; with bias, an overlap beyond the slop is pushed out softly.
+struct NormalTarget {
+    double target = 0.0;
+    double mass_scale = 1.0;
+    double impulse_scale = 0.0;
+};
+
+NormalTarget normal_target(double s, const ContactSolverSettings& st, bool use_bias) {
+    if (s > 0.0)
+        return {-s * st.inv_h, 1.0, 0.0};
+    if (use_bias) {
+        const double bias = std::max(st.softness.bias_rate * std::min(s + st.linear_slop, 0.0),
+                                     -st.push_max_velocity);
+        return {-bias, st.softness.mass_scale, st.softness.impulse_scale};
+    }
+    return {};
+}
+
+void solve_friction(ContactConstraint& c, SolverBody& a, SolverBody& b) {
+    const Vec2d t = tangent_of(c.normal);
+    for (int j = 0; j < c.count; ++j) {
+        ContactConstraintPoint& cp = c.points[j];
+        const double vt = bridge::relative_velocity(a, b, cp.r_a, cp.r_b, t);
+        const double max_f = c.friction * cp.normal_impulse;
+        const double lambda = bridge::impulse_to_reach(vt, 0.0, cp.tangent_mass);
+        const double updated = std::clamp(cp.tangent_impulse + lambda, -max_f, max_f);
+        const double delta = updated - cp.tangent_impulse;
+        cp.tangent_impulse = updated;
+        cp.total_tangent_impulse += delta;
+        bridge::apply_impulse(a, b, cp.r_a, cp.r_b, t, delta);
+    }
+}
+
+void apply_normal_delta(ContactConstraint& c, int j, SolverBody& a, SolverBody& b, double updated) {
+    ContactConstraintPoint& cp = c.points[j];
+    const double delta = updated - cp.normal_impulse;
+    cp.normal_impulse = updated;
+    cp.max_normal_impulse = std::max(cp.max_normal_impulse, updated);
+    cp.total_normal_impulse += delta;
+    bridge::apply_impulse(a, b, cp.r_a, cp.r_b, c.normal, delta);
+}
+
+/// Both points at once (the LCP above), for targets t1, t2 with rigid (unscaled) masses.
+void solve_block(ContactConstraint& c, SolverBody& a, SolverBody& b, double t1, double t2) {
+    ContactConstraintPoint& p1 = c.points[0];
+    ContactConstraintPoint& p2 = c.points[1];
+    const double vn1 = bridge::relative_velocity(a, b, p1.r_a, p1.r_b, c.normal);
+    const double vn2 = bridge::relative_velocity(a, b, p2.r_a, p2.r_b, c.normal);
+    // b = (velocity the points would have without their accumulated impulses) - target.
+    const double b1 = vn1 - t1 - (c.k11 * p1.normal_impulse + c.k12 * p2.normal_impulse);
+    const double b2 = vn2 - t2 - (c.k12 * p1.normal_impulse + c.k22 * p2.normal_impulse);
+    const TwoPointSolution x =
+        solve_two_point_lcp(c.k11, c.k12, c.k22, c.inv_k11, c.inv_k12, c.inv_k22, b1, b2);
+    // Apply both deltas from the same state: the result is exact for the linear system.
+    apply_normal_delta(c, 0, a, b, x.x1);
+    apply_normal_delta(c, 1, a, b, x.x2);
+}
+
+} // namespace
+
+void prepare_contacts(std::span<ContactConstraint> constraints,
+                      std::span<const SolverBody> bodies) {
+    for (ContactConstraint& c : constraints) {
+        const SolverBody& a = bodies[c.body_a];
+        const SolverBody& b = bodies[c.body_b];
+        const Vec2d t = tangent_of(c.normal);
+        for (int j = 0; j < c.count; ++j) {
+            ContactConstraintPoint& cp = c.points[j];
+            const double k = bridge::inverse_effective_mass(a, b, cp.r_a, cp.r_b, c.normal);
+            const double kt = bridge::inverse_effective_mass(a, b, cp.r_a, cp.r_b, t);
+            cp.normal_mass = k > 0.0 ? 1.0 / k : 0.0;
+            cp.tangent_mass = kt > 0.0 ? 1.0 / kt : 0.0;
+            cp.relative_velocity = bridge::relative_velocity(a, b, cp.r_a, cp.r_b, c.normal);
+            cp.max_normal_impulse = 0.0;
+            cp.total_normal_impulse = 0.0;
+            cp.total_tangent_impulse = 0.0;
+        }
+        c.use_block = false;
+        if (c.count == 2) {
+            const ContactConstraintPoint& p1 = c.points[0];
+            const ContactConstraintPoint& p2 = c.points[1];
+            c.k11 = bridge::inverse_effective_mass(a, b, p1.r_a, p1.r_b, c.normal);
+            c.k22 = bridge::inverse_effective_mass(a, b, p2.r_a, p2.r_b, c.normal);
+            c.k12 = bridge::normal_mass_coupling(a, b, p1.r_a, p1.r_b, p2.r_a, p2.r_b, c.normal);
+            const double det = c.k11 * c.k22 - c.k12 * c.k12;
+            if (c.k11 > 0.0 && c.k22 > 0.0 && c.k11 * c.k11 < max_condition_number * det) {
+                c.use_block = true;
+                const double inv_det = 1.0 / det;
+                c.inv_k11 = c.k22 * inv_det;
+                c.inv_k12 = -c.k12 * inv_det;
+                c.inv_k22 = c.k11 * inv_det;
+            }
+        }
+    }
+}
+
+void warm_start_contacts(std::span<ContactConstraint> constraints, std::span<SolverBody> bodies) {
+    const auto apply = [&](ContactConstraint& c) {
+        SolverBody& a = bodies[c.body_a];
+        SolverBody& b = bodies[c.body_b];
+        const Vec2d t = tangent_of(c.normal);
+        for (int j = 0; j < c.count; ++j) {
+            ContactConstraintPoint& cp = c.points[j];
+            bridge::apply_impulse(a, b, cp.r_a, cp.r_b, c.normal, cp.normal_impulse);
+            bridge::apply_impulse(a, b, cp.r_a, cp.r_b, t, cp.tangent_impulse);
+            cp.total_normal_impulse += cp.normal_impulse;
+            cp.total_tangent_impulse += cp.tangent_impulse;
+        }
+    };
+    for (ContactConstraint& c : constraints)
+        apply(c);
+}
+
+void solve_contacts(std::span<ContactConstraint> constraints, std::span<SolverBody> bodies,
+                    const ContactSolverSettings& st, bool use_bias) {
+    for (ContactConstraint& c : constraints) {
+        SolverBody& a = bodies[c.body_a];
+        SolverBody& b = bodies[c.body_b];
+        NormalTarget nt[2];
+        bool soft = false;
+        for (int j = 0; j < c.count; ++j) {
+            nt[j] = normal_target(current_separation(c.points[j], a, b, c.normal), st, use_bias);
+            soft = soft || nt[j].mass_scale != 1.0;
+        }
+        if (c.use_block && !soft) {
+            solve_block(c, a, b, nt[0].target, nt[1].target);
+        } else {
+            for (int j = 0; j < c.count; ++j) {
+                ContactConstraintPoint& cp = c.points[j];
+                const double vn = bridge::relative_velocity(a, b, cp.r_a, cp.r_b, c.normal);
+                const double lambda =
+                    nt[j].mass_scale * bridge::impulse_to_reach(vn, nt[j].target, cp.normal_mass) -
+                    nt[j].impulse_scale * cp.normal_impulse;
+                apply_normal_delta(c, j, a, b, std::max(cp.normal_impulse + lambda, 0.0));
+            }
+        }
+        if (c.friction > 0.0)
+            solve_friction(c, a, b);
+    }
+}
+
+void apply_restitution(std::span<ContactConstraint> constraints, std::span<SolverBody> bodies,
+                       const ContactSolverSettings& st) {
+    for (ContactConstraint& c : constraints) {
+        if (c.restitution == 0.0)
+            continue;
+        SolverBody& a = bodies[c.body_a];
+        SolverBody& b = bodies[c.body_b];
+        bool bounce[2] = {false, false};
+        double target[2] = {0.0, 0.0};
+        for (int j = 0; j < c.count; ++j) {
+            const ContactConstraintPoint& cp = c.points[j];
+            bounce[j] =
+                cp.relative_velocity < -st.restitution_threshold && cp.max_normal_impulse > 0.0;
+            target[j] = bridge::separating_normal_velocity(c.restitution, cp.relative_velocity);
+        }
+        if (c.count == 2 && c.use_block && bounce[0] && bounce[1]) {
+            solve_block(c, a, b, target[0], target[1]);
+            continue;
+        }
+        for (int j = 0; j < c.count; ++j) {
+            if (!bounce[j])
+                continue;
+            ContactConstraintPoint& cp = c.points[j];
+            const double vn = bridge::relative_velocity(a, b, cp.r_a, cp.r_b, c.normal);
+            const double lambda = bridge::impulse_to_reach(vn, target[j], cp.normal_mass);
+            apply_normal_delta(c, j, a, b, std::max(cp.normal_impulse + lambda, 0.0));
+        }
+    }
+}
+
+} // namespace tamias2d

@@ -1,0 +1,34 @@
+// The contact solver of the soft step (see docs/design.md): per substep, warm start, one
+// biased soft iteration, position integration, one relaxing rigid iteration; after the
+// substeps, one restitution pass (DD12 on the pre-step normal velocity).
+#pragma once
+
+#include <span>
+
+#include "tamias2d/dynamics/contact_constraint.hpp"
+#include "tamias2d/dynamics/softness.hpp"
+#include "tamias2d/dynamics/solver_body.hpp"
+
+namespace tamias2d {
+
+struct ContactSolverSettings {
+    double inv_h = 0.0;                 ///< s^-1, substep rate
+    Softness softness{};                ///< contact softness for this substep length
+    double linear_slop = 0.0;           ///< m
+    double push_max_velocity = 0.0;     ///< m s^-1
+    double restitution_threshold = 0.0; ///< m s^-1
+};
+
+/// Effective masses (DD8), block matrices and the pre-step normal velocities. The constraint's
+/// anchors, normal and warm-start impulses must be filled in.
+void prepare_contacts(std::span<ContactConstraint> constraints, std::span<const SolverBody> bodies);
+/// Re-applies the accumulated impulses (they carry the previous substep's solution forward).
+void warm_start_contacts(std::span<ContactConstraint> constraints, std::span<SolverBody> bodies);
+/// One iteration: with use_bias the soft, overlap-removing solve; without it the rigid relax.
+void solve_contacts(std::span<ContactConstraint> constraints, std::span<SolverBody> bodies,
+                    const ContactSolverSettings& settings, bool use_bias);
+/// DD12: where bodies approached (v_n < -threshold) and pushed, drive v_n to -C_R v_n(before).
+void apply_restitution(std::span<ContactConstraint> constraints, std::span<SolverBody> bodies,
+                       const ContactSolverSettings& settings);
+
+} // namespace tamias2d

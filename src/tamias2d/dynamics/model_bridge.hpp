@@ -1,0 +1,122 @@
+// The engine's calls into the unit-typed model layer. The engine stores plain doubles (SI);
+// these inline adapters wrap them in Boost.Units quantities, call the labelled model function
+// and unwrap the result. Everything inlines, so the hot loops pay nothing for the typing
+// (verification/bench measures it); the formulas themselves live only in model/.
+#pragma once
+
+#include "tamias2d/dynamics/solver_body.hpp"
+#include "tamias2d/model/dd03_linear_velocity.hpp"
+#include "tamias2d/model/dd04_linear_acceleration.hpp"
+#include "tamias2d/model/dd06_angular_velocity.hpp"
+#include "tamias2d/model/dd07_angular_acceleration.hpp"
+#include "tamias2d/model/dd08_collision_impulse.hpp"
+#include "tamias2d/model/dd12_coefficient_of_restitution.hpp"
+#include "tamias2d/model/im1_translational_motion.hpp"
+#include "tamias2d/model/im2_rotational_motion.hpp"
+#include "tamias2d/model/im3_collision_response.hpp"
+
+namespace tamias2d::bridge {
+
+namespace u = tamias2d::units;
+namespace m = tamias2d::model;
+
+template <class Q> inline u::Vec2<Q> typed(Vec2d v) {
+    return u::vec_from_values<Q>(v.x, v.y);
+}
+template <class Q> inline Vec2d plain(u::Vec2<Q> v) {
+    return {v.x.value(), v.y.value()};
+}
+
+inline m::dd08::InverseInertia inverse_inertia(const SolverBody& b) {
+    return {u::from_value<u::InverseMass>(b.inv_m),
+            u::from_value<u::InverseMomentOfInertia>(b.inv_I)};
+}
+
+/// IM1's acceleration g + F / m (m s^-2).
+inline Vec2d acceleration(Vec2d g, Vec2d force, double mass) {
+    return plain(m::im1::acceleration(typed<u::Acceleration>(g), typed<u::Force>(force),
+                                      u::from_value<u::Mass>(mass)));
+}
+/// IM2's angular acceleration tau / I (rad s^-2).
+inline double angular_acceleration(double torque, double inertia) {
+    return m::im2::angular_acceleration(u::from_value<u::Torque>(torque),
+                                        u::from_value<u::MomentOfInertia>(inertia))
+        .value();
+}
+/// DD4 over a substep: dv = a h.
+inline Vec2d velocity_change(Vec2d a, double h) {
+    return plain(
+        m::dd04::velocity_change_over(typed<u::Acceleration>(a), u::from_value<u::Time>(h)));
+}
+/// DD7 over a substep: d omega = alpha h.
+inline double angular_velocity_change(double alpha, double h) {
+    return m::dd07::angular_velocity_change_over(u::from_value<u::AngularAcceleration>(alpha),
+                                                 u::from_value<u::Time>(h))
+        .value();
+}
+/// DD3 over a substep: dp = v h.
+inline Vec2d displacement(Vec2d v, double h) {
+    return plain(m::dd03::displacement_over(typed<u::Velocity>(v), u::from_value<u::Time>(h)));
+}
+/// DD6 over a substep: d phi = omega h.
+inline double rotation(double w, double h) {
+    return m::dd06::angle_over(u::from_value<u::AngularVelocity>(w), u::from_value<u::Time>(h))
+        .value();
+}
+
+/// DD8's denominator K along unit direction n at anchors r_a, r_b (kg^-1).
+inline double inverse_effective_mass(const SolverBody& a, const SolverBody& b, Vec2d r_a, Vec2d r_b,
+                                     Vec2d n) {
+    return m::dd08::effective_mass_inverse(inverse_inertia(a), inverse_inertia(b),
+                                           typed<u::Length>(r_a), typed<u::Length>(r_b), n)
+        .value();
+}
+/// DD8's K generalised to two points of one manifold (kg^-1).
+inline double normal_mass_coupling(const SolverBody& a, const SolverBody& b, Vec2d r_a1, Vec2d r_b1,
+                                   Vec2d r_a2, Vec2d r_b2, Vec2d n) {
+    return m::dd08::normal_mass_coupling(inverse_inertia(a), inverse_inertia(b),
+                                         typed<u::Length>(r_a1), typed<u::Length>(r_b1),
+                                         typed<u::Length>(r_a2), typed<u::Length>(r_b2), n)
+        .value();
+}
+/// DD12 solved for the separating normal velocity: -C_R vn (m s^-1).
+inline double separating_normal_velocity(double restitution, double vn_before) {
+    return m::dd12::separating_normal_velocity(restitution, u::from_value<u::Velocity>(vn_before))
+        .value();
+}
+
+/// DD8: impulse (N s) taking the relative normal velocity from vn to target, given 1/K (kg).
+inline double impulse_to_reach(double vn, double target, double effective_mass) {
+    return m::dd08::impulse_to_reach(u::from_value<u::Velocity>(vn),
+                                     u::from_value<u::Velocity>(target),
+                                     u::from_value<u::Mass>(effective_mass))
+        .value();
+}
+
+// The manifold normal points from A into B; IM3's n points from its "B" into its "A" (A is
+// pushed along +n). So IM3's A is the manifold's B and vice versa in the two adapters below.
+
+/// IM3 (DD9, DD11): relative velocity of B with respect to A at the contact, along dir.
+inline double relative_velocity(const SolverBody& a, const SolverBody& b, Vec2d r_a, Vec2d r_b,
+                                Vec2d dir) {
+    const m::im3::Velocities va{typed<u::Velocity>(a.v), u::from_value<u::AngularVelocity>(a.w)};
+    const m::im3::Velocities vb{typed<u::Velocity>(b.v), u::from_value<u::AngularVelocity>(b.w)};
+    return m::im3::normal_relative_velocity(vb, va, typed<u::Length>(r_b), typed<u::Length>(r_a),
+                                            dir)
+        .value();
+}
+
+/// IM3: impulse lambda dir on B and -lambda dir on A (T2).
+inline void apply_impulse(SolverBody& a, SolverBody& b, Vec2d r_a, Vec2d r_b, Vec2d dir,
+                          double lambda) {
+    m::im3::Velocities va{typed<u::Velocity>(a.v), u::from_value<u::AngularVelocity>(a.w)};
+    m::im3::Velocities vb{typed<u::Velocity>(b.v), u::from_value<u::AngularVelocity>(b.w)};
+    m::im3::apply_impulse(vb, va, inverse_inertia(b), inverse_inertia(a), typed<u::Length>(r_b),
+                          typed<u::Length>(r_a), dir, u::from_value<u::Impulse>(lambda));
+    a.v = plain(va.v);
+    a.w = va.omega.value();
+    b.v = plain(vb.v);
+    b.w = vb.omega.value();
+}
+
+} // namespace tamias2d::bridge

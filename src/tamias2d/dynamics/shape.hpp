@@ -1,0 +1,20 @@
+// A shape as the world stores it (internal).
+#pragma once
+
+#include <cstdint>
+
+#include "tamias2d/geometry/aabb.hpp"
+#include "tamias2d/shape_def.hpp"
+
+namespace tamias2d {
+
+struct Shape {
+    std::uint32_t generation = 0;
+    bool alive = false;
+    std::uint32_t body = 0;
+    Geometry geometry{};
+    Material material{};
+    int proxy = -1;
+};
+
+} // namespace tamias2d

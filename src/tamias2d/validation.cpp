@@ -1,0 +1,103 @@
+#include "tamias2d/validation.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "tamias2d/errors.hpp"
+#include "tamias2d/geometry/shape_factory.hpp"
+
+namespace tamias2d {
+
+void require_finite(std::string_view field, double value) {
+    if (!std::isfinite(value)) {
+        throw ValidationError(std::string(field), value, "must be a finite number", "DCX_finite");
+    }
+}
+
+void require_finite(std::string_view field, Vec2d value) {
+    require_finite(std::string(field) + ".x", value.x);
+    require_finite(std::string(field) + ".y", value.y);
+}
+
+void validate_mass(std::string_view field, double mass) {
+    require_finite(field, mass);
+    if (!(mass > 0.0))
+        throw ValidationError(std::string(field), mass, "must be > 0", "DCI_m");
+}
+
+void validate_inertia(std::string_view field, double inertia) {
+    require_finite(field, inertia);
+    if (!(inertia > 0.0)) {
+        throw ValidationError(std::string(field), inertia, "must be > 0", "DCI_I");
+    }
+}
+
+void validate(const BodyDef& def) {
+    require_finite("body.position", def.position);
+    // DCI_phi: any real orientation is accepted on input and wrapped to [0, 2 pi) on output.
+    require_finite("body.angle", def.angle);
+    require_finite("body.linear_velocity", def.linear_velocity);
+    require_finite("body.angular_velocity", def.angular_velocity);
+    require_finite("body.force", def.force);
+    require_finite("body.torque", def.torque);
+    require_finite("body.gravity_scale", def.gravity_scale);
+    if (def.mass)
+        validate_mass("body.mass", *def.mass);
+    if (def.inertia)
+        validate_inertia("body.inertia", *def.inertia);
+}
+
+void validate(const Material& material) {
+    require_finite("material.density", material.density);
+    if (!(material.density > 0.0)) {
+        throw ValidationError("material.density", material.density, "must be > 0", "DCX_density");
+    }
+    require_finite("material.restitution", material.restitution);
+    if (!(material.restitution >= 0.0 && material.restitution <= 1.0)) {
+        throw ValidationError("material.restitution", material.restitution, "must be in [0, 1]",
+                              "DCI_CR");
+    }
+    require_finite("material.friction", material.friction);
+    if (!(material.friction >= 0.0)) {
+        throw ValidationError("material.friction", material.friction, "must be >= 0",
+                              "DCX_friction");
+    }
+}
+
+void validate(const ShapeDef& def) {
+    validate(def.geometry);
+    validate(def.material);
+}
+
+void validate(const WorldDef& def) {
+    require_finite("world.gravity", def.gravity);
+    if (def.substeps < 1 || def.substeps > 64) {
+        throw ValidationError("world.substeps", def.substeps, "must be in [1, 64]", "DCX_dt");
+    }
+    const auto positive = [](const char* field, double v) {
+        require_finite(field, v);
+        if (!(v > 0.0))
+            throw ValidationError(field, v, "must be > 0", "DCX_finite");
+    };
+    positive("world.contact_hertz", def.contact_hertz);
+    positive("world.contact_damping_ratio", def.contact_damping_ratio);
+    positive("world.contact_push_max_velocity", def.contact_push_max_velocity);
+    require_finite("world.linear_slop", def.linear_slop);
+    require_finite("world.speculative_distance", def.speculative_distance);
+    require_finite("world.restitution_threshold", def.restitution_threshold);
+    if (def.linear_slop < 0.0 || def.speculative_distance < 0.0 ||
+        def.restitution_threshold < 0.0) {
+        throw ValidationError("world.linear_slop/speculative_distance/restitution_threshold",
+                              std::fmin(def.linear_slop, std::fmin(def.speculative_distance,
+                                                                   def.restitution_threshold)),
+                              "must be >= 0", "DCX_finite");
+    }
+}
+
+void validate_time_step(double dt) {
+    require_finite("dt", dt);
+    if (!(dt > 0.0))
+        throw ValidationError("dt", dt, "must be > 0", "DCX_dt");
+}
+
+} // namespace tamias2d

@@ -1,0 +1,28 @@
+// Input validation (SRS R4): every check of the data constraints (section 5.2.6 and the ones
+// the SRS forgot, labelled DCX_*). Each throws ValidationError naming field, value and label.
+#pragma once
+
+#include <string_view>
+
+#include "tamias2d/body_def.hpp"
+#include "tamias2d/shape_def.hpp"
+#include "tamias2d/world_def.hpp"
+
+namespace tamias2d {
+
+/// DCX_finite: a real input must be a finite number.
+void require_finite(std::string_view field, double value);
+void require_finite(std::string_view field, Vec2d value);
+
+void validate(const BodyDef& def);
+void validate(const Material& material);
+void validate(const ShapeDef& def);
+void validate(const WorldDef& def);
+/// DCX_dt: the time step is finite and > 0.
+void validate_time_step(double dt);
+/// DCI_m: a mass given for a dynamic body is > 0 (the SRS's m >= 0 would divide by zero in IM1).
+void validate_mass(std::string_view field, double mass);
+/// DCI_I: a moment of inertia given is > 0 (the SRS's I >= 0 would divide by zero in IM2).
+void validate_inertia(std::string_view field, double inertia);
+
+} // namespace tamias2d

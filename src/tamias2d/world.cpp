@@ -1,0 +1,767 @@
+#include "tamias2d/world.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <unordered_map>
+
+#include "tamias2d/collision/broad_phase.hpp"
+#include "tamias2d/collision/narrow_phase.hpp"
+#include "tamias2d/dynamics/body.hpp"
+#include "tamias2d/dynamics/contact.hpp"
+#include "tamias2d/dynamics/contact_solver.hpp"
+#include "tamias2d/dynamics/model_bridge.hpp"
+#include "tamias2d/dynamics/shape.hpp"
+#include "tamias2d/errors.hpp"
+#include "tamias2d/geometry/mass_properties.hpp"
+#include "tamias2d/geometry/shape_aabb.hpp"
+#include "tamias2d/geometry/shape_queries.hpp"
+#include "tamias2d/model/dd10_impulse.hpp"
+#include "tamias2d/model/dd13_torque.hpp"
+#include "tamias2d/model/dd15_kinetic_energy.hpp"
+#include "tamias2d/model/dd16_potential_energy.hpp"
+#include "tamias2d/model/gd1_conservation_of_momentum.hpp"
+#include "tamias2d/units/angle.hpp"
+#include "tamias2d/validation.hpp"
+
+namespace tamias2d {
+
+namespace u = tamias2d::units;
+
+struct World::Impl {
+    WorldDef def;
+    double time = 0.0;
+    std::vector<Body> bodies;
+    std::vector<std::uint32_t> free_bodies;
+    std::vector<Shape> shapes;
+    std::vector<std::uint32_t> free_shapes;
+    std::vector<Contact> contacts;
+    std::unordered_map<std::uint64_t, std::uint32_t> contact_index;
+    BroadPhase broad_phase;
+
+    // Per-step scratch, kept to avoid allocation in steady state.
+    std::vector<Load> loads;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> new_pairs;
+    std::vector<std::uint32_t> doomed;
+    std::vector<SolverBody> solver_bodies;
+    std::vector<Vec2d> accelerations;
+    std::vector<double> angular_accelerations;
+    std::vector<ContactConstraint> constraints;
+    std::vector<ContactInfo> infos;
+    std::vector<ContactEvent> begin_events, end_events;
+
+    explicit Impl(const WorldDef& d) : def(d) {}
+
+    Body& body(BodyId id) {
+        if (id.index >= bodies.size() || !bodies[id.index].alive ||
+            bodies[id.index].generation != id.generation) {
+            throw InvalidHandle("stale or unknown BodyId " + std::to_string(id.index) + ":" +
+                                std::to_string(id.generation));
+        }
+        return bodies[id.index];
+    }
+    const Body& body(BodyId id) const { return const_cast<Impl*>(this)->body(id); }
+
+    Shape& shape(ShapeId id) {
+        if (id.index >= shapes.size() || !shapes[id.index].alive ||
+            shapes[id.index].generation != id.generation) {
+            throw InvalidHandle("stale or unknown ShapeId " + std::to_string(id.index) + ":" +
+                                std::to_string(id.generation));
+        }
+        return shapes[id.index];
+    }
+
+    BodyId body_id(std::uint32_t i) const { return {i, bodies[i].generation}; }
+    ShapeId shape_id(std::uint32_t i) const { return {i, shapes[i].generation}; }
+
+    Aabb shape_box(const Shape& s) const { return compute_aabb(s.geometry, bodies[s.body].xf); }
+
+    /// Mass, centre of mass and inertia from the shapes (DD1, DD14) or the overrides.
+    void update_mass(Body& b) {
+        b.mass = b.inv_mass = b.inertia = b.inv_inertia = 0.0;
+        b.local_center = {};
+        if (b.type == BodyType::dynamic) {
+            std::vector<MassData> parts;
+            parts.reserve(b.shapes.size());
+            for (std::uint32_t s : b.shapes) {
+                parts.push_back(compute_mass(shapes[s].geometry, shapes[s].material.density));
+            }
+            MassData md{};
+            if (!parts.empty())
+                md = combine(parts);
+            b.local_center = md.center;
+            const double shape_mass = md.mass;
+            b.mass = b.mass_override.value_or(parts.empty() ? 1.0 : shape_mass);
+            // With the mass overridden, keep the shapes' distribution: scale I with the mass.
+            double inertia = md.inertia;
+            if (b.mass_override && shape_mass > 0.0)
+                inertia *= b.mass / shape_mass;
+            b.inertia = b.inertia_override.value_or(inertia);
+            b.inv_mass = 1.0 / b.mass;
+            b.inv_inertia = (b.fixed_rotation || !(b.inertia > 0.0)) ? 0.0 : 1.0 / b.inertia;
+        }
+        b.center = transform_point(b.xf, b.local_center);
+    }
+
+    void destroy_contact(std::uint32_t i) {
+        Contact& c = contacts[i];
+        if (c.touching) {
+            end_events.push_back({shape_id(c.shape_a), shape_id(c.shape_b),
+                                  body_id(shapes[c.shape_a].body),
+                                  body_id(shapes[c.shape_b].body)});
+        }
+        contact_index.erase(Contact::key(c.shape_a, c.shape_b));
+        const std::uint32_t last = std::uint32_t(contacts.size() - 1);
+        if (i != last) {
+            contacts[i] = contacts[last];
+            contact_index[Contact::key(contacts[i].shape_a, contacts[i].shape_b)] = i;
+        }
+        contacts.pop_back();
+    }
+
+    void destroy_contacts_of_shape(std::uint32_t s) {
+        for (std::uint32_t i = std::uint32_t(contacts.size()); i-- > 0;) {
+            if (contacts[i].shape_a == s || contacts[i].shape_b == s)
+                destroy_contact(i);
+        }
+    }
+
+    bool should_collide(std::uint32_t sa, std::uint32_t sb) const {
+        const Body& a = bodies[shapes[sa].body];
+        const Body& b = bodies[shapes[sb].body];
+        if (shapes[sa].body == shapes[sb].body)
+            return false;
+        return a.type == BodyType::dynamic || b.type == BodyType::dynamic;
+    }
+
+    void find_new_contacts() {
+        new_pairs.clear();
+        broad_phase.update_pairs(new_pairs);
+        for (auto [ua, ub] : new_pairs) {
+            const std::uint32_t sa = std::min(ua, ub), sb = std::max(ua, ub);
+            if (!should_collide(sa, sb))
+                continue;
+            const std::uint64_t key = Contact::key(sa, sb);
+            if (contact_index.contains(key))
+                continue;
+            Contact c;
+            c.shape_a = sa;
+            c.shape_b = sb;
+            contact_index.emplace(key, std::uint32_t(contacts.size()));
+            contacts.push_back(c);
+        }
+    }
+
+    /// Narrow phase for every contact; contacts whose fat boxes separated are destroyed.
+    void update_contacts() {
+        doomed.clear();
+        for (std::uint32_t i = 0; i < contacts.size(); ++i) {
+            Contact& c = contacts[i];
+            const Shape& sa = shapes[c.shape_a];
+            const Shape& sb = shapes[c.shape_b];
+            if (!overlaps(broad_phase.fat_aabb(sa.proxy), broad_phase.fat_aabb(sb.proxy))) {
+                doomed.push_back(i);
+                continue;
+            }
+            const Body& ba = bodies[sa.body];
+            const Body& bb = bodies[sb.body];
+            const CollideInput in{ba.xf, ba.center, bb.xf, bb.center, def.speculative_distance};
+            const Manifold old = c.manifold;
+            const double old_n[2] = {c.normal_impulse[0], c.normal_impulse[1]};
+            const double old_t[2] = {c.tangent_impulse[0], c.tangent_impulse[1]};
+            c.manifold = collide(sa.geometry, sb.geometry, in);
+            // Warm starting: a point keeps its impulses when the same features touch again.
+            for (int j = 0; j < c.manifold.count; ++j) {
+                c.normal_impulse[j] = c.tangent_impulse[j] = 0.0;
+                for (int k = 0; k < old.count; ++k) {
+                    if (old.points[k].id.key() == c.manifold.points[j].id.key()) {
+                        c.normal_impulse[j] = old_n[k];
+                        c.tangent_impulse[j] = old_t[k];
+                    }
+                }
+            }
+            const bool was = c.touching;
+            c.touching = c.manifold.count > 0;
+            if (c.touching != was) {
+                (c.touching ? begin_events : end_events)
+                    .push_back({shape_id(c.shape_a), shape_id(c.shape_b), body_id(sa.body),
+                                body_id(sb.body)});
+            }
+        }
+        // Descending, so swap-removal never moves a contact that is still to be removed.
+        for (auto it = doomed.rbegin(); it != doomed.rend(); ++it)
+            destroy_contact(*it);
+    }
+
+    void solve(double dt) {
+        const int n = def.substeps;
+        const double h = dt / n;
+        // Solver body 0 is the shared immovable body standing in for every static body.
+        solver_bodies.assign(1, SolverBody{});
+        accelerations.assign(1, Vec2d{});
+        angular_accelerations.assign(1, 0.0);
+        for (std::uint32_t i = 0; i < bodies.size(); ++i) {
+            Body& b = bodies[i];
+            if (!b.alive || b.type == BodyType::static_body) {
+                b.solver_index = 0;
+                continue;
+            }
+            b.solver_index = std::uint32_t(solver_bodies.size());
+            solver_bodies.push_back({b.v, b.w, b.inv_mass, b.inv_inertia, {}, 0.0});
+            Vec2d a{};
+            double alpha = 0.0;
+            if (b.type == BodyType::dynamic) {
+                const Vec2d f = b.force + b.force_once + loads[i].force;
+                const double tau = b.torque + b.torque_once + loads[i].torque;
+                a = bridge::acceleration(b.gravity_scale * def.gravity, f, b.mass);
+                alpha = b.inv_inertia > 0.0 ? bridge::angular_acceleration(tau, b.inertia) : 0.0;
+            }
+            accelerations.push_back(a);
+            angular_accelerations.push_back(alpha);
+        }
+
+        constraints.clear();
+        for (std::uint32_t i = 0; i < contacts.size(); ++i) {
+            const Contact& c = contacts[i];
+            if (c.manifold.count == 0)
+                continue;
+            const Shape& sa = shapes[c.shape_a];
+            const Shape& sb = shapes[c.shape_b];
+            ContactConstraint cc;
+            cc.body_a = bodies[sa.body].solver_index;
+            cc.body_b = bodies[sb.body].solver_index;
+            cc.contact = i;
+            cc.normal = c.manifold.normal;
+            // Combination rules (docs/design.md): friction geometric mean, restitution max.
+            cc.friction = std::sqrt(sa.material.friction * sb.material.friction);
+            cc.restitution = std::max(sa.material.restitution, sb.material.restitution);
+            cc.count = c.manifold.count;
+            for (int j = 0; j < cc.count; ++j) {
+                const ManifoldPoint& mp = c.manifold.points[j];
+                ContactConstraintPoint& cp = cc.points[j];
+                cp.r_a = mp.anchor_a;
+                cp.r_b = mp.anchor_b;
+                cp.base_separation = mp.separation;
+                cp.normal_impulse = c.normal_impulse[j];
+                cp.tangent_impulse = c.tangent_impulse[j];
+            }
+            constraints.push_back(cc);
+        }
+        prepare_contacts(constraints, solver_bodies);
+
+        ContactSolverSettings st;
+        st.inv_h = 1.0 / h;
+        // The contact spring is kept below a quarter of the substep rate to stay stable.
+        st.softness =
+            make_softness(std::min(def.contact_hertz, 0.25 * n / dt), def.contact_damping_ratio, h);
+        st.linear_slop = def.linear_slop;
+        st.push_max_velocity = def.contact_push_max_velocity;
+        st.restitution_threshold = def.restitution_threshold;
+
+        const std::size_t nb = solver_bodies.size();
+        for (int sub = 0; sub < n; ++sub) {
+            // IM1/IM2, velocity half of the semi-implicit Euler step (DD4, DD7).
+            for (std::size_t k = 1; k < nb; ++k) {
+                SolverBody& sb = solver_bodies[k];
+                sb.v += bridge::velocity_change(accelerations[k], h);
+                sb.w += bridge::angular_velocity_change(angular_accelerations[k], h);
+            }
+            warm_start_contacts(constraints, solver_bodies);
+            solve_contacts(constraints, solver_bodies, st, true);
+            // IM1/IM2, position half with the new velocities (DD3, DD6).
+            for (std::size_t k = 1; k < nb; ++k) {
+                SolverBody& sb = solver_bodies[k];
+                sb.dp += bridge::displacement(sb.v, h);
+                sb.dq += bridge::rotation(sb.w, h);
+            }
+            solve_contacts(constraints, solver_bodies, st, false);
+        }
+        apply_restitution(constraints, solver_bodies, st);
+
+        for (const ContactConstraint& cc : constraints) {
+            Contact& c = contacts[cc.contact];
+            for (int j = 0; j < cc.count; ++j) {
+                c.normal_impulse[j] = cc.points[j].normal_impulse;
+                c.tangent_impulse[j] = cc.points[j].tangent_impulse;
+                c.total_normal_impulse[j] = cc.points[j].total_normal_impulse;
+                c.total_tangent_impulse[j] = cc.points[j].total_tangent_impulse;
+            }
+        }
+
+        for (Body& b : bodies) {
+            if (!b.alive || b.type == BodyType::static_body)
+                continue;
+            const SolverBody& sb = solver_bodies[b.solver_index];
+            b.v = sb.v;
+            b.w = sb.w;
+            b.center += sb.dp;
+            b.angle += sb.dq;
+            b.xf.q = Rot::from_angle(b.angle);
+            b.xf.p = b.center - rotate(b.xf.q, b.local_center);
+            b.force_once = {};
+            b.torque_once = 0.0;
+            for (std::uint32_t s : b.shapes)
+                broad_phase.move_proxy(shapes[s].proxy, shape_box(shapes[s]));
+        }
+    }
+
+    void build_infos() {
+        infos.clear();
+        for (const Contact& c : contacts) {
+            if (!c.touching)
+                continue;
+            ContactInfo ci;
+            ci.shape_a = shape_id(c.shape_a);
+            ci.shape_b = shape_id(c.shape_b);
+            ci.body_a = body_id(shapes[c.shape_a].body);
+            ci.body_b = body_id(shapes[c.shape_b].body);
+            ci.normal = c.manifold.normal;
+            ci.point_count = c.manifold.count;
+            for (int j = 0; j < c.manifold.count; ++j) {
+                ci.points[j] = {c.manifold.points[j].point, c.manifold.points[j].separation,
+                                c.total_normal_impulse[j], c.total_tangent_impulse[j]};
+            }
+            infos.push_back(ci);
+        }
+    }
+};
+
+World::World(const WorldDef& def) {
+    validate(def);
+    impl_ = std::make_unique<Impl>(def);
+}
+World::~World() = default;
+World::World(World&&) noexcept = default;
+World& World::operator=(World&&) noexcept = default;
+
+BodyId World::create_body(const BodyDef& def) {
+    validate(def);
+    Impl& w = *impl_;
+    std::uint32_t i;
+    if (!w.free_bodies.empty()) {
+        i = w.free_bodies.back();
+        w.free_bodies.pop_back();
+    } else {
+        i = std::uint32_t(w.bodies.size());
+        w.bodies.emplace_back();
+    }
+    Body& b = w.bodies[i];
+    const std::uint32_t generation = b.generation + 1;
+    b = Body{};
+    b.generation = generation;
+    b.alive = true;
+    b.type = def.type;
+    b.name = def.name;
+    b.angle = def.angle;
+    b.xf = {def.position, Rot::from_angle(def.angle)};
+    b.v = def.type == BodyType::static_body ? Vec2d{} : def.linear_velocity;
+    b.w = def.type == BodyType::static_body ? 0.0 : def.angular_velocity;
+    b.force = def.force;
+    b.torque = def.torque;
+    b.load = def.load;
+    b.mass_override = def.mass;
+    b.inertia_override = def.inertia;
+    b.gravity_scale = def.gravity_scale;
+    b.fixed_rotation = def.fixed_rotation;
+    w.update_mass(b);
+    return {i, generation};
+}
+
+void World::destroy_body(BodyId id) {
+    Impl& w = *impl_;
+    Body& b = w.body(id);
+    for (std::uint32_t s : b.shapes) {
+        w.destroy_contacts_of_shape(s);
+        w.broad_phase.destroy_proxy(w.shapes[s].proxy);
+        w.shapes[s].alive = false;
+        w.free_shapes.push_back(s);
+    }
+    b.shapes.clear();
+    b.alive = false;
+    b.load = nullptr;
+    w.free_bodies.push_back(id.index);
+}
+
+ShapeId World::create_shape(BodyId body_id, const ShapeDef& def) {
+    Impl& w = *impl_;
+    w.body(body_id); // handle check before validation: both leave the world unchanged
+    validate(def);
+    std::uint32_t i;
+    if (!w.free_shapes.empty()) {
+        i = w.free_shapes.back();
+        w.free_shapes.pop_back();
+    } else {
+        i = std::uint32_t(w.shapes.size());
+        w.shapes.emplace_back();
+    }
+    Shape& s = w.shapes[i];
+    s.generation += 1;
+    s.alive = true;
+    s.body = body_id.index;
+    s.geometry = def.geometry;
+    s.material = def.material;
+    Body& b = w.bodies[body_id.index];
+    b.shapes.push_back(i);
+    s.proxy = w.broad_phase.create_proxy(w.shape_box(s), i, b.type == BodyType::static_body);
+    w.update_mass(b);
+    return {i, s.generation};
+}
+
+void World::destroy_shape(ShapeId id) {
+    Impl& w = *impl_;
+    Shape& s = w.shape(id);
+    w.destroy_contacts_of_shape(id.index);
+    w.broad_phase.destroy_proxy(s.proxy);
+    s.alive = false;
+    Body& b = w.bodies[s.body];
+    b.shapes.erase(std::find(b.shapes.begin(), b.shapes.end(), id.index));
+    w.free_shapes.push_back(id.index);
+    w.update_mass(b);
+}
+
+bool World::is_valid(BodyId id) const {
+    return id.index < impl_->bodies.size() && impl_->bodies[id.index].alive &&
+           impl_->bodies[id.index].generation == id.generation;
+}
+bool World::is_valid(ShapeId id) const {
+    return id.index < impl_->shapes.size() && impl_->shapes[id.index].alive &&
+           impl_->shapes[id.index].generation == id.generation;
+}
+
+std::vector<BodyId> World::bodies() const {
+    std::vector<BodyId> out;
+    for (std::uint32_t i = 0; i < impl_->bodies.size(); ++i) {
+        if (impl_->bodies[i].alive)
+            out.push_back(impl_->body_id(i));
+    }
+    return out;
+}
+
+std::vector<ShapeId> World::shapes(BodyId id) const {
+    std::vector<ShapeId> out;
+    for (std::uint32_t s : impl_->body(id).shapes)
+        out.push_back(impl_->shape_id(s));
+    return out;
+}
+
+std::size_t World::body_count() const {
+    return impl_->bodies.size() - impl_->free_bodies.size();
+}
+
+void World::step(double dt) {
+    validate_time_step(dt);
+    Impl& w = *impl_;
+    // Evaluate the time-varying loads first: a user function returning NaN is rejected
+    // before anything has changed.
+    w.loads.assign(w.bodies.size(), Load{});
+    for (std::uint32_t i = 0; i < w.bodies.size(); ++i) {
+        Body& b = w.bodies[i];
+        if (!b.alive || !b.load || b.type != BodyType::dynamic)
+            continue;
+        const Load l = b.load(w.time);
+        require_finite("load(t).force", l.force);
+        require_finite("load(t).torque", l.torque);
+        w.loads[i] = l;
+    }
+    w.begin_events.clear();
+    w.end_events.clear();
+    w.find_new_contacts();
+    w.update_contacts();
+    w.solve(dt);
+    w.time += dt;
+    w.build_infos();
+}
+
+double World::time() const {
+    return impl_->time;
+}
+void World::set_gravity(Vec2d g) {
+    require_finite("gravity", g);
+    impl_->def.gravity = g;
+}
+Vec2d World::gravity() const {
+    return impl_->def.gravity;
+}
+const WorldDef& World::settings() const {
+    return impl_->def;
+}
+
+BodyState World::state(BodyId id) const {
+    const Body& b = impl_->body(id);
+    return {b.center, b.v, u::wrap_orientation(b.angle), b.w};
+}
+Vec2d World::position(BodyId id) const {
+    return impl_->body(id).center;
+}
+Vec2d World::origin(BodyId id) const {
+    return impl_->body(id).xf.p;
+}
+double World::orientation(BodyId id) const {
+    return u::wrap_orientation(impl_->body(id).angle);
+}
+Vec2d World::velocity(BodyId id) const {
+    return impl_->body(id).v;
+}
+double World::angular_velocity(BodyId id) const {
+    return impl_->body(id).w;
+}
+double World::mass(BodyId id) const {
+    return impl_->body(id).mass;
+}
+double World::inertia(BodyId id) const {
+    return impl_->body(id).inertia;
+}
+Vec2d World::local_center(BodyId id) const {
+    return impl_->body(id).local_center;
+}
+BodyType World::type(BodyId id) const {
+    return impl_->body(id).type;
+}
+const std::string& World::name(BodyId id) const {
+    return impl_->body(id).name;
+}
+
+void World::set_transform(BodyId id, Vec2d origin, double angle) {
+    Body& b = impl_->body(id);
+    require_finite("origin", origin);
+    require_finite("angle", angle);
+    b.angle = angle;
+    b.xf = {origin, Rot::from_angle(angle)};
+    b.center = transform_point(b.xf, b.local_center);
+    for (std::uint32_t s : b.shapes) {
+        impl_->broad_phase.move_proxy(impl_->shapes[s].proxy, impl_->shape_box(impl_->shapes[s]));
+    }
+}
+void World::set_velocity(BodyId id, Vec2d v) {
+    Body& b = impl_->body(id);
+    require_finite("velocity", v);
+    if (b.type != BodyType::static_body)
+        b.v = v;
+}
+void World::set_angular_velocity(BodyId id, double omega) {
+    Body& b = impl_->body(id);
+    require_finite("angular_velocity", omega);
+    if (b.type != BodyType::static_body)
+        b.w = omega;
+}
+void World::set_force(BodyId id, Vec2d force) {
+    Body& b = impl_->body(id);
+    require_finite("force", force);
+    b.force = force;
+}
+void World::set_torque(BodyId id, double torque) {
+    Body& b = impl_->body(id);
+    require_finite("torque", torque);
+    b.torque = torque;
+}
+void World::apply_force(BodyId id, Vec2d force, Vec2d world_point) {
+    Body& b = impl_->body(id);
+    require_finite("force", force);
+    require_finite("world_point", world_point);
+    b.force_once += force;
+    b.torque_once += model::dd13::torque(bridge::typed<u::Length>(world_point - b.center),
+                                         bridge::typed<u::Force>(force))
+                         .value();
+}
+void World::apply_torque(BodyId id, double torque) {
+    Body& b = impl_->body(id);
+    require_finite("torque", torque);
+    b.torque_once += torque;
+}
+void World::apply_impulse(BodyId id, Vec2d impulse, Vec2d world_point) {
+    Body& b = impl_->body(id);
+    require_finite("impulse", impulse);
+    require_finite("world_point", world_point);
+    if (b.type != BodyType::dynamic)
+        return;
+    const double magnitude = length(impulse);
+    if (magnitude == 0.0)
+        return;
+    // IM3's impulse application (DD10 for v, r x J / I for omega), against an immovable body.
+    SolverBody ground{};
+    SolverBody self{b.v, b.w, b.inv_mass, b.inv_inertia, {}, 0.0};
+    bridge::apply_impulse(ground, self, {}, world_point - b.center, impulse / magnitude, magnitude);
+    b.v = self.v;
+    b.w = self.w;
+}
+void World::set_load(BodyId id, LoadFunction load) {
+    impl_->body(id).load = std::move(load);
+}
+
+double World::kinetic_energy() const {
+    double e = 0.0;
+    for (const Body& b : impl_->bodies) {
+        if (!b.alive || b.type != BodyType::dynamic)
+            continue;
+        const double inertia = b.inv_inertia > 0.0 ? b.inertia : 0.0;
+        e += model::dd15::kinetic_energy(
+                 u::from_value<u::Mass>(b.mass), bridge::typed<u::Velocity>(b.v),
+                 u::from_value<u::MomentOfInertia>(inertia), u::from_value<u::AngularVelocity>(b.w))
+                 .value();
+    }
+    return e;
+}
+double World::potential_energy() const {
+    double e = 0.0;
+    for (const Body& b : impl_->bodies) {
+        if (!b.alive || b.type != BodyType::dynamic)
+            continue;
+        e += model::dd16::potential_energy(
+                 u::from_value<u::Mass>(b.mass),
+                 bridge::typed<u::Acceleration>(b.gravity_scale * impl_->def.gravity),
+                 bridge::typed<u::Length>(b.center))
+                 .value();
+    }
+    return e;
+}
+Vec2d World::linear_momentum() const {
+    std::vector<model::gd1::MassVelocity> mv;
+    for (const Body& b : impl_->bodies) {
+        if (!b.alive || b.type != BodyType::dynamic)
+            continue;
+        mv.push_back({u::from_value<u::Mass>(b.mass), bridge::typed<u::Velocity>(b.v)});
+    }
+    return bridge::plain(model::gd1::total_momentum(mv));
+}
+
+std::span<const ContactInfo> World::contacts() const {
+    return impl_->infos;
+}
+std::span<const ContactEvent> World::contact_begin_events() const {
+    return impl_->begin_events;
+}
+std::span<const ContactEvent> World::contact_end_events() const {
+    return impl_->end_events;
+}
+
+std::vector<ShapeId> World::query_aabb(const Aabb& box) const {
+    std::vector<ShapeId> out;
+    impl_->broad_phase.query(box, [&](int proxy) {
+        const std::uint32_t s = impl_->broad_phase.user_data(proxy);
+        if (overlaps(impl_->shape_box(impl_->shapes[s]), box))
+            out.push_back(impl_->shape_id(s));
+        return true;
+    });
+    std::sort(out.begin(), out.end(), [](ShapeId a, ShapeId b) { return a.index < b.index; });
+    return out;
+}
+
+std::vector<ShapeId> World::query_point(Vec2d p) const {
+    std::vector<ShapeId> out;
+    const Aabb box{p.x, p.y, p.x, p.y};
+    impl_->broad_phase.query(box, [&](int proxy) {
+        const std::uint32_t s = impl_->broad_phase.user_data(proxy);
+        const Shape& sh = impl_->shapes[s];
+        if (test_point(sh.geometry, impl_->bodies[sh.body].xf, p))
+            out.push_back(impl_->shape_id(s));
+        return true;
+    });
+    std::sort(out.begin(), out.end(), [](ShapeId a, ShapeId b) { return a.index < b.index; });
+    return out;
+}
+
+std::optional<RayCastHit> World::ray_cast(Vec2d origin, Vec2d translation) const {
+    require_finite("origin", origin);
+    require_finite("translation", translation);
+    const Vec2d end = origin + translation;
+    const Aabb box{std::min(origin.x, end.x), std::min(origin.y, end.y), std::max(origin.x, end.x),
+                   std::max(origin.y, end.y)};
+    std::optional<RayCastHit> best;
+    impl_->broad_phase.query(inflated(box, 1e-9), [&](int proxy) {
+        const std::uint32_t s = impl_->broad_phase.user_data(proxy);
+        const Shape& sh = impl_->shapes[s];
+        const auto hit =
+            tamias2d::ray_cast(sh.geometry, impl_->bodies[sh.body].xf, origin, translation);
+        if (hit && (!best || hit->fraction < best->fraction ||
+                    (hit->fraction == best->fraction && s < best->shape.index))) {
+            best = RayCastHit{impl_->shape_id(s), impl_->body_id(sh.body), hit->point, hit->normal,
+                              hit->fraction};
+        }
+        return true;
+    });
+    return best;
+}
+
+namespace {
+struct Hasher {
+    std::uint64_t h = 1469598103934665603ull;
+    void bytes(const void* p, std::size_t n) {
+        const auto* c = static_cast<const unsigned char*>(p);
+        for (std::size_t i = 0; i < n; ++i) {
+            h ^= c[i];
+            h *= 1099511628211ull;
+        }
+    }
+    void operator()(double v) { bytes(&v, sizeof v); }
+    void operator()(Vec2d v) {
+        (*this)(v.x);
+        (*this)(v.y);
+    }
+    void operator()(std::uint64_t v) { bytes(&v, sizeof v); }
+};
+} // namespace
+
+std::uint64_t World::state_hash() const {
+    const Impl& w = *impl_;
+    Hasher hs;
+    hs(w.time);
+    hs(w.def.gravity);
+    hs(std::uint64_t(w.bodies.size()));
+    for (const Body& b : w.bodies) {
+        hs(std::uint64_t(b.generation) << 8 | std::uint64_t(b.alive) << 4 | std::uint64_t(b.type));
+        if (!b.alive)
+            continue;
+        hs(b.xf.p);
+        hs(b.xf.q.c);
+        hs(b.xf.q.s);
+        hs(b.angle);
+        hs(b.center);
+        hs(b.local_center);
+        hs(b.v);
+        hs(b.w);
+        hs(b.force);
+        hs(b.torque);
+        hs(b.force_once);
+        hs(b.torque_once);
+        hs(b.mass);
+        hs(b.inertia);
+        hs(b.inv_mass);
+        hs(b.inv_inertia);
+        hs(b.gravity_scale);
+        hs(std::uint64_t(b.fixed_rotation) << 1 | std::uint64_t(bool(b.load)));
+        hs.bytes(b.name.data(), b.name.size());
+        for (std::uint32_t s : b.shapes)
+            hs(std::uint64_t(s));
+    }
+    hs(std::uint64_t(w.shapes.size()));
+    for (const Shape& s : w.shapes) {
+        hs(std::uint64_t(s.generation) << 1 | std::uint64_t(s.alive));
+        if (!s.alive)
+            continue;
+        hs(std::uint64_t(s.body));
+        hs(std::uint64_t(s.geometry.type));
+        hs(s.geometry.circle.center);
+        hs(s.geometry.circle.radius);
+        hs(std::uint64_t(s.geometry.polygon.count));
+        for (int k = 0; k < s.geometry.polygon.count; ++k)
+            hs(s.geometry.polygon.vertices[std::size_t(k)]);
+        hs(s.material.density);
+        hs(s.material.restitution);
+        hs(s.material.friction);
+    }
+    hs(std::uint64_t(w.contacts.size()));
+    for (const Contact& c : w.contacts) {
+        hs(std::uint64_t(c.shape_a) << 32 | c.shape_b);
+        hs(std::uint64_t(c.manifold.count));
+        for (int j = 0; j < c.manifold.count; ++j) {
+            hs(c.manifold.points[j].point);
+            hs(c.manifold.points[j].separation);
+            hs(c.normal_impulse[j]);
+            hs(c.tangent_impulse[j]);
+        }
+    }
+    return hs.h;
+}
+
+} // namespace tamias2d

@@ -1,0 +1,172 @@
+// R5, R6 (IM1, IM2): motion under no load, constant force and constant torque, over the whole
+// history, against closed forms.
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+
+#include "tamias2d/units/angle.hpp"
+#include "tamias2d/world.hpp"
+
+namespace utf = boost::unit_test;
+using namespace tamias2d;
+
+namespace {
+
+/// A 2 x 1 box of density 1.5: m = 3 kg, I = m (w^2 + h^2) / 12 = 1.25 kg m^2.
+BodyId make_box_body(World& world, BodyDef def) {
+    const BodyId b = world.create_body(def);
+    world.create_shape(b, box_shape(2.0, 1.0, Material{1.5, 0.0, 0.0}));
+    return b;
+}
+
+double rel_err(double got, double want) {
+    return std::abs(got - want) / std::max(1.0, std::abs(want));
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(motion)
+
+// Oracle: closed form p(t) = p0 + v0 t, phi(t) = phi0 + omega0 t (no force: IM1, IM2 with
+// a = alpha = 0 are solved exactly by any consistent scheme).
+BOOST_AUTO_TEST_CASE(free_flight_is_exact,
+                     *utf::label("R5") * utf::label("R6") * utf::label("IM1") * utf::label("IM2")) {
+    World world(WorldDef{.gravity = {0.0, 0.0}});
+    BodyDef def;
+    def.position = {1.0, -2.0};
+    def.linear_velocity = {3.0, -0.5};
+    def.angular_velocity = -0.7;
+    def.angle = 0.3;
+    const BodyId b = make_box_body(world, def);
+    const double dt = 1.0 / 60.0;
+    for (int n = 1; n <= 600; ++n) {
+        world.step(dt);
+        const double t = n * dt;
+        const BodyState s = world.state(b);
+        BOOST_TEST(rel_err(s.position.x, 1.0 + 3.0 * t) < 1e-12);
+        BOOST_TEST(rel_err(s.position.y, -2.0 - 0.5 * t) < 1e-12);
+        BOOST_TEST(s.velocity.x == 3.0);
+        BOOST_TEST(s.velocity.y == -0.5);
+        BOOST_TEST(rel_err(s.orientation, units::wrap_orientation(0.3 - 0.7 * t)) < 1e-12);
+        BOOST_TEST(s.angular_velocity == -0.7);
+    }
+}
+
+// Oracle: closed forms of IM1 with constant a = g + F/m: v(t) = v0 + a t (the scheme is exact in
+// v), and the semi-implicit Euler scheme's exact discrete solution
+// p_n = p0 + v0 t + a t^2 / 2 + a h t / 2 (h = substep), i.e. the continuous
+// p(t) = p0 + v0 t + a t^2 / 2 with its known first-order error a h t / 2.
+BOOST_AUTO_TEST_CASE(constant_force_history,
+                     *utf::label("R5") * utf::label("IM1") * utf::label("GD2") * utf::label("T1")) {
+    const Vec2d g{0.0, -9.81};
+    World world(WorldDef{.gravity = g});
+    BodyDef def;
+    def.position = {0.0, 100.0};
+    def.linear_velocity = {-2.0, 4.0};
+    def.force = {6.0, 1.5}; // N, on m = 3 kg: a = g + (2, 0.5)
+    const BodyId b = make_box_body(world, def);
+    BOOST_TEST(world.mass(b) == 3.0);
+    const Vec2d a{g.x + 2.0, g.y + 0.5};
+    const double dt = 1.0 / 60.0;
+    const double h = dt / world.settings().substeps;
+    for (int n = 1; n <= 300; ++n) {
+        world.step(dt);
+        const double t = n * dt;
+        const BodyState s = world.state(b);
+        BOOST_TEST(rel_err(s.velocity.x, -2.0 + a.x * t) < 1e-12);
+        BOOST_TEST(rel_err(s.velocity.y, 4.0 + a.y * t) < 1e-12);
+        BOOST_TEST(rel_err(s.position.x, -2.0 * t + 0.5 * a.x * t * t + 0.5 * a.x * h * t) < 1e-12);
+        BOOST_TEST(rel_err(s.position.y, 100.0 + 4.0 * t + 0.5 * a.y * t * t + 0.5 * a.y * h * t) <
+                   1e-12);
+        // First-order convergence to the continuous solution: the error is a h t / 2.
+        BOOST_TEST(std::abs(s.position.y - (100.0 + 4.0 * t + 0.5 * a.y * t * t)) <=
+                   0.5 * std::abs(a.y) * h * t * (1.0 + 1e-9));
+    }
+}
+
+// Oracle: closed form of IM2 with constant alpha = tau / I (T4): omega(t) = omega0 + alpha t,
+// phi_n = phi0 + omega0 t + alpha t^2 / 2 + alpha h t / 2 (semi-implicit Euler, exact discrete
+// solution), wrapped to [0, 2 pi) (SRS Table 2).
+BOOST_AUTO_TEST_CASE(constant_torque_history, *utf::label("R6") * utf::label("IM2") *
+                                                  utf::label("T4") * utf::label("DCO_phi")) {
+    World world(WorldDef{.gravity = {0.0, 0.0}});
+    BodyDef def;
+    def.angular_velocity = 0.5;
+    def.torque = -2.5; // N m on I = 1.25 kg m^2: alpha = -2 rad s^-2
+    const BodyId b = make_box_body(world, def);
+    BOOST_TEST(std::abs(world.inertia(b) - 1.25) < 1e-14);
+    const double alpha = -2.5 / world.inertia(b);
+    const double dt = 1.0 / 60.0;
+    const double h = dt / world.settings().substeps;
+    for (int n = 1; n <= 300; ++n) {
+        world.step(dt);
+        const double t = n * dt;
+        const BodyState s = world.state(b);
+        BOOST_TEST(rel_err(s.angular_velocity, 0.5 + alpha * t) < 1e-12);
+        const double phi = 0.5 * t + 0.5 * alpha * t * t + 0.5 * alpha * h * t;
+        BOOST_TEST(std::abs(s.orientation - units::wrap_orientation(phi)) < 1e-11);
+        BOOST_TEST(s.orientation >= 0.0);
+        BOOST_TEST(s.orientation < 2.0 * M_PI);
+        // The centre of mass does not move under a pure torque.
+        BOOST_TEST(s.position.x == 0.0);
+        BOOST_TEST(s.position.y == 0.0);
+    }
+}
+
+// Oracle: DD13 by hand. A force F = (0, 2) N at the world point (1, 0) m from the centre gives
+// tau = r x F = 1 * 2 = 2 N m, so after one step of dt: omega = alpha dt = (2 / I) dt and
+// v = (F / m) dt.
+BOOST_AUTO_TEST_CASE(force_at_point_gives_torque, *utf::label("R2") * utf::label("DD13")) {
+    World world(WorldDef{.gravity = {0.0, 0.0}});
+    const BodyId b = make_box_body(world, {});
+    world.apply_force(b, {0.0, 2.0}, {1.0, 0.0});
+    const double dt = 0.1;
+    world.step(dt);
+    BOOST_TEST(rel_err(world.angular_velocity(b), 2.0 / 1.25 * dt) < 1e-14);
+    BOOST_TEST(rel_err(world.velocity(b).y, 2.0 / 3.0 * dt) < 1e-14);
+    // One-step forces do not persist.
+    world.step(dt);
+    BOOST_TEST(rel_err(world.angular_velocity(b), 2.0 / 1.25 * dt) < 1e-14);
+}
+
+// Oracle: DD10 J = m dv and r x J = I d omega by hand: J = (0, 3) N s at (0.5, 0) m from the
+// centre on m = 3 kg, I = 1.25 kg m^2: dv = (0, 1) m/s, d omega = 1.5 / 1.25 rad/s.
+BOOST_AUTO_TEST_CASE(impulse_at_point, *utf::label("R2") * utf::label("DD10")) {
+    World world(WorldDef{.gravity = {0.0, 0.0}});
+    const BodyId b = make_box_body(world, {});
+    world.apply_impulse(b, {0.0, 3.0}, {0.5, 0.0});
+    BOOST_TEST(rel_err(world.velocity(b).y, 1.0) < 1e-15);
+    BOOST_TEST(world.velocity(b).x == 0.0);
+    BOOST_TEST(rel_err(world.angular_velocity(b), 1.5 / 1.25) < 1e-14);
+}
+
+// Oracle: closed form for a load F(t) = (A sin(w t), 0) held constant over each step (the
+// callback is sampled at step starts): v_n = sum_k A sin(w t_k) dt / m, exact for the scheme.
+BOOST_AUTO_TEST_CASE(time_varying_load_is_sampled_per_step, *utf::label("R2") * utf::label("IM1")) {
+    World world(WorldDef{.gravity = {0.0, 0.0}});
+    BodyDef def;
+    def.load = [](double t) { return Load{{4.0 * std::sin(3.0 * t), 0.0}, 0.0}; };
+    const BodyId b = make_box_body(world, def);
+    const double dt = 0.01;
+    double v = 0.0;
+    for (int n = 0; n < 200; ++n) {
+        v += 4.0 * std::sin(3.0 * (n * dt)) / 3.0 * dt;
+        world.step(dt);
+        BOOST_TEST(std::abs(world.velocity(b).x - v) < 1e-13);
+    }
+}
+
+// Oracle: DD1 and the parallel-axis theorem (DD14) by hand: two unit squares of density 1 at
+// x = -1 and x = +2 (masses 1, 1): centre x = 0.5, I = 2 (1/6) + 1 (1.5^2) + 1 (1.5^2) = 4.8333.
+BOOST_AUTO_TEST_CASE(compound_body_mass_properties,
+                     *utf::label("R2") * utf::label("DD1") * utf::label("DD14")) {
+    World world(WorldDef{});
+    const BodyId b = world.create_body({});
+    world.create_shape(b, box_shape(1.0, 1.0, Material{}, {-1.0, 0.0}));
+    world.create_shape(b, box_shape(1.0, 1.0, Material{}, {2.0, 0.0}));
+    BOOST_TEST(world.mass(b) == 2.0);
+    BOOST_TEST(std::abs(world.local_center(b).x - 0.5) < 1e-15);
+    BOOST_TEST(std::abs(world.inertia(b) - (2.0 / 6.0 + 2.0 * 2.25)) < 1e-13);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
