@@ -124,7 +124,7 @@ BOOST_AUTO_TEST_CASE(impulse_restores_restitution_law, *utf::label("DD8") * utf:
 // Oracle: textbook properties of the two-contact effective-mass matrix [[K11, K12], [K12, K22]]:
 // it is symmetric (K12 = K21, exact: same products in another order), its diagonal is DD8's own
 // denominator at each point, and it is positive semi-definite (K12^2 <= K11 K22, Cauchy-Schwarz).
-// Hand value: m_A = 1, I_A = 1, m_B = 2, I_B = 4, n = (1, 0), r_A1 = (0, 1), r_A2 = (0, -1),
+// Hand value with m_A = 1, I_A = 1, m_B = 2, I_B = 4, n = (1, 0), r_A1 = (0, 1), r_A2 = (0, -1),
 // r_B1 = (0, 2), r_B2 = (0, -2): r x n = -r_y, so K12 = 1 + 0.5 + (-1)(1)/1 + (-2)(2)/4 = -0.5,
 // K11 = 1 + 0.5 + 1 + 1 = 3.5.
 BOOST_AUTO_TEST_CASE(two_contact_coupling, *utf::label("DD8")) {

@@ -81,8 +81,9 @@ BOOST_AUTO_TEST_CASE(apply_impulse_hand_values, *utf::label("IM3")) {
     BOOST_TEST(B.omega.value() == 2.0);
 }
 
-// Oracle: hand derivation (DD9 + DD11). A: v = (1, 0), w = 2 rad/s, r_AP = (0, 1) -> (-1, 0);
-// B: v = (0, -1), w = -1, r_BP = (1, 0) -> (0, -2); v^AB = (-1, 2), n = (0.6, 0.8): 1 m/s.
+// Oracle: hand derivation (DD9 + DD11). Body A with v = (1, 0), w = 2 rad/s, r_AP = (0, 1)
+// gives (-1, 0); body B with v = (0, -1), w = -1, r_BP = (1, 0) gives (0, -2); so
+// v^AB = (-1, 2) and with n = (0.6, 0.8), v^AB . n = 1 m/s.
 BOOST_AUTO_TEST_CASE(normal_relative_velocity_hand_value, *utf::label("IM3")) {
     const double vn = im3::normal_relative_velocity(state(1, 0, 2), state(0, -1, -1), L2(0, 1),
                                                     L2(1, 0), im3::Normal{0.6, 0.8})
