@@ -173,4 +173,20 @@ BOOST_AUTO_TEST_CASE(linear_in_speed_and_restitution, *utf::label("DD8")) {
     BOOST_TEST(je == 2.0 * ji, tt::tolerance(1e-15));
 }
 
+// Oracle: hand derivation of the solved form j = -(v_n - v_target) m_eff (the impulse along n
+// changes v_n by j / m_eff). A 2 kg ball on a fixed wall (m_eff = 2 kg) approaching at
+// v_n = -3 m/s: stopping it (target 0) takes 6 N s; bouncing it with C_R = 0.8 (DD12 target
+// 2.4 m/s) takes -(-3 - 2.4) x 2 = 10.8 N s, DD8's closed form (1 + C_R) m |v_n| again; and
+// with v_n already at the target no impulse is needed.
+BOOST_AUTO_TEST_CASE(impulse_to_reach_target, *utf::label("DD8") * utf::label("DD12")) {
+    const Mass m_eff = 2.0 * kilogram;
+    BOOST_TEST(dd08::impulse_to_reach(-3.0 * m_s, 0.0 * m_s, m_eff).value() == 6.0);
+    BOOST_TEST(dd08::impulse_to_reach(-3.0 * m_s, 2.4 * m_s, m_eff).value() == 10.8,
+               tt::tolerance(1e-15));
+    BOOST_TEST(dd08::impulse_to_reach(-3.0 * m_s, 2.4 * m_s, m_eff).value() ==
+                   dd08::collision_impulse(0.8, -3.0 * m_s, 1.0 / m_eff).value(),
+               tt::tolerance(1e-15));
+    BOOST_TEST(dd08::impulse_to_reach(1.5 * m_s, 1.5 * m_s, m_eff).value() == 0.0);
+}
+
 BOOST_AUTO_TEST_SUITE_END()
