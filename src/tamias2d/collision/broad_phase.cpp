@@ -34,6 +34,7 @@ void BroadPhase::move_proxy(int proxy, const Aabb& tight) {
     mark_moved(proxy);
 }
 
+/// \srs{R7} candidate collisions: pairs whose fat boxes overlap by \srs{IM4}.
 void BroadPhase::update_pairs(std::vector<Pair>& out) {
     const std::size_t first = out.size();
     for (const int p : move_buffer_) {

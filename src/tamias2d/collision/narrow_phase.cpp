@@ -94,6 +94,7 @@ FeatureId make_id(bool flip, int ref_index, std::uint8_t ref_type, int inc_index
 
 } // namespace
 
+/// \srs{T5} circles collide when their centres are closer than the sum of the radii.
 Manifold collide_circles(const Circle& a, const Circle& b, const CollideInput& in) {
     Manifold m;
     const Vec2d ca = transform_point(in.xf_a, a.center);
@@ -118,6 +119,7 @@ Manifold collide_circles(const Circle& a, const Circle& b, const CollideInput& i
     return m;
 }
 
+/// \srs{T5} polygon and circle: the nearest face or vertex of the polygon.
 Manifold collide_polygon_circle(const Polygon& a, const Circle& b, const CollideInput& in) {
     Manifold m;
     // Work in A's body frame: the circle centre is one transformed point.
@@ -167,6 +169,8 @@ Manifold collide_polygon_circle(const Polygon& a, const Circle& b, const Collide
     return m;
 }
 
+/// \srs{T5} polygons by the separating axis test; \srs{A5} vertex-edge gives one point,
+/// \srs{LC1} edge-edge two.
 Manifold collide_polygons(const Polygon& a, const Polygon& b, const CollideInput& in) {
     Manifold m;
     // Work in A's frame shifted to A's centroid: B's vertices are transformed once, and the
@@ -267,6 +271,7 @@ Manifold collide_polygons(const Polygon& a, const Polygon& b, const CollideInput
     const double sep_lower = dot(lower - v11, n);
     const double sep_upper = dot(upper - v11, n);
 
+    /// \srs{A4} the normal points from A into B whichever polygon holds the reference face.
     m.normal = rotate(frame.q, flip ? -n : n);
     // Midway between the surfaces: half the separation back along the reference normal.
     if (sep_lower < in.margin) {

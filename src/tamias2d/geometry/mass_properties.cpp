@@ -31,6 +31,7 @@ Vec2d plain(units::Vec2<Length> v) {
     return {v.x.value(), v.y.value()};
 }
 
+/// \srs{DCX_density} (zero is allowed here: massless parts still need a centroid).
 void require_density(double density) {
     if (!std::isfinite(density) || density < 0.0)
         throw ValidationError("shape.density", density, "must be finite and >= 0", "DCX_density");

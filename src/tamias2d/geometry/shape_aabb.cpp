@@ -22,6 +22,7 @@ Aabb compute_aabb(const Polygon& p, const Transform& xf) {
     return box;
 }
 
+/// \srs{IM4} the axis-aligned rectangle IM4 compares, for one placed shape.
 Aabb compute_aabb(const Geometry& g, const Transform& xf) {
     return g.type == ShapeType::circle ? compute_aabb(g.circle, xf) : compute_aabb(g.polygon, xf);
 }

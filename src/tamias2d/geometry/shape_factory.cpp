@@ -48,6 +48,7 @@ Polygon finish(Polygon p) {
 
 } // namespace
 
+/// \srs{DCX_shape} \srs{DCX_finite} rectangles need w > 0, h > 0, all finite.
 Polygon make_box(double half_w, double half_h, Vec2d center, double angle) {
     require_positive(half_w, "shape.half_width");
     require_positive(half_h, "shape.half_height");
@@ -68,6 +69,7 @@ Polygon make_box(double half_w, double half_h, Vec2d center, double angle) {
     return p;
 }
 
+/// \srs{DCX_shape} convex, counter-clockwise, 3 to 8 vertices, positive area.
 Polygon make_polygon(std::span<const Vec2d> points) {
     if (points.size() < 3)
         throw ValidationError("polygon.points.size", double(points.size()), "must be >= 3",

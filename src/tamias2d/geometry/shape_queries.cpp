@@ -74,6 +74,7 @@ std::optional<RayHit> cast(const Polygon& p, Vec2d o, Vec2d d) {
 
 } // namespace
 
+/// \srs{T5} p in A, for one placed shape.
 bool test_point(const Geometry& g, const Transform& xf, Vec2d p) {
     const Vec2d local = inv_transform_point(xf, p);
     return g.type == ShapeType::circle ? contains(g.circle, local) : contains(g.polygon, local);
