@@ -210,11 +210,12 @@ BOOST_AUTO_TEST_CASE(vertex_edge_gives_one_point, *utf::label("A5") * utf::label
 // line of centres (exactly, so a head-on impulse applies no torque).
 BOOST_AUTO_TEST_CASE(head_on_points_symmetric, *utf::label("LC1") * utf::label("A4")) {
     const Geometry box = to_geometry(make_box(0.5, 0.3));
-    for (const double y : {0.0, 0.3, -12.7}) {
+    for (const double y : {0.0, 0.1, 0.3, -12.7, 1234.567}) {
         const Manifold m = collide(box, box, input(at(-3.1, y), at(-2.1 - 0.013, y), 0.05));
         BOOST_TEST_REQUIRE(m.count == 2);
         BOOST_TEST(m.points[0].point.x == m.points[1].point.x);
-        BOOST_TEST(m.points[0].point.y - y == -(m.points[1].point.y - y));
+        BOOST_TEST(m.points[0].point.y - y == -(m.points[1].point.y - y), tt::tolerance(1e-12));
+        BOOST_TEST(m.points[0].anchor_a.x == m.points[1].anchor_a.x);
         BOOST_TEST(m.points[0].anchor_a.y == -m.points[1].anchor_a.y);
         BOOST_TEST(m.points[0].anchor_b.y == -m.points[1].anchor_b.y);
         BOOST_TEST(m.points[0].separation == m.points[1].separation);

@@ -29,9 +29,12 @@ Rot inv_mul(Rot a, Rot b) {
 /// Fills a manifold point from a point in A's (shifted) local frame.
 void set_point(ManifoldPoint& mp, Vec2d local, double separation, FeatureId id,
                const Transform& frame, const CollideInput& in) {
-    mp.point = transform_point(frame, local);
-    mp.anchor_a = mp.point - in.center_a;
-    mp.anchor_b = mp.point - in.center_b;
+    // Anchors first, from the frame's offset to the centre of mass (exactly zero for a lone
+    // shape centred on its body's centre), so contacts symmetric in the frame keep exactly
+    // symmetric lever arms; the world point is derived from them.
+    mp.anchor_a = rotate(frame.q, local) + (frame.p - in.center_a);
+    mp.anchor_b = mp.anchor_a + (in.center_a - in.center_b);
+    mp.point = in.center_a + mp.anchor_a;
     mp.separation = separation;
     mp.id = id;
 }
