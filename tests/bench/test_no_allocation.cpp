@@ -1,0 +1,173 @@
+// NFR1: a world in steady state steps without touching the heap. Games step 60 times a second
+// for hours; an allocation per step costs time and fragments memory. The global operator new
+// and delete of this executable are replaced by counting versions; a small pyramid is built and
+// settled, then 100 more steps must allocate nothing.
+#include <boost/test/unit_test.hpp>
+
+#include <atomic>
+#include <cstddef>
+#include <cstdlib>
+#include <new>
+
+#include "tamias2d/world.hpp"
+
+namespace {
+
+std::atomic<bool> counting{false};
+std::atomic<std::size_t> allocations{0};
+std::atomic<std::size_t> deallocations{0};
+
+void* allocate(std::size_t n, std::size_t align) {
+    if (counting.load(std::memory_order_relaxed))
+        allocations.fetch_add(1);
+    if (n == 0)
+        n = 1;
+    void* p = nullptr;
+    if (align <= alignof(std::max_align_t)) {
+        p = std::malloc(n);
+    } else {
+        p = std::aligned_alloc(align, (n + align - 1) / align * align);
+    }
+    return p;
+}
+
+void release(void* p) noexcept {
+    if (p && counting.load(std::memory_order_relaxed))
+        deallocations.fetch_add(1);
+    std::free(p);
+}
+
+} // namespace
+
+// The replaceable allocation functions ([new.delete]); the others forward to these.
+void* operator new(std::size_t n) {
+    if (void* p = allocate(n, 0))
+        return p;
+    throw std::bad_alloc();
+}
+void* operator new[](std::size_t n) {
+    return ::operator new(n);
+}
+void* operator new(std::size_t n, std::align_val_t a) {
+    if (void* p = allocate(n, static_cast<std::size_t>(a)))
+        return p;
+    throw std::bad_alloc();
+}
+void* operator new[](std::size_t n, std::align_val_t a) {
+    return ::operator new(n, a);
+}
+void* operator new(std::size_t n, const std::nothrow_t&) noexcept {
+    return allocate(n, 0);
+}
+void* operator new[](std::size_t n, const std::nothrow_t&) noexcept {
+    return allocate(n, 0);
+}
+void* operator new(std::size_t n, std::align_val_t a, const std::nothrow_t&) noexcept {
+    return allocate(n, static_cast<std::size_t>(a));
+}
+void* operator new[](std::size_t n, std::align_val_t a, const std::nothrow_t&) noexcept {
+    return allocate(n, static_cast<std::size_t>(a));
+}
+void operator delete(void* p) noexcept {
+    release(p);
+}
+void operator delete[](void* p) noexcept {
+    release(p);
+}
+void operator delete(void* p, std::size_t) noexcept {
+    release(p);
+}
+void operator delete[](void* p, std::size_t) noexcept {
+    release(p);
+}
+void operator delete(void* p, std::align_val_t) noexcept {
+    release(p);
+}
+void operator delete[](void* p, std::align_val_t) noexcept {
+    release(p);
+}
+void operator delete(void* p, std::size_t, std::align_val_t) noexcept {
+    release(p);
+}
+void operator delete[](void* p, std::size_t, std::align_val_t) noexcept {
+    release(p);
+}
+void operator delete(void* p, const std::nothrow_t&) noexcept {
+    release(p);
+}
+void operator delete[](void* p, const std::nothrow_t&) noexcept {
+    release(p);
+}
+void operator delete(void* p, std::align_val_t, const std::nothrow_t&) noexcept {
+    release(p);
+}
+void operator delete[](void* p, std::align_val_t, const std::nothrow_t&) noexcept {
+    release(p);
+}
+
+namespace {
+
+using namespace tamias2d;
+namespace utf = boost::unit_test;
+
+/// Base 10 (55 unit boxes, density 1, friction 0.6) on a static ground, rows touching.
+void build_pyramid(World& world, int base) {
+    const Material m{1.0, 0.0, 0.6};
+    BodyDef ground;
+    ground.type = BodyType::static_body;
+    ground.position = {0.0, -0.5};
+    world.create_shape(world.create_body(ground), box_shape(2.0 * base + 10.0, 1.0, m));
+    for (int row = 0; row < base; ++row) {
+        const int n = base - row;
+        for (int col = 0; col < n; ++col) {
+            BodyDef d;
+            d.position = {col - 0.5 * (n - 1), 0.5 + row};
+            world.create_shape(world.create_body(d), box_shape(1.0, 1.0, m));
+        }
+    }
+}
+
+struct Counted {
+    std::size_t allocations, deallocations;
+};
+
+template <class F> Counted count_heap(F&& f) {
+    allocations = 0;
+    deallocations = 0;
+    counting = true;
+    f();
+    counting = false;
+    return {allocations.load(), deallocations.load()};
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(allocation)
+
+// Oracle: the replaced global operator new counts every C++ heap allocation in this process; a
+// settled world's step must not call it (zero, exactly). Positive control: the counter sees
+// the allocations of creating a body.
+BOOST_AUTO_TEST_CASE(settled_world_steps_without_allocating, *utf::label("NFR1")) {
+    World world(WorldDef{.gravity = {0.0, -10.0}});
+    build_pyramid(world, 10);
+    const double dt = 1.0 / 60.0;
+    for (int i = 0; i < 300; ++i)
+        world.step(dt);
+
+    // Positive control, on a world of its own: the counting operator new is the one the
+    // library calls.
+    World scratch;
+    const Counted control = count_heap([&] { scratch.create_body(BodyDef{}); });
+    BOOST_TEST_REQUIRE(control.allocations > 0u);
+
+    const Counted steady = count_heap([&] {
+        for (int i = 0; i < 100; ++i)
+            world.step(dt);
+    });
+    BOOST_TEST(steady.allocations == 0u);
+    BOOST_TEST(steady.deallocations == 0u);
+    BOOST_TEST_MESSAGE("100 settled steps: " << steady.allocations << " allocations, "
+                                             << steady.deallocations << " deallocations");
+}
+
+BOOST_AUTO_TEST_SUITE_END()
