@@ -56,12 +56,17 @@ pre{padding:8px;overflow:auto;white-space:pre-wrap}
 table{border-collapse:collapse;margin:6px 0 10px;font-size:13px}
 table.data{width:100%}
 table.data th,table.data td{border-bottom:1px solid var(--line);padding:4px 8px;text-align:left;vertical-align:top}
-table.data th{background:#eef1f6;position:sticky;top:31px;font-weight:600;white-space:nowrap}
+table.data th{background:#eef1f6;position:sticky;top:31px;font-weight:600}
+table.data td code,table.data td.tid{overflow-wrap:anywhere}
+table.data td.src{min-width:200px}
+table.data td.tid{min-width:300px}
+.scroll{overflow-x:auto;max-width:100%}
+.scroll table.data th{position:static}
 table.data tbody tr:nth-child(even){background:#fafbfd}
 table.data tbody tr:hover{background:#f1f6ff}
 table.sortable th{cursor:pointer}
 table.sortable th::after{content:" \\2195";color:#9aa3b2;font-size:11px}
-td.num,th.num{text-align:right;font-variant-numeric:tabular-nums}
+table.data td.num,table.data th.num,td.num,th.num{text-align:right;font-variant-numeric:tabular-nums}
 .badge{display:inline-block;padding:0 7px;border-radius:10px;font-size:12px;font-weight:600;color:#fff;white-space:nowrap}
 .badge.st-ok{background:var(--ok)}.badge.st-fail{background:var(--fail)}
 .badge.st-warn{background:var(--warn)}.badge.st-none{background:var(--none)}
@@ -552,14 +557,14 @@ any test or check fails. This report is complete nonetheless; the reasons are:<u
                            f'<td class="small">{E(str(c.get("details") or ""))}</td></tr>')
                 self.w('</tbody></table>')
             for t in p["tables"]:
-                self.w(f'<h4>{E(str(t.get("name", "")))}</h4><table class="data sortable"><thead><tr>' +
+                self.w(f'<h4>{E(str(t.get("name", "")))}</h4><div class="scroll"><table class="data sortable"><thead><tr>' +
                        "".join(f'<th>{E(str(c))}</th>' for c in t.get("columns", [])) + '</tr></thead><tbody>')
                 for row in t.get("rows", []):
                     cells = row if isinstance(row, list) else [row]
                     self.w('<tr>' + "".join(
                         f'<td class="num">{E(_fmt(v))}</td>' if isinstance(v, (int, float)) and not isinstance(v, bool)
                         else f'<td>{E(_fmt(v))}</td>' for v in cells) + '</tr>')
-                self.w('</tbody></table>')
+                self.w('</tbody></table></div>')
             figs = [s for s in p["series"] if s.get("svg")]
             if figs:
                 self.w('<div class="plots">' + "".join(
@@ -607,9 +612,9 @@ any test or check fails. This report is complete nonetheless; the reasons are:<u
                 det = f'<details><summary>details</summary><pre>{E(t["details"][:1500])}</pre></details>'
             samples = f'<div class="small mute">{E(t["samples"])}</div>' if t.get("samples") else ""
             oracle = E(t["oracle"]) if t.get("oracle") else '<span class="mute">—</span>'
-            self.w(f'<tr id="{self.test_anchor[t["id"]]}"><td>{E(t["id"])}{samples}{det}</td><td>{E(t["origin"])}</td>'
+            self.w(f'<tr id="{self.test_anchor[t["id"]]}"><td class="tid">{E(t["id"])}{samples}{det}</td><td>{E(t["origin"])}</td>'
                    f'<td data-sort="{E(t["status"])}">{badge(t["status"])}</td><td>{self.links(t["labels"])}</td>'
-                   f'<td class="small">{oracle}</td><td class="small">{src}</td></tr>')
+                   f'<td class="small">{oracle}</td><td class="small src">{src}</td></tr>')
         self.w('</tbody></table></section>')
 
     def method(self):
