@@ -36,7 +36,7 @@ FAILING = ("failed", "error")
 
 def _walk(root, exts):
     for dirpath, dirnames, filenames in os.walk(root):
-        dirnames[:] = sorted(d for d in dirnames if d not in SKIP_DIRS and not d.startswith("build"))
+        dirnames[:] = sorted(d for d in dirnames if d not in SKIP_DIRS)
         for fn in sorted(filenames):
             if fn.endswith(exts) or fn == "CMakeLists.txt":
                 yield os.path.join(dirpath, fn)
