@@ -132,11 +132,11 @@ BOOST_AUTO_TEST_CASE(TC10b_elastic_collision_of_unequal_boxes_face_to_face,
     check_pair({-3.0, 4.0, 0.0, 0.0, 1.5, true});
 }
 
-// Oracle: geometry and the soft contact's design (WorldDef: 30 Hz, damping ratio 10, i.e. an
-// overdamped spring whose slow time constant is 2 zeta / omega = 0.11 s): two circles created
-// overlapping by 0.1 m at rest, no gravity, are pushed apart to within the linear slop (plus
-// 1 mm) after 1 s. Regression test for a defect found during V&V (docs/verification.md): a
-// solver separation offset by the distance between the anchors made an overlap look like a gap.
+// Oracle: geometry and the soft contact's design (WorldDef defaults: an overdamped spring,
+// damping ratio 10, whose slow time constant 2 zeta / omega is 0.11 s at 30 Hz): two circles
+// created overlapping by 0.1 m at rest, no gravity, are pushed apart to within the linear slop
+// (plus 1 mm) after 1 s. Regression test for a defect found during V&V (docs/verification.md):
+// a solver separation offset by the distance between the anchors made an overlap look like a gap.
 BOOST_AUTO_TEST_CASE(overlapping_circles_are_pushed_apart, *utf::label("R8") * utf::label("IM3")) {
     World world(WorldDef{.gravity = {0.0, 0.0}});
     const BodyId a = add_circle(world, {0.0, 0.0}, {0.0, 0.0}, 0.5, 1.0);
