@@ -1,0 +1,217 @@
+#include "bench_engines.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+#include <box2d/box2d.h>
+#include <chipmunk/chipmunk.h>
+
+#include "tamias2d/shape_def.hpp"
+#include "tamias2d/world.hpp"
+
+namespace tamias_bench {
+
+std::string_view engine_name(EngineId e) {
+    switch (e) {
+    case EngineId::tamias:
+        return "Tamias2D";
+    case EngineId::chipmunk:
+        return "Chipmunk 7";
+    case EngineId::box2d:
+        return "Box2D 2.4";
+    }
+    return "?";
+}
+
+namespace {
+
+double box_area(const BodyDesc& b) {
+    double a = 0.0;
+    for (const BoxPart& p : b.boxes)
+        a += 4.0 * p.hx * p.hy;
+    return a;
+}
+
+/// The four corners of a box part in the body frame, counter-clockwise.
+void corners(const BoxPart& p, V2 out[4]) {
+    const double c = std::cos(p.angle), s = std::sin(p.angle);
+    const double lx[4] = {-p.hx, p.hx, p.hx, -p.hx};
+    const double ly[4] = {-p.hy, -p.hy, p.hy, p.hy};
+    for (int i = 0; i < 4; ++i) {
+        out[i] = {p.center.x + c * lx[i] - s * ly[i], p.center.y + s * lx[i] + c * ly[i]};
+    }
+}
+
+// ---------------------------------------------------------------------------------- Tamias2D
+class TamiasEngine final : public Engine {
+  public:
+    explicit TamiasEngine(const SceneDesc& s) : dt_(s.dt), world_(world_def(s)) {
+        ids_.reserve(s.bodies.size());
+        for (const BodyDesc& d : s.bodies) {
+            tamias2d::BodyDef bd;
+            bd.type = d.dynamic ? tamias2d::BodyType::dynamic : tamias2d::BodyType::static_body;
+            bd.position = {d.position.x, d.position.y};
+            bd.angle = d.angle;
+            bd.linear_velocity = {d.velocity.x, d.velocity.y};
+            const tamias2d::BodyId id = world_.create_body(bd);
+            const tamias2d::Material m{d.density, d.restitution, d.friction};
+            for (const BoxPart& p : d.boxes) {
+                world_.create_shape(id, tamias2d::box_shape(2.0 * p.hx, 2.0 * p.hy, m,
+                                                            {p.center.x, p.center.y}, p.angle));
+            }
+            ids_.push_back(id);
+        }
+    }
+    void step() override { world_.step(dt_); }
+    Probe probe(int i) const override {
+        const tamias2d::BodyId id = ids_[std::size_t(i)];
+        const tamias2d::Vec2d p = world_.origin(id), v = world_.velocity(id);
+        return {{p.x, p.y}, {v.x, v.y}, world_.angular_velocity(id)};
+    }
+
+  private:
+    static tamias2d::WorldDef world_def(const SceneDesc& s) {
+        tamias2d::WorldDef def;
+        def.gravity = {s.gravity.x, s.gravity.y};
+        return def;
+    }
+    double dt_;
+    tamias2d::World world_;
+    std::vector<tamias2d::BodyId> ids_;
+};
+
+// ------------------------------------------------------------------------------ Chipmunk 7
+class ChipmunkEngine final : public Engine {
+  public:
+    explicit ChipmunkEngine(const SceneDesc& s) : dt_(s.dt), space_(cpSpaceNew()) {
+        cpSpaceSetIterations(space_, 10);
+        cpSpaceSetGravity(space_, cpv(s.gravity.x, s.gravity.y));
+        // Sleeping is off by default (sleep time threshold INFINITY); slop and bias as shipped.
+        bodies_.reserve(s.bodies.size());
+        for (const BodyDesc& d : s.bodies) {
+            cpBody* body = nullptr;
+            if (d.dynamic) {
+                if (d.boxes.size() != 1 || d.boxes[0].center.x != 0.0 ||
+                    d.boxes[0].center.y != 0.0 || d.boxes[0].angle != 0.0) {
+                    throw std::invalid_argument("Chipmunk adapter: dynamic bodies must be one "
+                                                "centred box");
+                }
+                const double m = d.density * box_area(d);
+                const double w = 2.0 * d.boxes[0].hx, h = 2.0 * d.boxes[0].hy;
+                body = cpSpaceAddBody(space_, cpBodyNew(m, cpMomentForBox(m, w, h)));
+                cpBodySetPosition(body, cpv(d.position.x, d.position.y));
+                cpBodySetAngle(body, d.angle);
+                cpBodySetVelocity(body, cpv(d.velocity.x, d.velocity.y));
+                add_shape(cpBoxShapeNew(body, w, h, 0.0), d);
+            } else {
+                body = cpSpaceAddBody(space_, cpBodyNewStatic());
+                cpBodySetPosition(body, cpv(d.position.x, d.position.y));
+                cpBodySetAngle(body, d.angle);
+                for (const BoxPart& p : d.boxes) {
+                    V2 c[4];
+                    corners(p, c);
+                    const cpVect verts[4] = {cpv(c[0].x, c[0].y), cpv(c[1].x, c[1].y),
+                                             cpv(c[2].x, c[2].y), cpv(c[3].x, c[3].y)};
+                    add_shape(cpPolyShapeNew(body, 4, verts, cpTransformIdentity, 0.0), d);
+                }
+            }
+            bodies_.push_back(body);
+        }
+    }
+    ~ChipmunkEngine() override {
+        for (cpShape* sh : shapes_) {
+            cpSpaceRemoveShape(space_, sh);
+            cpShapeFree(sh);
+        }
+        for (cpBody* b : bodies_) {
+            cpSpaceRemoveBody(space_, b);
+            cpBodyFree(b);
+        }
+        cpSpaceFree(space_);
+    }
+    ChipmunkEngine(const ChipmunkEngine&) = delete;
+    ChipmunkEngine& operator=(const ChipmunkEngine&) = delete;
+
+    void step() override { cpSpaceStep(space_, dt_); }
+    Probe probe(int i) const override {
+        const cpBody* b = bodies_[std::size_t(i)];
+        const cpVect p = cpBodyGetPosition(b), v = cpBodyGetVelocity(b);
+        return {{p.x, p.y}, {v.x, v.y}, cpBodyGetAngularVelocity(b)};
+    }
+
+  private:
+    void add_shape(cpShape* sh, const BodyDesc& d) {
+        // Chipmunk multiplies the two shapes' coefficients: sqrt on each gives the pair's value.
+        cpShapeSetFriction(sh, std::sqrt(d.friction));
+        cpShapeSetElasticity(sh, std::sqrt(d.restitution));
+        cpSpaceAddShape(space_, sh);
+        shapes_.push_back(sh);
+    }
+    double dt_;
+    cpSpace* space_;
+    std::vector<cpBody*> bodies_;
+    std::vector<cpShape*> shapes_;
+};
+
+// -------------------------------------------------------------------------------- Box2D 2.4
+float f32(double x) {
+    return static_cast<float>(x);
+}
+
+class Box2DEngine final : public Engine {
+  public:
+    explicit Box2DEngine(const SceneDesc& s)
+        : dt_(f32(s.dt)), world_(b2Vec2(f32(s.gravity.x), f32(s.gravity.y))) {
+        world_.SetAllowSleeping(false);
+        bodies_.reserve(s.bodies.size());
+        for (const BodyDesc& d : s.bodies) {
+            b2BodyDef bd;
+            bd.type = d.dynamic ? b2_dynamicBody : b2_staticBody;
+            bd.position.Set(f32(d.position.x), f32(d.position.y));
+            bd.angle = f32(d.angle);
+            bd.linearVelocity.Set(f32(d.velocity.x), f32(d.velocity.y));
+            bd.allowSleep = false;
+            b2Body* body = world_.CreateBody(&bd);
+            for (const BoxPart& p : d.boxes) {
+                b2PolygonShape shape;
+                shape.SetAsBox(f32(p.hx), f32(p.hy), b2Vec2(f32(p.center.x), f32(p.center.y)),
+                               f32(p.angle));
+                b2FixtureDef fd;
+                fd.shape = &shape;
+                fd.density = f32(d.density);
+                fd.friction = f32(d.friction);       // Box2D: sqrt(f1 f2)
+                fd.restitution = f32(d.restitution); // Box2D: max(e1, e2)
+                body->CreateFixture(&fd);
+            }
+            bodies_.push_back(body);
+        }
+    }
+    void step() override { world_.Step(dt_, 8, 3); }
+    Probe probe(int i) const override {
+        const b2Body* b = bodies_[std::size_t(i)];
+        const b2Vec2 p = b->GetPosition(), v = b->GetLinearVelocity();
+        return {{p.x, p.y}, {v.x, v.y}, b->GetAngularVelocity()};
+    }
+
+  private:
+    float dt_;
+    b2World world_;
+    std::vector<b2Body*> bodies_;
+};
+
+} // namespace
+
+std::unique_ptr<Engine> make_engine(EngineId id, const SceneDesc& scene) {
+    switch (id) {
+    case EngineId::tamias:
+        return std::make_unique<TamiasEngine>(scene);
+    case EngineId::chipmunk:
+        return std::make_unique<ChipmunkEngine>(scene);
+    case EngineId::box2d:
+        return std::make_unique<Box2DEngine>(scene);
+    }
+    throw std::invalid_argument("unknown engine");
+}
+
+} // namespace tamias_bench

@@ -1,0 +1,939 @@
+// tamias_bench: Tamias2D against Chipmunk 7.0.3 and Box2D 2.4.1 on identical scenes in one
+// process (NFR1), with a quality check beside every time (R7, R8) and the cost of unit typing.
+//
+//   tamias_bench [<out_dir>] [--scenes a,b,...] [--reps N] [--quick] [--engines a,b]
+//                [--budget-seconds S] [--no-typing]
+// Scenes: elastic2 pyramid20 pyramid40 large_pyramid rain rain_1k rain_2k rain_4k rain_8k
+// rain_16k ("scaling" names the rain_* series); engines: tamias chipmunk box2d.
+//
+// Writes <out_dir>/benchmark.json (schema: traceability/vvdata.py) and prints a table. Method
+// (docs/performance.md): every engine builds the same SceneDesc; repetitions alternate the
+// engines (the order rotates each repetition) so that load on the machine spreads over all of
+// them; a scene's time is the median over repetitions of its ms/step.
+//   steady scenes (pyramids): each engine builds the scene once, takes `warmup` steps
+//     untimed, then `reps` timed blocks of `steps` steps, engines alternating block by block;
+//   transient scenes (rain, elastic pair): each repetition rebuilds the scene and times the
+//     whole run of `steps` steps (the build is never timed).
+#include <malloc.h>
+#include <time.h>
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "bench_engines.hpp"
+#include "bench_scenes.hpp"
+#include "typing_kernel.hpp"
+
+namespace {
+
+using namespace tamias_bench;
+using json = nlohmann::ordered_json;
+using Clock = std::chrono::steady_clock;
+
+// ---------------------------------------------------------------------------- thresholds
+// NFR1 floors (the engine's targets) on pyramid40, large_pyramid and rain, in steps/s.
+constexpr double floor_vs_chipmunk = 2.0;
+constexpr double floor_vs_box2d = 3.0;
+constexpr double scaling_limit = 20.0; ///< rain_16k ms/step over rain_1k ms/step
+constexpr double typing_limit = 0.02;  ///< bridge over plain doubles, minus 1
+// Quality floors for Tamias2D (R7, R8); the peers' values are reported beside them.
+constexpr double pyramid_top_tolerance = 0.05; ///< m, top box displacement from its start
+constexpr double elastic_tolerance = 1e-6;     ///< relative velocity error, and rad/s of spin
+
+/// Box2D v3.0's own figures (1 thread, SSE2, float), measured by hand on another machine:
+/// a distance, not a like-for-like comparison.
+const std::map<std::string, double> box2d_v3_ms = {
+    {"pyramid20", 0.13}, {"pyramid40", 0.44}, {"rain", 1.2}, {"large_pyramid", 4.3}};
+
+// ------------------------------------------------------------------------------- scenes
+struct SceneSpec {
+    std::string name;
+    std::function<SceneDesc()> make;
+    bool steady = false;
+    int warmup = 0;      ///< steady: untimed steps after building
+    int steps = 0;       ///< steady: steps per timed block; transient: steps per run
+    int quick_steps = 0; ///< the same with --quick
+    /// CPU seconds a peer may spend on the scene, all repetitions together (transient scenes)
+    /// or per block (steady scenes); Tamias2D, the subject, gets `tamias_budget_s`. Only the
+    /// scaling series is expected to hit it (Box2D 2.4 and Chipmunk 7 grow faster than linearly
+    /// there); elsewhere it guards the job's run time against a pathological case.
+    double budget_s = 300.0;
+    bool scaling = false; ///< part of the scaling series
+};
+
+std::vector<SceneSpec> all_scenes() {
+    std::vector<SceneSpec> s;
+    s.push_back({"elastic2", [] { return make_elastic_pair("elastic2"); }, false, 0, 3000, 600});
+    s.push_back({"pyramid20", [] { return make_pyramid("pyramid20", 20); }, true, 10, 100, 20});
+    s.push_back({"pyramid40", [] { return make_pyramid("pyramid40", 40); }, true, 10, 100, 20});
+    s.push_back(
+        {"large_pyramid", [] { return make_pyramid("large_pyramid", 100); }, true, 10, 40, 8});
+    s.push_back({"rain", [] { return make_rain("rain", 2000); }, false, 0, 1000, 300});
+    for (const int k : {1, 2, 4, 8, 16}) {
+        const std::string name = "rain_" + std::to_string(k) + "k";
+        s.push_back({name, [name, k] { return make_wide_rain(name, 1000 * k); }, false, 0, 100, 40,
+                     20.0, true});
+    }
+    return s;
+}
+
+// ------------------------------------------------------------------------------- timing
+/// Thread CPU time (ms). The engines are single-threaded, so this is the work a step takes,
+/// without the time the thread waits for a core on a shared machine; wall time is recorded
+/// beside it (raw data) and equals it on an idle machine.
+double cpu_ms() {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
+}
+
+double wall_ms() {
+    return std::chrono::duration<double, std::milli>(Clock::now().time_since_epoch()).count();
+}
+
+struct Elapsed {
+    double cpu = 0.0, wall = 0.0; ///< ms
+    Elapsed& operator+=(Elapsed o) {
+        cpu += o.cpu;
+        wall += o.wall;
+        return *this;
+    }
+};
+
+// ------------------------------------------------------------------------------- memory
+/// Live heap bytes (glibc): every engine allocates through malloc (Tamias2D via operator new,
+/// Box2D via b2Alloc, Chipmunk via calloc), in this single thread's main arena.
+double live_heap_bytes() {
+    const struct mallinfo2 mi = mallinfo2();
+    return double(mi.uordblks) + double(mi.hblkhd);
+}
+
+/// Heap growth attributed to one engine: the live-heap change across each of its calls
+/// (build, step blocks) accumulates; the peak is the largest total seen between calls.
+struct MemoryMeter {
+    double current = 0.0, peak = 0.0, mark = 0.0;
+    void begin() { mark = live_heap_bytes(); }
+    void end() {
+        current += live_heap_bytes() - mark;
+        peak = std::max(peak, current);
+    }
+};
+
+// ------------------------------------------------------------------------------ quality
+struct Quality {
+    std::string metric; ///< what `value` is
+    double value = 0.0; ///< pyramid: m; rain: bodies escaped; elastic: relative error
+    double spin = 0.0;  ///< elastic: max |omega| after the collision (rad/s)
+    int nonfinite = 0;  ///< dynamic bodies with a NaN or infinite state
+    bool tamias_ok = false;
+    std::string text;
+};
+
+bool finite(const Probe& p) {
+    return std::isfinite(p.p.x) && std::isfinite(p.p.y) && std::isfinite(p.v.x) &&
+           std::isfinite(p.v.y) && std::isfinite(p.w);
+}
+
+std::string fmt(double v, int prec = 3) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*g", prec, v);
+    return buf;
+}
+
+Quality assess(const SceneDesc& s, const Engine& e) {
+    Quality q;
+    for (std::size_t i = 0; i < s.bodies.size(); ++i) {
+        if (s.bodies[i].dynamic && !finite(e.probe(int(i))))
+            ++q.nonfinite;
+    }
+    switch (s.kind) {
+    case SceneKind::pyramid: {
+        const Probe top = e.probe(s.top_index);
+        const V2 start = s.bodies[std::size_t(s.top_index)].position;
+        q.metric = "top box displacement (m)";
+        q.value = std::hypot(top.p.x - start.x, top.p.y - start.y);
+        if (!std::isfinite(q.value))
+            q.value = INFINITY;
+        q.tamias_ok = q.nonfinite == 0 && q.value < pyramid_top_tolerance;
+        q.text = "top box moved " + fmt(q.value) + " m";
+        break;
+    }
+    case SceneKind::rain: {
+        // Escaped: centre beyond an inner wall face or below the floor by more than half a box
+        // (a box that far out has passed through), or not finite.
+        int escaped = 0;
+        const double tol = 0.5 * s.box;
+        for (std::size_t i = 0; i < s.bodies.size(); ++i) {
+            if (!s.bodies[i].dynamic)
+                continue;
+            const Probe p = e.probe(int(i));
+            if (!finite(p) || std::abs(p.p.x) > s.inner_half_w + tol || p.p.y < -tol)
+                ++escaped;
+        }
+        q.metric = "bodies escaped";
+        q.value = escaped;
+        q.tamias_ok = q.nonfinite == 0 && escaped == 0;
+        q.text = std::to_string(escaped) + " escaped";
+        break;
+    }
+    case SceneKind::elastic: {
+        // After the collision the velocities must be exchanged: left (-u, 0), right (+u, 0).
+        const Probe l = e.probe(0), r = e.probe(1);
+        const double u = s.speed;
+        const double err = std::max(std::hypot(l.v.x + u, l.v.y), std::hypot(r.v.x - u, r.v.y)) / u;
+        q.metric = "swap error |v - v_swapped| / u";
+        q.value = std::isfinite(err) ? err : INFINITY;
+        q.spin = std::max(std::abs(l.w), std::abs(r.w));
+        if (!std::isfinite(q.spin))
+            q.spin = INFINITY;
+        q.tamias_ok =
+            q.nonfinite == 0 && q.value <= elastic_tolerance && q.spin <= elastic_tolerance;
+        q.text = "swap error " + fmt(q.value) + ", spin " + fmt(q.spin) + " rad/s";
+        break;
+    }
+    }
+    if (q.nonfinite > 0)
+        q.text += ", " + std::to_string(q.nonfinite) + " NaN bodies";
+    return q;
+}
+
+// ---------------------------------------------------------------------------- measuring
+struct EngineResult {
+    std::vector<double> ms_per_step;      ///< CPU ms/step, one per timed repetition
+    std::vector<double> wall_ms_per_step; ///< the same in wall-clock time
+    std::optional<Quality> quality;
+    double peak_heap = 0.0; ///< bytes
+    std::string error;      ///< non-empty: the engine failed (exception) or ran out of budget
+    bool complete() const { return error.empty() && !ms_per_step.empty(); }
+};
+
+double median(std::vector<double> v) {
+    if (v.empty())
+        return NAN;
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+struct SceneResult {
+    std::string name;
+    int dynamic_bodies = 0;
+    int steps = 0; ///< timed steps per repetition
+    int reps = 0;
+    std::array<EngineResult, engine_count> engines{};
+    std::array<bool, engine_count> ran{};
+    double med(EngineId e) const {
+        const EngineResult& r = engines[std::size_t(e)];
+        return ran[std::size_t(e)] && !r.ms_per_step.empty() ? median(r.ms_per_step) : NAN;
+    }
+};
+
+struct Options {
+    std::string out_dir = ".";
+    std::vector<std::string> scenes;
+    std::vector<EngineId> engines{EngineId::tamias, EngineId::chipmunk, EngineId::box2d};
+    int reps = 5;
+    bool quick = false;
+    bool typing = true;
+    double budget_seconds = 0.0; ///< > 0: overrides every scene's CPU budget
+};
+
+constexpr double tamias_budget_s = 300.0;
+
+double budget_ms(const SceneSpec& spec, const Options& opt, EngineId id) {
+    if (opt.budget_seconds > 0.0)
+        return 1000.0 * opt.budget_seconds;
+    const double b = id == EngineId::tamias ? tamias_budget_s : spec.budget_s;
+    return 1000.0 * (opt.quick ? 0.25 * b : b);
+}
+
+/// Steps `n` times, timed; the memory meter brackets the whole call (untimed sampling).
+Elapsed timed_steps(Engine& e, int n, MemoryMeter& mem) {
+    mem.begin();
+    const double w0 = wall_ms(), c0 = cpu_ms();
+    for (int i = 0; i < n; ++i)
+        e.step();
+    const double c1 = cpu_ms(), w1 = wall_ms();
+    mem.end();
+    return {c1 - c0, w1 - w0};
+}
+
+std::vector<EngineId> rotated(const std::vector<EngineId>& v, int k) {
+    std::vector<EngineId> out(v.size());
+    for (std::size_t i = 0; i < v.size(); ++i)
+        out[i] = v[(i + std::size_t(k)) % v.size()];
+    return out;
+}
+
+SceneResult run_steady(const SceneSpec& spec, const Options& opt) {
+    const SceneDesc scene = spec.make();
+    SceneResult res{spec.name, scene.dynamic_count, opt.quick ? spec.quick_steps : spec.steps,
+                    opt.reps};
+    std::array<std::unique_ptr<Engine>, engine_count> eng;
+    std::array<MemoryMeter, engine_count> mem{};
+    for (EngineId id : opt.engines) {
+        const auto k = std::size_t(id);
+        res.ran[k] = true;
+        try {
+            mem[k].begin();
+            eng[k] = make_engine(id, scene);
+            mem[k].end();
+            for (int i = 0; i < spec.warmup; ++i)
+                eng[k]->step();
+        } catch (const std::exception& ex) {
+            res.engines[k].error = std::string("failed: ") + ex.what();
+            eng[k].reset();
+        }
+    }
+    for (int rep = 0; rep < opt.reps; ++rep) {
+        for (EngineId id : rotated(opt.engines, rep)) {
+            const auto k = std::size_t(id);
+            if (!eng[k])
+                continue;
+            try {
+                const Elapsed el = timed_steps(*eng[k], res.steps, mem[k]);
+                res.engines[k].ms_per_step.push_back(el.cpu / res.steps);
+                res.engines[k].wall_ms_per_step.push_back(el.wall / res.steps);
+                if (el.cpu > budget_ms(spec, opt, id)) {
+                    res.engines[k].error =
+                        "stopped after " + std::to_string(rep + 1) + " repetitions: over the " +
+                        fmt(budget_ms(spec, opt, id) / 1000.0) + " s CPU budget per block";
+                }
+            } catch (const std::exception& ex) {
+                res.engines[k].error = std::string("failed: ") + ex.what();
+            }
+            if (!res.engines[k].error.empty()) {
+                res.engines[k].quality = assess(scene, *eng[k]);
+                eng[k].reset();
+            }
+        }
+    }
+    for (EngineId id : opt.engines) {
+        const auto k = std::size_t(id);
+        if (eng[k])
+            res.engines[k].quality = assess(scene, *eng[k]);
+        res.engines[k].peak_heap = mem[k].peak;
+    }
+    return res;
+}
+
+/// Scaling series: the CPU time of each engine's last completed run and the growth factor from
+/// the size before; an engine whose next run is projected over the budget skips the rest.
+std::array<double, engine_count> scaling_last_run{}, scaling_growth{};
+std::array<bool, engine_count> scaling_stopped{};
+
+SceneResult run_transient(const SceneSpec& spec, const Options& opt) {
+    const SceneDesc scene = spec.make();
+    SceneResult res{spec.name, scene.dynamic_count, opt.quick ? spec.quick_steps : spec.steps,
+                    opt.reps};
+    std::array<double, engine_count> spent{}, last_run{};
+    for (EngineId id : opt.engines) {
+        const auto k = std::size_t(id);
+        res.ran[k] = true;
+        if (!spec.scaling)
+            continue;
+        const double projected = scaling_last_run[k] * std::max(2.0, scaling_growth[k]);
+        if (scaling_stopped[k] || projected > budget_ms(spec, opt, id)) {
+            scaling_stopped[k] = true;
+            res.engines[k].error = "skipped: projected over the " +
+                                   fmt(budget_ms(spec, opt, id) / 1000.0) +
+                                   " s CPU budget from the smaller sizes";
+        }
+    }
+    constexpr int chunk = 10; // heap sampled and budget checked between chunks, untimed
+    for (int rep = 0; rep < opt.reps; ++rep) {
+        for (EngineId id : rotated(opt.engines, rep)) {
+            const auto k = std::size_t(id);
+            EngineResult& r = res.engines[k];
+            const double budget = budget_ms(spec, opt, id);
+            if (!r.error.empty())
+                continue;
+            if (rep > 0 && spent[k] + last_run[k] > budget) {
+                r.error = std::to_string(rep) + " of " + std::to_string(opt.reps) +
+                          " repetitions fit the " + fmt(budget / 1000.0) + " s CPU budget";
+                continue;
+            }
+            MemoryMeter mem;
+            try {
+                mem.begin();
+                std::unique_ptr<Engine> e = make_engine(id, scene);
+                mem.end();
+                Elapsed el;
+                int done = 0;
+                while (done < res.steps && el.cpu <= budget) {
+                    const int n = std::min(chunk, res.steps - done);
+                    el += timed_steps(*e, n, mem);
+                    done += n;
+                }
+                r.peak_heap = std::max(r.peak_heap, mem.peak);
+                spent[k] += el.cpu;
+                last_run[k] = el.cpu;
+                if (done < res.steps) {
+                    // Cut short: the steps done so far are the easy ones, so this is a bound.
+                    r.error = "one run exceeds the " + fmt(budget / 1000.0) +
+                              " s CPU budget: " + std::to_string(done) + " of " +
+                              std::to_string(res.steps) + " steps took " + fmt(el.cpu / 1000.0) +
+                              " s (>= " + fmt(el.cpu / done) + " ms/step)";
+                    if (spec.scaling)
+                        scaling_stopped[k] = true;
+                    continue;
+                }
+                r.ms_per_step.push_back(el.cpu / res.steps);
+                r.wall_ms_per_step.push_back(el.wall / res.steps);
+                r.quality = assess(scene, *e);
+            } catch (const std::exception& ex) {
+                r.error = std::string("failed: ") + ex.what();
+            }
+        }
+    }
+    if (spec.scaling) {
+        for (EngineId id : opt.engines) {
+            const auto k = std::size_t(id);
+            if (res.engines[k].ms_per_step.empty())
+                continue;
+            if (scaling_last_run[k] > 0.0)
+                scaling_growth[k] = last_run[k] / scaling_last_run[k];
+            scaling_last_run[k] = last_run[k];
+        }
+    }
+    return res;
+}
+
+// ------------------------------------------------------------------------------- typing
+struct TypingResult {
+    std::vector<double> bridge_ms, plain_ms, ratio;
+    bool identical = false;
+    int bodies = 0, constraints = 0, steps = 0;
+    double overhead() const { return median(ratio) - 1.0; }
+};
+
+bool same_bits(const typing::KernelData& a, const typing::KernelData& b) {
+    if (a.bodies.size() != b.bodies.size())
+        return false;
+    for (std::size_t i = 0; i < a.bodies.size(); ++i) {
+        const auto& x = a.bodies[i];
+        const auto& y = b.bodies[i];
+        const double xs[] = {x.v.x, x.v.y, x.w, x.dp.x, x.dp.y, x.dq};
+        const double ys[] = {y.v.x, y.v.y, y.w, y.dp.x, y.dp.y, y.dq};
+        for (int j = 0; j < 6; ++j) {
+            if (std::bit_cast<std::uint64_t>(xs[j]) != std::bit_cast<std::uint64_t>(ys[j]))
+                return false;
+        }
+    }
+    for (std::size_t i = 0; i < a.constraints.size(); ++i) {
+        for (int j = 0; j < 2; ++j) {
+            const auto& p = a.constraints[i].points[j];
+            const auto& q = b.constraints[i].points[j];
+            if (std::bit_cast<std::uint64_t>(p.normal_impulse) !=
+                    std::bit_cast<std::uint64_t>(q.normal_impulse) ||
+                std::bit_cast<std::uint64_t>(p.tangent_impulse) !=
+                    std::bit_cast<std::uint64_t>(q.tangent_impulse))
+                return false;
+        }
+    }
+    return true;
+}
+
+/// Alternates the two builds of the kernel (ABBA order), each run on a fresh copy of the same
+/// data; the overhead is the median of the per-pair time ratios (robust to load drifting).
+TypingResult measure_typing(bool quick) {
+    TypingResult t;
+    const typing::KernelData initial = typing::make_kernel_data(40);
+    t.bodies = int(initial.bodies.size()) - 1;
+    t.constraints = int(initial.constraints.size());
+    t.steps = 20;
+    const double dt = 1.0 / 60.0;
+    const auto run = [&](void (*f)(typing::KernelData&, int, double), typing::KernelData& d) {
+        const double t0 = cpu_ms();
+        f(d, t.steps, dt);
+        return cpu_ms() - t0;
+    };
+    {
+        typing::KernelData a = initial, b = initial;
+        run(typing::run_bridge, a); // warm-up, and the same-arithmetic check
+        run(typing::run_plain, b);
+        t.identical = same_bits(a, b);
+    }
+    const int pairs = quick ? 11 : 41;
+    for (int i = 0; i < pairs; ++i) {
+        typing::KernelData a = initial, b = initial;
+        double tb = 0.0, tp = 0.0;
+        if (i % 2 == 0) {
+            tb = run(typing::run_bridge, a);
+            tp = run(typing::run_plain, b);
+        } else {
+            tp = run(typing::run_plain, b);
+            tb = run(typing::run_bridge, a);
+        }
+        t.bridge_ms.push_back(tb);
+        t.plain_ms.push_back(tp);
+        t.ratio.push_back(tb / tp);
+    }
+    return t;
+}
+
+// ---------------------------------------------------------------------------------- main
+std::vector<std::string> split(const std::string& s) {
+    std::vector<std::string> out;
+    std::stringstream ss(s);
+    for (std::string item; std::getline(ss, item, ',');) {
+        if (!item.empty())
+            out.push_back(item);
+    }
+    return out;
+}
+
+[[noreturn]] void usage(const std::string& why) {
+    std::cerr << "tamias_bench: " << why << "\n"
+              << "usage: tamias_bench [<out_dir>] [--scenes a,b] [--reps N] [--quick]\n"
+              << "                    [--engines tamias,chipmunk,box2d] [--budget-seconds S]\n"
+              << "                    [--no-typing]\n";
+    std::exit(2);
+}
+
+Options parse(int argc, char** argv) {
+    Options o;
+    bool have_dir = false;
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        const auto value = [&]() -> std::string {
+            if (i + 1 >= argc)
+                usage("missing value after " + a);
+            return argv[++i];
+        };
+        if (a == "--scenes") {
+            o.scenes = split(value());
+        } else if (a == "--reps") {
+            o.reps = std::atoi(value().c_str());
+            if (o.reps < 1)
+                usage("--reps must be >= 1");
+        } else if (a == "--quick") {
+            o.quick = true;
+        } else if (a == "--no-typing") {
+            o.typing = false;
+        } else if (a == "--budget-seconds") {
+            o.budget_seconds = std::atof(value().c_str());
+        } else if (a == "--engines") {
+            o.engines.clear();
+            for (const std::string& e : split(value())) {
+                if (e == "tamias")
+                    o.engines.push_back(EngineId::tamias);
+                else if (e == "chipmunk")
+                    o.engines.push_back(EngineId::chipmunk);
+                else if (e == "box2d")
+                    o.engines.push_back(EngineId::box2d);
+                else
+                    usage("unknown engine " + e);
+            }
+        } else if (a == "-h" || a == "--help") {
+            usage("help");
+        } else if (!a.empty() && a[0] == '-') {
+            usage("unknown option " + a);
+        } else if (!have_dir) {
+            o.out_dir = a;
+            have_dir = true;
+        } else {
+            usage("more than one output directory");
+        }
+    }
+    return o;
+}
+
+std::string cpu_model() {
+    std::ifstream in("/proc/cpuinfo");
+    for (std::string line; std::getline(in, line);) {
+        if (line.rfind("model name", 0) == 0)
+            return line.substr(line.find(':') + 2);
+    }
+    return "unknown";
+}
+
+std::string load_average() {
+    std::ifstream in("/proc/loadavg");
+    std::string a, b, c;
+    in >> a >> b >> c;
+    return a + " " + b + " " + c;
+}
+
+json num(double v, int digits = 4) {
+    if (!std::isfinite(v))
+        return nullptr;
+    const double scale = std::pow(10.0, digits - 1 - std::floor(std::log10(std::abs(v) + 1e-300)));
+    return std::round(v * scale) / scale;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    const Options opt = parse(argc, argv);
+    const std::vector<SceneSpec> specs = all_scenes();
+    std::vector<const SceneSpec*> chosen;
+    if (opt.scenes.empty()) {
+        for (const SceneSpec& s : specs)
+            chosen.push_back(&s);
+    } else {
+        for (const std::string& n : opt.scenes) {
+            if (n == "scaling") { // alias: the whole series
+                for (const SceneSpec& s : specs) {
+                    if (s.scaling)
+                        chosen.push_back(&s);
+                }
+                continue;
+            }
+            const auto it = std::find_if(specs.begin(), specs.end(),
+                                         [&](const SceneSpec& s) { return s.name == n; });
+            if (it == specs.end())
+                usage("unknown scene " + n);
+            chosen.push_back(&*it);
+        }
+    }
+    const std::string load_before = load_average();
+    const auto t_start = Clock::now();
+    std::printf("tamias_bench: %zu scenes, %d repetitions%s; engines alternate each repetition\n",
+                chosen.size(), opt.reps, opt.quick ? ", quick" : "");
+
+    std::vector<SceneResult> results;
+    for (const SceneSpec* spec : chosen) {
+        const SceneResult r = spec->steady ? run_steady(*spec, opt) : run_transient(*spec, opt);
+        std::printf("\n%-14s %5d bodies, %d steps x %d reps\n", r.name.c_str(), r.dynamic_bodies,
+                    r.steps, r.reps);
+        for (EngineId id : opt.engines) {
+            const EngineResult& e = r.engines[std::size_t(id)];
+            std::printf("  %-11s %9.4f ms/step  %-48s heap %7.2f MiB %s\n",
+                        std::string(engine_name(id)).c_str(), r.med(id),
+                        e.quality ? e.quality->text.c_str() : "-", e.peak_heap / 1048576.0,
+                        e.error.c_str());
+        }
+        std::fflush(stdout);
+        results.push_back(r);
+    }
+
+    std::optional<TypingResult> typing_result;
+    if (opt.typing) {
+        typing_result = measure_typing(opt.quick);
+        std::printf("\nunit typing: bridge %.4f ms, plain %.4f ms per run (median), overhead "
+                    "%+.2f %% (median of %zu paired ratios), results bitwise identical: %s\n",
+                    median(typing_result->bridge_ms), median(typing_result->plain_ms),
+                    100.0 * typing_result->overhead(), typing_result->ratio.size(),
+                    typing_result->identical ? "yes" : "NO");
+    }
+    const double total_s = std::chrono::duration<double>(Clock::now() - t_start).count();
+
+    // ------------------------------------------------------------------------- the report
+    const auto find = [&](const std::string& n) -> const SceneResult* {
+        for (const SceneResult& r : results) {
+            if (r.name == n)
+                return &r;
+        }
+        return nullptr;
+    };
+    const std::string method = "thread CPU time, median of " + std::to_string(opt.reps) +
+                               " repetitions, engines alternating, one process";
+    json checks = json::array();
+    const auto add_check = [&](std::string name, std::vector<std::string> labels, bool passed,
+                               std::string oracle, std::string details) {
+        checks.push_back({{"name", std::move(name)},
+                          {"labels", std::move(labels)},
+                          {"passed", passed},
+                          {"oracle", std::move(oracle)},
+                          {"details", std::move(details)}});
+    };
+    const bool have_tamias =
+        std::find(opt.engines.begin(), opt.engines.end(), EngineId::tamias) != opt.engines.end();
+    for (const char* n : {"pyramid40", "large_pyramid", "rain"}) {
+        const SceneResult* r = find(n);
+        if (!r || !have_tamias)
+            continue;
+        const double t = r->med(EngineId::tamias);
+        for (const auto& [peer, floor] : {std::pair{EngineId::chipmunk, floor_vs_chipmunk},
+                                          std::pair{EngineId::box2d, floor_vs_box2d}}) {
+            if (!r->ran[std::size_t(peer)])
+                continue;
+            const double p = r->med(peer);
+            const double speedup = p / t;
+            const bool ok = r->engines[0].complete() && r->engines[std::size_t(peer)].complete() &&
+                            speedup >= floor;
+            add_check(std::string(n) + ": Tamias2D >= " + fmt(floor) + "x " +
+                          std::string(engine_name(peer)) + " steps/s",
+                      {"NFR1"}, ok,
+                      std::string(engine_name(peer)) + " on the identical scene, " + method,
+                      "speed-up " + fmt(speedup) + "x (Tamias2D " + fmt(t, 4) + " ms/step, " +
+                          std::string(engine_name(peer)) + " " + fmt(p, 4) + " ms/step)" +
+                          (r->engines[0].error.empty() ? "" : "; Tamias2D " + r->engines[0].error));
+        }
+    }
+    if (const SceneResult* a = find("rain_1k"), *b = find("rain_16k"); a && b && have_tamias) {
+        const double ratio = b->med(EngineId::tamias) / a->med(EngineId::tamias);
+        std::string peers;
+        for (EngineId id : {EngineId::chipmunk, EngineId::box2d}) {
+            if (a->ran[std::size_t(id)])
+                peers +=
+                    ", " + std::string(engine_name(id)) + " " + fmt(b->med(id) / a->med(id)) + "x";
+        }
+        add_check("scaling: Tamias2D ms/step on rain_16k <= 20x rain_1k", {"NFR1"},
+                  b->engines[0].complete() && a->engines[0].complete() && ratio <= scaling_limit,
+                  "16x the bodies in the same arrangement: linear cost is 16x",
+                  "Tamias2D " + fmt(ratio) + "x" + peers);
+    }
+    if (typing_result) {
+        const TypingResult& t = *typing_result;
+        add_check(
+            "unit typing costs <= 2% in the contact-solver hot loop", {"NFR1"},
+            t.identical && t.overhead() <= typing_limit,
+            "the same kernel on plain doubles, same data, alternating (ABBA), median of " +
+                std::to_string(t.ratio.size()) + " paired ratios",
+            "overhead " + fmt(100.0 * t.overhead(), 3) + " % (bridge " +
+                fmt(median(t.bridge_ms), 4) + " ms, plain " + fmt(median(t.plain_ms), 4) +
+                " ms per " + std::to_string(t.steps) + "-step run of " + std::to_string(t.bodies) +
+                " bodies, " + std::to_string(t.constraints) +
+                " manifolds); final states bitwise identical: " + (t.identical ? "yes" : "NO"));
+    }
+    for (const SceneResult& r : results) {
+        if (!have_tamias)
+            break;
+        const EngineResult& e = r.engines[0];
+        if (r.name.rfind("rain_", 0) == 0)
+            continue; // the scaling runs are shorter rains
+        std::string peers;
+        for (EngineId id : {EngineId::chipmunk, EngineId::box2d}) {
+            const EngineResult& p = r.engines[std::size_t(id)];
+            if (r.ran[std::size_t(id)] && p.quality)
+                peers += "; " + std::string(engine_name(id)) + ": " + p.quality->text;
+        }
+        std::string name, oracle;
+        if (r.name.find("pyramid") != std::string::npos) {
+            name = r.name + ": top box within " + fmt(pyramid_top_tolerance) +
+                   " m of its start, no NaN";
+            oracle = "a resting stack stays where it was built";
+        } else if (r.name == "rain") {
+            name = "rain: no box escapes the container, no NaN";
+            oracle = "closed container: every box ends inside";
+        } else {
+            name = "elastic2: velocities exchanged and no spin (within 1e-6)";
+            oracle = "equal masses, C_R = 1, head-on (GD1, DD12): v_A' = v_B, v_B' = v_A";
+        }
+        add_check(name, {"R7", "R8"}, e.quality && e.quality->tamias_ok && e.error.empty(), oracle,
+                  "Tamias2D: " + (e.quality ? e.quality->text : std::string("no result")) +
+                      (e.error.empty() ? "" : " (" + e.error + ")") + peers);
+    }
+
+    json tables = json::array();
+    {
+        json rows = json::array();
+        for (const SceneResult& r : results) {
+            const double t = r.med(EngineId::tamias), c = r.med(EngineId::chipmunk),
+                         b = r.med(EngineId::box2d);
+            rows.push_back({r.name, r.dynamic_bodies,
+                            std::to_string(r.steps) + " x " + std::to_string(r.reps), num(t),
+                            num(c), num(b), num(c / t, 3), num(b / t, 3)});
+        }
+        tables.push_back(
+            {{"name", "Step time (ms/step, " + method + ")"},
+             {"columns",
+              {"scene", "dynamic bodies", "timed steps x reps", "Tamias2D", "Chipmunk 7",
+               "Box2D 2.4", "speed-up vs Chipmunk 7", "speed-up vs Box2D 2.4"}},
+             {"rows", rows}});
+    }
+    {
+        json rows = json::array();
+        for (const SceneResult& r : results) {
+            for (EngineId id : opt.engines) {
+                const EngineResult& e = r.engines[std::size_t(id)];
+                if (!e.quality)
+                    continue;
+                rows.push_back({r.name, engine_name(id), e.quality->metric, num(e.quality->value),
+                                r.name == "elastic2" ? num(e.quality->spin) : json(nullptr),
+                                e.quality->nonfinite});
+            }
+        }
+        tables.push_back(
+            {{"name", "Quality at the end of the run"},
+             {"columns", {"scene", "engine", "metric", "value", "spin (rad/s)", "NaN bodies"}},
+             {"rows", rows}});
+    }
+    {
+        json rows = json::array();
+        for (const SceneResult& r : results) {
+            for (EngineId id : opt.engines) {
+                const EngineResult& e = r.engines[std::size_t(id)];
+                double mn = NAN, mx = NAN;
+                if (!e.ms_per_step.empty()) {
+                    mn = *std::min_element(e.ms_per_step.begin(), e.ms_per_step.end());
+                    mx = *std::max_element(e.ms_per_step.begin(), e.ms_per_step.end());
+                }
+                rows.push_back({r.name, engine_name(id), num(r.med(id)), num(mn), num(mx),
+                                num(median(e.wall_ms_per_step)), int(e.ms_per_step.size()),
+                                num(e.peak_heap / 1048576.0, 3), e.error});
+            }
+        }
+        tables.push_back({{"name", "Per engine: spread over repetitions, wall time and peak heap"},
+                          {"columns",
+                           {"scene", "engine", "median CPU ms/step", "min", "max",
+                            "median wall ms/step", "reps", "peak heap (MiB)", "note"}},
+                          {"rows", rows}});
+    }
+    {
+        json rows = json::array();
+        for (const SceneResult& r : results) {
+            const auto it = box2d_v3_ms.find(r.name);
+            if (it == box2d_v3_ms.end())
+                continue;
+            const double t = r.med(EngineId::tamias);
+            rows.push_back({r.name, it->second, num(t), num(t / it->second, 3)});
+        }
+        tables.push_back(
+            {{"name", "Distance to Box2D v3 (its own hand-measured figures: 1 thread, SSE2, "
+                      "float; another machine)"},
+             {"columns", {"scene", "Box2D v3 ms/step", "Tamias2D ms/step", "Tamias2D / v3"}},
+             {"rows", rows}});
+    }
+    if (typing_result) {
+        const TypingResult& t = *typing_result;
+        tables.push_back({{"name", "Unit typing in the contact-solver hot loop"},
+                          {"columns", {"build", "median ms per run", "min", "max", "runs"}},
+                          {"rows",
+                           {{"model bridge (Boost.Units)", num(median(t.bridge_ms)),
+                             num(*std::min_element(t.bridge_ms.begin(), t.bridge_ms.end())),
+                             num(*std::max_element(t.bridge_ms.begin(), t.bridge_ms.end())),
+                             int(t.bridge_ms.size())},
+                            {"plain doubles", num(median(t.plain_ms)),
+                             num(*std::min_element(t.plain_ms.begin(), t.plain_ms.end())),
+                             num(*std::max_element(t.plain_ms.begin(), t.plain_ms.end())),
+                             int(t.plain_ms.size())}}}});
+    }
+    tables.push_back(
+        {{"name", "Set-up"},
+         {"columns", {"item", "value"}},
+         {"rows",
+          {{"machine", cpu_model() + ", " + std::to_string(std::thread::hardware_concurrency()) +
+                           " hardware threads (the benchmark uses one)"},
+           {"load average before the run", load_before},
+           {"compiler (Tamias2D)", std::string("g++ ") + __VERSION__ + ", " +
+                                       TAMIAS_BENCH_BUILD_TYPE + " " + TAMIAS_BENCH_CXX_FLAGS},
+           {"Chipmunk", "7.0.3, Debian libchipmunk7 as packaged (built without NDEBUG: its "
+                        "debug checks run), doubles, 10 iterations, default slop and bias, "
+                        "sleeping off"},
+           {"Box2D", "2.4.1, Debian libbox2d2 as packaged, float, 8 velocity / 3 position "
+                     "iterations, sleeping off"},
+           {"Tamias2D", "WorldDef defaults (4 substeps, soft contacts), doubles"},
+           {"scenes", "dt 1/60 s, gravity (0, -10), unit boxes of density 1 (rain: 0.5 m), "
+                      "friction 0.6 per pair, restitution 0 (elastic2: 1, no gravity)"},
+           {"steps", "pyramids: 10 untimed, then reps x timed block; rain and elastic2: the "
+                     "whole run per rep (build untimed)"},
+           {"total wall time (s)", num(total_s, 3)}}}});
+
+    json series = json::array();
+    {
+        json lines = json::array();
+        for (EngineId id : opt.engines) {
+            std::vector<std::pair<int, double>> pts;
+            for (const SceneResult& r : results) {
+                if (r.name.rfind("rain_", 0) == 0)
+                    continue;
+                if (std::isfinite(r.med(id)))
+                    pts.push_back({r.dynamic_bodies, r.med(id)});
+            }
+            std::sort(pts.begin(), pts.end());
+            json xs = json::array(), ys = json::array();
+            for (const auto& [x, y] : pts) {
+                xs.push_back(x);
+                ys.push_back(num(y));
+            }
+            lines.push_back({{"label", engine_name(id)}, {"x", xs}, {"y", ys}});
+        }
+        series.push_back({{"name", "ms/step per engine and scene (elastic2, pyramid20, pyramid40, "
+                                   "rain, large_pyramid)"},
+                          {"x_label", "dynamic bodies"},
+                          {"y_label", "ms per step"},
+                          {"log_x", true},
+                          {"log_y", true},
+                          {"lines", lines}});
+    }
+    {
+        json lines = json::array();
+        double ref_x = 0.0, ref_y = 0.0;
+        for (EngineId id : opt.engines) {
+            json xs = json::array(), ys = json::array();
+            for (const SceneResult& r : results) {
+                if (r.name.rfind("rain_", 0) != 0 || !std::isfinite(r.med(id)))
+                    continue;
+                xs.push_back(r.dynamic_bodies);
+                ys.push_back(num(r.med(id)));
+                if (id == EngineId::tamias && ref_x == 0.0) {
+                    ref_x = r.dynamic_bodies;
+                    ref_y = r.med(id);
+                }
+            }
+            if (!xs.empty())
+                lines.push_back({{"label", engine_name(id)}, {"x", xs}, {"y", ys}});
+        }
+        if (ref_x > 0.0) {
+            lines.push_back({{"label", "linear (Tamias2D's first point x N)"},
+                             {"x", {ref_x, 16.0 * ref_x}},
+                             {"y", {num(ref_y), num(16.0 * ref_y)}}});
+        }
+        if (!lines.empty()) {
+            series.push_back({{"name", "Scaling: rain of N boxes"},
+                              {"x_label", "boxes"},
+                              {"y_label", "ms per step"},
+                              {"log_x", true},
+                              {"log_y", true},
+                              {"lines", lines}});
+        }
+    }
+
+    json raw = json::object();
+    for (const SceneResult& r : results) {
+        json e = json::object();
+        for (EngineId id : opt.engines) {
+            const EngineResult& x = r.engines[std::size_t(id)];
+            e[std::string(engine_name(id))] = {{"cpu_ms_per_step", x.ms_per_step},
+                                               {"wall_ms_per_step", x.wall_ms_per_step},
+                                               {"peak_heap_bytes", x.peak_heap},
+                                               {"error", x.error}};
+        }
+        raw[r.name] = {{"steps", r.steps}, {"dynamic_bodies", r.dynamic_bodies}, {"engines", e}};
+    }
+
+    json doc = {{"program", "benchmark"},
+                {"description",
+                 "Tamias2D against Chipmunk 7.0.3 and Box2D 2.4.1 on identical scenes in one "
+                 "process (NFR1), with a quality check per scene and engine (R7, R8), the cost "
+                 "of unit typing, and the scaling of a rain of boxes. Method and results: "
+                 "docs/performance.md."},
+                {"checks", checks},
+                {"tables", tables},
+                {"series", series},
+                {"raw", raw}};
+    std::filesystem::create_directories(opt.out_dir);
+    const std::filesystem::path out = std::filesystem::path(opt.out_dir) / "benchmark.json";
+    std::ofstream(out) << doc.dump(2) << "\n";
+
+    int failed = 0;
+    std::printf("\nchecks:\n");
+    for (const json& c : checks) {
+        const bool ok = c["passed"].get<bool>();
+        failed += ok ? 0 : 1;
+        std::printf("  [%s] %s: %s\n", ok ? "pass" : "FAIL", c["name"].get<std::string>().c_str(),
+                    c["details"].get<std::string>().c_str());
+    }
+    std::printf("\nwrote %s (%.0f s)\n", out.c_str(), total_s);
+    return failed == 0 ? 0 : 1;
+}
