@@ -565,6 +565,30 @@ std::string cpu_model() {
     return "unknown";
 }
 
+/// The commit the engine was built from, and whether src/ had uncommitted changes (run time:
+/// the build directory may be older than the checkout, but not the other way round).
+std::string source_version() {
+    const std::string dir = TAMIAS_BENCH_SOURCE_DIR;
+    const auto run = [](const std::string& cmd) {
+        std::string out;
+        if (FILE* f = popen(cmd.c_str(), "r")) {
+            char buf[256];
+            while (std::fgets(buf, sizeof buf, f))
+                out += buf;
+            pclose(f);
+        }
+        while (!out.empty() && (out.back() == '\n' || out.back() == ' '))
+            out.pop_back();
+        return out;
+    };
+    std::string head = run("git -C '" + dir + "' rev-parse --short HEAD 2>/dev/null");
+    if (head.empty())
+        return "unknown (not a git checkout)";
+    if (!run("git -C '" + dir + "' status --porcelain -- src 2>/dev/null").empty())
+        head += " with uncommitted changes in src/";
+    return head;
+}
+
 std::string load_average() {
     std::ifstream in("/proc/loadavg");
     std::string a, b, c;
@@ -822,7 +846,8 @@ int main(int argc, char** argv) {
         {{"name", "Set-up"},
          {"columns", {"item", "value"}},
          {"rows",
-          {{"machine", cpu_model() + ", " + std::to_string(std::thread::hardware_concurrency()) +
+          {{"source", source_version()},
+           {"machine", cpu_model() + ", " + std::to_string(std::thread::hardware_concurrency()) +
                            " hardware threads (the benchmark uses one)"},
            {"load average before the run", load_before},
            {"compiler (Tamias2D)", std::string("g++ ") + __VERSION__ + ", " +
