@@ -32,6 +32,7 @@ namespace u = tamias2d::units;
 struct World::Impl {
     WorldDef def;
     double time = 0.0;
+    double time_error = 0.0; ///< Kahan compensation: n steps of dt read back as n dt
     std::vector<Body> bodies;
     std::vector<std::uint32_t> free_bodies;
     std::vector<Shape> shapes;
@@ -469,7 +470,11 @@ void World::step(double dt) {
     w.find_new_contacts();
     w.update_contacts();
     w.solve(dt);
-    w.time += dt;
+    // Compensated sum, so that a load switching at t = n dt is seen at step n, not n + 1.
+    const double y = dt - w.time_error;
+    const double t = w.time + y;
+    w.time_error = (t - w.time) - y;
+    w.time = t;
     w.build_infos();
 }
 
@@ -706,6 +711,7 @@ std::uint64_t World::state_hash() const {
     const Impl& w = *impl_;
     Hasher hs;
     hs(w.time);
+    hs(w.time_error);
     hs(w.def.gravity);
     hs(std::uint64_t(w.bodies.size()));
     for (const Body& b : w.bodies) {

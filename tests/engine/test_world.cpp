@@ -103,4 +103,17 @@ BOOST_AUTO_TEST_CASE(pile_settles_on_ground,
     }
 }
 
+// Oracle: arithmetic: n steps of dt must read back as n dt (the double nearest to it), so that a
+// load switching at t = n dt acts from step n on; plain summation gives 0.49999999999999994
+// after 15 steps of 1/30 s.
+BOOST_AUTO_TEST_CASE(simulated_time_is_n_dt, *utf::label("R5") * utf::label("IM1")) {
+    World world;
+    for (int i = 0; i < 15; ++i)
+        world.step(1.0 / 30.0);
+    BOOST_TEST(world.time() == 0.5);
+    for (int i = 0; i < 3000; ++i)
+        world.step(1.0 / 60.0);
+    BOOST_TEST(world.time() == 50.5);
+}
+
 BOOST_AUTO_TEST_SUITE_END()
