@@ -19,7 +19,7 @@ namespace tamias2d::io {
 /// row r (0 at the bottom) is centred at y = origin.y + gap + box / 2 + r (box + gap).
 struct PyramidParams {
     std::string name = "pyramid"; ///< body names: "<name>/ground", "<name>/r<row>c<col>"
-    int base = 20;                ///< boxes in the bottom row, in [1, 1000]
+    int base = 20;                ///< boxes in the bottom row, in [1, 500] (125 250 boxes)
     double box = 1.0;             ///< m, box side (> 0)
     double gap = 0.001;           ///< m, between neighbours and between rows (>= 0)
     Vec2d origin{};               ///< m, centre of the ground's top face
@@ -44,7 +44,7 @@ struct ContainerParams {
 /// the same on every platform). Bodies: the container first, then the boxes row by row.
 struct RainParams {
     std::string name = "rain"; ///< body names: "<name>/container", "<name>/<index>"
-    int count = 2000;          ///< boxes, in [0, 1000000]
+    int count = 2000;          ///< boxes, in [0, 200000]
     double box = 0.5;          ///< m, box side (> 0)
     double spacing = 0.0;      ///< m, grid pitch; 0: automatic (1.5 box); must exceed box
     double jitter = -1.0;      ///< m, < 0: automatic (0.2 box); 2 jitter < spacing - box
