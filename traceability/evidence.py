@@ -213,7 +213,7 @@ def scan_test_sources(source_root):
     return out
 
 
-ADD_TEST = re.compile(r"^\s*add_test\s*\(\s*(?:NAME\s+)?([^\s)]+)", re.I)
+CMAKE_CALL = re.compile(r"^\s*([A-Za-z_]\w*)\s*\(\s*(?:NAME\s+)?([^\s)]+)")
 
 
 def scan_cmake_oracles(source_root):
@@ -232,8 +232,9 @@ def scan_cmake_oracles(source_root):
         except OSError:
             continue
         for i, line in enumerate(lines):
-            m = ADD_TEST.match(line)
-            if not m:
+            m = CMAKE_CALL.match(line)
+            if not m or m.group(1).lower() in ("if", "elseif", "else", "endif", "foreach", "endforeach",
+                                                "function", "endfunction", "macro", "endmacro", "set"):
                 continue
             block = []
             j = i - 1
@@ -252,10 +253,23 @@ def scan_cmake_oracles(source_root):
                 else:
                     break
             if text:
-                out[m.group(1)] = {"oracle": text,
-                                   "file": os.path.relpath(path, source_root).replace(os.sep, "/"),
-                                   "line": i + 1}
+                key = m.group(2)
+                rec = {"oracle": text, "file": os.path.relpath(path, source_root).replace(os.sep, "/"),
+                       "line": i + 1, "call": m.group(1)}
+                if key not in out or m.group(1).lower() == "add_test":
+                    out[key] = rec
     return out
+
+
+def cmake_oracle_for(name, cmake_oracles):
+    """The oracle of a CTest entry: above add_test(NAME <name>), or above the helper call that
+    registered it, whose first argument is the name or its part after the first '.'
+    (tamias_add_compile_fail(dd08_x ...) registers compile_fail.dd08_x)."""
+    if name in cmake_oracles:
+        return cmake_oracles[name]
+    if "." in name:
+        return cmake_oracles.get(name.split(".", 1)[1])
+    return None
 
 
 # --------------------------------------------------------------------------- CTest inventory
@@ -696,7 +710,7 @@ def collect_tests(source_root, results_dir, warnings):
     for t in others:
         r = cj.get((t["name"],))
         status = r["status"] if r else ("skipped" if t["disabled"] else "notrun")
-        co = cmake_oracles.get(t["name"])
+        co = cmake_oracle_for(t["name"], cmake_oracles)
         tests.append({"id": f"ctest:{t['name']}", "name": t["name"], "origin": "ctest",
                       "binary": None, "status": status, "labels": t["labels"],
                       "oracle": co["oracle"] if co else None,

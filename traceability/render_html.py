@@ -375,7 +375,7 @@ any test or check fails. This report is complete nonetheless; the reasons are:<u
         if r["missing_oracle"]:
             self.w('<p class="small">Boost.Test cases need a <code>// Oracle: ...</code> line in the comment block '
                    'directly above the test-case macro; other CTest entries a <code># Oracle: ...</code> line above '
-                   'their <code>add_test()</code>; checks an <code>oracle</code> field.</p><p class="small">' +
+                   'their <code>add_test()</code> or the helper call that registers them; checks an <code>oracle</code> field.</p><p class="small">' +
                    ", ".join(self.tlink(t) for t in r["missing_oracle"]) + '</p>')
         else:
             self.w('<p class="ok-note">Every test states its oracle.</p>')

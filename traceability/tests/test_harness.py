@@ -113,6 +113,8 @@ class FixtureReport(unittest.TestCase):
         self.assertEqual(self.tests["ctest:cli_smoke"]["oracle"],
                          "the CLI exits 0 and prints the final state of a falling body")
         self.assertEqual(self.tests["peer_compare:step_time_within_2x_of_peer"]["labels"], ["NFR1"])
+        self.assertEqual(self.tests["ctest:compile_fail.dd01_mass"]["oracle"],
+                         "the seed's dimensionally wrong form of DD1 must not compile")
         self.assertIn("model_tests:model/mystery", self.report["missing_oracle"])
         self.assertNotIn("model_tests:model/im1_free_fall", self.report["missing_oracle"])
         self.assertTrue(any("@LC1" in x for x in self.report["registration"]))
