@@ -138,6 +138,7 @@ TEST_MACRO = re.compile(
     r"FIXTURE_TEST_CASE_TEMPLATE|FIXTURE_TEST_CASE|PARAM_TEST_CASE))\s*\(\s*([A-Za-z_]\w*)"
     r"(?:\s*,\s*([A-Za-z_]\w*))?")
 ORACLE = re.compile(r"Oracle\s*:\s*(.*)$")
+EXPECTED_FAILURES = re.compile(r"expected_failures\s*\(\s*(\d+)\s*\)")
 
 
 def _comment_block_above(lines, idx):
@@ -206,8 +207,13 @@ def scan_test_sources(source_root):
                 continue
             macro, a1, a2 = m.group(1), m.group(2), m.group(3)
             name = a2 if macro == "BOOST_DATA_TEST_CASE_F" and a2 else a1
+            # Boost's expected_failures(N) decorator: the case passes in Boost's terms with N
+            # known failing assertions (documented findings); the report shows them as such.
+            head = " ".join(lines[i:i + 4])
+            xf = EXPECTED_FAILURES.search(head[:head.find("{")] if "{" in head else head)
             decls.append({"name": name, "macro": macro, "line": i + 1,
-                          "oracle": _oracle_from_block(_comment_block_above(lines, i))})
+                          "oracle": _oracle_from_block(_comment_block_above(lines, i)),
+                          "expected_failures": int(xf.group(1)) if xf else 0})
         if decls:
             out[rel] = decls
     return out
@@ -671,6 +677,11 @@ def collect_tests(source_root, results_dir, warnings):
             decl = _find_decl(c, source_root, test_sources)
             rel_file = decl[0] if decl else _resolve_test_file(c["file"], source_root, test_sources)
             oracle = decl[1]["oracle"] if decl else None
+            xfail = decl[1].get("expected_failures", 0) if decl else 0
+            if xfail and status == "failed" and run.get("run_exit") == 0:
+                # Boost accepted exactly the declared number of failures (else it exits non-zero).
+                status = "known-failure"
+                message = (f"{xfail} expected failure(s), documented findings: " + message)[:2000]
             name = "/".join(c["path"])
             t = {"id": f"{key}:{name}", "name": name, "origin": "boost", "binary": key,
                  "status": status, "labels": c["labels"], "oracle": oracle,

@@ -12,13 +12,14 @@ from .srsdata import KIND_NAMES
 E = html.escape
 
 STATUS_CLASS = {"verified": "st-ok", "failing": "st-fail", "untested": "st-warn",
-                "not implemented": "st-none", "passed": "st-ok", "failed": "st-fail",
+                "not implemented": "st-none", "passed": "st-ok", "known-failure": "st-warn", "failed": "st-fail",
                 "error": "st-fail", "skipped": "st-none", "notrun": "st-none"}
 STATUS_HELP = {
     "verified": "at least one passing test or check labelled with the item, and none failing",
     "failing": "at least one labelled test or check fails",
     "untested": "code carries the item's \\srs tag (or labelled tests exist but did not run), but nothing passing verifies it",
     "not implemented": "neither a code tag nor a labelled test",
+    "known-failure": "a test declared with Boost's expected_failures(N): exactly N known, documented findings fail (docs/verification.md); any other failure fails the test",
 }
 
 CSS = """
@@ -188,6 +189,13 @@ commit <code>{E(commit[:12])}</code>{E(dirty)} · {E(ran)} · report schema {E(r
         if g["passed"]:
             self.w(f"""<div class="gate pass" id="gate"><h2>Gate: PASS (exit status 0)</h2>
 Every {E('/'.join(g['gated_kinds']))} item has a passing test and no test or check fails.</div>""")
+        if g.get("known_failures"):
+            lis = "".join(f"<li>{self._linkify_tests(E(x), g['known_failures'])}</li>"
+                          for x in g["known_failures"])
+            self.w(f"""<div class="gate fail" id="known-failures"><h2>Known failures (documented findings)</h2>
+These tests pass only because they declare their failing cases as expected (Boost
+<code>expected_failures</code>); each failing case is a finding described in
+docs/verification.md, printed with its seed so it can be replayed:<ul>{lis}</ul></div>""")
         else:
             lis = "".join(f"<li>{self._linkify_tests(self._linkify(E(x)), g.get('failing_tests', []))}</li>"
                           for x in g["reasons"])

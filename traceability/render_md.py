@@ -30,6 +30,12 @@ def render(r):
         for x in g["reasons"]:
             w(f"- {x}")
         w("")
+    if g.get("known_failures"):
+        w("**Known failures (documented findings, docs/verification.md; declared with Boost's "
+          "expected_failures):**\n")
+        for x in g["known_failures"]:
+            w(f"- {x}")
+        w("")
     s = r["summary"]
     w("## 1. Summary\n")
     w("Items by status: " + ", ".join(f"{k}: {v}" for k, v in s["by_status"].items()) +
