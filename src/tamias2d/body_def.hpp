@@ -24,6 +24,8 @@ struct Load {
 /// load acts through the step (held constant over its substeps).
 using LoadFunction = std::function<Load(double t)>;
 
+/// \srs{R2} The inputs of a body: mass, initial position, velocity, orientation, angular
+/// velocity and the forces applied to it.
 struct BodyDef {
     BodyType type = BodyType::dynamic;
     Vec2d position{};              ///< m, world position of the body origin

@@ -7,6 +7,7 @@
 
 namespace tamias2d {
 
+/// \srs{R3} Surface properties of a body: the coefficient of restitution (and LC2 friction).
 struct Material {
     double density = 1.0;     ///< kg m^-2 (2D: mass per area), > 0
     double restitution = 0.0; ///< C_R (DD12), in [0, 1]

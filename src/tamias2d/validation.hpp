@@ -1,4 +1,4 @@
-// Input validation (SRS R4): every check of the data constraints (section 5.2.6 and the ones
+// \srs{R4} Input validation: every check of the data constraints (section 5.2.6 and the ones
 // the SRS forgot, labelled DCX_*). Each throws ValidationError naming field, value and label.
 #pragma once
 

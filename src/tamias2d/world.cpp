@@ -154,7 +154,7 @@ struct World::Impl {
         }
     }
 
-    /// Narrow phase for every contact; contacts whose fat boxes separated are destroyed.
+    /// \srs{R7} Narrow phase for every contact; contacts whose fat boxes separated are destroyed.
     void update_contacts() {
         doomed.clear();
         for (std::uint32_t i = 0; i < contacts.size(); ++i) {
@@ -262,7 +262,7 @@ struct World::Impl {
 
         const std::size_t nb = solver_bodies.size();
         for (int sub = 0; sub < n; ++sub) {
-            // IM1/IM2, velocity half of the semi-implicit Euler step (DD4, DD7).
+            // \srs{R5} \srs{R6} IM1/IM2, velocity half of the semi-implicit Euler step (DD4, DD7).
             for (std::size_t k = 1; k < nb; ++k) {
                 SolverBody& sb = solver_bodies[k];
                 sb.v += bridge::velocity_change(accelerations[k], h);
@@ -278,6 +278,7 @@ struct World::Impl {
             }
             solve_contacts(constraints, solver_bodies, st, false);
         }
+        // \srs{R8} Post-collision velocities (and, integrated, positions) of colliding bodies.
         apply_restitution(constraints, solver_bodies, st);
 
         for (const ContactConstraint& cc : constraints) {

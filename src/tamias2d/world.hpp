@@ -25,6 +25,7 @@ struct RayCastHit {
     double fraction = 0.0; ///< along the ray's translation, in [0, 1]
 };
 
+/// \srs{R1} The space in which all rigid bodies of a simulation interact.
 /// Every mutating call validates its input first (SRS R4) and throws ValidationError or
 /// InvalidHandle (errors.hpp) without changing anything: the world is left exactly as it was.
 class World {

@@ -56,8 +56,9 @@ BOOST_AUTO_TEST_CASE(free_flight_is_exact,
 // v), and the semi-implicit Euler scheme's exact discrete solution
 // p_n = p0 + v0 t + a t^2 / 2 + a h t / 2 (h = substep), i.e. the continuous
 // p(t) = p0 + v0 t + a t^2 / 2 with its known first-order error a h t / 2.
-BOOST_AUTO_TEST_CASE(constant_force_history,
-                     *utf::label("R5") * utf::label("IM1") * utf::label("GD2") * utf::label("T1")) {
+BOOST_AUTO_TEST_CASE(constant_force_history, *utf::label("R5") * utf::label("IM1") *
+                                                 utf::label("GD2") * utf::label("T1") *
+                                                 utf::label("GS1")) {
     const Vec2d g{0.0, -9.81};
     World world(WorldDef{.gravity = g});
     BodyDef def;
@@ -88,7 +89,8 @@ BOOST_AUTO_TEST_CASE(constant_force_history,
 // phi_n = phi0 + omega0 t + alpha t^2 / 2 + alpha h t / 2 (semi-implicit Euler, exact discrete
 // solution), wrapped to [0, 2 pi) (SRS Table 2).
 BOOST_AUTO_TEST_CASE(constant_torque_history, *utf::label("R6") * utf::label("IM2") *
-                                                  utf::label("T4") * utf::label("DCO_phi")) {
+                                                  utf::label("T4") * utf::label("DCO_phi") *
+                                                  utf::label("GS2")) {
     World world(WorldDef{.gravity = {0.0, 0.0}});
     BodyDef def;
     def.angular_velocity = 0.5;

@@ -1,6 +1,8 @@
 // R1: the world as a space for bodies: handles, creation and destruction, determinism.
 #include <boost/test/unit_test.hpp>
 
+#include <cmath>
+
 #include "tamias2d/errors.hpp"
 #include "tamias2d/world.hpp"
 
@@ -114,6 +116,42 @@ BOOST_AUTO_TEST_CASE(simulated_time_is_n_dt, *utf::label("R5") * utf::label("IM1
     for (int i = 0; i < 3000; ++i)
         world.step(1.0 / 60.0);
     BOOST_TEST(world.time() == 50.5);
+}
+
+// Oracle: rigidity (A1) and Table 2: through a pile's collisions every box keeps its shape
+// (the distances between its world-frame corners equal the side lengths to round-off), and
+// every output p, v, phi, omega stays finite with phi in [0, 2 pi).
+BOOST_AUTO_TEST_CASE(bodies_stay_rigid_and_outputs_valid,
+                     *utf::label("A1") * utf::label("DCO_p") * utf::label("DCO_v") *
+                         utf::label("DCO_omega") * utf::label("DCO_phi")) {
+    World world;
+    build_pile(world);
+    for (int i = 0; i < 300; ++i) {
+        world.step(1.0 / 60.0);
+        for (BodyId b : world.bodies()) {
+            const BodyState s = world.state(b);
+            BOOST_TEST_REQUIRE(std::isfinite(s.position.x + s.position.y));
+            BOOST_TEST_REQUIRE(std::isfinite(s.velocity.x + s.velocity.y + s.angular_velocity));
+            BOOST_TEST_REQUIRE((s.orientation >= 0.0 && s.orientation < 2.0 * M_PI));
+        }
+    }
+    for (BodyId b : world.bodies()) {
+        // Boxes only: I / m = (0.5^2 + 0.5^2) / 12 for the 0.5 m boxes, r^2 / 2 for the circles.
+        if (world.type(b) != BodyType::dynamic || world.inertia(b) / world.mass(b) < 0.04)
+            continue;
+        const double phi = world.orientation(b);
+        const Vec2d o = world.origin(b);
+        const Vec2d u{0.25 * std::cos(phi), 0.25 * std::sin(phi)};
+        const Vec2d v{-u.y, u.x};
+        // The shape is still the rigid 0.5 m square at the body's pose: points just inside
+        // each of its four corners belong to it.
+        for (const Vec2d corner : {u + v, u - v, -1.0 * u + v, -1.0 * u - v}) {
+            bool found = false;
+            for (ShapeId s : world.query_point(o + 0.98 * corner))
+                found = found || s == world.shapes(b)[0];
+            BOOST_TEST(found);
+        }
+    }
 }
 
 BOOST_AUTO_TEST_SUITE_END()
