@@ -11,6 +11,10 @@
 
 #include "tamias2d/world.hpp"
 
+// The replaced operator new/delete below are built on malloc/free; once inlined (-O1 and up)
+// GCC cannot see that they pair up and warns about free() on memory from "new".
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+
 namespace {
 
 std::atomic<bool> counting{false};
