@@ -82,16 +82,14 @@ void validate(const WorldDef& def) {
     positive("world.contact_hertz", def.contact_hertz);
     positive("world.contact_damping_ratio", def.contact_damping_ratio);
     positive("world.contact_push_max_velocity", def.contact_push_max_velocity);
-    require_finite("world.linear_slop", def.linear_slop);
-    require_finite("world.speculative_distance", def.speculative_distance);
-    require_finite("world.restitution_threshold", def.restitution_threshold);
-    if (def.linear_slop < 0.0 || def.speculative_distance < 0.0 ||
-        def.restitution_threshold < 0.0) {
-        throw ValidationError("world.linear_slop/speculative_distance/restitution_threshold",
-                              std::fmin(def.linear_slop, std::fmin(def.speculative_distance,
-                                                                   def.restitution_threshold)),
-                              "must be >= 0", "DCX_finite");
-    }
+    const auto non_negative = [](const char* field, double v) {
+        require_finite(field, v);
+        if (!(v >= 0.0))
+            throw ValidationError(field, v, "must be >= 0", "DCX_finite");
+    };
+    non_negative("world.linear_slop", def.linear_slop);
+    non_negative("world.speculative_distance", def.speculative_distance);
+    non_negative("world.restitution_threshold", def.restitution_threshold);
 }
 
 void validate_time_step(double dt) {
