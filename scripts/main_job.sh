@@ -20,7 +20,8 @@ done
 phase "set-up (Debian packages)"
 ./scripts/setup.sh || exit 1
 phase "build (Release)"
-cmake -S . -B build -G Ninja -DTAMIAS_WERROR=ON >/dev/null && cmake --build build -j2 || exit 1
+cmake -S . -B build -G Ninja -DTAMIAS_WERROR=ON -DTAMIAS_BUILD_VERIFICATION=ON >/dev/null &&
+    cmake --build build -j2 || exit 1
 mkdir -p reports/data
 rm -f reports/data/*.json
 
