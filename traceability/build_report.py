@@ -120,7 +120,8 @@ def build(args, log=print):
             t["id"] = f"{t['id']}#{n}"
     for p in programs:
         for c in p["checks"]:
-            c["status"] = "passed" if c.get("passed") is True else "failed"
+            c["status"] = ("passed" if c.get("passed") is True
+                           else "target-missed" if c.get("target") else "failed")
     vvdata.render_plots(programs, out, warnings)
 
     res = analysis.analyse(srs, code_sites, tests, config)

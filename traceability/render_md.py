@@ -36,6 +36,12 @@ def render(r):
         for x in g["known_failures"]:
             w(f"- {x}")
         w("")
+    if g.get("targets_missed"):
+        w("**Targets not met (goals beyond the SRS, e.g. the performance issue's speed floors; "
+          "reported, not gating):**\n")
+        for x in g["targets_missed"]:
+            w(f"- {x}")
+        w("")
     s = r["summary"]
     w("## 1. Summary\n")
     w("Items by status: " + ", ".join(f"{k}: {v}" for k, v in s["by_status"].items()) +
