@@ -65,7 +65,7 @@ const std::string performance_target = "issue 7 (performance floors)";
 // box) and sag no more than the best peer on the identical scene.
 constexpr double pyramid20_top_tolerance = 0.05; ///< m, top box displacement from its start
 constexpr double standing_tolerance = 0.5;       ///< m, half of the pyramids' 1 m box
-constexpr double elastic_tolerance = 1e-6;     ///< relative velocity error, and rad/s of spin
+constexpr double elastic_tolerance = 1e-6;       ///< relative velocity error, and rad/s of spin
 
 /// Box2D v3.0's own figures (1 thread, SSE2, float), measured by hand on another machine:
 /// a distance, not a like-for-like comparison.
@@ -183,9 +183,8 @@ Quality assess(const SceneDesc& s, const Engine& e) {
         q.value = std::hypot(top.p.x - start.x, top.p.y - start.y);
         if (!std::isfinite(q.value))
             q.value = INFINITY;
-        q.tamias_ok = q.nonfinite == 0 && q.value < (s.name == "pyramid20"
-                                                         ? pyramid20_top_tolerance
-                                                         : standing_tolerance);
+        q.tamias_ok = q.nonfinite == 0 && q.value < (s.name == "pyramid20" ? pyramid20_top_tolerance
+                                                                           : standing_tolerance);
         q.text = "top box moved " + fmt(q.value) + " m";
         break;
     }
