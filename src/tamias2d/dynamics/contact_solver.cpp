@@ -9,9 +9,11 @@ namespace tamias2d {
 
 namespace {
 
-/// Ratio bound on K's condition for solving two points together (Box2D 2.4 uses 1000 too):
-/// beyond it the two rows are nearly the same constraint and the sequential solve is safer.
-constexpr double max_condition_number = 1000.0;
+/// Ratio bound on K's condition for solving two points together: beyond it the two rows are
+/// nearly the same constraint and the sequential solve is safer. Box2D 2.4 uses 1000 in float;
+/// in double a condition of 1e6 still leaves about ten correct digits, and the exact block
+/// solve is what keeps a two-point bounce energy-conserving (finding E3, docs/verification.md).
+constexpr double max_condition_number = 1.0e6;
 
 Vec2d tangent_of(Vec2d n) {
     return right_perp(n);
@@ -69,20 +71,47 @@ void apply_normal_delta(ContactConstraint& c, int j, SolverBody& a, SolverBody& 
     bridge::apply_impulse(a, b, cp.r_a, cp.r_b, c.normal, delta);
 }
 
+/// The restitution pass clamps the impulse of the whole step, not of the last substep: an
+/// impact's impulse is non-negative over the impact, and only then does the energy balance
+/// sum_j P_j (v_before_j + v_after_j) / 2 hold with the targets chosen in apply_restitution
+/// (an impulse given in an earlier substep can be taken back when the bounce makes it
+/// unnecessary). The warm-start impulse follows the change, kept non-negative.
+void apply_total_delta(ContactConstraint& c, int j, SolverBody& a, SolverBody& b,
+                       double updated_total) {
+    ContactConstraintPoint& cp = c.points[j];
+    const double delta = updated_total - cp.total_normal_impulse;
+    cp.total_normal_impulse = updated_total;
+    cp.normal_impulse = std::max(cp.normal_impulse + delta, 0.0);
+    bridge::apply_impulse(a, b, cp.r_a, cp.r_b, c.normal, delta);
+}
+
+/// Which accumulated impulse the LCP keeps non-negative: the substep's (iterations) or the
+/// step's total (restitution).
+enum class Accumulation { substep, step };
+
 /// Both points at once (the LCP above), for targets t1, t2 with rigid (unscaled) masses.
-void solve_block(ContactConstraint& c, SolverBody& a, SolverBody& b, double t1, double t2) {
+void solve_block(ContactConstraint& c, SolverBody& a, SolverBody& b, double t1, double t2,
+                 Accumulation acc = Accumulation::substep) {
     ContactConstraintPoint& p1 = c.points[0];
     ContactConstraintPoint& p2 = c.points[1];
+    const bool step = acc == Accumulation::step;
+    const double x1 = step ? p1.total_normal_impulse : p1.normal_impulse;
+    const double x2 = step ? p2.total_normal_impulse : p2.normal_impulse;
     const double vn1 = bridge::relative_velocity(a, b, p1.r_a, p1.r_b, c.normal);
     const double vn2 = bridge::relative_velocity(a, b, p2.r_a, p2.r_b, c.normal);
     // b = (velocity the points would have without their accumulated impulses) - target.
-    const double b1 = vn1 - t1 - (c.k11 * p1.normal_impulse + c.k12 * p2.normal_impulse);
-    const double b2 = vn2 - t2 - (c.k12 * p1.normal_impulse + c.k22 * p2.normal_impulse);
+    const double b1 = vn1 - t1 - (c.k11 * x1 + c.k12 * x2);
+    const double b2 = vn2 - t2 - (c.k12 * x1 + c.k22 * x2);
     const TwoPointSolution x =
         solve_two_point_lcp(c.k11, c.k12, c.k22, c.inv_k11, c.inv_k12, c.inv_k22, b1, b2);
     // Apply both deltas from the same state: the result is exact for the linear system.
-    apply_normal_delta(c, 0, a, b, x.x1);
-    apply_normal_delta(c, 1, a, b, x.x2);
+    if (step) {
+        apply_total_delta(c, 0, a, b, x.x1);
+        apply_total_delta(c, 1, a, b, x.x2);
+    } else {
+        apply_normal_delta(c, 0, a, b, x.x1);
+        apply_normal_delta(c, 1, a, b, x.x2);
+    }
 }
 
 } // namespace
@@ -173,27 +202,40 @@ void apply_restitution(std::span<ContactConstraint> constraints, std::span<Solve
     for (ContactConstraint& c : constraints) {
         if (c.restitution == 0.0)
             continue;
-        SolverBody& a = bodies[c.body_a];
-        SolverBody& b = bodies[c.body_b];
-        bool bounce[2] = {false, false};
+        bool pushed[2] = {false, false};
+        bool any_bounce = false;
         double target[2] = {0.0, 0.0};
         for (int j = 0; j < c.count; ++j) {
             const ContactConstraintPoint& cp = c.points[j];
-            bounce[j] =
-                cp.relative_velocity < -st.restitution_threshold && cp.max_normal_impulse > 0.0;
-            target[j] = bridge::separating_normal_velocity(c.restitution, cp.relative_velocity);
+            const double v_before = cp.relative_velocity;
+            pushed[j] = cp.max_normal_impulse > 0.0;
+            const bool bounce = pushed[j] && v_before < -st.restitution_threshold;
+            any_bounce = any_bounce || bounce;
+            // Energy: over the step, the pair's kinetic energy changes by
+            // sum_j P_j (v_before_j + v_after_j) / 2 for the total impulses P_j >= 0. A point
+            // that bounces ends at -C_R v_before (its share is <= 0); a point that was
+            // separating before but took an impulse must end no faster than -v_before (share
+            // 0), or the impulse it received would add energy; a slow point is held at 0.
+            if (bounce)
+                target[j] = bridge::separating_normal_velocity(c.restitution, v_before);
+            else if (v_before > 0.0)
+                target[j] = bridge::separating_normal_velocity(1.0, v_before);
         }
-        if (c.count == 2 && c.use_block && bounce[0] && bounce[1]) {
-            solve_block(c, a, b, target[0], target[1]);
+        if (!any_bounce)
+            continue;
+        SolverBody& a = bodies[c.body_a];
+        SolverBody& b = bodies[c.body_b];
+        if (c.count == 2 && c.use_block && pushed[0] && pushed[1]) {
+            solve_block(c, a, b, target[0], target[1], Accumulation::step);
             continue;
         }
         for (int j = 0; j < c.count; ++j) {
-            if (!bounce[j])
+            if (!pushed[j])
                 continue;
             ContactConstraintPoint& cp = c.points[j];
             const double vn = bridge::relative_velocity(a, b, cp.r_a, cp.r_b, c.normal);
             const double lambda = bridge::impulse_to_reach(vn, target[j], cp.normal_mass);
-            apply_normal_delta(c, j, a, b, std::max(cp.normal_impulse + lambda, 0.0));
+            apply_total_delta(c, j, a, b, std::max(cp.total_normal_impulse + lambda, 0.0));
         }
     }
 }
