@@ -27,7 +27,9 @@ void warm_start_contacts(std::span<ContactConstraint> constraints, std::span<Sol
 /// One iteration: with use_bias the soft, overlap-removing solve; without it the rigid relax.
 void solve_contacts(std::span<ContactConstraint> constraints, std::span<SolverBody> bodies,
                     const ContactSolverSettings& settings, bool use_bias);
-/// DD12: where bodies approached (v_n < -threshold) and pushed, drive v_n to -C_R v_n(before).
+/// DD12: where bodies approached (v_n < -threshold) and pushed, drive v_n to -C_R v_n(before),
+/// solved on the step's total impulses over all manifolds (a few Gauss-Seidel passes) with
+/// targets that keep the step's impulses from adding kinetic energy (docs/verification.md, E1/E3).
 void apply_restitution(std::span<ContactConstraint> constraints, std::span<SolverBody> bodies,
                        const ContactSolverSettings& settings);
 
