@@ -158,7 +158,7 @@ template <class Ops> struct Kernel {
                 c.k22 = Ops::inverse_effective_mass(a, b, p2.r_a, p2.r_b, c.normal);
                 c.k12 = Ops::normal_mass_coupling(a, b, p1.r_a, p1.r_b, p2.r_a, p2.r_b, c.normal);
                 const double det = c.k11 * c.k22 - c.k12 * c.k12;
-                if (c.k11 > 0.0 && c.k22 > 0.0 && c.k11 * c.k11 < 1.0e6 * det) {
+                if (c.k11 > 0.0 && c.k22 > 0.0 && c.k11 * c.k11 < 1000.0 * det) {
                     c.use_block = true;
                     const double inv_det = 1.0 / det;
                     c.inv11 = c.k22 * inv_det;

@@ -33,7 +33,8 @@ struct ContactConstraint {
     /// conditioned: then both points are solved together, exactly.
     double k11 = 0.0, k12 = 0.0, k22 = 0.0;
     double inv_k11 = 0.0, inv_k12 = 0.0, inv_k22 = 0.0;
-    bool use_block = false;
+    bool use_block = false;  ///< the iterations solve the two points as a block
+    bool invertible = false; ///< the restitution pass may (a looser condition bound)
 };
 
 } // namespace tamias2d
