@@ -10,6 +10,16 @@ function(_tamias_test_main)
     target_link_libraries(tamias_test_main PUBLIC Boost::unit_test_framework)
     target_compile_definitions(tamias_test_main PUBLIC BOOST_TEST_DYN_LINK)
   endif()
+  # One precompiled header for every test executable (compiled once, reused): the same flags
+  # as the tests, so that GCC accepts it everywhere.
+  if(NOT TARGET tamias_test_pch AND TAMIAS_TEST_PCH)
+    add_library(tamias_test_pch OBJECT ${PROJECT_SOURCE_DIR}/tests/support/test_pch.cpp)
+    target_link_libraries(tamias_test_pch PRIVATE tamias_test_main tamias2d::tamias2d
+                                                  tamias_warnings)
+    target_include_directories(tamias_test_pch PRIVATE ${PROJECT_SOURCE_DIR}/tests)
+    target_precompile_headers(tamias_test_pch PRIVATE
+                              ${PROJECT_SOURCE_DIR}/tests/support/test_pch.hpp)
+  endif()
 endfunction()
 
 function(tamias_labels_of out)
@@ -35,6 +45,9 @@ function(tamias_add_boost_test target)
   add_executable(${target} ${T_SOURCES})
   target_link_libraries(${target} PRIVATE tamias_test_main tamias2d::tamias2d tamias_warnings ${T_LIBS})
   target_include_directories(${target} PRIVATE ${PROJECT_SOURCE_DIR}/tests)
+  if(TAMIAS_TEST_PCH)
+    target_precompile_headers(${target} REUSE_FROM tamias_test_pch)
+  endif()
   set(abs_sources "")
   foreach(s IN LISTS T_SOURCES)
     get_filename_component(a ${s} ABSOLUTE)
