@@ -152,6 +152,26 @@ BOOST_AUTO_TEST_CASE(speculative_margin, *utf::label("T5")) {
     BOOST_TEST(none.count == 0);
 }
 
+// Oracle: geometry of two aligned unit boxes 0.03 m apart (finding O3): the gap is the face
+// separation along x, the faces overlap over y in [-0.5, 0.5], so the speculative manifold has
+// two points, at y = -0.5 and 0.5, each 0.03 m apart, normal +x (A4), not a single corner point.
+BOOST_AUTO_TEST_CASE(parallel_faces_apart_give_two_points, *utf::label("LC1") * utf::label("T5")) {
+    const Geometry box = to_geometry(make_box(0.5, 0.5));
+    for (const double dy : {0.0, 0.2}) { // exactly aligned, and offset along the faces
+        const Manifold m = collide(box, box, input(at(0, 0), at(1.03, dy), 0.05));
+        BOOST_TEST_REQUIRE(m.count == 2);
+        BOOST_TEST(m.normal.x == 1.0);
+        BOOST_TEST(m.normal.y == 0.0);
+        std::set<double> ys;
+        for (int i = 0; i < 2; ++i) {
+            BOOST_TEST(m.points[i].separation == 0.03, tt::tolerance(1e-9));
+            ys.insert(m.points[i].point.y);
+        }
+        BOOST_TEST(*ys.begin() == -0.5 + dy, tt::tolerance(1e-12));
+        BOOST_TEST(*ys.rbegin() == 0.5, tt::tolerance(1e-12));
+    }
+}
+
 // Oracle: LC1 (edge-to-edge): a box resting face down on a wider box touches along a
 // segment; the manifold has two points, at its ends, midway through the overlap.
 BOOST_AUTO_TEST_CASE(edge_edge_gives_two_points, *utf::label("LC1")) {

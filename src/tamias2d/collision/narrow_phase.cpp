@@ -236,13 +236,16 @@ Manifold collide_polygons(const Polygon& a, const Polygon& b, const CollideInput
 
     if (std::max(sep_a, sep_b) > tol) {
         // Apart: if the closest features are two vertices, the face normal would understate
-        // the gap; report one point along the true vertex-vertex direction instead.
+        // the gap; report one point along the true vertex-vertex direction instead. Two
+        // parallel faces that overlap along the tangent also end at vertices (the closest pair
+        // is not unique) but their gap is the face separation: they are a face contact, and
+        // clipping below gives both points (finding O3, docs/verification.md).
         const SegmentDistance sd = segment_distance(v11, v12, v21, v22);
         const bool ref_vertex = sd.fraction1 == 0.0 || sd.fraction1 == 1.0;
         const bool inc_vertex = sd.fraction2 == 0.0 || sd.fraction2 == 1.0;
-        if (ref_vertex && inc_vertex) {
-            const double dist = std::sqrt(sd.distance_squared);
-            if (!(dist < in.margin) || !(dist > 0.0))
+        const double dist = std::sqrt(sd.distance_squared);
+        if (ref_vertex && inc_vertex && dist > std::max(sep_a, sep_b) + tol) {
+            if (!(dist < in.margin))
                 return m;
             const Vec2d g = (sd.closest2 - sd.closest1) / dist; // reference -> incident
             const int ri = sd.fraction1 == 0.0 ? i11 : i12;
