@@ -257,7 +257,8 @@ are labelled with are judged by their other checks:<ul>{lis}</ul></div>""")
         self.w('</tbody></table>')
         self.w('<h3>Tests and checks</h3><table class="data"><thead><tr><th>Origin</th>'
                '<th class="num">Total</th><th class="num">Passed</th><th class="num">Failed</th>'
-               '<th class="num">Error</th><th class="num">Skipped</th><th class="num">Not run</th></tr></thead><tbody>')
+               '<th class="num">Error</th><th class="num">Skipped</th><th class="num">Not run</th>'
+               '<th class="num">Known failure</th><th class="num">Target missed</th></tr></thead><tbody>')
         names = {"boost": "Boost.Test cases (per test case, from JUnit)",
                  "ctest": "Other CTest entries (compile-fail, checker, CLI, examples)",
                  "verification": "Verification-program checks (reports/data/*.json)"}
@@ -266,7 +267,8 @@ are labelled with are judged by their other checks:<ul>{lis}</ul></div>""")
             self.w(f'<tr><td>{E(names[origin])}</td><td class="num">{t.get("total", 0)}</td>'
                    f'<td class="num">{t.get("passed", 0)}</td><td class="num">{t.get("failed", 0)}</td>'
                    f'<td class="num">{t.get("error", 0)}</td><td class="num">{t.get("skipped", 0)}</td>'
-                   f'<td class="num">{t.get("notrun", 0)}</td></tr>')
+                   f'<td class="num">{t.get("notrun", 0)}</td><td class="num">{t.get("known-failure", 0)}</td>'
+                   f'<td class="num">{t.get("target-missed", 0)}</td></tr>')
         self.w('</tbody></table>')
         c = s["counts"]
         self.w('<ul class="compact">'

@@ -49,9 +49,11 @@ def render(r):
     w(_table(["Kind", "Name", "Items", "Verified", "Failing", "Untested", "Not impl.", "With code", "With tests", "Verified %"],
              [[k["kind"], k["name"], k["total"], k["verified"], k["failing"], k["untested"],
                k["not implemented"], k["with_code"], k["with_tests"], k["verified_percent"]] for k in s["by_kind"]]))
-    w(_table(["Origin", "Total", "Passed", "Failed", "Error", "Skipped", "Not run"],
+    w(_table(["Origin", "Total", "Passed", "Failed", "Error", "Skipped", "Not run", "Known failure",
+              "Target missed"],
              [[o, t.get("total", 0), t.get("passed", 0), t.get("failed", 0), t.get("error", 0),
-               t.get("skipped", 0), t.get("notrun", 0)] for o, t in sorted(s["tests"].items())]))
+               t.get("skipped", 0), t.get("notrun", 0), t.get("known-failure", 0),
+               t.get("target-missed", 0)] for o, t in sorted(s["tests"].items())]))
     tests = {t["id"]: t for t in r["tests"]}
     w("## 2. Items\n")
     w(_table(["Label", "Kind", "Alias", "Title", "Status", "Code sites", "Tests (status)", "Errata"],

@@ -60,6 +60,7 @@ class FixtureReport(unittest.TestCase):
         gate = self.report["gate"]
         self.assertEqual(gate["targets_missed"], ["peer_compare:speed_floor_2x_peer"])
         self.assertNotIn("peer_compare:speed_floor_2x_peer", gate["failing_tests"])
+        self.assertEqual(self.report["summary"]["tests"]["verification"].get("target-missed"), 1)
 
     def test_item_statuses(self):
         expected = {
