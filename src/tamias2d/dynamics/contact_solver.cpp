@@ -10,11 +10,11 @@ namespace tamias2d {
 namespace {
 
 /// Bounds on K's condition for solving two points together; beyond them the two rows are nearly
-/// the same constraint and the sequential solve is used. The iterations keep Box2D 2.4's 1000:
-/// they repeat every substep, and a stack's two points near that bound are better served by the
-/// sequential solve's damping. The restitution pass runs once per step and must be exact for
-/// a two-point bounce to conserve energy (finding E3, docs/verification.md: seed 2000114 has
-/// a condition of 1408); in double a condition of 1e6 still leaves about ten correct digits.
+/// the same constraint and the sequential solve is used. The iterations keep Box2D 2.4's 1000
+/// (1e6 there changed the rain scene enough for two boxes to splash over its wall, finding O3).
+/// The restitution pass must be exact for a two-point bounce to conserve energy (finding E3,
+/// docs/verification.md: seed 2000114 has a condition of 1408); in double a condition of 1e6
+/// still leaves about ten correct digits.
 constexpr double max_condition_number = 1.0e3;
 constexpr double max_restitution_condition_number = 1.0e6;
 
@@ -82,7 +82,7 @@ void apply_normal_delta(ContactConstraint& c, int j, SolverBody& a, SolverBody& 
 
 /// The restitution pass clamps the impulse of the whole step, not of the last substep: an
 /// impact's impulse is non-negative over the impact, and only then does the energy balance
-/// sum_j P_j (v_before_j + v_after_j) / 2 hold with the targets chosen in apply_restitution
+/// sum_j P_j (v_before_j + v_after_j) / 2 hold with the targets chosen in restitute()
 /// (an impulse given in an earlier substep can be taken back when the bounce makes it
 /// unnecessary). The warm-start impulse is left alone: the bounce belongs to this step's
 /// impact, and warm-started into the next step a soft iteration would not take all of it back
