@@ -92,7 +92,9 @@ class World {
     Vec2d linear_momentum() const;   ///< N s, GD1
 
     // --- contacts (R7) and queries ---
-    /// Touching pairs after the last step, in a deterministic order.
+    /// Touching pairs after the last step (less those of shapes destroyed since), in a
+    /// deterministic order. Built on the first call after a step; not safe to call from two
+    /// threads at once (nothing in World is).
     std::span<const ContactInfo> contacts() const;
     std::span<const ContactEvent> contact_begin_events() const;
     std::span<const ContactEvent> contact_end_events() const;

@@ -76,6 +76,29 @@ BOOST_AUTO_TEST_CASE(create_and_destroy, *utf::label("R1")) {
     BOOST_TEST(world.body_count() == 24u);
 }
 
+// Oracle: the contact report's contract (world.hpp): after a destruction it lists no contact of
+// the destroyed body, whether or not it was read before; it always names live bodies only.
+BOOST_AUTO_TEST_CASE(contact_report_follows_destruction, *utf::label("R1") * utf::label("R7")) {
+    for (const bool read_before : {false, true}) {
+        World world;
+        build_pile(world);
+        for (int i = 0; i < 120; ++i)
+            world.step(1.0 / 60.0);
+        if (read_before)
+            BOOST_TEST_REQUIRE(!world.contacts().empty());
+        BodyId ground{};
+        for (BodyId b : world.bodies()) {
+            if (world.type(b) == BodyType::static_body)
+                ground = b;
+        }
+        world.destroy_body(ground);
+        for (const ContactInfo& c : world.contacts()) {
+            BOOST_TEST(world.is_valid(c.body_a));
+            BOOST_TEST(world.is_valid(c.body_b));
+        }
+    }
+}
+
 // Oracle: determinism by construction: the same input gives bitwise the same state (equal
 // state hashes after every step of two independent runs).
 BOOST_AUTO_TEST_CASE(bitwise_deterministic, *utf::label("R1") * utf::label("R8")) {
