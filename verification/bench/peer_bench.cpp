@@ -40,12 +40,14 @@
 #include "bench_engines.hpp"
 #include "bench_scenes.hpp"
 #include "typing_kernel.hpp"
+#include "verification_report.hpp"
 
 namespace {
 
 using namespace tamias_bench;
 using json = nlohmann::ordered_json;
 using Clock = std::chrono::steady_clock;
+using tamias2d::evidence::fmt;
 
 // ---------------------------------------------------------------------------- thresholds
 // NFR1 as the SRS states it ("comparable to Pymunk", read per erratum E56): on every scene,
@@ -161,12 +163,6 @@ struct Quality {
 bool finite(const Probe& p) {
     return std::isfinite(p.p.x) && std::isfinite(p.p.y) && std::isfinite(p.v.x) &&
            std::isfinite(p.v.y) && std::isfinite(p.w);
-}
-
-std::string fmt(double v, int prec = 3) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.*g", prec, v);
-    return buf;
 }
 
 Quality assess(const SceneDesc& s, const Engine& e) {
@@ -690,16 +686,9 @@ int main(int argc, char** argv) {
     const auto add_check = [&](std::string name, std::vector<std::string> labels, bool passed,
                                std::string oracle, std::string details,
                                const std::string& target = {}) {
-        json c = {{"name", std::move(name)},
-                  {"labels", std::move(labels)},
-                  {"passed", passed},
-                  {"oracle", std::move(oracle)},
-                  {"details", std::move(details)}};
-        // A target is a goal beyond the SRS: the report lists it met or missed, apart from the
-        // checks that verify SRS items (docs/traceability.md).
-        if (!target.empty())
-            c["target"] = target;
-        checks.push_back(std::move(c));
+        checks.push_back(tamias2d::evidence::check_entry<json>(std::move(name), std::move(labels),
+                                                               passed, std::move(oracle),
+                                                               std::move(details), target));
     };
     if (have_tamias) {
         for (const SceneResult& r : results) {

@@ -19,10 +19,13 @@
 #include <nlohmann/json.hpp>
 
 #include "gsl_reference/gsl_reference.hpp"
+#include "verification_report.hpp"
 
 using json = nlohmann::json;
 using namespace tamias2d;
 using namespace tamias2d::verification;
+using tamias2d::evidence::fmt;
+using tamias2d::evidence::Report;
 
 namespace {
 
@@ -32,31 +35,6 @@ constexpr double order_lo = 0.9, order_hi = 1.1;
 constexpr double exact_tol = 1e-10;
 /// The reference must match the closed forms of the smooth loads to this (m, m s^-1, rad).
 constexpr double reference_tol = 1e-9;
-
-std::string fmt(double v, int prec = 3) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.*g", prec, v);
-    return buf;
-}
-
-struct Report {
-    json checks = json::array();
-    json tables = json::array();
-    json series = json::array();
-    int failures = 0;
-    void check(std::string name, std::vector<std::string> labels, bool passed, std::string oracle,
-               std::string details) {
-        if (!passed) {
-            ++failures;
-            std::cerr << "FAILED: " << name << ": " << details << "\n";
-        }
-        checks.push_back({{"name", std::move(name)},
-                          {"labels", labels},
-                          {"passed", passed},
-                          {"oracle", std::move(oracle)},
-                          {"details", std::move(details)}});
-    }
-};
 
 } // namespace
 
@@ -237,18 +215,10 @@ int main(int argc, char** argv) {
                           {"log_y", true},
                           {"lines", phi_lines}});
 
-    json doc = {{"program", "gsl_reference"},
-                {"description",
-                 "IM1 and IM2 under time-varying loads (sinusoidal, step, ramp; gravity off and "
-                 "on) against GSL rk8pd reference solutions; observed order of convergence of "
-                 "the engine (semi-implicit Euler, 4 substeps, load sampled at step starts) for "
-                 "dt = 1/30 ... 1/960 s, required in [0.9, 1.1] (theoretical order 1)."},
-                {"checks", rep.checks},
-                {"tables", rep.tables},
-                {"series", rep.series}};
-    std::filesystem::create_directories(out_dir);
-    std::ofstream(out_dir / "gsl_reference.json") << doc.dump(2) << "\n";
-    std::cout << rep.checks.size() << " checks, " << rep.failures << " failed; wrote "
-              << (out_dir / "gsl_reference.json").string() << "\n";
-    return rep.failures == 0 ? 0 : 1;
+    return rep.write(
+        out_dir, "gsl_reference",
+        "IM1 and IM2 under time-varying loads (sinusoidal, step, ramp; gravity off and "
+        "on) against GSL rk8pd reference solutions; observed order of convergence of "
+        "the engine (semi-implicit Euler, 4 substeps, load sampled at step starts) for "
+        "dt = 1/30 ... 1/960 s, required in [0.9, 1.1] (theoretical order 1).");
 }

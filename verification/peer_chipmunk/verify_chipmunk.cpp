@@ -23,38 +23,15 @@
 
 #include "peer_chipmunk/peer_scenes.hpp"
 #include "properties/random_scenes.hpp"
+#include "verification_report.hpp"
 
 using json = nlohmann::json;
 using namespace tamias2d;
 using namespace tamias2d::peer;
+using tamias2d::evidence::fmt;
+using tamias2d::evidence::Report;
 
 namespace {
-
-std::string fmt(double v, int prec = 3) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.*g", prec, v);
-    return buf;
-}
-
-struct Report {
-    json checks = json::array();
-    json tables = json::array();
-    json series = json::array();
-    int failures = 0;
-    void check(std::string name, std::vector<std::string> labels, bool passed, std::string oracle,
-               std::string details) {
-        if (!passed) {
-            ++failures;
-            std::cerr << "FAILED: " << name << ": " << details << "\n";
-        }
-        std::cout << (passed ? "ok   " : "FAIL ") << name << ": " << details << "\n";
-        checks.push_back({{"name", std::move(name)},
-                          {"labels", labels},
-                          {"passed", passed},
-                          {"oracle", std::move(oracle)},
-                          {"details", std::move(details)}});
-    }
-};
 
 /// Velocities after a collision from the closed forms, for scene a (and b).
 struct Expected {
@@ -407,17 +384,9 @@ int main(int argc, char** argv) {
                           {"log_y", false},
                           {"lines", energy_lines}});
 
-    json doc = {{"program", "chipmunk_comparison"},
-                {"description",
-                 "Tamias2D against Chipmunk2D 7.0.3 (the engine of Pymunk, SRS NFR2) on the same "
-                 "scenes: integrators step for step, single collisions against IM3/DD8/DD12, a "
-                 "dropped ball, a stack and a pile. See docs/peer-differences.md."},
-                {"checks", rep.checks},
-                {"tables", rep.tables},
-                {"series", rep.series}};
-    std::filesystem::create_directories(out_dir);
-    std::ofstream(out_dir / "chipmunk_comparison.json") << doc.dump(2) << "\n";
-    std::cout << rep.checks.size() << " checks, " << rep.failures << " failed; wrote "
-              << (out_dir / "chipmunk_comparison.json").string() << "\n";
-    return rep.failures == 0 ? 0 : 1;
+    return rep.write(out_dir, "chipmunk_comparison",
+                     "Tamias2D against Chipmunk2D 7.0.3 (the engine of Pymunk, SRS NFR2) on the "
+                     "same scenes: integrators step for step, single collisions against "
+                     "IM3/DD8/DD12, a dropped ball, a stack and a pile. See "
+                     "docs/peer-differences.md.");
 }
