@@ -197,20 +197,22 @@ Every {E('/'.join(g['gated_kinds']))} item has a passing test and no test or che
             self.w(f"""<div class="gate fail" id="gate"><h2>Gate: FAIL (exit status {g['exit_code']})</h2>
 The harness exits non-zero when any {E('/'.join(g['gated_kinds']))} item lacks a passing test or
 any test or check fails. This report is complete nonetheless; the reasons are:<ul>{lis}</ul></div>""")
-        if g.get("known_failures"):
-            lis = "".join(f"<li>{self._linkify_tests(E(x), g['known_failures'])}</li>"
-                          for x in g["known_failures"])
-            self.w(f"""<div class="gate fail" id="known-failures"><h2>Known failures (documented findings)</h2>
-These tests pass only because they declare their failing cases as expected (Boost
+        self._test_list_box("known-failures", "Known failures (documented findings)",
+                            """These tests pass only because they declare their failing cases as expected (Boost
 <code>expected_failures</code>); each failing case is a finding described in
-docs/verification.md, printed with its seed so it can be replayed:<ul>{lis}</ul></div>""")
-        if g.get("targets_missed"):
-            lis = "".join(f"<li>{self._linkify_tests(E(x), g['targets_missed'])}</li>"
-                          for x in g["targets_missed"])
-            self.w(f"""<div class="gate fail" id="targets-missed"><h2>Targets not met (goals beyond the SRS)</h2>
-These verification checks state project goals beyond the SRS (the performance issue's speed
+docs/verification.md, printed with its seed so it can be replayed:""", g.get("known_failures"))
+        self._test_list_box("targets-missed", "Targets not met (goals beyond the SRS)",
+                            """These verification checks state project goals beyond the SRS (the performance issue's speed
 floors); this run did not reach them. They do not gate the exit status, and the SRS items they
-are labelled with are judged by their other checks:<ul>{lis}</ul></div>""")
+are labelled with are judged by their other checks:""", g.get("targets_missed"))
+
+    def _test_list_box(self, anchor, title, intro, ids):
+        """A box under the gate listing tests (linked) with a heading and an explanation."""
+        if not ids:
+            return
+        lis = "".join(f"<li>{self._linkify_tests(E(x), ids)}</li>" for x in ids)
+        self.w(f"""<div class="gate fail" id="{anchor}"><h2>{E(title)}</h2>
+{intro}<ul>{lis}</ul></div>""")
 
     def _linkify_tests(self, text, ids):
         for tid in ids:

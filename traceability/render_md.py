@@ -23,25 +23,22 @@ def render(r):
       f"{' (dirty tree)' if src.get('git_dirty') else ''} · "
       f"{'tests run' if r['inputs']['ran_tests'] else 'pre-recorded results'} · schema {r['schema_version']}\n")
     g = r["gate"]
+    def bullets(heading, lines):
+        w(heading + "\n")
+        for x in lines:
+            w(f"- {x}")
+        w("")
+
     if g["passed"]:
         w("**Gate: PASS (exit 0).** Every R/IM/TM/GD/DD item has a passing test and nothing fails.\n")
     else:
-        w(f"**Gate: FAIL (exit {g['exit_code']}).** Reasons:\n")
-        for x in g["reasons"]:
-            w(f"- {x}")
-        w("")
+        bullets(f"**Gate: FAIL (exit {g['exit_code']}).** Reasons:", g["reasons"])
     if g.get("known_failures"):
-        w("**Known failures (documented findings, docs/verification.md; declared with Boost's "
-          "expected_failures):**\n")
-        for x in g["known_failures"]:
-            w(f"- {x}")
-        w("")
+        bullets("**Known failures (documented findings, docs/verification.md; declared with "
+                "Boost's expected_failures):**", g["known_failures"])
     if g.get("targets_missed"):
-        w("**Targets not met (goals beyond the SRS, e.g. the performance issue's speed floors; "
-          "reported, not gating):**\n")
-        for x in g["targets_missed"]:
-            w(f"- {x}")
-        w("")
+        bullets("**Targets not met (goals beyond the SRS, e.g. the performance issue's speed "
+                "floors; reported, not gating):**", g["targets_missed"])
     s = r["summary"]
     w("## 1. Summary\n")
     w("Items by status: " + ", ".join(f"{k}: {v}" for k, v in s["by_status"].items()) +
