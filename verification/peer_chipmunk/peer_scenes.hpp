@@ -484,6 +484,29 @@ inline void finish(SettledFigures& f) {
     f.mean_height = f.heights.empty() ? 0.0 : sum / double(f.heights.size());
 }
 
+/// Steps either engine's world `w` through the scene, sampling the total energy once a second,
+/// and collects the settled figures: each body's height and the contact count at the end.
+template <class W, class Id, class Height, class Contacts>
+SettledFigures run_settling(W& w, const SettleScene& sc, const std::vector<Id>& ids, Height height,
+                            Contacts contacts) {
+    SettledFigures f;
+    const int steps = int(std::lround(sc.seconds / sc.dt));
+    const int per_second = int(std::lround(1.0 / sc.dt));
+    for (int n = 0; n <= steps; ++n) {
+        if (n > 0)
+            w.step(sc.dt);
+        if (n % per_second == 0)
+            f.energy.push_back(w.kinetic_energy() + w.potential_energy());
+    }
+    for (const Id& b : ids)
+        f.heights.push_back(height(b));
+    f.kinetic = w.kinetic_energy();
+    f.potential = w.potential_energy();
+    f.contacts = contacts();
+    finish(f);
+    return f;
+}
+
 inline SettledFigures settle_tamias(const SettleScene& sc) {
     World w(WorldDef{});
     const double hw = sc.half_width;
@@ -497,22 +520,9 @@ inline SettledFigures settle_tamias(const SettleScene& sc) {
     std::vector<BodyId> ids;
     for (const BodyDesc& d : sc.bodies)
         ids.push_back(add_tamias(w, d));
-    SettledFigures f;
-    const int steps = int(std::lround(sc.seconds / sc.dt));
-    const int per_second = int(std::lround(1.0 / sc.dt));
-    for (int n = 0; n <= steps; ++n) {
-        if (n > 0)
-            w.step(sc.dt);
-        if (n % per_second == 0)
-            f.energy.push_back(w.kinetic_energy() + w.potential_energy());
-    }
-    for (BodyId b : ids)
-        f.heights.push_back(w.position(b).y);
-    f.kinetic = w.kinetic_energy();
-    f.potential = w.potential_energy();
-    f.contacts = int(w.contacts().size());
-    finish(f);
-    return f;
+    return run_settling(
+        w, sc, ids, [&](BodyId b) { return w.position(b).y; },
+        [&] { return int(w.contacts().size()); });
 }
 
 inline SettledFigures settle_chipmunk(const SettleScene& sc) {
@@ -527,22 +537,9 @@ inline SettledFigures settle_chipmunk(const SettleScene& sc) {
     std::vector<cpBody*> ids;
     for (const BodyDesc& d : sc.bodies)
         ids.push_back(w.add(d));
-    SettledFigures f;
-    const int steps = int(std::lround(sc.seconds / sc.dt));
-    const int per_second = int(std::lround(1.0 / sc.dt));
-    for (int n = 0; n <= steps; ++n) {
-        if (n > 0)
-            w.step(sc.dt);
-        if (n % per_second == 0)
-            f.energy.push_back(w.kinetic_energy() + w.potential_energy());
-    }
-    for (cpBody* b : ids)
-        f.heights.push_back(cpBodyGetPosition(b).y);
-    f.kinetic = w.kinetic_energy();
-    f.potential = w.potential_energy();
-    f.contacts = w.contact_count();
-    finish(f);
-    return f;
+    return run_settling(
+        w, sc, ids, [](cpBody* b) { return cpBodyGetPosition(b).y; },
+        [&] { return w.contact_count(); });
 }
 
 /// A stack of `n` boxes of side `s` (1 kg each) resting on the floor, friction mu.

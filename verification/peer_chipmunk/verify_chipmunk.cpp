@@ -287,14 +287,17 @@ int main(int argc, char** argv) {
                      "potential energy (J)", "touching pairs"}},
                    {"rows", json::array()}};
     json energy_lines = json::array();
+    // Both engines on one scene, each one's summary row added to the table.
+    const auto settle_both = [&](const SettleScene& sc) {
+        std::pair<SettledFigures, SettledFigures> tc{settle_tamias(sc), settle_chipmunk(sc)};
+        for (const auto& [engine, f] : {std::pair{"Tamias", &tc.first}, {"Chipmunk", &tc.second}})
+            stable["rows"].push_back({sc.name, engine, f->mean_height, f->max_height, f->kinetic,
+                                      f->potential, f->contacts});
+        return tc;
+    };
     {
         const SettleScene sc = stack_scene(6, 0.5, 0.6);
-        const SettledFigures t = settle_tamias(sc);
-        const SettledFigures c = settle_chipmunk(sc);
-        stable["rows"].push_back(
-            {sc.name, "Tamias", t.mean_height, t.max_height, t.kinetic, t.potential, t.contacts});
-        stable["rows"].push_back(
-            {sc.name, "Chipmunk", c.mean_height, c.max_height, c.kinetic, c.potential, c.contacts});
+        const auto [t, c] = settle_both(sc);
         // Box k rests on k + 1 contacts. Under a weight W a contact overlaps by at most its slop
         // (0.005 m in both engines) plus its static deflection: Tamias's soft contact is a spring
         // of stiffness m_eff omega^2 (omega = 2 pi contact_hertz), so W / (m_eff omega^2), with
@@ -329,12 +332,7 @@ int main(int argc, char** argv) {
     }
     {
         const SettleScene sc = pile_scene(30);
-        const SettledFigures t = settle_tamias(sc);
-        const SettledFigures c = settle_chipmunk(sc);
-        stable["rows"].push_back(
-            {sc.name, "Tamias", t.mean_height, t.max_height, t.kinetic, t.potential, t.contacts});
-        stable["rows"].push_back(
-            {sc.name, "Chipmunk", c.mean_height, c.max_height, c.kinetic, c.potential, c.contacts});
+        const auto [t, c] = settle_both(sc);
         std::vector<double> secs;
         for (std::size_t k = 0; k < t.energy.size(); ++k)
             secs.push_back(double(k));
