@@ -125,10 +125,11 @@ void solve_block(ContactConstraint& c, SolverBody& a, SolverBody& b, double t1, 
 }
 
 /// DD12 for one manifold: each pushed point driven to its energy-safe target (see below).
-void restitute(ContactConstraint& c, std::span<SolverBody> bodies,
+/// Returns whether the manifold bounces (false: nothing was applied).
+bool restitute(ContactConstraint& c, std::span<SolverBody> bodies,
                const ContactSolverSettings& st) {
     if (c.restitution == 0.0)
-        return;
+        return false;
     bool pushed[2] = {false, false};
     bool any_bounce = false;
     double target[2] = {0.0, 0.0};
@@ -149,12 +150,12 @@ void restitute(ContactConstraint& c, std::span<SolverBody> bodies,
             target[j] = bridge::separating_normal_velocity(1.0, v_before);
     }
     if (!any_bounce)
-        return;
+        return false;
     SolverBody& a = bodies[c.body_a];
     SolverBody& b = bodies[c.body_b];
     if (c.count == 2 && c.invertible && pushed[0] && pushed[1]) {
         solve_block(c, a, b, target[0], target[1], Accumulation::step);
-        return;
+        return true;
     }
     for (int j = 0; j < c.count; ++j) {
         if (!pushed[j])
@@ -164,6 +165,7 @@ void restitute(ContactConstraint& c, std::span<SolverBody> bodies,
         const double lambda = bridge::impulse_to_reach(vn, target[j], cp.normal_mass);
         apply_total_delta(c, j, a, b, std::max(cp.total_normal_impulse + lambda, 0.0));
     }
+    return true;
 }
 
 } // namespace
@@ -254,8 +256,11 @@ void solve_contacts(std::span<ContactConstraint> constraints, std::span<SolverBo
 void apply_restitution(std::span<ContactConstraint> constraints, std::span<SolverBody> bodies,
                        const ContactSolverSettings& st) {
     for (int pass = 0; pass < restitution_iterations; ++pass) {
+        bool bounced = false;
         for (ContactConstraint& c : constraints)
-            restitute(c, bodies, st);
+            bounced = restitute(c, bodies, st) || bounced;
+        if (!bounced) // the same manifolds bounce in every pass: none now, none later
+            break;
     }
 }
 
