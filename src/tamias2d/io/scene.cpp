@@ -604,7 +604,7 @@ std::vector<SceneBody> parse_generator(Ctx& ctx, const ojson& v, const std::stri
             PyramidParams p;
             if (!name.empty())
                 p.name = name;
-            p.base = gen_int(ctx, v, ptr, "base", p.base, 1, 500);
+            p.base = gen_int(ctx, v, ptr, "base", p.base, 1, PyramidParams::max_base);
             opt_number(ctx, v, ptr, "box", p.box);
             opt_number(ctx, v, ptr, "gap", p.gap);
             opt_vec2(ctx, v, ptr, "origin", p.origin);
@@ -622,7 +622,7 @@ std::vector<SceneBody> parse_generator(Ctx& ctx, const ojson& v, const std::stri
             RainParams p;
             if (!name.empty())
                 p.name = name;
-            p.count = gen_int(ctx, v, ptr, "count", p.count, 0, 200000);
+            p.count = gen_int(ctx, v, ptr, "count", p.count, 0, RainParams::max_count);
             opt_number(ctx, v, ptr, "box", p.box);
             opt_number(ctx, v, ptr, "spacing", p.spacing);
             opt_number(ctx, v, ptr, "jitter", p.jitter);

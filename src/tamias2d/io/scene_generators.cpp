@@ -69,7 +69,7 @@ double SplitMix64::uniform() {
 }
 
 std::vector<SceneBody> generate_pyramid(const PyramidParams& p) {
-    require_count("base", p.base, 1, 500);
+    require_count("base", p.base, 1, PyramidParams::max_base);
     require_length("box", p.box);
     require_finite("gap", p.gap);
     if (!(p.gap >= 0.0))
@@ -112,7 +112,7 @@ std::vector<SceneBody> generate_pyramid(const PyramidParams& p) {
 }
 
 std::vector<SceneBody> generate_rain(const RainParams& p) {
-    require_count("count", p.count, 0, 200000);
+    require_count("count", p.count, 0, RainParams::max_count);
     require_length("box", p.box);
     const double spacing = p.spacing == 0.0 ? 1.5 * p.box : p.spacing;
     const double jitter = p.jitter < 0.0 ? 0.2 * p.box : p.jitter;

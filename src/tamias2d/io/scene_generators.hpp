@@ -18,13 +18,14 @@ namespace tamias2d::io {
 /// face is at origin.y. Rows and neighbours start `gap` apart so the stack settles cleanly:
 /// row r (0 at the bottom) is centred at y = origin.y + gap + box / 2 + r (box + gap).
 struct PyramidParams {
-    std::string name = "pyramid"; ///< body names: "<name>/ground", "<name>/r<row>c<col>"
-    int base = 20;                ///< boxes in the bottom row, in [1, 500] (125 250 boxes)
-    double box = 1.0;             ///< m, box side (> 0)
-    double gap = 0.001;           ///< m, between neighbours and between rows (>= 0)
-    Vec2d origin{};               ///< m, centre of the ground's top face
-    double ground_width = 0.0;    ///< m, 0: automatic (2 base box + 10 box)
-    double ground_height = 0.0;   ///< m, 0: automatic (box)
+    std::string name = "pyramid";        ///< body names: "<name>/ground", "<name>/r<row>c<col>"
+    static constexpr int max_base = 500; ///< 125 250 boxes
+    int base = 20;                       ///< boxes in the bottom row, in [1, max_base]
+    double box = 1.0;                    ///< m, box side (> 0)
+    double gap = 0.001;                  ///< m, between neighbours and between rows (>= 0)
+    Vec2d origin{};                      ///< m, centre of the ground's top face
+    double ground_width = 0.0;           ///< m, 0: automatic (2 base box + 10 box)
+    double ground_height = 0.0;          ///< m, 0: automatic (box)
     Material material{1.0, 0.0, 0.6};
 };
 std::vector<SceneBody> generate_pyramid(const PyramidParams& p);
@@ -44,11 +45,12 @@ struct ContainerParams {
 /// the same on every platform). Bodies: the container first, then the boxes row by row.
 struct RainParams {
     std::string name = "rain"; ///< body names: "<name>/container", "<name>/<index>"
-    int count = 2000;          ///< boxes, in [0, 200000]
-    double box = 0.5;          ///< m, box side (> 0)
-    double spacing = 0.0;      ///< m, grid pitch; 0: automatic (1.5 box); must exceed box
-    double jitter = -1.0;      ///< m, < 0: automatic (0.2 box); 2 jitter < spacing - box
-    double drop_height = 1.0;  ///< m, clearance between the walls' top and the lowest row
+    static constexpr int max_count = 200000;
+    int count = 2000;         ///< boxes, in [0, max_count]
+    double box = 0.5;         ///< m, box side (> 0)
+    double spacing = 0.0;     ///< m, grid pitch; 0: automatic (1.5 box); must exceed box
+    double jitter = -1.0;     ///< m, < 0: automatic (0.2 box); 2 jitter < spacing - box
+    double drop_height = 1.0; ///< m, clearance between the walls' top and the lowest row
     std::uint64_t seed = 1;
     ContainerParams container{};
     Material material{1.0, 0.0, 0.6};
