@@ -13,6 +13,7 @@
 #include "tamias2d/dynamics/contact_solver.hpp"
 #include "tamias2d/dynamics/model_bridge.hpp"
 #include "tamias2d/dynamics/shape.hpp"
+#include "tamias2d/dynamics/wide_contact_solver.hpp"
 #include "tamias2d/errors.hpp"
 #include "tamias2d/geometry/mass_properties.hpp"
 #include "tamias2d/geometry/shape_aabb.hpp"
@@ -49,6 +50,7 @@ struct World::Impl {
     std::vector<Vec2d> accelerations;
     std::vector<double> angular_accelerations;
     std::vector<ContactConstraint> constraints;
+    WideContactSolver wide_solver;
     // The contact report is built when first asked for after a step or a destruction: most
     // steps of a game never read it, and copying every contact out each step cost a few
     // percent of a pile's step.
@@ -254,6 +256,7 @@ struct World::Impl {
             }
         }
         prepare_contacts(constraints, solver_bodies);
+        wide_solver.load(constraints, solver_bodies.size());
 
         ContactSolverSettings st;
         st.inv_h = 1.0 / h;
@@ -272,16 +275,17 @@ struct World::Impl {
                 sb.v += bridge::velocity_change(accelerations[k], h);
                 sb.w += bridge::angular_velocity_change(angular_accelerations[k], h);
             }
-            warm_start_contacts(constraints, solver_bodies);
-            solve_contacts(constraints, solver_bodies, st, true);
+            wide_solver.warm_start(solver_bodies);
+            wide_solver.solve(solver_bodies, st, true);
             // IM1/IM2, position half with the new velocities (DD3, DD6).
             for (std::size_t k = 1; k < nb; ++k) {
                 SolverBody& sb = solver_bodies[k];
                 sb.dp += bridge::displacement(sb.v, h);
                 sb.dq += bridge::rotation(sb.w, h);
             }
-            solve_contacts(constraints, solver_bodies, st, false);
+            wide_solver.solve(solver_bodies, st, false);
         }
+        wide_solver.store(constraints);
         // \srs{R8} Post-collision velocities (and, integrated, positions) of colliding bodies.
         apply_restitution(constraints, solver_bodies, st);
 

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
+#include "tamias2d/dynamics/contact_iteration.hpp"
 #include "tamias2d/dynamics/model_bridge.hpp"
-#include "tamias2d/dynamics/two_point_lcp.hpp"
 
 namespace tamias2d {
 
@@ -24,62 +24,6 @@ constexpr double max_restitution_condition_number = 1.0e6;
 /// or more none (tests/properties, finding E1).
 constexpr int restitution_iterations = 4;
 
-Vec2d tangent_of(Vec2d n) {
-    return right_perp(n);
-}
-
-/// Separation of a point now, from the separation at preparation and the substep motions
-/// (rotations linearised: r' ~ r + dq x r, accurate for the small rotations of a step).
-double current_separation(const ContactConstraintPoint& cp, const SolverBody& a,
-                          const SolverBody& b, Vec2d n) {
-    const Vec2d da = a.dp + a.dq * left_perp(cp.r_a);
-    const Vec2d db = b.dp + b.dq * left_perp(cp.r_b);
-    return cp.base_separation + dot(db - da, n);
-}
-
-/// Normal velocity the point must reach in this iteration (m s^-1): a speculative gap may be
-/// closed within the substep; with bias, an overlap beyond the slop is pushed out softly.
-struct NormalTarget {
-    double target = 0.0;
-    double mass_scale = 1.0;
-    double impulse_scale = 0.0;
-};
-
-NormalTarget normal_target(double s, const ContactSolverSettings& st, bool use_bias) {
-    if (s > 0.0)
-        return {-s * st.inv_h, 1.0, 0.0};
-    if (use_bias) {
-        const double bias = std::max(st.softness.bias_rate * std::min(s + st.linear_slop, 0.0),
-                                     -st.push_max_velocity);
-        return {-bias, st.softness.mass_scale, st.softness.impulse_scale};
-    }
-    return {};
-}
-
-void solve_friction(ContactConstraint& c, SolverBody& a, SolverBody& b) {
-    const Vec2d t = tangent_of(c.normal);
-    for (int j = 0; j < c.count; ++j) {
-        ContactConstraintPoint& cp = c.points[j];
-        const double vt = bridge::relative_velocity(a, b, cp.r_a, cp.r_b, t);
-        const double max_f = c.friction * cp.normal_impulse;
-        const double lambda = bridge::impulse_to_reach(vt, 0.0, cp.tangent_mass);
-        const double updated = std::clamp(cp.tangent_impulse + lambda, -max_f, max_f);
-        const double delta = updated - cp.tangent_impulse;
-        cp.tangent_impulse = updated;
-        cp.total_tangent_impulse += delta;
-        bridge::apply_impulse(a, b, cp.r_a, cp.r_b, t, delta);
-    }
-}
-
-void apply_normal_delta(ContactConstraint& c, int j, SolverBody& a, SolverBody& b, double updated) {
-    ContactConstraintPoint& cp = c.points[j];
-    const double delta = updated - cp.normal_impulse;
-    cp.normal_impulse = updated;
-    cp.max_normal_impulse = std::max(cp.max_normal_impulse, updated);
-    cp.total_normal_impulse += delta;
-    bridge::apply_impulse(a, b, cp.r_a, cp.r_b, c.normal, delta);
-}
-
 /// The restitution pass clamps the impulse of the whole step, not of the last substep: an
 /// impact's impulse is non-negative over the impact, and only then does the energy balance
 /// sum_j P_j (v_before_j + v_after_j) / 2 hold with the targets chosen in restitute()
@@ -93,35 +37,6 @@ void apply_total_delta(ContactConstraint& c, int j, SolverBody& a, SolverBody& b
     const double delta = updated_total - cp.total_normal_impulse;
     cp.total_normal_impulse = updated_total;
     bridge::apply_impulse(a, b, cp.r_a, cp.r_b, c.normal, delta);
-}
-
-/// Which accumulated impulse the LCP keeps non-negative: the substep's (iterations) or the
-/// step's total (restitution).
-enum class Accumulation { substep, step };
-
-/// Both points at once (the LCP above), for targets t1, t2 with rigid (unscaled) masses.
-void solve_block(ContactConstraint& c, SolverBody& a, SolverBody& b, double t1, double t2,
-                 Accumulation acc = Accumulation::substep) {
-    ContactConstraintPoint& p1 = c.points[0];
-    ContactConstraintPoint& p2 = c.points[1];
-    const bool step = acc == Accumulation::step;
-    const double x1 = step ? p1.total_normal_impulse : p1.normal_impulse;
-    const double x2 = step ? p2.total_normal_impulse : p2.normal_impulse;
-    const double vn1 = bridge::relative_velocity(a, b, p1.r_a, p1.r_b, c.normal);
-    const double vn2 = bridge::relative_velocity(a, b, p2.r_a, p2.r_b, c.normal);
-    // b = (velocity the points would have without their accumulated impulses) - target.
-    const double b1 = vn1 - t1 - (c.k11 * x1 + c.k12 * x2);
-    const double b2 = vn2 - t2 - (c.k12 * x1 + c.k22 * x2);
-    const TwoPointSolution x =
-        solve_two_point_lcp(c.k11, c.k12, c.k22, c.inv_k11, c.inv_k12, c.inv_k22, b1, b2);
-    // Apply both deltas from the same state: the result is exact for the linear system.
-    if (step) {
-        apply_total_delta(c, 0, a, b, x.x1);
-        apply_total_delta(c, 1, a, b, x.x2);
-    } else {
-        apply_normal_delta(c, 0, a, b, x.x1);
-        apply_normal_delta(c, 1, a, b, x.x2);
-    }
 }
 
 /// DD12 for one manifold: each pushed point driven to its energy-safe target (see below).
@@ -154,7 +69,12 @@ bool restitute(ContactConstraint& c, std::span<SolverBody> bodies,
     SolverBody& a = bodies[c.body_a];
     SolverBody& b = bodies[c.body_b];
     if (c.count == 2 && c.invertible && pushed[0] && pushed[1]) {
-        solve_block(c, a, b, target[0], target[1], Accumulation::step);
+        const TwoPointSolution<double> x =
+            iteration::block_update(c, a, b, target[0], target[1], c.points[0].total_normal_impulse,
+                                    c.points[1].total_normal_impulse);
+        // Both deltas applied from the same state: exact for the linear system.
+        apply_total_delta(c, 0, a, b, x.x1);
+        apply_total_delta(c, 1, a, b, x.x2);
         return true;
     }
     for (int j = 0; j < c.count; ++j) {
@@ -175,7 +95,7 @@ void prepare_contacts(std::span<ContactConstraint> constraints,
     for (ContactConstraint& c : constraints) {
         const SolverBody& a = bodies[c.body_a];
         const SolverBody& b = bodies[c.body_b];
-        const Vec2d t = tangent_of(c.normal);
+        const Vec2d t = iteration::tangent_of(c.normal);
         for (int j = 0; j < c.count; ++j) {
             ContactConstraintPoint& cp = c.points[j];
             const double k = bridge::inverse_effective_mass(a, b, cp.r_a, cp.r_b, c.normal);
@@ -205,51 +125,6 @@ void prepare_contacts(std::span<ContactConstraint> constraints,
                 c.inv_k22 = c.k11 * inv_det;
             }
         }
-    }
-}
-
-void warm_start_contacts(std::span<ContactConstraint> constraints, std::span<SolverBody> bodies) {
-    const auto apply = [&](ContactConstraint& c) {
-        SolverBody& a = bodies[c.body_a];
-        SolverBody& b = bodies[c.body_b];
-        const Vec2d t = tangent_of(c.normal);
-        for (int j = 0; j < c.count; ++j) {
-            ContactConstraintPoint& cp = c.points[j];
-            bridge::apply_impulse(a, b, cp.r_a, cp.r_b, c.normal, cp.normal_impulse);
-            bridge::apply_impulse(a, b, cp.r_a, cp.r_b, t, cp.tangent_impulse);
-            cp.total_normal_impulse += cp.normal_impulse;
-            cp.total_tangent_impulse += cp.tangent_impulse;
-        }
-    };
-    for (ContactConstraint& c : constraints)
-        apply(c);
-}
-
-void solve_contacts(std::span<ContactConstraint> constraints, std::span<SolverBody> bodies,
-                    const ContactSolverSettings& st, bool use_bias) {
-    for (ContactConstraint& c : constraints) {
-        SolverBody& a = bodies[c.body_a];
-        SolverBody& b = bodies[c.body_b];
-        NormalTarget nt[2];
-        bool soft = false;
-        for (int j = 0; j < c.count; ++j) {
-            nt[j] = normal_target(current_separation(c.points[j], a, b, c.normal), st, use_bias);
-            soft = soft || nt[j].mass_scale != 1.0;
-        }
-        if (c.use_block && !soft) {
-            solve_block(c, a, b, nt[0].target, nt[1].target);
-        } else {
-            for (int j = 0; j < c.count; ++j) {
-                ContactConstraintPoint& cp = c.points[j];
-                const double vn = bridge::relative_velocity(a, b, cp.r_a, cp.r_b, c.normal);
-                const double lambda =
-                    nt[j].mass_scale * bridge::impulse_to_reach(vn, nt[j].target, cp.normal_mass) -
-                    nt[j].impulse_scale * cp.normal_impulse;
-                apply_normal_delta(c, j, a, b, std::max(cp.normal_impulse + lambda, 0.0));
-            }
-        }
-        if (c.friction > 0.0)
-            solve_friction(c, a, b);
     }
 }
 

@@ -1,5 +1,6 @@
 // The contact solver of the soft step (see docs/design.md): per substep, warm start, one
-// biased soft iteration, position integration, one relaxing rigid iteration; after the
+// biased soft iteration, position integration, one relaxing rigid iteration (those run on
+// packs of four manifolds: wide_contact_solver.hpp, contact_iteration.hpp); after the
 // substeps, one restitution pass (DD12 on the pre-step normal velocity).
 #pragma once
 
@@ -22,11 +23,6 @@ struct ContactSolverSettings {
 /// Effective masses (DD8), block matrices and the pre-step normal velocities. The constraint's
 /// anchors, normal and warm-start impulses must be filled in.
 void prepare_contacts(std::span<ContactConstraint> constraints, std::span<const SolverBody> bodies);
-/// Re-applies the accumulated impulses (they carry the previous substep's solution forward).
-void warm_start_contacts(std::span<ContactConstraint> constraints, std::span<SolverBody> bodies);
-/// One iteration: with use_bias the soft, overlap-removing solve; without it the rigid relax.
-void solve_contacts(std::span<ContactConstraint> constraints, std::span<SolverBody> bodies,
-                    const ContactSolverSettings& settings, bool use_bias);
 /// DD12: where bodies approached (v_n < -threshold) and pushed, drive v_n to -C_R v_n(before),
 /// solved on the step's total impulses over all manifolds (a few Gauss-Seidel passes) with
 /// targets that keep the step's impulses from adding kinetic energy (docs/verification.md, E1/E3).

@@ -4,6 +4,9 @@
 // (verification/bench measures it); the formulas themselves live only in model/.
 #pragma once
 
+#include <type_traits>
+#include <utility>
+
 #include "tamias2d/dynamics/solver_body.hpp"
 #include "tamias2d/model/dd03_linear_velocity.hpp"
 #include "tamias2d/model/dd04_linear_acceleration.hpp"
@@ -18,6 +21,7 @@
 namespace tamias2d::bridge {
 
 namespace u = tamias2d::units;
+namespace bu = boost::units;
 namespace m = tamias2d::model;
 
 template <class Q> inline u::Vec2<Q> typed(Vec2d v) {
@@ -27,9 +31,23 @@ template <class Q> inline Vec2d plain(u::Vec2<Q> v) {
     return {v.x.value(), v.y.value()};
 }
 
-inline m::dd08::InverseInertia inverse_inertia(const SolverBody& b) {
-    return {u::from_value<u::InverseMass>(b.inv_m),
-            u::from_value<u::InverseMomentOfInertia>(b.inv_I)};
+// The hot-loop adapters below are templates over the value type V: double for one contact,
+// Wide (math/wide.hpp) for a pack of contacts, one per lane. Body is SolverBody or WideBody.
+template <class Body> using value_of = std::remove_cvref_t<decltype(std::declval<Body>().w)>;
+
+template <class Q, class V> inline u::Over<Q, V> typed_value(V x) {
+    return u::Over<Q, V>::from_value(x);
+}
+template <class Q, class V> inline u::Vec2<u::Over<Q, V>> typed_vec(u::Vec2<V> v) {
+    return {typed_value<Q>(v.x), typed_value<Q>(v.y)};
+}
+template <class Q, class V> inline u::Vec2<V> plain_vec(u::Vec2<bu::quantity<Q, V>> v) {
+    return {v.x.value(), v.y.value()};
+}
+
+template <class Body>
+inline m::dd08::InverseInertiaOver<value_of<Body>> inverse_inertia(const Body& b) {
+    return {typed_value<u::InverseMass>(b.inv_m), typed_value<u::InverseMomentOfInertia>(b.inv_I)};
 }
 
 /// IM1's acceleration g + F / m (m s^-2).
@@ -86,36 +104,39 @@ inline double separating_normal_velocity(double restitution, double vn_before) {
 }
 
 /// DD8: impulse (N s) taking the relative normal velocity from vn to target, given 1/K (kg).
-inline double impulse_to_reach(double vn, double target, double effective_mass) {
-    return m::dd08::impulse_to_reach(u::from_value<u::Velocity>(vn),
-                                     u::from_value<u::Velocity>(target),
-                                     u::from_value<u::Mass>(effective_mass))
+template <class V> inline V impulse_to_reach(V vn, V target, V effective_mass) {
+    return m::dd08::impulse_to_reach(typed_value<u::Velocity>(vn), typed_value<u::Velocity>(target),
+                                     typed_value<u::Mass>(effective_mass))
         .value();
 }
 
 // The manifold normal points from A into B; IM3's n points from its "B" into its "A" (A is
 // pushed along +n). So IM3's A is the manifold's B and vice versa in the two adapters below.
 
+template <class Body> inline m::im3::VelocitiesOver<value_of<Body>> velocities(const Body& b) {
+    return {typed_vec<u::Velocity>(b.v), typed_value<u::AngularVelocity>(b.w)};
+}
+
 /// IM3 (DD9, DD11): relative velocity of B with respect to A at the contact, along dir.
-inline double relative_velocity(const SolverBody& a, const SolverBody& b, Vec2d r_a, Vec2d r_b,
-                                Vec2d dir) {
-    const m::im3::Velocities va{typed<u::Velocity>(a.v), u::from_value<u::AngularVelocity>(a.w)};
-    const m::im3::Velocities vb{typed<u::Velocity>(b.v), u::from_value<u::AngularVelocity>(b.w)};
-    return m::im3::normal_relative_velocity(vb, va, typed<u::Length>(r_b), typed<u::Length>(r_a),
-                                            dir)
+template <class Body, class V = value_of<Body>>
+inline V relative_velocity(const Body& a, const Body& b, u::Vec2<V> r_a, u::Vec2<V> r_b,
+                           u::Vec2<V> dir) {
+    return m::im3::normal_relative_velocity(velocities(b), velocities(a), typed_vec<u::Length>(r_b),
+                                            typed_vec<u::Length>(r_a), dir)
         .value();
 }
 
 /// IM3: impulse lambda dir on B and -lambda dir on A (T2).
-inline void apply_impulse(SolverBody& a, SolverBody& b, Vec2d r_a, Vec2d r_b, Vec2d dir,
-                          double lambda) {
-    m::im3::Velocities va{typed<u::Velocity>(a.v), u::from_value<u::AngularVelocity>(a.w)};
-    m::im3::Velocities vb{typed<u::Velocity>(b.v), u::from_value<u::AngularVelocity>(b.w)};
-    m::im3::apply_impulse(vb, va, inverse_inertia(b), inverse_inertia(a), typed<u::Length>(r_b),
-                          typed<u::Length>(r_a), dir, u::from_value<u::Impulse>(lambda));
-    a.v = plain(va.v);
+template <class Body, class V = value_of<Body>>
+inline void apply_impulse(Body& a, Body& b, u::Vec2<V> r_a, u::Vec2<V> r_b, u::Vec2<V> dir,
+                          V lambda) {
+    m::im3::VelocitiesOver<V> va = velocities(a);
+    m::im3::VelocitiesOver<V> vb = velocities(b);
+    m::im3::apply_impulse(vb, va, inverse_inertia(b), inverse_inertia(a), typed_vec<u::Length>(r_b),
+                          typed_vec<u::Length>(r_a), dir, typed_value<u::Impulse>(lambda));
+    a.v = plain_vec(va.v);
     a.w = va.omega.value();
-    b.v = plain(vb.v);
+    b.v = plain_vec(vb.v);
     b.w = vb.omega.value();
 }
 

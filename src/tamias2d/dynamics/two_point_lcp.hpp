@@ -4,34 +4,36 @@
 // them one after the other (Box2D v3) leaves spin and loses energy.
 #pragma once
 
+#include "tamias2d/math/wide.hpp"
+
 namespace tamias2d {
 
-struct TwoPointSolution {
-    double x1 = 0.0, x2 = 0.0;
-};
+template <class V> struct TwoPointSolution { V x1{}, x2{}; };
 
-/// Enumerates the four cases (both active, only 1, only 2, none) in that order, as Box2D 2.4's
-/// block solver does; K must be positive definite (checked by the caller's condition test).
-inline TwoPointSolution solve_two_point_lcp(double k11, double k12, double k22, double inv11,
-                                            double inv12, double inv22, double b1, double b2) {
+/// Tries the four cases (both active, only 1, only 2, none) in that order, as Box2D 2.4's
+/// block solver does, and keeps the first that holds; K must be positive definite (checked by
+/// the caller's condition test). V is double or a pack of lanes: every case is computed and the
+/// first valid one selected lane by lane (for a lane whose K is not used, the values are
+/// discarded by the caller).
+template <class V>
+TwoPointSolution<V> solve_two_point_lcp(V k11, V k12, V k22, V inv11, V inv12, V inv22, V b1,
+                                        V b2) {
+    const V zero = broadcast<V>(0.0);
     // Both active: x = -K^-1 b.
-    double x1 = -(inv11 * b1 + inv12 * b2);
-    double x2 = -(inv12 * b1 + inv22 * b2);
-    if (x1 >= 0.0 && x2 >= 0.0)
-        return {x1, x2};
+    const V both1 = -(inv11 * b1 + inv12 * b2);
+    const V both2 = -(inv12 * b1 + inv22 * b2);
+    const auto both_active = both(both1 >= zero, both2 >= zero);
     // Only point 1 active: w1 = 0, x2 = 0, need w2 >= 0.
-    x1 = -b1 / k11;
-    if (x1 >= 0.0 && k12 * x1 + b2 >= 0.0)
-        return {x1, 0.0};
+    const V only1 = -b1 / k11;
+    const auto first_active = both(only1 >= zero, k12 * only1 + b2 >= zero);
     // Only point 2 active.
-    x2 = -b2 / k22;
-    if (x2 >= 0.0 && k12 * x2 + b1 >= 0.0)
-        return {0.0, x2};
-    // Neither: both separating on their own.
-    if (b1 >= 0.0 && b2 >= 0.0)
-        return {0.0, 0.0};
-    // Unreachable for a positive definite K; be safe rather than push bodies apart.
-    return {0.0, 0.0};
+    const V only2 = -b2 / k22;
+    const auto second_active = both(only2 >= zero, k12 * only2 + b1 >= zero);
+    // Neither (both separating on their own; for a positive definite K the last case left):
+    // no impulse rather than one that pushes the bodies apart.
+    return {
+        select(both_active, both1, select(first_active, only1, zero)),
+        select(both_active, both2, select(first_active, zero, select(second_active, only2, zero)))};
 }
 
 } // namespace tamias2d

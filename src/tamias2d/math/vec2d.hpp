@@ -38,11 +38,11 @@ constexpr Vec2d inv_transform_point(const Transform& t, Vec2d v) {
     return inv_rotate(t.q, v - t.p);
 }
 
-/// The in-plane perpendicular (CCW): cross(w, v) for w = 1.
-constexpr Vec2d left_perp(Vec2d v) {
+/// The in-plane perpendicular (CCW): cross(w, v) for w = 1 (of a vector or a pack of lanes).
+template <class T> constexpr units::Vec2<T> left_perp(units::Vec2<T> v) {
     return {-v.y, v.x};
 }
-constexpr Vec2d right_perp(Vec2d v) {
+template <class T> constexpr units::Vec2<T> right_perp(units::Vec2<T> v) {
     return {v.y, -v.x};
 }
 

@@ -10,11 +10,13 @@ using namespace tamias2d::units;
 /// would come out in kg s^-1 instead of N s).
 using Normal = Vec2<double>;
 
-/// Inverse mass properties of one body at one contact; a static body has zeros.
-struct InverseInertia {
-    InverseMass inv_m;
-    InverseMomentOfInertia inv_I;
+/// Inverse mass properties of one body at one contact (or of one body per lane, V a pack of
+/// lanes); a static body has zeros.
+template <class V> struct InverseInertiaOver {
+    Over<InverseMass, V> inv_m;
+    Over<InverseMomentOfInertia, V> inv_I;
 };
+using InverseInertia = InverseInertiaOver<double>;
 
 /// \srs{DD8} The denominator of DD8 generalised to two contact points 1 and 2 of the same pair:
 /// K12 = (1/mA + 1/mB) |n|^2 + (r_A1 x n)(r_A2 x n)/I_A + (r_B1 x n)(r_B2 x n)/I_B with |n| = 1.
@@ -39,7 +41,9 @@ inline InverseMass effective_mass_inverse(InverseInertia A, InverseInertia B, Ve
 /// v_target: j = -(v_rel_n - v_target) m_eff with m_eff = 1 / K. DD8 is the case
 /// v_target = -C_R v_rel_n (DD12); an iterative solver uses the same law with its own targets
 /// (0 to stop, DD12's for a bounce) and a precomputed m_eff.
-inline Impulse impulse_to_reach(Velocity v_rel_n, Velocity v_target, Mass m_eff) {
+template <class V>
+Over<Impulse, V> impulse_to_reach(Over<Velocity, V> v_rel_n, Over<Velocity, V> v_target,
+                                  Over<Mass, V> m_eff) {
     return -(v_rel_n - v_target) * m_eff;
 }
 

@@ -7,7 +7,10 @@ using namespace tamias2d::units;
 
 /// \srs{DD9} Chasles' theorem: the velocity of point B of a rigid body is
 /// v_B = v_O + omega x r_OB (omega about z, A4; per_radian turns rad m s^-1 into m s^-1).
-inline Vec2<Velocity> point_velocity(Vec2<Velocity> v_O, AngularVelocity omega, Vec2<Length> r_OB) {
+/// (V: double, or a pack of lanes.)
+template <class V>
+Vec2<Over<Velocity, V>> point_velocity(Vec2<Over<Velocity, V>> v_O, Over<AngularVelocity, V> omega,
+                                       Vec2<Over<Length, V>> r_OB) {
     return v_O + per_radian(cross(omega, r_OB));
 }
 

@@ -6,7 +6,9 @@ using namespace tamias2d::units;
 
 /// \srs{DD11} Relative velocity in collisions: v^AB = v^AP - v^BP (velocity of A relative to B
 /// at the common point P).
-inline Vec2<Velocity> relative_velocity(Vec2<Velocity> v_AP, Vec2<Velocity> v_BP) {
+template <class V>
+Vec2<Over<Velocity, V>> relative_velocity(Vec2<Over<Velocity, V>> v_AP,
+                                          Vec2<Over<Velocity, V>> v_BP) {
     return v_AP - v_BP;
 }
 

@@ -6,19 +6,24 @@
 namespace tamias2d::model::im3 {
 using namespace tamias2d::units;
 using dd08::InverseInertia;
+using dd08::InverseInertiaOver;
 using dd08::Normal;
 
-struct Velocities {
-    Vec2<Velocity> v;
-    AngularVelocity omega;
+/// A body's velocities (V = double), or one body's per lane (V a pack of lanes).
+template <class V> struct VelocitiesOver {
+    Vec2<Over<Velocity, V>> v;
+    Over<AngularVelocity, V> omega;
 };
+using Velocities = VelocitiesOver<double>;
 
 /// \srs{IM3} Applies a normal impulse j n at P to A and -j n to B (T2):
 /// v_A' = v_A + j n / m_A, v_B' = v_B - j n / m_B,
 /// omega_A' = omega_A + (r_AP x j n) / I_A, omega_B' = omega_B - (r_BP x j n) / I_B.
-inline void apply_impulse(Velocities& A, Velocities& B, InverseInertia a, InverseInertia b,
-                          Vec2<Length> r_AP, Vec2<Length> r_BP, Normal n, Impulse j) {
-    const Vec2<Impulse> J = j * n;
+template <class V>
+void apply_impulse(VelocitiesOver<V>& A, VelocitiesOver<V>& B, InverseInertiaOver<V> a,
+                   InverseInertiaOver<V> b, Vec2<Over<Length, V>> r_AP, Vec2<Over<Length, V>> r_BP,
+                   Vec2<V> n, Over<Impulse, V> j) {
+    const Vec2<Over<Impulse, V>> J = j * n;
     A.v += a.inv_m * J;
     B.v -= b.inv_m * J;
     A.omega += a.inv_I * per_radian(cross(r_AP, J));
@@ -26,8 +31,10 @@ inline void apply_impulse(Velocities& A, Velocities& B, InverseInertia a, Invers
 }
 
 /// \srs{IM3} Normal relative velocity of A with respect to B at P: (v^AP - v^BP) . n (DD9, DD11).
-inline Velocity normal_relative_velocity(const Velocities& A, const Velocities& B,
-                                         Vec2<Length> r_AP, Vec2<Length> r_BP, Normal n) {
+template <class V>
+Over<Velocity, V> normal_relative_velocity(const VelocitiesOver<V>& A, const VelocitiesOver<V>& B,
+                                           Vec2<Over<Length, V>> r_AP, Vec2<Over<Length, V>> r_BP,
+                                           Vec2<V> n) {
     return dot(dd11::relative_velocity(dd09::point_velocity(A.v, A.omega, r_AP),
                                        dd09::point_velocity(B.v, B.omega, r_BP)),
                n);

@@ -55,6 +55,10 @@ using AreaDensity = bu::quantity<si::surface_density>;
 using InverseMass = decltype(1.0 / Mass{});
 using InverseMomentOfInertia = decltype(1.0 / MomentOfInertia{});
 
+/// The quantity Q over another value type V: the solver's hot loop runs the same model
+/// functions on a pack of lanes (math/wide.hpp), one contact per lane, with the same units.
+template <class Q, class V> using Over = bu::quantity<typename Q::unit_type, V>;
+
 inline constexpr auto metre = si::meter;
 inline constexpr auto kilogram = si::kilogram;
 inline constexpr auto second = si::second;

@@ -1,0 +1,160 @@
+// One contact manifold's share of a soft-step iteration (warm start, normal solve, friction),
+// written once as a template over the value type V: V = double solves one manifold
+// (ContactConstraint, SolverBody), V = Wide solves four manifolds that share no body, one per
+// lane (WideContactConstraint, WideBody; see wide_contact_solver.cpp). The field names of the
+// two constraint and body types match, and both points are always processed: an unused second
+// point is all zeros and changes nothing. Every formula is a call into the model layer
+// (model_bridge.hpp: DD8, DD9, DD11, IM3).
+#pragma once
+
+#include "tamias2d/dynamics/contact_solver.hpp"
+#include "tamias2d/dynamics/model_bridge.hpp"
+#include "tamias2d/dynamics/two_point_lcp.hpp"
+#include "tamias2d/math/wide.hpp"
+
+namespace tamias2d::iteration {
+
+using bridge::value_of;
+
+template <class V> units::Vec2<V> tangent_of(units::Vec2<V> n) {
+    return right_perp(n);
+}
+
+/// Separation of a point now, from the separation at preparation and the substep motions
+/// (rotations linearised: r' ~ r + dq x r, accurate for the small rotations of a step).
+template <class Point, class Body, class V = value_of<Body>>
+V current_separation(const Point& cp, const Body& a, const Body& b, units::Vec2<V> n) {
+    const units::Vec2<V> da = a.dp + a.dq * left_perp(cp.r_a);
+    const units::Vec2<V> db = b.dp + b.dq * left_perp(cp.r_b);
+    return cp.base_separation + dot(db - da, n);
+}
+
+/// Normal velocity the point must reach in this iteration (m s^-1): a speculative gap may be
+/// closed within the substep; with bias, an overlap beyond the slop is pushed out softly.
+template <class V> struct NormalTarget {
+    V target{};
+    V mass_scale{};
+    V impulse_scale{};
+};
+
+template <class V>
+NormalTarget<V> normal_target(V s, const ContactSolverSettings& st, bool use_bias) {
+    const V zero = broadcast<V>(0.0);
+    const V one = broadcast<V>(1.0);
+    NormalTarget<V> touching{zero, one, zero}; // rigid, without bias: stop the approach
+    if (use_bias) {
+        const V bias =
+            max(broadcast<V>(st.softness.bias_rate) * min(s + broadcast<V>(st.linear_slop), zero),
+                -broadcast<V>(st.push_max_velocity));
+        touching = {-bias, broadcast<V>(st.softness.mass_scale),
+                    broadcast<V>(st.softness.impulse_scale)};
+    }
+    const auto speculative = s > zero;
+    return {select(speculative, -s * broadcast<V>(st.inv_h), touching.target),
+            select(speculative, one, touching.mass_scale),
+            select(speculative, zero, touching.impulse_scale)};
+}
+
+/// Re-applies the accumulated impulses (they carry the previous substep's solution forward).
+template <class Constraint, class Body> void warm_start(Constraint& c, Body& a, Body& b) {
+    const auto t = tangent_of(c.normal);
+    for (auto& cp : c.points) {
+        bridge::apply_impulse(a, b, cp.r_a, cp.r_b, c.normal, cp.normal_impulse);
+        bridge::apply_impulse(a, b, cp.r_a, cp.r_b, t, cp.tangent_impulse);
+        cp.total_normal_impulse += cp.normal_impulse;
+        cp.total_tangent_impulse += cp.tangent_impulse;
+    }
+}
+
+/// Sets point j's accumulated normal impulse for this substep and applies the change.
+template <class Constraint, class Body, class V = value_of<Body>>
+void apply_normal_delta(Constraint& c, int j, Body& a, Body& b, V updated) {
+    auto& cp = c.points[j];
+    const V delta = updated - cp.normal_impulse;
+    cp.normal_impulse = updated;
+    cp.max_normal_impulse = max(cp.max_normal_impulse, updated);
+    cp.total_normal_impulse += delta;
+    bridge::apply_impulse(a, b, cp.r_a, cp.r_b, c.normal, delta);
+}
+
+/// Point j alone, from the bodies' current velocities (DD8 with the soft target): its new
+/// accumulated impulse, clamped to push only.
+template <class Constraint, class Body, class V = value_of<Body>>
+V point_update(const Constraint& c, int j, const Body& a, const Body& b,
+               const NormalTarget<V>& nt) {
+    const auto& cp = c.points[j];
+    const V vn = bridge::relative_velocity(a, b, cp.r_a, cp.r_b, c.normal);
+    const V lambda = nt.mass_scale * bridge::impulse_to_reach(vn, nt.target, cp.normal_mass) -
+                     nt.impulse_scale * cp.normal_impulse;
+    return max(cp.normal_impulse + lambda, broadcast<V>(0.0));
+}
+
+/// Both points at once (the 2x2 LCP) for targets t1, t2 with rigid masses, from the current
+/// velocities and the accumulated impulses x1, x2 that the LCP keeps non-negative.
+template <class Constraint, class Body, class V = value_of<Body>>
+TwoPointSolution<V> block_update(const Constraint& c, const Body& a, const Body& b, V t1, V t2,
+                                 V x1, V x2) {
+    const auto& p1 = c.points[0];
+    const auto& p2 = c.points[1];
+    const V vn1 = bridge::relative_velocity(a, b, p1.r_a, p1.r_b, c.normal);
+    const V vn2 = bridge::relative_velocity(a, b, p2.r_a, p2.r_b, c.normal);
+    // b = (velocity the points would have without their accumulated impulses) - target.
+    const V b1 = vn1 - t1 - (c.k11 * x1 + c.k12 * x2);
+    const V b2 = vn2 - t2 - (c.k12 * x1 + c.k22 * x2);
+    return solve_two_point_lcp(c.k11, c.k12, c.k22, c.inv_k11, c.inv_k12, c.inv_k22, b1, b2);
+}
+
+template <class Constraint, class Body> void solve_friction(Constraint& c, Body& a, Body& b) {
+    using V = value_of<Body>;
+    const auto t = tangent_of(c.normal);
+    for (auto& cp : c.points) {
+        const V vt = bridge::relative_velocity(a, b, cp.r_a, cp.r_b, t);
+        const V max_f = c.friction * cp.normal_impulse;
+        const V lambda = bridge::impulse_to_reach(vt, broadcast<V>(0.0), cp.tangent_mass);
+        const V updated = min(max(cp.tangent_impulse + lambda, -max_f), max_f);
+        const V delta = updated - cp.tangent_impulse;
+        cp.tangent_impulse = updated;
+        cp.total_tangent_impulse += delta;
+        bridge::apply_impulse(a, b, cp.r_a, cp.r_b, t, delta);
+    }
+}
+
+/// One iteration for one manifold (or one per lane): with use_bias the soft, overlap-removing
+/// solve; without it the rigid relax. Two well-conditioned points with rigid targets are solved
+/// together (the LCP), exactly; otherwise point by point, each seeing the other's impulse.
+template <class Constraint, class Body>
+void solve(Constraint& c, Body& a, Body& b, const ContactSolverSettings& st, bool use_bias) {
+    using V = value_of<Body>;
+    const NormalTarget<V> nt[2] = {
+        normal_target(current_separation(c.points[0], a, b, c.normal), st, use_bias),
+        normal_target(current_separation(c.points[1], a, b, c.normal), st, use_bias)};
+    const V one = broadcast<V>(1.0);
+    const auto soft = either(nt[0].mass_scale != one, nt[1].mass_scale != one);
+    const auto block = and_not(c.use_block, soft);
+    if (!any(block)) {
+        for (int j = 0; j < 2; ++j)
+            apply_normal_delta(c, j, a, b, point_update(c, j, a, b, nt[j]));
+    } else {
+        const TwoPointSolution<V> x =
+            block_update(c, a, b, nt[0].target, nt[1].target, c.points[0].normal_impulse,
+                         c.points[1].normal_impulse);
+        V updated[2] = {x.x1, x.x2};
+        if (!all(block)) {
+            // Lanes that go point by point: their impulses on scratch copies of the bodies
+            // (applying them again below from the same state gives the same velocities).
+            Body sa = a, sb = b;
+            for (int j = 0; j < 2; ++j) {
+                const V u = point_update(c, j, sa, sb, nt[j]);
+                const auto& cp = c.points[j];
+                bridge::apply_impulse(sa, sb, cp.r_a, cp.r_b, c.normal, u - cp.normal_impulse);
+                updated[j] = select(block, updated[j], u);
+            }
+        }
+        // Both deltas applied from the same state: exact for the linear system.
+        apply_normal_delta(c, 0, a, b, updated[0]);
+        apply_normal_delta(c, 1, a, b, updated[1]);
+    }
+    solve_friction(c, a, b);
+}
+
+} // namespace tamias2d::iteration

@@ -1,0 +1,52 @@
+// Four contact manifolds that share no dynamic body, one per lane, laid out for the wide
+// solver: the same fields as ContactConstraint (contact_iteration.hpp is written against both).
+// A lane without a manifold, and the second point of a one-point manifold, are all zeros and
+// name the static body 0, so solving them changes nothing.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "tamias2d/math/vec2d.hpp"
+#include "tamias2d/math/wide.hpp"
+
+namespace tamias2d {
+
+struct alignas(wide_alignment) WideContactConstraintPoint {
+    units::Vec2<Wide> r_a{}, r_b{};
+    Wide base_separation{};
+    Wide normal_mass{};
+    Wide tangent_mass{};
+    Wide normal_impulse{};
+    Wide tangent_impulse{};
+    Wide max_normal_impulse{};
+    Wide total_normal_impulse{};
+    Wide total_tangent_impulse{};
+};
+
+struct alignas(wide_alignment) WideContactConstraint {
+    std::uint32_t body_a[wide_lanes]{}, body_b[wide_lanes]{}; ///< solver body indices
+    units::Vec2<Wide> normal{};
+    Wide friction{};
+    Wide k11{}, k12{}, k22{};
+    Wide inv_k11{}, inv_k12{}, inv_k22{};
+    WideMask use_block{};
+    WideContactConstraintPoint points[2]{};
+};
+
+/// The bodies of four lanes (gathered from SolverBody, written back after the solve).
+struct alignas(wide_alignment) WideBody {
+    units::Vec2<Wide> v{};
+    Wide w{};
+    Wide inv_m{};
+    Wide inv_I{};
+    units::Vec2<Wide> dp{};
+    Wide dq{};
+};
+
+// Every pack member starts on a 32-byte boundary (the structures are built of whole packs).
+static_assert(sizeof(WideContactConstraintPoint) % wide_alignment == 0);
+static_assert(offsetof(WideContactConstraint, normal) % wide_alignment == 0);
+static_assert(offsetof(WideContactConstraint, points) % wide_alignment == 0);
+
+} // namespace tamias2d

@@ -1,0 +1,87 @@
+// A pack of four doubles for the contact solver's hot loop: one contact constraint per lane, so
+// four constraints that share no body are solved at once (graph colouring, constraint_graph.hpp).
+// GCC/Clang vector extensions: the same source compiles to AVX2 (one 256-bit register) or to
+// two SSE2 registers, chosen at run time (wide_contact_solver.cpp). Every operation is
+// lane-wise IEEE arithmetic without fused multiply-add, so each lane computes bit for bit what
+// the scalar solver computes for that constraint, whichever instruction set runs it.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <type_traits>
+
+namespace tamias2d {
+
+inline constexpr int wide_lanes = 4;
+
+using Wide = double __attribute__((vector_size(wide_lanes * sizeof(double))));
+/// Lane-wise comparison results: all bits set (true) or clear (false) per lane.
+using WideMask = std::int64_t __attribute__((vector_size(wide_lanes * sizeof(std::int64_t))));
+/// Without AVX enabled GCC aligns Wide to 16 bytes only, while the AVX2 code reads it with
+/// aligned 32-byte loads: every structure holding packs is declared alignas(wide_alignment).
+inline constexpr std::size_t wide_alignment = sizeof(Wide);
+
+inline Wide splat(double x) {
+    return Wide{x, x, x, x};
+}
+inline Wide select(WideMask m, Wide if_true, Wide if_false) {
+    return m ? if_true : if_false;
+}
+/// std::min / std::max lane by lane, with their tie and signed-zero behaviour (b < a ? b : a).
+inline Wide min(Wide a, Wide b) {
+    return b < a ? b : a;
+}
+inline Wide max(Wide a, Wide b) {
+    return a < b ? b : a;
+}
+inline bool any(WideMask m) {
+    return (m[0] | m[1] | m[2] | m[3]) != 0;
+}
+inline bool all(WideMask m) {
+    return (m[0] & m[1] & m[2] & m[3]) != 0;
+}
+
+// The same vocabulary for one lane (V = double), so that the contact iteration is written once
+// as a template over V (dynamics/contact_iteration.hpp).
+inline double select(bool m, double if_true, double if_false) {
+    return m ? if_true : if_false;
+}
+inline double min(double a, double b) {
+    return b < a ? b : a;
+}
+inline double max(double a, double b) {
+    return a < b ? b : a;
+}
+inline bool any(bool m) {
+    return m;
+}
+inline bool all(bool m) {
+    return m;
+}
+inline bool both(bool a, bool b) {
+    return a && b;
+}
+inline WideMask both(WideMask a, WideMask b) {
+    return a & b;
+}
+inline bool and_not(bool a, bool b) {
+    return a && !b;
+}
+inline WideMask and_not(WideMask a, WideMask b) {
+    return a & ~b;
+}
+inline bool either(bool a, bool b) {
+    return a || b;
+}
+inline WideMask either(WideMask a, WideMask b) {
+    return a | b;
+}
+
+template <class V> V broadcast(double x) {
+    if constexpr (std::is_same_v<V, double>)
+        return x;
+    else
+        return splat(x);
+}
+
+} // namespace tamias2d

@@ -1,0 +1,173 @@
+// The wide contact solver (four manifolds per pack, grouped by ConstraintGraph's levels) against
+// the sequential Gauss-Seidel pass in creation order that it must reproduce bit for bit (NFR1's
+// speed must not change IM3's results).
+#include <boost/test/unit_test.hpp>
+
+#include <cstdint>
+#include <random>
+#include <set>
+#include <vector>
+
+#include "tamias2d/dynamics/constraint_graph.hpp"
+#include "tamias2d/dynamics/contact_iteration.hpp"
+#include "tamias2d/dynamics/wide_contact_solver.hpp"
+
+namespace utf = boost::unit_test;
+using namespace tamias2d;
+
+namespace {
+
+struct Scene {
+    std::vector<SolverBody> bodies; ///< 0 is the static body
+    std::vector<ContactConstraint> constraints;
+};
+
+/// Random manifolds on a few bodies (many share a body, some the static body 0), with one or
+/// two points, some frictionless, some speculative (positive separation), some penetrating.
+Scene random_scene(std::uint32_t seed, int body_count, int constraint_count) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    Scene s;
+    s.bodies.assign(1, SolverBody{});
+    for (int i = 1; i < body_count; ++i) {
+        SolverBody b;
+        b.v = {u(rng), u(rng)};
+        b.w = u(rng);
+        b.inv_m = 1.0 + 0.5 * u(rng);
+        b.inv_I = 6.0 + 3.0 * u(rng);
+        s.bodies.push_back(b);
+    }
+    std::uniform_int_distribution<std::uint32_t> body(0, std::uint32_t(body_count - 1));
+    while (int(s.constraints.size()) < constraint_count) {
+        ContactConstraint c;
+        c.body_a = body(rng);
+        c.body_b = body(rng);
+        if (c.body_a == c.body_b || (c.body_a == 0 && c.body_b == 0))
+            continue;
+        const double angle = 3.2 * u(rng);
+        c.normal = {std::cos(angle), std::sin(angle)};
+        c.friction = u(rng) < -0.6 ? 0.0 : 0.6;
+        c.count = u(rng) < -0.3 ? 1 : 2;
+        for (int j = 0; j < c.count; ++j) {
+            ContactConstraintPoint& p = c.points[j];
+            p.r_a = {0.5 * u(rng), 0.5 * u(rng)};
+            p.r_b = {0.5 * u(rng), 0.5 * u(rng)};
+            p.base_separation = 0.02 * u(rng);
+            p.normal_impulse = std::max(0.0, u(rng));
+            p.tangent_impulse = 0.3 * u(rng);
+        }
+        s.constraints.push_back(c);
+    }
+    prepare_contacts(s.constraints, s.bodies);
+    return s;
+}
+
+ContactSolverSettings settings() {
+    ContactSolverSettings st;
+    st.inv_h = 240.0;
+    st.softness = make_softness(30.0, 10.0, 1.0 / 240.0);
+    st.linear_slop = 0.005;
+    st.push_max_velocity = 3.0;
+    st.restitution_threshold = 1.0;
+    return st;
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(wide_contact_solver)
+
+// Oracle: the definition of one soft-step iteration, a sequential Gauss-Seidel pass over the
+// manifolds in creation order (contact_iteration.hpp instantiated for one manifold at a time,
+// V = double). Constraints that share no moving body commute, so the packed, level-ordered
+// solve must give the same numbers exactly; any lane mix-up, lost write or reordering of two
+// manifolds on one body shows up as a difference.
+BOOST_AUTO_TEST_CASE(packs_reproduce_the_sequential_pass, *utf::label("IM3") * utf::label("NFR1")) {
+    const ContactSolverSettings st = settings();
+    int compared = 0;
+    for (std::uint32_t seed = 1; seed <= 40; ++seed) {
+        const Scene scene = random_scene(seed, 3 + int(seed % 17), 5 + int(seed * 7 % 90));
+
+        Scene seq = scene;
+        for (int pass = 0; pass < 3; ++pass) {
+            for (ContactConstraint& c : seq.constraints)
+                iteration::warm_start(c, seq.bodies[c.body_a], seq.bodies[c.body_b]);
+            for (bool bias : {true, false}) {
+                for (ContactConstraint& c : seq.constraints)
+                    iteration::solve(c, seq.bodies[c.body_a], seq.bodies[c.body_b], st, bias);
+            }
+        }
+
+        Scene wide = scene;
+        WideContactSolver solver;
+        solver.load(wide.constraints, wide.bodies.size());
+        for (int pass = 0; pass < 3; ++pass) {
+            solver.warm_start(wide.bodies);
+            solver.solve(wide.bodies, st, true);
+            solver.solve(wide.bodies, st, false);
+        }
+        solver.store(wide.constraints);
+
+        for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+            BOOST_TEST(wide.bodies[i].v.x == seq.bodies[i].v.x);
+            BOOST_TEST(wide.bodies[i].v.y == seq.bodies[i].v.y);
+            BOOST_TEST(wide.bodies[i].w == seq.bodies[i].w);
+        }
+        for (std::size_t i = 0; i < scene.constraints.size(); ++i) {
+            for (int j = 0; j < scene.constraints[i].count; ++j) {
+                const ContactConstraintPoint& a = wide.constraints[i].points[j];
+                const ContactConstraintPoint& b = seq.constraints[i].points[j];
+                BOOST_TEST(a.normal_impulse == b.normal_impulse);
+                BOOST_TEST(a.tangent_impulse == b.tangent_impulse);
+                BOOST_TEST(a.max_normal_impulse == b.max_normal_impulse);
+                BOOST_TEST(a.total_normal_impulse == b.total_normal_impulse);
+                BOOST_TEST(a.total_tangent_impulse == b.total_tangent_impulse);
+                ++compared;
+            }
+        }
+        BOOST_TEST(seq.bodies[0].v.x == 0.0); // the static body never moves
+    }
+    BOOST_TEST(compared > 1000);
+    BOOST_TEST_MESSAGE("wide solver: " << compared << " points equal to the sequential pass"
+                                       << (WideContactSolver::uses_avx2() ? " (AVX2)" : " (SSE2)"));
+}
+
+// Oracle: the level rule itself, checked pack by pack: every constraint is in exactly one lane,
+// no moving body appears twice in a pack, and two constraints on one moving body are solved in
+// creation order.
+BOOST_AUTO_TEST_CASE(levels_separate_bodies_and_keep_their_order,
+                     *utf::label("IM3") * utf::label("NFR1")) {
+    for (std::uint32_t seed = 100; seed < 120; ++seed) {
+        const Scene scene = random_scene(seed, 4 + int(seed % 13), 60);
+        ConstraintGraph graph;
+        graph.colour(scene.constraints, scene.bodies.size());
+        std::vector<int> position(scene.constraints.size(), -1);
+        int next = 0;
+        for (const ConstraintGraph::Pack& p : graph.packs()) {
+            std::set<std::uint32_t> seen;
+            for (std::uint32_t i : p) {
+                if (i == ConstraintGraph::no_constraint)
+                    continue;
+                BOOST_TEST_REQUIRE(i < scene.constraints.size());
+                BOOST_TEST(position[i] == -1);
+                position[i] = next++;
+                for (std::uint32_t body :
+                     {scene.constraints[i].body_a, scene.constraints[i].body_b})
+                    BOOST_TEST((body == 0 || seen.insert(body).second));
+            }
+        }
+        BOOST_TEST(next == int(scene.constraints.size()));
+        for (std::size_t i = 0; i < scene.constraints.size(); ++i) {
+            for (std::size_t k = i + 1; k < scene.constraints.size(); ++k) {
+                const ContactConstraint& a = scene.constraints[i];
+                const ContactConstraint& b = scene.constraints[k];
+                const bool share =
+                    (a.body_a != 0 && (a.body_a == b.body_a || a.body_a == b.body_b)) ||
+                    (a.body_b != 0 && (a.body_b == b.body_a || a.body_b == b.body_b));
+                if (share)
+                    BOOST_TEST(position[i] < position[k]);
+            }
+        }
+    }
+}
+
+BOOST_AUTO_TEST_SUITE_END()
