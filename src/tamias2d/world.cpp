@@ -256,7 +256,7 @@ struct World::Impl {
             }
         }
         prepare_contacts(constraints, solver_bodies);
-        wide_solver.load(constraints, solver_bodies.size());
+        wide_solver.load(constraints, solver_bodies);
 
         ContactSolverSettings st;
         st.inv_h = 1.0 / h;

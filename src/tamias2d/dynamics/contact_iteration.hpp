@@ -131,28 +131,19 @@ void solve(Constraint& c, Body& a, Body& b, const ContactSolverSettings& st, boo
     const V one = broadcast<V>(1.0);
     const auto soft = either(nt[0].mass_scale != one, nt[1].mass_scale != one);
     const auto block = and_not(c.use_block, soft);
-    if (!any(block)) {
-        for (int j = 0; j < 2; ++j)
-            apply_normal_delta(c, j, a, b, point_update(c, j, a, b, nt[j]));
-    } else {
-        const TwoPointSolution<V> x =
-            block_update(c, a, b, nt[0].target, nt[1].target, c.points[0].normal_impulse,
+    // Block lanes take the LCP's impulses, computed from the velocities before either point;
+    // the others go point by point. Applying point 1's change, then point 2's, is what both
+    // do (for the block, exact for the linear system).
+    TwoPointSolution<V> x{};
+    if (any(block))
+        x = block_update(c, a, b, nt[0].target, nt[1].target, c.points[0].normal_impulse,
                          c.points[1].normal_impulse);
-        V updated[2] = {x.x1, x.x2};
-        if (!all(block)) {
-            // Lanes that go point by point: their impulses on scratch copies of the bodies
-            // (applying them again below from the same state gives the same velocities).
-            Body sa = a, sb = b;
-            for (int j = 0; j < 2; ++j) {
-                const V u = point_update(c, j, sa, sb, nt[j]);
-                const auto& cp = c.points[j];
-                bridge::apply_impulse(sa, sb, cp.r_a, cp.r_b, c.normal, u - cp.normal_impulse);
-                updated[j] = select(block, updated[j], u);
-            }
-        }
-        // Both deltas applied from the same state: exact for the linear system.
-        apply_normal_delta(c, 0, a, b, updated[0]);
-        apply_normal_delta(c, 1, a, b, updated[1]);
+    const bool sequential_lanes = !all(block);
+    for (int j = 0; j < 2; ++j) {
+        V updated = j == 0 ? x.x1 : x.x2;
+        if (sequential_lanes)
+            updated = select(block, updated, point_update(c, j, a, b, nt[j]));
+        apply_normal_delta(c, j, a, b, updated);
     }
     solve_friction(c, a, b);
 }

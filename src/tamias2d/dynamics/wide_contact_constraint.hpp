@@ -28,6 +28,9 @@ struct alignas(wide_alignment) WideContactConstraint {
     std::uint32_t body_a[wide_lanes]{}, body_b[wide_lanes]{}; ///< solver body indices
     units::Vec2<Wide> normal{};
     Wide friction{};
+    /// The bodies' inverse masses, copied at load (they do not change within a step), so that
+    /// the iterations gather only the velocities and motions.
+    Wide inv_m_a{}, inv_I_a{}, inv_m_b{}, inv_I_b{};
     Wide k11{}, k12{}, k22{};
     Wide inv_k11{}, inv_k12{}, inv_k22{};
     WideMask use_block{};

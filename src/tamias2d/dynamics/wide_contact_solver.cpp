@@ -17,17 +17,31 @@ namespace {
 
 using Lanes = const std::uint32_t (&)[wide_lanes];
 
-inline WideBody gather(const SolverBody* bodies, Lanes index) {
+/// Velocities of the lanes' bodies, with the inverse masses the pack holds for them.
+inline WideBody gather_velocities(const SolverBody* bodies, Lanes index, Wide inv_m, Wide inv_I) {
+    static_assert(wide_lanes == 4);
     const SolverBody& b0 = bodies[index[0]];
     const SolverBody& b1 = bodies[index[1]];
     const SolverBody& b2 = bodies[index[2]];
     const SolverBody& b3 = bodies[index[3]];
-    return {{Wide{b0.v.x, b1.v.x, b2.v.x, b3.v.x}, Wide{b0.v.y, b1.v.y, b2.v.y, b3.v.y}},
-            Wide{b0.w, b1.w, b2.w, b3.w},
-            Wide{b0.inv_m, b1.inv_m, b2.inv_m, b3.inv_m},
-            Wide{b0.inv_I, b1.inv_I, b2.inv_I, b3.inv_I},
-            {Wide{b0.dp.x, b1.dp.x, b2.dp.x, b3.dp.x}, Wide{b0.dp.y, b1.dp.y, b2.dp.y, b3.dp.y}},
-            Wide{b0.dq, b1.dq, b2.dq, b3.dq}};
+    WideBody w;
+    w.v = {Wide{b0.v.x, b1.v.x, b2.v.x, b3.v.x}, Wide{b0.v.y, b1.v.y, b2.v.y, b3.v.y}};
+    w.w = Wide{b0.w, b1.w, b2.w, b3.w};
+    w.inv_m = inv_m;
+    w.inv_I = inv_I;
+    return w;
+}
+
+/// The same and the motions so far in the step (for the current separations).
+inline WideBody gather_motions(const SolverBody* bodies, Lanes index, Wide inv_m, Wide inv_I) {
+    WideBody w = gather_velocities(bodies, index, inv_m, inv_I);
+    const SolverBody& b0 = bodies[index[0]];
+    const SolverBody& b1 = bodies[index[1]];
+    const SolverBody& b2 = bodies[index[2]];
+    const SolverBody& b3 = bodies[index[3]];
+    w.dp = {Wide{b0.dp.x, b1.dp.x, b2.dp.x, b3.dp.x}, Wide{b0.dp.y, b1.dp.y, b2.dp.y, b3.dp.y}};
+    w.dq = Wide{b0.dq, b1.dq, b2.dq, b3.dq};
+    return w;
 }
 
 /// Lanes naming the static body 0 write back its unchanged zeros (its inverse mass is 0); no
@@ -44,8 +58,8 @@ TAMIAS_WIDE_KERNEL void warm_start_packs(WideContactConstraint* packs, std::size
                                          SolverBody* bodies) {
     for (std::size_t i = 0; i < count; ++i) {
         WideContactConstraint& c = packs[i];
-        WideBody a = gather(bodies, c.body_a);
-        WideBody b = gather(bodies, c.body_b);
+        WideBody a = gather_velocities(bodies, c.body_a, c.inv_m_a, c.inv_I_a);
+        WideBody b = gather_velocities(bodies, c.body_b, c.inv_m_b, c.inv_I_b);
         iteration::warm_start(c, a, b);
         scatter(bodies, c.body_a, a);
         scatter(bodies, c.body_b, b);
@@ -53,12 +67,13 @@ TAMIAS_WIDE_KERNEL void warm_start_packs(WideContactConstraint* packs, std::size
 }
 
 TAMIAS_WIDE_KERNEL void solve_packs(WideContactConstraint* packs, std::size_t count,
-                                    SolverBody* bodies, const ContactSolverSettings& st,
+                                    SolverBody* bodies, const ContactSolverSettings& settings,
                                     bool use_bias) {
+    const ContactSolverSettings st = settings; // a local copy: the body stores cannot touch it
     for (std::size_t i = 0; i < count; ++i) {
         WideContactConstraint& c = packs[i];
-        WideBody a = gather(bodies, c.body_a);
-        WideBody b = gather(bodies, c.body_b);
+        WideBody a = gather_motions(bodies, c.body_a, c.inv_m_a, c.inv_I_a);
+        WideBody b = gather_motions(bodies, c.body_b, c.inv_m_b, c.inv_I_b);
         iteration::solve(c, a, b, st, use_bias);
         scatter(bodies, c.body_a, a);
         scatter(bodies, c.body_b, b);
@@ -68,7 +83,8 @@ TAMIAS_WIDE_KERNEL void solve_packs(WideContactConstraint* packs, std::size_t co
 } // namespace
 
 void WideContactSolver::load(std::span<const ContactConstraint> constraints,
-                             std::size_t body_count) {
+                             std::span<const SolverBody> bodies) {
+    const std::size_t body_count = bodies.size();
     graph_.colour(constraints, body_count);
     const auto order = graph_.packs();
     packs_.resize(order.size());
@@ -84,6 +100,10 @@ void WideContactSolver::load(std::span<const ContactConstraint> constraints,
             w.normal.x[l] = c.normal.x;
             w.normal.y[l] = c.normal.y;
             w.friction[l] = c.friction;
+            w.inv_m_a[l] = bodies[c.body_a].inv_m;
+            w.inv_I_a[l] = bodies[c.body_a].inv_I;
+            w.inv_m_b[l] = bodies[c.body_b].inv_m;
+            w.inv_I_b[l] = bodies[c.body_b].inv_I;
             w.k11[l] = c.k11;
             w.k12[l] = c.k12;
             w.k22[l] = c.k22;

@@ -17,7 +17,7 @@ namespace tamias2d {
 class WideContactSolver {
   public:
     /// Colours the prepared constraints (prepare_contacts) and packs them lane by lane.
-    void load(std::span<const ContactConstraint> constraints, std::size_t body_count);
+    void load(std::span<const ContactConstraint> constraints, std::span<const SolverBody> bodies);
     /// Re-applies the accumulated impulses (they carry the previous substep's solution forward).
     void warm_start(std::span<SolverBody> bodies);
     /// One iteration: with use_bias the soft, overlap-removing solve; without it the rigid relax.

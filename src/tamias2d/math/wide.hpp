@@ -22,7 +22,7 @@ using WideMask = std::int64_t __attribute__((vector_size(wide_lanes * sizeof(std
 inline constexpr std::size_t wide_alignment = sizeof(Wide);
 
 inline Wide splat(double x) {
-    return Wide{x, x, x, x};
+    return Wide{} + x;
 }
 inline Wide select(WideMask m, Wide if_true, Wide if_false) {
     return m ? if_true : if_false;
@@ -35,10 +35,16 @@ inline Wide max(Wide a, Wide b) {
     return a < b ? b : a;
 }
 inline bool any(WideMask m) {
-    return (m[0] | m[1] | m[2] | m[3]) != 0;
+    std::int64_t r = 0;
+    for (int l = 0; l < wide_lanes; ++l)
+        r |= m[l];
+    return r != 0;
 }
 inline bool all(WideMask m) {
-    return (m[0] & m[1] & m[2] & m[3]) != 0;
+    std::int64_t r = -1;
+    for (int l = 0; l < wide_lanes; ++l)
+        r &= m[l];
+    return r != 0;
 }
 
 // The same vocabulary for one lane (V = double), so that the contact iteration is written once
