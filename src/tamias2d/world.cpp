@@ -178,7 +178,7 @@ struct World::Impl {
             const Manifold old = c.manifold;
             const double old_n[2] = {c.normal_impulse[0], c.normal_impulse[1]};
             const double old_t[2] = {c.tangent_impulse[0], c.tangent_impulse[1]};
-            c.manifold = collide(sa.geometry, sb.geometry, in);
+            c.manifold = collide(sa.geometry, sb.geometry, in, &c.hint);
             // Warm starting: a point keeps its impulses when the same features touch again.
             for (int j = 0; j < c.manifold.count; ++j) {
                 c.normal_impulse[j] = c.tangent_impulse[j] = 0.0;

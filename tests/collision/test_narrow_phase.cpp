@@ -1,7 +1,9 @@
 // Narrow phase: contact manifolds for circle and polygon pairs (T5, A4, A5, LC1).
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <numbers>
 #include <random>
 #include <set>
@@ -37,6 +39,11 @@ double support_gap(const Geometry& a, const Transform& xa, const Geometry& b, co
         return m;
     };
     return -extent(b, xb, -1.0) - extent(a, xa, 1.0);
+}
+
+bool same_bits(Vec2d a, Vec2d b) {
+    return std::memcmp(&a.x, &b.x, sizeof(double)) == 0 &&
+           std::memcmp(&a.y, &b.y, sizeof(double)) == 0;
 }
 
 } // namespace
@@ -307,6 +314,49 @@ BOOST_AUTO_TEST_CASE(polygon_circle_regions, *utf::label("T5") * utf::label("A4"
     BOOST_TEST_REQUIRE(deep.count == 1);
     BOOST_TEST(deep.normal.y == -1.0);
     BOOST_TEST(deep.points[0].separation == -0.35, tt::tolerance(1e-12));
+}
+
+// Oracle: the narrow phase without the hint. A pair moving about randomly (apart, near,
+// touching, overlapping) is collided twice per pose, once carrying its SeparationHint from pose
+// to pose and once without: the manifolds must be identical, bit for bit, and the hint must have
+// skipped the full test for some poses (otherwise this checks nothing).
+BOOST_AUTO_TEST_CASE(separation_hint_changes_nothing, *utf::label("T5")) {
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    const Vec2d triangle[] = {{0, 0}, {1, 0}, {0.2, 0.7}};
+    const Geometry shapes[] = {to_geometry(make_box(0.5, 0.25)), to_geometry(make_box(0.3, 0.3)),
+                               to_geometry(make_polygon(triangle))};
+    int hinted_apart = 0, compared = 0;
+    for (const Geometry& a : shapes) {
+        for (const Geometry& b : shapes) {
+            SeparationHint hint;
+            Vec2d pb{1.2, 0.0};
+            double angle_b = 0.0;
+            for (int k = 0; k < 400; ++k) {
+                pb = pb + 0.05 * Vec2d{u(rng), u(rng)};
+                pb = {std::clamp(pb.x, -1.6, 1.6), std::clamp(pb.y, -1.6, 1.6)};
+                angle_b += 0.1 * u(rng);
+                const CollideInput in = input(at(0.1, -0.2, 0.3), at(pb.x, pb.y, angle_b), 0.05);
+                const bool had_hint = hint.face >= 0;
+                const Manifold with = collide(a, b, in, &hint);
+                const Manifold without = collide(a, b, in);
+                BOOST_TEST_REQUIRE(with.count == without.count);
+                BOOST_TEST(same_bits(with.normal, without.normal));
+                for (int j = 0; j < with.count; ++j) {
+                    const ManifoldPoint& p = with.points[j];
+                    const ManifoldPoint& q = without.points[j];
+                    BOOST_TEST((same_bits(p.point, q.point) && same_bits(p.anchor_a, q.anchor_a) &&
+                                same_bits(p.anchor_b, q.anchor_b) && p.id == q.id &&
+                                std::memcmp(&p.separation, &q.separation, sizeof(double)) == 0));
+                }
+                hinted_apart += had_hint && with.count == 0 && hint.face >= 0;
+                ++compared;
+            }
+        }
+    }
+    BOOST_TEST(hinted_apart > 100);
+    BOOST_TEST_MESSAGE("separation hint: " << hinted_apart << " of " << compared
+                                           << " poses rejected by the hinted face");
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -3,6 +3,8 @@
 // (world frame) are needed to express anchors relative to them.
 #pragma once
 
+#include <cstdint>
+
 #include "tamias2d/collision/manifold.hpp"
 #include "tamias2d/geometry/shapes.hpp"
 
@@ -18,12 +20,23 @@ struct CollideInput {
     double margin = 0.0;
 };
 
+/// The face that last separated a pair of polygons by the margin or more, kept with the pair:
+/// tested first, it rejects a pair that stays apart without the whole separating axis test (in
+/// a settled pile half the pairs the broad phase reports are apart). Only a shortcut: with or
+/// without it, collide returns the same manifold, bit for bit.
+struct SeparationHint {
+    std::int8_t face = -1; ///< -1: none
+    bool on_b = false;     ///< the face is b's (else a's)
+};
+
 Manifold collide_circles(const Circle& a, const Circle& b, const CollideInput& in);
 Manifold collide_polygon_circle(const Polygon& a, const Circle& b, const CollideInput& in);
-Manifold collide_polygons(const Polygon& a, const Polygon& b, const CollideInput& in);
+Manifold collide_polygons(const Polygon& a, const Polygon& b, const CollideInput& in,
+                          SeparationHint* hint = nullptr);
 
 /// Dispatches on the shape types. A circle-polygon pair is computed as polygon-circle with the
 /// roles swapped and the result flipped, so the normal still points from a into b.
-Manifold collide(const Geometry& a, const Geometry& b, const CollideInput& in);
+Manifold collide(const Geometry& a, const Geometry& b, const CollideInput& in,
+                 SeparationHint* hint = nullptr);
 
 } // namespace tamias2d

@@ -6,12 +6,14 @@
 #include <cstdint>
 
 #include "tamias2d/collision/manifold.hpp"
+#include "tamias2d/collision/narrow_phase.hpp"
 
 namespace tamias2d {
 
 struct Contact {
     std::uint32_t shape_a = 0, shape_b = 0; ///< shape_a < shape_b
     Manifold manifold{};
+    SeparationHint hint{};                 ///< narrow-phase shortcut for pairs that stay apart
     double normal_impulse[2] = {0.0, 0.0}; ///< N s, accumulated (warm start)
     double tangent_impulse[2] = {0.0, 0.0};
     double total_normal_impulse[2] = {0.0, 0.0}; ///< N s, applied over the last step
