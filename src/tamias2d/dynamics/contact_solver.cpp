@@ -108,6 +108,7 @@ void prepare_contacts(std::span<ContactConstraint> constraints,
             cp.total_tangent_impulse = 0.0;
         }
         c.use_block = c.invertible = false;
+        c.k11 = c.k12 = c.k22 = c.inv_k11 = c.inv_k12 = c.inv_k22 = 0.0;
         if (c.count == 2) {
             const ContactConstraintPoint& p1 = c.points[0];
             const ContactConstraintPoint& p2 = c.points[1];

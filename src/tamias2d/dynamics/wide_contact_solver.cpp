@@ -88,13 +88,15 @@ void WideContactSolver::load(std::span<const ContactConstraint> constraints,
     graph_.colour(constraints, body_count);
     const auto order = graph_.packs();
     packs_.resize(order.size());
+    // Every field of every lane is written (an empty lane, or a one-point manifold's second
+    // point, from zeros): clearing the packs first cost as much again.
+    static const ContactConstraint empty{};
     for (std::size_t i = 0; i < order.size(); ++i) {
         WideContactConstraint& w = packs_[i];
-        w = WideContactConstraint{};
         for (int l = 0; l < wide_lanes; ++l) {
-            if (order[i][l] == ConstraintGraph::no_constraint)
-                continue;
-            const ContactConstraint& c = constraints[order[i][l]];
+            const std::uint32_t k = order[i][l];
+            const ContactConstraint& c =
+                k == ConstraintGraph::no_constraint ? empty : constraints[k];
             w.body_a[l] = c.body_a;
             w.body_b[l] = c.body_b;
             w.normal.x[l] = c.normal.x;
@@ -111,8 +113,8 @@ void WideContactSolver::load(std::span<const ContactConstraint> constraints,
             w.inv_k12[l] = c.inv_k12;
             w.inv_k22[l] = c.inv_k22;
             w.use_block[l] = c.use_block ? -1 : 0;
-            for (int j = 0; j < c.count; ++j) {
-                const ContactConstraintPoint& p = c.points[j];
+            for (int j = 0; j < 2; ++j) {
+                const ContactConstraintPoint& p = j < c.count ? c.points[j] : empty.points[1];
                 WideContactConstraintPoint& q = w.points[j];
                 q.r_a.x[l] = p.r_a.x;
                 q.r_a.y[l] = p.r_a.y;
