@@ -50,6 +50,7 @@ struct World::Impl {
     std::vector<Vec2d> accelerations;
     std::vector<double> angular_accelerations;
     std::vector<ContactConstraint> constraints;
+    std::vector<std::uint32_t> solver_index; ///< per body: Body::solver_index, compact
     WideContactSolver wide_solver;
     // The contact report is built when first asked for after a step or a destruction: most
     // steps of a game never read it, and copying every contact out each step cost a few
@@ -156,6 +157,13 @@ struct World::Impl {
             Contact c;
             c.shape_a = sa;
             c.shape_b = sb;
+            c.body_a = shapes[sa].body;
+            c.body_b = shapes[sb].body;
+            // Combination rules (docs/design.md): friction geometric mean, restitution max.
+            const Material& ma = shapes[sa].material;
+            const Material& mb = shapes[sb].material;
+            c.friction = std::sqrt(ma.friction * mb.friction);
+            c.restitution = std::max(ma.restitution, mb.restitution);
             contact_index.emplace(key, std::uint32_t(contacts.size()));
             contacts.push_back(c);
         }
@@ -207,15 +215,16 @@ struct World::Impl {
         const double h = dt / n;
         // Solver body 0 is the shared immovable body standing in for every static body.
         solver_bodies.assign(1, SolverBody{});
+        solver_index.resize(bodies.size());
         accelerations.assign(1, Vec2d{});
         angular_accelerations.assign(1, 0.0);
         for (std::uint32_t i = 0; i < bodies.size(); ++i) {
             Body& b = bodies[i];
             if (!b.alive || b.type == BodyType::static_body) {
-                b.solver_index = 0;
+                b.solver_index = solver_index[i] = 0;
                 continue;
             }
-            b.solver_index = std::uint32_t(solver_bodies.size());
+            b.solver_index = solver_index[i] = std::uint32_t(solver_bodies.size());
             solver_bodies.push_back({b.v, b.w, b.inv_mass, b.inv_inertia, {}, 0.0});
             Vec2d a{};
             double alpha = 0.0;
@@ -237,16 +246,13 @@ struct World::Impl {
             const Contact& c = contacts[i];
             if (c.manifold.count == 0)
                 continue;
-            const Shape& sa = shapes[c.shape_a];
-            const Shape& sb = shapes[c.shape_b];
             ContactConstraint& cc = constraints[used++];
-            cc.body_a = bodies[sa.body].solver_index;
-            cc.body_b = bodies[sb.body].solver_index;
+            cc.body_a = solver_index[c.body_a];
+            cc.body_b = solver_index[c.body_b];
             cc.contact = i;
             cc.normal = c.manifold.normal;
-            // Combination rules (docs/design.md): friction geometric mean, restitution max.
-            cc.friction = std::sqrt(sa.material.friction * sb.material.friction);
-            cc.restitution = std::max(sa.material.restitution, sb.material.restitution);
+            cc.friction = c.friction;
+            cc.restitution = c.restitution;
             cc.count = c.manifold.count;
             for (int j = 0; j < cc.count; ++j) {
                 const ManifoldPoint& mp = c.manifold.points[j];

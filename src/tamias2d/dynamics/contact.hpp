@@ -12,6 +12,9 @@ namespace tamias2d {
 
 struct Contact {
     std::uint32_t shape_a = 0, shape_b = 0; ///< shape_a < shape_b
+    std::uint32_t body_a = 0, body_b = 0;   ///< their bodies (a shape never changes body)
+    double friction = 0.0;                  ///< combined once: materials are fixed at creation
+    double restitution = 0.0;
     Manifold manifold{};
     SeparationHint hint{};                 ///< narrow-phase shortcut for pairs that stay apart
     double normal_impulse[2] = {0.0, 0.0}; ///< N s, accumulated (warm start)
