@@ -3,7 +3,7 @@
 
 namespace tamias_bench::typing {
 
-[[gnu::noinline]] void run_bridge(KernelData& d, int steps, double dt) {
+[[gnu::noinline]] TAMIAS_WIDE_KERNEL void run_bridge(KernelData& d, int steps, double dt) {
     Kernel<BridgeOps>::run(d, steps, dt);
 }
 

@@ -1,9 +1,12 @@
 // The plain-double instantiation of the typing kernel, and its data.
 #include "typing_kernel.hpp"
 
+#include "tamias2d/dynamics/contact_solver.hpp"
+#include "tamias2d/dynamics/wide_contact_solver.hpp"
+
 namespace tamias_bench::typing {
 
-[[gnu::noinline]] void run_plain(KernelData& d, int steps, double dt) {
+[[gnu::noinline]] TAMIAS_WIDE_KERNEL void run_plain(KernelData& d, int steps, double dt) {
     Kernel<PlainOps>::run(d, steps, dt);
 }
 
@@ -25,18 +28,20 @@ KernelData make_kernel_data(int base) {
             d.alpha.push_back(0.0);
         }
     }
+    std::vector<tamias2d::ContactConstraint> constraints;
     const auto add = [&](std::uint32_t a, std::uint32_t b, Vec2d normal, Vec2d ra1, Vec2d rb1,
                          Vec2d ra2, Vec2d rb2) {
-        KConstraint c;
-        c.a = a;
-        c.b = b;
+        tamias2d::ContactConstraint c;
+        c.body_a = a;
+        c.body_b = b;
         c.normal = normal;
+        c.friction = 0.6;
         c.count = 2;
         c.points[0].r_a = ra1;
         c.points[0].r_b = rb1;
         c.points[1].r_a = ra2;
         c.points[1].r_b = rb2;
-        d.constraints.push_back(c);
+        constraints.push_back(c);
     };
     const Vec2d up{0.0, 1.0}, right{1.0, 0.0};
     for (int row = 0; row < base; ++row) {
@@ -61,6 +66,12 @@ KernelData make_kernel_data(int base) {
             }
         }
     }
+    // Prepared and packed by the engine itself, as World::solve does each step.
+    tamias2d::prepare_contacts(constraints, d.bodies);
+    tamias2d::WideContactSolver solver;
+    solver.load(constraints, d.bodies);
+    d.packs.assign(solver.packs().begin(), solver.packs().end());
+    d.constraints = int(constraints.size());
     return d;
 }
 

@@ -3,8 +3,10 @@
 // (ContactConstraint, SolverBody), V = Wide solves four manifolds that share no body, one per
 // lane (WideContactConstraint, WideBody; see wide_contact_solver.cpp). The field names of the
 // two constraint and body types match, and both points are always processed: an unused second
-// point is all zeros and changes nothing. Every formula is a call into the model layer
-// (model_bridge.hpp: DD8, DD9, DD11, IM3).
+// point is all zeros and changes nothing. Every formula is a call into the model layer through
+// Model (bridge::Model: DD8, DD9, DD11, IM3 on Boost.Units quantities); the benchmark also
+// instantiates the iteration with the same formulas on plain doubles, to show that the typing
+// costs nothing (verification/bench/typing_kernel.hpp).
 #pragma once
 
 #include "tamias2d/dynamics/contact_solver.hpp"
@@ -56,73 +58,75 @@ NormalTarget<V> normal_target(V s, const ContactSolverSettings& st, bool use_bia
 }
 
 /// Re-applies the accumulated impulses (they carry the previous substep's solution forward).
-template <class Constraint, class Body> void warm_start(Constraint& c, Body& a, Body& b) {
+template <class Model = bridge::Model, class Constraint, class Body>
+void warm_start(Constraint& c, Body& a, Body& b) {
     const auto t = tangent_of(c.normal);
     for (auto& cp : c.points) {
-        bridge::apply_impulse(a, b, cp.r_a, cp.r_b, c.normal, cp.normal_impulse);
-        bridge::apply_impulse(a, b, cp.r_a, cp.r_b, t, cp.tangent_impulse);
+        Model::apply_impulse(a, b, cp.r_a, cp.r_b, c.normal, cp.normal_impulse);
+        Model::apply_impulse(a, b, cp.r_a, cp.r_b, t, cp.tangent_impulse);
         cp.total_normal_impulse += cp.normal_impulse;
         cp.total_tangent_impulse += cp.tangent_impulse;
     }
 }
 
 /// Sets point j's accumulated normal impulse for this substep and applies the change.
-template <class Constraint, class Body, class V = value_of<Body>>
+template <class Model, class Constraint, class Body, class V = value_of<Body>>
 void apply_normal_delta(Constraint& c, int j, Body& a, Body& b, V updated) {
     auto& cp = c.points[j];
     const V delta = updated - cp.normal_impulse;
     cp.normal_impulse = updated;
     cp.max_normal_impulse = max(cp.max_normal_impulse, updated);
     cp.total_normal_impulse += delta;
-    bridge::apply_impulse(a, b, cp.r_a, cp.r_b, c.normal, delta);
+    Model::apply_impulse(a, b, cp.r_a, cp.r_b, c.normal, delta);
 }
 
 /// Point j alone, from the bodies' current velocities (DD8 with the soft target): its new
 /// accumulated impulse, clamped to push only.
-template <class Constraint, class Body, class V = value_of<Body>>
+template <class Model, class Constraint, class Body, class V = value_of<Body>>
 V point_update(const Constraint& c, int j, const Body& a, const Body& b,
                const NormalTarget<V>& nt) {
     const auto& cp = c.points[j];
-    const V vn = bridge::relative_velocity(a, b, cp.r_a, cp.r_b, c.normal);
-    const V lambda = nt.mass_scale * bridge::impulse_to_reach(vn, nt.target, cp.normal_mass) -
+    const V vn = Model::relative_velocity(a, b, cp.r_a, cp.r_b, c.normal);
+    const V lambda = nt.mass_scale * Model::impulse_to_reach(vn, nt.target, cp.normal_mass) -
                      nt.impulse_scale * cp.normal_impulse;
     return max(cp.normal_impulse + lambda, broadcast<V>(0.0));
 }
 
 /// Both points at once (the 2x2 LCP) for targets t1, t2 with rigid masses, from the current
 /// velocities and the accumulated impulses x1, x2 that the LCP keeps non-negative.
-template <class Constraint, class Body, class V = value_of<Body>>
+template <class Model = bridge::Model, class Constraint, class Body, class V = value_of<Body>>
 TwoPointSolution<V> block_update(const Constraint& c, const Body& a, const Body& b, V t1, V t2,
                                  V x1, V x2) {
     const auto& p1 = c.points[0];
     const auto& p2 = c.points[1];
-    const V vn1 = bridge::relative_velocity(a, b, p1.r_a, p1.r_b, c.normal);
-    const V vn2 = bridge::relative_velocity(a, b, p2.r_a, p2.r_b, c.normal);
+    const V vn1 = Model::relative_velocity(a, b, p1.r_a, p1.r_b, c.normal);
+    const V vn2 = Model::relative_velocity(a, b, p2.r_a, p2.r_b, c.normal);
     // b = (velocity the points would have without their accumulated impulses) - target.
     const V b1 = vn1 - t1 - (c.k11 * x1 + c.k12 * x2);
     const V b2 = vn2 - t2 - (c.k12 * x1 + c.k22 * x2);
     return solve_two_point_lcp(c.k11, c.k12, c.k22, c.inv_k11, c.inv_k12, c.inv_k22, b1, b2);
 }
 
-template <class Constraint, class Body> void solve_friction(Constraint& c, Body& a, Body& b) {
+template <class Model, class Constraint, class Body>
+void solve_friction(Constraint& c, Body& a, Body& b) {
     using V = value_of<Body>;
     const auto t = tangent_of(c.normal);
     for (auto& cp : c.points) {
-        const V vt = bridge::relative_velocity(a, b, cp.r_a, cp.r_b, t);
+        const V vt = Model::relative_velocity(a, b, cp.r_a, cp.r_b, t);
         const V max_f = c.friction * cp.normal_impulse;
-        const V lambda = bridge::impulse_to_reach(vt, broadcast<V>(0.0), cp.tangent_mass);
+        const V lambda = Model::impulse_to_reach(vt, broadcast<V>(0.0), cp.tangent_mass);
         const V updated = min(max(cp.tangent_impulse + lambda, -max_f), max_f);
         const V delta = updated - cp.tangent_impulse;
         cp.tangent_impulse = updated;
         cp.total_tangent_impulse += delta;
-        bridge::apply_impulse(a, b, cp.r_a, cp.r_b, t, delta);
+        Model::apply_impulse(a, b, cp.r_a, cp.r_b, t, delta);
     }
 }
 
 /// One iteration for one manifold (or one per lane): with use_bias the soft, overlap-removing
 /// solve; without it the rigid relax. Two well-conditioned points with rigid targets are solved
 /// together (the LCP), exactly; otherwise point by point, each seeing the other's impulse.
-template <class Constraint, class Body>
+template <class Model = bridge::Model, class Constraint, class Body>
 void solve(Constraint& c, Body& a, Body& b, const ContactSolverSettings& st, bool use_bias) {
     using V = value_of<Body>;
     const NormalTarget<V> nt[2] = {
@@ -136,16 +140,16 @@ void solve(Constraint& c, Body& a, Body& b, const ContactSolverSettings& st, boo
     // do (for the block, exact for the linear system).
     TwoPointSolution<V> x{};
     if (any(block))
-        x = block_update(c, a, b, nt[0].target, nt[1].target, c.points[0].normal_impulse,
-                         c.points[1].normal_impulse);
+        x = block_update<Model>(c, a, b, nt[0].target, nt[1].target, c.points[0].normal_impulse,
+                                c.points[1].normal_impulse);
     const bool sequential_lanes = !all(block);
     for (int j = 0; j < 2; ++j) {
         V updated = j == 0 ? x.x1 : x.x2;
         if (sequential_lanes)
-            updated = select(block, updated, point_update(c, j, a, b, nt[j]));
-        apply_normal_delta(c, j, a, b, updated);
+            updated = select(block, updated, point_update<Model>(c, j, a, b, nt[j]));
+        apply_normal_delta<Model>(c, j, a, b, updated);
     }
-    solve_friction(c, a, b);
+    solve_friction<Model>(c, a, b);
 }
 
 } // namespace tamias2d::iteration

@@ -140,4 +140,22 @@ inline void apply_impulse(Body& a, Body& b, u::Vec2<V> r_a, u::Vec2<V> r_b, u::V
     b.w = vb.omega.value();
 }
 
+/// The three adapters the contact iteration calls, as one type it is instantiated with
+/// (contact_iteration.hpp's Model parameter).
+struct Model {
+    template <class V> static V impulse_to_reach(V vn, V target, V effective_mass) {
+        return bridge::impulse_to_reach(vn, target, effective_mass);
+    }
+    template <class Body, class V = value_of<Body>>
+    static V relative_velocity(const Body& a, const Body& b, u::Vec2<V> r_a, u::Vec2<V> r_b,
+                               u::Vec2<V> dir) {
+        return bridge::relative_velocity(a, b, r_a, r_b, dir);
+    }
+    template <class Body, class V = value_of<Body>>
+    static void apply_impulse(Body& a, Body& b, u::Vec2<V> r_a, u::Vec2<V> r_b, u::Vec2<V> dir,
+                              V lambda) {
+        bridge::apply_impulse(a, b, r_a, r_b, dir, lambda);
+    }
+};
+
 } // namespace tamias2d::bridge

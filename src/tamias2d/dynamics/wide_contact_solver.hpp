@@ -26,6 +26,8 @@ class WideContactSolver {
     void store(std::span<ContactConstraint> constraints) const;
 
     const ConstraintGraph& graph() const { return graph_; }
+    /// The packs in solve order (the benchmark runs its own instantiation of the loops on them).
+    std::span<WideContactConstraint> packs() { return packs_; }
     /// Whether this processor runs the packs with AVX2 (otherwise SSE2; the results are equal).
     static bool uses_avx2();
 
