@@ -51,6 +51,7 @@ struct World::Impl {
     std::vector<double> angular_accelerations;
     std::vector<ContactConstraint> constraints;
     std::vector<std::uint32_t> solver_index; ///< per body: Body::solver_index, compact
+    std::vector<std::uint32_t> bouncing;     ///< constraints with restitution, creation order
     WideContactSolver wide_solver;
     // The contact report is built when first asked for after a step or a destruction: most
     // steps of a game never read it, and copying every contact out each step cost a few
@@ -239,8 +240,10 @@ struct World::Impl {
         }
 
         // Filled in place, field by field: constructing each constraint anew zero-filled ~300
-        // bytes that are overwritten at once (prepare_contacts sets the rest).
+        // bytes that are overwritten at once (prepare_contact sets the rest, at once, while the
+        // constraint is in cache).
         constraints.resize(contacts.size());
+        bouncing.clear();
         std::size_t used = 0;
         for (std::uint32_t i = 0; i < contacts.size(); ++i) {
             const Contact& c = contacts[i];
@@ -263,9 +266,11 @@ struct World::Impl {
                 cp.normal_impulse = c.normal_impulse[j];
                 cp.tangent_impulse = c.tangent_impulse[j];
             }
+            prepare_contact(cc, solver_bodies);
+            if (cc.restitution > 0.0)
+                bouncing.push_back(std::uint32_t(used - 1));
         }
         constraints.resize(used);
-        prepare_contacts(constraints, solver_bodies);
         wide_solver.load(constraints, solver_bodies);
 
         ContactSolverSettings st;
@@ -295,18 +300,14 @@ struct World::Impl {
             }
             wide_solver.solve(solver_bodies, st, false);
         }
-        wide_solver.store(constraints);
+        wide_solver.store(constraints, contacts);
         // \srs{R8} Post-collision velocities (and, integrated, positions) of colliding bodies.
-        apply_restitution(constraints, solver_bodies, st);
-
-        for (const ContactConstraint& cc : constraints) {
+        apply_restitution(constraints, bouncing, solver_bodies, st);
+        for (std::uint32_t k : bouncing) {
+            const ContactConstraint& cc = constraints[k];
             Contact& c = contacts[cc.contact];
-            for (int j = 0; j < cc.count; ++j) {
-                c.normal_impulse[j] = cc.points[j].normal_impulse;
-                c.tangent_impulse[j] = cc.points[j].tangent_impulse;
+            for (int j = 0; j < cc.count; ++j)
                 c.total_normal_impulse[j] = cc.points[j].total_normal_impulse;
-                c.total_tangent_impulse[j] = cc.points[j].total_tangent_impulse;
-            }
         }
 
         for (Body& b : bodies) {

@@ -92,49 +92,52 @@ bool restitute(ContactConstraint& c, std::span<SolverBody> bodies,
 
 void prepare_contacts(std::span<ContactConstraint> constraints,
                       std::span<const SolverBody> bodies) {
-    for (ContactConstraint& c : constraints) {
-        const SolverBody& a = bodies[c.body_a];
-        const SolverBody& b = bodies[c.body_b];
-        const Vec2d t = iteration::tangent_of(c.normal);
-        for (int j = 0; j < c.count; ++j) {
-            ContactConstraintPoint& cp = c.points[j];
-            const double k = bridge::inverse_effective_mass(a, b, cp.r_a, cp.r_b, c.normal);
-            const double kt = bridge::inverse_effective_mass(a, b, cp.r_a, cp.r_b, t);
-            cp.normal_mass = k > 0.0 ? 1.0 / k : 0.0;
-            cp.tangent_mass = kt > 0.0 ? 1.0 / kt : 0.0;
-            cp.relative_velocity = bridge::relative_velocity(a, b, cp.r_a, cp.r_b, c.normal);
-            cp.max_normal_impulse = 0.0;
-            cp.total_normal_impulse = 0.0;
-            cp.total_tangent_impulse = 0.0;
-        }
-        c.use_block = c.invertible = false;
-        c.k11 = c.k12 = c.k22 = c.inv_k11 = c.inv_k12 = c.inv_k22 = 0.0;
-        if (c.count == 2) {
-            const ContactConstraintPoint& p1 = c.points[0];
-            const ContactConstraintPoint& p2 = c.points[1];
-            c.k11 = bridge::inverse_effective_mass(a, b, p1.r_a, p1.r_b, c.normal);
-            c.k22 = bridge::inverse_effective_mass(a, b, p2.r_a, p2.r_b, c.normal);
-            c.k12 = bridge::normal_mass_coupling(a, b, p1.r_a, p1.r_b, p2.r_a, p2.r_b, c.normal);
-            const double det = c.k11 * c.k22 - c.k12 * c.k12;
-            if (c.k11 > 0.0 && c.k22 > 0.0 &&
-                c.k11 * c.k11 < max_restitution_condition_number * det) {
-                c.invertible = true;
-                c.use_block = c.k11 * c.k11 < max_condition_number * det;
-                const double inv_det = 1.0 / det;
-                c.inv_k11 = c.k22 * inv_det;
-                c.inv_k12 = -c.k12 * inv_det;
-                c.inv_k22 = c.k11 * inv_det;
-            }
+    for (ContactConstraint& c : constraints)
+        prepare_contact(c, bodies);
+}
+
+void prepare_contact(ContactConstraint& c, std::span<const SolverBody> bodies) {
+    const SolverBody& a = bodies[c.body_a];
+    const SolverBody& b = bodies[c.body_b];
+    const Vec2d t = iteration::tangent_of(c.normal);
+    for (int j = 0; j < c.count; ++j) {
+        ContactConstraintPoint& cp = c.points[j];
+        const double k = bridge::inverse_effective_mass(a, b, cp.r_a, cp.r_b, c.normal);
+        const double kt = bridge::inverse_effective_mass(a, b, cp.r_a, cp.r_b, t);
+        cp.normal_mass = k > 0.0 ? 1.0 / k : 0.0;
+        cp.tangent_mass = kt > 0.0 ? 1.0 / kt : 0.0;
+        cp.relative_velocity = bridge::relative_velocity(a, b, cp.r_a, cp.r_b, c.normal);
+        cp.max_normal_impulse = 0.0;
+        cp.total_normal_impulse = 0.0;
+        cp.total_tangent_impulse = 0.0;
+    }
+    c.use_block = c.invertible = false;
+    c.k11 = c.k12 = c.k22 = c.inv_k11 = c.inv_k12 = c.inv_k22 = 0.0;
+    if (c.count == 2) {
+        const ContactConstraintPoint& p1 = c.points[0];
+        const ContactConstraintPoint& p2 = c.points[1];
+        c.k11 = bridge::inverse_effective_mass(a, b, p1.r_a, p1.r_b, c.normal);
+        c.k22 = bridge::inverse_effective_mass(a, b, p2.r_a, p2.r_b, c.normal);
+        c.k12 = bridge::normal_mass_coupling(a, b, p1.r_a, p1.r_b, p2.r_a, p2.r_b, c.normal);
+        const double det = c.k11 * c.k22 - c.k12 * c.k12;
+        if (c.k11 > 0.0 && c.k22 > 0.0 && c.k11 * c.k11 < max_restitution_condition_number * det) {
+            c.invertible = true;
+            c.use_block = c.k11 * c.k11 < max_condition_number * det;
+            const double inv_det = 1.0 / det;
+            c.inv_k11 = c.k22 * inv_det;
+            c.inv_k12 = -c.k12 * inv_det;
+            c.inv_k22 = c.k11 * inv_det;
         }
     }
 }
 
-void apply_restitution(std::span<ContactConstraint> constraints, std::span<SolverBody> bodies,
+void apply_restitution(std::span<ContactConstraint> constraints,
+                       std::span<const std::uint32_t> bouncing, std::span<SolverBody> bodies,
                        const ContactSolverSettings& st) {
     for (int pass = 0; pass < restitution_iterations; ++pass) {
         bool bounced = false;
-        for (ContactConstraint& c : constraints)
-            bounced = restitute(c, bodies, st) || bounced;
+        for (std::uint32_t i : bouncing)
+            bounced = restitute(constraints[i], bodies, st) || bounced;
         if (!bounced) // the same manifolds bounce in every pass: none now, none later
             break;
     }

@@ -4,6 +4,7 @@
 // substeps, one restitution pass (DD12 on the pre-step normal velocity).
 #pragma once
 
+#include <cstdint>
 #include <span>
 
 #include "tamias2d/dynamics/contact_constraint.hpp"
@@ -25,10 +26,15 @@ struct ContactSolverSettings {
 /// warm-start impulses must be filled in; everything else is set here (points past count are
 /// never read).
 void prepare_contacts(std::span<ContactConstraint> constraints, std::span<const SolverBody> bodies);
+/// The same for one constraint (the world prepares each as it builds it).
+void prepare_contact(ContactConstraint& c, std::span<const SolverBody> bodies);
 /// DD12: where bodies approached (v_n < -threshold) and pushed, drive v_n to -C_R v_n(before),
 /// solved on the step's total impulses over all manifolds (a few Gauss-Seidel passes) with
 /// targets that keep the step's impulses from adding kinetic energy (docs/verification.md, E1/E3).
-void apply_restitution(std::span<ContactConstraint> constraints, std::span<SolverBody> bodies,
+/// `bouncing` lists, in creation order, the constraints with a restitution above 0 (the others
+/// never bounce, so the pass skips them).
+void apply_restitution(std::span<ContactConstraint> constraints,
+                       std::span<const std::uint32_t> bouncing, std::span<SolverBody> bodies,
                        const ContactSolverSettings& settings);
 
 } // namespace tamias2d

@@ -35,6 +35,10 @@ struct alignas(wide_alignment) WideContactConstraint {
     Wide inv_k11{}, inv_k12{}, inv_k22{};
     WideMask use_block{};
     WideContactConstraintPoint points[2]{};
+    // Where the results go (read once per step, by WideContactSolver::store).
+    std::uint32_t contact[wide_lanes]{}; ///< the persistent contact of each lane
+    std::uint8_t count[wide_lanes]{};    ///< its points (0: empty lane)
+    std::uint8_t bouncing[wide_lanes]{}; ///< restitution above 0: the restitution pass needs it
 };
 
 /// The bodies of four lanes (gathered from SolverBody, written back after the solve).

@@ -50,6 +50,9 @@ void WideContactSolver::load(std::span<const ContactConstraint> constraints,
             w.inv_k12[l] = c.inv_k12;
             w.inv_k22[l] = c.inv_k22;
             w.use_block[l] = c.use_block ? -1 : 0;
+            w.contact[l] = c.contact;
+            w.count[l] = static_cast<std::uint8_t>(c.count);
+            w.bouncing[l] = c.restitution > 0.0;
             for (int j = 0; j < 2; ++j) {
                 const ContactConstraintPoint& p = j < c.count ? c.points[j] : empty.points[1];
                 WideContactConstraintPoint& q = w.points[j];
@@ -79,22 +82,47 @@ void WideContactSolver::solve(std::span<SolverBody> bodies, const ContactSolverS
     solve_packs(packs_.data(), packs_.size(), bodies.data(), settings, use_bias);
 }
 
+namespace {
+
+/// Copies lane l's point j results into a constraint point or a contact's arrays.
+inline void copy_out(const WideContactConstraintPoint& q, int l, ContactConstraintPoint& p) {
+    p.normal_impulse = q.normal_impulse[l];
+    p.tangent_impulse = q.tangent_impulse[l];
+    p.max_normal_impulse = q.max_normal_impulse[l];
+    p.total_normal_impulse = q.total_normal_impulse[l];
+    p.total_tangent_impulse = q.total_tangent_impulse[l];
+}
+
+} // namespace
+
 void WideContactSolver::store(std::span<ContactConstraint> constraints) const {
     const auto order = graph_.packs();
     for (std::size_t i = 0; i < order.size(); ++i) {
         const WideContactConstraint& w = packs_[i];
         for (int l = 0; l < wide_lanes; ++l) {
-            if (order[i][l] == ConstraintGraph::no_constraint)
+            for (int j = 0; j < w.count[l]; ++j)
+                copy_out(w.points[j], l, constraints[order[i][l]].points[j]);
+        }
+    }
+}
+
+void WideContactSolver::store(std::span<ContactConstraint> constraints,
+                              std::span<Contact> contacts) const {
+    const auto order = graph_.packs();
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        const WideContactConstraint& w = packs_[i];
+        for (int l = 0; l < wide_lanes; ++l) {
+            if (w.count[l] == 0)
                 continue;
-            ContactConstraint& c = constraints[order[i][l]];
-            for (int j = 0; j < c.count; ++j) {
-                ContactConstraintPoint& p = c.points[j];
+            Contact& c = contacts[w.contact[l]];
+            for (int j = 0; j < w.count[l]; ++j) {
                 const WideContactConstraintPoint& q = w.points[j];
-                p.normal_impulse = q.normal_impulse[l];
-                p.tangent_impulse = q.tangent_impulse[l];
-                p.max_normal_impulse = q.max_normal_impulse[l];
-                p.total_normal_impulse = q.total_normal_impulse[l];
-                p.total_tangent_impulse = q.total_tangent_impulse[l];
+                c.normal_impulse[j] = q.normal_impulse[l];
+                c.tangent_impulse[j] = q.tangent_impulse[l];
+                c.total_normal_impulse[j] = q.total_normal_impulse[l];
+                c.total_tangent_impulse[j] = q.total_tangent_impulse[l];
+                if (w.bouncing[l])
+                    copy_out(q, l, constraints[order[i][l]].points[j]);
             }
         }
     }

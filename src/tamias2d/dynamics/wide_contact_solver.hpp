@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "tamias2d/dynamics/constraint_graph.hpp"
+#include "tamias2d/dynamics/contact.hpp"
 #include "tamias2d/dynamics/contact_constraint.hpp"
 #include "tamias2d/dynamics/contact_solver.hpp"
 #include "tamias2d/dynamics/solver_body.hpp"
@@ -22,8 +23,11 @@ class WideContactSolver {
     void warm_start(std::span<SolverBody> bodies);
     /// One iteration: with use_bias the soft, overlap-removing solve; without it the rigid relax.
     void solve(std::span<SolverBody> bodies, const ContactSolverSettings& settings, bool use_bias);
-    /// Copies the impulses back into the constraints (restitution pass, warm start next step).
+    /// Copies the impulses back into the constraints.
     void store(std::span<ContactConstraint> constraints) const;
+    /// Copies the impulses into the persistent contacts (warm start next step, contact report)
+    /// and, for the manifolds that can bounce, into their constraints (restitution pass).
+    void store(std::span<ContactConstraint> constraints, std::span<Contact> contacts) const;
 
     const ConstraintGraph& graph() const { return graph_; }
     /// The packs in solve order (the benchmark runs its own instantiation of the loops on them).
