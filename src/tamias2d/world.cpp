@@ -242,7 +242,8 @@ struct World::Impl {
         // Filled in place, field by field: constructing each constraint anew zero-filled ~300
         // bytes that are overwritten at once (prepare_contact sets the rest, at once, while the
         // constraint is in cache).
-        constraints.resize(contacts.size());
+        if (constraints.size() < contacts.size())
+            constraints.resize(contacts.size()); // only while the scene grows: never shrunk
         bouncing.clear();
         std::size_t used = 0;
         for (std::uint32_t i = 0; i < contacts.size(); ++i) {
@@ -270,8 +271,8 @@ struct World::Impl {
             if (cc.restitution > 0.0)
                 bouncing.push_back(std::uint32_t(used - 1));
         }
-        constraints.resize(used);
-        wide_solver.load(constraints, solver_bodies);
+        const std::span<ContactConstraint> active(constraints.data(), used);
+        wide_solver.load(active, solver_bodies);
 
         ContactSolverSettings st;
         st.inv_h = 1.0 / h;
@@ -300,11 +301,11 @@ struct World::Impl {
             }
             wide_solver.solve(solver_bodies, st, false);
         }
-        wide_solver.store(constraints, contacts);
+        wide_solver.store(active, contacts);
         // \srs{R8} Post-collision velocities (and, integrated, positions) of colliding bodies.
-        apply_restitution(constraints, bouncing, solver_bodies, st);
+        apply_restitution(active, bouncing, solver_bodies, st);
         for (std::uint32_t k : bouncing) {
-            const ContactConstraint& cc = constraints[k];
+            const ContactConstraint& cc = active[k];
             Contact& c = contacts[cc.contact];
             for (int j = 0; j < cc.count; ++j)
                 c.total_normal_impulse[j] = cc.points[j].total_normal_impulse;

@@ -1,7 +1,6 @@
 #include "tamias2d/dynamics/constraint_graph.hpp"
 
 #include <algorithm>
-#include <bit>
 
 namespace tamias2d {
 
