@@ -24,14 +24,15 @@ inline constexpr std::size_t wide_alignment = sizeof(Wide);
 inline Wide splat(double x) {
     return Wide{} + x;
 }
-inline Wide select(WideMask m, Wide if_true, Wide if_false) {
+/// Lane by lane for a pack (mask: WideMask), plain for one lane (V = double, mask: bool);
+/// min and max keep std::min's and std::max's tie and signed-zero behaviour.
+template <class M, class V> V select(M m, V if_true, V if_false) {
     return m ? if_true : if_false;
 }
-/// std::min / std::max lane by lane, with their tie and signed-zero behaviour (b < a ? b : a).
-inline Wide min(Wide a, Wide b) {
+template <class V> V min(V a, V b) {
     return b < a ? b : a;
 }
-inline Wide max(Wide a, Wide b) {
+template <class V> V max(V a, V b) {
     return a < b ? b : a;
 }
 inline bool any(WideMask m) {
@@ -47,17 +48,8 @@ inline bool all(WideMask m) {
     return r != 0;
 }
 
-// The same vocabulary for one lane (V = double), so that the contact iteration is written once
+// The mask vocabulary for one lane (V = double), so that the contact iteration is written once
 // as a template over V (dynamics/contact_iteration.hpp).
-inline double select(bool m, double if_true, double if_false) {
-    return m ? if_true : if_false;
-}
-inline double min(double a, double b) {
-    return b < a ? b : a;
-}
-inline double max(double a, double b) {
-    return a < b ? b : a;
-}
 inline bool any(bool m) {
     return m;
 }
