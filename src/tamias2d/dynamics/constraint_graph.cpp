@@ -48,7 +48,6 @@ void ConstraintGraph::colour(std::span<const ContactConstraint> constraints,
             packs_.push_back(p);
         }
     }
-    level_count_ = int(levels);
 }
 
 } // namespace tamias2d

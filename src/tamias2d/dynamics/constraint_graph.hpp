@@ -32,7 +32,6 @@ class ConstraintGraph {
 
     /// The solve order: the packs of level 0, of level 1, ... (creation order within a level).
     std::span<const Pack> packs() const { return packs_; }
-    int level_count() const { return level_count_; }
 
   private:
     std::vector<std::uint32_t> body_level_; ///< one past the level of the body's last constraint
@@ -40,7 +39,6 @@ class ConstraintGraph {
     std::vector<std::uint32_t> level_start_, level_fill_;
     std::vector<std::uint32_t> sorted_;
     std::vector<Pack> packs_;
-    int level_count_ = 0;
 };
 
 } // namespace tamias2d

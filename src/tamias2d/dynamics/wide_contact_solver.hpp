@@ -29,7 +29,6 @@ class WideContactSolver {
     /// and, for the manifolds that can bounce, into their constraints (restitution pass).
     void store(std::span<ContactConstraint> constraints, std::span<Contact> contacts) const;
 
-    const ConstraintGraph& graph() const { return graph_; }
     /// The packs in solve order (the benchmark runs its own instantiation of the loops on them).
     std::span<WideContactConstraint> packs() { return packs_; }
     /// Whether this processor runs the packs with AVX2 (otherwise SSE2; the results are equal).
