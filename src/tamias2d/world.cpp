@@ -50,7 +50,7 @@ struct World::Impl {
     std::vector<Vec2d> accelerations;
     std::vector<double> angular_accelerations;
     std::vector<ContactConstraint> constraints;
-    std::vector<std::uint32_t> solver_index; ///< per body: Body::solver_index, compact
+    std::vector<std::uint32_t> solver_index; ///< per body: its SolverBody (0: static)
     std::vector<std::uint32_t> bouncing;     ///< constraints with restitution, creation order
     WideContactSolver wide_solver;
     // The contact report is built when first asked for after a step or a destruction: most
@@ -222,10 +222,10 @@ struct World::Impl {
         for (std::uint32_t i = 0; i < bodies.size(); ++i) {
             Body& b = bodies[i];
             if (!b.alive || b.type == BodyType::static_body) {
-                b.solver_index = solver_index[i] = 0;
+                solver_index[i] = 0;
                 continue;
             }
-            b.solver_index = solver_index[i] = std::uint32_t(solver_bodies.size());
+            solver_index[i] = std::uint32_t(solver_bodies.size());
             solver_bodies.push_back({b.v, b.w, b.inv_mass, b.inv_inertia, {}, 0.0});
             Vec2d a{};
             double alpha = 0.0;
@@ -311,10 +311,11 @@ struct World::Impl {
                 c.total_normal_impulse[j] = cc.points[j].total_normal_impulse;
         }
 
-        for (Body& b : bodies) {
+        for (std::uint32_t i = 0; i < bodies.size(); ++i) {
+            Body& b = bodies[i];
             if (!b.alive || b.type == BodyType::static_body)
                 continue;
-            const SolverBody& sb = solver_bodies[b.solver_index];
+            const SolverBody& sb = solver_bodies[solver_index[i]];
             b.v = sb.v;
             b.w = sb.w;
             b.center += sb.dp;

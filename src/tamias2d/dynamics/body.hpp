@@ -37,7 +37,6 @@ struct Body {
     bool fixed_rotation = false;
 
     std::vector<std::uint32_t> shapes;
-    std::uint32_t solver_index = 0;
 };
 
 } // namespace tamias2d
