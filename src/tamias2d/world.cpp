@@ -608,7 +608,9 @@ void World::apply_impulse(BodyId id, Vec2d impulse, Vec2d world_point) {
     // IM3's impulse application (DD10 for v, r x J / I for omega), against an immovable body.
     SolverBody ground{};
     SolverBody self{b.v, b.w, b.inv_mass, b.inv_inertia, {}, 0.0};
-    bridge::apply_impulse(ground, self, {}, world_point - b.center, impulse / magnitude, magnitude);
+    const Vec2d n = impulse / magnitude;
+    bridge::apply_impulse(ground, self, 0.0, bridge::moment_arm(world_point - b.center, n), n,
+                          magnitude);
     b.v = self.v;
     b.w = self.w;
 }

@@ -189,4 +189,38 @@ BOOST_AUTO_TEST_CASE(impulse_to_reach_target, *utf::label("DD8") * utf::label("D
     BOOST_TEST(dd08::impulse_to_reach(1.5 * m_s, 1.5 * m_s, m_eff).value() == 0.0);
 }
 
+// Oracle: geometry. |r x n| is the distance from the centre of mass to the line of action
+// through P along n, |r - (r . n) n| computed without a cross product; its sign is the sense of
+// the turn (counter-clockwise positive, A4): P = (0, 1) pushed along +x turns the body
+// clockwise. Round-off bound: a few roundings of terms below 2 m, 1e-15 m.
+BOOST_AUTO_TEST_CASE(moment_arm_is_the_distance_to_the_line_of_action, *utf::label("DD8")) {
+    BOOST_TEST(dd08::moment_arm(L2(0, 1), dd08::Normal{1, 0}).value() == -1.0);
+    BOOST_TEST(dd08::moment_arm(L2(1, 0), dd08::Normal{0, 1}).value() == 1.0);
+    for (double ang : {0.2, 1.6, 3.3, 5.0}) {
+        const dd08::Normal n{std::cos(ang), std::sin(ang)};
+        const double rx = 1.2, ry = -0.4;
+        const double along = rx * n.x + ry * n.y;
+        const double dx = rx - along * n.x, dy = ry - along * n.y;
+        const double arm = dd08::moment_arm(L2(rx, ry), n).value();
+        BOOST_TEST(std::abs(std::abs(arm) - std::hypot(dx, dy)) <= 1e-15);
+    }
+}
+
+// Oracle: hand derivation. m_A = 2 kg, I_A = 0.5 kg m^2, m_B = 4 kg, I_B = 2 kg m^2,
+// r_A = (1, 2), r_B = (-0.5, 1), n = (0.6, 0.8): r_A x n = 0.8 - 1.2 = -0.4 m,
+// r_B x n = -0.4 - 0.6 = -1 m, K = 1/2 + 1/4 + 0.16 / 0.5 + 1 / 2 = 1.57 kg^-1. The anchors'
+// form must give the same bits (it computes the arms, then this).
+BOOST_AUTO_TEST_CASE(effective_mass_from_arms_hand_value, *utf::label("DD8")) {
+    const dd08::Normal n{0.6, 0.8};
+    const auto A = body(2.0, 0.5);
+    const auto B = body(4.0, 2.0);
+    const Length arm_a = dd08::moment_arm(L2(1.0, 2.0), n);
+    const Length arm_b = dd08::moment_arm(L2(-0.5, 1.0), n);
+    BOOST_TEST(arm_a.value() == -0.4, tt::tolerance(1e-15));
+    BOOST_TEST(arm_b.value() == -1.0, tt::tolerance(1e-15));
+    const double K = dd08::effective_mass_inverse(A, B, arm_a, arm_b).value();
+    BOOST_TEST(K == 1.57, tt::tolerance(1e-15));
+    BOOST_TEST(K == dd08::effective_mass_inverse(A, B, L2(1.0, 2.0), L2(-0.5, 1.0), n).value());
+}
+
 BOOST_AUTO_TEST_SUITE_END()

@@ -89,4 +89,23 @@ BOOST_AUTO_TEST_CASE(rigid_velocity_field, *utf::label("DD9")) {
     BOOST_TEST(vB_from_A.y.value() == vB.y.value(), tt::tolerance(1e-14));
 }
 
+// Oracle: DD9's vector form projected on n. The solver's form v_O . n + omega (r x n) must
+// give dot(point_velocity(v_O, omega, r), n): the two differ only by the order of roundings
+// (about six products and sums of terms below 10 m/s: bound 1e-13 m/s). Directions in all
+// four quadrants, anchors on and off the normal.
+BOOST_AUTO_TEST_CASE(along_a_direction_is_the_projected_vector_form, *utf::label("DD9")) {
+    for (double ang : {0.0, 0.7, 2.1, 3.5, 5.6}) {
+        const Vec2<double> n{std::cos(ang), std::sin(ang)};
+        for (double rang : {0.3, 1.9, 4.4}) {
+            const Vec2<Length> r = L2(1.3 * std::cos(rang), 0.8 * std::sin(rang));
+            const Vec2<Velocity> vO = V2(-0.7, 2.3);
+            const auto w = -3.1 * rad_s;
+            const double along =
+                dd09::point_velocity_along(vO, w, tamias2d::units::cross(r, n), n).value();
+            const double projected = dot(dd09::point_velocity(vO, w, r), n).value();
+            BOOST_TEST(std::abs(along - projected) <= 1e-13);
+        }
+    }
+}
+
 BOOST_AUTO_TEST_SUITE_END()

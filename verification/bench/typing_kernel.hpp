@@ -63,22 +63,22 @@ struct PlainOps {
     static Vec2d displacement(Vec2d v, double h) { return {v.x * h, v.y * h}; }    // DD3
     static double rotation(double w, double h) { return w * h; }                   // DD6
     template <class Body, class V = tamias2d::bridge::value_of<Body>>
-    static V relative_velocity(const Body& a, const Body& b, Vec<V> ra, Vec<V> rb,
-                               Vec<V> dir) { // IM3 with DD9, DD11: B's point minus A's
-        const V bx = b.v.x + -b.w * rb.y, by = b.v.y + b.w * rb.x;
-        const V ax = a.v.x + -a.w * ra.y, ay = a.v.y + a.w * ra.x;
-        return (bx - ax) * dir.x + (by - ay) * dir.y;
+    static V relative_velocity(const Body& a, const Body& b, V arm_a, V arm_b,
+                               Vec<V> dir) { // IM3: DD9 along dir (dd09), B's minus A's (DD11)
+        const V vb = (b.v.x * dir.x + b.v.y * dir.y) + b.w * arm_b;
+        const V va = (a.v.x * dir.x + a.v.y * dir.y) + a.w * arm_a;
+        return vb - va;
     }
     template <class Body, class V = tamias2d::bridge::value_of<Body>>
-    static void apply_impulse(Body& a, Body& b, Vec<V> ra, Vec<V> rb, Vec<V> dir,
+    static void apply_impulse(Body& a, Body& b, V arm_a, V arm_b, Vec<V> dir,
                               V lambda) { // IM3: +J on B, -J on A
         const V jx = lambda * dir.x, jy = lambda * dir.y;
         b.v.x = b.v.x + b.inv_m * jx;
         b.v.y = b.v.y + b.inv_m * jy;
         a.v.x = a.v.x - a.inv_m * jx;
         a.v.y = a.v.y - a.inv_m * jy;
-        b.w = b.w + b.inv_I * (rb.x * jy - rb.y * jx);
-        a.w = a.w - a.inv_I * (ra.x * jy - ra.y * jx);
+        b.w = b.w + b.inv_I * (lambda * arm_b);
+        a.w = a.w - a.inv_I * (lambda * arm_a);
     }
     template <class V> static V impulse_to_reach(V vn, V target, V m) {
         return -(vn - target) * m; // DD8
@@ -121,10 +121,8 @@ template <class Ops> struct Kernel {
             // step's motion into the separations and start the next step from there.
             for (std::size_t i = 0; i < np; ++i) {
                 tamias2d::WideContactConstraint& c = packs[i];
-                const tamias2d::WideBody a =
-                    tamias2d::wide::gather_motions(d.bodies.data(), c.body_a, c.inv_m_a, c.inv_I_a);
-                const tamias2d::WideBody b =
-                    tamias2d::wide::gather_motions(d.bodies.data(), c.body_b, c.inv_m_b, c.inv_I_b);
+                const tamias2d::WideBody a = tamias2d::wide::gather(d.bodies.data(), c.body_a);
+                const tamias2d::WideBody b = tamias2d::wide::gather(d.bodies.data(), c.body_b);
                 for (auto& p : c.points)
                     p.base_separation = tamias2d::iteration::current_separation(p, a, b, c.normal);
             }

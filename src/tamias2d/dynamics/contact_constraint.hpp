@@ -9,7 +9,11 @@
 namespace tamias2d {
 
 struct ContactConstraintPoint {
-    Vec2d r_a{}, r_b{};                ///< m, anchors relative to the centres of mass
+    Vec2d r_a{}, r_b{}; ///< m, anchors relative to the centres of mass
+    /// m, moment arms r x n and r x t of the normal and the tangent (DD8), set by preparation:
+    /// the solver needs the anchors only through them.
+    double normal_arm_a = 0.0, normal_arm_b = 0.0;
+    double tangent_arm_a = 0.0, tangent_arm_b = 0.0;
     double base_separation = 0.0;      ///< m, separation minus dot(r_b - r_a, n) at preparation
     double normal_mass = 0.0;          ///< kg, 1 / K (DD8's denominator)
     double tangent_mass = 0.0;         ///< kg

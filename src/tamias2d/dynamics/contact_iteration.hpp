@@ -23,12 +23,12 @@ template <class V> units::Vec2<V> tangent_of(units::Vec2<V> n) {
 }
 
 /// Separation of a point now, from the separation at preparation and the substep motions
-/// (rotations linearised: r' ~ r + dq x r, accurate for the small rotations of a step).
+/// (rotations linearised: r' ~ r + dq x r, accurate for the small rotations of a step; with
+/// (dq x r) . n = dq (r x n), the moment arms give the rotations' share).
 template <class Point, class Body, class V = value_of<Body>>
 V current_separation(const Point& cp, const Body& a, const Body& b, units::Vec2<V> n) {
-    const units::Vec2<V> da = a.dp + a.dq * left_perp(cp.r_a);
-    const units::Vec2<V> db = b.dp + b.dq * left_perp(cp.r_b);
-    return cp.base_separation + dot(db - da, n);
+    return cp.base_separation +
+           (dot(b.dp - a.dp, n) + (b.dq * cp.normal_arm_b - a.dq * cp.normal_arm_a));
 }
 
 /// Normal velocity the point must reach in this iteration (m s^-1): a speculative gap may be
@@ -39,22 +39,22 @@ template <class V> struct NormalTarget {
     V impulse_scale{};
 };
 
-template <class V>
-NormalTarget<V> normal_target(V s, const ContactSolverSettings& st, bool use_bias) {
+template <bool use_bias, class V>
+NormalTarget<V> normal_target(V s, const ContactSolverSettings& st) {
     const V zero = broadcast<V>(0.0);
     const V one = broadcast<V>(1.0);
-    NormalTarget<V> touching{zero, one, zero}; // rigid, without bias: stop the approach
-    if (use_bias) {
+    const auto speculative = s > zero;
+    const V speculative_target = -s * broadcast<V>(st.inv_h);
+    if constexpr (!use_bias) { // rigid: stop the approach
+        return {select(speculative, speculative_target, zero), one, zero};
+    } else {
         const V bias =
             max(broadcast<V>(st.softness.bias_rate) * min(s + broadcast<V>(st.linear_slop), zero),
                 -broadcast<V>(st.push_max_velocity));
-        touching = {-bias, broadcast<V>(st.softness.mass_scale),
-                    broadcast<V>(st.softness.impulse_scale)};
+        return {select(speculative, speculative_target, -bias),
+                select(speculative, one, broadcast<V>(st.softness.mass_scale)),
+                select(speculative, zero, broadcast<V>(st.softness.impulse_scale))};
     }
-    const auto speculative = s > zero;
-    return {select(speculative, -s * broadcast<V>(st.inv_h), touching.target),
-            select(speculative, one, touching.mass_scale),
-            select(speculative, zero, touching.impulse_scale)};
 }
 
 /// Re-applies the accumulated impulses (they carry the previous substep's solution forward).
@@ -62,8 +62,8 @@ template <class Model = bridge::Model, class Constraint, class Body>
 void warm_start(Constraint& c, Body& a, Body& b) {
     const auto t = tangent_of(c.normal);
     for (auto& cp : c.points) {
-        Model::apply_impulse(a, b, cp.r_a, cp.r_b, c.normal, cp.normal_impulse);
-        Model::apply_impulse(a, b, cp.r_a, cp.r_b, t, cp.tangent_impulse);
+        Model::apply_impulse(a, b, cp.normal_arm_a, cp.normal_arm_b, c.normal, cp.normal_impulse);
+        Model::apply_impulse(a, b, cp.tangent_arm_a, cp.tangent_arm_b, t, cp.tangent_impulse);
         cp.total_normal_impulse += cp.normal_impulse;
         cp.total_tangent_impulse += cp.tangent_impulse;
     }
@@ -77,7 +77,7 @@ void apply_normal_delta(Constraint& c, int j, Body& a, Body& b, V updated) {
     cp.normal_impulse = updated;
     cp.max_normal_impulse = max(cp.max_normal_impulse, updated);
     cp.total_normal_impulse += delta;
-    Model::apply_impulse(a, b, cp.r_a, cp.r_b, c.normal, delta);
+    Model::apply_impulse(a, b, cp.normal_arm_a, cp.normal_arm_b, c.normal, delta);
 }
 
 /// Point j alone, from the bodies' current velocities (DD8 with the soft target): its new
@@ -86,7 +86,7 @@ template <class Model, class Constraint, class Body, class V = value_of<Body>>
 V point_update(const Constraint& c, int j, const Body& a, const Body& b,
                const NormalTarget<V>& nt) {
     const auto& cp = c.points[j];
-    const V vn = Model::relative_velocity(a, b, cp.r_a, cp.r_b, c.normal);
+    const V vn = Model::relative_velocity(a, b, cp.normal_arm_a, cp.normal_arm_b, c.normal);
     const V lambda = nt.mass_scale * Model::impulse_to_reach(vn, nt.target, cp.normal_mass) -
                      nt.impulse_scale * cp.normal_impulse;
     return max(cp.normal_impulse + lambda, broadcast<V>(0.0));
@@ -99,12 +99,13 @@ TwoPointSolution<V> block_update(const Constraint& c, const Body& a, const Body&
                                  V x1, V x2) {
     const auto& p1 = c.points[0];
     const auto& p2 = c.points[1];
-    const V vn1 = Model::relative_velocity(a, b, p1.r_a, p1.r_b, c.normal);
-    const V vn2 = Model::relative_velocity(a, b, p2.r_a, p2.r_b, c.normal);
+    const V vn1 = Model::relative_velocity(a, b, p1.normal_arm_a, p1.normal_arm_b, c.normal);
+    const V vn2 = Model::relative_velocity(a, b, p2.normal_arm_a, p2.normal_arm_b, c.normal);
     // b = (velocity the points would have without their accumulated impulses) - target.
     const V b1 = vn1 - t1 - (c.k11 * x1 + c.k12 * x2);
     const V b2 = vn2 - t2 - (c.k12 * x1 + c.k22 * x2);
-    return solve_two_point_lcp(c.k11, c.k12, c.k22, c.inv_k11, c.inv_k12, c.inv_k22, b1, b2);
+    return solve_two_point_lcp(c.k12, c.inv_k11, c.inv_k12, c.inv_k22, p1.normal_mass,
+                               p2.normal_mass, b1, b2);
 }
 
 template <class Model, class Constraint, class Body>
@@ -112,26 +113,26 @@ void solve_friction(Constraint& c, Body& a, Body& b) {
     using V = value_of<Body>;
     const auto t = tangent_of(c.normal);
     for (auto& cp : c.points) {
-        const V vt = Model::relative_velocity(a, b, cp.r_a, cp.r_b, t);
+        const V vt = Model::relative_velocity(a, b, cp.tangent_arm_a, cp.tangent_arm_b, t);
         const V max_f = c.friction * cp.normal_impulse;
         const V lambda = Model::impulse_to_reach(vt, broadcast<V>(0.0), cp.tangent_mass);
         const V updated = min(max(cp.tangent_impulse + lambda, -max_f), max_f);
         const V delta = updated - cp.tangent_impulse;
         cp.tangent_impulse = updated;
         cp.total_tangent_impulse += delta;
-        Model::apply_impulse(a, b, cp.r_a, cp.r_b, t, delta);
+        Model::apply_impulse(a, b, cp.tangent_arm_a, cp.tangent_arm_b, t, delta);
     }
 }
 
 /// One iteration for one manifold (or one per lane): with use_bias the soft, overlap-removing
 /// solve; without it the rigid relax. Two well-conditioned points with rigid targets are solved
 /// together (the LCP), exactly; otherwise point by point, each seeing the other's impulse.
-template <class Model = bridge::Model, class Constraint, class Body>
-void solve(Constraint& c, Body& a, Body& b, const ContactSolverSettings& st, bool use_bias) {
+template <bool use_bias, class Model = bridge::Model, class Constraint, class Body>
+void solve(Constraint& c, Body& a, Body& b, const ContactSolverSettings& st) {
     using V = value_of<Body>;
     const NormalTarget<V> nt[2] = {
-        normal_target(current_separation(c.points[0], a, b, c.normal), st, use_bias),
-        normal_target(current_separation(c.points[1], a, b, c.normal), st, use_bias)};
+        normal_target<use_bias>(current_separation(c.points[0], a, b, c.normal), st),
+        normal_target<use_bias>(current_separation(c.points[1], a, b, c.normal), st)};
     const V one = broadcast<V>(1.0);
     const auto soft = either(nt[0].mass_scale != one, nt[1].mass_scale != one);
     const auto block = and_not(c.use_block, soft);
@@ -150,6 +151,15 @@ void solve(Constraint& c, Body& a, Body& b, const ContactSolverSettings& st, boo
         apply_normal_delta<Model>(c, j, a, b, updated);
     }
     solve_friction<Model>(c, a, b);
+}
+
+/// The same with the choice made at run time (tests, one manifold at a time).
+template <class Model = bridge::Model, class Constraint, class Body>
+void solve(Constraint& c, Body& a, Body& b, const ContactSolverSettings& st, bool use_bias) {
+    if (use_bias)
+        solve<true, Model>(c, a, b, st);
+    else
+        solve<false, Model>(c, a, b, st);
 }
 
 } // namespace tamias2d::iteration

@@ -36,7 +36,7 @@ void apply_total_delta(ContactConstraint& c, int j, SolverBody& a, SolverBody& b
     ContactConstraintPoint& cp = c.points[j];
     const double delta = updated_total - cp.total_normal_impulse;
     cp.total_normal_impulse = updated_total;
-    bridge::apply_impulse(a, b, cp.r_a, cp.r_b, c.normal, delta);
+    bridge::apply_impulse(a, b, cp.normal_arm_a, cp.normal_arm_b, c.normal, delta);
 }
 
 /// DD12 for one manifold: each pushed point driven to its energy-safe target (see below).
@@ -81,7 +81,8 @@ bool restitute(ContactConstraint& c, std::span<SolverBody> bodies,
         if (!pushed[j])
             continue;
         ContactConstraintPoint& cp = c.points[j];
-        const double vn = bridge::relative_velocity(a, b, cp.r_a, cp.r_b, c.normal);
+        const double vn =
+            bridge::relative_velocity(a, b, cp.normal_arm_a, cp.normal_arm_b, c.normal);
         const double lambda = bridge::impulse_to_reach(vn, target[j], cp.normal_mass);
         apply_total_delta(c, j, a, b, std::max(cp.total_normal_impulse + lambda, 0.0));
     }
@@ -102,11 +103,16 @@ void prepare_contact(ContactConstraint& c, std::span<const SolverBody> bodies) {
     const Vec2d t = iteration::tangent_of(c.normal);
     for (int j = 0; j < c.count; ++j) {
         ContactConstraintPoint& cp = c.points[j];
-        const double k = bridge::inverse_effective_mass(a, b, cp.r_a, cp.r_b, c.normal);
-        const double kt = bridge::inverse_effective_mass(a, b, cp.r_a, cp.r_b, t);
+        cp.normal_arm_a = bridge::moment_arm(cp.r_a, c.normal);
+        cp.normal_arm_b = bridge::moment_arm(cp.r_b, c.normal);
+        cp.tangent_arm_a = bridge::moment_arm(cp.r_a, t);
+        cp.tangent_arm_b = bridge::moment_arm(cp.r_b, t);
+        const double k = bridge::inverse_effective_mass(a, b, cp.normal_arm_a, cp.normal_arm_b);
+        const double kt = bridge::inverse_effective_mass(a, b, cp.tangent_arm_a, cp.tangent_arm_b);
         cp.normal_mass = k > 0.0 ? 1.0 / k : 0.0;
         cp.tangent_mass = kt > 0.0 ? 1.0 / kt : 0.0;
-        cp.relative_velocity = bridge::relative_velocity(a, b, cp.r_a, cp.r_b, c.normal);
+        cp.relative_velocity =
+            bridge::relative_velocity(a, b, cp.normal_arm_a, cp.normal_arm_b, c.normal);
         cp.max_normal_impulse = 0.0;
         cp.total_normal_impulse = 0.0;
         cp.total_tangent_impulse = 0.0;
@@ -116,9 +122,10 @@ void prepare_contact(ContactConstraint& c, std::span<const SolverBody> bodies) {
     if (c.count == 2) {
         const ContactConstraintPoint& p1 = c.points[0];
         const ContactConstraintPoint& p2 = c.points[1];
-        c.k11 = bridge::inverse_effective_mass(a, b, p1.r_a, p1.r_b, c.normal);
-        c.k22 = bridge::inverse_effective_mass(a, b, p2.r_a, p2.r_b, c.normal);
-        c.k12 = bridge::normal_mass_coupling(a, b, p1.r_a, p1.r_b, p2.r_a, p2.r_b, c.normal);
+        c.k11 = bridge::inverse_effective_mass(a, b, p1.normal_arm_a, p1.normal_arm_b);
+        c.k22 = bridge::inverse_effective_mass(a, b, p2.normal_arm_a, p2.normal_arm_b);
+        c.k12 = bridge::normal_mass_coupling(a, b, p1.normal_arm_a, p1.normal_arm_b,
+                                             p2.normal_arm_a, p2.normal_arm_b);
         const double det = c.k11 * c.k22 - c.k12 * c.k12;
         if (c.k11 > 0.0 && c.k22 > 0.0 && c.k11 * c.k11 < max_restitution_condition_number * det) {
             c.invertible = true;

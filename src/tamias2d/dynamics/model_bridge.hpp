@@ -82,19 +82,25 @@ inline double rotation(double w, double h) {
         .value();
 }
 
-/// DD8's denominator K along unit direction n at anchors r_a, r_b (kg^-1).
-inline double inverse_effective_mass(const SolverBody& a, const SolverBody& b, Vec2d r_a, Vec2d r_b,
-                                     Vec2d n) {
+/// DD8's moment arm r x n of unit direction n at anchor r (m).
+inline double moment_arm(Vec2d r, Vec2d n) {
+    return m::dd08::moment_arm(typed<u::Length>(r), n).value();
+}
+/// DD8's denominator K along a unit direction with moment arms arm_a, arm_b (kg^-1).
+inline double inverse_effective_mass(const SolverBody& a, const SolverBody& b, double arm_a,
+                                     double arm_b) {
     return m::dd08::effective_mass_inverse(inverse_inertia(a), inverse_inertia(b),
-                                           typed<u::Length>(r_a), typed<u::Length>(r_b), n)
+                                           u::from_value<u::Length>(arm_a),
+                                           u::from_value<u::Length>(arm_b))
         .value();
 }
-/// DD8's K generalised to two points of one manifold (kg^-1).
-inline double normal_mass_coupling(const SolverBody& a, const SolverBody& b, Vec2d r_a1, Vec2d r_b1,
-                                   Vec2d r_a2, Vec2d r_b2, Vec2d n) {
-    return m::dd08::normal_mass_coupling(inverse_inertia(a), inverse_inertia(b),
-                                         typed<u::Length>(r_a1), typed<u::Length>(r_b1),
-                                         typed<u::Length>(r_a2), typed<u::Length>(r_b2), n)
+/// DD8's K generalised to two points of one manifold, from their moment arms (kg^-1).
+inline double normal_mass_coupling(const SolverBody& a, const SolverBody& b, double arm_a1,
+                                   double arm_b1, double arm_a2, double arm_b2) {
+    return m::dd08::normal_mass_coupling(
+               inverse_inertia(a), inverse_inertia(b), u::from_value<u::Length>(arm_a1),
+               u::from_value<u::Length>(arm_b1), u::from_value<u::Length>(arm_a2),
+               u::from_value<u::Length>(arm_b2))
         .value();
 }
 /// DD12 solved for the separating normal velocity: -C_R vn (m s^-1).
@@ -117,23 +123,24 @@ template <class Body> inline m::im3::VelocitiesOver<value_of<Body>> velocities(c
     return {typed_vec<u::Velocity>(b.v), typed_value<u::AngularVelocity>(b.w)};
 }
 
-/// IM3 (DD9, DD11): relative velocity of B with respect to A at the contact, along dir.
+/// IM3 (DD9, DD11): relative velocity of B with respect to A at the contact, along dir, from
+/// the moment arms of dir at A's and B's anchors.
 template <class Body, class V = value_of<Body>>
-inline V relative_velocity(const Body& a, const Body& b, u::Vec2<V> r_a, u::Vec2<V> r_b,
-                           u::Vec2<V> dir) {
-    return m::im3::normal_relative_velocity(velocities(b), velocities(a), typed_vec<u::Length>(r_b),
-                                            typed_vec<u::Length>(r_a), dir)
+inline V relative_velocity(const Body& a, const Body& b, V arm_a, V arm_b, u::Vec2<V> dir) {
+    return m::im3::normal_relative_velocity(velocities(b), velocities(a),
+                                            typed_value<u::Length>(arm_b),
+                                            typed_value<u::Length>(arm_a), dir)
         .value();
 }
 
-/// IM3: impulse lambda dir on B and -lambda dir on A (T2).
+/// IM3: impulse lambda dir on B and -lambda dir on A (T2), from the moment arms of dir.
 template <class Body, class V = value_of<Body>>
-inline void apply_impulse(Body& a, Body& b, u::Vec2<V> r_a, u::Vec2<V> r_b, u::Vec2<V> dir,
-                          V lambda) {
+inline void apply_impulse(Body& a, Body& b, V arm_a, V arm_b, u::Vec2<V> dir, V lambda) {
     m::im3::VelocitiesOver<V> va = velocities(a);
     m::im3::VelocitiesOver<V> vb = velocities(b);
-    m::im3::apply_impulse(vb, va, inverse_inertia(b), inverse_inertia(a), typed_vec<u::Length>(r_b),
-                          typed_vec<u::Length>(r_a), dir, typed_value<u::Impulse>(lambda));
+    m::im3::apply_impulse(vb, va, inverse_inertia(b), inverse_inertia(a),
+                          typed_value<u::Length>(arm_b), typed_value<u::Length>(arm_a), dir,
+                          typed_value<u::Impulse>(lambda));
     a.v = plain_vec(va.v);
     a.w = va.omega.value();
     b.v = plain_vec(vb.v);
@@ -147,14 +154,12 @@ struct Model {
         return bridge::impulse_to_reach(vn, target, effective_mass);
     }
     template <class Body, class V = value_of<Body>>
-    static V relative_velocity(const Body& a, const Body& b, u::Vec2<V> r_a, u::Vec2<V> r_b,
-                               u::Vec2<V> dir) {
-        return bridge::relative_velocity(a, b, r_a, r_b, dir);
+    static V relative_velocity(const Body& a, const Body& b, V arm_a, V arm_b, u::Vec2<V> dir) {
+        return bridge::relative_velocity(a, b, arm_a, arm_b, dir);
     }
     template <class Body, class V = value_of<Body>>
-    static void apply_impulse(Body& a, Body& b, u::Vec2<V> r_a, u::Vec2<V> r_b, u::Vec2<V> dir,
-                              V lambda) {
-        bridge::apply_impulse(a, b, r_a, r_b, dir, lambda);
+    static void apply_impulse(Body& a, Body& b, V arm_a, V arm_b, u::Vec2<V> dir, V lambda) {
+        bridge::apply_impulse(a, b, arm_a, arm_b, dir, lambda);
     }
 };
 

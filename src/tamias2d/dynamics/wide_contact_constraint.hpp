@@ -13,7 +13,8 @@
 namespace tamias2d {
 
 struct alignas(wide_alignment) WideContactConstraintPoint {
-    units::Vec2<Wide> r_a{}, r_b{};
+    Wide normal_arm_a{}, normal_arm_b{}; ///< r x n at each body's anchor (DD8)
+    Wide tangent_arm_a{}, tangent_arm_b{};
     Wide base_separation{};
     Wide normal_mass{};
     Wide tangent_mass{};
@@ -28,9 +29,6 @@ struct alignas(wide_alignment) WideContactConstraint {
     std::uint32_t body_a[wide_lanes]{}, body_b[wide_lanes]{}; ///< solver body indices
     units::Vec2<Wide> normal{};
     Wide friction{};
-    /// The bodies' inverse masses, copied at load (they do not change within a step), so that
-    /// the iterations gather only the velocities and motions.
-    Wide inv_m_a{}, inv_I_a{}, inv_m_b{}, inv_I_b{};
     Wide k11{}, k12{}, k22{};
     Wide inv_k11{}, inv_k12{}, inv_k22{};
     WideMask use_block{};
@@ -41,7 +39,8 @@ struct alignas(wide_alignment) WideContactConstraint {
     std::uint8_t bouncing[wide_lanes]{}; ///< restitution above 0: the restitution pass needs it
 };
 
-/// The bodies of four lanes (gathered from SolverBody, written back after the solve).
+/// The bodies of four lanes (gathered from SolverBody by transposing its rows, written back
+/// after the solve).
 struct alignas(wide_alignment) WideBody {
     units::Vec2<Wide> v{};
     Wide w{};

@@ -39,10 +39,6 @@ void WideContactSolver::load(std::span<const ContactConstraint> constraints,
             w.normal.x[l] = c.normal.x;
             w.normal.y[l] = c.normal.y;
             w.friction[l] = c.friction;
-            w.inv_m_a[l] = bodies[c.body_a].inv_m;
-            w.inv_I_a[l] = bodies[c.body_a].inv_I;
-            w.inv_m_b[l] = bodies[c.body_b].inv_m;
-            w.inv_I_b[l] = bodies[c.body_b].inv_I;
             w.k11[l] = c.k11;
             w.k12[l] = c.k12;
             w.k22[l] = c.k22;
@@ -56,10 +52,10 @@ void WideContactSolver::load(std::span<const ContactConstraint> constraints,
             for (int j = 0; j < 2; ++j) {
                 const ContactConstraintPoint& p = j < c.count ? c.points[j] : empty.points[1];
                 WideContactConstraintPoint& q = w.points[j];
-                q.r_a.x[l] = p.r_a.x;
-                q.r_a.y[l] = p.r_a.y;
-                q.r_b.x[l] = p.r_b.x;
-                q.r_b.y[l] = p.r_b.y;
+                q.normal_arm_a[l] = p.normal_arm_a;
+                q.normal_arm_b[l] = p.normal_arm_b;
+                q.tangent_arm_a[l] = p.tangent_arm_a;
+                q.tangent_arm_b[l] = p.tangent_arm_b;
                 q.base_separation[l] = p.base_separation;
                 q.normal_mass[l] = p.normal_mass;
                 q.tangent_mass[l] = p.tangent_mass;

@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 
 #include "tamias2d/dynamics/contact_iteration.hpp"
 #include "tamias2d/dynamics/solver_body.hpp"
@@ -24,50 +25,76 @@ namespace tamias2d::wide {
 
 using Lanes = const std::uint32_t (&)[wide_lanes];
 
-/// Velocities of the lanes' bodies, with the inverse masses the pack holds for them.
-inline WideBody gather_velocities(const SolverBody* bodies, Lanes index, Wide inv_m, Wide inv_I) {
+/// Row 0 or 1 of a solver body as one pack (SolverBody's layout: two aligned rows of four).
+inline Wide load_row(const SolverBody& b, int row) {
+    Wide r;
+    std::memcpy(&r, reinterpret_cast<const unsigned char*>(&b) + row * sizeof(Wide), sizeof r);
+    return r;
+}
+inline void store_row(SolverBody& b, Wide r) {
+    std::memcpy(reinterpret_cast<unsigned char*>(&b), &r, sizeof r);
+}
+
+/// 4 x 4 transpose: rows r0..r3 (one body each) into c0..c3 (one field each, a lane per body),
+/// or back. Eight shuffles instead of sixteen scalar loads and their inserts.
+inline void transpose(Wide r0, Wide r1, Wide r2, Wide r3, Wide& c0, Wide& c1, Wide& c2, Wide& c3) {
     static_assert(wide_lanes == 4);
+    const Wide t0 = __builtin_shufflevector(r0, r1, 0, 4, 2, 6);
+    const Wide t1 = __builtin_shufflevector(r0, r1, 1, 5, 3, 7);
+    const Wide t2 = __builtin_shufflevector(r2, r3, 0, 4, 2, 6);
+    const Wide t3 = __builtin_shufflevector(r2, r3, 1, 5, 3, 7);
+    c0 = __builtin_shufflevector(t0, t2, 0, 1, 4, 5);
+    c1 = __builtin_shufflevector(t1, t3, 0, 1, 4, 5);
+    c2 = __builtin_shufflevector(t0, t2, 2, 3, 6, 7);
+    c3 = __builtin_shufflevector(t1, t3, 2, 3, 6, 7);
+}
+
+/// The lanes' bodies: velocities, inverse masses and the motions so far in the step.
+inline WideBody gather(const SolverBody* bodies, Lanes index) {
     const SolverBody& b0 = bodies[index[0]];
     const SolverBody& b1 = bodies[index[1]];
     const SolverBody& b2 = bodies[index[2]];
     const SolverBody& b3 = bodies[index[3]];
     WideBody w;
-    w.v = {Wide{b0.v.x, b1.v.x, b2.v.x, b3.v.x}, Wide{b0.v.y, b1.v.y, b2.v.y, b3.v.y}};
-    w.w = Wide{b0.w, b1.w, b2.w, b3.w};
-    w.inv_m = inv_m;
-    w.inv_I = inv_I;
+    transpose(load_row(b0, 0), load_row(b1, 0), load_row(b2, 0), load_row(b3, 0), w.v.x, w.v.y, w.w,
+              w.inv_m);
+    transpose(load_row(b0, 1), load_row(b1, 1), load_row(b2, 1), load_row(b3, 1), w.inv_I, w.dp.x,
+              w.dp.y, w.dq);
     return w;
 }
 
-/// The same and the motions so far in the step (for the current separations).
-inline WideBody gather_motions(const SolverBody* bodies, Lanes index, Wide inv_m, Wide inv_I) {
-    WideBody w = gather_velocities(bodies, index, inv_m, inv_I);
-    const SolverBody& b0 = bodies[index[0]];
-    const SolverBody& b1 = bodies[index[1]];
-    const SolverBody& b2 = bodies[index[2]];
-    const SolverBody& b3 = bodies[index[3]];
-    w.dp = {Wide{b0.dp.x, b1.dp.x, b2.dp.x, b3.dp.x}, Wide{b0.dp.y, b1.dp.y, b2.dp.y, b3.dp.y}};
-    w.dq = Wide{b0.dq, b1.dq, b2.dq, b3.dq};
-    return w;
-}
-
-/// Lanes naming the static body 0 write back its unchanged zeros (its inverse mass is 0); no
-/// other body appears twice in a pack.
+/// Writes the velocity row back. Lanes naming the static body 0 write back its unchanged zeros
+/// (its inverse mass is 0); no other body appears twice in a pack.
 inline void scatter(SolverBody* bodies, Lanes index, const WideBody& w) {
-    for (int l = 0; l < wide_lanes; ++l) {
-        SolverBody& b = bodies[index[l]];
-        b.v = {w.v.x[l], w.v.y[l]};
-        b.w = w.w[l];
-    }
+    Wide r0, r1, r2, r3;
+    transpose(w.v.x, w.v.y, w.w, w.inv_m, r0, r1, r2, r3);
+    store_row(bodies[index[0]], r0);
+    store_row(bodies[index[1]], r1);
+    store_row(bodies[index[2]], r2);
+    store_row(bodies[index[3]], r3);
 }
 
 template <class Model>
 void warm_start_packs(WideContactConstraint* packs, std::size_t count, SolverBody* bodies) {
     for (std::size_t i = 0; i < count; ++i) {
         WideContactConstraint& c = packs[i];
-        WideBody a = gather_velocities(bodies, c.body_a, c.inv_m_a, c.inv_I_a);
-        WideBody b = gather_velocities(bodies, c.body_b, c.inv_m_b, c.inv_I_b);
+        WideBody a = gather(bodies, c.body_a);
+        WideBody b = gather(bodies, c.body_b);
         iteration::warm_start<Model>(c, a, b);
+        scatter(bodies, c.body_a, a);
+        scatter(bodies, c.body_b, b);
+    }
+}
+
+template <bool use_bias, class Model>
+void solve_packs(WideContactConstraint* packs, std::size_t count, SolverBody* bodies,
+                 const ContactSolverSettings& settings) {
+    const ContactSolverSettings st = settings; // a local copy: the body stores cannot touch it
+    for (std::size_t i = 0; i < count; ++i) {
+        WideContactConstraint& c = packs[i];
+        WideBody a = gather(bodies, c.body_a);
+        WideBody b = gather(bodies, c.body_b);
+        iteration::solve<use_bias, Model>(c, a, b, st);
         scatter(bodies, c.body_a, a);
         scatter(bodies, c.body_b, b);
     }
@@ -76,15 +103,10 @@ void warm_start_packs(WideContactConstraint* packs, std::size_t count, SolverBod
 template <class Model>
 void solve_packs(WideContactConstraint* packs, std::size_t count, SolverBody* bodies,
                  const ContactSolverSettings& settings, bool use_bias) {
-    const ContactSolverSettings st = settings; // a local copy: the body stores cannot touch it
-    for (std::size_t i = 0; i < count; ++i) {
-        WideContactConstraint& c = packs[i];
-        WideBody a = gather_motions(bodies, c.body_a, c.inv_m_a, c.inv_I_a);
-        WideBody b = gather_motions(bodies, c.body_b, c.inv_m_b, c.inv_I_b);
-        iteration::solve<Model>(c, a, b, st, use_bias);
-        scatter(bodies, c.body_a, a);
-        scatter(bodies, c.body_b, b);
-    }
+    if (use_bias)
+        solve_packs<true, Model>(packs, count, bodies, settings);
+    else
+        solve_packs<false, Model>(packs, count, bodies, settings);
 }
 
 } // namespace tamias2d::wide

@@ -18,23 +18,43 @@ template <class V> struct InverseInertiaOver {
 };
 using InverseInertia = InverseInertiaOver<double>;
 
-/// \srs{DD8} The denominator of DD8 generalised to two contact points 1 and 2 of the same pair:
-/// K12 = (1/mA + 1/mB) |n|^2 + (r_A1 x n)(r_A2 x n)/I_A + (r_B1 x n)(r_B2 x n)/I_B with |n| = 1.
+/// \srs{DD8} The moment arm of the line of action n through P about a body's centre of mass,
+/// r x n (m): the quantity DD8's denominator squares. It stays constant while r and n do, so
+/// the solver computes it once per step; (omega x r) . n = omega (r x n) (DD9) and
+/// r x (j n) = j (r x n) (IM3) are then one product each.
+template <class V> Over<Length, V> moment_arm(Vec2<Over<Length, V>> r, Vec2<V> n) {
+    return cross(r, n);
+}
+
+/// \srs{DD8} The denominator of DD8 generalised to two contact points 1 and 2 of the same pair,
+/// from the moment arms a_i = r_Ai x n, b_i = r_Bi x n:
+/// K12 = (1/mA + 1/mB) |n|^2 + a1 a2 / I_A + b1 b2 / I_B with |n| = 1.
 /// K11 is DD8's own denominator; K12 couples two simultaneous contacts (see the solver).
+inline InverseMass normal_mass_coupling(InverseInertia A, InverseInertia B, Length arm_A1,
+                                        Length arm_B1, Length arm_A2, Length arm_B2) {
+    return A.inv_m + B.inv_m + A.inv_I * per_radian(arm_A1) * per_radian(arm_A2) +
+           B.inv_I * per_radian(arm_B1) * per_radian(arm_B2);
+}
+
+/// \srs{DD8} The same from the anchors r_A1, r_B1, r_A2, r_B2 and the unit normal n.
 inline InverseMass normal_mass_coupling(InverseInertia A, InverseInertia B, Vec2<Length> r_A1,
                                         Vec2<Length> r_B1, Vec2<Length> r_A2, Vec2<Length> r_B2,
                                         Normal n) {
-    const auto a1 = per_radian(cross(r_A1, n));
-    const auto a2 = per_radian(cross(r_A2, n));
-    const auto b1 = per_radian(cross(r_B1, n));
-    const auto b2 = per_radian(cross(r_B2, n));
-    return A.inv_m + B.inv_m + A.inv_I * a1 * a2 + B.inv_I * b1 * b2;
+    return normal_mass_coupling(A, B, moment_arm(r_A1, n), moment_arm(r_B1, n), moment_arm(r_A2, n),
+                                moment_arm(r_B2, n));
 }
 
-/// \srs{DD8} DD8's denominator: the inverse effective mass of the pair along n at P.
+/// \srs{DD8} DD8's denominator: the inverse effective mass of the pair along n at P, from the
+/// moment arms r_AP x n and r_BP x n.
+inline InverseMass effective_mass_inverse(InverseInertia A, InverseInertia B, Length arm_A,
+                                          Length arm_B) {
+    return normal_mass_coupling(A, B, arm_A, arm_B, arm_A, arm_B);
+}
+
+/// \srs{DD8} The same from the anchors r_AP, r_BP and the unit normal n.
 inline InverseMass effective_mass_inverse(InverseInertia A, InverseInertia B, Vec2<Length> r_AP,
                                           Vec2<Length> r_BP, Normal n) {
-    return normal_mass_coupling(A, B, r_AP, r_BP, r_AP, r_BP, n);
+    return effective_mass_inverse(A, B, moment_arm(r_AP, n), moment_arm(r_BP, n));
 }
 
 /// \srs{DD8} The impulse along n that takes the normal relative velocity from v_rel_n to

@@ -12,4 +12,11 @@ Vec2<Over<Velocity, V>> relative_velocity(Vec2<Over<Velocity, V>> v_AP,
     return v_AP - v_BP;
 }
 
+/// \srs{DD11} The same for the components of v^AP and v^BP along one direction (the normal
+/// relative velocity the contact solver works with).
+template <class V>
+Over<Velocity, V> relative_velocity(Over<Velocity, V> v_AP_n, Over<Velocity, V> v_BP_n) {
+    return v_AP_n - v_BP_n;
+}
+
 } // namespace tamias2d::model::dd11

@@ -18,26 +18,43 @@ using Velocities = VelocitiesOver<double>;
 
 /// \srs{IM3} Applies a normal impulse j n at P to A and -j n to B (T2):
 /// v_A' = v_A + j n / m_A, v_B' = v_B - j n / m_B,
-/// omega_A' = omega_A + (r_AP x j n) / I_A, omega_B' = omega_B - (r_BP x j n) / I_B.
+/// omega_A' = omega_A + (r_AP x j n) / I_A, omega_B' = omega_B - (r_BP x j n) / I_B,
+/// with r x (j n) = j (r x n) from the moment arms arm_A = r_AP x n, arm_B = r_BP x n (DD8).
+template <class V>
+void apply_impulse(VelocitiesOver<V>& A, VelocitiesOver<V>& B, InverseInertiaOver<V> a,
+                   InverseInertiaOver<V> b, Over<Length, V> arm_A, Over<Length, V> arm_B, Vec2<V> n,
+                   Over<Impulse, V> j) {
+    const Vec2<Over<Impulse, V>> J = j * n;
+    A.v += a.inv_m * J;
+    B.v -= b.inv_m * J;
+    A.omega += a.inv_I * per_radian(j * arm_A);
+    B.omega -= b.inv_I * per_radian(j * arm_B);
+}
+
+/// \srs{IM3} The same from the anchors r_AP, r_BP.
 template <class V>
 void apply_impulse(VelocitiesOver<V>& A, VelocitiesOver<V>& B, InverseInertiaOver<V> a,
                    InverseInertiaOver<V> b, Vec2<Over<Length, V>> r_AP, Vec2<Over<Length, V>> r_BP,
                    Vec2<V> n, Over<Impulse, V> j) {
-    const Vec2<Over<Impulse, V>> J = j * n;
-    A.v += a.inv_m * J;
-    B.v -= b.inv_m * J;
-    A.omega += a.inv_I * per_radian(cross(r_AP, J));
-    B.omega -= b.inv_I * per_radian(cross(r_BP, J));
+    apply_impulse(A, B, a, b, dd08::moment_arm(r_AP, n), dd08::moment_arm(r_BP, n), n, j);
 }
 
-/// \srs{IM3} Normal relative velocity of A with respect to B at P: (v^AP - v^BP) . n (DD9, DD11).
+/// \srs{IM3} Normal relative velocity of A with respect to B at P: (v^AP - v^BP) . n (DD9 along
+/// n, DD11), from the moment arms arm_A = r_AP x n, arm_B = r_BP x n.
+template <class V>
+Over<Velocity, V> normal_relative_velocity(const VelocitiesOver<V>& A, const VelocitiesOver<V>& B,
+                                           Over<Length, V> arm_A, Over<Length, V> arm_B,
+                                           Vec2<V> n) {
+    return dd11::relative_velocity(dd09::point_velocity_along(A.v, A.omega, arm_A, n),
+                                   dd09::point_velocity_along(B.v, B.omega, arm_B, n));
+}
+
+/// \srs{IM3} The same from the anchors r_AP, r_BP.
 template <class V>
 Over<Velocity, V> normal_relative_velocity(const VelocitiesOver<V>& A, const VelocitiesOver<V>& B,
                                            Vec2<Over<Length, V>> r_AP, Vec2<Over<Length, V>> r_BP,
                                            Vec2<V> n) {
-    return dot(dd11::relative_velocity(dd09::point_velocity(A.v, A.omega, r_AP),
-                                       dd09::point_velocity(B.v, B.omega, r_BP)),
-               n);
+    return normal_relative_velocity(A, B, dd08::moment_arm(r_AP, n), dd08::moment_arm(r_BP, n), n);
 }
 
 /// \srs{IM3} Collision response for one vertex-edge contact (A5, no friction A6): the impulse of
