@@ -49,9 +49,11 @@ struct World::Impl {
     std::vector<SolverBody> solver_bodies;
     std::vector<Vec2d> accelerations;
     std::vector<double> angular_accelerations;
-    std::vector<ContactConstraint> constraints;
     std::vector<std::uint32_t> solver_index; ///< per body: its SolverBody (0: static)
-    std::vector<std::uint32_t> bouncing;     ///< constraints with restitution, creation order
+    std::vector<GraphEdge> edges;            ///< the touching manifolds, creation order
+    std::vector<std::uint32_t> edge_contact; ///< per edge: its contact
+    std::vector<std::uint32_t> edge_slot;    ///< per edge: its copy in `bouncing`, or no_slot
+    std::vector<ContactConstraint> bouncing; ///< manifolds with restitution, creation order
     WideContactSolver wide_solver;
     // The contact report is built when first asked for after a step or a destruction: most
     // steps of a game never read it, and copying every contact out each step cost a few
@@ -239,40 +241,59 @@ struct World::Impl {
             angular_accelerations.push_back(alpha);
         }
 
-        // Filled in place, field by field: constructing each constraint anew zero-filled ~300
-        // bytes that are overwritten at once (prepare_contact sets the rest, at once, while the
-        // constraint is in cache).
-        if (constraints.size() < contacts.size())
-            constraints.resize(contacts.size()); // only while the scene grows: never shrunk
-        bouncing.clear();
-        std::size_t used = 0;
+        // The touching manifolds in creation order, as the colouring sees them; those that can
+        // bounce get a slot for the restitution pass's copy, also in creation order.
+        edges.clear();
+        edge_contact.clear();
+        edge_slot.clear();
+        std::uint32_t bounce_count = 0;
         for (std::uint32_t i = 0; i < contacts.size(); ++i) {
             const Contact& c = contacts[i];
             if (c.manifold.count == 0)
                 continue;
-            ContactConstraint& cc = constraints[used++];
-            cc.body_a = solver_index[c.body_a];
-            cc.body_b = solver_index[c.body_b];
-            cc.contact = i;
-            cc.normal = c.manifold.normal;
-            cc.friction = c.friction;
-            cc.restitution = c.restitution;
-            cc.count = c.manifold.count;
-            for (int j = 0; j < cc.count; ++j) {
-                const ManifoldPoint& mp = c.manifold.points[j];
-                ContactConstraintPoint& cp = cc.points[j];
-                cp.r_a = mp.anchor_a;
-                cp.r_b = mp.anchor_b;
-                cp.base_separation = mp.separation;
-                cp.normal_impulse = c.normal_impulse[j];
-                cp.tangent_impulse = c.tangent_impulse[j];
-            }
-            prepare_contact(cc, solver_bodies);
-            if (cc.restitution > 0.0)
-                bouncing.push_back(std::uint32_t(used - 1));
+            edges.push_back(
+                {solver_index[c.body_a], solver_index[c.body_b], c.manifold.count == 2});
+            edge_contact.push_back(i);
+            edge_slot.push_back(c.restitution > 0.0 ? bounce_count++ : WideContactSolver::no_slot);
         }
-        const std::span<ContactConstraint> active(constraints.data(), used);
-        wide_solver.load(active, solver_bodies);
+        if (bouncing.size() < bounce_count)
+            bouncing.resize(bounce_count); // only while the scene grows: never shrunk
+        wide_solver.colour(edges, solver_bodies.size());
+        // Each manifold is prepared straight into its lane, in solve order: one constraint on
+        // the stack, every field of it written here or by prepare_contact, so nothing is
+        // cleared (a per-step array of prepared constraints cost a pass over ~300 bytes each).
+        ContactConstraint cc;
+        const auto order = wide_solver.order();
+        for (std::size_t p = 0; p < order.size(); ++p) {
+            for (int l = 0; l < wide_lanes; ++l) {
+                const std::uint32_t k = order[p][l];
+                if (k == ConstraintGraph::no_constraint) {
+                    wide_solver.clear_lane(p, l);
+                    continue;
+                }
+                const Contact& c = contacts[edge_contact[k]];
+                cc.body_a = edges[k].body_a;
+                cc.body_b = edges[k].body_b;
+                cc.contact = edge_contact[k];
+                cc.normal = c.manifold.normal;
+                cc.friction = c.friction;
+                cc.restitution = c.restitution;
+                cc.count = c.manifold.count;
+                for (int j = 0; j < cc.count; ++j) {
+                    const ManifoldPoint& mp = c.manifold.points[j];
+                    ContactConstraintPoint& cp = cc.points[j];
+                    cp.r_a = mp.anchor_a;
+                    cp.r_b = mp.anchor_b;
+                    cp.base_separation = mp.separation;
+                    cp.normal_impulse = c.normal_impulse[j];
+                    cp.tangent_impulse = c.tangent_impulse[j];
+                }
+                prepare_contact(cc, solver_bodies);
+                if (edge_slot[k] != WideContactSolver::no_slot)
+                    bouncing[edge_slot[k]] = cc;
+                wide_solver.set_lane(p, l, cc, edge_slot[k]);
+            }
+        }
 
         ContactSolverSettings st;
         st.inv_h = 1.0 / h;
@@ -301,14 +322,14 @@ struct World::Impl {
             }
             wide_solver.solve(solver_bodies, st, false);
         }
-        wide_solver.store(active, contacts);
+        const std::span<ContactConstraint> bouncers(bouncing.data(), bounce_count);
+        wide_solver.store(contacts, bouncers);
         // \srs{R8} Post-collision velocities (and, integrated, positions) of colliding bodies.
-        apply_restitution(active, bouncing, solver_bodies, st);
-        for (std::uint32_t k : bouncing) {
-            const ContactConstraint& cc = active[k];
-            Contact& c = contacts[cc.contact];
-            for (int j = 0; j < cc.count; ++j)
-                c.total_normal_impulse[j] = cc.points[j].total_normal_impulse;
+        apply_restitution(bouncers, solver_bodies, st);
+        for (const ContactConstraint& b : bouncers) {
+            Contact& c = contacts[b.contact];
+            for (int j = 0; j < b.count; ++j)
+                c.total_normal_impulse[j] = b.points[j].total_normal_impulse;
         }
 
         for (std::uint32_t i = 0; i < bodies.size(); ++i) {

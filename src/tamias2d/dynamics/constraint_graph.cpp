@@ -4,15 +4,14 @@
 
 namespace tamias2d {
 
-void ConstraintGraph::colour(std::span<const ContactConstraint> constraints,
-                             std::size_t body_count) {
+void ConstraintGraph::colour(std::span<const GraphEdge> edges, std::size_t body_count) {
     // Constraints of one level share no body, and constraints that share one keep their
     // creation order, so solving level by level is the sequential pass in creation order.
     body_level_.assign(body_count, 0);
-    level_of_.resize(constraints.size());
+    level_of_.resize(edges.size());
     std::uint32_t levels = 0;
-    for (std::uint32_t i = 0; i < constraints.size(); ++i) {
-        const ContactConstraint& c = constraints[i];
+    for (std::uint32_t i = 0; i < edges.size(); ++i) {
+        const GraphEdge& c = edges[i];
         // Body 0 stands for every static body: never written, so it orders nothing.
         const std::uint32_t la = c.body_a != 0 ? body_level_[c.body_a] : 0;
         const std::uint32_t lb = c.body_b != 0 ? body_level_[c.body_b] : 0;
@@ -23,7 +22,7 @@ void ConstraintGraph::colour(std::span<const ContactConstraint> constraints,
             body_level_[c.body_b] = level;
         // Within a level the order is free (its constraints commute): those solved as a 2x2
         // block come first, so that packs mostly take one path of the iteration, not both.
-        level_of_[i] = 2 * (level - 1) + (c.use_block ? 0 : 1);
+        level_of_[i] = 2 * (level - 1) + (c.block ? 0 : 1);
         levels = std::max(levels, level);
     }
     // Counting sort by (level, block or not), stable.
@@ -33,9 +32,9 @@ void ConstraintGraph::colour(std::span<const ContactConstraint> constraints,
         ++level_start_[l + 1];
     for (std::uint32_t l = 0; l < buckets; ++l)
         level_start_[l + 1] += level_start_[l];
-    sorted_.resize(constraints.size());
+    sorted_.resize(edges.size());
     level_fill_.assign(level_start_.begin(), level_start_.end() - 1);
-    for (std::uint32_t i = 0; i < constraints.size(); ++i)
+    for (std::uint32_t i = 0; i < edges.size(); ++i)
         sorted_[level_fill_[level_of_[i]]++] = i;
     packs_.clear();
     for (std::uint32_t l = 0; l < levels; ++l) {

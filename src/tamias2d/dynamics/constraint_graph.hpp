@@ -15,10 +15,17 @@
 #include <span>
 #include <vector>
 
-#include "tamias2d/dynamics/contact_constraint.hpp"
 #include "tamias2d/math/wide.hpp"
 
 namespace tamias2d {
+
+/// One manifold as the colouring sees it: the solver bodies it couples (0: the static body) and
+/// whether it is likely solved as a two-point block (those go first within a level, so that
+/// packs mostly take one path of the iteration; any answer gives the same results).
+struct GraphEdge {
+    std::uint32_t body_a = 0, body_b = 0;
+    bool block = false;
+};
 
 class ConstraintGraph {
   public:
@@ -26,9 +33,9 @@ class ConstraintGraph {
     /// Up to four constraint indices solved together (unused lanes: no_constraint).
     using Pack = std::array<std::uint32_t, wide_lanes>;
 
-    /// Each constraint goes one level after the last earlier constraint sharing a moving body
-    /// with it. Allocates only while the scene grows.
-    void colour(std::span<const ContactConstraint> constraints, std::size_t body_count);
+    /// Each manifold goes one level after the last earlier manifold sharing a moving body with
+    /// it. Allocates only while the scene grows.
+    void colour(std::span<const GraphEdge> edges, std::size_t body_count);
 
     /// The solve order: the packs of level 0, of level 1, ... (creation order within a level).
     std::span<const Pack> packs() const { return packs_; }

@@ -138,13 +138,12 @@ void prepare_contact(ContactConstraint& c, std::span<const SolverBody> bodies) {
     }
 }
 
-void apply_restitution(std::span<ContactConstraint> constraints,
-                       std::span<const std::uint32_t> bouncing, std::span<SolverBody> bodies,
+void apply_restitution(std::span<ContactConstraint> bouncing, std::span<SolverBody> bodies,
                        const ContactSolverSettings& st) {
     for (int pass = 0; pass < restitution_iterations; ++pass) {
         bool bounced = false;
-        for (std::uint32_t i : bouncing)
-            bounced = restitute(constraints[i], bodies, st) || bounced;
+        for (ContactConstraint& c : bouncing)
+            bounced = restitute(c, bodies, st) || bounced;
         if (!bounced) // the same manifolds bounce in every pass: none now, none later
             break;
     }

@@ -31,10 +31,9 @@ void prepare_contact(ContactConstraint& c, std::span<const SolverBody> bodies);
 /// DD12: where bodies approached (v_n < -threshold) and pushed, drive v_n to -C_R v_n(before),
 /// solved on the step's total impulses over all manifolds (a few Gauss-Seidel passes) with
 /// targets that keep the step's impulses from adding kinetic energy (docs/verification.md, E1/E3).
-/// `bouncing` lists, in creation order, the constraints with a restitution above 0 (the others
-/// never bounce, so the pass skips them).
-void apply_restitution(std::span<ContactConstraint> constraints,
-                       std::span<const std::uint32_t> bouncing, std::span<SolverBody> bodies,
+/// `bouncing` holds, in creation order, the manifolds with a restitution above 0 (the others
+/// never bounce, so the pass does not see them), with their impulses after the iterations.
+void apply_restitution(std::span<ContactConstraint> bouncing, std::span<SolverBody> bodies,
                        const ContactSolverSettings& settings);
 
 } // namespace tamias2d

@@ -34,9 +34,9 @@ struct alignas(wide_alignment) WideContactConstraint {
     WideMask use_block{};
     WideContactConstraintPoint points[2]{};
     // Where the results go (read once per step, by WideContactSolver::store).
-    std::uint32_t contact[wide_lanes]{}; ///< the persistent contact of each lane
-    std::uint8_t count[wide_lanes]{};    ///< its points (0: empty lane)
-    std::uint8_t bouncing[wide_lanes]{}; ///< restitution above 0: the restitution pass needs it
+    std::uint32_t contact[wide_lanes]{};          ///< the persistent contact of each lane
+    std::uint32_t restitution_slot[wide_lanes]{}; ///< the restitution pass's copy, if it can bounce
+    std::uint8_t count[wide_lanes]{};             ///< its points (0: empty lane)
 };
 
 /// The bodies of four lanes (gathered from SolverBody by transposing its rows, written back

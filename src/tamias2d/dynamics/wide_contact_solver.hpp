@@ -17,17 +17,30 @@ namespace tamias2d {
 
 class WideContactSolver {
   public:
-    /// Colours the prepared constraints (prepare_contacts) and packs them lane by lane.
-    void load(std::span<const ContactConstraint> constraints, std::span<const SolverBody> bodies);
+    /// A lane's manifold cannot bounce (restitution 0): the restitution pass has no copy of it.
+    static constexpr std::uint32_t no_slot = 0xffffffffu;
+
+    /// Orders the manifolds (ConstraintGraph's levels, four to a pack) and sizes the packs;
+    /// set_lane then fills every lane of order() (clear_lane the empty ones).
+    void colour(std::span<const GraphEdge> edges, std::size_t body_count);
+    /// The solve order: the manifold (index into colour's edges) each lane of each pack holds.
+    std::span<const ConstraintGraph::Pack> order() const { return graph_.packs(); }
+    /// Lane l of pack i gets a constraint prepared by prepare_contact; `slot` is where the
+    /// restitution pass keeps its own copy (no_slot: none), for store() to update.
+    void set_lane(std::size_t i, int l, const ContactConstraint& c, std::uint32_t slot);
+    void clear_lane(std::size_t i, int l);
+    /// colour and set_lane for constraints already prepared in an array (tests, benchmarks).
+    void load(std::span<const ContactConstraint> constraints, std::size_t body_count);
+
     /// Re-applies the accumulated impulses (they carry the previous substep's solution forward).
     void warm_start(std::span<SolverBody> bodies);
     /// One iteration: with use_bias the soft, overlap-removing solve; without it the rigid relax.
     void solve(std::span<SolverBody> bodies, const ContactSolverSettings& settings, bool use_bias);
-    /// Copies the impulses back into the constraints.
+    /// Copies the impulses back into the constraints given to load.
     void store(std::span<ContactConstraint> constraints) const;
     /// Copies the impulses into the persistent contacts (warm start next step, contact report)
-    /// and, for the manifolds that can bounce, into their constraints (restitution pass).
-    void store(std::span<ContactConstraint> constraints, std::span<Contact> contacts) const;
+    /// and, for the manifolds that can bounce, into the restitution pass's copies (by slot).
+    void store(std::span<Contact> contacts, std::span<ContactConstraint> bouncing) const;
 
     /// The packs in solve order (the benchmark runs its own instantiation of the loops on them).
     std::span<WideContactConstraint> packs() { return packs_; }
@@ -36,6 +49,7 @@ class WideContactSolver {
 
   private:
     ConstraintGraph graph_;
+    std::vector<GraphEdge> edges_; ///< load's scratch
     std::vector<WideContactConstraint> packs_;
 };
 
