@@ -251,8 +251,9 @@ struct World::Impl {
             const Contact& c = contacts[i];
             if (c.manifold.count == 0)
                 continue;
-            edges.push_back(
-                {solver_index[c.body_a], solver_index[c.body_b], c.manifold.count == 2});
+            edges.push_back({solver_index[c.body_a], solver_index[c.body_b],
+                             path_group(c.manifold.count, c.manifold.points[0].separation,
+                                        c.manifold.points[1].separation)});
             edge_contact.push_back(i);
             edge_slot.push_back(c.restitution > 0.0 ? bounce_count++ : WideContactSolver::no_slot);
         }

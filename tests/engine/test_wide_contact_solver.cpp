@@ -140,7 +140,7 @@ BOOST_AUTO_TEST_CASE(levels_separate_bodies_and_keep_their_order,
         const Scene scene = random_scene(seed, 4 + int(seed % 13), 60);
         std::vector<GraphEdge> edges;
         for (const ContactConstraint& c : scene.constraints)
-            edges.push_back({c.body_a, c.body_b, c.use_block});
+            edges.push_back({c.body_a, c.body_b, path_group(c.count, 0.0, 0.0, c.use_block)});
         ConstraintGraph graph;
         graph.colour(edges, scene.bodies.size());
         std::vector<int> position(scene.constraints.size(), -1);

@@ -20,13 +20,13 @@ void ConstraintGraph::colour(std::span<const GraphEdge> edges, std::size_t body_
             body_level_[c.body_a] = level;
         if (c.body_b != 0)
             body_level_[c.body_b] = level;
-        // Within a level the order is free (its constraints commute): those solved as a 2x2
-        // block come first, so that packs mostly take one path of the iteration, not both.
-        level_of_[i] = 2 * (level - 1) + (c.block ? 0 : 1);
+        // Within a level the order is free (its constraints commute): grouped by the path of
+        // the iteration they take, so that packs mostly take one, not both.
+        level_of_[i] = path_groups * (level - 1) + static_cast<std::uint32_t>(c.group);
         levels = std::max(levels, level);
     }
-    // Counting sort by (level, block or not), stable.
-    const std::uint32_t buckets = 2 * levels;
+    // Counting sort by (level, group), stable.
+    const std::uint32_t buckets = path_groups * levels;
     level_start_.assign(buckets + 1, 0);
     for (std::uint32_t l : level_of_)
         ++level_start_[l + 1];
@@ -38,8 +38,8 @@ void ConstraintGraph::colour(std::span<const GraphEdge> edges, std::size_t body_
         sorted_[level_fill_[level_of_[i]]++] = i;
     packs_.clear();
     for (std::uint32_t l = 0; l < levels; ++l) {
-        const std::uint32_t end = level_start_[2 * l + 2];
-        for (std::uint32_t k = level_start_[2 * l]; k < end; k += wide_lanes) {
+        const std::uint32_t end = level_start_[path_groups * (l + 1)];
+        for (std::uint32_t k = level_start_[path_groups * l]; k < end; k += wide_lanes) {
             Pack p;
             p.fill(no_constraint);
             for (std::uint32_t j = 0; j < wide_lanes && k + j < end; ++j)

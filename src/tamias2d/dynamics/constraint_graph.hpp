@@ -19,12 +19,29 @@
 
 namespace tamias2d {
 
-/// One manifold as the colouring sees it: the solver bodies it couples (0: the static body) and
-/// whether it is likely solved as a two-point block (those go first within a level, so that
-/// packs mostly take one path of the iteration; any answer gives the same results).
+/// Which path of the contact iteration a manifold likely takes. Within a level manifolds
+/// commute, so the colouring orders them by group: packs then mostly hold lanes that take one
+/// path, and the iteration computes only that one. Any grouping gives the same results.
+enum class PathGroup : std::uint8_t {
+    block_always,  ///< two points, both apart: the 2x2 block in the soft and the rigid iteration
+    block_rigid,   ///< two points touching: soft point by point, then the block in the relax
+    point_by_point ///< one point, or two that are nearly the same constraint
+};
+inline constexpr std::uint32_t path_groups = 3;
+
+/// The group of a manifold of `count` points with separations s1, s2 (m) at preparation; a
+/// two-point manifold too ill-conditioned for the block (block_capable false) goes point by
+/// point. Apart at preparation predicts speculative in the soft iteration (rigid targets).
+inline PathGroup path_group(int count, double s1, double s2, bool block_capable = true) {
+    if (count != 2 || !block_capable)
+        return PathGroup::point_by_point;
+    return s1 > 0.0 && s2 > 0.0 ? PathGroup::block_always : PathGroup::block_rigid;
+}
+
+/// One manifold as the colouring sees it: the solver bodies it couples (0: the static body).
 struct GraphEdge {
     std::uint32_t body_a = 0, body_b = 0;
-    bool block = false;
+    PathGroup group = PathGroup::point_by_point;
 };
 
 class ConstraintGraph {

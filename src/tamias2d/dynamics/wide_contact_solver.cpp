@@ -64,8 +64,14 @@ void WideContactSolver::set_lane(std::size_t i, int l, const ContactConstraint& 
 }
 
 void WideContactSolver::clear_lane(std::size_t i, int l) {
-    // All zeros on the static body 0: solving it changes nothing.
-    static const ContactConstraint empty{};
+    // All zeros on the static body 0: solving it changes nothing. Marked for the block path,
+    // which gives it zero impulses too, so that a part-filled pack of two-point manifolds
+    // does not also take the point-by-point path for its empty lanes.
+    static const ContactConstraint empty = [] {
+        ContactConstraint c;
+        c.use_block = true;
+        return c;
+    }();
     set_lane(i, l, empty, no_slot);
 }
 
@@ -73,7 +79,9 @@ void WideContactSolver::load(std::span<const ContactConstraint> constraints,
                              std::size_t body_count) {
     edges_.clear();
     for (const ContactConstraint& c : constraints)
-        edges_.push_back({c.body_a, c.body_b, c.use_block});
+        edges_.push_back({c.body_a, c.body_b,
+                          path_group(c.count, c.points[0].base_separation,
+                                     c.points[1].base_separation, c.use_block)});
     colour(edges_, body_count);
     const auto lanes = order();
     for (std::size_t i = 0; i < lanes.size(); ++i) {
