@@ -213,6 +213,28 @@ struct World::Impl {
             destroy_contact(*it);
     }
 
+    /// The restitution pass's own copy of a manifold that can bounce, prepared as its lane is.
+    void prepare_bouncing(ContactConstraint& cc, const GraphEdge& edge, std::uint32_t contact) {
+        const Contact& c = contacts[contact];
+        cc.body_a = edge.body_a;
+        cc.body_b = edge.body_b;
+        cc.contact = contact;
+        cc.normal = c.manifold.normal;
+        cc.friction = c.friction;
+        cc.restitution = c.restitution;
+        cc.count = c.manifold.count;
+        for (int j = 0; j < cc.count; ++j) {
+            const ManifoldPoint& mp = c.manifold.points[j];
+            ContactConstraintPoint& cp = cc.points[j];
+            cp.r_a = mp.anchor_a;
+            cp.r_b = mp.anchor_b;
+            cp.base_separation = mp.separation;
+            cp.normal_impulse = c.normal_impulse[j];
+            cp.tangent_impulse = c.tangent_impulse[j];
+        }
+        prepare_contact(cc, solver_bodies);
+    }
+
     void solve(double dt) {
         const int n = def.substeps;
         const double h = dt / n;
@@ -260,40 +282,40 @@ struct World::Impl {
         if (bouncing.size() < bounce_count)
             bouncing.resize(bounce_count); // only while the scene grows: never shrunk
         wide_solver.colour(edges, solver_bodies.size());
-        // Each manifold is prepared straight into its lane, in solve order: one constraint on
-        // the stack, every field of it written here or by prepare_contact, so nothing is
-        // cleared (a per-step array of prepared constraints cost a pass over ~300 bytes each).
-        ContactConstraint cc;
+        // The manifolds are prepared straight into their packs, four lanes at once, in solve
+        // order (a per-step array of prepared constraints cost a pass over ~300 bytes each);
+        // those that can bounce also get a scalar copy for the restitution pass (the same
+        // arithmetic, so the same bits).
         const auto order = wide_solver.order();
         for (std::size_t p = 0; p < order.size(); ++p) {
+            WideManifoldInput in;
             for (int l = 0; l < wide_lanes; ++l) {
                 const std::uint32_t k = order[p][l];
-                if (k == ConstraintGraph::no_constraint) {
-                    wide_solver.clear_lane(p, l);
+                if (k == ConstraintGraph::no_constraint)
                     continue;
-                }
                 const Contact& c = contacts[edge_contact[k]];
-                cc.body_a = edges[k].body_a;
-                cc.body_b = edges[k].body_b;
-                cc.contact = edge_contact[k];
-                cc.normal = c.manifold.normal;
-                cc.friction = c.friction;
-                cc.restitution = c.restitution;
-                cc.count = c.manifold.count;
-                for (int j = 0; j < cc.count; ++j) {
+                in.body_a[l] = edges[k].body_a;
+                in.body_b[l] = edges[k].body_b;
+                in.contact[l] = edge_contact[k];
+                in.restitution_slot[l] = edge_slot[k];
+                in.count[l] = static_cast<std::uint8_t>(c.manifold.count);
+                in.normal.x[l] = c.manifold.normal.x;
+                in.normal.y[l] = c.manifold.normal.y;
+                in.friction[l] = c.friction;
+                for (int j = 0; j < c.manifold.count; ++j) {
                     const ManifoldPoint& mp = c.manifold.points[j];
-                    ContactConstraintPoint& cp = cc.points[j];
-                    cp.r_a = mp.anchor_a;
-                    cp.r_b = mp.anchor_b;
-                    cp.base_separation = mp.separation;
-                    cp.normal_impulse = c.normal_impulse[j];
-                    cp.tangent_impulse = c.tangent_impulse[j];
+                    in.r_a[j].x[l] = mp.anchor_a.x;
+                    in.r_a[j].y[l] = mp.anchor_a.y;
+                    in.r_b[j].x[l] = mp.anchor_b.x;
+                    in.r_b[j].y[l] = mp.anchor_b.y;
+                    in.separation[j][l] = mp.separation;
+                    in.normal_impulse[j][l] = c.normal_impulse[j];
+                    in.tangent_impulse[j][l] = c.tangent_impulse[j];
                 }
-                prepare_contact(cc, solver_bodies);
                 if (edge_slot[k] != WideContactSolver::no_slot)
-                    bouncing[edge_slot[k]] = cc;
-                wide_solver.set_lane(p, l, cc, edge_slot[k]);
+                    prepare_bouncing(bouncing[edge_slot[k]], edges[k], edge_contact[k]);
             }
+            wide_solver.prepare_pack(p, in, solver_bodies);
         }
 
         ContactSolverSettings st;

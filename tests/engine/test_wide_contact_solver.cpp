@@ -99,7 +99,7 @@ BOOST_AUTO_TEST_CASE(packs_reproduce_the_sequential_pass, *utf::label("IM3") * u
 
         Scene wide = scene;
         WideContactSolver solver;
-        solver.load(wide.constraints, wide.bodies.size());
+        solver.load(wide.constraints, wide.bodies);
         for (int pass = 0; pass < 3; ++pass) {
             solver.warm_start(wide.bodies);
             solver.solve(wide.bodies, st, true);

@@ -69,7 +69,7 @@ KernelData make_kernel_data(int base) {
     // Prepared and packed by the engine itself, as World::solve does each step.
     tamias2d::prepare_contacts(constraints, d.bodies);
     tamias2d::WideContactSolver solver;
-    solver.load(constraints, d.bodies.size());
+    solver.load(constraints, d.bodies);
     d.packs.assign(solver.packs().begin(), solver.packs().end());
     d.constraints = int(constraints.size());
     return d;

@@ -3,20 +3,12 @@
 #include <algorithm>
 
 #include "tamias2d/dynamics/contact_iteration.hpp"
+#include "tamias2d/dynamics/contact_preparation.hpp"
 #include "tamias2d/dynamics/model_bridge.hpp"
 
 namespace tamias2d {
 
 namespace {
-
-/// Bounds on K's condition for solving two points together; beyond them the two rows are nearly
-/// the same constraint and the sequential solve is used. The iterations keep Box2D 2.4's 1000
-/// (1e6 there changed the rain scene enough for two boxes to splash over its wall, finding O3).
-/// The restitution pass must be exact for a two-point bounce to conserve energy (finding E3,
-/// docs/verification.md: seed 2000114 has a condition of 1408); in double a condition of 1e6
-/// still leaves about ten correct digits.
-constexpr double max_condition_number = 1.0e3;
-constexpr double max_restitution_condition_number = 1.0e6;
 
 /// Passes of the restitution solve over all manifolds (Gauss-Seidel on the step's totals): a
 /// body that bounces on two manifolds at once (a box in a corner) needs both solved together
@@ -100,42 +92,37 @@ void prepare_contacts(std::span<ContactConstraint> constraints,
 void prepare_contact(ContactConstraint& c, std::span<const SolverBody> bodies) {
     const SolverBody& a = bodies[c.body_a];
     const SolverBody& b = bodies[c.body_b];
-    const Vec2d t = iteration::tangent_of(c.normal);
     for (int j = 0; j < c.count; ++j) {
         ContactConstraintPoint& cp = c.points[j];
-        cp.normal_arm_a = bridge::moment_arm(cp.r_a, c.normal);
-        cp.normal_arm_b = bridge::moment_arm(cp.r_b, c.normal);
-        cp.tangent_arm_a = bridge::moment_arm(cp.r_a, t);
-        cp.tangent_arm_b = bridge::moment_arm(cp.r_b, t);
-        const double k = bridge::inverse_effective_mass(a, b, cp.normal_arm_a, cp.normal_arm_b);
-        const double kt = bridge::inverse_effective_mass(a, b, cp.tangent_arm_a, cp.tangent_arm_b);
-        cp.normal_mass = k > 0.0 ? 1.0 / k : 0.0;
-        cp.tangent_mass = kt > 0.0 ? 1.0 / kt : 0.0;
+        const preparation::PreparedPoint<double> p =
+            preparation::prepare_point(a, b, cp.r_a, cp.r_b, c.normal);
+        cp.normal_arm_a = p.normal_arm_a;
+        cp.normal_arm_b = p.normal_arm_b;
+        cp.tangent_arm_a = p.tangent_arm_a;
+        cp.tangent_arm_b = p.tangent_arm_b;
+        cp.normal_mass = p.normal_mass;
+        cp.tangent_mass = p.tangent_mass;
         cp.relative_velocity =
             bridge::relative_velocity(a, b, cp.normal_arm_a, cp.normal_arm_b, c.normal);
         cp.max_normal_impulse = 0.0;
         cp.total_normal_impulse = 0.0;
         cp.total_tangent_impulse = 0.0;
     }
-    c.use_block = c.invertible = false;
-    c.k11 = c.k12 = c.k22 = c.inv_k11 = c.inv_k12 = c.inv_k22 = 0.0;
+    preparation::PreparedBlock<double> k{};
     if (c.count == 2) {
         const ContactConstraintPoint& p1 = c.points[0];
         const ContactConstraintPoint& p2 = c.points[1];
-        c.k11 = bridge::inverse_effective_mass(a, b, p1.normal_arm_a, p1.normal_arm_b);
-        c.k22 = bridge::inverse_effective_mass(a, b, p2.normal_arm_a, p2.normal_arm_b);
-        c.k12 = bridge::normal_mass_coupling(a, b, p1.normal_arm_a, p1.normal_arm_b,
-                                             p2.normal_arm_a, p2.normal_arm_b);
-        const double det = c.k11 * c.k22 - c.k12 * c.k12;
-        if (c.k11 > 0.0 && c.k22 > 0.0 && c.k11 * c.k11 < max_restitution_condition_number * det) {
-            c.invertible = true;
-            c.use_block = c.k11 * c.k11 < max_condition_number * det;
-            const double inv_det = 1.0 / det;
-            c.inv_k11 = c.k22 * inv_det;
-            c.inv_k12 = -c.k12 * inv_det;
-            c.inv_k22 = c.k11 * inv_det;
-        }
+        k = preparation::prepare_block(a, b, p1.normal_arm_a, p1.normal_arm_b, p2.normal_arm_a,
+                                       p2.normal_arm_b);
     }
+    c.k11 = k.k11;
+    c.k12 = k.k12;
+    c.k22 = k.k22;
+    c.inv_k11 = k.inv_k11;
+    c.inv_k12 = k.inv_k12;
+    c.inv_k22 = k.inv_k22;
+    c.invertible = k.invertible;
+    c.use_block = k.use_block;
 }
 
 void apply_restitution(std::span<ContactConstraint> bouncing, std::span<SolverBody> bodies,

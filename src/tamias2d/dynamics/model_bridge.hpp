@@ -83,24 +83,25 @@ inline double rotation(double w, double h) {
 }
 
 /// DD8's moment arm r x n of unit direction n at anchor r (m).
-inline double moment_arm(Vec2d r, Vec2d n) {
-    return m::dd08::moment_arm(typed<u::Length>(r), n).value();
+template <class V> inline V moment_arm(u::Vec2<V> r, u::Vec2<V> n) {
+    return m::dd08::moment_arm(typed_vec<u::Length>(r), n).value();
 }
 /// DD8's denominator K along a unit direction with moment arms arm_a, arm_b (kg^-1).
-inline double inverse_effective_mass(const SolverBody& a, const SolverBody& b, double arm_a,
-                                     double arm_b) {
+template <class Body, class V = value_of<Body>>
+inline V inverse_effective_mass(const Body& a, const Body& b, V arm_a, V arm_b) {
     return m::dd08::effective_mass_inverse(inverse_inertia(a), inverse_inertia(b),
-                                           u::from_value<u::Length>(arm_a),
-                                           u::from_value<u::Length>(arm_b))
+                                           typed_value<u::Length>(arm_a),
+                                           typed_value<u::Length>(arm_b))
         .value();
 }
 /// DD8's K generalised to two points of one manifold, from their moment arms (kg^-1).
-inline double normal_mass_coupling(const SolverBody& a, const SolverBody& b, double arm_a1,
-                                   double arm_b1, double arm_a2, double arm_b2) {
+template <class Body, class V = value_of<Body>>
+inline V normal_mass_coupling(const Body& a, const Body& b, V arm_a1, V arm_b1, V arm_a2,
+                              V arm_b2) {
     return m::dd08::normal_mass_coupling(
-               inverse_inertia(a), inverse_inertia(b), u::from_value<u::Length>(arm_a1),
-               u::from_value<u::Length>(arm_b1), u::from_value<u::Length>(arm_a2),
-               u::from_value<u::Length>(arm_b2))
+               inverse_inertia(a), inverse_inertia(b), typed_value<u::Length>(arm_a1),
+               typed_value<u::Length>(arm_b1), typed_value<u::Length>(arm_a2),
+               typed_value<u::Length>(arm_b2))
         .value();
 }
 /// DD12 solved for the separating normal velocity: -C_R vn (m s^-1).

@@ -39,6 +39,21 @@ struct alignas(wide_alignment) WideContactConstraint {
     std::uint8_t count[wide_lanes]{};             ///< its points (0: empty lane)
 };
 
+/// What preparation needs of four manifolds, one per lane: filled lane by lane from the contacts,
+/// then prepared into a pack four lanes at a time (WideContactSolver::prepare_pack). Start from
+/// zeros: a point past a lane's count, and an empty lane, stay zero.
+struct alignas(wide_alignment) WideManifoldInput {
+    units::Vec2<Wide> normal{};
+    Wide friction{};
+    units::Vec2<Wide> r_a[2]{}, r_b[2]{};           ///< m, anchors relative to the centres of mass
+    Wide separation[2]{};                           ///< m
+    Wide normal_impulse[2]{}, tangent_impulse[2]{}; ///< N s, warm start
+    std::uint32_t body_a[wide_lanes]{}, body_b[wide_lanes]{};
+    std::uint32_t contact[wide_lanes]{};
+    std::uint32_t restitution_slot[wide_lanes]{};
+    std::uint8_t count[wide_lanes]{}; ///< 0: empty lane
+};
+
 /// The bodies of four lanes (gathered from SolverBody by transposing its rows, written back
 /// after the solve).
 struct alignas(wide_alignment) WideBody {

@@ -1,5 +1,6 @@
 #include "tamias2d/dynamics/wide_contact_solver.hpp"
 
+#include "tamias2d/dynamics/contact_preparation.hpp"
 #include "tamias2d/dynamics/wide_pack_loops.hpp"
 
 namespace tamias2d {
@@ -17,6 +18,57 @@ TAMIAS_WIDE_KERNEL void solve_packs(WideContactConstraint* packs, std::size_t co
     wide::solve_packs<bridge::Model>(packs, count, bodies, settings, use_bias);
 }
 
+TAMIAS_WIDE_KERNEL void prepare_lanes(WideContactConstraint& w, const WideManifoldInput& in,
+                                      const SolverBody* bodies) {
+    for (int l = 0; l < wide_lanes; ++l) {
+        w.body_a[l] = in.body_a[l];
+        w.body_b[l] = in.body_b[l];
+        w.contact[l] = in.contact[l];
+        w.restitution_slot[l] = in.restitution_slot[l];
+        w.count[l] = in.count[l];
+    }
+    const Wide zero = splat(0.0);
+    const Wide count{double(in.count[0]), double(in.count[1]), double(in.count[2]),
+                     double(in.count[3])};
+    const WideMask empty = count == zero;
+    const WideMask valid[2] = {count >= splat(1.0), count == splat(2.0)};
+    const WideBody a = wide::gather(bodies, in.body_a);
+    const WideBody b = wide::gather(bodies, in.body_b);
+    w.normal = in.normal;
+    w.friction = in.friction;
+    for (int j = 0; j < 2; ++j) {
+        // A point past its lane's count is all zeros, so that solving it changes nothing.
+        const preparation::PreparedPoint<Wide> p =
+            preparation::prepare_point(a, b, in.r_a[j], in.r_b[j], in.normal);
+        WideContactConstraintPoint& q = w.points[j];
+        q.normal_arm_a = select(valid[j], p.normal_arm_a, zero);
+        q.normal_arm_b = select(valid[j], p.normal_arm_b, zero);
+        q.tangent_arm_a = select(valid[j], p.tangent_arm_a, zero);
+        q.tangent_arm_b = select(valid[j], p.tangent_arm_b, zero);
+        q.normal_mass = select(valid[j], p.normal_mass, zero);
+        q.tangent_mass = select(valid[j], p.tangent_mass, zero);
+        q.base_separation = in.separation[j];
+        q.normal_impulse = in.normal_impulse[j];
+        q.tangent_impulse = in.tangent_impulse[j];
+        q.max_normal_impulse = zero;
+        q.total_normal_impulse = zero;
+        q.total_tangent_impulse = zero;
+    }
+    const preparation::PreparedBlock<Wide> k =
+        preparation::prepare_block(a, b, w.points[0].normal_arm_a, w.points[0].normal_arm_b,
+                                   w.points[1].normal_arm_a, w.points[1].normal_arm_b);
+    const WideMask two = valid[1];
+    w.k11 = select(two, k.k11, zero);
+    w.k12 = select(two, k.k12, zero);
+    w.k22 = select(two, k.k22, zero);
+    w.inv_k11 = select(two, k.inv_k11, zero);
+    w.inv_k12 = select(two, k.inv_k12, zero);
+    w.inv_k22 = select(two, k.inv_k22, zero);
+    // An empty lane takes the block path, which gives it zero impulses too, so that a part-filled
+    // pack of two-point manifolds does not also take the point-by-point path for it.
+    w.use_block = either(both(two, k.use_block), empty);
+}
+
 } // namespace
 
 void WideContactSolver::colour(std::span<const GraphEdge> edges, std::size_t body_count) {
@@ -24,74 +76,48 @@ void WideContactSolver::colour(std::span<const GraphEdge> edges, std::size_t bod
     packs_.resize(graph_.packs().size()); // never shrinks its capacity: no allocation per step
 }
 
-void WideContactSolver::set_lane(std::size_t i, int l, const ContactConstraint& c,
-                                 std::uint32_t slot) {
-    // Every field of the lane is written (a one-point manifold's second point from zeros):
-    // clearing the packs first cost as much again.
-    static const ContactConstraintPoint unused{};
-    WideContactConstraint& w = packs_[i];
-    w.body_a[l] = c.body_a;
-    w.body_b[l] = c.body_b;
-    w.normal.x[l] = c.normal.x;
-    w.normal.y[l] = c.normal.y;
-    w.friction[l] = c.friction;
-    w.k11[l] = c.k11;
-    w.k12[l] = c.k12;
-    w.k22[l] = c.k22;
-    w.inv_k11[l] = c.inv_k11;
-    w.inv_k12[l] = c.inv_k12;
-    w.inv_k22[l] = c.inv_k22;
-    w.use_block[l] = c.use_block ? -1 : 0;
-    w.contact[l] = c.contact;
-    w.count[l] = static_cast<std::uint8_t>(c.count);
-    w.restitution_slot[l] = slot;
-    for (int j = 0; j < 2; ++j) {
-        const ContactConstraintPoint& p = j < c.count ? c.points[j] : unused;
-        WideContactConstraintPoint& q = w.points[j];
-        q.normal_arm_a[l] = p.normal_arm_a;
-        q.normal_arm_b[l] = p.normal_arm_b;
-        q.tangent_arm_a[l] = p.tangent_arm_a;
-        q.tangent_arm_b[l] = p.tangent_arm_b;
-        q.base_separation[l] = p.base_separation;
-        q.normal_mass[l] = p.normal_mass;
-        q.tangent_mass[l] = p.tangent_mass;
-        q.normal_impulse[l] = p.normal_impulse;
-        q.tangent_impulse[l] = p.tangent_impulse;
-        q.max_normal_impulse[l] = p.max_normal_impulse;
-        q.total_normal_impulse[l] = p.total_normal_impulse;
-        q.total_tangent_impulse[l] = p.total_tangent_impulse;
-    }
-}
-
-void WideContactSolver::clear_lane(std::size_t i, int l) {
-    // All zeros on the static body 0: solving it changes nothing. Marked for the block path,
-    // which gives it zero impulses too, so that a part-filled pack of two-point manifolds
-    // does not also take the point-by-point path for its empty lanes.
-    static const ContactConstraint empty = [] {
-        ContactConstraint c;
-        c.use_block = true;
-        return c;
-    }();
-    set_lane(i, l, empty, no_slot);
+void WideContactSolver::prepare_pack(std::size_t i, const WideManifoldInput& in,
+                                     std::span<const SolverBody> bodies) {
+    prepare_lanes(packs_[i], in, bodies.data());
 }
 
 void WideContactSolver::load(std::span<const ContactConstraint> constraints,
-                             std::size_t body_count) {
+                             std::span<const SolverBody> bodies) {
     edges_.clear();
-    for (const ContactConstraint& c : constraints)
-        edges_.push_back({c.body_a, c.body_b,
-                          path_group(c.count, c.points[0].base_separation,
-                                     c.points[1].base_separation, c.use_block)});
-    colour(edges_, body_count);
+    for (const ContactConstraint& c : constraints) {
+        edges_.push_back(
+            {c.body_a, c.body_b,
+             path_group(c.count, c.points[0].base_separation, c.points[1].base_separation)});
+    }
+    colour(edges_, bodies.size());
     const auto lanes = order();
     for (std::size_t i = 0; i < lanes.size(); ++i) {
+        WideManifoldInput in;
         for (int l = 0; l < wide_lanes; ++l) {
             const std::uint32_t k = lanes[i][l];
             if (k == ConstraintGraph::no_constraint)
-                clear_lane(i, l);
-            else
-                set_lane(i, l, constraints[k], no_slot);
+                continue;
+            const ContactConstraint& c = constraints[k];
+            in.body_a[l] = c.body_a;
+            in.body_b[l] = c.body_b;
+            in.contact[l] = c.contact;
+            in.restitution_slot[l] = no_slot;
+            in.count[l] = static_cast<std::uint8_t>(c.count);
+            in.normal.x[l] = c.normal.x;
+            in.normal.y[l] = c.normal.y;
+            in.friction[l] = c.friction;
+            for (int j = 0; j < c.count; ++j) {
+                const ContactConstraintPoint& p = c.points[j];
+                in.r_a[j].x[l] = p.r_a.x;
+                in.r_a[j].y[l] = p.r_a.y;
+                in.r_b[j].x[l] = p.r_b.x;
+                in.r_b[j].y[l] = p.r_b.y;
+                in.separation[j][l] = p.base_separation;
+                in.normal_impulse[j][l] = p.normal_impulse;
+                in.tangent_impulse[j][l] = p.tangent_impulse;
+            }
         }
+        prepare_pack(i, in, bodies);
     }
 }
 

@@ -21,16 +21,18 @@ class WideContactSolver {
     static constexpr std::uint32_t no_slot = 0xffffffffu;
 
     /// Orders the manifolds (ConstraintGraph's levels, four to a pack) and sizes the packs;
-    /// set_lane then fills every lane of order() (clear_lane the empty ones).
+    /// prepare_pack then fills each pack of order().
     void colour(std::span<const GraphEdge> edges, std::size_t body_count);
     /// The solve order: the manifold (index into colour's edges) each lane of each pack holds.
     std::span<const ConstraintGraph::Pack> order() const { return graph_.packs(); }
-    /// Lane l of pack i gets a constraint prepared by prepare_contact; `slot` is where the
-    /// restitution pass keeps its own copy (no_slot: none), for store() to update.
-    void set_lane(std::size_t i, int l, const ContactConstraint& c, std::uint32_t slot);
-    void clear_lane(std::size_t i, int l);
-    /// colour and set_lane for constraints already prepared in an array (tests, benchmarks).
-    void load(std::span<const ContactConstraint> constraints, std::size_t body_count);
+    /// Prepares pack i's four lanes at once (contact_preparation.hpp) into the pack. A lane's
+    /// restitution_slot is where the restitution pass keeps its own copy (no_slot: none), for
+    /// store() to update.
+    void prepare_pack(std::size_t i, const WideManifoldInput& in,
+                      std::span<const SolverBody> bodies);
+    /// colour and prepare_pack for constraints given as an array (tests, benchmarks): their
+    /// bodies, normals, friction, anchors, separations and warm-start impulses are read.
+    void load(std::span<const ContactConstraint> constraints, std::span<const SolverBody> bodies);
 
     /// Re-applies the accumulated impulses (they carry the previous substep's solution forward).
     void warm_start(std::span<SolverBody> bodies);

@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <type_traits>
+#include <utility>
 
 namespace tamias2d {
 
@@ -74,6 +75,10 @@ inline bool either(bool a, bool b) {
 inline WideMask either(WideMask a, WideMask b) {
     return a | b;
 }
+
+/// The type of a comparison of two V: bool for one lane, WideMask for a pack.
+template <class V> using mask_of = decltype(std::declval<V>() < std::declval<V>());
+static_assert(std::is_same_v<mask_of<Wide>, WideMask>);
 
 template <class V> V broadcast(double x) {
     if constexpr (std::is_same_v<V, double>)

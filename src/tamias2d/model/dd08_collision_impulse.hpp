@@ -30,8 +30,11 @@ template <class V> Over<Length, V> moment_arm(Vec2<Over<Length, V>> r, Vec2<V> n
 /// from the moment arms a_i = r_Ai x n, b_i = r_Bi x n:
 /// K12 = (1/mA + 1/mB) |n|^2 + a1 a2 / I_A + b1 b2 / I_B with |n| = 1.
 /// K11 is DD8's own denominator; K12 couples two simultaneous contacts (see the solver).
-inline InverseMass normal_mass_coupling(InverseInertia A, InverseInertia B, Length arm_A1,
-                                        Length arm_B1, Length arm_A2, Length arm_B2) {
+/// (V: double, or a pack of lanes.)
+template <class V>
+Over<InverseMass, V> normal_mass_coupling(InverseInertiaOver<V> A, InverseInertiaOver<V> B,
+                                          Over<Length, V> arm_A1, Over<Length, V> arm_B1,
+                                          Over<Length, V> arm_A2, Over<Length, V> arm_B2) {
     return A.inv_m + B.inv_m + A.inv_I * per_radian(arm_A1) * per_radian(arm_A2) +
            B.inv_I * per_radian(arm_B1) * per_radian(arm_B2);
 }
@@ -46,8 +49,9 @@ inline InverseMass normal_mass_coupling(InverseInertia A, InverseInertia B, Vec2
 
 /// \srs{DD8} DD8's denominator: the inverse effective mass of the pair along n at P, from the
 /// moment arms r_AP x n and r_BP x n.
-inline InverseMass effective_mass_inverse(InverseInertia A, InverseInertia B, Length arm_A,
-                                          Length arm_B) {
+template <class V>
+Over<InverseMass, V> effective_mass_inverse(InverseInertiaOver<V> A, InverseInertiaOver<V> B,
+                                            Over<Length, V> arm_A, Over<Length, V> arm_B) {
     return normal_mass_coupling(A, B, arm_A, arm_B, arm_A, arm_B);
 }
 
