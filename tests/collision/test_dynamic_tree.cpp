@@ -89,6 +89,40 @@ BOOST_AUTO_TEST_CASE(query_equals_brute_force, *utf::label("IM4")) {
     BOOST_TEST(tree.height() <= 1.45 * std::log2(2.0 * n + 2.0));
 }
 
+// Oracle: the tree's own invariants (parents, heights, AVL balance, every box enclosing its
+// children's: DynamicTree::validate) and a brute-force scan, after many small moves, the case
+// in which a refit stops below the root as soon as a node's box and height come out unchanged.
+BOOST_AUTO_TEST_CASE(small_moves_keep_the_tree_valid, *utf::label("IM4")) {
+    std::mt19937_64 rng(23);
+    std::uniform_real_distribution<double> jitter(-0.05, 0.05);
+    DynamicTree tree;
+    std::vector<std::pair<int, Aabb>> live;
+    for (int i = 0; i < 500; ++i) {
+        const Aabb b = random_box(rng, 30.0);
+        live.emplace_back(tree.create_proxy(b, static_cast<std::uint32_t>(i)), b);
+    }
+    std::uniform_int_distribution<std::size_t> pick(0, live.size() - 1);
+    for (int step = 1; step <= 5000; ++step) {
+        auto& [id, b] = live[pick(rng)];
+        const double dx = jitter(rng), dy = jitter(rng);
+        b = {b.min_x + dx, b.min_y + dy, b.max_x + dx, b.max_y + dy};
+        tree.move_proxy(id, b);
+        if (step % 50 == 0) {
+            BOOST_TEST_REQUIRE(tree.validate());
+            const Aabb q = random_box(rng, 30.0);
+            std::vector<int> got;
+            tree.query(q, [&](int i) { got.push_back(i); });
+            std::sort(got.begin(), got.end());
+            std::vector<int> want;
+            for (const auto& [i, box] : live)
+                if (im4::overlaps(box, q))
+                    want.push_back(i);
+            std::sort(want.begin(), want.end());
+            BOOST_TEST(got == want);
+        }
+    }
+}
+
 // Oracle: a query callback returning false stops the walk after one leaf.
 BOOST_AUTO_TEST_CASE(query_can_stop_early, *utf::label("IM4")) {
     DynamicTree tree;

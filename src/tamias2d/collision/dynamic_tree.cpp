@@ -91,14 +91,9 @@ void DynamicTree::insert_leaf(int leaf) {
         nodes_[old_parent].child2 = parent;
     }
 
-    // Refit and rebalance on the way up.
-    for (int i = nodes_[leaf].parent; i != null_node;) {
-        i = balance(i);
-        Node& n = nodes_[i];
-        n.height = 1 + std::max(nodes_[n.child1].height, nodes_[n.child2].height);
-        n.box = union_of(nodes_[n.child1].box, nodes_[n.child2].box);
-        i = n.parent;
-    }
+    // The new parent may be unbalanced (a tall sibling); above it, refit until nothing changes.
+    const int top = refit(balance(parent));
+    refit_ancestors(nodes_[top].parent);
 }
 
 void DynamicTree::remove_leaf(int leaf) {
@@ -122,11 +117,28 @@ void DynamicTree::remove_leaf(int leaf) {
     else
         nodes_[grand].child2 = sibling;
     nodes_[sibling].parent = grand;
-    for (int i = grand; i != null_node;) {
-        i = balance(i);
-        Node& n = nodes_[i];
-        n.height = 1 + std::max(nodes_[n.child1].height, nodes_[n.child2].height);
-        n.box = union_of(nodes_[n.child1].box, nodes_[n.child2].box);
+    refit_ancestors(grand);
+}
+
+int DynamicTree::refit(int i) {
+    Node& n = nodes_[i];
+    n.height = 1 + std::max(nodes_[n.child1].height, nodes_[n.child2].height);
+    n.box = union_of(nodes_[n.child1].box, nodes_[n.child2].box);
+    return i;
+}
+
+void DynamicTree::refit_ancestors(int i) {
+    // Rebalance and refit on the way up, and stop at the first node whose box and height come
+    // out as they were: its ancestors enclose the same boxes at the same heights, and the tree
+    // was balanced everywhere, so nothing above would change (Box2D 2.4 walks to the root).
+    while (i != null_node) {
+        const Aabb box = nodes_[i].box;
+        const int height = nodes_[i].height;
+        i = refit(balance(i));
+        const Node& n = nodes_[i];
+        if (n.height == height && n.box.min_x == box.min_x && n.box.min_y == box.min_y &&
+            n.box.max_x == box.max_x && n.box.max_y == box.max_y)
+            return;
         i = n.parent;
     }
 }

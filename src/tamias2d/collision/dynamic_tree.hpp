@@ -61,6 +61,9 @@ class DynamicTree {
     void insert_leaf(int leaf);
     void remove_leaf(int leaf);
     int balance(int a);
+    /// Recomputes node i's height and box from its children; returns i.
+    int refit(int i);
+    void refit_ancestors(int i);
     int validate_subtree(int id, int parent) const;
 
     std::vector<Node> nodes_;
