@@ -184,15 +184,19 @@ struct World::Impl {
             const Body& ba = bodies[sa.body];
             const Body& bb = bodies[sb.body];
             const CollideInput in{ba.xf, ba.center, bb.xf, bb.center, def.speculative_distance};
-            const Manifold old = c.manifold;
+            // Warm starting needs only the old points' ids and impulses: the manifold itself is
+            // rewritten in place (building a new one and copying it in cost a fifth of this loop).
+            const int old_count = c.manifold.count;
+            const std::uint32_t old_id[2] = {c.manifold.points[0].id.key(),
+                                             c.manifold.points[1].id.key()};
             const double old_n[2] = {c.normal_impulse[0], c.normal_impulse[1]};
             const double old_t[2] = {c.tangent_impulse[0], c.tangent_impulse[1]};
-            c.manifold = collide(sa.geometry, sb.geometry, in, &c.hint);
+            collide(sa.geometry, sb.geometry, in, c.manifold, &c.hint);
             // Warm starting: a point keeps its impulses when the same features touch again.
             for (int j = 0; j < c.manifold.count; ++j) {
                 c.normal_impulse[j] = c.tangent_impulse[j] = 0.0;
-                for (int k = 0; k < old.count; ++k) {
-                    if (old.points[k].id.key() == c.manifold.points[j].id.key()) {
+                for (int k = 0; k < old_count; ++k) {
+                    if (old_id[k] == c.manifold.points[j].id.key()) {
                         c.normal_impulse[j] = old_n[k];
                         c.tangent_impulse[j] = old_t[k];
                     }

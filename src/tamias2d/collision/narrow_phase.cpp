@@ -181,11 +181,19 @@ Manifold collide_polygon_circle(const Polygon& a, const Circle& b, const Collide
     return m;
 }
 
+namespace {
+
+/// No contact: count 0 and the zero normal, as a default manifold has.
+void set_empty(Manifold& m) {
+    m.normal = {};
+    m.count = 0;
+}
+
 /// \srs{T5} polygons by the separating axis test; \srs{A5} vertex-edge gives one point,
-/// \srs{LC1} edge-edge two.
-Manifold collide_polygons(const Polygon& a, const Polygon& b, const CollideInput& in,
-                          SeparationHint* hint) {
-    Manifold m;
+/// \srs{LC1} edge-edge two. Writes the normal and the count on every path, and the points in
+/// use; the slots past the count are the caller's (see collide's in-place form).
+void collide_polygons_into(const Polygon& a, const Polygon& b, const CollideInput& in, Manifold& m,
+                           SeparationHint* hint) {
     // Work in A's frame shifted to A's centroid: B's vertices are transformed once, and the
     // numbers stay small for shapes far from the world origin.
     const Transform frame{transform_point(in.xf_a, a.centroid), in.xf_a.q};
@@ -211,7 +219,7 @@ Manifold collide_polygons(const Polygon& a, const Polygon& b, const CollideInput
         }
         s -= offset;
         if (!(s < in.margin))
-            return m;
+            return set_empty(m);
         hint->face = -1;
     }
     Local la;
@@ -228,14 +236,14 @@ Manifold collide_polygons(const Polygon& a, const Polygon& b, const CollideInput
     if (!(sep_a < in.margin)) {
         if (hint != nullptr)
             *hint = {static_cast<std::int8_t>(edge_a), false};
-        return m;
+        return set_empty(m);
     }
     int edge_b = 0;
     const double sep_b = max_separation(lb, la, in.margin, edge_b);
     if (!(sep_b < in.margin)) {
         if (hint != nullptr)
             *hint = {static_cast<std::int8_t>(edge_b), true};
-        return m;
+        return set_empty(m);
     }
 
     // The tolerance needs both polygons' sizes; the common resting case (A's face best,
@@ -281,7 +289,7 @@ Manifold collide_polygons(const Polygon& a, const Polygon& b, const CollideInput
         const double dist = std::sqrt(sd.distance_squared);
         if (ref_vertex && inc_vertex && dist > std::max(sep_a, sep_b) + tol) {
             if (!(dist < in.margin))
-                return m;
+                return set_empty(m);
             const Vec2d g = (sd.closest2 - sd.closest1) / dist; // reference -> incident
             const int ri = sd.fraction1 == 0.0 ? i11 : i12;
             const int ii = sd.fraction2 == 0.0 ? i21 : i22;
@@ -289,7 +297,7 @@ Manifold collide_polygons(const Polygon& a, const Polygon& b, const CollideInput
             m.count = 1;
             set_point(m.points[0], 0.5 * (sd.closest1 + sd.closest2), dist,
                       make_id(flip, ri, vertex_feature, ii, vertex_feature), frame, in);
-            return m;
+            return;
         }
     }
 
@@ -315,15 +323,37 @@ Manifold collide_polygons(const Polygon& a, const Polygon& b, const CollideInput
     /// \srs{A4} the normal points from A into B whichever polygon holds the reference face.
     m.normal = rotate(frame.q, flip ? -n : n);
     // Midway between the surfaces: half the separation back along the reference normal.
+    int count = 0;
     if (sep_lower < in.margin) {
-        set_point(m.points[m.count++], lower - (0.5 * sep_lower) * n, sep_lower,
+        set_point(m.points[count++], lower - (0.5 * sep_lower) * n, sep_lower,
                   make_id(flip, i11, face_feature, i22, vertex_feature), frame, in);
     }
     if (sep_upper < in.margin) {
-        set_point(m.points[m.count++], upper - (0.5 * sep_upper) * n, sep_upper,
+        set_point(m.points[count++], upper - (0.5 * sep_upper) * n, sep_upper,
                   make_id(flip, i11, face_feature, i21, vertex_feature), frame, in);
     }
+    m.count = count;
+}
+
+} // namespace
+
+Manifold collide_polygons(const Polygon& a, const Polygon& b, const CollideInput& in,
+                          SeparationHint* hint) {
+    Manifold m;
+    collide_polygons_into(a, b, in, m, hint);
     return m;
+}
+
+void collide(const Geometry& a, const Geometry& b, const CollideInput& in, Manifold& m,
+             SeparationHint* hint) {
+    const int used = m.count;
+    if (a.type == ShapeType::polygon && b.type == ShapeType::polygon)
+        collide_polygons_into(a.polygon, b.polygon, in, m, hint);
+    else
+        m = collide(a, b, in, hint);
+    // The slots this manifold no longer uses read as in a new one.
+    for (int k = m.count; k < used; ++k)
+        m.points[k] = ManifoldPoint{};
 }
 
 Manifold collide(const Geometry& a, const Geometry& b, const CollideInput& in,

@@ -39,4 +39,10 @@ Manifold collide_polygons(const Polygon& a, const Polygon& b, const CollideInput
 Manifold collide(const Geometry& a, const Geometry& b, const CollideInput& in,
                  SeparationHint* hint = nullptr);
 
+/// The same, in place: afterwards `m` equals what the form above returns, bit for bit, provided
+/// it held a manifold from collide (or a default one), whose slots past its count are zero.
+/// A contact's manifold is updated this way, without building and copying a new one.
+void collide(const Geometry& a, const Geometry& b, const CollideInput& in, Manifold& m,
+             SeparationHint* hint = nullptr);
+
 } // namespace tamias2d
