@@ -191,7 +191,7 @@ struct World::Impl {
                                              c.manifold.points[1].id.key()};
             const double old_n[2] = {c.normal_impulse[0], c.normal_impulse[1]};
             const double old_t[2] = {c.tangent_impulse[0], c.tangent_impulse[1]};
-            collide(sa.geometry, sb.geometry, in, c.manifold, &c.hint);
+            collide(sa.collider, sb.collider, in, c.manifold, &c.hint);
             // Warm starting: a point keeps its impulses when the same features touch again.
             for (int j = 0; j < c.manifold.count; ++j) {
                 c.normal_impulse[j] = c.tangent_impulse[j] = 0.0;
@@ -427,6 +427,7 @@ ShapeId World::create_shape(BodyId body_id, const ShapeDef& def) {
     s.alive = true;
     s.body = body_id.index;
     s.geometry = def.geometry;
+    s.collider = make_collider(def.geometry);
     s.material = def.material;
     Body& b = w.bodies[body_id.index];
     b.shapes.push_back(i);
