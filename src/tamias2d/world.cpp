@@ -173,17 +173,26 @@ struct World::Impl {
     /// \srs{R7} Narrow phase for every contact; contacts whose fat boxes separated are destroyed.
     void update_contacts() {
         doomed.clear();
+        // The fat boxes and the body poses, once per shape and in order, rather than from the
+        // tree's and the bodies' scattered memory twice per contact.
+        for (Shape& s : shapes) {
+            if (!s.alive)
+                continue;
+            const Body& b = bodies[s.body];
+            s.fat_box = broad_phase.fat_aabb(s.proxy);
+            s.body_xf = b.xf;
+            s.body_center = b.center;
+        }
         for (std::uint32_t i = 0; i < contacts.size(); ++i) {
             Contact& c = contacts[i];
             const Shape& sa = shapes[c.shape_a];
             const Shape& sb = shapes[c.shape_b];
-            if (!overlaps(broad_phase.fat_aabb(sa.proxy), broad_phase.fat_aabb(sb.proxy))) {
+            if (!overlaps(sa.fat_box, sb.fat_box)) {
                 doomed.push_back(i);
                 continue;
             }
-            const Body& ba = bodies[sa.body];
-            const Body& bb = bodies[sb.body];
-            const CollideInput in{ba.xf, ba.center, bb.xf, bb.center, def.speculative_distance};
+            const CollideInput in{sa.body_xf, sa.body_center, sb.body_xf, sb.body_center,
+                                  def.speculative_distance};
             // Warm starting needs only the old points' ids and impulses: the manifold itself is
             // rewritten in place (building a new one and copying it in cost a fifth of this loop).
             const int old_count = c.manifold.count;
