@@ -184,8 +184,9 @@ struct World::Impl {
             s.body_center = b.center;
         }
         constexpr std::uint32_t ahead = 6; // contacts: the shapes' lines arrive before use
-        for (std::uint32_t i = 0; i < contacts.size(); ++i) {
-            if (i + ahead < contacts.size()) {
+        const auto count = std::uint32_t(contacts.size()); // the loop adds and removes none
+        for (std::uint32_t i = 0; i < count; ++i) {
+            if (i + ahead < count) {
                 const Contact& next = contacts[i + ahead];
                 for (const Shape* s : {&shapes[next.shape_a], &shapes[next.shape_b]}) {
                     __builtin_prefetch(&s->fat_box);
@@ -211,14 +212,17 @@ struct World::Impl {
             const double old_t[2] = {c.tangent_impulse[0], c.tangent_impulse[1]};
             collide(sa.collider, sb.collider, in, c.manifold, &c.hint);
             // Warm starting: a point keeps its impulses when the same features touch again.
+            // (Chosen in registers, then stored: zeroing first made GCC call memset twice.)
             for (int j = 0; j < c.manifold.count; ++j) {
-                c.normal_impulse[j] = c.tangent_impulse[j] = 0.0;
+                double normal = 0.0, tangent = 0.0;
                 for (int k = 0; k < old_count; ++k) {
                     if (old_id[k] == c.manifold.points[j].id.key()) {
-                        c.normal_impulse[j] = old_n[k];
-                        c.tangent_impulse[j] = old_t[k];
+                        normal = old_n[k];
+                        tangent = old_t[k];
                     }
                 }
+                c.normal_impulse[j] = normal;
+                c.tangent_impulse[j] = tangent;
             }
             const bool was = c.touching;
             c.touching = c.manifold.count > 0;
