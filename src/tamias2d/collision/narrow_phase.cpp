@@ -4,9 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <utility>
 
+#include "tamias2d/collision/collider.hpp"
 #include "tamias2d/collision/segment_distance.hpp"
 
 namespace tamias2d {
@@ -39,35 +41,101 @@ void set_point(ManifoldPoint& mp, Vec2d local, double separation, FeatureId id,
     mp.id = id;
 }
 
-/// A polygon's vertices and normals in a common frame. Plain arrays, filled before use: Vec2d
-/// zero-initialises, and clearing two of these cost ~10 % of a box-box collision.
+/// Two lanes: SSE2's register, which every x86-64 has (a four-lane pack split in two by the
+/// compiler went through the stack). Lane-wise IEEE arithmetic without fused multiply-add: each
+/// lane computes bit for bit what the scalar expression computes.
+using Duo = double __attribute__((vector_size(2 * sizeof(double))));
+
+/// x in both lanes, bit for bit (-0 stays -0).
+Duo both(double x) {
+    return Duo{x, x};
+}
+
+/// std::min(a, b) lane by lane: b if b < a, else a (one SSE2 minpd).
+Duo min2(Duo a, Duo b) {
+    return b < a ? b : a;
+}
+
+/// A polygon's vertices and normals in A's centroid frame, a plain array per coordinate (one
+/// load per scalar access), read and written two lanes at a time by the separating axis test.
+/// Filled before use, only the pairs in use (a lane past the count repeats vertex 0): nothing is
+/// zero-initialised.
 struct Local {
-    double vx[max_polygon_vertices], vy[max_polygon_vertices];
-    double nx[max_polygon_vertices], ny[max_polygon_vertices];
-    int count = 0;
+    alignas(16) double vx[max_polygon_vertices], vy[max_polygon_vertices];
+    alignas(16) double nx[max_polygon_vertices], ny[max_polygon_vertices];
+    int count;
+    int duos() const { return (count + 1) / 2; }
     Vec2d v(int i) const { return {vx[i], vy[i]}; }
     Vec2d n(int i) const { return {nx[i], ny[i]}; }
-    void set(int i, Vec2d vertex, Vec2d normal) {
-        vx[i] = vertex.x;
-        vy[i] = vertex.y;
-        nx[i] = normal.x;
-        ny[i] = normal.y;
-    }
 };
 
-/// Greatest separation of `other`'s vertices along one of `ref`'s face normals (SAT). Stops
-/// as soon as a face separates by `stop` or more (no contact), and abandons a face once it
-/// cannot beat the best so far: the common cases cost a fraction of the n x m products.
-double max_separation(const Local& ref, const Local& other, double stop, int& edge) {
+/// Two lanes from (to) two consecutive doubles.
+Duo load2(const double* x) {
+    Duo d;
+    std::memcpy(&d, x, sizeof d);
+    return d;
+}
+void store2(double* x, Duo d) {
+    std::memcpy(x, &d, sizeof d);
+}
+
+/// The first of `other`'s vertices (in order) whose projection on n is at or below `beat`, as
+/// that projection (there is one: the smallest projection is at or below beat).
+[[gnu::noinline]] double first_at_or_below(Vec2d n, const Local& other, int count, double beat) {
+    double s = beat;
+    for (int j = 0; j < count; ++j) {
+        s = dot(n, other.v(j));
+        if (s <= beat)
+            break;
+    }
+    return s;
+}
+
+/// Greatest separation of `other`'s vertices along one of `ref`'s face normals (SAT): the same
+/// double, and the same face, as this early-exit loop returns:
+///
+///     best = -inf; edge = 0;
+///     for each face i: beat = best + offset_i;  s = +inf;
+///         for each vertex j while s > beat: s = min(s, d_ij);   // d_ij = dot(n_i, v_j)
+///         s -= offset_i;  if (s > best) { best = s; edge = i; if (!(best < stop)) return best; }
+///
+/// (a face abandoned once it cannot beat the best so far; the test stops at the first face that
+/// separates by `stop` or more). Here every face's offset and full minimum come first, two faces
+/// per register, branch-free and unrolled for D (E) two-vertex elements in ref (other); the
+/// minimum runs over the vertices in order, like std::min, and a padding lane repeats vertex 0
+/// after it, which changes no bit. The inner loop above ends with s = the full minimum when that
+/// stays above beat, and otherwise with s = the first d_ij <= beat; such a face wins only if
+/// (that d_ij) - offset_i > best, impossible unless beat - offset_i > best (beat rounded up):
+/// only then is that first vertex looked for. NR and NO are the vertex counts when known at
+/// compile time (0: read from ref and other).
+template <int D, int E, int NR, int NO>
+[[gnu::always_inline]] inline double max_separation(const Local& ref, const Local& other,
+                                                    double stop, int& edge) {
+    const int ref_count = NR != 0 ? NR : ref.count;
+    const int other_count = NO != 0 ? NO : other.count;
+    Duo off[D], low[D];
+    for (int k = 0; k < D; ++k) {
+        const Duo nx = load2(&ref.nx[2 * k]), ny = load2(&ref.ny[2 * k]);
+        off[k] = nx * load2(&ref.vx[2 * k]) + ny * load2(&ref.vy[2 * k]);
+        low[k] = both(std::numeric_limits<double>::infinity());
+    }
+    for (int j = 0; j < 2 * E; ++j) {
+        const Duo x = both(other.vx[j]), y = both(other.vy[j]);
+        for (int k = 0; k < D; ++k)
+            low[k] = min2(low[k], load2(&ref.nx[2 * k]) * x + load2(&ref.ny[2 * k]) * y);
+    }
+
     double best = -std::numeric_limits<double>::infinity();
     edge = 0;
-    for (int i = 0; i < ref.count; ++i) {
-        const Vec2d n = ref.n(i);
-        const double offset = dot(n, ref.v(i));
+    for (int i = 0; i < ref_count; ++i) {
+        const double offset = off[i >> 1][i & 1];
         const double beat = best + offset; // this face loses once its minimum drops to here
-        double s = std::numeric_limits<double>::infinity();
-        for (int j = 0; j < other.count && s > beat; ++j)
-            s = std::min(s, dot(n, other.v(j)));
+        double s = low[i >> 1][i & 1];
+        if (!(s > beat)) {
+            if (!(beat - offset > best))
+                continue;
+            s = first_at_or_below(ref.n(i), other, other_count, beat);
+        }
         s -= offset;
         if (s > best) {
             best = s;
@@ -79,12 +147,39 @@ double max_separation(const Local& ref, const Local& other, double stop, int& ed
     return best;
 }
 
-/// Largest squared vertex distance from the centroid: the polygon's size (rotation-free).
-double radius_squared(const Polygon& p) {
-    double r2 = 0.0;
-    for (int i = 0; i < p.count; ++i)
-        r2 = std::max(r2, dot(p.vertices[i] - p.centroid, p.vertices[i] - p.centroid));
-    return r2;
+template <int D>
+double max_separation_duos(const Local& ref, const Local& other, double stop, int& edge) {
+    switch (other.duos()) {
+    case 2:
+        return max_separation<D, 2, 0, 0>(ref, other, stop, edge);
+    case 3:
+        return max_separation<D, 3, 0, 0>(ref, other, stop, edge);
+    default:
+        return max_separation<D, 4, 0, 0>(ref, other, stop, edge);
+    }
+}
+
+/// Any counts, known at run time.
+[[gnu::noinline]] double max_separation_any(const Local& ref, const Local& other, double stop,
+                                            int& edge) {
+    switch (ref.duos()) {
+    case 2:
+        return max_separation_duos<2>(ref, other, stop, edge);
+    case 3:
+        return max_separation_duos<3>(ref, other, stop, edge);
+    default:
+        return max_separation_duos<4>(ref, other, stop, edge);
+    }
+}
+
+/// NR and NO vertices (0: known at run time only).
+template <int NR, int NO>
+[[gnu::always_inline]] inline double max_separation_n(const Local& ref, const Local& other,
+                                                      double stop, int& edge) {
+    if constexpr (NR != 0 && NO != 0)
+        return max_separation<(NR + 1) / 2, (NO + 1) / 2, NR, NO>(ref, other, stop, edge);
+    else
+        return max_separation_any(ref, other, stop, edge);
 }
 
 FeatureId make_id(bool flip, int ref_index, std::uint8_t ref_type, int inc_index,
@@ -104,18 +199,24 @@ FeatureId make_id(bool flip, int ref_index, std::uint8_t ref_type, int inc_index
     return id;
 }
 
-} // namespace
+/// No contact: count 0 and the zero normal, as a default manifold has.
+void set_empty(Manifold& m) {
+    m.normal = {};
+    m.count = 0;
+}
+
+// The *_into functions write the normal and the count on every path, and the points in use;
+// the slots past the count are left to collide (see its in-place form).
 
 /// \srs{T5} circles collide when their centres are closer than the sum of the radii.
-Manifold collide_circles(const Circle& a, const Circle& b, const CollideInput& in) {
-    Manifold m;
+void circles_into(const Collider& a, const Collider& b, const CollideInput& in, Manifold& m) {
     const Vec2d ca = transform_point(in.xf_a, a.center);
     const Vec2d cb = transform_point(in.xf_b, b.center);
     const Vec2d d = cb - ca;
     const double dist = length(d);
     const double separation = dist - a.radius - b.radius;
     if (!(separation < in.margin))
-        return m;
+        return set_empty(m);
     // Concentric circles have no preferred direction: +x is a deterministic choice.
     const Vec2d n = dist > 0.0 ? Vec2d{d.x / dist, d.y / dist} : Vec2d{1.0, 0.0};
     const Vec2d on_a = ca + a.radius * n;
@@ -128,12 +229,11 @@ Manifold collide_circles(const Circle& a, const Circle& b, const CollideInput& i
     mp.anchor_b = mp.point - in.center_b;
     mp.separation = separation;
     mp.id = FeatureId{};
-    return m;
 }
 
 /// \srs{T5} polygon and circle: the nearest face or vertex of the polygon.
-Manifold collide_polygon_circle(const Polygon& a, const Circle& b, const CollideInput& in) {
-    Manifold m;
+void polygon_circle_into(const Collider& a, const Collider& b, const CollideInput& in,
+                         Manifold& m) {
     // Work in A's body frame: the circle centre is one transformed point.
     const Vec2d c = inv_transform_point(in.xf_a, transform_point(in.xf_b, b.center));
     const double r = b.radius;
@@ -141,18 +241,19 @@ Manifold collide_polygon_circle(const Polygon& a, const Circle& b, const Collide
     int edge = 0;
     double sep = -std::numeric_limits<double>::infinity();
     for (int i = 0; i < a.count; ++i) {
-        const double s = dot(a.normals[i], c - a.vertices[i]);
+        const double s = dot(a.normal(i), c - a.vertex(i));
         if (s > sep) {
             sep = s;
             edge = i;
         }
     }
     if (!(sep - r < in.margin))
-        return m;
+        return set_empty(m);
 
-    const Vec2d v1 = a.vertices[edge];
-    const Vec2d v2 = a.vertices[(edge + 1) % a.count];
-    Vec2d n = a.normals[edge];
+    const int next = edge + 1 == a.count ? 0 : edge + 1;
+    const Vec2d v1 = a.vertex(edge);
+    const Vec2d v2 = a.vertex(next);
+    Vec2d n = a.normal(edge);
     Vec2d on_a;
     double separation;
     FeatureId id{static_cast<std::uint8_t>(edge), face_feature, 0, vertex_feature};
@@ -160,13 +261,13 @@ Manifold collide_polygon_circle(const Polygon& a, const Circle& b, const Collide
     const bool beyond_v2 = sep > 0.0 && dot(c - v2, v1 - v2) < 0.0;
     if (behind_v1 || beyond_v2) {
         // Vertex region: the closest point of A is the vertex itself.
-        const int vi = behind_v1 ? edge : (edge + 1) % a.count;
-        on_a = a.vertices[vi];
+        const int vi = behind_v1 ? edge : next;
+        on_a = a.vertex(vi);
         const Vec2d d = c - on_a;
         const double dist = length(d);
         separation = dist - r;
         if (!(separation < in.margin))
-            return m;
+            return set_empty(m);
         n = Vec2d{d.x / dist, d.y / dist}; // dist >= sep > 0
         id = {static_cast<std::uint8_t>(vi), vertex_feature, 0, vertex_feature};
     } else {
@@ -178,19 +279,49 @@ Manifold collide_polygon_circle(const Polygon& a, const Circle& b, const Collide
     m.normal = rotate(in.xf_a.q, n);
     m.count = 1;
     set_point(m.points[0], 0.5 * (on_a + on_b), separation, id, in.xf_a, in);
-    return m;
+}
+
+/// Circle A, polygon B: solved as polygon-circle with the roles swapped, then flipped back.
+void circle_polygon_into(const Collider& a, const Collider& b, const CollideInput& in,
+                         Manifold& m) {
+    const CollideInput swapped{in.xf_b, in.center_b, in.xf_a, in.center_a, in.margin};
+    polygon_circle_into(b, a, swapped, m);
+    m.normal = -m.normal;
+    for (int i = 0; i < m.count; ++i) {
+        ManifoldPoint& mp = m.points[i];
+        std::swap(mp.anchor_a, mp.anchor_b);
+        mp.id = {mp.id.index_b, mp.id.type_b, mp.id.index_a, mp.id.type_a};
+    }
 }
 
 /// \srs{T5} polygons by the separating axis test; \srs{A5} vertex-edge gives one point,
-/// \srs{LC1} edge-edge two.
-Manifold collide_polygons(const Polygon& a, const Polygon& b, const CollideInput& in,
-                          SeparationHint* hint) {
-    Manifold m;
+/// \srs{LC1} edge-edge two. NA and NB are the vertex counts when known at compile time (0: read
+/// from the colliders): boxes against boxes get straight-line code.
+template <int NA, int NB>
+void polygons_into(const Collider& a, const Collider& b, const CollideInput& in, Manifold& m,
+                   SeparationHint* hint) {
+    const int na = NA != 0 ? NA : a.count;
+    const int nb = NB != 0 ? NB : b.count;
     // Work in A's frame shifted to A's centroid: B's vertices are transformed once, and the
     // numbers stay small for shapes far from the world origin.
-    const Transform frame{transform_point(in.xf_a, a.centroid), in.xf_a.q};
+    const Transform frame{transform_point(in.xf_a, a.center), in.xf_a.q};
     const Rot q = inv_mul(in.xf_a.q, in.xf_b.q);
     const Vec2d p = inv_transform_point(frame, in.xf_b.p);
+    // Both polygons in that frame, two vertices at a time (lane by lane the scalar expressions
+    // v - centroid and rotate(q, v) + p, rotate(q, n)); B's vertices first: the hint needs them.
+    Local la;
+    Local lb;
+    la.count = na;
+    lb.count = nb;
+    const Duo c = both(q.c), sn = both(q.s);
+    {
+        const Duo px = both(p.x), py = both(p.y);
+        for (int k = 0; k < (nb + 1) / 2; ++k) {
+            const Duo vx = load2(b.pairs[k].vx), vy = load2(b.pairs[k].vy);
+            store2(&lb.vx[2 * k], (c * vx - sn * vy) + px);
+            store2(&lb.vy[2 * k], (sn * vx + c * vy) + py);
+        }
+    }
     if (hint != nullptr && hint->face >= 0) {
         // The hinted face's separation, computed exactly as max_separation computes it below
         // (same expressions, same order): if it still reaches the margin, so would the full
@@ -198,72 +329,81 @@ Manifold collide_polygons(const Polygon& a, const Polygon& b, const CollideInput
         const int i = hint->face;
         double s = std::numeric_limits<double>::infinity();
         double offset = 0.0;
-        if (!hint->on_b && i < a.count) {
-            const Vec2d n = a.normals[i];
-            offset = dot(n, a.vertices[i] - a.centroid);
-            for (int j = 0; j < b.count; ++j)
-                s = std::min(s, dot(n, rotate(q, b.vertices[j]) + p));
-        } else if (hint->on_b && i < b.count) {
-            const Vec2d n = rotate(q, b.normals[i]);
-            offset = dot(n, rotate(q, b.vertices[i]) + p);
-            for (int j = 0; j < a.count; ++j)
-                s = std::min(s, dot(n, a.vertices[j] - a.centroid));
+        if (!hint->on_b && i < na) {
+            const Vec2d n = a.normal(i);
+            offset = dot(n, a.vertex(i) - a.center);
+            for (int j = 0; j < nb; ++j)
+                s = std::min(s, dot(n, lb.v(j)));
+        } else if (hint->on_b && i < nb) {
+            const Vec2d n = rotate(q, b.normal(i));
+            offset = dot(n, lb.v(i));
+            for (int j = 0; j < na; ++j)
+                s = std::min(s, dot(n, a.vertex(j) - a.center));
         }
         s -= offset;
         if (!(s < in.margin))
-            return m;
+            return set_empty(m);
         hint->face = -1;
     }
-    Local la;
-    Local lb;
-    la.count = a.count;
-    lb.count = b.count;
-    for (int i = 0; i < a.count; ++i)
-        la.set(i, a.vertices[i] - a.centroid, a.normals[i]);
-    for (int i = 0; i < b.count; ++i)
-        lb.set(i, rotate(q, b.vertices[i]) + p, rotate(q, b.normals[i]));
+    {
+        const Duo cx = both(a.center.x), cy = both(a.center.y);
+        for (int k = 0; k < (na + 1) / 2; ++k) {
+            const VertexPair& s = a.pairs[k];
+            store2(&la.vx[2 * k], load2(s.vx) - cx);
+            store2(&la.vy[2 * k], load2(s.vy) - cy);
+            store2(&la.nx[2 * k], load2(s.nx));
+            store2(&la.ny[2 * k], load2(s.ny));
+        }
+        for (int k = 0; k < (nb + 1) / 2; ++k) {
+            const Duo nx = load2(b.pairs[k].nx), ny = load2(b.pairs[k].ny);
+            store2(&lb.nx[2 * k], c * nx - sn * ny);
+            store2(&lb.ny[2 * k], sn * nx + c * ny);
+        }
+    }
 
     int edge_a = 0;
-    const double sep_a = max_separation(la, lb, in.margin, edge_a);
+    const double sep_a = max_separation_n<NA, NB>(la, lb, in.margin, edge_a);
     if (!(sep_a < in.margin)) {
         if (hint != nullptr)
             *hint = {static_cast<std::int8_t>(edge_a), false};
-        return m;
+        return set_empty(m);
     }
     int edge_b = 0;
-    const double sep_b = max_separation(lb, la, in.margin, edge_b);
+    const double sep_b = max_separation_n<NB, NA>(lb, la, in.margin, edge_b);
     if (!(sep_b < in.margin)) {
         if (hint != nullptr)
             *hint = {static_cast<std::int8_t>(edge_b), true};
-        return m;
+        return set_empty(m);
     }
 
-    // The tolerance needs both polygons' sizes; the common resting case (A's face best,
-    // penetrating) never asks for it.
-    const double tol =
-        sep_b > sep_a || std::max(sep_a, sep_b) > 0.0
-            ? relative_tolerance * std::sqrt(std::min(radius_squared(a), radius_squared(b)))
-            : 0.0;
+    // The tolerance is relative to the smaller polygon's size (the radii are the square roots
+    // of each polygon's largest squared vertex distance, so their minimum is the root of the
+    // smaller one); the common resting case (A's face best, penetrating) does not need it.
+    const double tol = sep_b > sep_a || std::max(sep_a, sep_b) > 0.0
+                           ? relative_tolerance * std::min(a.radius, b.radius)
+                           : 0.0;
 
     // Reference face: A's unless B's separates clearly more (hysteresis against flipping).
     const bool flip = sep_b > sep_a + tol;
     const Local& ref = flip ? lb : la;
     const Local& inc = flip ? la : lb;
+    const int ref_count = flip ? nb : na;
+    const int inc_count = flip ? na : nb;
     const int i11 = flip ? edge_b : edge_a;
-    const int i12 = (i11 + 1) % ref.count;
+    const int i12 = i11 + 1 == ref_count ? 0 : i11 + 1;
     const Vec2d n = ref.n(i11);
 
     // Incident edge: the face of the other polygon most anti-parallel to the reference normal.
     int i21 = 0;
     double min_dot = std::numeric_limits<double>::infinity();
-    for (int i = 0; i < inc.count; ++i) {
+    for (int i = 0; i < inc_count; ++i) {
         const double d = dot(n, inc.n(i));
         if (d < min_dot) {
             min_dot = d;
             i21 = i;
         }
     }
-    const int i22 = (i21 + 1) % inc.count;
+    const int i22 = i21 + 1 == inc_count ? 0 : i21 + 1;
     const Vec2d v11 = ref.v(i11);
     const Vec2d v12 = ref.v(i12);
     const Vec2d v21 = inc.v(i21);
@@ -281,7 +421,7 @@ Manifold collide_polygons(const Polygon& a, const Polygon& b, const CollideInput
         const double dist = std::sqrt(sd.distance_squared);
         if (ref_vertex && inc_vertex && dist > std::max(sep_a, sep_b) + tol) {
             if (!(dist < in.margin))
-                return m;
+                return set_empty(m);
             const Vec2d g = (sd.closest2 - sd.closest1) / dist; // reference -> incident
             const int ri = sd.fraction1 == 0.0 ? i11 : i12;
             const int ii = sd.fraction2 == 0.0 ? i21 : i22;
@@ -289,7 +429,7 @@ Manifold collide_polygons(const Polygon& a, const Polygon& b, const CollideInput
             m.count = 1;
             set_point(m.points[0], 0.5 * (sd.closest1 + sd.closest2), dist,
                       make_id(flip, ri, vertex_feature, ii, vertex_feature), frame, in);
-            return m;
+            return;
         }
     }
 
@@ -315,34 +455,63 @@ Manifold collide_polygons(const Polygon& a, const Polygon& b, const CollideInput
     /// \srs{A4} the normal points from A into B whichever polygon holds the reference face.
     m.normal = rotate(frame.q, flip ? -n : n);
     // Midway between the surfaces: half the separation back along the reference normal.
+    int count = 0;
     if (sep_lower < in.margin) {
-        set_point(m.points[m.count++], lower - (0.5 * sep_lower) * n, sep_lower,
+        set_point(m.points[count++], lower - (0.5 * sep_lower) * n, sep_lower,
                   make_id(flip, i11, face_feature, i22, vertex_feature), frame, in);
     }
     if (sep_upper < in.margin) {
-        set_point(m.points[m.count++], upper - (0.5 * sep_upper) * n, sep_upper,
+        set_point(m.points[count++], upper - (0.5 * sep_upper) * n, sep_upper,
                   make_id(flip, i11, face_feature, i21, vertex_feature), frame, in);
     }
-    return m;
+    m.count = count;
+}
+
+} // namespace
+
+void collide(const Collider& a, const Collider& b, const CollideInput& in, Manifold& m,
+             SeparationHint* hint) {
+    const int used = m.count;
+    if (a.type == ShapeType::polygon) {
+        if (b.type != ShapeType::polygon)
+            polygon_circle_into(a, b, in, m);
+        else if (a.count == 4 && b.count == 4)
+            polygons_into<4, 4>(a, b, in, m, hint);
+        else
+            polygons_into<0, 0>(a, b, in, m, hint);
+    } else if (b.type == ShapeType::circle) {
+        circles_into(a, b, in, m);
+    } else {
+        circle_polygon_into(a, b, in, m);
+    }
+    // The slots this manifold no longer uses read as in a new one.
+    for (int k = m.count; k < used; ++k)
+        m.points[k] = ManifoldPoint{};
 }
 
 Manifold collide(const Geometry& a, const Geometry& b, const CollideInput& in,
                  SeparationHint* hint) {
-    if (a.type == ShapeType::polygon) {
-        return b.type == ShapeType::polygon ? collide_polygons(a.polygon, b.polygon, in, hint)
-                                            : collide_polygon_circle(a.polygon, b.circle, in);
-    }
-    if (b.type == ShapeType::circle)
-        return collide_circles(a.circle, b.circle, in);
-    // Circle A, polygon B: solve as polygon-circle with the roles swapped, then flip back.
-    const CollideInput swapped{in.xf_b, in.center_b, in.xf_a, in.center_a, in.margin};
-    Manifold m = collide_polygon_circle(b.polygon, a.circle, swapped);
-    m.normal = -m.normal;
-    for (int i = 0; i < m.count; ++i) {
-        ManifoldPoint& mp = m.points[i];
-        std::swap(mp.anchor_a, mp.anchor_b);
-        mp.id = {mp.id.index_b, mp.id.type_b, mp.id.index_a, mp.id.type_a};
-    }
+    Manifold m;
+    collide(make_collider(a), make_collider(b), in, m, hint);
+    return m;
+}
+
+Manifold collide_circles(const Circle& a, const Circle& b, const CollideInput& in) {
+    Manifold m;
+    circles_into(make_collider(a), make_collider(b), in, m);
+    return m;
+}
+
+Manifold collide_polygon_circle(const Polygon& a, const Circle& b, const CollideInput& in) {
+    Manifold m;
+    polygon_circle_into(make_collider(a), make_collider(b), in, m);
+    return m;
+}
+
+Manifold collide_polygons(const Polygon& a, const Polygon& b, const CollideInput& in,
+                          SeparationHint* hint) {
+    Manifold m;
+    collide(make_collider(a), make_collider(b), in, m, hint);
     return m;
 }
 

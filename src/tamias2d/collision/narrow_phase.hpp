@@ -5,6 +5,7 @@
 
 #include <cstdint>
 
+#include "tamias2d/collision/collider.hpp"
 #include "tamias2d/collision/manifold.hpp"
 #include "tamias2d/geometry/shapes.hpp"
 
@@ -38,5 +39,12 @@ Manifold collide_polygons(const Polygon& a, const Polygon& b, const CollideInput
 /// roles swapped and the result flipped, so the normal still points from a into b.
 Manifold collide(const Geometry& a, const Geometry& b, const CollideInput& in,
                  SeparationHint* hint = nullptr);
+
+/// The same for shapes made into colliders (make_collider), in place: afterwards `m` equals what
+/// the form above returns, bit for bit, provided it held a manifold from collide (or a default
+/// one), whose slots past its count are zero. A contact's manifold is updated this way, from
+/// the colliders its shapes keep, without building and copying a new manifold.
+void collide(const Collider& a, const Collider& b, const CollideInput& in, Manifold& m,
+             SeparationHint* hint = nullptr);
 
 } // namespace tamias2d

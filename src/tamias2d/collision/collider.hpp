@@ -1,0 +1,40 @@
+// A shape laid out for the narrow phase (T5): made once when the shape is created, so a collision
+// reads one compact record per shape instead of the Geometry (whose vertex and normal arrays lie
+// in different cache lines) and never recomputes the polygon's size.
+#pragma once
+
+#include "tamias2d/geometry/shapes.hpp"
+
+namespace tamias2d {
+
+/// Two consecutive vertices of a polygon and their edge normals, one array per coordinate (a
+/// vertex per lane): one cache line, loaded as two-lane registers by the separating axis test.
+struct alignas(16) VertexPair {
+    double vx[2], vy[2]; ///< m, body frame
+    double nx[2], ny[2]; ///< outward unit normal of the edge to the next vertex
+};
+
+inline constexpr int max_vertex_pairs = max_polygon_vertices / 2;
+
+/// A circle or a convex polygon, in its body's frame. A box reads two pairs and the header:
+/// three cache lines when the collider starts one (the header's 32 bytes leave the rest of its
+/// line to the owner).
+struct alignas(16) Collider {
+    /// Vertex i is lane i % 2 of pair i / 2; a lane past the count repeats vertex 0 (finite
+    /// values, never read as a vertex).
+    VertexPair pairs[max_vertex_pairs]{};
+    ShapeType type = ShapeType::circle;
+    int count = 0;       ///< polygon vertices (0 for a circle)
+    double radius = 0.0; ///< m: the circle's radius, or the polygon's largest vertex distance
+                         ///< from its centroid (its size, for relative tolerances)
+    Vec2d center{};      ///< m: the circle's centre or the polygon's centroid
+
+    Vec2d vertex(int i) const { return {pairs[i >> 1].vx[i & 1], pairs[i >> 1].vy[i & 1]}; }
+    Vec2d normal(int i) const { return {pairs[i >> 1].nx[i & 1], pairs[i >> 1].ny[i & 1]}; }
+};
+
+Collider make_collider(const Circle& c);
+Collider make_collider(const Polygon& p);
+Collider make_collider(const Geometry& g);
+
+} // namespace tamias2d
