@@ -22,8 +22,10 @@ using WideMask = std::int64_t __attribute__((vector_size(wide_lanes * sizeof(std
 /// aligned 32-byte loads: every structure holding packs is declared alignas(wide_alignment).
 inline constexpr std::size_t wide_alignment = sizeof(Wide);
 
+/// Every lane x, exactly (Wide{} + x would turn -0.0 into +0.0).
 inline Wide splat(double x) {
-    return Wide{} + x;
+    static_assert(wide_lanes == 4);
+    return Wide{x, x, x, x};
 }
 /// Lane by lane for a pack (mask: WideMask), plain for one lane (V = double, mask: bool);
 /// min and max keep std::min's and std::max's tie and signed-zero behaviour.
