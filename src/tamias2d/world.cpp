@@ -86,7 +86,7 @@ struct World::Impl {
     BodyId body_id(std::uint32_t i) const { return {i, bodies[i].generation}; }
     ShapeId shape_id(std::uint32_t i) const { return {i, shapes[i].generation}; }
 
-    Aabb shape_box(const Shape& s) const { return compute_aabb(s.geometry, bodies[s.body].xf); }
+    Aabb shape_box(const Shape& s) const { return compute_aabb(s.collider, bodies[s.body].xf); }
 
     /// Mass, centre of mass and inertia from the shapes (DD1, DD14) or the overrides.
     void update_mass(Body& b) {
@@ -394,8 +394,14 @@ struct World::Impl {
             b.xf.p = b.center - rotate(b.xf.q, b.local_center);
             b.force_once = {};
             b.torque_once = 0.0;
-            for (std::uint32_t s : b.shapes)
-                broad_phase.move_proxy(shapes[s].proxy, shape_box(shapes[s]));
+            // Each shape's fat box was copied at the start of this step (update_contacts) and no
+            // proxy has moved since: the common case, still inside, needs no tree node.
+            for (std::uint32_t s : b.shapes) {
+                const Shape& sh = shapes[s];
+                const Aabb tight = compute_aabb(sh.collider, b.xf);
+                if (!contains(sh.fat_box, tight))
+                    broad_phase.move_proxy(sh.proxy, tight);
+            }
         }
     }
 

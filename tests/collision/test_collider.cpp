@@ -9,6 +9,7 @@
 #include "oracles.hpp"
 #include "tamias2d/collision/collider.hpp"
 #include "tamias2d/collision/narrow_phase.hpp"
+#include "tamias2d/geometry/shape_aabb.hpp"
 
 namespace utf = boost::unit_test;
 namespace tt = boost::test_tools;
@@ -176,6 +177,21 @@ BOOST_AUTO_TEST_CASE(in_place_update_matches_a_new_manifold, *utf::label("T5")) 
     }
     BOOST_TEST(with_points > 1000);
     BOOST_TEST(shrunk > 500);
+}
+
+// Oracle: compute_aabb of the geometry the collider was made from (the definition of the tight
+// box, IM4's rectangle): the collider's box must be the same bits, for circles and polygons in
+// random poses, since the broad phase now reads it instead.
+BOOST_AUTO_TEST_CASE(collider_box_is_the_geometry_box, *utf::label("IM4") * utf::label("T5")) {
+    std::mt19937_64 rng(31);
+    for (int i = 0; i < 20000; ++i) {
+        const Geometry g = oracle::random_shape(rng);
+        const Transform xf = oracle::random_transform(rng, 1000.0);
+        const Aabb want = compute_aabb(g, xf);
+        const Aabb got = compute_aabb(make_collider(g), xf);
+        BOOST_TEST_REQUIRE((same_bits(got.min_x, want.min_x) && same_bits(got.min_y, want.min_y) &&
+                            same_bits(got.max_x, want.max_x) && same_bits(got.max_y, want.max_y)));
+    }
 }
 
 BOOST_AUTO_TEST_SUITE_END()

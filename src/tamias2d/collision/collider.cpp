@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tamias2d/geometry/shape_aabb.hpp"
+
 namespace tamias2d {
 
 Collider make_collider(const Circle& c) {
@@ -31,6 +33,13 @@ Collider make_collider(const Polygon& p) {
         pair.ny[i % 2] = p.normals[from].y;
     }
     return k;
+}
+
+Aabb compute_aabb(const Collider& k, const Transform& xf) {
+    if (k.type == ShapeType::circle)
+        return compute_aabb(Circle{k.center, k.radius}, xf);
+    return vertices_aabb(
+        k.count, [&](int i) { return k.vertex(i); }, xf);
 }
 
 Collider make_collider(const Geometry& g) {

@@ -3,6 +3,7 @@
 // in different cache lines) and never recomputes the polygon's size.
 #pragma once
 
+#include "tamias2d/geometry/aabb.hpp"
 #include "tamias2d/geometry/shapes.hpp"
 
 namespace tamias2d {
@@ -36,5 +37,9 @@ struct alignas(16) Collider {
 Collider make_collider(const Circle& c);
 Collider make_collider(const Polygon& p);
 Collider make_collider(const Geometry& g);
+
+/// \srs{IM4} The shape's tight world-frame box, equal bit for bit to compute_aabb of the
+/// geometry it was made from (the same loop), read from the collider's lines.
+Aabb compute_aabb(const Collider& k, const Transform& xf);
 
 } // namespace tamias2d

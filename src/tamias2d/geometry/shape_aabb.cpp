@@ -1,7 +1,5 @@
 #include "tamias2d/geometry/shape_aabb.hpp"
 
-#include <algorithm>
-
 namespace tamias2d {
 
 Aabb compute_aabb(const Circle& c, const Transform& xf) {
@@ -10,16 +8,8 @@ Aabb compute_aabb(const Circle& c, const Transform& xf) {
 }
 
 Aabb compute_aabb(const Polygon& p, const Transform& xf) {
-    const Vec2d v0 = transform_point(xf, p.vertices[0]);
-    Aabb box{v0.x, v0.y, v0.x, v0.y};
-    for (int i = 1; i < p.count; ++i) {
-        const Vec2d v = transform_point(xf, p.vertices[i]);
-        box.min_x = std::min(box.min_x, v.x);
-        box.min_y = std::min(box.min_y, v.y);
-        box.max_x = std::max(box.max_x, v.x);
-        box.max_y = std::max(box.max_y, v.y);
-    }
-    return box;
+    return vertices_aabb(
+        p.count, [&](int i) { return p.vertices[std::size_t(i)]; }, xf);
 }
 
 /// \srs{IM4} the axis-aligned rectangle IM4 compares, for one placed shape.
