@@ -239,8 +239,10 @@ struct World::Impl {
             destroy_contact(*it);
     }
 
-    /// The restitution pass's own copy of a manifold that can bounce, prepared as its lane is.
-    void prepare_bouncing(ContactConstraint& cc, const GraphEdge& edge, std::uint32_t contact) {
+    /// A manifold as the solver takes it, before preparation: bodies, normal, materials, anchors,
+    /// separations and the impulses to warm start from.
+    void unprepared_constraint(ContactConstraint& cc, const GraphEdge& edge,
+                               std::uint32_t contact) const {
         const Contact& c = contacts[contact];
         cc.body_a = edge.body_a;
         cc.body_b = edge.body_b;
@@ -258,7 +260,6 @@ struct World::Impl {
             cp.normal_impulse = c.normal_impulse[j];
             cp.tangent_impulse = c.tangent_impulse[j];
         }
-        prepare_contact(cc, solver_bodies);
     }
 
     void solve(double dt) {
@@ -313,33 +314,19 @@ struct World::Impl {
         // those that can bounce also get a scalar copy for the restitution pass (the same
         // arithmetic, so the same bits).
         const auto order = wide_solver.order();
+        ContactConstraint cc; // reused: what set_input_lane and prepare_contact read is set anew
         for (std::size_t p = 0; p < order.size(); ++p) {
             WideManifoldInput in;
             for (int l = 0; l < wide_lanes; ++l) {
                 const std::uint32_t k = order[p][l];
                 if (k == ConstraintGraph::no_constraint)
                     continue;
-                const Contact& c = contacts[edge_contact[k]];
-                in.body_a[l] = edges[k].body_a;
-                in.body_b[l] = edges[k].body_b;
-                in.contact[l] = edge_contact[k];
-                in.restitution_slot[l] = edge_slot[k];
-                in.count[l] = static_cast<std::uint8_t>(c.manifold.count);
-                in.normal.x[l] = c.manifold.normal.x;
-                in.normal.y[l] = c.manifold.normal.y;
-                in.friction[l] = c.friction;
-                for (int j = 0; j < c.manifold.count; ++j) {
-                    const ManifoldPoint& mp = c.manifold.points[j];
-                    in.r_a[j].x[l] = mp.anchor_a.x;
-                    in.r_a[j].y[l] = mp.anchor_a.y;
-                    in.r_b[j].x[l] = mp.anchor_b.x;
-                    in.r_b[j].y[l] = mp.anchor_b.y;
-                    in.separation[j][l] = mp.separation;
-                    in.normal_impulse[j][l] = c.normal_impulse[j];
-                    in.tangent_impulse[j][l] = c.tangent_impulse[j];
+                unprepared_constraint(cc, edges[k], edge_contact[k]);
+                set_input_lane(in, l, cc, edge_slot[k]);
+                if (edge_slot[k] != WideContactSolver::no_slot) {
+                    bouncing[edge_slot[k]] = cc;
+                    prepare_contact(bouncing[edge_slot[k]], solver_bodies);
                 }
-                if (edge_slot[k] != WideContactSolver::no_slot)
-                    prepare_bouncing(bouncing[edge_slot[k]], edges[k], edge_contact[k]);
             }
             wide_solver.prepare_pack(p, in, solver_bodies);
         }

@@ -71,6 +71,27 @@ TAMIAS_WIDE_KERNEL void prepare_lanes(WideContactConstraint& w, const WideManifo
 
 } // namespace
 
+void set_input_lane(WideManifoldInput& in, int l, const ContactConstraint& c, std::uint32_t slot) {
+    in.body_a[l] = c.body_a;
+    in.body_b[l] = c.body_b;
+    in.contact[l] = c.contact;
+    in.restitution_slot[l] = slot;
+    in.count[l] = static_cast<std::uint8_t>(c.count);
+    in.normal.x[l] = c.normal.x;
+    in.normal.y[l] = c.normal.y;
+    in.friction[l] = c.friction;
+    for (int j = 0; j < c.count; ++j) {
+        const ContactConstraintPoint& p = c.points[j];
+        in.r_a[j].x[l] = p.r_a.x;
+        in.r_a[j].y[l] = p.r_a.y;
+        in.r_b[j].x[l] = p.r_b.x;
+        in.r_b[j].y[l] = p.r_b.y;
+        in.separation[j][l] = p.base_separation;
+        in.normal_impulse[j][l] = p.normal_impulse;
+        in.tangent_impulse[j][l] = p.tangent_impulse;
+    }
+}
+
 void WideContactSolver::colour(std::span<const GraphEdge> edges, std::size_t body_count) {
     graph_.colour(edges, body_count);
     packs_.resize(graph_.packs().size()); // never shrinks its capacity: no allocation per step
@@ -97,25 +118,7 @@ void WideContactSolver::load(std::span<const ContactConstraint> constraints,
             const std::uint32_t k = lanes[i][l];
             if (k == ConstraintGraph::no_constraint)
                 continue;
-            const ContactConstraint& c = constraints[k];
-            in.body_a[l] = c.body_a;
-            in.body_b[l] = c.body_b;
-            in.contact[l] = c.contact;
-            in.restitution_slot[l] = no_slot;
-            in.count[l] = static_cast<std::uint8_t>(c.count);
-            in.normal.x[l] = c.normal.x;
-            in.normal.y[l] = c.normal.y;
-            in.friction[l] = c.friction;
-            for (int j = 0; j < c.count; ++j) {
-                const ContactConstraintPoint& p = c.points[j];
-                in.r_a[j].x[l] = p.r_a.x;
-                in.r_a[j].y[l] = p.r_a.y;
-                in.r_b[j].x[l] = p.r_b.x;
-                in.r_b[j].y[l] = p.r_b.y;
-                in.separation[j][l] = p.base_separation;
-                in.normal_impulse[j][l] = p.normal_impulse;
-                in.tangent_impulse[j][l] = p.tangent_impulse;
-            }
+            set_input_lane(in, l, constraints[k], no_slot);
         }
         prepare_pack(i, in, bodies);
     }

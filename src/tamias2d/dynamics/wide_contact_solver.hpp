@@ -15,6 +15,10 @@
 
 namespace tamias2d {
 
+/// Lane l of a pack's input from a constraint's unprepared fields (bodies, contact, normal,
+/// friction, count, anchors, separations, warm-start impulses); `slot` as in prepare_pack.
+void set_input_lane(WideManifoldInput& in, int l, const ContactConstraint& c, std::uint32_t slot);
+
 class WideContactSolver {
   public:
     /// A lane's manifold cannot bounce (restitution 0): the restitution pass has no copy of it.
