@@ -8,7 +8,7 @@ set -uo pipefail
 cd "$(dirname "$0")/.."
 t0=$(date +%s)
 phase() { printf '\n== [%4ds] %s\n' "$(( $(date +%s) - t0 ))" "$*"; }
-quick=0; full_bench=0
+quick=0; full_bench=0; coverage_failed=0
 for arg in "$@"; do
     case "$arg" in
         --quick) quick=1 ;;
@@ -42,10 +42,19 @@ if [ $quick -eq 0 ]; then
         cmake --build build-coverage -j2 >/dev/null || echo "   coverage build failed"
     # Each Boost.Test executable once, all its cases (CTest runs one entry per SRS label, so a
     # case with four labels would run four times), two at a time; then the other CTest entries
-    # (CLI, examples, scripts). Results do not matter here: the report's run is the verdict.
+    # (CLI, examples, scripts). The report's run is the verdict, but a test that fails only in
+    # this unoptimised build is a bug too (and would silently lower the coverage): it fails the
+    # job.
     find build-coverage/tests -name '*_tests' -type f -perm -u+x | sort |
-        xargs -P 2 -I{} sh -c '"{}" --color_output=no >/dev/null 2>&1' || true
-    ctest --test-dir build-coverage -j2 -LE compile_fail -E '@' >/dev/null
+        xargs -P 2 -I{} sh -c '"{}" --color_output=no >/dev/null 2>&1 || echo "{}" >&2' \
+            2>build-coverage/failures.txt || true
+    ctest --test-dir build-coverage -j2 -LE compile_fail -E '@' >/dev/null ||
+        echo "ctest (coverage build)" >>build-coverage/failures.txt
+    if [ -s build-coverage/failures.txt ]; then
+        echo "   FAILED in the coverage build (-O0):"; sed "s/^/     /" build-coverage/failures.txt
+        coverage_failed=1
+    fi
+    rm -f build-coverage/failures.txt
     gcovr -r . --filter 'src/' --json-summary reports/data/coverage.json \
           --html-details reports/coverage.html build-coverage >/dev/null 2>&1 ||
         echo "   gcovr failed"
@@ -54,5 +63,6 @@ fi
 phase "tests and traceability report"
 /usr/bin/python3 traceability/build_report.py --source . --build build --out reports
 status=$?
+[ $coverage_failed -eq 0 ] || status=1
 phase "done (exit $status): open reports/index.html"
 exit $status

@@ -178,7 +178,7 @@ void WideContactSolver::store(std::span<Contact> contacts,
 }
 
 bool WideContactSolver::uses_avx2() {
-#if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__)
+#if TAMIAS_WIDE_CLONES
     return __builtin_cpu_supports("avx2");
 #else
     return false;

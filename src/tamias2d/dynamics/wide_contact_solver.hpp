@@ -50,7 +50,8 @@ class WideContactSolver {
 
     /// The packs in solve order (the benchmark runs its own instantiation of the loops on them).
     std::span<WideContactConstraint> packs() { return packs_; }
-    /// Whether this processor runs the packs with AVX2 (otherwise SSE2; the results are equal).
+    /// Whether the packs run with AVX2 here (otherwise SSE2, also in unoptimised builds; the
+    /// results are equal).
     static bool uses_avx2();
 
   private:

@@ -14,10 +14,15 @@
 
 // Functions running the pack loops are compiled twice, for AVX2 and for the x86-64 baseline, and
 // the processor picks one at load time (GCC function multiversioning). Neither clone uses fused
-// multiply-add, so both give the same bits. flatten inlines the whole iteration into each clone.
-#if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__)
+// multiply-add, so both give the same bits. flatten inlines the whole iteration into each clone:
+// it must, because a helper left out of line is compiled for the baseline, where a pack travels
+// in memory, while the AVX2 clone passes it in a ymm register. Unoptimised builds (-O0: the
+// coverage build) do not inline, so they run the baseline loops only.
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__) && defined(__OPTIMIZE__)
+#define TAMIAS_WIDE_CLONES 1
 #define TAMIAS_WIDE_KERNEL __attribute__((target_clones("avx2", "default"), flatten))
 #else
+#define TAMIAS_WIDE_CLONES 0
 #define TAMIAS_WIDE_KERNEL
 #endif
 
