@@ -6,6 +6,7 @@
 // preparation of the same manifold agree bit for bit.
 #pragma once
 
+#include "tamias2d/dynamics/contact_iteration.hpp"
 #include "tamias2d/dynamics/model_bridge.hpp"
 #include "tamias2d/math/wide.hpp"
 
@@ -33,7 +34,7 @@ PreparedPoint<V> prepare_point(const Body& a, const Body& b, units::Vec2<V> r_a,
                                units::Vec2<V> n) {
     const V zero = broadcast<V>(0.0);
     const V one = broadcast<V>(1.0);
-    const units::Vec2<V> t = right_perp(n);
+    const units::Vec2<V> t = iteration::tangent_of(n); // the direction the iteration applies
     PreparedPoint<V> p;
     p.normal_arm_a = bridge::moment_arm(r_a, n);
     p.normal_arm_b = bridge::moment_arm(r_b, n);
