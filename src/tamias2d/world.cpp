@@ -35,8 +35,11 @@ struct World::Impl {
     double time = 0.0;
     double time_error = 0.0; ///< Kahan compensation: n steps of dt read back as n dt
     std::vector<Body> bodies;
+    std::vector<BodySettings> body_settings; ///< per body, indexed alike
     std::vector<std::uint32_t> free_bodies;
+    std::uint32_t loaded_bodies = 0; ///< live bodies with a load function
     std::vector<Shape> shapes;
+    std::vector<ShapeDef> shape_defs; ///< per shape, indexed alike: what it was made from
     std::vector<std::uint32_t> free_shapes;
     std::vector<Contact> contacts;
     std::unordered_map<std::uint64_t, std::uint32_t> contact_index;
@@ -75,7 +78,7 @@ struct World::Impl {
     const Body& body(BodyId id) const { return const_cast<Impl*>(this)->body(id); }
 
     Shape& shape(ShapeId id) {
-        if (id.index >= shapes.size() || !shapes[id.index].alive ||
+        if (id.index >= shapes.size() || !shapes[id.index].alive() ||
             shapes[id.index].generation != id.generation) {
             throw InvalidHandle("stale or unknown ShapeId " + std::to_string(id.index) + ":" +
                                 std::to_string(id.generation));
@@ -88,31 +91,43 @@ struct World::Impl {
 
     Aabb shape_box(const Shape& s) const { return compute_aabb(s.collider, bodies[s.body].xf); }
 
+    /// Copies the body's pose into its shapes (Shape::body_xf, body_center): called wherever the
+    /// pose changes outside a step, so that the narrow phase may read the shapes' copies.
+    void sync_shape_poses(const Body& b) {
+        for (std::uint32_t s = b.first_shape; s != null_index; s = shapes[s].next) {
+            shapes[s].body_xf = b.xf;
+            shapes[s].body_center = b.center;
+        }
+    }
+
     /// Mass, centre of mass and inertia from the shapes (DD1, DD14) or the overrides.
-    void update_mass(Body& b) {
+    void update_mass(std::uint32_t i) {
+        Body& b = bodies[i];
+        const BodySettings& set = body_settings[i];
         b.mass = b.inv_mass = b.inertia = b.inv_inertia = 0.0;
         b.local_center = {};
         if (b.type == BodyType::dynamic) {
             std::vector<MassData> parts;
-            parts.reserve(b.shapes.size());
-            for (std::uint32_t s : b.shapes) {
-                parts.push_back(compute_mass(shapes[s].geometry, shapes[s].material.density));
+            for (std::uint32_t s = b.first_shape; s != null_index; s = shapes[s].next) {
+                const ShapeDef& d = shape_defs[s];
+                parts.push_back(compute_mass(d.geometry, d.material.density));
             }
             MassData md{};
             if (!parts.empty())
                 md = combine(parts);
             b.local_center = md.center;
             const double shape_mass = md.mass;
-            b.mass = b.mass_override.value_or(parts.empty() ? 1.0 : shape_mass);
+            b.mass = set.mass_override.value_or(parts.empty() ? 1.0 : shape_mass);
             // With the mass overridden, keep the shapes' distribution: scale I with the mass.
             double inertia = md.inertia;
-            if (b.mass_override && shape_mass > 0.0)
+            if (set.mass_override && shape_mass > 0.0)
                 inertia *= b.mass / shape_mass;
-            b.inertia = b.inertia_override.value_or(inertia);
+            b.inertia = set.inertia_override.value_or(inertia);
             b.inv_mass = 1.0 / b.mass;
-            b.inv_inertia = (b.fixed_rotation || !(b.inertia > 0.0)) ? 0.0 : 1.0 / b.inertia;
+            b.inv_inertia = (set.fixed_rotation || !(b.inertia > 0.0)) ? 0.0 : 1.0 / b.inertia;
         }
         b.center = transform_point(b.xf, b.local_center);
+        sync_shape_poses(b);
     }
 
     void destroy_contact(std::uint32_t i) {
@@ -163,8 +178,8 @@ struct World::Impl {
             c.body_a = shapes[sa].body;
             c.body_b = shapes[sb].body;
             // Combination rules (docs/design.md): friction geometric mean, restitution max.
-            const Material& ma = shapes[sa].material;
-            const Material& mb = shapes[sb].material;
+            const Material& ma = shape_defs[sa].material;
+            const Material& mb = shape_defs[sb].material;
             c.friction = std::sqrt(ma.friction * mb.friction);
             c.restitution = std::max(ma.restitution, mb.restitution);
             contact_index.emplace(key, std::uint32_t(contacts.size()));
@@ -175,16 +190,6 @@ struct World::Impl {
     /// \srs{R7} Narrow phase for every contact; contacts whose fat boxes separated are destroyed.
     void update_contacts() {
         doomed.clear();
-        // The fat boxes and the body poses, once per shape and in order, rather than from the
-        // tree's and the bodies' scattered memory twice per contact.
-        for (Shape& s : shapes) {
-            if (!s.alive)
-                continue;
-            const Body& b = bodies[s.body];
-            s.fat_box = broad_phase.fat_aabb(s.proxy);
-            s.body_xf = b.xf;
-            s.body_center = b.center;
-        }
         constexpr std::uint32_t ahead = 6; // contacts: the shapes' lines arrive before use
         const auto count = std::uint32_t(contacts.size()); // the loop adds and removes none
         for (std::uint32_t i = 0; i < count; ++i) {
@@ -281,8 +286,9 @@ struct World::Impl {
             Vec2d a{};
             double alpha = 0.0;
             if (b.type == BodyType::dynamic) {
-                const Vec2d f = b.force + b.force_once + loads[i].force;
-                const double tau = b.torque + b.torque_once + loads[i].torque;
+                const Load l = loads.empty() ? Load{} : loads[i];
+                const Vec2d f = b.force + b.force_once + l.force;
+                const double tau = b.torque + b.torque_once + l.torque;
                 a = bridge::acceleration(b.gravity_scale * def.gravity, f, b.mass);
                 alpha = b.inv_inertia > 0.0 ? bridge::angular_acceleration(tau, b.inertia) : 0.0;
             }
@@ -381,13 +387,17 @@ struct World::Impl {
             b.xf.p = b.center - rotate(b.xf.q, b.local_center);
             b.force_once = {};
             b.torque_once = 0.0;
-            // Each shape's fat box was copied at the start of this step (update_contacts) and no
-            // proxy has moved since: the common case, still inside, needs no tree node.
-            for (std::uint32_t s : b.shapes) {
-                const Shape& sh = shapes[s];
+            // The shapes' copies of the pose and the fat box, in the same pass: the common case,
+            // still inside the fat box, needs no tree node.
+            for (std::uint32_t s = b.first_shape; s != null_index; s = shapes[s].next) {
+                Shape& sh = shapes[s];
+                sh.body_xf = b.xf;
+                sh.body_center = b.center;
                 const Aabb tight = compute_aabb(sh.collider, b.xf);
-                if (!contains(sh.fat_box, tight))
+                if (!contains(sh.fat_box, tight)) {
                     broad_phase.move_proxy(sh.proxy, tight);
+                    sh.fat_box = broad_phase.fat_aabb(sh.proxy);
+                }
             }
         }
     }
@@ -431,6 +441,7 @@ BodyId World::create_body(const BodyDef& def) {
     } else {
         i = std::uint32_t(w.bodies.size());
         w.bodies.emplace_back();
+        w.body_settings.emplace_back();
     }
     Body& b = w.bodies[i];
     const std::uint32_t generation = b.generation + 1;
@@ -438,34 +449,33 @@ BodyId World::create_body(const BodyDef& def) {
     b.generation = generation;
     b.alive = true;
     b.type = def.type;
-    b.name = def.name;
     b.angle = def.angle;
     b.xf = {def.position, Rot::from_angle(def.angle)};
     b.v = def.type == BodyType::static_body ? Vec2d{} : def.linear_velocity;
     b.w = def.type == BodyType::static_body ? 0.0 : def.angular_velocity;
     b.force = def.force;
     b.torque = def.torque;
-    b.load = def.load;
-    b.mass_override = def.mass;
-    b.inertia_override = def.inertia;
     b.gravity_scale = def.gravity_scale;
-    b.fixed_rotation = def.fixed_rotation;
-    w.update_mass(b);
+    w.body_settings[i] = {def.name, def.load, def.mass, def.inertia, def.fixed_rotation};
+    w.loaded_bodies += def.load ? 1 : 0;
+    w.update_mass(i);
     return {i, generation};
 }
 
 void World::destroy_body(BodyId id) {
     Impl& w = *impl_;
     Body& b = w.body(id);
-    for (std::uint32_t s : b.shapes) {
+    for (std::uint32_t s = b.first_shape; s != null_index; s = w.shapes[s].next) {
         w.destroy_contacts_of_shape(s);
         w.broad_phase.destroy_proxy(w.shapes[s].proxy);
-        w.shapes[s].alive = false;
+        w.shapes[s].proxy = -1;
         w.free_shapes.push_back(s);
     }
-    b.shapes.clear();
+    b.first_shape = null_index;
     b.alive = false;
-    b.load = nullptr;
+    BodySettings& set = w.body_settings[id.index];
+    w.loaded_bodies -= set.load ? 1 : 0;
+    set = BodySettings{};
     w.free_bodies.push_back(id.index);
 }
 
@@ -480,18 +490,23 @@ ShapeId World::create_shape(BodyId body_id, const ShapeDef& def) {
     } else {
         i = std::uint32_t(w.shapes.size());
         w.shapes.emplace_back();
+        w.shape_defs.emplace_back();
     }
     Shape& s = w.shapes[i];
     s.generation += 1;
-    s.alive = true;
     s.body = body_id.index;
-    s.geometry = def.geometry;
+    s.next = null_index;
     s.collider = make_collider(def.geometry);
-    s.material = def.material;
+    w.shape_defs[i] = def;
     Body& b = w.bodies[body_id.index];
-    b.shapes.push_back(i);
+    // Appended, so that the body's shapes (and the mass summed over them) keep creation order.
+    std::uint32_t* link = &b.first_shape;
+    while (*link != null_index)
+        link = &w.shapes[*link].next;
+    *link = i;
     s.proxy = w.broad_phase.create_proxy(w.shape_box(s), i, b.type == BodyType::static_body);
-    w.update_mass(b);
+    s.fat_box = w.broad_phase.fat_aabb(s.proxy);
+    w.update_mass(body_id.index); // also copies the body's pose into its shapes
     return {i, s.generation};
 }
 
@@ -500,11 +515,13 @@ void World::destroy_shape(ShapeId id) {
     Shape& s = w.shape(id);
     w.destroy_contacts_of_shape(id.index);
     w.broad_phase.destroy_proxy(s.proxy);
-    s.alive = false;
-    Body& b = w.bodies[s.body];
-    b.shapes.erase(std::find(b.shapes.begin(), b.shapes.end(), id.index));
+    s.proxy = -1;
+    std::uint32_t* link = &w.bodies[s.body].first_shape;
+    while (*link != id.index)
+        link = &w.shapes[*link].next;
+    *link = s.next;
     w.free_shapes.push_back(id.index);
-    w.update_mass(b);
+    w.update_mass(s.body);
 }
 
 bool World::is_valid(BodyId id) const {
@@ -512,7 +529,7 @@ bool World::is_valid(BodyId id) const {
            impl_->bodies[id.index].generation == id.generation;
 }
 bool World::is_valid(ShapeId id) const {
-    return id.index < impl_->shapes.size() && impl_->shapes[id.index].alive &&
+    return id.index < impl_->shapes.size() && impl_->shapes[id.index].alive() &&
            impl_->shapes[id.index].generation == id.generation;
 }
 
@@ -527,7 +544,7 @@ std::vector<BodyId> World::bodies() const {
 
 std::vector<ShapeId> World::shapes(BodyId id) const {
     std::vector<ShapeId> out;
-    for (std::uint32_t s : impl_->body(id).shapes)
+    for (std::uint32_t s = impl_->body(id).first_shape; s != null_index; s = impl_->shapes[s].next)
         out.push_back(impl_->shape_id(s));
     return out;
 }
@@ -541,12 +558,16 @@ void World::step(double dt) {
     Impl& w = *impl_;
     // Evaluate the time-varying loads first: a user function returning NaN is rejected
     // before anything has changed.
-    w.loads.assign(w.bodies.size(), Load{});
-    for (std::uint32_t i = 0; i < w.bodies.size(); ++i) {
-        Body& b = w.bodies[i];
-        if (!b.alive || !b.load || b.type != BodyType::dynamic)
+    // Most worlds have none: then the step reads no settings and `loads` stays empty.
+    w.loads.clear();
+    if (w.loaded_bodies > 0)
+        w.loads.assign(w.bodies.size(), Load{});
+    for (std::uint32_t i = 0; i < w.loads.size(); ++i) {
+        const Body& b = w.bodies[i];
+        const LoadFunction& load = w.body_settings[i].load;
+        if (!b.alive || !load || b.type != BodyType::dynamic)
             continue;
-        const Load l = b.load(w.time);
+        const Load l = load(w.time);
         require_finite("load(t).force", l.force);
         require_finite("load(t).torque", l.torque);
         w.loads[i] = l;
@@ -610,7 +631,8 @@ BodyType World::type(BodyId id) const {
     return impl_->body(id).type;
 }
 const std::string& World::name(BodyId id) const {
-    return impl_->body(id).name;
+    impl_->body(id); // handle check
+    return impl_->body_settings[id.index].name;
 }
 
 void World::set_transform(BodyId id, Vec2d origin, double angle) {
@@ -620,8 +642,11 @@ void World::set_transform(BodyId id, Vec2d origin, double angle) {
     b.angle = angle;
     b.xf = {origin, Rot::from_angle(angle)};
     b.center = transform_point(b.xf, b.local_center);
-    for (std::uint32_t s : b.shapes) {
-        impl_->broad_phase.move_proxy(impl_->shapes[s].proxy, impl_->shape_box(impl_->shapes[s]));
+    impl_->sync_shape_poses(b);
+    for (std::uint32_t s = b.first_shape; s != null_index; s = impl_->shapes[s].next) {
+        Shape& sh = impl_->shapes[s];
+        impl_->broad_phase.move_proxy(sh.proxy, impl_->shape_box(sh));
+        sh.fat_box = impl_->broad_phase.fat_aabb(sh.proxy);
     }
 }
 void World::set_velocity(BodyId id, Vec2d v) {
@@ -679,7 +704,10 @@ void World::apply_impulse(BodyId id, Vec2d impulse, Vec2d world_point) {
     b.w = self.w;
 }
 void World::set_load(BodyId id, LoadFunction load) {
-    impl_->body(id).load = std::move(load);
+    impl_->body(id); // handle check
+    LoadFunction& old = impl_->body_settings[id.index].load;
+    impl_->loaded_bodies += (load ? 1 : 0) - (old ? 1 : 0);
+    old = std::move(load);
 }
 
 double World::kinetic_energy() const {
@@ -750,7 +778,7 @@ std::vector<ShapeId> World::query_point(Vec2d p) const {
     impl_->broad_phase.query(box, [&](int proxy) {
         const std::uint32_t s = impl_->broad_phase.user_data(proxy);
         const Shape& sh = impl_->shapes[s];
-        if (test_point(sh.geometry, impl_->bodies[sh.body].xf, p))
+        if (test_point(impl_->shape_defs[s].geometry, impl_->bodies[sh.body].xf, p))
             out.push_back(impl_->shape_id(s));
         return true;
     });
@@ -768,8 +796,8 @@ std::optional<RayCastHit> World::ray_cast(Vec2d origin, Vec2d translation) const
     impl_->broad_phase.query(inflated(box, 1e-9), [&](int proxy) {
         const std::uint32_t s = impl_->broad_phase.user_data(proxy);
         const Shape& sh = impl_->shapes[s];
-        const auto hit =
-            tamias2d::ray_cast(sh.geometry, impl_->bodies[sh.body].xf, origin, translation);
+        const auto hit = tamias2d::ray_cast(impl_->shape_defs[s].geometry,
+                                            impl_->bodies[sh.body].xf, origin, translation);
         if (hit && (!best || hit->fraction < best->fraction ||
                     (hit->fraction == best->fraction && s < best->shape.index))) {
             best = RayCastHit{impl_->shape_id(s), impl_->body_id(sh.body), hit->point, hit->normal,
@@ -806,7 +834,9 @@ std::uint64_t World::state_hash() const {
     hs(w.time_error);
     hs(w.def.gravity);
     hs(std::uint64_t(w.bodies.size()));
-    for (const Body& b : w.bodies) {
+    for (std::uint32_t i = 0; i < w.bodies.size(); ++i) {
+        const Body& b = w.bodies[i];
+        const BodySettings& set = w.body_settings[i];
         hs(std::uint64_t(b.generation) << 8 | std::uint64_t(b.alive) << 4 | std::uint64_t(b.type));
         if (!b.alive)
             continue;
@@ -827,26 +857,28 @@ std::uint64_t World::state_hash() const {
         hs(b.inv_mass);
         hs(b.inv_inertia);
         hs(b.gravity_scale);
-        hs(std::uint64_t(b.fixed_rotation) << 1 | std::uint64_t(bool(b.load)));
-        hs.bytes(b.name.data(), b.name.size());
-        for (std::uint32_t s : b.shapes)
+        hs(std::uint64_t(set.fixed_rotation) << 1 | std::uint64_t(bool(set.load)));
+        hs.bytes(set.name.data(), set.name.size());
+        for (std::uint32_t s = b.first_shape; s != null_index; s = w.shapes[s].next)
             hs(std::uint64_t(s));
     }
     hs(std::uint64_t(w.shapes.size()));
-    for (const Shape& s : w.shapes) {
-        hs(std::uint64_t(s.generation) << 1 | std::uint64_t(s.alive));
-        if (!s.alive)
+    for (std::uint32_t i = 0; i < w.shapes.size(); ++i) {
+        const Shape& s = w.shapes[i];
+        hs(std::uint64_t(s.generation) << 1 | std::uint64_t(s.alive()));
+        if (!s.alive())
             continue;
+        const ShapeDef& d = w.shape_defs[i];
         hs(std::uint64_t(s.body));
-        hs(std::uint64_t(s.geometry.type));
-        hs(s.geometry.circle.center);
-        hs(s.geometry.circle.radius);
-        hs(std::uint64_t(s.geometry.polygon.count));
-        for (int k = 0; k < s.geometry.polygon.count; ++k)
-            hs(s.geometry.polygon.vertices[std::size_t(k)]);
-        hs(s.material.density);
-        hs(s.material.restitution);
-        hs(s.material.friction);
+        hs(std::uint64_t(d.geometry.type));
+        hs(d.geometry.circle.center);
+        hs(d.geometry.circle.radius);
+        hs(std::uint64_t(d.geometry.polygon.count));
+        for (int k = 0; k < d.geometry.polygon.count; ++k)
+            hs(d.geometry.polygon.vertices[std::size_t(k)]);
+        hs(d.material.density);
+        hs(d.material.restitution);
+        hs(d.material.friction);
     }
     hs(std::uint64_t(w.contacts.size()));
     for (const Contact& c : w.contacts) {

@@ -2,6 +2,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
+#include <vector>
 
 #include "tamias2d/errors.hpp"
 #include "tamias2d/world.hpp"
@@ -175,6 +176,83 @@ BOOST_AUTO_TEST_CASE(bodies_stay_rigid_and_outputs_valid,
             BOOST_TEST(found);
         }
     }
+}
+
+// Oracle: closed forms. A body's shapes are listed in creation order after one in the middle is
+// destroyed, and its mass is the remaining shapes' (DD1: density x area, 1 kg m^-2 x 1 m^2 each).
+BOOST_AUTO_TEST_CASE(shape_list_survives_destruction, *utf::label("R1") * utf::label("DD1")) {
+    World world;
+    const BodyId b = world.create_body({});
+    std::vector<ShapeId> made;
+    for (int k = 0; k < 4; ++k)
+        made.push_back(world.create_shape(b, box_shape(1.0, 1.0, {}, {2.0 * k, 0.0})));
+    world.destroy_shape(made[1]);
+    const std::vector<ShapeId> left = world.shapes(b);
+    BOOST_TEST_REQUIRE(left.size() == 3u);
+    BOOST_TEST((left[0] == made[0] && left[1] == made[2] && left[2] == made[3]));
+    BOOST_TEST(world.mass(b) == 3.0);
+    // The centre of mass of unit boxes at x = 0, 4, 6: their mean.
+    BOOST_TEST(world.local_center(b).x == 10.0 / 3.0, boost::test_tools::tolerance(1e-15));
+    const ShapeId again = world.create_shape(b, box_shape(1.0, 1.0, {}, {8.0, 0.0}));
+    BOOST_TEST((world.shapes(b).back() == again));
+    BOOST_TEST(world.mass(b) == 4.0);
+}
+
+// Oracle: geometry. A box teleported (set_transform) onto a resting box between steps, and a
+// shape added to a body between steps, collide in the very next step at their new places: the
+// narrow phase must not use a pose or a fat box from before the change.
+BOOST_AUTO_TEST_CASE(changes_between_steps_are_seen_by_the_next_step, *utf::label("R7")) {
+    World world({.gravity = {0.0, 0.0}});
+    BodyDef sd;
+    sd.type = BodyType::static_body;
+    const BodyId ground = world.create_body(sd);
+    world.create_shape(ground, box_shape(4.0, 1.0));
+    BodyDef bd;
+    bd.position = {20.0, 20.0};
+    const BodyId box = world.create_body(bd);
+    world.create_shape(box, box_shape(1.0, 1.0));
+    bd.position = {-20.0, 20.0};
+    const BodyId bare = world.create_body(bd);
+    world.step(1.0 / 60.0);
+    BOOST_TEST(world.contacts().empty());
+    // Resting on the ground's top face (y = 0.5), 1 cm deep.
+    world.set_transform(box, {0.0, 0.99}, 0.0);
+    world.set_transform(bare, {1.5, 0.99}, 0.0);
+    world.create_shape(bare, box_shape(1.0, 1.0));
+    world.step(1.0 / 60.0);
+    BOOST_TEST_REQUIRE(world.contacts().size() == 2u);
+    for (const ContactInfo& c : world.contacts()) {
+        BOOST_TEST(c.point_count == 2);
+        BOOST_TEST(std::abs(c.normal.y) == 1.0);
+        BOOST_TEST(c.points[0].separation < 0.0);
+    }
+}
+
+// Oracle: IM1 with a load. Bodies with a load function get its force; those without do not,
+// also after the loaded ones are destroyed or their load removed (the world counts them).
+BOOST_AUTO_TEST_CASE(loads_follow_their_bodies, *utf::label("R5") * utf::label("IM1")) {
+    World world({.gravity = {0.0, 0.0}});
+    BodyDef bd;
+    bd.mass = 2.0;
+    bd.load = [](double) { return Load{{4.0, 0.0}, 0.0}; };
+    const BodyId a = world.create_body(bd);
+    const BodyId b = world.create_body(bd);
+    bd.load = nullptr;
+    const BodyId c = world.create_body(bd);
+    const double dt = 0.5;
+    world.step(dt);
+    // a = F / m = 2 m s^-2 for one step.
+    BOOST_TEST(world.velocity(a).x == 1.0);
+    BOOST_TEST(world.velocity(b).x == 1.0);
+    BOOST_TEST(world.velocity(c).x == 0.0);
+    world.destroy_body(a);
+    world.step(dt);
+    BOOST_TEST(world.velocity(b).x == 2.0);
+    world.set_load(b, nullptr);
+    world.set_load(c, [](double) { return Load{{-4.0, 0.0}, 0.0}; });
+    world.step(dt);
+    BOOST_TEST(world.velocity(b).x == 2.0);
+    BOOST_TEST(world.velocity(c).x == -1.0);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

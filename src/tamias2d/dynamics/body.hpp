@@ -1,12 +1,15 @@
 // A body as the world stores it (internal). Public access goes through World and BodyId.
+// Split in two, indexed alike: what a step reads and writes (Body), and what it never reads
+// (BodySettings). A step streams every body a few times; at 16k bodies the bodies no longer fit
+// in the cache, so every byte a step does not need costs time (docs/performance.md).
 #pragma once
 
 #include <cstdint>
 #include <optional>
 #include <string>
-#include <vector>
 
 #include "tamias2d/body_def.hpp"
+#include "tamias2d/handles.hpp"
 #include "tamias2d/math/vec2d.hpp"
 
 namespace tamias2d {
@@ -15,7 +18,8 @@ struct Body {
     std::uint32_t generation = 0;
     bool alive = false;
     BodyType type = BodyType::dynamic;
-    std::string name;
+    /// The body's first shape (null_index: none); the rest follow Shape::next, in creation order.
+    std::uint32_t first_shape = null_index;
 
     Transform xf{};     ///< body origin and rotation
     double angle = 0.0; ///< rad, unwrapped phi (wrapped only on output)
@@ -28,15 +32,18 @@ struct Body {
     double torque = 0.0; ///< N m, persistent
     Vec2d force_once{};  ///< N, next step only
     double torque_once = 0.0;
-    LoadFunction load;
 
     double mass = 0.0, inv_mass = 0.0;
     double inertia = 0.0, inv_inertia = 0.0;
-    std::optional<double> mass_override, inertia_override;
     double gravity_scale = 1.0;
-    bool fixed_rotation = false;
+};
 
-    std::vector<std::uint32_t> shapes;
+/// The body's settings that only its creation, its mass update and the queries read.
+struct BodySettings {
+    std::string name;
+    LoadFunction load;
+    std::optional<double> mass_override, inertia_override;
+    bool fixed_rotation = false;
 };
 
 } // namespace tamias2d
