@@ -1,5 +1,3 @@
-
-
 #include "tamias2d/world.hpp"
 
 #include <algorithm>
