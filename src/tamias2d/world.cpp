@@ -91,12 +91,24 @@ struct World::Impl {
 
     Aabb shape_box(const Shape& s) const { return compute_aabb(s.collider, bodies[s.body].xf); }
 
-    /// Copies the body's pose into its shapes (Shape::body_xf, body_center): called wherever the
-    /// pose changes outside a step, so that the narrow phase may read the shapes' copies.
+    /// Copies the body's pose into its shapes (Shape::body_xf, body_center) after a mass update
+    /// moved its centre, so that the narrow phase may read the shapes' copies.
     void sync_shape_poses(const Body& b) {
         for (std::uint32_t s = b.first_shape; s != null_index; s = shapes[s].next) {
             shapes[s].body_xf = b.xf;
             shapes[s].body_center = b.center;
+        }
+    }
+
+    /// Brings a shape's copies up to its body after the body moved: the pose, and the fat box
+    /// if the shape left it (the common case, still inside, reads no tree node).
+    void follow_body(Shape& sh, const Body& b) {
+        sh.body_xf = b.xf;
+        sh.body_center = b.center;
+        const Aabb tight = compute_aabb(sh.collider, b.xf);
+        if (!contains(sh.fat_box, tight)) {
+            broad_phase.move_proxy(sh.proxy, tight);
+            sh.fat_box = broad_phase.fat_aabb(sh.proxy);
         }
     }
 
@@ -400,18 +412,9 @@ struct World::Impl {
             b.xf.p = b.center - rotate(b.xf.q, b.local_center);
             b.force_once = {};
             b.torque_once = 0.0;
-            // The shapes' copies of the pose and the fat box, in the same pass: the common case,
-            // still inside the fat box, needs no tree node.
-            for (std::uint32_t s = b.first_shape; s != null_index; s = shapes[s].next) {
-                Shape& sh = shapes[s];
-                sh.body_xf = b.xf;
-                sh.body_center = b.center;
-                const Aabb tight = compute_aabb(sh.collider, b.xf);
-                if (!contains(sh.fat_box, tight)) {
-                    broad_phase.move_proxy(sh.proxy, tight);
-                    sh.fat_box = broad_phase.fat_aabb(sh.proxy);
-                }
-            }
+            // The shapes' copies, in the same pass.
+            for (std::uint32_t s = b.first_shape; s != null_index; s = shapes[s].next)
+                follow_body(shapes[s], b);
         }
     }
 
@@ -655,12 +658,8 @@ void World::set_transform(BodyId id, Vec2d origin, double angle) {
     b.angle = angle;
     b.xf = {origin, Rot::from_angle(angle)};
     b.center = transform_point(b.xf, b.local_center);
-    impl_->sync_shape_poses(b);
-    for (std::uint32_t s = b.first_shape; s != null_index; s = impl_->shapes[s].next) {
-        Shape& sh = impl_->shapes[s];
-        impl_->broad_phase.move_proxy(sh.proxy, impl_->shape_box(sh));
-        sh.fat_box = impl_->broad_phase.fat_aabb(sh.proxy);
-    }
+    for (std::uint32_t s = b.first_shape; s != null_index; s = impl_->shapes[s].next)
+        impl_->follow_body(impl_->shapes[s], b);
 }
 void World::set_velocity(BodyId id, Vec2d v) {
     Body& b = impl_->body(id);
