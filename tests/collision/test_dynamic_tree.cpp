@@ -61,7 +61,8 @@ template <class Live> std::vector<int> brute_force_ids(const Live& live, const A
 BOOST_AUTO_TEST_SUITE(dynamic_tree)
 
 // Oracle: brute-force O(n^2)-free scan: a query returns exactly the live leaves whose boxes
-// overlap the query box by IM4 (model::im4::overlaps), after random create/move/destroy.
+// overlap the query box by IM4 (model::im4::overlaps), after random create/move/destroy, both
+// with enlarged (loose) ancestors and after rebuilds.
 BOOST_AUTO_TEST_CASE(query_equals_brute_force, *utf::label("IM4")) {
     std::mt19937_64 rng(11);
     DynamicTree tree;
@@ -79,8 +80,10 @@ BOOST_AUTO_TEST_CASE(query_equals_brute_force, *utf::label("IM4")) {
             std::advance(it, std::uniform_int_distribution<int>(0, int(live.size()) - 1)(rng));
             if (o < 8) {
                 const Aabb b = random_box(rng, 30.0);
-                tree.move_proxy(it->first, b);
+                tree.enlarge_proxy(it->first, b);
                 it->second = b;
+                if (o == 7)
+                    tree.rebuild();
             } else {
                 tree.destroy_proxy(it->first);
                 live.erase(it);
@@ -95,14 +98,82 @@ BOOST_AUTO_TEST_CASE(query_equals_brute_force, *utf::label("IM4")) {
                 BOOST_TEST((tree.aabb(id).min_x == b.min_x && tree.aabb(id).max_y == b.max_y));
         }
     }
-    // Balanced: AVL height bound 1.44 log2(n + 2).
-    const double n = double(tree.proxy_count());
-    BOOST_TEST(tree.height() <= 1.45 * std::log2(2.0 * n + 2.0));
+    // The rebuild's guarantee.
+    tree.rebuild();
+    BOOST_TEST_REQUIRE(tree.validate());
+    BOOST_TEST(tree.height() <= tree.height_limit());
 }
 
-// Oracle: the tree's own invariants (parents, heights, AVL balance, every box enclosing its
-// children's: DynamicTree::validate) and a brute-force scan, after many small moves, the case
-// in which a refit stops below the root as soon as a node's box and height come out unchanged.
+// Oracle: AVL height bound 1.44 log2(n + 2) for a tree built by insertions alone.
+BOOST_AUTO_TEST_CASE(insertions_keep_the_tree_balanced, *utf::label("IM4")) {
+    std::mt19937_64 rng(3);
+    DynamicTree tree;
+    for (int i = 0; i < 3000; ++i)
+        tree.create_proxy(random_box(rng, 30.0), static_cast<std::uint32_t>(i));
+    BOOST_TEST_REQUIRE(tree.validate());
+    const double n = double(tree.proxy_count());
+    BOOST_TEST(tree.height() <= 1.45 * std::log2(n + 2.0));
+}
+
+// Oracle: a rebuild with nothing marked changes nothing (a resting scene pays nothing): the
+// height and the area ratio (sum of internal perimeters) stay bit for bit; one enlarged leaf
+// marks its ancestors, and the rebuild clears the marks (validate checks they reach the root).
+BOOST_AUTO_TEST_CASE(rebuild_touches_only_what_moved, *utf::label("IM4")) {
+    std::mt19937_64 rng(8);
+    DynamicTree tree;
+    std::vector<std::pair<int, Aabb>> live;
+    for (int i = 0; i < 300; ++i) {
+        const Aabb b = random_box(rng, 30.0);
+        live.emplace_back(tree.create_proxy(b, static_cast<std::uint32_t>(i)), b);
+    }
+    const int height = tree.height();
+    const double ratio = tree.area_ratio();
+    tree.rebuild();
+    BOOST_TEST(tree.height() == height);
+    BOOST_TEST(tree.area_ratio() == ratio);
+
+    auto& [id, b] = live[17];
+    b = {b.min_x + 40.0, b.min_y, b.max_x + 40.0, b.max_y}; // far outside the root's box
+    tree.enlarge_proxy(id, b);
+    BOOST_TEST_REQUIRE(tree.validate());
+    const Aabb q{69.0, -31.0, 72.0, 31.0};
+    BOOST_TEST(query_ids(tree, q) == brute_force_ids(live, q));
+    tree.rebuild();
+    BOOST_TEST_REQUIRE(tree.validate());
+    BOOST_TEST(query_ids(tree, q) == brute_force_ids(live, q));
+    const Aabb all{-100.0, -100.0, 100.0, 100.0};
+    BOOST_TEST(query_ids(tree, all).size() == live.size());
+}
+
+// Oracle: a median split halves the leaves, so a full rebuild has height ceil(log2 n). Boxes
+// at exponentially spread places defeat the midpoint splits of a partial rebuild (each split
+// peels off one box, height n - 1); the rebuild must catch that and stay within its limit.
+BOOST_AUTO_TEST_CASE(rebuild_bounds_the_height, *utf::label("IM4")) {
+    DynamicTree tree;
+    std::vector<std::pair<int, Aabb>> live;
+    for (int i = 0; i < 48; ++i) {
+        const Aabb b{double(i), 0.0, double(i) + 0.5, 0.5};
+        live.emplace_back(tree.create_proxy(b, static_cast<std::uint32_t>(i)), b);
+    }
+    for (int i = 0; i < 48; ++i) {
+        const double x = std::ldexp(1.0, i); // 1, 2, 4, ... 2^47 (+0.5 still exact)
+        live[std::size_t(i)].second = {x, 0.0, x + 0.5, 0.5};
+        tree.enlarge_proxy(live[std::size_t(i)].first, live[std::size_t(i)].second);
+    }
+    tree.rebuild();
+    BOOST_TEST_REQUIRE(tree.validate());
+    BOOST_TEST(tree.height() <= tree.height_limit());
+    BOOST_TEST(tree.height() <= 6); // ceil(log2 48): the full rebuild's median splits
+    for (int i = 0; i < 48; i += 5) {
+        const double x = std::ldexp(1.0, i);
+        const Aabb q{x + 0.1, 0.1, x + 0.2, 0.2};
+        BOOST_TEST(query_ids(tree, q) == std::vector<int>{live[std::size_t(i)].first});
+    }
+}
+
+// Oracle: the tree's own invariants (parents, heights, every box enclosing its children's,
+// marks closed upwards: DynamicTree::validate) and a brute-force scan, after many small moves
+// (each enlarging its ancestors) with a rebuild every 10, as a step would do.
 BOOST_AUTO_TEST_CASE(small_moves_keep_the_tree_valid, *utf::label("IM4")) {
     std::mt19937_64 rng(23);
     std::uniform_real_distribution<double> jitter(-0.05, 0.05);
@@ -117,7 +188,9 @@ BOOST_AUTO_TEST_CASE(small_moves_keep_the_tree_valid, *utf::label("IM4")) {
         auto& [id, b] = live[pick(rng)];
         const double dx = jitter(rng), dy = jitter(rng);
         b = {b.min_x + dx, b.min_y + dy, b.max_x + dx, b.max_y + dy};
-        tree.move_proxy(id, b);
+        tree.enlarge_proxy(id, b);
+        if (step % 10 == 0)
+            tree.rebuild();
         if (step % 50 == 0) {
             BOOST_TEST_REQUIRE(tree.validate());
             const Aabb q = random_box(rng, 30.0);

@@ -30,13 +30,16 @@ void BroadPhase::destroy_proxy(int proxy) {
 void BroadPhase::move_proxy(int proxy, const Aabb& tight) {
     if (contains(fat_aabb(proxy), tight))
         return;
-    tree(proxy).move_proxy(node(proxy), inflated(tight, margin_));
+    tree(proxy).enlarge_proxy(node(proxy), inflated(tight, margin_));
     mark_moved(proxy);
 }
 
 /// \srs{R7} candidate collisions: pairs whose fat boxes overlap by \srs{IM4}.
 void BroadPhase::update_pairs(std::vector<Pair>& out) {
     const std::size_t first = out.size();
+    // The moved proxies' ancestors were only enlarged: restore the trees' quality first.
+    trees_[0].rebuild();
+    trees_[1].rebuild();
     for (const int p : move_buffer_) {
         if (moved_[p] != 1)
             continue; // destroyed since it moved, or a duplicate entry already handled

@@ -1,7 +1,7 @@
 // Broad phase: which shape pairs might touch. Each shape is a proxy with a fattened box in one
 // of two dynamic AABB trees (static shapes in their own tree, so static-static pairs are never
-// looked for). A proxy is re-inserted only when its tight box leaves the fat one, and only
-// re-inserted ("moved") proxies are queried for new pairs: a resting scene costs nothing here.
+// looked for). A proxy gets a new fat box only when its tight box leaves the old one, and only
+// such ("moved") proxies are queried for new pairs: a resting scene costs nothing here.
 #pragma once
 
 #include <cstdint>
@@ -23,7 +23,8 @@ class BroadPhase {
     /// New proxies count as moved: the next update_pairs finds their pairs.
     int create_proxy(const Aabb& tight, std::uint32_t user, bool is_static = false);
     void destroy_proxy(int proxy);
-    /// Re-inserts (and marks moved) only when `tight` is no longer inside the fat box.
+    /// A new fat box (and marked moved) only when `tight` is no longer inside the fat one; the
+    /// tree is rebuilt around it by the next update_pairs.
     void move_proxy(int proxy, const Aabb& tight);
 
     const Aabb& fat_aabb(int proxy) const { return tree(proxy).aabb(node(proxy)); }

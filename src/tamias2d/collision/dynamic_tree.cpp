@@ -1,6 +1,7 @@
 #include "tamias2d/collision/dynamic_tree.hpp"
 
 #include <algorithm>
+#include <bit>
 
 namespace tamias2d {
 
@@ -28,6 +29,8 @@ int DynamicTree::create_proxy(const Aabb& box, std::uint32_t user) {
     nodes_[id].height = 0;
     insert_leaf(id);
     ++proxy_count_;
+    if (height() > height_limit()) // an insertion into a tree a rebuild left near its limit
+        rebuild_all();
     return id;
 }
 
@@ -37,10 +40,108 @@ void DynamicTree::destroy_proxy(int id) {
     --proxy_count_;
 }
 
-void DynamicTree::move_proxy(int id, const Aabb& box) {
-    remove_leaf(id);
+void DynamicTree::enlarge_proxy(int id, const Aabb& box) {
     nodes_[id].box = box;
-    insert_leaf(id);
+    // Grow the ancestors until one already holds the box, and mark them up to the first one
+    // marked before (its ancestors are marked: the marks are closed upwards).
+    for (int i = nodes_[id].parent; i != null_node; i = nodes_[i].parent) {
+        Node& n = nodes_[i];
+        const bool holds = contains(n.box, box);
+        if (holds && n.enlarged)
+            return;
+        if (!holds)
+            n.box = union_of(n.box, box);
+        n.enlarged = true;
+    }
+}
+
+int DynamicTree::height_limit() const {
+    return 2 * std::bit_width(static_cast<unsigned>(proxy_count_)) + 8;
+}
+
+void DynamicTree::rebuild() {
+    if (root_ == null_node || !nodes_[root_].enlarged)
+        return;
+    // Free the marked nodes; keep what hangs below them. (The walk's stack suffices: every
+    // operation leaves the height within height_limit().)
+    items_.clear();
+    std::array<int, max_stack> stack;
+    int top = 0;
+    stack[top++] = root_;
+    while (top > 0) {
+        const int i = stack[--top];
+        const Node& n = nodes_[i];
+        if (n.leaf() || !n.enlarged) {
+            items_.push_back(item(i));
+            continue;
+        }
+        stack[top++] = n.child1;
+        stack[top++] = n.child2;
+        free_node(i);
+    }
+    // m kept subtrees need the m - 1 nodes just freed: the array does not grow.
+    root_ = build(0, items_.size(), false);
+    nodes_[root_].parent = null_node;
+    // Midpoint splits of stacked partial rebuilds could grow the height without bound; a
+    // full rebuild resets it to ceil(log2 n). The benchmark scenes never need one.
+    if (height() > height_limit())
+        rebuild_all();
+}
+
+void DynamicTree::rebuild_all() {
+    // A scan of the array, not a walk: the tree may be taller than the walks' stack here.
+    items_.clear();
+    for (int i = 0; i < static_cast<int>(nodes_.size()); ++i) {
+        if (nodes_[i].height == 0)
+            items_.push_back(item(i));
+        else if (nodes_[i].height > 0)
+            free_node(i);
+    }
+    if (items_.empty())
+        return;
+    root_ = build(0, items_.size(), true);
+    nodes_[root_].parent = null_node;
+}
+
+// Splits items [begin, end) along the wider axis of their centres' bounds and joins the two
+// halves' trees under a new node. A partial rebuild splits at the bounds' midpoint (one pass;
+// Box2D v3's default), a full one at the median (a guaranteed height of ceil(log2 m)). Median
+// ties go by node id, so the halves do not depend on how nth_element orders equal keys.
+int DynamicTree::build(std::size_t begin, std::size_t end, bool median) {
+    if (end - begin == 1)
+        return items_[begin].node;
+    double lo_x = items_[begin].x, hi_x = lo_x, lo_y = items_[begin].y, hi_y = lo_y;
+    for (std::size_t k = begin + 1; k < end; ++k) {
+        lo_x = std::min(lo_x, items_[k].x);
+        hi_x = std::max(hi_x, items_[k].x);
+        lo_y = std::min(lo_y, items_[k].y);
+        hi_y = std::max(hi_y, items_[k].y);
+    }
+    const bool along_x = hi_x - lo_x >= hi_y - lo_y;
+    const auto first = items_.begin() + static_cast<std::ptrdiff_t>(begin);
+    const auto last = items_.begin() + static_cast<std::ptrdiff_t>(end);
+    auto mid = first;
+    if (!median) {
+        const double cut = along_x ? 0.5 * (lo_x + hi_x) : 0.5 * (lo_y + hi_y);
+        mid = std::partition(first, last,
+                             [along_x, cut](const Item& a) { return (along_x ? a.x : a.y) < cut; });
+    }
+    if (mid == first || mid == last) { // all centres equal along the axis, or a median split
+        mid = first + (last - first) / 2;
+        std::nth_element(first, mid, last, [along_x](const Item& a, const Item& b) {
+            const double ka = along_x ? a.x : a.y, kb = along_x ? b.x : b.y;
+            return ka < kb || (ka == kb && a.node < b.node);
+        });
+    }
+    const std::size_t split = static_cast<std::size_t>(mid - items_.begin());
+    const int c1 = build(begin, split, median);
+    const int c2 = build(split, end, median);
+    const int p = allocate_node();
+    nodes_[p].child1 = c1;
+    nodes_[p].child2 = c2;
+    nodes_[c1].parent = p;
+    nodes_[c2].parent = p;
+    return refit(p);
 }
 
 void DynamicTree::insert_leaf(int leaf) {
@@ -81,6 +182,7 @@ void DynamicTree::insert_leaf(int leaf) {
     nodes_[parent].height = nodes_[sibling].height + 1;
     nodes_[parent].child1 = sibling;
     nodes_[parent].child2 = leaf;
+    nodes_[parent].enlarged = nodes_[sibling].enlarged; // keeps the marks closed upwards
     nodes_[sibling].parent = parent;
     nodes_[leaf].parent = parent;
     if (old_parent == null_node) {
@@ -129,8 +231,8 @@ int DynamicTree::refit(int i) {
 
 void DynamicTree::refit_ancestors(int i) {
     // Rebalance and refit on the way up, and stop at the first node whose box and height come
-    // out as they were: its ancestors enclose the same boxes at the same heights, and the tree
-    // was balanced everywhere, so nothing above would change (Box2D 2.4 walks to the root).
+    // out as they were: its ancestors enclose the same boxes at the same heights, so no box or
+    // rotation above would change (Box2D 2.4 walks to the root).
     while (i != null_node) {
         const Aabb box = nodes_[i].box;
         const int height = nodes_[i].height;
@@ -162,6 +264,7 @@ int DynamicTree::balance(int a) {
     // `up` takes a's place under a's parent.
     nodes_[up].parent = nodes_[a].parent;
     nodes_[a].parent = up;
+    nodes_[up].enlarged = nodes_[up].enlarged || nodes_[a].enlarged; // up is a's parent now
     const int ap = nodes_[up].parent;
     if (ap == null_node) {
         root_ = up;
@@ -201,13 +304,13 @@ int DynamicTree::validate_subtree(int id, int parent) const {
     const Node& n = nodes_[id];
     if (n.parent != parent || n.height < 0)
         return -1;
+    if (n.enlarged && parent != null_node && !nodes_[parent].enlarged)
+        return -1; // a mark the rebuild would not reach
     if (n.leaf())
-        return n.height == 0 && n.child2 == null_node ? 1 : -1;
+        return n.height == 0 && n.child2 == null_node && !n.enlarged ? 1 : -1;
     const Node& c1 = nodes_[n.child1];
     const Node& c2 = nodes_[n.child2];
     if (n.height != 1 + std::max(c1.height, c2.height))
-        return -1;
-    if (std::abs(c1.height - c2.height) > 1)
         return -1;
     if (!contains(n.box, c1.box) || !contains(n.box, c2.box))
         return -1;

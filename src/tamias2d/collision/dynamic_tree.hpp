@@ -1,7 +1,11 @@
 // A dynamic AABB tree: a binary bounding-volume hierarchy over boxes that move. Leaves are
 // inserted where they enlarge the tree's surface least (a greedy surface-area heuristic) and
-// AVL-style rotations keep it balanced, so queries and updates cost O(log n). Nodes live in
-// one array with a free list; queries walk it with a fixed stack and never allocate.
+// AVL-style rotations keep it balanced, so queries and updates cost O(log n). A moved leaf is
+// not re-inserted: its ancestors are only enlarged to hold its new box and marked, and one
+// rebuild per step rebuilds the marked top of the tree over the unmarked subtrees below it
+// (Box2D v3's scheme). A re-insertion walked ~45 scattered nodes, each a cache miss once the
+// tree outgrows the caches; the rebuild partitions a compact array instead. Nodes live in one array
+// with a free list; queries walk it with a fixed stack and never allocate.
 #pragma once
 
 #include <array>
@@ -23,8 +27,13 @@ class DynamicTree {
     /// A leaf holding `box`; returns its id (stable until destroyed, then reused).
     int create_proxy(const Aabb& box, std::uint32_t user);
     void destroy_proxy(int id);
-    /// Replaces a leaf's box (remove and re-insert). The caller decides when it is worth it.
-    void move_proxy(int id, const Aabb& box);
+    /// Replaces a leaf's box. Its ancestors grow to hold the box and are marked for the next
+    /// rebuild(); until then the tree stays correct, only looser.
+    void enlarge_proxy(int id, const Aabb& box);
+    /// Rebuilds the marked nodes (ancestors of enlarged leaves) top-down over the unmarked
+    /// subtrees they hold, splitting at midpoints: O(m log m) for m such subtrees, nothing if
+    /// none is marked. Allocation-free once the scratch has grown to the tree's size.
+    void rebuild();
 
     const Aabb& aabb(int id) const { return nodes_[id].box; }
     std::uint32_t user_data(int id) const { return nodes_[id].user; }
@@ -40,9 +49,13 @@ class DynamicTree {
 
     int proxy_count() const { return proxy_count_; }
     int height() const { return root_ == null_node ? 0 : nodes_[root_].height; }
+    /// The height rebuilds and insertions leave the tree within, far below max_stack: beyond
+    /// it (stacked partial rebuilds, whose midpoint splits do not balance), all is rebuilt.
+    int height_limit() const;
     /// Sum of internal node perimeters over the root's: a quality measure (lower is better).
     double area_ratio() const;
-    /// Checks parent links, heights, enclosure and the free list (tests).
+    /// Checks parent links, heights, enclosure, that marks reach the root, and the free list
+    /// (tests).
     bool validate() const;
 
   private:
@@ -55,7 +68,15 @@ class DynamicTree {
         int child2 = null_node;
         int height = -1; ///< 0 leaf, -1 free
         std::uint32_t user = 0;
+        /// Enlarged since the last rebuild: its box may be loose. Every marked node's parent is
+        /// marked too, so a rebuild finds them all from the root.
+        bool enlarged = false;
         bool leaf() const { return child1 == null_node; }
+    };
+    /// A subtree the rebuild keeps, by its box's centre (a compact copy the splits sort).
+    struct Item {
+        double x, y;
+        int node;
     };
 
     int allocate_node();
@@ -67,11 +88,18 @@ class DynamicTree {
     int refit(int i);
     void refit_ancestors(int i);
     int validate_subtree(int id, int parent) const;
+    void rebuild_all();
+    Item item(int node) const {
+        const Aabb& b = nodes_[node].box;
+        return {0.5 * (b.min_x + b.max_x), 0.5 * (b.min_y + b.max_y), node};
+    }
+    int build(std::size_t begin, std::size_t end, bool median);
 
     std::vector<Node> nodes_;
     int root_ = null_node;
     int free_list_ = null_node;
     int proxy_count_ = 0;
+    std::vector<Item> items_; ///< rebuild scratch
 };
 
 namespace detail {
