@@ -18,6 +18,7 @@
 #include "tamias2d/geometry/mass_properties.hpp"
 #include "tamias2d/geometry/shape_aabb.hpp"
 #include "tamias2d/geometry/shape_queries.hpp"
+#include "tamias2d/memory/large_array.hpp"
 #include "tamias2d/model/dd10_impulse.hpp"
 #include "tamias2d/model/dd13_torque.hpp"
 #include "tamias2d/model/dd15_kinetic_energy.hpp"
@@ -34,14 +35,14 @@ struct World::Impl {
     WorldDef def;
     double time = 0.0;
     double time_error = 0.0; ///< Kahan compensation: n steps of dt read back as n dt
-    std::vector<Body> bodies;
+    LargeArray<Body> bodies;
     std::vector<BodySettings> body_settings; ///< per body, indexed alike
     std::vector<std::uint32_t> free_bodies;
     std::uint32_t loaded_bodies = 0; ///< live bodies with a load function
-    std::vector<Shape> shapes;
+    LargeArray<Shape> shapes;
     std::vector<ShapeDef> shape_defs; ///< per shape, indexed alike: what it was made from
     std::vector<std::uint32_t> free_shapes;
-    std::vector<Contact> contacts;
+    LargeArray<Contact> contacts;
     std::unordered_map<std::uint64_t, std::uint32_t> contact_index;
     BroadPhase broad_phase;
 
@@ -49,7 +50,7 @@ struct World::Impl {
     std::vector<Load> loads;
     std::vector<std::pair<std::uint32_t, std::uint32_t>> new_pairs;
     std::vector<std::uint32_t> doomed;
-    std::vector<SolverBody> solver_bodies;
+    LargeArray<SolverBody> solver_bodies;
     std::vector<Vec2d> accelerations;
     std::vector<double> angular_accelerations;
     std::vector<std::uint32_t> solver_index; ///< per body: its SolverBody (0: static)

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "tamias2d/geometry/aabb.hpp"
+#include "tamias2d/memory/large_array.hpp"
 
 namespace tamias2d {
 
@@ -95,7 +96,7 @@ class DynamicTree {
     }
     int build(std::size_t begin, std::size_t end, bool median);
 
-    std::vector<Node> nodes_;
+    LargeArray<Node> nodes_;
     int root_ = null_node;
     int free_list_ = null_node;
     int proxy_count_ = 0;

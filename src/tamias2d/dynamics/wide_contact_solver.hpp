@@ -12,6 +12,7 @@
 #include "tamias2d/dynamics/contact_solver.hpp"
 #include "tamias2d/dynamics/solver_body.hpp"
 #include "tamias2d/dynamics/wide_contact_constraint.hpp"
+#include "tamias2d/memory/large_array.hpp"
 
 namespace tamias2d {
 
@@ -57,7 +58,7 @@ class WideContactSolver {
   private:
     ConstraintGraph graph_;
     std::vector<GraphEdge> edges_; ///< load's scratch
-    std::vector<WideContactConstraint> packs_;
+    LargeArray<WideContactConstraint> packs_;
 };
 
 } // namespace tamias2d
