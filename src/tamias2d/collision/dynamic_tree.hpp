@@ -3,9 +3,9 @@
 // AVL-style rotations keep it balanced, so queries and updates cost O(log n). A moved leaf is
 // not re-inserted: its ancestors are only enlarged to hold its new box and marked, and one
 // rebuild per step rebuilds the marked top of the tree over the unmarked subtrees below it
-// (Box2D v3's scheme). A re-insertion walked ~45 scattered nodes, each a cache miss once the
-// tree outgrows the caches; the rebuild partitions a compact array instead. Nodes live in one array
-// with a free list; queries walk it with a fixed stack and never allocate.
+// (Box2D v3's scheme). A re-insertion walked about 45 scattered nodes, each a cache miss once
+// the tree outgrows the caches; the rebuild partitions a compact array instead. Nodes live in
+// one array with a free list; queries walk it with a fixed stack and never allocate.
 #pragma once
 
 #include <array>
@@ -74,7 +74,7 @@ class DynamicTree {
         bool enlarged = false;
         bool leaf() const { return child1 == null_node; }
     };
-    /// A subtree the rebuild keeps, by its box's centre (a compact copy the splits sort).
+    /// A subtree the rebuild keeps, by its box's centre (a compact copy the splits partition).
     struct Item {
         double x, y;
         int node;

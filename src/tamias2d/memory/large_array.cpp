@@ -10,7 +10,7 @@ namespace tamias2d::detail {
 
 namespace {
 constexpr std::size_t huge_page = std::size_t(2) << 20;
-constexpr std::size_t large_from = std::size_t(1) << 20; ///< rounding wastes under half a page
+constexpr std::size_t large_from = std::size_t(1) << 20; ///< the rounding wastes under 2 MiB
 
 bool is_large(std::size_t bytes) {
     return bytes >= large_from;

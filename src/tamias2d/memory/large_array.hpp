@@ -1,7 +1,7 @@
 // Storage for the world's large per-step arrays (bodies, shapes, contacts, tree nodes, solver
 // packs). From 1 MiB up, a block is 2 MiB-aligned and asked to be backed by transparent huge
-// pages: at 16k bodies a step walks ~20 MB of such arrays, more than the TLB's 4 KiB pages map,
-// and page walks showed up as a large part of the extra cost per body (docs/performance.md).
+// pages: at 16k bodies a step touches about 18 MB of such arrays, more than the TLB maps in
+// 4 KiB pages, and huge pages made rain_16k 5-12 % faster (docs/performance.md, session 6).
 // Smaller blocks are ordinary. Allocation goes through operator new either way, so allocation
 // counters (the steady-state test) still see every block.
 #pragma once
