@@ -65,6 +65,7 @@ void DynamicTree::rebuild() {
     // Free the marked nodes; keep what hangs below them. (The walk's stack suffices: every
     // operation leaves the height within height_limit().)
     items_.clear();
+    spare_bits_.resize((nodes_.size() + 63) / 64); // grows with the tree only
     std::array<int, max_stack> stack;
     int top = 0;
     stack[top++] = root_;
@@ -77,9 +78,18 @@ void DynamicTree::rebuild() {
         }
         stack[top++] = n.child1;
         stack[top++] = n.child2;
-        free_node(i);
+        spare_bits_[std::size_t(i) >> 6] |= std::uint64_t{1} << (i & 63);
     }
-    // m kept subtrees need the m - 1 nodes just freed: the array does not grow.
+    // m kept subtrees need the m - 1 nodes just freed: the array does not grow. They are
+    // handed out in ascending order (a scan of the bits), so the new nodes lie in memory in
+    // the order a query descends them.
+    spare_.clear();
+    for (std::size_t w = 0; w < spare_bits_.size(); ++w) {
+        for (std::uint64_t bits = spare_bits_[w]; bits != 0; bits &= bits - 1)
+            spare_.push_back(static_cast<int>(w * 64 + std::size_t(std::countr_zero(bits))));
+        spare_bits_[w] = 0;
+    }
+    next_spare_ = 0;
     root_ = build(0, items_.size(), false);
     nodes_[root_].parent = null_node;
     // Midpoint splits of stacked partial rebuilds could grow the height without bound; a
@@ -91,12 +101,14 @@ void DynamicTree::rebuild() {
 void DynamicTree::rebuild_all() {
     // A scan of the array, not a walk: the tree may be taller than the walks' stack here.
     items_.clear();
+    spare_.clear();
     for (int i = 0; i < static_cast<int>(nodes_.size()); ++i) {
         if (nodes_[i].height == 0)
             items_.push_back(item(i));
         else if (nodes_[i].height > 0)
-            free_node(i);
+            spare_.push_back(i);
     }
+    next_spare_ = 0;
     if (items_.empty())
         return;
     root_ = build(0, items_.size(), true);
@@ -134,9 +146,11 @@ int DynamicTree::build(std::size_t begin, std::size_t end, bool median) {
         });
     }
     const std::size_t split = static_cast<std::size_t>(mid - items_.begin());
+    // The parent before its children (pre-order): a query reads them in that order.
+    const int p = spare_[next_spare_++];
+    nodes_[p] = Node{};
     const int c1 = build(begin, split, median);
     const int c2 = build(split, end, median);
-    const int p = allocate_node();
     nodes_[p].child1 = c1;
     nodes_[p].child2 = c2;
     nodes_[c1].parent = p;

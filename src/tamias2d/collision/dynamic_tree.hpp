@@ -101,6 +101,10 @@ class DynamicTree {
     int free_list_ = null_node;
     int proxy_count_ = 0;
     std::vector<Item> items_; ///< rebuild scratch
+    /// Rebuild scratch: the freed nodes (one bit per node, then ascending), reused by build.
+    std::vector<std::uint64_t> spare_bits_;
+    std::vector<int> spare_;
+    std::size_t next_spare_ = 0;
 };
 
 namespace detail {
