@@ -4,7 +4,6 @@
 #include <bit>
 #include <cmath>
 #include <cstring>
-#include <unordered_map>
 
 #include "tamias2d/collision/broad_phase.hpp"
 #include "tamias2d/collision/narrow_phase.hpp"
@@ -19,6 +18,7 @@
 #include "tamias2d/geometry/shape_aabb.hpp"
 #include "tamias2d/geometry/shape_queries.hpp"
 #include "tamias2d/memory/large_array.hpp"
+#include "tamias2d/memory/pair_map.hpp"
 #include "tamias2d/model/dd10_impulse.hpp"
 #include "tamias2d/model/dd13_torque.hpp"
 #include "tamias2d/model/dd15_kinetic_energy.hpp"
@@ -43,7 +43,7 @@ struct World::Impl {
     std::vector<ShapeDef> shape_defs; ///< per shape, indexed alike: what it was made from
     std::vector<std::uint32_t> free_shapes;
     LargeArray<Contact> contacts;
-    std::unordered_map<std::uint64_t, std::uint32_t> contact_index;
+    PairMap contact_index; ///< contact by Contact::key of its shapes
     BroadPhase broad_phase;
 
     // Per-step scratch, kept to avoid allocation in steady state.
@@ -155,7 +155,7 @@ struct World::Impl {
         const std::uint32_t last = std::uint32_t(contacts.size() - 1);
         if (i != last) {
             contacts[i] = contacts[last];
-            contact_index[Contact::key(contacts[i].shape_a, contacts[i].shape_b)] = i;
+            contact_index.assign(Contact::key(contacts[i].shape_a, contacts[i].shape_b), i);
         }
         contacts.pop_back();
     }
@@ -195,7 +195,7 @@ struct World::Impl {
             const Material& mb = shape_defs[sb].material;
             c.friction = std::sqrt(ma.friction * mb.friction);
             c.restitution = std::max(ma.restitution, mb.restitution);
-            contact_index.emplace(key, std::uint32_t(contacts.size()));
+            contact_index.insert(key, std::uint32_t(contacts.size()));
             contacts.push_back(c);
         }
     }
