@@ -33,8 +33,8 @@ struct ManifoldPoint {
 /// unit vector pointing from shape A into shape B (A's outward normal at the contact).
 struct Manifold {
     Vec2d normal{};
+    int count = 0; ///< before the points: a contact whose shapes are apart reads no point
     ManifoldPoint points[2]{};
-    int count = 0;
 };
 
 } // namespace tamias2d

@@ -3,6 +3,7 @@
 // steps for warm starting.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 
 #include "tamias2d/collision/manifold.hpp"
@@ -10,16 +11,18 @@
 
 namespace tamias2d {
 
-/// 256 bytes on a 64-byte boundary: four cache lines (with `touching` last, after the impulses,
-/// it was 264 bytes, five or six lines; now it sits in the padding after the manifold).
+/// 256 bytes on a 64-byte boundary, four cache lines. The first holds all that a contact whose
+/// shapes are apart reads and writes (shapes, bodies, hint, normal, count): half the contacts
+/// of a pile are such, and the narrow phase's sweep over them read all four lines (rain_16k).
+/// Then one point per line, and the impulses.
 struct alignas(64) Contact {
     std::uint32_t shape_a = 0, shape_b = 0; ///< shape_a < shape_b
     std::uint32_t body_a = 0, body_b = 0;   ///< their bodies (a shape never changes body)
     double friction = 0.0;                  ///< combined once: materials are fixed at creation
     double restitution = 0.0;
-    Manifold manifold{};
     SeparationHint hint{}; ///< narrow-phase shortcut for pairs that stay apart
     bool touching = false;
+    Manifold manifold{};
     double normal_impulse[2] = {0.0, 0.0}; ///< N s, accumulated (warm start)
     double tangent_impulse[2] = {0.0, 0.0};
     double total_normal_impulse[2] = {0.0, 0.0}; ///< N s, applied over the last step
@@ -31,5 +34,7 @@ struct alignas(64) Contact {
 };
 
 static_assert(sizeof(Contact) == 256);
+static_assert(offsetof(Contact, manifold) + offsetof(Manifold, points) == 64,
+              "the first line ends with the manifold's count, the points start the second");
 
 } // namespace tamias2d
