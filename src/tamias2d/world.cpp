@@ -423,7 +423,27 @@ struct World::Impl {
                 c.total_normal_impulse[j] = b.points[j].total_normal_impulse;
         }
 
-        for (std::uint32_t i = 0; i < bodies.size(); ++i) {
+        // Bodies and shapes are swept in order, but the sweep reads four lines of each shape
+        // at a 384-byte stride beside the bodies', which the hardware prefetcher does not keep
+        // ahead of at 16k boxes: ask for the bodies 16 ahead and their first shapes 8 ahead.
+        constexpr std::uint32_t body_ahead = 16, shape_ahead = 8;
+        const auto body_count = std::uint32_t(bodies.size());
+        for (std::uint32_t i = 0; i < body_count; ++i) {
+            if (i + body_ahead < body_count) {
+                const char* p = reinterpret_cast<const char*>(&bodies[i + body_ahead]);
+                __builtin_prefetch(p);
+                __builtin_prefetch(p + sizeof(Body) - 1);
+            }
+            if (i + shape_ahead < body_count) {
+                const std::uint32_t s = bodies[i + shape_ahead].first_shape;
+                if (s != null_index) {
+                    const Shape& sh = shapes[s];
+                    __builtin_prefetch(&sh.fat_box);
+                    __builtin_prefetch(&sh.body_xf);
+                    __builtin_prefetch(&sh.collider.pairs[0]);
+                    __builtin_prefetch(&sh.collider.pairs[1]);
+                }
+            }
             Body& b = bodies[i];
             if (!b.alive || b.type == BodyType::static_body)
                 continue;
