@@ -37,6 +37,9 @@ struct World::Impl {
     double time_error = 0.0; ///< Kahan compensation: n steps of dt read back as n dt
     LargeArray<Body> bodies;
     std::vector<BodySettings> body_settings; ///< per body, indexed alike
+    /// Per body, indexed alike: its handles' generation (only handle checks read it, so it is
+    /// kept out of Body, which a step streams three times).
+    std::vector<std::uint32_t> body_generation;
     std::vector<std::uint32_t> free_bodies;
     std::uint32_t loaded_bodies = 0; ///< live bodies with a load function
     LargeArray<Shape> shapes;
@@ -79,7 +82,7 @@ struct World::Impl {
 
     Body& body(BodyId id) {
         if (id.index >= bodies.size() || !bodies[id.index].alive ||
-            bodies[id.index].generation != id.generation) {
+            body_generation[id.index] != id.generation) {
             throw InvalidHandle("stale or unknown BodyId " + std::to_string(id.index) + ":" +
                                 std::to_string(id.generation));
         }
@@ -96,7 +99,7 @@ struct World::Impl {
         return shapes[id.index];
     }
 
-    BodyId body_id(std::uint32_t i) const { return {i, bodies[i].generation}; }
+    BodyId body_id(std::uint32_t i) const { return {i, body_generation[i]}; }
     ShapeId shape_id(std::uint32_t i) const { return {i, shapes[i].generation}; }
 
     Aabb shape_box(const Shape& s) const { return compute_aabb(s.collider, bodies[s.body].xf); }
@@ -431,8 +434,8 @@ struct World::Impl {
         for (std::uint32_t i = 0; i < body_count; ++i) {
             if (i + body_ahead < body_count) {
                 const char* p = reinterpret_cast<const char*>(&bodies[i + body_ahead]);
-                __builtin_prefetch(p);
-                __builtin_prefetch(p + sizeof(Body) - 1);
+                for (std::size_t line = 0; line < sizeof(Body); line += 64)
+                    __builtin_prefetch(p + line);
             }
             if (i + shape_ahead < body_count) {
                 const std::uint32_t s = bodies[i + shape_ahead].first_shape;
@@ -502,11 +505,11 @@ BodyId World::create_body(const BodyDef& def) {
         i = std::uint32_t(w.bodies.size());
         w.bodies.emplace_back();
         w.body_settings.emplace_back();
+        w.body_generation.push_back(0);
     }
     Body& b = w.bodies[i];
-    const std::uint32_t generation = b.generation + 1;
+    const std::uint32_t generation = ++w.body_generation[i];
     b = Body{};
-    b.generation = generation;
     b.alive = true;
     b.type = def.type;
     b.angle = def.angle;
@@ -586,7 +589,7 @@ void World::destroy_shape(ShapeId id) {
 
 bool World::is_valid(BodyId id) const {
     return id.index < impl_->bodies.size() && impl_->bodies[id.index].alive &&
-           impl_->bodies[id.index].generation == id.generation;
+           impl_->body_generation[id.index] == id.generation;
 }
 bool World::is_valid(ShapeId id) const {
     return id.index < impl_->shapes.size() && impl_->shapes[id.index].alive() &&
@@ -893,7 +896,8 @@ std::uint64_t World::state_hash() const {
     for (std::uint32_t i = 0; i < w.bodies.size(); ++i) {
         const Body& b = w.bodies[i];
         const BodySettings& set = w.body_settings[i];
-        hs(std::uint64_t(b.generation) << 8 | std::uint64_t(b.alive) << 4 | std::uint64_t(b.type));
+        hs(std::uint64_t(w.body_generation[i]) << 8 | std::uint64_t(b.alive) << 4 |
+           std::uint64_t(b.type));
         if (!b.alive)
             continue;
         hs(b.xf.p);
