@@ -194,4 +194,43 @@ BOOST_AUTO_TEST_CASE(collider_box_is_the_geometry_box, *utf::label("IM4") * utf:
     }
 }
 
+// Oracle: the geometry's own world box (compute_aabb on the Geometry, vertex by vertex) and
+// the containment of IM4's boxes. The header-only bound may say "not sure" but never "inside"
+// wrongly: boxes around the tight one, each side moved by up to 2 % of the size either way
+// (exactly tight included), at random poses up to 1000 m out.
+BOOST_AUTO_TEST_CASE(surely_inside_never_errs, *utf::label("IM4")) {
+    std::mt19937_64 rng(47);
+    std::uniform_real_distribution<double> shift(-0.02, 0.02);
+    int claimed = 0;
+    for (int i = 0; i < 40000; ++i) {
+        const Geometry g = oracle::random_shape(rng);
+        const Transform xf = oracle::random_transform(rng, 1000.0);
+        const Aabb tight = compute_aabb(g, xf);
+        const double size = std::max(tight.max_x - tight.min_x, tight.max_y - tight.min_y);
+        Aabb box = tight;
+        if (i % 4 != 0) { // every fourth: exactly tight
+            box.min_x += size * shift(rng);
+            box.min_y += size * shift(rng);
+            box.max_x += size * shift(rng);
+            box.max_y += size * shift(rng);
+        }
+        const bool sure = surely_inside(make_collider(g), xf, box);
+        claimed += sure ? 1 : 0;
+        BOOST_TEST_REQUIRE((!sure || contains(box, tight)));
+    }
+    BOOST_TEST(claimed > 0);
+}
+
+// Oracle: the bound's construction: an unrotated box's bound is the box itself (plus a slack
+// of 1e-9 of the coordinates), so a fat box 0.1 m wider on each side, the broad phase's margin,
+// is decided without the vertices at 1000 m out.
+BOOST_AUTO_TEST_CASE(surely_inside_decides_the_resting_case, *utf::label("IM4")) {
+    const Collider box = make_collider(make_box(0.25, 0.25));
+    for (const double x : {0.0, 1.5, -999.0, 1000.0}) {
+        const Transform xf{{x, 0.25}, Rot::from_angle(0.0)};
+        BOOST_TEST(surely_inside(box, xf, inflated(compute_aabb(box, xf), 0.1)));
+        BOOST_TEST(!surely_inside(box, xf, inflated(compute_aabb(box, xf), -0.01)));
+    }
+}
+
 BOOST_AUTO_TEST_SUITE_END()

@@ -25,7 +25,11 @@ struct alignas(16) Collider {
     /// values, never read as a vertex).
     VertexPair pairs[max_vertex_pairs]{};
     ShapeType type = ShapeType::circle;
-    int count = 0;       ///< polygon vertices (0 for a circle)
+    std::uint8_t count = 0; ///< polygon vertices (0 for a circle)
+    /// The polygon's largest |x| and |y| of a vertex from the centroid (body frame), as
+    /// fractions of `radius` in 65535ths, rounded up: a bound of its world box that reads no
+    /// vertex line (surely_inside).
+    std::uint16_t extent[2]{};
     double radius = 0.0; ///< m: the circle's radius, or the polygon's largest vertex distance
                          ///< from its centroid (its size, for relative tolerances)
     Vec2d center{};      ///< m: the circle's centre or the polygon's centroid
@@ -41,5 +45,10 @@ Collider make_collider(const Geometry& g);
 /// \srs{IM4} The shape's tight world-frame box, equal bit for bit to compute_aabb of the
 /// geometry it was made from (the same loop), read from the collider's lines.
 Aabb compute_aabb(const Collider& k, const Transform& xf);
+
+/// True only if compute_aabb(k, xf) surely lies inside `box`, decided from the collider's header
+/// (no vertex line is read): a resting or slowly moving shape's test against its fat box. False
+/// decides nothing.
+bool surely_inside(const Collider& k, const Transform& xf, const Aabb& box);
 
 } // namespace tamias2d
