@@ -57,6 +57,8 @@ struct World::Impl {
     std::vector<EdgeInput> edge_inputs;
     PairMap contact_index; ///< contact by Contact::key of its shapes
     BroadPhase broad_phase;
+    /// The proxies follow_body moved, for one BroadPhase::move_proxies call (apply_moves).
+    std::vector<BroadPhase::ProxyMove> proxy_moves;
 
     // Per-step scratch, kept to avoid allocation in steady state.
     std::vector<Load> loads;
@@ -122,9 +124,14 @@ struct World::Impl {
             return; // decided without the vertex lines
         const Aabb tight = compute_aabb(sh.collider, b.xf);
         if (!contains(sh.fat_box, tight)) {
-            broad_phase.move_proxy(sh.proxy, tight);
-            sh.fat_box = broad_phase.fat_aabb(sh.proxy);
+            sh.fat_box = broad_phase.fattened(tight);
+            proxy_moves.push_back({sh.proxy, sh.fat_box});
         }
+    }
+
+    void apply_moves() {
+        broad_phase.move_proxies(proxy_moves);
+        proxy_moves.clear();
     }
 
     /// Mass, centre of mass and inertia from the shapes (DD1, DD14) or the overrides.
@@ -464,6 +471,7 @@ struct World::Impl {
             for (std::uint32_t s = b.first_shape; s != null_index; s = shapes[s].next)
                 follow_body(shapes[s], b);
         }
+        apply_moves();
     }
 
     void build_infos() {
@@ -708,6 +716,7 @@ void World::set_transform(BodyId id, Vec2d origin, double angle) {
     b.center = transform_point(b.xf, b.local_center);
     for (std::uint32_t s = b.first_shape; s != null_index; s = impl_->shapes[s].next)
         impl_->follow_body(impl_->shapes[s], b);
+    impl_->apply_moves();
 }
 void World::set_velocity(BodyId id, Vec2d v) {
     Body& b = impl_->body(id);

@@ -229,6 +229,48 @@ BOOST_AUTO_TEST_CASE(scene_collisions_equal_brute_force, *utf::label("R7")) {
     BOOST_TEST(total_contacts > 100);
 }
 
+// Oracle: move_proxy itself. Batched moves (move_proxies, as the world's write-back makes them)
+// leave the same fat boxes and report the same pairs as one move_proxy call per proxy.
+BOOST_AUTO_TEST_CASE(batched_moves_equal_single_moves, *utf::label("IM4") * utf::label("R7")) {
+    std::mt19937_64 rng(29);
+    BroadPhase one(margin), many(margin);
+    std::vector<int> ids;
+    std::vector<Aabb> tight;
+    for (std::uint32_t i = 0; i < 400; ++i) {
+        tight.push_back(random_box(rng, 20.0));
+        const int a = one.create_proxy(tight.back(), i, i % 9 == 0);
+        BOOST_TEST_REQUIRE(many.create_proxy(tight.back(), i, i % 9 == 0) == a);
+        ids.push_back(a);
+    }
+    std::uniform_real_distribution<double> d(-0.5, 0.5);
+    std::vector<BroadPhase::ProxyMove> moves;
+    int moved = 0;
+    for (int round = 0; round < 30; ++round) {
+        moves.clear();
+        for (std::size_t i = 0; i < ids.size(); ++i) {
+            if (one.is_static(ids[i]))
+                continue;
+            tight[i] = shifted(tight[i], 0.6 * d(rng), 0.6 * d(rng));
+            one.move_proxy(ids[i], tight[i]);
+            if (!contains(many.fat_aabb(ids[i]), tight[i]))
+                moves.push_back({ids[i], many.fattened(tight[i])});
+        }
+        moved += int(moves.size());
+        many.move_proxies(moves);
+        for (const int id : ids) {
+            const Aabb a = one.fat_aabb(id), b = many.fat_aabb(id);
+            BOOST_TEST_REQUIRE((a.min_x == b.min_x && a.min_y == b.min_y && a.max_x == b.max_x &&
+                                a.max_y == b.max_y));
+        }
+        Pairs p1, p2;
+        one.update_pairs(p1);
+        many.update_pairs(p2);
+        BOOST_TEST_REQUIRE((p1 == p2));
+    }
+    BOOST_TEST(moved > 1000);
+    BOOST_TEST(many.dynamic_tree().validate());
+}
+
 // Oracle: heap allocation counter (replaced global operator new): once warmed up, moving
 // proxies, update_pairs and queries allocate nothing.
 BOOST_AUTO_TEST_CASE(steady_state_allocation_free, *utf::label("NFR1")) {

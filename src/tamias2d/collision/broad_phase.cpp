@@ -30,8 +30,27 @@ void BroadPhase::destroy_proxy(int proxy) {
 void BroadPhase::move_proxy(int proxy, const Aabb& tight) {
     if (contains(fat_aabb(proxy), tight))
         return;
-    tree(proxy).enlarge_proxy(node(proxy), inflated(tight, margin_));
+    tree(proxy).enlarge_proxy(node(proxy), fattened(tight));
     mark_moved(proxy);
+}
+
+void BroadPhase::move_proxies(std::span<const ProxyMove> moves) {
+    // The leaf eight moves ahead, its parent four ahead (the leaf has arrived by then); the
+    // ancestors above are mostly shared with the neighbours just enlarged.
+    constexpr std::size_t leaf_ahead = 8, parent_ahead = 4;
+    for (std::size_t i = 0; i < moves.size(); ++i) {
+        if (i + leaf_ahead < moves.size()) {
+            const int p = moves[i + leaf_ahead].proxy;
+            tree(p).prefetch_node(node(p));
+        }
+        if (i + parent_ahead < moves.size()) {
+            const int p = moves[i + parent_ahead].proxy;
+            tree(p).prefetch_parent(node(p));
+        }
+        const ProxyMove& m = moves[i];
+        tree(m.proxy).enlarge_proxy(node(m.proxy), m.fat);
+        mark_moved(m.proxy);
+    }
 }
 
 /// \srs{R7} candidate collisions: pairs whose fat boxes overlap by \srs{IM4}.

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -26,6 +27,18 @@ class BroadPhase {
     /// A new fat box (and marked moved) only when `tight` is no longer inside the fat one; the
     /// tree is rebuilt around it by the next update_pairs.
     void move_proxy(int proxy, const Aabb& tight);
+
+    /// A proxy's new fat box, for a tight box that left its old one.
+    struct ProxyMove {
+        int proxy;
+        Aabb fat; ///< fattened(tight)
+    };
+    /// The fat box move_proxy gives a proxy whose tight box left its old one.
+    Aabb fattened(const Aabb& tight) const { return inflated(tight, margin_); }
+    /// move_proxy for many proxies whose tight boxes left their fat boxes, in order, with the
+    /// tree nodes asked for ahead: the world's write-back gathers its moves into one call, as
+    /// each enlargement walks scattered nodes (rain_16k).
+    void move_proxies(std::span<const ProxyMove> moves);
 
     const Aabb& fat_aabb(int proxy) const { return tree(proxy).aabb(node(proxy)); }
     std::uint32_t user_data(int proxy) const { return tree(proxy).user_data(node(proxy)); }

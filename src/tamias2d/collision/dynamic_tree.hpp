@@ -35,6 +35,13 @@ class DynamicTree {
     /// subtrees they hold, splitting at midpoints: O(m log m) for m such subtrees, nothing if
     /// none is marked. Allocation-free once the scratch has grown to the tree's size.
     void rebuild();
+    /// Cache hints for a coming enlarge_proxy(id): the leaf's node, the parent's.
+    void prefetch_node(int id) const { __builtin_prefetch(&nodes_[id]); }
+    void prefetch_parent(int id) const {
+        const int p = nodes_[id].parent;
+        if (p != null_node)
+            __builtin_prefetch(&nodes_[p]);
+    }
 
     const Aabb& aabb(int id) const { return nodes_[id].box; }
     std::uint32_t user_data(int id) const { return nodes_[id].user; }
