@@ -317,9 +317,10 @@ struct World::Impl {
         }
     }
 
-    void solve(double dt) {
-        const int n = def.substeps;
-        const double h = dt / n;
+    /// The solver bodies and their accelerations (IM1, IM2's loads), before the narrow phase:
+    /// then the contacts it has just swept are still in cache when the lane filling gathers
+    /// them, with no pass over the bodies in between.
+    void prepare_bodies() {
         // Solver body 0 is the shared immovable body standing in for every static body.
         solver_bodies.assign(1, SolverBody{});
         solver_index.resize(bodies.size());
@@ -345,7 +346,11 @@ struct World::Impl {
             accelerations.push_back(a);
             angular_accelerations.push_back(alpha);
         }
+    }
 
+    void solve(double dt) {
+        const int n = def.substeps;
+        const double h = dt / n;
         // The touching manifolds in creation order, as the colouring sees them; those that can
         // bounce get a slot for the restitution pass's copy, also in creation order.
         edges.clear();
@@ -647,6 +652,7 @@ void World::step(double dt) {
     w.begin_events.clear();
     w.end_events.clear();
     w.find_new_contacts();
+    w.prepare_bodies();
     w.update_contacts();
     w.solve(dt);
     // Compensated sum, so that a load switching at t = n dt is seen at step n, not n + 1.
