@@ -317,9 +317,9 @@ struct World::Impl {
         }
     }
 
-    /// The solver bodies and their accelerations (IM1, IM2's loads), before the narrow phase:
-    /// then the contacts it has just swept are still in cache when the lane filling gathers
-    /// them, with no pass over the bodies in between.
+    /// The solver bodies and their accelerations (IM1, IM2's loads). Built before the narrow
+    /// phase, not after it: a pass over every body between the narrow phase's sweep of the
+    /// contacts and the lane filling's gather of them pushed them out of the cache (rain_16k).
     void prepare_bodies() {
         // Solver body 0 is the shared immovable body standing in for every static body.
         solver_bodies.assign(1, SolverBody{});
