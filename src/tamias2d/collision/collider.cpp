@@ -53,8 +53,8 @@ Aabb compute_aabb(const Collider& k, const Transform& xf) {
 }
 
 bool surely_inside(const Collider& k, const Transform& xf, const Aabb& box) {
-    if (k.type == ShapeType::circle) // its box comes from the header anyway: exact
-        return contains(box, compute_aabb(k, xf));
+    if (k.type == ShapeType::circle) // its exact box reads only the header: the caller's test
+        return false;
     // Each vertex is the centroid plus u with |u.x| <= hx and |u.y| <= hy, so once rotated its
     // offset is within |c| hx + |s| hy along x and |s| hx + |c| hy along y.
     constexpr double unit = 1.0 / 65535.0;

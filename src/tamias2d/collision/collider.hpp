@@ -47,8 +47,8 @@ Collider make_collider(const Geometry& g);
 Aabb compute_aabb(const Collider& k, const Transform& xf);
 
 /// True only if compute_aabb(k, xf) surely lies inside `box`, decided from the collider's header
-/// (no vertex line is read): a resting or slowly moving shape's test against its fat box. False
-/// decides nothing.
+/// (no vertex line is read): a resting or slowly moving polygon's test against its fat box.
+/// False decides nothing; a circle always gets false (its exact box reads only the header).
 bool surely_inside(const Collider& k, const Transform& xf, const Aabb& box);
 
 } // namespace tamias2d
