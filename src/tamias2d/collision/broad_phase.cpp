@@ -30,8 +30,8 @@ void BroadPhase::destroy_proxy(int proxy) {
 void BroadPhase::move_proxy(int proxy, const Aabb& tight) {
     if (contains(fat_aabb(proxy), tight))
         return;
-    tree(proxy).enlarge_proxy(node(proxy), fattened(tight));
-    mark_moved(proxy);
+    const ProxyMove move{proxy, fattened(tight)};
+    move_proxies({&move, 1});
 }
 
 void BroadPhase::move_proxies(std::span<const ProxyMove> moves) {
