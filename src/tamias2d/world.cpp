@@ -199,12 +199,18 @@ struct World::Impl {
     void find_new_contacts() {
         new_pairs.clear();
         broad_phase.update_pairs(new_pairs);
-        for (auto [ua, ub] : new_pairs) {
+        // Most pairs the broad phase reports are contacts already (rain_16k: 78 %), so the
+        // index is asked first, its slots eight pairs ahead: one line per pair, where the
+        // filter's shapes and bodies are four scattered lines.
+        constexpr std::size_t ahead = 8;
+        for (std::size_t i = 0; i < new_pairs.size(); ++i) {
+            if (i + ahead < new_pairs.size())
+                contact_index.prefetch(
+                    Contact::key(new_pairs[i + ahead].first, new_pairs[i + ahead].second));
+            const auto [ua, ub] = new_pairs[i];
             const std::uint32_t sa = std::min(ua, ub), sb = std::max(ua, ub);
-            if (!should_collide(sa, sb))
-                continue;
             const std::uint64_t key = Contact::key(sa, sb);
-            if (contact_index.contains(key))
+            if (contact_index.contains(key) || !should_collide(sa, sb))
                 continue;
             Contact c;
             c.shape_a = sa;

@@ -22,6 +22,11 @@ class PairMap {
     /// The value stored for `key`, or npos.
     std::uint32_t find(std::uint64_t key) const;
     bool contains(std::uint64_t key) const { return find(key) != npos; }
+    /// A cache hint for a coming lookup of `key`: its home slot.
+    void prefetch(std::uint64_t key) const {
+        if (!slots_.empty())
+            __builtin_prefetch(&slots_[home(key)]);
+    }
     /// Adds `key` (absent; not empty_key) with `value`.
     void insert(std::uint64_t key, std::uint32_t value);
     /// Replaces the value of `key` (present).
