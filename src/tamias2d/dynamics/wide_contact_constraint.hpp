@@ -40,8 +40,9 @@ struct alignas(wide_alignment) WideContactConstraint {
 };
 
 /// What preparation needs of four manifolds, one per lane: filled lane by lane from the contacts,
-/// then prepared into a pack four lanes at a time (WideContactSolver::prepare_pack). Start from
-/// zeros: a point past a lane's count, and an empty lane, stay zero.
+/// then prepared into a pack four lanes at a time (WideContactSolver::prepare_pack). A point past
+/// a lane's count, and an empty lane, are zeros (set_input_lane and clear_input_lane write every
+/// field of a lane, so one input serves pack after pack).
 struct alignas(wide_alignment) WideManifoldInput {
     units::Vec2<Wide> normal{};
     Wide friction{};

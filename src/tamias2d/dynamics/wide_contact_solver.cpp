@@ -71,6 +71,20 @@ TAMIAS_WIDE_KERNEL void prepare_lanes(WideContactConstraint& w, const WideManifo
 
 } // namespace
 
+namespace {
+/// Point j of lane l: anchors, separation and warm-start impulses.
+void set_input_point(WideManifoldInput& in, int l, int j, Vec2d r_a, Vec2d r_b, double separation,
+                     double normal_impulse, double tangent_impulse) {
+    in.r_a[j].x[l] = r_a.x;
+    in.r_a[j].y[l] = r_a.y;
+    in.r_b[j].x[l] = r_b.x;
+    in.r_b[j].y[l] = r_b.y;
+    in.separation[j][l] = separation;
+    in.normal_impulse[j][l] = normal_impulse;
+    in.tangent_impulse[j][l] = tangent_impulse;
+}
+} // namespace
+
 void set_input_lane(WideManifoldInput& in, int l, const ContactConstraint& c, std::uint32_t slot) {
     in.body_a[l] = c.body_a;
     in.body_b[l] = c.body_b;
@@ -80,16 +94,23 @@ void set_input_lane(WideManifoldInput& in, int l, const ContactConstraint& c, st
     in.normal.x[l] = c.normal.x;
     in.normal.y[l] = c.normal.y;
     in.friction[l] = c.friction;
-    for (int j = 0; j < c.count; ++j) {
-        const ContactConstraintPoint& p = c.points[j];
-        in.r_a[j].x[l] = p.r_a.x;
-        in.r_a[j].y[l] = p.r_a.y;
-        in.r_b[j].x[l] = p.r_b.x;
-        in.r_b[j].y[l] = p.r_b.y;
-        in.separation[j][l] = p.base_separation;
-        in.normal_impulse[j][l] = p.normal_impulse;
-        in.tangent_impulse[j][l] = p.tangent_impulse;
+    for (int j = 0; j < 2; ++j) {
+        if (j < c.count) {
+            const ContactConstraintPoint& p = c.points[j];
+            set_input_point(in, l, j, p.r_a, p.r_b, p.base_separation, p.normal_impulse,
+                            p.tangent_impulse);
+        } else {
+            set_input_point(in, l, j, {}, {}, 0.0, 0.0, 0.0); // solving it changes nothing
+        }
     }
+}
+
+void clear_input_lane(WideManifoldInput& in, int l) {
+    in.body_a[l] = in.body_b[l] = in.contact[l] = in.restitution_slot[l] = 0;
+    in.count[l] = 0;
+    in.normal.x[l] = in.normal.y[l] = in.friction[l] = 0.0;
+    for (int j = 0; j < 2; ++j)
+        set_input_point(in, l, j, {}, {}, 0.0, 0.0, 0.0);
 }
 
 void WideContactSolver::colour(std::span<const GraphEdge> edges, std::size_t body_count) {
@@ -117,8 +138,9 @@ void WideContactSolver::load(std::span<const ContactConstraint> constraints,
         for (int l = 0; l < wide_lanes; ++l) {
             const std::uint32_t k = lanes[i][l];
             if (k == ConstraintGraph::no_constraint)
-                continue;
-            set_input_lane(in, l, constraints[k], no_slot);
+                clear_input_lane(in, l);
+            else
+                set_input_lane(in, l, constraints[k], no_slot);
         }
         prepare_pack(i, in, bodies);
     }

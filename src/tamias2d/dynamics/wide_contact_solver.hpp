@@ -18,7 +18,11 @@ namespace tamias2d {
 
 /// Lane l of a pack's input from a constraint's unprepared fields (bodies, contact, normal,
 /// friction, count, anchors, separations, warm-start impulses); `slot` as in prepare_pack.
+/// Every field of the lane is written (a point past the count gets zeros), so an input may be
+/// reused pack after pack without being cleared: each lane is either set or cleared.
 void set_input_lane(WideManifoldInput& in, int l, const ContactConstraint& c, std::uint32_t slot);
+/// Lane l as an empty lane: all zeros, naming the static body 0.
+void clear_input_lane(WideManifoldInput& in, int l);
 
 class WideContactSolver {
   public:
