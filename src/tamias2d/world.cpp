@@ -55,6 +55,9 @@ struct World::Impl {
         bool touching, bounces;
     };
     std::vector<EdgeInput> edge_inputs;
+    /// Per contact, indexed alike: the accumulated impulses (warm start) and the last step's
+    /// totals (contact report).
+    LargeArray<ContactImpulses> warm_impulses, total_impulses;
     PairMap contact_index; ///< contact by Contact::key of its shapes
     BroadPhase broad_phase;
     /// The proxies follow_body moved, for one BroadPhase::move_proxies call (apply_moves).
@@ -176,9 +179,13 @@ struct World::Impl {
         const std::uint32_t last = std::uint32_t(contacts.size() - 1);
         if (i != last) {
             contacts[i] = contacts[last];
+            warm_impulses[i] = warm_impulses[last];
+            total_impulses[i] = total_impulses[last];
             contact_index.assign(Contact::key(contacts[i].shape_a, contacts[i].shape_b), i);
         }
         contacts.pop_back();
+        warm_impulses.pop_back();
+        total_impulses.pop_back();
     }
 
     void destroy_contacts_of_shape(std::uint32_t s) {
@@ -224,6 +231,8 @@ struct World::Impl {
             c.restitution = std::max(ma.restitution, mb.restitution);
             contact_index.insert(key, std::uint32_t(contacts.size()));
             contacts.push_back(c);
+            warm_impulses.emplace_back();
+            total_impulses.emplace_back();
         }
     }
 
@@ -256,12 +265,13 @@ struct World::Impl {
             // rewritten in place (building a new one and copying it in cost a fifth of this loop).
             // Only the points in use are read: a pair that stays apart reads the first line only.
             const int old_count = c.manifold.count;
+            ContactImpulses& warm = warm_impulses[i];
             std::uint32_t old_id[2] = {};
             double old_n[2] = {}, old_t[2] = {};
             for (int k = 0; k < old_count; ++k) {
                 old_id[k] = c.manifold.points[k].id.key();
-                old_n[k] = c.normal_impulse[k];
-                old_t[k] = c.tangent_impulse[k];
+                old_n[k] = warm.normal[k];
+                old_t[k] = warm.tangent[k];
             }
             collide(sa.collider, sb.collider, in, c.manifold, &c.hint);
             // Warm starting: a point keeps its impulses when the same features touch again.
@@ -274,8 +284,8 @@ struct World::Impl {
                         tangent = old_t[k];
                     }
                 }
-                c.normal_impulse[j] = normal;
-                c.tangent_impulse[j] = tangent;
+                warm.normal[j] = normal;
+                warm.tangent[j] = tangent;
             }
             const bool was = c.touching;
             c.touching = c.manifold.count > 0;
@@ -305,6 +315,7 @@ struct World::Impl {
     void unprepared_constraint(ContactConstraint& cc, const GraphEdge& edge,
                                std::uint32_t contact) const {
         const Contact& c = contacts[contact];
+        const ContactImpulses& warm = warm_impulses[contact];
         cc.body_a = edge.body_a;
         cc.body_b = edge.body_b;
         cc.contact = contact;
@@ -318,8 +329,8 @@ struct World::Impl {
             cp.r_a = mp.anchor_a;
             cp.r_b = mp.anchor_b;
             cp.base_separation = mp.separation;
-            cp.normal_impulse = c.normal_impulse[j];
-            cp.tangent_impulse = c.tangent_impulse[j];
+            cp.normal_impulse = warm.normal[j];
+            cp.tangent_impulse = warm.tangent[j];
         }
     }
 
@@ -395,6 +406,7 @@ struct World::Impl {
                     const char* c = reinterpret_cast<const char*>(&contacts[edge_contact[k]]);
                     for (std::size_t line = 0; line < sizeof(Contact); line += 64)
                         __builtin_prefetch(c + line);
+                    __builtin_prefetch(&warm_impulses[edge_contact[k]]);
                 }
             }
             for (int l = 0; l < wide_lanes; ++l) {
@@ -441,13 +453,12 @@ struct World::Impl {
             wide_solver.solve(solver_bodies, st, false);
         }
         const std::span<ContactConstraint> bouncers(bouncing.data(), bounce_count);
-        wide_solver.store(contacts, bouncers);
+        wide_solver.store(warm_impulses, total_impulses, bouncers);
         // \srs{R8} Post-collision velocities (and, integrated, positions) of colliding bodies.
         apply_restitution(bouncers, solver_bodies, st);
         for (const ContactConstraint& b : bouncers) {
-            Contact& c = contacts[b.contact];
             for (int j = 0; j < b.count; ++j)
-                c.total_normal_impulse[j] = b.points[j].total_normal_impulse;
+                total_impulses[b.contact].normal[j] = b.points[j].total_normal_impulse;
         }
 
         // Bodies and shapes are swept in order, but the sweep reads two lines of each shape
@@ -491,9 +502,11 @@ struct World::Impl {
 
     void build_infos() {
         infos.clear();
-        for (const Contact& c : contacts) {
+        for (std::size_t i = 0; i < contacts.size(); ++i) {
+            const Contact& c = contacts[i];
             if (!c.touching)
                 continue;
+            const ContactImpulses& total = total_impulses[i];
             ContactInfo ci;
             ci.shape_a = shape_id(c.shape_a);
             ci.shape_b = shape_id(c.shape_b);
@@ -503,7 +516,7 @@ struct World::Impl {
             ci.point_count = c.manifold.count;
             for (int j = 0; j < c.manifold.count; ++j) {
                 ci.points[j] = {c.manifold.points[j].point, c.manifold.points[j].separation,
-                                c.total_normal_impulse[j], c.total_tangent_impulse[j]};
+                                total.normal[j], total.tangent[j]};
             }
             infos.push_back(ci);
         }
@@ -967,14 +980,15 @@ std::uint64_t World::state_hash() const {
         hs(d.material.friction);
     }
     hs(std::uint64_t(w.contacts.size()));
-    for (const Contact& c : w.contacts) {
+    for (std::size_t i = 0; i < w.contacts.size(); ++i) {
+        const Contact& c = w.contacts[i];
         hs(std::uint64_t(c.shape_a) << 32 | c.shape_b);
         hs(std::uint64_t(c.manifold.count));
         for (int j = 0; j < c.manifold.count; ++j) {
             hs(c.manifold.points[j].point);
             hs(c.manifold.points[j].separation);
-            hs(c.normal_impulse[j]);
-            hs(c.tangent_impulse[j]);
+            hs(w.warm_impulses[i].normal[j]);
+            hs(w.warm_impulses[i].tangent[j]);
         }
     }
     return hs.h;

@@ -100,6 +100,44 @@ BOOST_AUTO_TEST_CASE(contact_report_follows_destruction, *utf::label("R1") * utf
     }
 }
 
+// Oracle: the report before the destruction. Destroying a body removes its contacts (the last
+// contact moves into each gap, with its impulses kept beside it); every other contact must
+// still report the impulses of the last step, bit for bit, and the world must step on.
+BOOST_AUTO_TEST_CASE(surviving_contacts_keep_their_impulses, *utf::label("R1") * utf::label("R7")) {
+    World world;
+    build_pile(world);
+    for (int i = 0; i < 120; ++i)
+        world.step(1.0 / 60.0);
+    const std::vector<ContactInfo> before(world.contacts().begin(), world.contacts().end());
+    BOOST_TEST_REQUIRE(before.size() > 20u);
+    const BodyId doomed = before[before.size() / 3].body_b; // one with contacts on both sides
+    BOOST_TEST_REQUIRE((world.type(doomed) == BodyType::dynamic));
+    world.destroy_body(doomed);
+    std::size_t kept = 0;
+    for (const ContactInfo& b : before) {
+        if (b.body_a == doomed || b.body_b == doomed)
+            continue;
+        ++kept;
+        const ContactInfo* a = nullptr;
+        for (const ContactInfo& c : world.contacts()) {
+            if (c.shape_a == b.shape_a && c.shape_b == b.shape_b)
+                a = &c;
+        }
+        BOOST_TEST_REQUIRE(a != nullptr);
+        BOOST_TEST_REQUIRE(a->point_count == b.point_count);
+        for (int j = 0; j < b.point_count; ++j) {
+            BOOST_TEST(a->points[j].normal_impulse == b.points[j].normal_impulse);
+            BOOST_TEST(a->points[j].tangent_impulse == b.points[j].tangent_impulse);
+        }
+    }
+    BOOST_TEST(world.contacts().size() == kept);
+    BOOST_TEST(kept < before.size());
+    for (int i = 0; i < 60; ++i)
+        world.step(1.0 / 60.0);
+    for (BodyId b : world.bodies())
+        BOOST_TEST(std::isfinite(world.position(b).y));
+}
+
 // Oracle: determinism by construction: the same input gives bitwise the same state (equal
 // state hashes after every step of two independent runs).
 BOOST_AUTO_TEST_CASE(bitwise_deterministic, *utf::label("R1") * utf::label("R8")) {

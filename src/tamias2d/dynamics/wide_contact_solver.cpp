@@ -179,30 +179,33 @@ void WideContactSolver::store(std::span<ContactConstraint> constraints) const {
     }
 }
 
-void WideContactSolver::store(std::span<Contact> contacts,
+void WideContactSolver::store(std::span<ContactImpulses> warm, std::span<ContactImpulses> totals,
                               std::span<ContactConstraint> bouncing) const {
-    // The packs name their contacts level by level, scattered: once the contacts outgrow the
-    // caches, ask for the impulses' line four packs ahead.
+    // The packs name their contacts level by level, scattered: ask for the records four packs
+    // ahead (dense arrays, mostly in cache even at 16k boxes).
     constexpr std::size_t ahead = 4;
     for (std::size_t i = 0; i < packs_.size(); ++i) {
         if (i + ahead < packs_.size()) {
             const WideContactConstraint& next = packs_[i + ahead];
             for (int l = 0; l < wide_lanes; ++l) {
-                if (next.count[l] != 0)
-                    __builtin_prefetch(&contacts[next.contact[l]].normal_impulse, 1);
+                if (next.count[l] != 0) {
+                    __builtin_prefetch(&warm[next.contact[l]], 1);
+                    __builtin_prefetch(&totals[next.contact[l]], 1);
+                }
             }
         }
         const WideContactConstraint& w = packs_[i];
         for (int l = 0; l < wide_lanes; ++l) {
             if (w.count[l] == 0)
                 continue;
-            Contact& c = contacts[w.contact[l]];
+            ContactImpulses& accumulated = warm[w.contact[l]];
+            ContactImpulses& total = totals[w.contact[l]];
             for (int j = 0; j < w.count[l]; ++j) {
                 const WideContactConstraintPoint& q = w.points[j];
-                c.normal_impulse[j] = q.normal_impulse[l];
-                c.tangent_impulse[j] = q.tangent_impulse[l];
-                c.total_normal_impulse[j] = q.total_normal_impulse[l];
-                c.total_tangent_impulse[j] = q.total_tangent_impulse[l];
+                accumulated.normal[j] = q.normal_impulse[l];
+                accumulated.tangent[j] = q.tangent_impulse[l];
+                total.normal[j] = q.total_normal_impulse[l];
+                total.tangent[j] = q.total_tangent_impulse[l];
                 if (w.restitution_slot[l] != no_slot)
                     copy_out(q, l, bouncing[w.restitution_slot[l]].points[j]);
             }

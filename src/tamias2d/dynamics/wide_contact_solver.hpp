@@ -49,9 +49,12 @@ class WideContactSolver {
     void solve(std::span<SolverBody> bodies, const ContactSolverSettings& settings, bool use_bias);
     /// Copies the impulses back into the constraints given to load.
     void store(std::span<ContactConstraint> constraints) const;
-    /// Copies the impulses into the persistent contacts (warm start next step, contact report)
-    /// and, for the manifolds that can bounce, into the restitution pass's copies (by slot).
-    void store(std::span<Contact> contacts, std::span<ContactConstraint> bouncing) const;
+    /// Copies the impulses into the persistent contacts' records, indexed like the contacts: the
+    /// accumulated ones into `warm` (warm start next step), the step's totals into `totals`
+    /// (contact report); and, for the manifolds that can bounce, into the restitution pass's
+    /// copies (by slot).
+    void store(std::span<ContactImpulses> warm, std::span<ContactImpulses> totals,
+               std::span<ContactConstraint> bouncing) const;
 
     /// The packs in solve order (the benchmark runs its own instantiation of the loops on them).
     std::span<WideContactConstraint> packs() { return packs_; }
