@@ -133,8 +133,8 @@ void WideContactSolver::load(std::span<const ContactConstraint> constraints,
     }
     colour(edges_, bodies.size());
     const auto lanes = order();
+    WideManifoldInput in; // one for all packs, as the world's lane filling uses it
     for (std::size_t i = 0; i < lanes.size(); ++i) {
-        WideManifoldInput in;
         for (int l = 0; l < wide_lanes; ++l) {
             const std::uint32_t k = lanes[i][l];
             if (k == ConstraintGraph::no_constraint)
