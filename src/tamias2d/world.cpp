@@ -47,8 +47,8 @@ struct World::Impl {
     std::vector<std::uint32_t> free_shapes;
     LargeArray<Contact> contacts;
     /// Per contact, indexed alike: what the colouring needs of it, written by the narrow phase
-    /// while the contact is in cache. (Reading it back from the contacts cost a pass over three
-    /// of their four lines: 3.8 MB per step at 16k boxes.)
+    /// while the contact is in cache. (Reading it back from the contacts cost a pass over most
+    /// of their lines: 3.8 MB per step at 16k boxes.)
     struct EdgeInput {
         std::uint32_t body_a, body_b;
         PathGroup group;
