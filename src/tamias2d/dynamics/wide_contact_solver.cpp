@@ -69,9 +69,6 @@ TAMIAS_WIDE_KERNEL void prepare_lanes(WideContactConstraint& w, const WideManifo
     w.use_block = either(both(two, k.use_block), empty);
 }
 
-} // namespace
-
-namespace {
 /// Point j of lane l: anchors, separation and warm-start impulses.
 void set_input_point(WideManifoldInput& in, int l, int j, Vec2d r_a, Vec2d r_b, double separation,
                      double normal_impulse, double tangent_impulse) {
@@ -83,6 +80,7 @@ void set_input_point(WideManifoldInput& in, int l, int j, Vec2d r_a, Vec2d r_b, 
     in.normal_impulse[j][l] = normal_impulse;
     in.tangent_impulse[j][l] = tangent_impulse;
 }
+
 } // namespace
 
 void set_input_lane(WideManifoldInput& in, int l, const ContactConstraint& c, std::uint32_t slot) {
