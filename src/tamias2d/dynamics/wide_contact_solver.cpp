@@ -104,11 +104,8 @@ void set_input_lane(WideManifoldInput& in, int l, const ContactConstraint& c, st
 }
 
 void clear_input_lane(WideManifoldInput& in, int l) {
-    in.body_a[l] = in.body_b[l] = in.contact[l] = in.restitution_slot[l] = 0;
-    in.count[l] = 0;
-    in.normal.x[l] = in.normal.y[l] = in.friction[l] = 0.0;
-    for (int j = 0; j < 2; ++j)
-        set_input_point(in, l, j, {}, {}, 0.0, 0.0, 0.0);
+    static constexpr ContactConstraint none{}; // no points, the static body 0 twice, all zeros
+    set_input_lane(in, l, none, 0);
 }
 
 void WideContactSolver::colour(std::span<const GraphEdge> edges, std::size_t body_count) {
