@@ -39,6 +39,7 @@
 
 #include "bench_engines.hpp"
 #include "bench_scenes.hpp"
+#include "memory_probe.hpp"
 #include "typing_kernel.hpp"
 #include "verification_report.hpp"
 
@@ -669,6 +670,16 @@ int main(int argc, char** argv) {
                     100.0 * typing_result->overhead(), typing_result->ratio.size(),
                     typing_result->identical ? "yes" : "NO");
     }
+    // With the scaling series, the memory hierarchy that explains it (after it: the probe
+    // evicts everything).
+    std::vector<LoadLatency> latency;
+    if (std::any_of(chosen.begin(), chosen.end(), [](const SceneSpec* s) { return s->scaling; })) {
+        const double sizes_mib[] = {0.25, 0.5, 1, 2, 4, 8, 16, 32};
+        latency = measure_load_latency(sizes_mib);
+        std::printf("\nlatency of a dependent load at random in a working set of");
+        for (const LoadLatency& l : latency)
+            std::printf(" %g MiB: %.1f ns%s", l.mib, l.ns, &l == &latency.back() ? "\n" : ",");
+    }
     const double total_s = std::chrono::duration<double>(Clock::now() - t_start).count();
 
     // ------------------------------------------------------------------------- the report
@@ -742,7 +753,11 @@ int main(int argc, char** argv) {
         add_check("scaling: Tamias2D ms/step on rain_16k <= 20x rain_1k", {"NFR1"},
                   b->engines[0].complete() && a->engines[0].complete() && ratio <= scaling_limit,
                   "16x the bodies in the same arrangement: linear cost is 16x",
-                  "Tamias2D " + fmt(ratio) + "x" + peers, performance_target);
+                  "Tamias2D " + fmt(ratio) + "x" + peers + " (Tamias2D's peak heap " +
+                      fmt(a->engines[0].peak_heap / 1048576.0, 3) + " and " +
+                      fmt(b->engines[0].peak_heap / 1048576.0, 3) +
+                      " MiB; memory latency by working set: the benchmark's table)",
+                  performance_target);
     }
     if (typing_result) {
         const TypingResult& t = *typing_result;
@@ -879,6 +894,16 @@ int main(int argc, char** argv) {
                              num(*std::min_element(t.plain_ms.begin(), t.plain_ms.end())),
                              num(*std::max_element(t.plain_ms.begin(), t.plain_ms.end())),
                              int(t.plain_ms.size())}}}});
+    }
+    if (!latency.empty()) {
+        json rows = json::array();
+        for (const LoadLatency& l : latency)
+            rows.push_back(json::array({num(l.mib), num(l.ns, 3)}));
+        tables.push_back({{"name", "Machine: latency of a dependent load at random in a working "
+                                   "set (pointer chase over 64-byte lines, huge pages from 1 MiB "
+                                   "as the world's arrays, best of 3 x 2^20 loads)"},
+                          {"columns", {"working set (MiB)", "ns per load"}},
+                          {"rows", rows}});
     }
     {
         // Two-element rows of strings would read as a JSON object: build them as arrays.
