@@ -1,0 +1,108 @@
+// Google Benchmark views of a step's stages, for interactive profiling (not run by the job:
+// tamias_bench is the evidence): the broad phase's pair search, the narrow phase on a pair of
+// boxes, and whole steps of the benchmark's scenes. The contact solver's loop has its own binary
+// (tamias_typing_gbench). For example:
+//   build/verification/bench/tamias_stage_gbench --benchmark_repetitions=5
+//   build/verification/bench/tamias_stage_gbench --benchmark_filter=broad_phase
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "bench_engines.hpp"
+#include "bench_scenes.hpp"
+#include "tamias2d/collision/broad_phase.hpp"
+#include "tamias2d/collision/collider.hpp"
+#include "tamias2d/collision/narrow_phase.hpp"
+#include "tamias2d/geometry/shape_factory.hpp"
+#include "tamias2d/world_def.hpp"
+
+namespace {
+
+using namespace tamias2d;
+
+/// Boxes of 0.5 m in 10 rows at a 0.55 m pitch, as a settled rain (their fat boxes overlap their
+/// neighbours'). Each iteration every eighth box leaves its fat box, alternately right and
+/// left, and the pairs of the moved boxes are found: the tree's partial rebuild and the queries.
+void broad_phase_update_pairs(benchmark::State& state) {
+    const int n = static_cast<int>(state.range(0));
+    const int columns = n / 10;
+    constexpr double pitch = 0.55, half = 0.25;
+    BroadPhase broad_phase;
+    std::vector<int> proxies;
+    std::vector<Aabb> boxes;
+    for (int i = 0; i < n; ++i) {
+        const double x = pitch * (i % columns), y = pitch * (i / columns);
+        boxes.push_back({x - half, y - half, x + half, y + half});
+        proxies.push_back(broad_phase.create_proxy(boxes.back(), std::uint32_t(i)));
+    }
+    std::vector<BroadPhase::Pair> pairs;
+    broad_phase.update_pairs(pairs);
+    std::vector<BroadPhase::ProxyMove> moves;
+    double shift = 0.15; // beyond the 0.1 m margin
+    for (auto _ : state) {
+        moves.clear();
+        for (int i = 0; i < n; i += 8) {
+            boxes[i].min_x += shift;
+            boxes[i].max_x += shift;
+            moves.push_back({proxies[i], broad_phase.fattened(boxes[i])});
+        }
+        shift = -shift;
+        broad_phase.move_proxies(moves);
+        pairs.clear();
+        broad_phase.update_pairs(pairs);
+        benchmark::DoNotOptimize(pairs.data());
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(state.iterations() * (n / 8)); // moved boxes
+    state.counters["pairs"] = double(pairs.size());
+    state.counters["tree_height"] = broad_phase.dynamic_tree().height();
+    state.counters["tree_area_ratio"] = broad_phase.dynamic_tree().area_ratio();
+}
+BENCHMARK(broad_phase_update_pairs)
+    ->Name("broad_phase/update_pairs/boxes")
+    ->Arg(1000)
+    ->Arg(16000)
+    ->Unit(benchmark::kMicrosecond);
+
+/// Two unit boxes as the world's narrow phase sees them: B above A, turned by 0.01 rad, its
+/// lowest corner `gap` (m) above A's top face (negative: overlapping). The manifold and the
+/// separation hint are kept across iterations, as a contact keeps them across steps.
+void narrow_phase_boxes(benchmark::State& state, double gap) {
+    const Collider a = make_collider(make_box(0.5, 0.5));
+    const Collider b = make_collider(make_box(0.5, 0.5));
+    const double angle = 0.01;
+    const double lowest = 0.5 * (std::cos(angle) + std::sin(angle)); // below B's centre
+    const Transform xf_a{{0.0, 0.0}, Rot{}};
+    const Transform xf_b{{0.1, 0.5 + gap + lowest}, Rot::from_angle(angle)};
+    const CollideInput in{xf_a, xf_a.p, xf_b, xf_b.p, WorldDef{}.speculative_distance};
+    Manifold m;
+    SeparationHint hint;
+    for (auto _ : state) {
+        collide(a, b, in, m, &hint);
+        benchmark::DoNotOptimize(m);
+    }
+    state.counters["points"] = m.count;
+}
+BENCHMARK_CAPTURE(narrow_phase_boxes, resting, -0.005)->Name("narrow_phase/box_box/resting");
+BENCHMARK_CAPTURE(narrow_phase_boxes, apart, 0.2)->Name("narrow_phase/box_box/apart_hinted");
+
+/// Whole steps of a steady scene in Tamias2D, after the same 10 untimed steps as tamias_bench.
+void world_step(benchmark::State& state, tamias_bench::SceneDesc scene) {
+    auto engine = tamias_bench::make_engine(tamias_bench::EngineId::tamias, scene);
+    for (int i = 0; i < 10; ++i)
+        engine->step();
+    for (auto _ : state)
+        engine->step();
+}
+BENCHMARK_CAPTURE(world_step, pyramid20, tamias_bench::make_pyramid("pyramid20", 20))
+    ->Name("world/step/pyramid20")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(world_step, pyramid40, tamias_bench::make_pyramid("pyramid40", 40))
+    ->Name("world/step/pyramid40")
+    ->Unit(benchmark::kMillisecond);
+
+} // namespace
+
+BENCHMARK_MAIN();
