@@ -1,8 +1,8 @@
 // The machine's memory hierarchy as a step sees it: the latency of a dependent load at random
-// within working sets of growing size. It explains the scaling series: a rain of 1k boxes works
-// within ~2 MB, one of 16k within ~30 MB, and where the caches this process gets end (on a
-// shared virtual machine, often well below the processor's nominal last-level cache) is what
-// sets the cost per box at 16k against 1k (docs/performance.md).
+// within working sets of growing size. It explains the scaling series: a rain of 1k boxes has
+// 2.4 MiB of heap, one of 16k 52 MiB, and where the caches this process gets end (on a shared
+// virtual machine, often well below the processor's nominal last-level cache) is what sets the
+// cost per box at 16k against 1k (docs/performance.md).
 #pragma once
 
 #include <cstddef>
