@@ -992,6 +992,33 @@ int main(int argc, char** argv) {
         }
     }
 
+    if (!latency.empty()) {
+        // The probe's curve, and the scaling check's two Tamias2D heaps as vertical marks on it.
+        json xs = json::array(), ys = json::array();
+        double lo = latency.front().ns, hi = lo;
+        for (const LoadLatency& l : latency) {
+            xs.push_back(num(l.mib));
+            ys.push_back(num(l.ns, 3));
+            lo = std::min(lo, l.ns);
+            hi = std::max(hi, l.ns);
+        }
+        json lines = json::array({{{"label", "pointer chase"}, {"x", xs}, {"y", ys}}});
+        for (const SceneResult& r : results) {
+            const double heap = r.engines[std::size_t(EngineId::tamias)].peak_heap / 1048576.0;
+            if ((r.name != "rain_1k" && r.name != "rain_16k") || !(heap > 0.0))
+                continue;
+            lines.push_back({{"label", r.name + ": Tamias2D's heap"},
+                             {"x", {num(heap, 3), num(heap, 3)}},
+                             {"y", {num(lo, 3), num(hi, 3)}}});
+        }
+        series.push_back({{"name", "Machine: latency of a dependent load by working set"},
+                          {"x_label", "working set (MiB)"},
+                          {"y_label", "ns per load"},
+                          {"log_x", true},
+                          {"log_y", true},
+                          {"lines", lines}});
+    }
+
     json raw = json::object();
     for (const SceneResult& r : results) {
         json e = json::object();
