@@ -608,6 +608,13 @@ std::string load_average() {
     return a + " " + b + " " + c;
 }
 
+/// A plot for the report, both axes logarithmic.
+json log_log_series(const std::string& name, const std::string& x_label, const std::string& y_label,
+                    json lines) {
+    return {{"name", name},  {"x_label", x_label}, {"y_label", y_label},
+            {"log_x", true}, {"log_y", true},      {"lines", std::move(lines)}};
+}
+
 json num(double v, int digits = 4) {
     if (!std::isfinite(v))
         return nullptr;
@@ -951,13 +958,9 @@ int main(int argc, char** argv) {
             }
             lines.push_back({{"label", engine_name(id)}, {"x", xs}, {"y", ys}});
         }
-        series.push_back({{"name", "ms/step per engine and scene (elastic2, pyramid20, pyramid40, "
-                                   "rain, large_pyramid)"},
-                          {"x_label", "dynamic bodies"},
-                          {"y_label", "ms per step"},
-                          {"log_x", true},
-                          {"log_y", true},
-                          {"lines", lines}});
+        series.push_back(log_log_series("ms/step per engine and scene (elastic2, pyramid20, "
+                                        "pyramid40, rain, large_pyramid)",
+                                        "dynamic bodies", "ms per step", lines));
     }
     {
         json lines = json::array();
@@ -983,12 +986,8 @@ int main(int argc, char** argv) {
                              {"y", {num(ref_y), num(16.0 * ref_y)}}});
         }
         if (!lines.empty()) {
-            series.push_back({{"name", "Scaling: rain of N boxes"},
-                              {"x_label", "boxes"},
-                              {"y_label", "ms per step"},
-                              {"log_x", true},
-                              {"log_y", true},
-                              {"lines", lines}});
+            series.push_back(
+                log_log_series("Scaling: rain of N boxes", "boxes", "ms per step", lines));
         }
     }
 
@@ -1011,12 +1010,8 @@ int main(int argc, char** argv) {
                              {"x", {num(heap, 3), num(heap, 3)}},
                              {"y", {num(lo, 3), num(hi, 3)}}});
         }
-        series.push_back({{"name", "Machine: latency of a dependent load by working set"},
-                          {"x_label", "working set (MiB)"},
-                          {"y_label", "ns per load"},
-                          {"log_x", true},
-                          {"log_y", true},
-                          {"lines", lines}});
+        series.push_back(log_log_series("Machine: latency of a dependent load by working set",
+                                        "working set (MiB)", "ns per load", lines));
     }
 
     json raw = json::object();
