@@ -1,7 +1,5 @@
 #include "memory_probe.hpp"
 
-#include <time.h>
-
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
@@ -9,6 +7,7 @@
 
 #include "bench_scenes.hpp"
 #include "tamias2d/memory/large_array.hpp"
+#include "thread_cpu_time.hpp"
 
 namespace tamias_bench {
 
@@ -20,12 +19,6 @@ struct alignas(64) Line {
 static_assert(sizeof(Line) == 64);
 
 volatile std::uint32_t sink = 0;
-
-double now_ns() {
-    timespec t{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return double(t.tv_sec) * 1e9 + double(t.tv_nsec);
-}
 
 } // namespace
 
@@ -58,10 +51,10 @@ std::vector<LoadLatency> measure_load_latency(std::span<const double> sizes_mib)
             at = lines[at].next;
         double best = 1e300;
         for (int r = 0; r < repetitions; ++r) {
-            const double t0 = now_ns();
+            const double t0 = cpu_ms();
             for (int i = 0; i < loads; ++i)
                 at = lines[at].next;
-            best = std::min(best, (now_ns() - t0) / loads);
+            best = std::min(best, (cpu_ms() - t0) * 1e6 / loads);
         }
         sink = at; // the chase's end is used, so the loop cannot be dropped
         out.push_back({mib, best});

@@ -15,7 +15,6 @@
 //   transient scenes (rain, elastic pair): each repetition rebuilds the scene and times the
 //     whole run of `steps` steps (the build is never timed).
 #include <malloc.h>
-#include <time.h>
 
 #include <algorithm>
 #include <array>
@@ -40,6 +39,7 @@
 #include "bench_engines.hpp"
 #include "bench_scenes.hpp"
 #include "memory_probe.hpp"
+#include "thread_cpu_time.hpp"
 #include "typing_kernel.hpp"
 #include "verification_report.hpp"
 
@@ -110,15 +110,7 @@ std::vector<SceneSpec> all_scenes() {
 }
 
 // ------------------------------------------------------------------------------- timing
-/// Thread CPU time (ms). The engines are single-threaded, so this is the work a step takes,
-/// without the time the thread waits for a core on a shared machine; wall time is recorded
-/// beside it (raw data) and equals it on an idle machine.
-double cpu_ms() {
-    timespec t{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
-}
-
+// cpu_ms (thread_cpu_time.hpp), and wall time beside it.
 double wall_ms() {
     return std::chrono::duration<double, std::milli>(Clock::now().time_since_epoch()).count();
 }
