@@ -173,4 +173,27 @@ BOOST_AUTO_TEST_CASE(levels_separate_bodies_and_keep_their_order,
     }
 }
 
+// Oracle: the packing rule worked by hand. Five manifolds on bodies 1-5 and the static body
+// make level 1 (a full pack and one left over); in case A, three more each follow one manifold of
+// the full pack, so they join the left-over one; in case B the first of two more follows the
+// left-over manifold itself (body 5), so that pack closes with one lane.
+BOOST_AUTO_TEST_CASE(packs_fill_across_levels, *utf::label("NFR1")) {
+    using P = ConstraintGraph::Pack;
+    constexpr std::uint32_t x = ConstraintGraph::no_constraint;
+    const auto packs_of = [](std::vector<GraphEdge> edges) {
+        ConstraintGraph graph;
+        graph.colour(edges, 10);
+        return std::vector<P>(graph.packs().begin(), graph.packs().end());
+    };
+    const std::vector<GraphEdge> level_one = {{1, 0}, {2, 0}, {3, 0}, {4, 0}, {5, 0}};
+    std::vector<GraphEdge> a = level_one;
+    a.insert(a.end(), {{1, 6}, {2, 7}, {3, 8}});
+    const std::vector<P> expected_a = {{0, 1, 2, 3}, {4, 5, 6, 7}};
+    BOOST_TEST(packs_of(a) == expected_a);
+    std::vector<GraphEdge> b = level_one;
+    b.insert(b.end(), {{5, 6}, {1, 7}});
+    const std::vector<P> expected_b = {{0, 1, 2, 3}, {4, x, x, x}, {5, 6, x, x}};
+    BOOST_TEST(packs_of(b) == expected_b);
+}
+
 BOOST_AUTO_TEST_SUITE_END()

@@ -7,19 +7,19 @@ namespace tamias2d {
 void ConstraintGraph::colour(std::span<const GraphEdge> edges, std::size_t body_count) {
     // Constraints of one level share no body, and constraints that share one keep their
     // creation order, so solving level by level is the sequential pass in creation order.
-    body_level_.assign(body_count, 0);
+    body_mark_.assign(body_count, 0);
     level_of_.resize(edges.size());
     std::uint32_t levels = 0;
     for (std::uint32_t i = 0; i < edges.size(); ++i) {
         const GraphEdge& c = edges[i];
         // Body 0 stands for every static body: never written, so it orders nothing.
-        const std::uint32_t la = c.body_a != 0 ? body_level_[c.body_a] : 0;
-        const std::uint32_t lb = c.body_b != 0 ? body_level_[c.body_b] : 0;
+        const std::uint32_t la = c.body_a != 0 ? body_mark_[c.body_a] : 0;
+        const std::uint32_t lb = c.body_b != 0 ? body_mark_[c.body_b] : 0;
         const std::uint32_t level = std::max(la, lb) + 1;
         if (c.body_a != 0)
-            body_level_[c.body_a] = level;
+            body_mark_[c.body_a] = level;
         if (c.body_b != 0)
-            body_level_[c.body_b] = level;
+            body_mark_[c.body_b] = level;
         // Within a level the order is free (its constraints commute): grouped by the path of
         // the iteration they take, so that packs mostly take one, not both.
         level_of_[i] = path_groups * (level - 1) + static_cast<std::uint32_t>(c.group);
@@ -36,17 +36,37 @@ void ConstraintGraph::colour(std::span<const GraphEdge> edges, std::size_t body_
     level_fill_.assign(level_start_.begin(), level_start_.end() - 1);
     for (std::uint32_t i = 0; i < edges.size(); ++i)
         sorted_[level_fill_[level_of_[i]]++] = i;
+    // The packs, in that order. Placed level by level, a constraint's predecessors on its
+    // bodies are the bodies' last placed constraints; it joins the open pack unless one of them
+    // is in it (the only way it could also share a moving body with a lane there).
+    body_mark_.assign(body_count, no_constraint); // body 0 keeps it: never in a pack
     packs_.clear();
-    for (std::uint32_t l = 0; l < levels; ++l) {
-        const std::uint32_t end = level_start_[path_groups * (l + 1)];
-        for (std::uint32_t k = level_start_[path_groups * l]; k < end; k += wide_lanes) {
-            Pack p;
-            p.fill(no_constraint);
-            for (std::uint32_t j = 0; j < wide_lanes && k + j < end; ++j)
-                p[j] = sorted_[k + j];
-            packs_.push_back(p);
+    Pack open;
+    open.fill(no_constraint);
+    int lanes = 0;
+    for (const std::uint32_t i : sorted_) {
+        const GraphEdge& c = edges[i];
+        const auto open_index = std::uint32_t(packs_.size());
+        if (lanes > 0 &&
+            (body_mark_[c.body_a] == open_index || body_mark_[c.body_b] == open_index)) {
+            packs_.push_back(open);
+            open.fill(no_constraint);
+            lanes = 0;
+        }
+        const auto placed = std::uint32_t(packs_.size());
+        if (c.body_a != 0)
+            body_mark_[c.body_a] = placed;
+        if (c.body_b != 0)
+            body_mark_[c.body_b] = placed;
+        open[lanes++] = i;
+        if (lanes == wide_lanes) {
+            packs_.push_back(open);
+            open.fill(no_constraint);
+            lanes = 0;
         }
     }
+    if (lanes > 0)
+        packs_.push_back(open);
 }
 
 } // namespace tamias2d

@@ -7,6 +7,11 @@
 // and the order is what carries a stack's weight down within one pass. Tried (session 3,
 // docs/performance.md): pyramid40's top box sagged 0.185 m instead of 0.056 m, large_pyramid's
 // 0.84 m (it no longer stands) and 2 rain boxes escaped, for the same speed.
+//
+// Packs are filled across level boundaries: the packs run in order, so a constraint may share
+// a pack with the last ones of the level before unless one of those is the constraint it
+// follows on a body. A pyramid has hundreds of small levels (pyramid40: 231 for 2380
+// manifolds), and one pack per level and path group left a third of its lanes empty.
 #pragma once
 
 #include <array>
@@ -51,14 +56,18 @@ class ConstraintGraph {
     using Pack = std::array<std::uint32_t, wide_lanes>;
 
     /// Each manifold goes one level after the last earlier manifold sharing a moving body with
-    /// it. Allocates only while the scene grows.
+    /// it; the levels, in order, fill the packs, a pack closing early only where the next
+    /// manifold follows one of its lanes on a body. Allocates only while the scene grows.
     void colour(std::span<const GraphEdge> edges, std::size_t body_count);
 
-    /// The solve order: the packs of level 0, of level 1, ... (creation order within a level).
+    /// The solve order: the manifolds of level 0, of level 1, ..., four to a pack (by path
+    /// group, then creation order, within a level).
     std::span<const Pack> packs() const { return packs_; }
 
   private:
-    std::vector<std::uint32_t> body_level_; ///< one past the level of the body's last constraint
+    /// Per body: one past the level of its last constraint so far, while levelling; then the
+    /// pack of its last constraint placed so far, while packing (no_constraint: none yet).
+    std::vector<std::uint32_t> body_mark_;
     std::vector<std::uint32_t> level_of_;
     std::vector<std::uint32_t> level_start_, level_fill_;
     std::vector<std::uint32_t> sorted_;
