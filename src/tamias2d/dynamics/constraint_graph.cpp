@@ -35,38 +35,29 @@ void ConstraintGraph::colour(std::span<const GraphEdge> edges, std::size_t body_
     sorted_.resize(edges.size());
     level_fill_.assign(level_start_.begin(), level_start_.end() - 1);
     for (std::uint32_t i = 0; i < edges.size(); ++i)
-        sorted_[level_fill_[level_of_[i]]++] = i;
+        sorted_[level_fill_[level_of_[i]]++] = {i, edges[i].body_a, edges[i].body_b};
     // The packs, in that order. Placed level by level, a constraint's predecessors on its
     // bodies are the bodies' last placed constraints; it joins the open pack unless one of them
     // is in it (the only way it could also share a moving body with a lane there).
-    body_mark_.assign(body_count, no_constraint); // body 0 keeps it: never in a pack
+    body_mark_.assign(body_count, no_constraint);
     packs_.clear();
-    Pack open;
-    open.fill(no_constraint);
-    int lanes = 0;
-    for (const std::uint32_t i : sorted_) {
-        const GraphEdge& c = edges[i];
-        const auto open_index = std::uint32_t(packs_.size());
-        if (lanes > 0 &&
-            (body_mark_[c.body_a] == open_index || body_mark_[c.body_b] == open_index)) {
-            packs_.push_back(open);
-            open.fill(no_constraint);
+    Pack empty;
+    empty.fill(no_constraint);
+    std::uint32_t open = no_constraint; // the open pack's index (none yet)
+    int lanes = wide_lanes;             // so the first constraint opens one
+    for (const Placement& c : sorted_) {
+        // Body 0 stands for every static body: it is marked too, but never blocks.
+        const bool follows = (c.body_a != 0 && body_mark_[c.body_a] == open) ||
+                             (c.body_b != 0 && body_mark_[c.body_b] == open);
+        if (follows || lanes == wide_lanes) {
+            open = std::uint32_t(packs_.size());
+            packs_.push_back(empty);
             lanes = 0;
         }
-        const auto placed = std::uint32_t(packs_.size());
-        if (c.body_a != 0)
-            body_mark_[c.body_a] = placed;
-        if (c.body_b != 0)
-            body_mark_[c.body_b] = placed;
-        open[lanes++] = i;
-        if (lanes == wide_lanes) {
-            packs_.push_back(open);
-            open.fill(no_constraint);
-            lanes = 0;
-        }
+        packs_[open][lanes++] = c.index;
+        body_mark_[c.body_a] = open;
+        body_mark_[c.body_b] = open;
     }
-    if (lanes > 0)
-        packs_.push_back(open);
 }
 
 } // namespace tamias2d

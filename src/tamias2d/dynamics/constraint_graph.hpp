@@ -70,7 +70,12 @@ class ConstraintGraph {
     std::vector<std::uint32_t> body_mark_;
     std::vector<std::uint32_t> level_of_;
     std::vector<std::uint32_t> level_start_, level_fill_;
-    std::vector<std::uint32_t> sorted_;
+    /// A constraint and its bodies, in solve order (what placing it in a pack reads).
+    struct Placement {
+        std::uint32_t index = 0;
+        std::uint32_t body_a = 0, body_b = 0;
+    };
+    std::vector<Placement> sorted_;
     std::vector<Pack> packs_;
 };
 
