@@ -11,7 +11,8 @@
 // Packs are filled across level boundaries: the packs run in order, so a constraint may share
 // a pack with the last ones of the level before unless one of those is the constraint it
 // follows on a body. A pyramid has hundreds of small levels (pyramid40: 231 for 2380
-// manifolds), and one pack per level and path group left a third of its lanes empty.
+// manifolds): starting a new pack at each level left 23 % of pyramid20's lanes empty and 13 %
+// of pyramid40's (now 11 % and 3 %).
 #pragma once
 
 #include <array>
