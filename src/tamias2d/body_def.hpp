@@ -40,8 +40,12 @@ struct BodyDef {
     std::optional<double> inertia;
     double gravity_scale = 1.0;  ///< multiplies the world's gravity for this body
     bool fixed_rotation = false; ///< no rotation: infinite moment of inertia
-    LoadFunction load;           ///< optional F(t), tau(t), added to the persistent loads
-    std::string name;            ///< free text, for scene files and reports
+    /// With the world's sleeping on (WorldDef::enable_sleep): whether this body may sleep (a
+    /// body that may not keeps every body touching it awake), and whether it starts awake.
+    bool enable_sleep = true;
+    bool awake = true;
+    LoadFunction load; ///< optional F(t), tau(t), added to the persistent loads
+    std::string name;  ///< free text, for scene files and reports
 };
 
 } // namespace tamias2d

@@ -90,6 +90,9 @@ void validate(const WorldDef& def) {
     non_negative("world.linear_slop", def.linear_slop);
     non_negative("world.speculative_distance", def.speculative_distance);
     non_negative("world.restitution_threshold", def.restitution_threshold);
+    non_negative("world.time_to_sleep", def.time_to_sleep);
+    non_negative("world.linear_sleep_tolerance", def.linear_sleep_tolerance);
+    non_negative("world.angular_sleep_tolerance", def.angular_sleep_tolerance);
 }
 
 void validate_time_step(double dt) {

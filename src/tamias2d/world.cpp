@@ -4,6 +4,7 @@
 #include <bit>
 #include <cmath>
 #include <cstring>
+#include <limits>
 
 #include "tamias2d/collision/broad_phase.hpp"
 #include "tamias2d/collision/narrow_phase.hpp"
@@ -12,6 +13,7 @@
 #include "tamias2d/dynamics/contact_solver.hpp"
 #include "tamias2d/dynamics/model_bridge.hpp"
 #include "tamias2d/dynamics/shape.hpp"
+#include "tamias2d/dynamics/sleep.hpp"
 #include "tamias2d/dynamics/wide_contact_solver.hpp"
 #include "tamias2d/errors.hpp"
 #include "tamias2d/geometry/mass_properties.hpp"
@@ -41,6 +43,9 @@ struct World::Impl {
     /// kept out of Body, which a step streams three times).
     std::vector<std::uint32_t> body_generation;
     std::vector<std::uint32_t> free_bodies;
+    /// Per body, indexed alike: awake or asleep, and for how long at rest (read by the step only
+    /// with sleeping on, def.enable_sleep).
+    std::vector<SleepState> sleep_states;
     std::uint32_t loaded_bodies = 0; ///< live bodies with a load function
     LargeArray<Shape> shapes;
     std::vector<ShapeDef> shape_defs; ///< per shape, indexed alike: what it was made from
@@ -76,6 +81,11 @@ struct World::Impl {
     std::vector<std::uint32_t> edge_slot;    ///< per edge: its copy in `bouncing`, or no_slot
     std::vector<ContactConstraint> bouncing; ///< manifolds with restitution, creation order
     WideContactSolver wide_solver;
+    // Sleeping's per-step scratch: the islands, and per island (at its representative) whether
+    // a body of it is awake and its bodies' shortest time at rest.
+    Islands islands;
+    std::vector<std::uint8_t> island_awake;
+    std::vector<double> island_rest;
     // The contact report is built when first asked for after a step or a destruction: most
     // steps of a game never read it, and copying every contact out each step cost a few
     // percent of a pile's step.
@@ -105,6 +115,28 @@ struct World::Impl {
     }
 
     BodyId body_id(std::uint32_t i) const { return {i, body_generation[i]}; }
+
+    /// Moves this step: not static, and awake (every such body is, with sleeping off).
+    bool active(std::uint32_t i) const {
+        return bodies[i].type != BodyType::static_body && sleep_states[i].awake;
+    }
+    /// Wakes the body (and so, at the next step, its island); its time at rest starts again.
+    void wake(std::uint32_t i) {
+        if (bodies[i].type == BodyType::static_body)
+            return;
+        sleep_states[i].awake = true;
+        sleep_states[i].sleep_time = 0.0;
+    }
+    /// Wakes every body touching body i: what keeps them up may have gone (a static body does
+    /// not move in a step, so its contacts with sleeping bodies are not updated).
+    void wake_touching(std::uint32_t i) {
+        for (const Contact& c : contacts) {
+            if (c.touching && (c.body_a == i || c.body_b == i)) {
+                wake(c.body_a);
+                wake(c.body_b);
+            }
+        }
+    }
     ShapeId shape_id(std::uint32_t i) const { return {i, shapes[i].generation}; }
 
     Aabb shape_box(const Shape& s) const { return compute_aabb(s.collider, bodies[s.body].xf); }
@@ -171,6 +203,8 @@ struct World::Impl {
         infos_stale = true; // a destroyed body's or shape's contacts leave the report at once
         Contact& c = contacts[i];
         if (c.touching) {
+            wake(c.body_a); // what held the other up, or pushed it, is gone
+            wake(c.body_b);
             end_events.push_back({shape_id(c.shape_a), shape_id(c.shape_b),
                                   body_id(shapes[c.shape_a].body),
                                   body_id(shapes[c.shape_b].body)});
@@ -236,9 +270,23 @@ struct World::Impl {
         }
     }
 
+    /// What the colouring needs of a contact (EdgeInput).
+    static EdgeInput edge_input(const Contact& c) {
+        // (The separations only matter with two points: read for one, or none, they would
+        // fetch the point lines of a pair that is apart.)
+        const int n = c.manifold.count;
+        const PathGroup group =
+            n == 2 ? path_group(n, c.manifold.points[0].separation, c.manifold.points[1].separation)
+                   : path_group(n, 0.0, 0.0);
+        return {c.body_a, c.body_b, group, c.touching, c.restitution > 0.0};
+    }
+
     /// \srs{R7} Narrow phase for every contact; contacts whose fat boxes separated are destroyed.
+    /// With sleeping on, a contact between bodies that do not move this step (asleep or static)
+    /// is kept as it is: neither has moved since it was last updated.
     void update_contacts() {
         doomed.clear();
+        const bool sleeping = def.enable_sleep;
         constexpr std::uint32_t ahead = 6; // contacts: the shapes' lines arrive before use
         const auto count = std::uint32_t(contacts.size()); // the loop adds and removes none
         edge_inputs.resize(count);
@@ -253,6 +301,10 @@ struct World::Impl {
                 }
             }
             Contact& c = contacts[i];
+            if (sleeping && !active(c.body_a) && !active(c.body_b)) {
+                edge_inputs[i] = edge_input(c);
+                continue;
+            }
             const Shape& sa = shapes[c.shape_a];
             const Shape& sb = shapes[c.shape_b];
             if (!overlaps(sa.fat_box, sb.fat_box)) {
@@ -289,14 +341,12 @@ struct World::Impl {
             }
             const bool was = c.touching;
             c.touching = c.manifold.count > 0;
-            // (The separations only matter with two points: read for one, or none, they would
-            // fetch the point lines of a pair that is apart.)
-            const int n = c.manifold.count;
-            const PathGroup group = n == 2 ? path_group(n, c.manifold.points[0].separation,
-                                                        c.manifold.points[1].separation)
-                                           : path_group(n, 0.0, 0.0);
-            edge_inputs[i] = {c.body_a, c.body_b, group, c.touching, c.restitution > 0.0};
+            edge_inputs[i] = edge_input(c);
             if (c.touching != was) {
+                if (sleeping) { // a body met, or left, another: both islands wake
+                    wake(c.body_a);
+                    wake(c.body_b);
+                }
                 (c.touching ? begin_events : end_events)
                     .push_back({shape_id(c.shape_a), shape_id(c.shape_b), body_id(sa.body),
                                 body_id(sb.body)});
@@ -345,7 +395,9 @@ struct World::Impl {
         angular_accelerations.assign(1, 0.0);
         for (std::uint32_t i = 0; i < bodies.size(); ++i) {
             Body& b = bodies[i];
-            if (!b.alive || b.type == BodyType::static_body) {
+            // A sleeping body is immovable this step, as a static one is.
+            if (!b.alive || b.type == BodyType::static_body ||
+                (def.enable_sleep && !sleep_states[i].awake)) {
                 solver_index[i] = 0;
                 continue;
             }
@@ -378,7 +430,10 @@ struct World::Impl {
             const EdgeInput& e = edge_inputs[i];
             if (!e.touching)
                 continue;
-            edges.push_back({solver_index[e.body_a], solver_index[e.body_b], e.group});
+            const std::uint32_t a = solver_index[e.body_a], b = solver_index[e.body_b];
+            if (a == 0 && b == 0)
+                continue; // both asleep or static (only with sleeping on): nothing to solve
+            edges.push_back({a, b, e.group});
             edge_contact.push_back(i);
             edge_slot.push_back(e.bounces ? bounce_count++ : WideContactSolver::no_slot);
         }
@@ -482,8 +537,8 @@ struct World::Impl {
                 }
             }
             Body& b = bodies[i];
-            if (!b.alive || b.type == BodyType::static_body)
-                continue;
+            if (!b.alive || b.type == BodyType::static_body || solver_index[i] == 0)
+                continue; // (solver body 0: asleep)
             const SolverBody& sb = solver_bodies[solver_index[i]];
             b.v = sb.v;
             b.w = sb.w;
@@ -498,6 +553,56 @@ struct World::Impl {
                 follow_body(shapes[s], b);
         }
         apply_moves();
+    }
+
+    /// Sleeping: the islands of this step's touching contacts; an island with an awake body
+    /// wakes whole (a body met a sleeping one, or was changed through the API).
+    void wake_islands() {
+        islands.reset(bodies.size());
+        for (std::size_t i = 0; i < contacts.size(); ++i) {
+            const Contact& c = contacts[i];
+            if (c.touching && bodies[c.body_a].type != BodyType::static_body &&
+                bodies[c.body_b].type != BodyType::static_body)
+                islands.unite(c.body_a, c.body_b);
+        }
+        island_awake.assign(bodies.size(), 0);
+        for (std::uint32_t i = 0; i < bodies.size(); ++i) {
+            if (bodies[i].alive && active(i))
+                island_awake[islands.find(i)] = 1;
+        }
+        for (std::uint32_t i = 0; i < bodies.size(); ++i) {
+            if (bodies[i].alive && !active(i) && island_awake[islands.find(i)])
+                wake(i);
+        }
+    }
+
+    /// Sleeping, after the step: each awake body's time at rest, and an island whose bodies
+    /// have all been at rest for time_to_sleep falls asleep (velocities zero: they no longer
+    /// move). A body that may not sleep, or carries a persistent load, is never at rest.
+    void update_sleep(double dt) {
+        island_rest.assign(bodies.size(), std::numeric_limits<double>::infinity());
+        for (std::uint32_t i = 0; i < bodies.size(); ++i) {
+            if (!bodies[i].alive || !active(i))
+                continue;
+            const Body& b = bodies[i];
+            SleepState& st = sleep_states[i];
+            const bool loaded = b.force.x != 0.0 || b.force.y != 0.0 || b.torque != 0.0 ||
+                                bool(body_settings[i].load);
+            const bool rest =
+                st.enabled && !loaded &&
+                at_rest(b.v, b.w, def.linear_sleep_tolerance, def.angular_sleep_tolerance);
+            st.sleep_time = rest ? st.sleep_time + dt : 0.0;
+            double& island = island_rest[islands.find(i)];
+            island = std::min(island, rest ? st.sleep_time : -1.0); // -1: not at rest now
+        }
+        for (std::uint32_t i = 0; i < bodies.size(); ++i) {
+            if (!bodies[i].alive || !active(i) ||
+                !(island_rest[islands.find(i)] >= def.time_to_sleep))
+                continue;
+            sleep_states[i] = {0.0, false, sleep_states[i].enabled};
+            bodies[i].v = {};
+            bodies[i].w = 0.0;
+        }
     }
 
     void build_infos() {
@@ -542,6 +647,7 @@ BodyId World::create_body(const BodyDef& def) {
         i = std::uint32_t(w.bodies.size());
         w.bodies.emplace_back();
         w.body_settings.emplace_back();
+        w.sleep_states.emplace_back();
         w.body_generation.push_back(0);
     }
     Body& b = w.bodies[i];
@@ -557,6 +663,8 @@ BodyId World::create_body(const BodyDef& def) {
     b.torque = def.torque;
     b.gravity_scale = def.gravity_scale;
     w.body_settings[i] = {def.name, def.load, def.mass, def.inertia, def.fixed_rotation};
+    // With sleeping off every body is awake, whatever its definition asks.
+    w.sleep_states[i] = {0.0, def.awake || !w.def.enable_sleep, def.enable_sleep};
     w.loaded_bodies += def.load ? 1 : 0;
     w.update_mass(i);
     return {i, generation};
@@ -675,9 +783,18 @@ void World::step(double dt) {
     w.begin_events.clear();
     w.end_events.clear();
     w.find_new_contacts();
-    w.prepare_bodies();
-    w.update_contacts();
+    if (w.def.enable_sleep) {
+        // The islands need this step's touching contacts, and the solver bodies the islands.
+        w.update_contacts();
+        w.wake_islands();
+        w.prepare_bodies();
+    } else {
+        w.prepare_bodies();
+        w.update_contacts();
+    }
     w.solve(dt);
+    if (w.def.enable_sleep)
+        w.update_sleep(dt);
     // Compensated sum, so that a load switching at t = n dt is seen at step n, not n + 1.
     const double y = dt - w.time_error;
     const double t = w.time + y;
@@ -692,6 +809,10 @@ double World::time() const {
 void World::set_gravity(Vec2d g) {
     require_finite("gravity", g);
     impl_->def.gravity = g;
+    for (std::uint32_t i = 0; impl_->def.enable_sleep && i < impl_->bodies.size(); ++i) {
+        if (impl_->bodies[i].alive)
+            impl_->wake(i); // a sleeping pile must feel the new gravity
+    }
 }
 Vec2d World::gravity() const {
     return impl_->def.gravity;
@@ -746,28 +867,35 @@ void World::set_transform(BodyId id, Vec2d origin, double angle) {
     for (std::uint32_t s = b.first_shape; s != null_index; s = impl_->shapes[s].next)
         impl_->follow_body(impl_->shapes[s], b);
     impl_->apply_moves();
+    impl_->wake(id.index);
+    if (impl_->def.enable_sleep && b.type == BodyType::static_body)
+        impl_->wake_touching(id.index);
 }
 void World::set_velocity(BodyId id, Vec2d v) {
     Body& b = impl_->body(id);
     require_finite("velocity", v);
     if (b.type != BodyType::static_body)
         b.v = v;
+    impl_->wake(id.index);
 }
 void World::set_angular_velocity(BodyId id, double omega) {
     Body& b = impl_->body(id);
     require_finite("angular_velocity", omega);
     if (b.type != BodyType::static_body)
         b.w = omega;
+    impl_->wake(id.index);
 }
 void World::set_force(BodyId id, Vec2d force) {
     Body& b = impl_->body(id);
     require_finite("force", force);
     b.force = force;
+    impl_->wake(id.index);
 }
 void World::set_torque(BodyId id, double torque) {
     Body& b = impl_->body(id);
     require_finite("torque", torque);
     b.torque = torque;
+    impl_->wake(id.index);
 }
 void World::apply_force(BodyId id, Vec2d force, Vec2d world_point) {
     Body& b = impl_->body(id);
@@ -777,11 +905,13 @@ void World::apply_force(BodyId id, Vec2d force, Vec2d world_point) {
     b.torque_once += model::dd13::torque(bridge::typed<u::Length>(world_point - b.center),
                                          bridge::typed<u::Force>(force))
                          .value();
+    impl_->wake(id.index);
 }
 void World::apply_torque(BodyId id, double torque) {
     Body& b = impl_->body(id);
     require_finite("torque", torque);
     b.torque_once += torque;
+    impl_->wake(id.index);
 }
 void World::apply_impulse(BodyId id, Vec2d impulse, Vec2d world_point) {
     Body& b = impl_->body(id);
@@ -789,6 +919,7 @@ void World::apply_impulse(BodyId id, Vec2d impulse, Vec2d world_point) {
     require_finite("world_point", world_point);
     if (b.type != BodyType::dynamic)
         return;
+    impl_->wake(id.index);
     const double magnitude = length(impulse);
     if (magnitude == 0.0)
         return;
@@ -806,6 +937,26 @@ void World::set_load(BodyId id, LoadFunction load) {
     LoadFunction& old = impl_->body_settings[id.index].load;
     impl_->loaded_bodies += (load ? 1 : 0) - (old ? 1 : 0);
     old = std::move(load);
+    impl_->wake(id.index);
+}
+
+bool World::is_awake(BodyId id) const {
+    return impl_->body(id).type != BodyType::static_body && impl_->sleep_states[id.index].awake;
+}
+void World::set_awake(BodyId id, bool awake) {
+    Body& b = impl_->body(id);
+    if (awake) {
+        impl_->wake(id.index);
+        return;
+    }
+    if (!impl_->def.enable_sleep || b.type == BodyType::static_body)
+        return; // with sleeping off every body stays awake
+    impl_->sleep_states[id.index].awake = false;
+    impl_->sleep_states[id.index].sleep_time = 0.0;
+    b.v = {};
+    b.w = 0.0;
+    b.force_once = {};
+    b.torque_once = 0.0;
 }
 
 double World::kinetic_energy() const {
@@ -957,6 +1108,11 @@ std::uint64_t World::state_hash() const {
         hs(b.inv_inertia);
         hs(b.gravity_scale);
         hs(std::uint64_t(set.fixed_rotation) << 1 | std::uint64_t(bool(set.load)));
+        if (w.def.enable_sleep) { // (so that worlds without sleeping hash as they always did)
+            const SleepState& st = w.sleep_states[i];
+            hs(st.sleep_time);
+            hs(std::uint64_t(st.awake) << 1 | std::uint64_t(st.enabled));
+        }
         hs.bytes(set.name.data(), set.name.size());
         for (std::uint32_t s = b.first_shape; s != null_index; s = w.shapes[s].next)
             hs(std::uint64_t(s));

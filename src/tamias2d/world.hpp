@@ -86,6 +86,18 @@ class World {
     /// Time-varying load F(t), tau(t); an empty function removes it.
     void set_load(BodyId body, LoadFunction load);
 
+    // --- sleeping (WorldDef::enable_sleep) ---
+    /// Every call above that changes a body's transform, velocities or loads wakes it, and with
+    /// it, at the next step, every body touching it. Adding a shape to a sleeping body leaves
+    /// it asleep (so that a scene can be built asleep, BodyDef::awake); destroying a shape or a
+    /// body wakes every body it touched.
+    /// False for static bodies; true for all others while sleeping is off.
+    bool is_awake(BodyId body) const;
+    /// Puts the body to sleep (velocities and one-step loads zero; no effect with sleeping off
+    /// or on a static body), or wakes it. A body put to sleep that touches an awake one wakes
+    /// again at the next step.
+    void set_awake(BodyId body, bool awake);
+
     // --- energy and momentum (SRS 5.2.7) ---
     double kinetic_energy() const;   ///< J, DD15 incl. rotation, all bodies
     double potential_energy() const; ///< J, DD16 with the world's gravity, origin as reference

@@ -23,6 +23,17 @@ struct WorldDef {
     double speculative_distance = 0.02;
     /// Restitution (DD12) applies when the bodies approach faster than this (m s^-1).
     double restitution_threshold = 0.0;
+    /// Sleeping (dynamics/sleep.hpp): a group of touching bodies that has stayed slower than
+    /// both tolerances for time_to_sleep (s) is held still, and its bodies and contacts take no
+    /// solver or narrow-phase work, until something wakes it (an awake body touches one of
+    /// them, or the API changes one). Off by default: a sleeping body is not integrated by
+    /// IM1/IM2 (at rest, gravity and its supports' impulses cancel, within the tolerances), and
+    /// the SRS's results and the benchmark (sleeping off in every engine) are for bodies that
+    /// never sleep.
+    bool enable_sleep = false;
+    double time_to_sleep = 0.5;             ///< s
+    double linear_sleep_tolerance = 0.05;   ///< m s^-1
+    double angular_sleep_tolerance = 0.035; ///< rad s^-1 (2 degrees per second)
 };
 
 } // namespace tamias2d

@@ -22,7 +22,8 @@ const char* const full_scene = R"({
   "description": "every field",
   "world": { "gravity": [0.5, -10], "substeps": 8, "contact_hertz": 40,
              "contact_damping_ratio": 5, "contact_push_max_velocity": 2, "linear_slop": 0.004,
-             "speculative_distance": 0.03, "restitution_threshold": 0.5 },
+             "speculative_distance": 0.03, "restitution_threshold": 0.5, "enable_sleep": true,
+             "time_to_sleep": 0.75, "linear_sleep_tolerance": 0.02, "angular_sleep_tolerance": 0.01 },
   "dt": "1/120",
   "steps": 240,
   "output_every": 12,
@@ -33,7 +34,8 @@ const char* const full_scene = R"({
       "shapes": [ { "type": "box", "width": 40, "height": 2 } ] },
     { "name": "crate", "type": "dynamic", "position": [1.5, 2.5], "angle": 0.25,
       "velocity": [2.51, -1], "angular_velocity": 2.1, "mass": 56.2, "inertia": 74.5,
-      "gravity_scale": 0.5, "fixed_rotation": false, "force": [98.1, 0], "torque": 200,
+      "gravity_scale": 0.5, "fixed_rotation": false, "enable_sleep": false, "awake": false,
+      "force": [98.1, 0], "torque": 200,
       "loads": { "force_x": 3,
                  "force_y": { "kind": "sinusoid", "amplitude": 2, "omega": 3, "phase": 0.5, "offset": 1 },
                  "torque": { "kind": "ramp", "t0": 1, "t1": 3, "from": 0, "to": 4 } },
@@ -73,6 +75,10 @@ void check_same(const Scene& a, const Scene& b) {
     BOOST_TEST(a.world.substeps == b.world.substeps);
     BOOST_TEST(a.world.contact_hertz == b.world.contact_hertz);
     BOOST_TEST(a.world.linear_slop == b.world.linear_slop);
+    BOOST_TEST(a.world.enable_sleep == b.world.enable_sleep);
+    BOOST_TEST(a.world.time_to_sleep == b.world.time_to_sleep);
+    BOOST_TEST(a.world.linear_sleep_tolerance == b.world.linear_sleep_tolerance);
+    BOOST_TEST(a.world.angular_sleep_tolerance == b.world.angular_sleep_tolerance);
     BOOST_TEST_REQUIRE(a.bodies.size() == b.bodies.size());
     for (std::size_t i = 0; i < a.bodies.size(); ++i) {
         BOOST_TEST_CONTEXT("body " << i) {
@@ -92,6 +98,8 @@ void check_same(const Scene& a, const Scene& b) {
             BOOST_TEST((x.inertia == y.inertia));
             BOOST_TEST(x.gravity_scale == y.gravity_scale);
             BOOST_TEST(x.fixed_rotation == y.fixed_rotation);
+            BOOST_TEST(x.enable_sleep == y.enable_sleep);
+            BOOST_TEST(x.awake == y.awake);
             BOOST_TEST((a.bodies[i].loads == b.bodies[i].loads));
             BOOST_TEST_REQUIRE(a.bodies[i].shapes.size() == b.bodies[i].shapes.size());
             for (std::size_t s = 0; s < a.bodies[i].shapes.size(); ++s) {
@@ -135,6 +143,10 @@ BOOST_AUTO_TEST_CASE(every_field_reaches_the_scene,
     BOOST_TEST(s.world.linear_slop == 0.004);
     BOOST_TEST(s.world.speculative_distance == 0.03);
     BOOST_TEST(s.world.restitution_threshold == 0.5);
+    BOOST_TEST(s.world.enable_sleep);
+    BOOST_TEST(s.world.time_to_sleep == 0.75);
+    BOOST_TEST(s.world.linear_sleep_tolerance == 0.02);
+    BOOST_TEST(s.world.angular_sleep_tolerance == 0.01);
     BOOST_TEST(s.materials.size() == 2u);
     BOOST_TEST_REQUIRE(s.bodies.size() == 3u);
 
@@ -170,6 +182,10 @@ BOOST_AUTO_TEST_CASE(every_field_reaches_the_scene,
     BOOST_TEST(*d.inertia == 74.5);
     BOOST_TEST(d.gravity_scale == 0.5);
     BOOST_TEST(!d.fixed_rotation);
+    BOOST_TEST(!d.enable_sleep);
+    BOOST_TEST(!d.awake);
+    BOOST_TEST(ground.def.enable_sleep); // omitted: the defaults
+    BOOST_TEST(ground.def.awake);
     BOOST_TEST(d.force.x == 98.1);
     BOOST_TEST(d.torque == 200.0);
     BOOST_TEST(bool(d.load));

@@ -1,7 +1,7 @@
 // Google Benchmark views of a step's stages, for interactive profiling (not run by the job:
 // tamias_bench is the evidence): the broad phase's pair search, the narrow phase on a pair of
-// boxes, and whole steps of the benchmark's scenes. The contact solver's loop has its own binary
-// (tamias_typing_gbench). For example:
+// boxes, whole steps of the benchmark's scenes, and of a pyramid with sleeping off and asleep. The
+// contact solver's loop has its own binary (tamias_typing_gbench). For example:
 //   build/verification/bench/tamias_stage_gbench --benchmark_repetitions=5
 //   build/verification/bench/tamias_stage_gbench --benchmark_filter=broad_phase
 #include <benchmark/benchmark.h>
@@ -16,6 +16,8 @@
 #include "tamias2d/collision/collider.hpp"
 #include "tamias2d/collision/narrow_phase.hpp"
 #include "tamias2d/geometry/shape_factory.hpp"
+#include "tamias2d/io/scene_generators.hpp"
+#include "tamias2d/world.hpp"
 #include "tamias2d/world_def.hpp"
 
 namespace {
@@ -101,6 +103,37 @@ BENCHMARK_CAPTURE(world_step, pyramid20, tamias_bench::make_pyramid("pyramid20",
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(world_step, pyramid40, tamias_bench::make_pyramid("pyramid40", 40))
     ->Name("world/step/pyramid40")
+    ->Unit(benchmark::kMillisecond);
+
+/// Whole steps of the library's base-40 pyramid (io::generate_pyramid) with sleeping off, or on
+/// and after the pyramid has fallen asleep: what a settled scene costs when it sleeps.
+void world_step_sleep(benchmark::State& state, bool sleep) {
+    tamias2d::WorldDef def;
+    def.enable_sleep = sleep;
+    tamias2d::World world(def);
+    tamias2d::io::PyramidParams p;
+    p.base = 40;
+    for (const tamias2d::io::SceneBody& sb : tamias2d::io::generate_pyramid(p)) {
+        const tamias2d::BodyId id = world.create_body(sb.def);
+        for (const tamias2d::ShapeDef& shape : sb.shapes)
+            world.create_shape(id, shape);
+    }
+    int awake = 1;
+    for (int i = 0; i < 1200 && (awake > 0 || i < 10); ++i) {
+        world.step(1.0 / 60.0);
+        awake = 0;
+        for (tamias2d::BodyId b : world.bodies())
+            awake += world.is_awake(b) && world.type(b) == tamias2d::BodyType::dynamic;
+    }
+    for (auto _ : state)
+        world.step(1.0 / 60.0);
+    state.counters["awake"] = awake;
+}
+BENCHMARK_CAPTURE(world_step_sleep, off, false)
+    ->Name("world/step/generated_pyramid40/sleep_off")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(world_step_sleep, asleep, true)
+    ->Name("world/step/generated_pyramid40/asleep")
     ->Unit(benchmark::kMillisecond);
 
 } // namespace

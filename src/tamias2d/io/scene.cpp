@@ -530,7 +530,8 @@ void claim_name(Ctx& ctx, const std::string& name, const std::string& ptr) {
 SceneBody parse_body(Ctx& ctx, const ojson& v, const std::string& ptr) {
     check_keys(ctx, v, ptr,
                {"name", "type", "position", "angle", "velocity", "angular_velocity", "mass",
-                "inertia", "gravity_scale", "fixed_rotation", "force", "torque", "loads", "shapes"},
+                "inertia", "gravity_scale", "fixed_rotation", "enable_sleep", "awake", "force",
+                "torque", "loads", "shapes"},
                "a body");
     SceneBody b;
     b.source = ptr;
@@ -548,6 +549,10 @@ SceneBody parse_body(Ctx& ctx, const ojson& v, const std::string& ptr) {
     opt_number(ctx, v, ptr, "gravity_scale", d.gravity_scale);
     if (const ojson* f = find(v, "fixed_rotation"))
         d.fixed_rotation = as_bool(ctx, *f, child(ptr, "fixed_rotation"), "fixed_rotation");
+    if (const ojson* e = find(v, "enable_sleep"))
+        d.enable_sleep = as_bool(ctx, *e, child(ptr, "enable_sleep"), "enable_sleep");
+    if (const ojson* a = find(v, "awake"))
+        d.awake = as_bool(ctx, *a, child(ptr, "awake"), "awake");
     if (const ojson* m = find(v, "mass")) {
         const double mass = as_number(ctx, *m, child(ptr, "mass"), "mass");
         if (!(mass > 0.0))
@@ -710,7 +715,8 @@ WorldDef parse_world(const Ctx& ctx, const ojson& v, const std::string& ptr) {
     check_keys(ctx, v, ptr,
                {"gravity", "substeps", "contact_hertz", "contact_damping_ratio",
                 "contact_push_max_velocity", "linear_slop", "speculative_distance",
-                "restitution_threshold"},
+                "restitution_threshold", "enable_sleep", "time_to_sleep", "linear_sleep_tolerance",
+                "angular_sleep_tolerance"},
                "world settings");
     WorldDef w;
     opt_vec2(ctx, v, ptr, "gravity", w.gravity); // DCI_g
@@ -725,6 +731,11 @@ WorldDef parse_world(const Ctx& ctx, const ojson& v, const std::string& ptr) {
     opt_number(ctx, v, ptr, "linear_slop", w.linear_slop);
     opt_number(ctx, v, ptr, "speculative_distance", w.speculative_distance);
     opt_number(ctx, v, ptr, "restitution_threshold", w.restitution_threshold);
+    if (const ojson* e = find(v, "enable_sleep"))
+        w.enable_sleep = as_bool(ctx, *e, child(ptr, "enable_sleep"), "enable_sleep");
+    opt_number(ctx, v, ptr, "time_to_sleep", w.time_to_sleep);
+    opt_number(ctx, v, ptr, "linear_sleep_tolerance", w.linear_sleep_tolerance);
+    opt_number(ctx, v, ptr, "angular_sleep_tolerance", w.angular_sleep_tolerance);
     return w;
 }
 
@@ -1082,7 +1093,11 @@ std::string scene_to_json(const Scene& scene, int indent) {
                   {"contact_push_max_velocity", w.contact_push_max_velocity},
                   {"linear_slop", w.linear_slop},
                   {"speculative_distance", w.speculative_distance},
-                  {"restitution_threshold", w.restitution_threshold}};
+                  {"restitution_threshold", w.restitution_threshold},
+                  {"enable_sleep", w.enable_sleep},
+                  {"time_to_sleep", w.time_to_sleep},
+                  {"linear_sleep_tolerance", w.linear_sleep_tolerance},
+                  {"angular_sleep_tolerance", w.angular_sleep_tolerance}};
     j["dt"] = scene.dt;
     j["steps"] = scene.steps;
     j["output_every"] = scene.output_every;
@@ -1109,6 +1124,8 @@ std::string scene_to_json(const Scene& scene, int indent) {
             o["inertia"] = *d.inertia;
         o["gravity_scale"] = d.gravity_scale;
         o["fixed_rotation"] = d.fixed_rotation;
+        o["enable_sleep"] = d.enable_sleep;
+        o["awake"] = d.awake;
         o["force"] = vec(d.force);
         o["torque"] = d.torque;
         if (!b.loads.empty()) {

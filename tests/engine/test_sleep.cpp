@@ -1,0 +1,370 @@
+// Sleeping (WorldDef::enable_sleep): islands of bodies at rest stop moving and cost nothing
+// until something wakes them. Off by default; the oracles are the rule itself (the tolerances
+// and time_to_sleep), the geometry of the scenes, and the same scene with sleeping off.
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "tamias2d/errors.hpp"
+#include "tamias2d/io/scene_generators.hpp"
+#include "tamias2d/world.hpp"
+
+namespace utf = boost::unit_test;
+using namespace tamias2d;
+
+namespace {
+
+constexpr double dt = 1.0 / 60.0;
+const Material rough{1.0, 0.0, 0.6};
+
+WorldDef def_with_sleep(bool on = true) {
+    WorldDef d;
+    d.gravity = {0.0, -10.0};
+    d.enable_sleep = on;
+    return d;
+}
+
+/// A static ground 40 m wide whose top face is y = 0.
+BodyId ground(World& w) {
+    BodyDef g;
+    g.type = BodyType::static_body;
+    g.position = {0.0, -0.5};
+    const BodyId id = w.create_body(g);
+    w.create_shape(id, box_shape(40.0, 1.0, rough));
+    return id;
+}
+
+/// A unit box with its centre at (x, y).
+BodyId box(World& w, double x, double y, BodyDef d = {}) {
+    d.position = {x, y};
+    const BodyId id = w.create_body(d);
+    w.create_shape(id, box_shape(1.0, 1.0, rough));
+    return id;
+}
+
+/// Steps until every listed body sleeps; the number of steps, or -1 after `limit`.
+int steps_until_asleep(World& w, const std::vector<BodyId>& ids, int limit) {
+    for (int i = 1; i <= limit; ++i) {
+        w.step(dt);
+        bool all = true;
+        for (BodyId b : ids)
+            all = all && !w.is_awake(b);
+        if (all)
+            return i;
+    }
+    return -1;
+}
+
+bool same_bits(Vec2d a, Vec2d b) {
+    return a.x == b.x && a.y == b.y;
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(sleeping)
+
+// Oracle: the rule (at rest for time_to_sleep) and the scene's geometry. A box dropped 0.5 m
+// falls for about 0.32 s, so it cannot be at rest, let alone asleep, before 0.5 s have passed;
+// asleep, it has no velocity, rests on the ground (centre 0.5 m up) and does not move at all.
+BOOST_AUTO_TEST_CASE(a_resting_box_falls_asleep_and_stays_put, *utf::label("NFR1")) {
+    World w(def_with_sleep());
+    ground(w);
+    const BodyId b = box(w, 0.0, 1.0);
+    BOOST_TEST(w.is_awake(b));
+    const int n = steps_until_asleep(w, {b}, 300);
+    BOOST_TEST_MESSAGE("asleep after " << n << " steps");
+    BOOST_TEST_REQUIRE(n > 0);
+    BOOST_TEST(n * dt >= w.settings().time_to_sleep + 0.3);
+    BOOST_TEST(w.velocity(b).x == 0.0);
+    BOOST_TEST(w.velocity(b).y == 0.0);
+    BOOST_TEST(w.angular_velocity(b) == 0.0);
+    BOOST_TEST(std::abs(w.position(b).y - 0.5) < 0.01);
+    const Vec2d at = w.position(b);
+    for (int i = 0; i < 120; ++i)
+        w.step(dt);
+    BOOST_TEST(!w.is_awake(b));
+    BOOST_TEST(same_bits(w.position(b), at));
+    BOOST_TEST(w.contacts().size() == 1u); // it still touches the ground
+}
+
+// Oracle: the same scene with sleeping off. Until a body sleeps, sleeping changes nothing: a
+// pyramid whose bodies never reach time_to_sleep moves bit for bit as without sleeping.
+BOOST_AUTO_TEST_CASE(sleeping_changes_nothing_until_a_body_sleeps, *utf::label("NFR1")) {
+    const auto run = [](bool on) {
+        WorldDef d = def_with_sleep(on);
+        d.time_to_sleep = 1e9;
+        World w(d);
+        io::PyramidParams p;
+        p.base = 8;
+        std::vector<BodyId> ids;
+        for (const io::SceneBody& sb : io::generate_pyramid(p)) {
+            ids.push_back(w.create_body(sb.def));
+            for (const ShapeDef& s : sb.shapes)
+                w.create_shape(ids.back(), s);
+        }
+        for (int i = 0; i < 200; ++i)
+            w.step(dt);
+        std::vector<double> out;
+        for (BodyId b : ids) {
+            out.insert(out.end(), {w.position(b).x, w.position(b).y, w.velocity(b).x,
+                                   w.velocity(b).y, w.angular_velocity(b)});
+        }
+        return out;
+    };
+    const std::vector<double> off = run(false), on = run(true);
+    BOOST_TEST_REQUIRE(off.size() == on.size());
+    int differ = 0;
+    for (std::size_t i = 0; i < off.size(); ++i)
+        differ += off[i] != on[i];
+    BOOST_TEST(differ == 0);
+}
+
+// Oracle: the wake rule. A box dropped onto a sleeping stack wakes the box it lands on, and
+// through the island the whole stack, in the step it first touches; once everything has been at
+// rest for time_to_sleep again, all four sleep.
+BOOST_AUTO_TEST_CASE(an_impact_wakes_the_sleeping_stack, *utf::label("NFR1")) {
+    World w(def_with_sleep());
+    ground(w);
+    const std::vector<BodyId> stack = {box(w, 0.0, 0.5), box(w, 0.0, 1.5), box(w, 0.0, 2.5)};
+    BOOST_TEST_REQUIRE(steps_until_asleep(w, stack, 600) > 0);
+    const BodyId dropped = box(w, 0.0, 5.0);
+    bool woke = false;
+    for (int i = 0; i < 120 && !woke; ++i) {
+        w.step(dt);
+        if (!w.contact_begin_events().empty()) {
+            woke = true;
+            for (BodyId b : stack)
+                BOOST_TEST(w.is_awake(b));
+        } else {
+            for (BodyId b : stack)
+                BOOST_TEST(!w.is_awake(b)); // nothing touched them yet
+        }
+    }
+    BOOST_TEST(woke);
+    std::vector<BodyId> all = stack;
+    all.push_back(dropped);
+    BOOST_TEST(steps_until_asleep(w, all, 900) > 0);
+    BOOST_TEST(std::abs(w.position(dropped).y - 3.5) < 0.05); // on top of the stack
+}
+
+// Oracle: the rule at its edge: with time_to_sleep 0 a body sleeps at the first step it ends
+// slower than the tolerances, and not before (a falling box is not slow). That may be in the
+// air, at the top of a small rebound: time_to_sleep is what guards against it.
+BOOST_AUTO_TEST_CASE(time_to_sleep_zero_still_needs_rest, *utf::label("NFR1")) {
+    WorldDef d = def_with_sleep();
+    d.time_to_sleep = 0.0;
+    World w(d);
+    ground(w);
+    const BodyId b = box(w, 0.0, 3.0);
+    bool landed = false;
+    int steps = 0;
+    while (w.is_awake(b) && steps < 300) {
+        w.step(dt);
+        ++steps;
+        landed = landed || !w.contact_begin_events().empty();
+    }
+    BOOST_TEST(!w.is_awake(b));
+    BOOST_TEST(landed); // it was never slow before it reached the ground
+    BOOST_TEST(steps > 1);
+}
+
+// Oracle: the API's contract (world.hpp): every call that changes a body's transform,
+// velocities or loads wakes it.
+BOOST_AUTO_TEST_CASE(api_calls_wake_a_sleeping_body, *utf::label("NFR1")) {
+    const std::vector<std::pair<const char*, std::function<void(World&, BodyId)>>> calls = {
+        {"set_velocity",
+         [](World& w, BodyId b) {
+             w.set_velocity(b, {0.0, 0.0});
+         }},
+        {"set_angular_velocity", [](World& w, BodyId b) { w.set_angular_velocity(b, 0.0); }},
+        {"set_force",
+         [](World& w, BodyId b) {
+             w.set_force(b, {0.0, 0.0});
+         }},
+        {"set_torque", [](World& w, BodyId b) { w.set_torque(b, 0.0); }},
+        {"apply_force",
+         [](World& w, BodyId b) {
+             w.apply_force(b, {1.0, 0.0}, w.position(b));
+         }},
+        {"apply_torque", [](World& w, BodyId b) { w.apply_torque(b, 1.0); }},
+        {"apply_impulse",
+         [](World& w, BodyId b) {
+             w.apply_impulse(b, {1.0, 0.0}, w.position(b));
+         }},
+        {"set_transform", [](World& w, BodyId b) { w.set_transform(b, w.origin(b), 0.0); }},
+        {"set_load", [](World& w, BodyId b) { w.set_load(b, {}); }},
+        {"set_awake", [](World& w, BodyId b) { w.set_awake(b, true); }},
+        {"set_gravity",
+         [](World& w, BodyId) {
+             w.set_gravity({0.0, -10.0});
+         }},
+    };
+    for (const auto& [name, call] : calls) {
+        BOOST_TEST_CONTEXT(name) {
+            World w(def_with_sleep());
+            ground(w);
+            const BodyId b = box(w, 0.0, 0.5);
+            BOOST_TEST_REQUIRE(steps_until_asleep(w, {b}, 300) > 0);
+            call(w, b);
+            BOOST_TEST(w.is_awake(b));
+        }
+    }
+}
+
+// Oracle: the wake rule for lost support, and free fall (the box falls 1 m to the ground).
+// Destroying the box under a sleeping box, or moving the static ground away, wakes what rested
+// on it, which then falls.
+BOOST_AUTO_TEST_CASE(removing_the_support_wakes_what_rests_on_it, *utf::label("NFR1")) {
+    {
+        World w(def_with_sleep());
+        ground(w);
+        const BodyId lower = box(w, 0.0, 0.5), upper = box(w, 0.0, 1.5);
+        BOOST_TEST_REQUIRE(steps_until_asleep(w, {lower, upper}, 600) > 0);
+        w.destroy_body(lower);
+        BOOST_TEST(w.is_awake(upper));
+        for (int i = 0; i < 120; ++i)
+            w.step(dt);
+        BOOST_TEST(std::abs(w.position(upper).y - 0.5) < 0.01);
+    }
+    {
+        World w(def_with_sleep());
+        const BodyId g = ground(w);
+        const BodyId b = box(w, 0.0, 0.5);
+        BOOST_TEST_REQUIRE(steps_until_asleep(w, {b}, 300) > 0);
+        w.set_transform(g, {100.0, -0.5}, 0.0); // the ground goes: the box must fall
+        BOOST_TEST(w.is_awake(b));
+        for (int i = 0; i < 30; ++i)
+            w.step(dt);
+        BOOST_TEST(w.position(b).y < 0.0);
+    }
+}
+
+// Oracle: the rule's exceptions. A body that may not sleep keeps its island awake, and a body
+// with a persistent load is never at rest.
+BOOST_AUTO_TEST_CASE(what_may_not_sleep_keeps_its_island_awake, *utf::label("NFR1")) {
+    World w(def_with_sleep());
+    ground(w);
+    BodyDef restless;
+    restless.enable_sleep = false;
+    const BodyId lower = box(w, 0.0, 0.5, restless), upper = box(w, 0.0, 1.5);
+    const BodyId alone = box(w, 5.0, 0.5);
+    BodyDef pushed;
+    pushed.force = {0.1, 0.0}; // less than friction can hold: it stays at rest
+    const BodyId held = box(w, -5.0, 0.5, pushed);
+    for (int i = 0; i < 300; ++i)
+        w.step(dt);
+    BOOST_TEST(w.is_awake(lower));
+    BOOST_TEST(w.is_awake(upper));
+    BOOST_TEST(w.is_awake(held));
+    BOOST_TEST(!w.is_awake(alone));
+}
+
+// Oracle: the API's contract. With sleeping on, a body defined asleep hangs where it is until
+// woken; set_awake(false) does the same to a falling body; with sleeping off both are ignored.
+BOOST_AUTO_TEST_CASE(bodies_put_to_sleep_wait_to_be_woken, *utf::label("NFR1")) {
+    BodyDef asleep;
+    asleep.awake = false;
+    {
+        World w(def_with_sleep());
+        const BodyId b = box(w, 0.0, 10.0, asleep);
+        const BodyId c = box(w, 5.0, 10.0);
+        w.step(dt);
+        w.set_awake(c, false);
+        for (int i = 0; i < 30; ++i)
+            w.step(dt);
+        BOOST_TEST(!w.is_awake(b));
+        BOOST_TEST(w.position(b).y == 10.0);
+        BOOST_TEST(!w.is_awake(c));
+        const double c_y = w.position(c).y;
+        w.set_awake(b, true);
+        w.step(dt);
+        BOOST_TEST(w.position(b).y < 10.0);
+        BOOST_TEST(w.position(c).y == c_y);
+    }
+    {
+        World w(def_with_sleep(false));
+        const BodyId b = box(w, 0.0, 10.0, asleep);
+        w.set_awake(b, false);
+        w.step(dt);
+        BOOST_TEST(w.is_awake(b));
+        BOOST_TEST(w.position(b).y < 10.0);
+    }
+}
+
+// Oracle: a kinematic body's given motion. A moving kinematic body that reaches a sleeping box
+// wakes it and pushes it along; a kinematic body at rest falls asleep like any other.
+BOOST_AUTO_TEST_CASE(kinematic_bodies_wake_what_they_reach, *utf::label("NFR1")) {
+    World w(def_with_sleep());
+    ground(w);
+    const BodyId b = box(w, 0.0, 0.5);
+    BodyDef still;
+    still.type = BodyType::kinematic;
+    const BodyId parked = box(w, 10.0, 3.0, still);
+    BOOST_TEST_REQUIRE(steps_until_asleep(w, {b, parked}, 300) > 0);
+    BodyDef pusher;
+    pusher.type = BodyType::kinematic;
+    pusher.linear_velocity = {2.0, 0.0};
+    const BodyId k = box(w, -3.0, 0.5, pusher);
+    for (int i = 0; i < 120; ++i)
+        w.step(dt);
+    BOOST_TEST(w.is_awake(k));
+    BOOST_TEST(w.is_awake(b));
+    BOOST_TEST(w.position(b).x > 0.5); // pushed
+}
+
+// Oracle: determinism (the brief's standard): the same input gives the same bits, sleeping on.
+BOOST_AUTO_TEST_CASE(sleeping_is_deterministic, *utf::label("NFR1")) {
+    const auto run = [] {
+        World w(def_with_sleep());
+        io::RainParams p;
+        p.count = 120;
+        p.container.width = 6.0;
+        for (const io::SceneBody& sb : io::generate_rain(p)) {
+            const BodyId id = w.create_body(sb.def);
+            for (const ShapeDef& s : sb.shapes)
+                w.create_shape(id, s);
+        }
+        int asleep = 0;
+        for (int i = 0; i < 600; ++i)
+            w.step(dt);
+        for (BodyId b : w.bodies())
+            asleep += w.type(b) == BodyType::dynamic && !w.is_awake(b);
+        return std::pair{w.state_hash(), asleep};
+    };
+    const auto [h1, asleep] = run();
+    const auto [h2, asleep2] = run();
+    BOOST_TEST(h1 == h2);
+    BOOST_TEST(asleep == asleep2);
+    BOOST_TEST_MESSAGE(asleep << " of 120 rain boxes asleep after 10 s");
+    BOOST_TEST(asleep > 0);
+}
+
+// Oracle: data constraints (R4): the sleep settings are non-negative and finite, and an error
+// names the field.
+BOOST_AUTO_TEST_CASE(sleep_settings_are_validated, *utf::label("R4")) {
+    const auto field_of = [](WorldDef d) -> std::string {
+        try {
+            World w(d);
+        } catch (const ValidationError& e) {
+            return e.field;
+        }
+        return "";
+    };
+    WorldDef d = def_with_sleep();
+    d.time_to_sleep = -1.0;
+    BOOST_TEST(field_of(d) == "world.time_to_sleep");
+    d = def_with_sleep();
+    d.linear_sleep_tolerance = std::numeric_limits<double>::quiet_NaN();
+    BOOST_TEST(field_of(d) == "world.linear_sleep_tolerance");
+    d = def_with_sleep();
+    d.angular_sleep_tolerance = std::numeric_limits<double>::infinity();
+    BOOST_TEST(field_of(d) == "world.angular_sleep_tolerance");
+}
+
+BOOST_AUTO_TEST_SUITE_END()
