@@ -116,16 +116,19 @@ struct World::Impl {
 
     BodyId body_id(std::uint32_t i) const { return {i, body_generation[i]}; }
 
-    /// Moves this step: not static, and awake (every such body is, with sleeping off).
-    bool active(std::uint32_t i) const {
-        return bodies[i].type != BodyType::static_body && sleep_states[i].awake;
+    /// Moves this step: alive, not static, and awake (every such body is, with sleeping off).
+    bool active(std::uint32_t i) const { return sleep_states[i].awake; }
+    bool any_awake() const {
+        return std::any_of(sleep_states.begin(), sleep_states.end(),
+                           [](const SleepState& st) { return st.awake; });
     }
     /// Wakes the body (and so, at the next step, its island); its time at rest starts again.
     void wake(std::uint32_t i) {
-        if (bodies[i].type == BodyType::static_body)
+        SleepState& st = sleep_states[i];
+        if (!st.movable)
             return;
-        sleep_states[i].awake = true;
-        sleep_states[i].sleep_time = 0.0;
+        st.awake = true;
+        st.sleep_time = 0.0;
     }
     /// Wakes every body touching body i: what keeps them up may have gone (a static body does
     /// not move in a step, so its contacts with sleeping bodies are not updated).
@@ -215,11 +218,13 @@ struct World::Impl {
             contacts[i] = contacts[last];
             warm_impulses[i] = warm_impulses[last];
             total_impulses[i] = total_impulses[last];
+            edge_inputs[i] = edge_inputs[last];
             contact_index.assign(Contact::key(contacts[i].shape_a, contacts[i].shape_b), i);
         }
         contacts.pop_back();
         warm_impulses.pop_back();
         total_impulses.pop_back();
+        edge_inputs.pop_back();
     }
 
     void destroy_contacts_of_shape(std::uint32_t s) {
@@ -293,18 +298,19 @@ struct World::Impl {
         for (std::uint32_t i = 0; i < count; ++i) {
             if (i + ahead < count) {
                 const Contact& next = contacts[i + ahead];
-                for (const Shape* s : {&shapes[next.shape_a], &shapes[next.shape_b]}) {
-                    __builtin_prefetch(&s->fat_box);
-                    __builtin_prefetch(&s->body_xf);
-                    __builtin_prefetch(&s->collider.pairs[0]);
-                    __builtin_prefetch(&s->collider.pairs[1]);
+                // (A contact kept as it is, below, reads no shape.)
+                if (!sleeping || active(next.body_a) || active(next.body_b)) {
+                    for (const Shape* s : {&shapes[next.shape_a], &shapes[next.shape_b]}) {
+                        __builtin_prefetch(&s->fat_box);
+                        __builtin_prefetch(&s->body_xf);
+                        __builtin_prefetch(&s->collider.pairs[0]);
+                        __builtin_prefetch(&s->collider.pairs[1]);
+                    }
                 }
             }
             Contact& c = contacts[i];
-            if (sleeping && !active(c.body_a) && !active(c.body_b)) {
-                edge_inputs[i] = edge_input(c);
-                continue;
-            }
+            if (sleeping && !active(c.body_a) && !active(c.body_b))
+                continue; // its edge input stands too, from its last update
             const Shape& sa = shapes[c.shape_a];
             const Shape& sb = shapes[c.shape_b];
             if (!overlaps(sa.fat_box, sb.fat_box)) {
@@ -353,11 +359,8 @@ struct World::Impl {
             }
         }
         // Descending, so swap-removal never moves a contact that is still to be removed.
-        for (auto it = doomed.rbegin(); it != doomed.rend(); ++it) {
+        for (auto it = doomed.rbegin(); it != doomed.rend(); ++it)
             destroy_contact(*it); // moves the last contact into the gap
-            edge_inputs[*it] = edge_inputs.back();
-            edge_inputs.pop_back();
-        }
     }
 
     /// A manifold as the solver takes it, before preparation: bodies, normal, materials, anchors,
@@ -396,8 +399,8 @@ struct World::Impl {
         for (std::uint32_t i = 0; i < bodies.size(); ++i) {
             Body& b = bodies[i];
             // A sleeping body is immovable this step, as a static one is.
-            if (!b.alive || b.type == BodyType::static_body ||
-                (def.enable_sleep && !sleep_states[i].awake)) {
+            if ((def.enable_sleep && !sleep_states[i].awake) || !b.alive ||
+                b.type == BodyType::static_body) {
                 solver_index[i] = 0;
                 continue;
             }
@@ -522,13 +525,15 @@ struct World::Impl {
         // (The vertex lines are read only by a shape the header's bound cannot decide.)
         constexpr std::uint32_t body_ahead = 16, shape_ahead = 8;
         const auto body_count = std::uint32_t(bodies.size());
+        // Solver body 0 stands for the bodies that did not move: static, asleep or destroyed
+        // (their lines are neither asked for nor read).
         for (std::uint32_t i = 0; i < body_count; ++i) {
-            if (i + body_ahead < body_count) {
+            if (i + body_ahead < body_count && solver_index[i + body_ahead] != 0) {
                 const char* p = reinterpret_cast<const char*>(&bodies[i + body_ahead]);
                 for (std::size_t line = 0; line < sizeof(Body); line += 64)
                     __builtin_prefetch(p + line);
             }
-            if (i + shape_ahead < body_count) {
+            if (i + shape_ahead < body_count && solver_index[i + shape_ahead] != 0) {
                 const std::uint32_t s = bodies[i + shape_ahead].first_shape;
                 if (s != null_index) {
                     const Shape& sh = shapes[s];
@@ -536,9 +541,9 @@ struct World::Impl {
                     __builtin_prefetch(&sh.body_xf);
                 }
             }
+            if (solver_index[i] == 0)
+                continue;
             Body& b = bodies[i];
-            if (!b.alive || b.type == BodyType::static_body || solver_index[i] == 0)
-                continue; // (solver body 0: asleep)
             const SolverBody& sb = solver_bodies[solver_index[i]];
             b.v = sb.v;
             b.w = sb.w;
@@ -558,20 +563,21 @@ struct World::Impl {
     /// Sleeping: the islands of this step's touching contacts; an island with an awake body
     /// wakes whole (a body met a sleeping one, or was changed through the API).
     void wake_islands() {
+        if (!any_awake())
+            return; // a settled world: nothing can wake
         islands.reset(bodies.size());
         for (std::size_t i = 0; i < contacts.size(); ++i) {
             const Contact& c = contacts[i];
-            if (c.touching && bodies[c.body_a].type != BodyType::static_body &&
-                bodies[c.body_b].type != BodyType::static_body)
+            if (c.touching && sleep_states[c.body_a].movable && sleep_states[c.body_b].movable)
                 islands.unite(c.body_a, c.body_b);
         }
         island_awake.assign(bodies.size(), 0);
         for (std::uint32_t i = 0; i < bodies.size(); ++i) {
-            if (bodies[i].alive && active(i))
+            if (active(i))
                 island_awake[islands.find(i)] = 1;
         }
         for (std::uint32_t i = 0; i < bodies.size(); ++i) {
-            if (bodies[i].alive && !active(i) && island_awake[islands.find(i)])
+            if (sleep_states[i].movable && !active(i) && island_awake[islands.find(i)])
                 wake(i);
         }
     }
@@ -580,9 +586,11 @@ struct World::Impl {
     /// have all been at rest for time_to_sleep falls asleep (velocities zero: they no longer
     /// move). A body that may not sleep, or carries a persistent load, is never at rest.
     void update_sleep(double dt) {
+        if (!any_awake())
+            return; // all asleep: nothing to time
         island_rest.assign(bodies.size(), std::numeric_limits<double>::infinity());
         for (std::uint32_t i = 0; i < bodies.size(); ++i) {
-            if (!bodies[i].alive || !active(i))
+            if (!active(i))
                 continue;
             const Body& b = bodies[i];
             SleepState& st = sleep_states[i];
@@ -596,10 +604,10 @@ struct World::Impl {
             island = std::min(island, rest ? st.sleep_time : -1.0); // -1: not at rest now
         }
         for (std::uint32_t i = 0; i < bodies.size(); ++i) {
-            if (!bodies[i].alive || !active(i) ||
-                !(island_rest[islands.find(i)] >= def.time_to_sleep))
+            if (!active(i) || !(island_rest[islands.find(i)] >= def.time_to_sleep))
                 continue;
-            sleep_states[i] = {0.0, false, sleep_states[i].enabled};
+            sleep_states[i].awake = false;
+            sleep_states[i].sleep_time = 0.0;
             bodies[i].v = {};
             bodies[i].w = 0.0;
         }
@@ -664,7 +672,9 @@ BodyId World::create_body(const BodyDef& def) {
     b.gravity_scale = def.gravity_scale;
     w.body_settings[i] = {def.name, def.load, def.mass, def.inertia, def.fixed_rotation};
     // With sleeping off every body is awake, whatever its definition asks.
-    w.sleep_states[i] = {0.0, def.awake || !w.def.enable_sleep, def.enable_sleep};
+    const bool movable = def.type != BodyType::static_body;
+    w.sleep_states[i] = {0.0, movable && (def.awake || !w.def.enable_sleep), def.enable_sleep,
+                         movable};
     w.loaded_bodies += def.load ? 1 : 0;
     w.update_mass(i);
     return {i, generation};
@@ -681,6 +691,7 @@ void World::destroy_body(BodyId id) {
     }
     b.first_shape = null_index;
     b.alive = false;
+    w.sleep_states[id.index] = SleepState{}; // neither awake nor movable
     BodySettings& set = w.body_settings[id.index];
     w.loaded_bodies -= set.load ? 1 : 0;
     set = BodySettings{};
@@ -783,18 +794,22 @@ void World::step(double dt) {
     w.begin_events.clear();
     w.end_events.clear();
     w.find_new_contacts();
-    if (w.def.enable_sleep) {
+    if (w.def.enable_sleep && !w.any_awake()) {
+        // Every body asleep: every contact is kept as it is (a new one, of a static body moved
+        // onto sleeping ones, too) and nothing is solved; the step does only this.
+        w.edge_inputs.resize(w.contacts.size());
+    } else if (w.def.enable_sleep) {
         // The islands need this step's touching contacts, and the solver bodies the islands.
         w.update_contacts();
         w.wake_islands();
         w.prepare_bodies();
+        w.solve(dt);
+        w.update_sleep(dt);
     } else {
         w.prepare_bodies();
         w.update_contacts();
+        w.solve(dt);
     }
-    w.solve(dt);
-    if (w.def.enable_sleep)
-        w.update_sleep(dt);
     // Compensated sum, so that a load switching at t = n dt is seen at step n, not n + 1.
     const double y = dt - w.time_error;
     const double t = w.time + y;
@@ -941,7 +956,8 @@ void World::set_load(BodyId id, LoadFunction load) {
 }
 
 bool World::is_awake(BodyId id) const {
-    return impl_->body(id).type != BodyType::static_body && impl_->sleep_states[id.index].awake;
+    impl_->body(id); // handle check
+    return impl_->sleep_states[id.index].awake;
 }
 void World::set_awake(BodyId id, bool awake) {
     Body& b = impl_->body(id);

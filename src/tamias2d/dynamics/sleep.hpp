@@ -14,11 +14,13 @@
 
 namespace tamias2d {
 
-/// A body's sleep state (the world keeps one per body, indexed alike).
+/// A body's sleep state (the world keeps one per body, indexed alike, so that the step's sweeps
+/// over sleeping bodies read these 16 bytes and not the bodies).
 struct SleepState {
     double sleep_time = 0.0; ///< s at rest without a break (0 while it may not sleep)
-    bool awake = true;
-    bool enabled = true; ///< BodyDef::enable_sleep
+    bool awake = false;      ///< only a movable body is ever awake
+    bool enabled = true;     ///< BodyDef::enable_sleep
+    bool movable = false;    ///< alive and not static
 };
 
 /// At rest: slower than both tolerances (m s^-1, rad s^-1).
