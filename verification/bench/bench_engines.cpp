@@ -74,6 +74,7 @@ class TamiasEngine final : public Engine {
     static tamias2d::WorldDef world_def(const SceneDesc& s) {
         tamias2d::WorldDef def;
         def.gravity = {s.gravity.x, s.gravity.y};
+        def.enable_sleep = s.sleep; // time_to_sleep 0.5 s by default
         return def;
     }
     double dt_;
@@ -88,6 +89,8 @@ class ChipmunkEngine final : public Engine {
         cpSpaceSetIterations(space_, 10);
         cpSpaceSetGravity(space_, cpv(s.gravity.x, s.gravity.y));
         // Sleeping is off by default (sleep time threshold INFINITY); slop and bias as shipped.
+        if (s.sleep)
+            cpSpaceSetSleepTimeThreshold(space_, 0.5);
         bodies_.reserve(s.bodies.size());
         for (const BodyDesc& d : s.bodies) {
             cpBody* body = nullptr;
@@ -163,7 +166,7 @@ class Box2DEngine final : public Engine {
   public:
     explicit Box2DEngine(const SceneDesc& s)
         : dt_(f32(s.dt)), world_(b2Vec2(f32(s.gravity.x), f32(s.gravity.y))) {
-        world_.SetAllowSleeping(false);
+        world_.SetAllowSleeping(s.sleep); // b2_timeToSleep is 0.5 s
         bodies_.reserve(s.bodies.size());
         for (const BodyDesc& d : s.bodies) {
             b2BodyDef bd;

@@ -4,7 +4,7 @@
 //   tamias_bench [<out_dir>] [--scenes a,b,...] [--reps N] [--quick] [--engines a,b]
 //                [--budget-seconds S] [--no-typing]
 // Scenes: elastic2 pyramid20 pyramid40 large_pyramid rain rain_1k rain_2k rain_4k rain_8k
-// rain_16k ("scaling" names the rain_* series); engines: tamias chipmunk box2d.
+// rain_16k ("scaling" names the rain_* series) pyramid40_sleep; engines: tamias chipmunk box2d.
 //
 // Writes <out_dir>/benchmark.json (schema: traceability/vvdata.py) and prints a table. Method
 // (docs/performance.md): every engine builds the same SceneDesc; repetitions alternate the
@@ -99,6 +99,15 @@ std::vector<SceneSpec> all_scenes() {
     s.push_back(
         {"large_pyramid", [] { return make_pyramid("large_pyramid", 100); }, true, 10, 40, 8});
     s.push_back({"rain", [] { return make_rain("rain", 2000); }, false, 0, 1000, 300});
+    // Not one of the scenes (they have sleeping off): pyramid40 with sleeping on in every
+    // engine, timed after 10 s untimed, which is what a settled level costs a game.
+    s.push_back({"pyramid40_sleep",
+                 [] {
+                     SceneDesc d = make_pyramid("pyramid40_sleep", 40);
+                     d.sleep = true;
+                     return d;
+                 },
+                 true, 600, 100, 20});
     for (const int k : {1, 2, 4, 8, 16}) {
         const std::string name = "rain_" + std::to_string(k) + "k";
         // The same 100 steps with --quick: fewer would time only the free fall, whose cost
@@ -915,14 +924,16 @@ int main(int argc, char** argv) {
                                         TAMIAS_BENCH_BUILD_TYPE + " " + TAMIAS_BENCH_CXX_FLAGS},
             {"Chipmunk", "7.0.3, Debian libchipmunk7 as packaged (built without NDEBUG: its "
                          "debug checks run), doubles, 10 iterations, default slop and bias, "
-                         "sleeping off"},
+                         "sleeping off (pyramid40_sleep: sleep time threshold 0.5 s)"},
             {"Box2D", "2.4.1, Debian libbox2d2 as packaged, float, 8 velocity / 3 position "
-                      "iterations, continuous collision on (default), sleeping off"},
-            {"Tamias2D", "WorldDef defaults (4 substeps, soft contacts), doubles"},
+                      "iterations, continuous collision on (default), sleeping off "
+                      "(pyramid40_sleep: on, b2_timeToSleep 0.5 s)"},
+            {"Tamias2D", "WorldDef defaults (4 substeps, soft contacts, sleeping off; "
+                         "pyramid40_sleep: on, time_to_sleep 0.5 s), doubles"},
             {"scenes", "dt 1/60 s, gravity (0, -10), unit boxes of density 1 (rain: 0.5 m), "
                        "friction 0.6 per pair, restitution 0 (elastic2: 1, no gravity)"},
-            {"steps", "pyramids: 10 untimed, then reps x timed block; rain, rain_* and "
-                      "elastic2: the whole run per rep (build untimed)"},
+            {"steps", "pyramids: 10 untimed (pyramid40_sleep: 600), then reps x timed block; "
+                      "rain, rain_* and elastic2: the whole run per rep (build untimed)"},
             {"time", "thread CPU time (wall time in the spread table)"},
             {"total wall time (s)", num(total_s, 3)}};
         json rows = json::array();
