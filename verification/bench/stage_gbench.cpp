@@ -134,7 +134,7 @@ BENCHMARK_CAPTURE(world_step_sleep, off, false)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(world_step_sleep, asleep, true)
     ->Name("world/step/generated_pyramid40/asleep")
-    ->Unit(benchmark::kMillisecond);
+    ->Unit(benchmark::kMicrosecond);
 
 } // namespace
 
