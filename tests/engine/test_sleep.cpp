@@ -5,12 +5,12 @@
 
 #include <cmath>
 #include <cstdint>
-#include <functional>
 #include <limits>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "support/body_changes.hpp"
 #include "tamias2d/errors.hpp"
 #include "tamias2d/io/scene_generators.hpp"
 #include "tamias2d/world.hpp"
@@ -177,34 +177,9 @@ BOOST_AUTO_TEST_CASE(time_to_sleep_zero_still_needs_rest, *utf::label("NFR1")) {
 // Oracle: the API's contract (world.hpp): every call that changes a body's transform,
 // velocities or loads wakes it.
 BOOST_AUTO_TEST_CASE(api_calls_wake_a_sleeping_body, *utf::label("NFR1")) {
-    const std::vector<std::pair<const char*, std::function<void(World&, BodyId)>>> calls = {
-        {"set_velocity",
-         [](World& w, BodyId b) {
-             w.set_velocity(b, {0.0, 0.0});
-         }},
-        {"set_angular_velocity", [](World& w, BodyId b) { w.set_angular_velocity(b, 0.0); }},
-        {"set_force",
-         [](World& w, BodyId b) {
-             w.set_force(b, {0.0, 0.0});
-         }},
-        {"set_torque", [](World& w, BodyId b) { w.set_torque(b, 0.0); }},
-        {"apply_force",
-         [](World& w, BodyId b) {
-             w.apply_force(b, {1.0, 0.0}, w.position(b));
-         }},
-        {"apply_torque", [](World& w, BodyId b) { w.apply_torque(b, 1.0); }},
-        {"apply_impulse",
-         [](World& w, BodyId b) {
-             w.apply_impulse(b, {1.0, 0.0}, w.position(b));
-         }},
-        {"set_transform", [](World& w, BodyId b) { w.set_transform(b, w.origin(b), 0.0); }},
-        {"set_load", [](World& w, BodyId b) { w.set_load(b, {}); }},
-        {"set_awake", [](World& w, BodyId b) { w.set_awake(b, true); }},
-        {"set_gravity",
-         [](World& w, BodyId) {
-             w.set_gravity({0.0, -10.0});
-         }},
-    };
+    std::vector<test::BodyCall> calls = test::body_changes();
+    calls.push_back({"set_awake", [](World& w, BodyId b) { w.set_awake(b, true); }});
+    calls.push_back({"set_gravity", [](World& w, BodyId) { w.set_gravity({0.0, -10.0}); }});
     for (const auto& [name, call] : calls) {
         BOOST_TEST_CONTEXT(name) {
             World w(def_with_sleep());

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "support/body_changes.hpp"
 #include "validation_support.hpp"
 
 namespace utf = boost::unit_test;
@@ -16,8 +17,9 @@ using namespace tamias2d::test;
 namespace {
 
 /// Every World member that takes a BodyId, called with `id`.
-std::vector<std::pair<std::string, std::function<void(World&, BodyId)>>> body_calls() {
-    return {
+std::vector<BodyCall> body_calls() {
+    std::vector<BodyCall> calls = body_changes();
+    std::vector<BodyCall> others = {
         {"state", [](World& w, BodyId id) { (void)w.state(id); }},
         {"position", [](World& w, BodyId id) { (void)w.position(id); }},
         {"origin", [](World& w, BodyId id) { (void)w.origin(id); }},
@@ -30,36 +32,13 @@ std::vector<std::pair<std::string, std::function<void(World&, BodyId)>>> body_ca
         {"type", [](World& w, BodyId id) { (void)w.type(id); }},
         {"name", [](World& w, BodyId id) { (void)w.name(id); }},
         {"shapes", [](World& w, BodyId id) { (void)w.shapes(id); }},
-        {"set_transform",
-         [](World& w, BodyId id) {
-             w.set_transform(id, {1.0, 1.0}, 0.5);
-         }},
-        {"set_velocity",
-         [](World& w, BodyId id) {
-             w.set_velocity(id, {1.0, 0.0});
-         }},
-        {"set_angular_velocity", [](World& w, BodyId id) { w.set_angular_velocity(id, 1.0); }},
-        {"set_force",
-         [](World& w, BodyId id) {
-             w.set_force(id, {1.0, 0.0});
-         }},
-        {"set_torque", [](World& w, BodyId id) { w.set_torque(id, 1.0); }},
-        {"apply_force",
-         [](World& w, BodyId id) {
-             w.apply_force(id, {1.0, 0.0}, {0.0, 0.0});
-         }},
-        {"apply_torque", [](World& w, BodyId id) { w.apply_torque(id, 1.0); }},
-        {"apply_impulse",
-         [](World& w, BodyId id) {
-             w.apply_impulse(id, {1.0, 0.0}, {0.0, 0.0});
-         }},
-        {"set_load",
-         [](World& w, BodyId id) { w.set_load(id, [](double) {
-                                       return Load{{1.0, 0.0}, 0.0};
-                                   }); }},
+        {"is_awake", [](World& w, BodyId id) { (void)w.is_awake(id); }},
+        {"set_awake", [](World& w, BodyId id) { w.set_awake(id, false); }},
         {"create_shape", [](World& w, BodyId id) { w.create_shape(id, circle_shape(0.5)); }},
         {"destroy_body", [](World& w, BodyId id) { w.destroy_body(id); }},
     };
+    calls.insert(calls.end(), others.begin(), others.end());
+    return calls;
 }
 
 void expect_invalid_handle(World& w, const std::function<void()>& call) {
