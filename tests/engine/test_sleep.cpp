@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <random>
 #include <string>
 #include <utility>
 #include <vector>
@@ -318,6 +319,79 @@ BOOST_AUTO_TEST_CASE(sleeping_is_deterministic, *utf::label("NFR1")) {
     BOOST_TEST(asleep == asleep2);
     BOOST_TEST_MESSAGE(asleep << " of 120 rain boxes asleep after 10 s");
     BOOST_TEST(asleep > 0);
+}
+
+// Oracle: the rule's invariants, after every step of a rain disturbed at random (impulses,
+// teleports, destroyed boxes, boxes put to sleep by hand): two touching non-static bodies are
+// both awake or both asleep (islands sleep and wake whole), and a sleeping body has no velocity
+// and has not moved since the step before, if it slept then too.
+BOOST_AUTO_TEST_CASE(sleep_invariants_hold_under_random_changes, *utf::label("NFR1")) {
+    World w(def_with_sleep());
+    io::RainParams p;
+    p.count = 150;
+    p.container.width = 6.0;
+    std::vector<BodyId> boxes;
+    for (const io::SceneBody& sb : io::generate_rain(p)) {
+        const BodyId id = w.create_body(sb.def);
+        for (const ShapeDef& s : sb.shapes)
+            w.create_shape(id, s);
+        if (sb.def.type == BodyType::dynamic)
+            boxes.push_back(id);
+    }
+    std::mt19937_64 rng(7);
+    // Often in the first 10 s, rarely in the last 10 (so that the pile also sleeps for long).
+    std::uniform_int_distribution<int> often(0, 59), rarely(0, 599);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    std::vector<std::pair<BodyId, Vec2d>> asleep_before;
+    int violations = 0, slept = 0, checked_pairs = 0;
+    for (int step = 0; step < 1200; ++step) {
+        w.step(dt);
+        for (const ContactInfo& c : w.contacts()) {
+            if (w.type(c.body_a) == BodyType::static_body ||
+                w.type(c.body_b) == BodyType::static_body)
+                continue;
+            ++checked_pairs;
+            violations += w.is_awake(c.body_a) != w.is_awake(c.body_b);
+        }
+        for (const auto& [b, at] : asleep_before) {
+            if (w.is_valid(b) && !w.is_awake(b))
+                violations += !same_bits(w.position(b), at);
+        }
+        asleep_before.clear();
+        for (BodyId b : boxes) {
+            if (!w.is_valid(b) || w.is_awake(b))
+                continue;
+            ++slept;
+            violations +=
+                w.velocity(b).x != 0.0 || w.velocity(b).y != 0.0 || w.angular_velocity(b) != 0.0;
+            asleep_before.push_back({b, w.position(b)});
+        }
+        // Now and then a change through the API, after the checks (it may wake one body of an
+        // island until the next step joins the rest).
+        const BodyId target = boxes[std::size_t(step * 7919) % boxes.size()];
+        if (!w.is_valid(target))
+            continue;
+        switch (step < 600 ? often(rng) : rarely(rng)) {
+        case 0:
+            w.apply_impulse(target, {u(rng), 2.0 * std::abs(u(rng))}, w.position(target));
+            break;
+        case 1:
+            w.set_transform(target, {2.0 * u(rng), 8.0}, u(rng));
+            break;
+        case 2:
+            w.destroy_body(target);
+            break;
+        case 3:
+            w.set_awake(target, false);
+            break;
+        default:
+            break;
+        }
+    }
+    BOOST_TEST_MESSAGE(slept << " sleeping box-steps, " << checked_pairs
+                             << " touching pairs checked");
+    BOOST_TEST(slept > 10000); // the rule was exercised
+    BOOST_TEST(violations == 0);
 }
 
 // Oracle: data constraints (R4): the sleep settings are non-negative and finite, and an error
