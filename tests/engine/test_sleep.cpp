@@ -1,10 +1,9 @@
-// Sleeping (WorldDef::enable_sleep): islands of bodies at rest stop moving and cost nothing
-// until something wakes them. Off by default; the oracles are the rule itself (the tolerances
+// Sleeping (WorldDef::enable_sleep): islands of bodies at rest stop moving and cost almost
+// nothing until something wakes them. Off by default; the oracles are the rule itself (the tolerances
 // and time_to_sleep), the geometry of the scenes, and the same scene with sleeping off.
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
-#include <cstdint>
 #include <limits>
 #include <random>
 #include <string>
@@ -71,8 +70,8 @@ bool same_bits(Vec2d a, Vec2d b) {
 BOOST_AUTO_TEST_SUITE(sleeping)
 
 // Oracle: the rule (at rest for time_to_sleep) and the scene's geometry. A box dropped 0.5 m
-// falls for about 0.32 s, so it cannot be at rest, let alone asleep, before 0.5 s have passed;
-// asleep, it has no velocity, rests on the ground (centre 0.5 m up) and does not move at all.
+// falls for about 0.32 s, so it cannot be asleep before 0.3 s + time_to_sleep; asleep, it has
+// no velocity, rests on the ground (centre 0.5 m up) and does not move at all.
 BOOST_AUTO_TEST_CASE(a_resting_box_falls_asleep_and_stays_put, *utf::label("NFR1")) {
     World w(def_with_sleep());
     ground(w);
