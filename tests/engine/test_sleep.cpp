@@ -1,6 +1,7 @@
 // Sleeping (WorldDef::enable_sleep): islands of bodies at rest stop moving and cost almost
-// nothing until something wakes them. Off by default; the oracles are the rule itself (the tolerances
-// and time_to_sleep), the geometry of the scenes, and the same scene with sleeping off.
+// nothing until something wakes them. Off by default; the oracles are the rule itself (the
+// tolerances and time_to_sleep), the geometry of the scenes, and the same scene with sleeping
+// off.
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
