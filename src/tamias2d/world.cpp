@@ -561,10 +561,9 @@ struct World::Impl {
     }
 
     /// Sleeping: the islands of this step's touching contacts; an island with an awake body
-    /// wakes whole (a body met a sleeping one, or was changed through the API).
+    /// wakes whole (a body met a sleeping one, or was changed through the API). Run only when
+    /// some body is awake (World::step), as update_sleep.
     void wake_islands() {
-        if (!any_awake())
-            return; // a settled world: nothing can wake
         islands.reset(bodies.size());
         for (std::size_t i = 0; i < contacts.size(); ++i) {
             const Contact& c = contacts[i];
@@ -586,8 +585,6 @@ struct World::Impl {
     /// have all been at rest for time_to_sleep falls asleep (velocities zero: they no longer
     /// move). A body that may not sleep, or carries a persistent load, is never at rest.
     void update_sleep(double dt) {
-        if (!any_awake())
-            return; // all asleep: nothing to time
         island_rest.assign(bodies.size(), std::numeric_limits<double>::infinity());
         for (std::uint32_t i = 0; i < bodies.size(); ++i) {
             if (!active(i))
@@ -824,10 +821,8 @@ double World::time() const {
 void World::set_gravity(Vec2d g) {
     require_finite("gravity", g);
     impl_->def.gravity = g;
-    for (std::uint32_t i = 0; impl_->def.enable_sleep && i < impl_->bodies.size(); ++i) {
-        if (impl_->bodies[i].alive)
-            impl_->wake(i); // a sleeping pile must feel the new gravity
-    }
+    for (std::uint32_t i = 0; i < impl_->bodies.size(); ++i)
+        impl_->wake(i); // a sleeping pile must feel the new gravity (wake skips the immovable)
 }
 Vec2d World::gravity() const {
     return impl_->def.gravity;

@@ -13,6 +13,7 @@
 
 #include "support/body_changes.hpp"
 #include "tamias2d/errors.hpp"
+#include "tamias2d/io/scene.hpp"
 #include "tamias2d/io/scene_generators.hpp"
 #include "tamias2d/world.hpp"
 
@@ -62,6 +63,14 @@ int steps_until_asleep(World& w, const std::vector<BodyId>& ids, int limit) {
     return -1;
 }
 
+/// A generator's bodies built into `w` (io::build_world): their handles, in order.
+std::vector<BodyId> build(World& w, std::vector<io::SceneBody> bodies) {
+    io::Scene scene;
+    scene.world = w.settings();
+    scene.bodies = std::move(bodies);
+    return io::build_world(scene, w);
+}
+
 bool same_bits(Vec2d a, Vec2d b) {
     return a.x == b.x && a.y == b.y;
 }
@@ -103,12 +112,7 @@ BOOST_AUTO_TEST_CASE(sleeping_changes_nothing_until_a_body_sleeps, *utf::label("
         World w(d);
         io::PyramidParams p;
         p.base = 8;
-        std::vector<BodyId> ids;
-        for (const io::SceneBody& sb : io::generate_pyramid(p)) {
-            ids.push_back(w.create_body(sb.def));
-            for (const ShapeDef& s : sb.shapes)
-                w.create_shape(ids.back(), s);
-        }
+        const std::vector<BodyId> ids = build(w, io::generate_pyramid(p));
         for (int i = 0; i < 200; ++i)
             w.step(dt);
         std::vector<double> out;
@@ -301,11 +305,7 @@ BOOST_AUTO_TEST_CASE(sleeping_is_deterministic, *utf::label("NFR1")) {
         io::RainParams p;
         p.count = 120;
         p.container.width = 6.0;
-        for (const io::SceneBody& sb : io::generate_rain(p)) {
-            const BodyId id = w.create_body(sb.def);
-            for (const ShapeDef& s : sb.shapes)
-                w.create_shape(id, s);
-        }
+        build(w, io::generate_rain(p));
         int asleep = 0;
         for (int i = 0; i < 600; ++i)
             w.step(dt);
@@ -331,11 +331,8 @@ BOOST_AUTO_TEST_CASE(sleep_invariants_hold_under_random_changes, *utf::label("NF
     p.count = 150;
     p.container.width = 6.0;
     std::vector<BodyId> boxes;
-    for (const io::SceneBody& sb : io::generate_rain(p)) {
-        const BodyId id = w.create_body(sb.def);
-        for (const ShapeDef& s : sb.shapes)
-            w.create_shape(id, s);
-        if (sb.def.type == BodyType::dynamic)
+    for (BodyId id : build(w, io::generate_rain(p))) {
+        if (w.type(id) == BodyType::dynamic)
             boxes.push_back(id);
     }
     std::mt19937_64 rng(7);

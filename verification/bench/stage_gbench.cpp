@@ -16,6 +16,7 @@
 #include "tamias2d/collision/collider.hpp"
 #include "tamias2d/collision/narrow_phase.hpp"
 #include "tamias2d/geometry/shape_factory.hpp"
+#include "tamias2d/io/scene.hpp"
 #include "tamias2d/io/scene_generators.hpp"
 #include "tamias2d/world.hpp"
 #include "tamias2d/world_def.hpp"
@@ -113,11 +114,10 @@ void world_step_sleep(benchmark::State& state, bool sleep) {
     tamias2d::World world(def);
     tamias2d::io::PyramidParams p;
     p.base = 40;
-    for (const tamias2d::io::SceneBody& sb : tamias2d::io::generate_pyramid(p)) {
-        const tamias2d::BodyId id = world.create_body(sb.def);
-        for (const tamias2d::ShapeDef& shape : sb.shapes)
-            world.create_shape(id, shape);
-    }
+    tamias2d::io::Scene scene;
+    scene.world = def;
+    scene.bodies = tamias2d::io::generate_pyramid(p);
+    tamias2d::io::build_world(scene, world);
     int awake = 1;
     for (int i = 0; i < 1200 && (awake > 0 || i < 10); ++i) {
         world.step(1.0 / 60.0);
