@@ -104,6 +104,82 @@ BOOST_AUTO_TEST_CASE(query_equals_brute_force, *utf::label("IM4")) {
     BOOST_TEST(tree.height() <= tree.height_limit());
 }
 
+// Oracle: brute-force O(n^2) scan with IM4's overlap test (model::im4::overlaps): the
+// marked-pair searches report exactly the pairs of live leaves, at least one of them marked,
+// whose boxes overlap, each pair once, within one tree and across two; for none, few and most
+// leaves marked, in trees that were enlarged and rebuilt; and the marks are gone after
+// clear_marks.
+BOOST_AUTO_TEST_CASE(marked_pairs_equal_brute_force, *utf::label("IM4")) {
+    std::mt19937_64 rng(21);
+    DynamicTree tree, other;
+    std::map<int, Aabb> live, live_other;
+    for (int i = 0; i < 600; ++i)
+        live[tree.create_proxy(random_box(rng, 20.0), std::uint32_t(i))] = {};
+    for (int i = 0; i < 60; ++i)
+        live_other[other.create_proxy(random_box(rng, 20.0), std::uint32_t(i))] = {};
+    for (auto& [id, b] : live)
+        b = tree.aabb(id);
+    for (auto& [id, b] : live_other)
+        b = other.aabb(id);
+    using Pairs = std::vector<std::pair<int, int>>;
+    for (const double share : {0.0, 0.01, 0.1, 0.6, 1.0}) {
+        // Move some leaves (loose ancestors, then the rebuild), and mark a share of both trees.
+        std::bernoulli_distribution moves(0.2), marked(share);
+        for (auto& [id, b] : live) {
+            if (moves(rng)) {
+                b = random_box(rng, 20.0);
+                tree.enlarge_proxy(id, b);
+            }
+        }
+        tree.rebuild();
+        std::map<int, bool> mark, mark_other;
+        for (const auto& [id, b] : live) {
+            mark[id] = marked(rng);
+            if (mark[id])
+                tree.mark_leaf(id);
+        }
+        for (const auto& [id, b] : live_other) {
+            mark_other[id] = marked(rng);
+            if (mark_other[id])
+                other.mark_leaf(id);
+        }
+        Pairs within, across;
+        tree.for_each_marked_pair(
+            [&](int a, int b) { within.emplace_back(std::min(a, b), std::max(a, b)); });
+        tree.for_each_marked_pair(other, [&](int a, int b) { across.emplace_back(a, b); });
+        tree.clear_marks();
+        other.clear_marks();
+        Pairs want_within, want_across;
+        for (const auto& [a, ba] : live) {
+            for (const auto& [b, bb] : live)
+                if (a < b && (mark[a] || mark[b]) && im4::overlaps(ba, bb))
+                    want_within.emplace_back(a, b);
+            for (const auto& [b, bb] : live_other)
+                if ((mark[a] || mark_other[b]) && im4::overlaps(ba, bb))
+                    want_across.emplace_back(a, b);
+        }
+        const std::size_t reported_within = within.size(), reported_across = across.size();
+        std::sort(within.begin(), within.end());
+        std::sort(across.begin(), across.end());
+        BOOST_TEST((within == want_within), "share " << share);
+        BOOST_TEST((across == want_across), "share " << share);
+        // Once each: sorting and removing duplicates would hide a pair reported twice.
+        const auto distinct = [](Pairs& v) {
+            return std::size_t(std::unique(v.begin(), v.end()) - v.begin());
+        };
+        BOOST_TEST(distinct(within) == reported_within);
+        BOOST_TEST(distinct(across) == reported_across);
+        if (share == 1.0) // a search that opened too little would show here, at the most pairs
+            BOOST_TEST(want_within.size() > 100u);
+        BOOST_TEST_REQUIRE(tree.validate());
+    }
+    // Cleared: nothing is marked, so nothing is reported.
+    int reported = 0;
+    tree.for_each_marked_pair([&](int, int) { ++reported; });
+    tree.for_each_marked_pair(other, [&](int, int) { ++reported; });
+    BOOST_TEST(reported == 0);
+}
+
 // Oracle: AVL height bound 1.44 log2(N + 2), N = 2n - 1 nodes for n leaves, for a tree built by
 // insertions alone.
 BOOST_AUTO_TEST_CASE(insertions_keep_the_tree_balanced, *utf::label("IM4")) {

@@ -59,24 +59,24 @@ void BroadPhase::update_pairs(std::vector<Pair>& out) {
     // The moved proxies' ancestors were only enlarged: restore the trees' quality first.
     trees_[0].rebuild();
     trees_[1].rebuild();
+    // The moved proxies' leaves are marked; one descent of each tree against itself and of the
+    // dynamic tree against the static one finds every overlapping pair with a marked leaf.
+    // (Static pairs are never looked for: the static tree is not descended against itself.)
     for (const int p : move_buffer_) {
-        if (moved_[p] != 1)
-            continue; // destroyed since it moved, or a duplicate entry already handled
-        moved_[p] = 2;
-        const Aabb box = fat_aabb(p);
-        const std::uint32_t user = user_data(p);
-        auto visit = [&](int q) {
-            // Two moved proxies find each other twice: keep the query of the greater id.
-            if (q == p || (moved_[q] != 0 && q > p))
-                return true;
-            const std::uint32_t other = user_data(q);
-            out.emplace_back(std::min(user, other), std::max(user, other));
-            return true;
-        };
-        trees_[0].query(box, [&](int id) { return visit(id * 2); });
-        if (!is_static(p)) // static proxies never pair with each other
-            trees_[1].query(box, [&](int id) { return visit(id * 2 + 1); });
+        if (moved_[p] != 0) // 0: destroyed since it moved
+            tree(p).mark_leaf(node(p));
     }
+    const auto emit = [&out](std::uint32_t u, std::uint32_t v) {
+        out.emplace_back(std::min(u, v), std::max(u, v));
+    };
+    DynamicTree& dynamic = trees_[0];
+    const DynamicTree& fixed = trees_[1];
+    dynamic.for_each_marked_pair(
+        [&](int a, int b) { emit(dynamic.user_data(a), dynamic.user_data(b)); });
+    dynamic.for_each_marked_pair(
+        fixed, [&](int a, int b) { emit(dynamic.user_data(a), fixed.user_data(b)); });
+    trees_[0].clear_marks();
+    trees_[1].clear_marks();
     for (const int p : move_buffer_)
         moved_[p] = 0;
     move_buffer_.clear();

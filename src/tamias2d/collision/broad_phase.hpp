@@ -73,7 +73,7 @@ class BroadPhase {
     double margin_;
     DynamicTree trees_[2]; ///< [0] dynamic and kinematic, [1] static
     std::vector<int> move_buffer_;
-    /// Per proxy id: 0 not moved, 1 moved, 2 moved and already queried this update.
+    /// Per proxy id: 1 moved since the last update_pairs, else 0.
     std::vector<std::uint8_t> moved_;
 };
 

@@ -55,6 +55,20 @@ void DynamicTree::enlarge_proxy(int id, const Aabb& box) {
     }
 }
 
+void DynamicTree::mark_leaf(int id) {
+    // Up to the first node marked before: its ancestors are marked already.
+    for (int i = id; i != null_node && !nodes_[i].marked; i = nodes_[i].parent) {
+        nodes_[i].marked = true;
+        marked_.push_back(i);
+    }
+}
+
+void DynamicTree::clear_marks() {
+    for (const int i : marked_)
+        nodes_[i].marked = false;
+    marked_.clear();
+}
+
 int DynamicTree::height_limit() const {
     return 2 * std::bit_width(static_cast<unsigned>(proxy_count_)) + 8;
 }

@@ -50,6 +50,18 @@ class DynamicTree {
     /// false stops the query.
     template <class F> void query(const Aabb& box, F&& f) const;
 
+    /// Marks a leaf, and its ancestors, for the marked-pair searches below (until
+    /// clear_marks()). Call after rebuild(): a rebuild frees ancestors.
+    void mark_leaf(int id);
+    void clear_marks();
+    /// Calls f(a, b) once for every two distinct leaves of this tree whose boxes overlap (IM4),
+    /// at least one of them marked: one descent of the tree against itself, where pairs of
+    /// unmarked subtrees are never opened and the levels above the leaves are walked once for
+    /// all marked leaves, not once per leaf from the root as query() does.
+    template <class F> void for_each_marked_pair(F&& f);
+    /// The same for a leaf a of this tree and a leaf b of `other`.
+    template <class F> void for_each_marked_pair(const DynamicTree& other, F&& f);
+
     /// Calls f(id, max_fraction) -> double for every leaf whose box the segment
     /// origin -> origin + max_fraction * translation crosses. f returns the new max fraction
     /// (the hit fraction clips the ray, max_fraction continues, 0 stops).
@@ -79,6 +91,8 @@ class DynamicTree {
         /// Enlarged since the last rebuild: its box may be loose. Every marked node's parent is
         /// marked too, so a rebuild finds them all from the root.
         bool enlarged = false;
+        /// A marked leaf is in its subtree (mark_leaf): the marked-pair searches open it.
+        bool marked = false;
         bool leaf() const { return child1 == null_node; }
     };
     /// A subtree the rebuild keeps, by its box's centre (a compact copy the splits partition).
@@ -102,6 +116,15 @@ class DynamicTree {
         return {0.5 * (b.min_x + b.max_x), 0.5 * (b.min_y + b.max_y), node};
     }
     int build(std::size_t begin, std::size_t end, bool median);
+    /// The marked-pair searches' walk over pair_stack_ (with `self`, (a, a) stands for the
+    /// pairs within a's subtree).
+    template <class F> void descend_pairs(const DynamicTree& other, bool self, F& f);
+    /// Room for the walk's deepest stack, so that it never allocates midway: a walk takes at
+    /// most self_levels steps within one subtree, then cross_levels opening one side of a pair,
+    /// and each step leaves at most two pairs behind it.
+    void reserve_pair_stack(int self_levels, int cross_levels) {
+        pair_stack_.reserve(std::size_t(2 * (self_levels + cross_levels) + 3));
+    }
 
     LargeArray<Node> nodes_;
     int root_ = null_node;
@@ -112,6 +135,9 @@ class DynamicTree {
     std::vector<std::uint64_t> spare_bits_;
     std::vector<int> spare_;
     std::size_t next_spare_ = 0;
+    std::vector<int> marked_; ///< the nodes mark_leaf marked, for clear_marks
+    /// The marked-pair searches' stack: node pairs still to open (this tree's, other's).
+    std::vector<std::pair<int, int>> pair_stack_;
 };
 
 namespace detail {
@@ -165,6 +191,51 @@ template <class F> void DynamicTree::query(const Aabb& box, F&& f) const {
             stack[top++] = n.child2;
         }
     }
+}
+
+template <class F> void DynamicTree::descend_pairs(const DynamicTree& other, bool self, F& f) {
+    while (!pair_stack_.empty()) {
+        const auto [a, b] = pair_stack_.back();
+        pair_stack_.pop_back();
+        const Node& na = nodes_[a];
+        if (self && a == b) {
+            if (na.leaf() || !na.marked)
+                continue;
+            pair_stack_.push_back({na.child1, na.child1});
+            pair_stack_.push_back({na.child2, na.child2});
+            pair_stack_.push_back({na.child1, na.child2});
+            continue;
+        }
+        const Node& nb = other.nodes_[b];
+        if (!(na.marked || nb.marked) || !overlaps(na.box, nb.box))
+            continue;
+        if (na.leaf() && nb.leaf()) {
+            f(a, b);
+        } else if (nb.leaf() || (!na.leaf() && perimeter(na.box) >= perimeter(nb.box))) {
+            // Open the larger box, so that the two shrink together.
+            pair_stack_.push_back({na.child1, b});
+            pair_stack_.push_back({na.child2, b});
+        } else {
+            pair_stack_.push_back({a, nb.child1});
+            pair_stack_.push_back({a, nb.child2});
+        }
+    }
+}
+
+template <class F> void DynamicTree::for_each_marked_pair(F&& f) {
+    if (root_ == null_node)
+        return;
+    reserve_pair_stack(height(), height());
+    pair_stack_.push_back({root_, root_});
+    descend_pairs(*this, true, f);
+}
+
+template <class F> void DynamicTree::for_each_marked_pair(const DynamicTree& other, F&& f) {
+    if (root_ == null_node || other.root_ == null_node)
+        return;
+    reserve_pair_stack(0, height() + other.height());
+    pair_stack_.push_back({root_, other.root_});
+    descend_pairs(other, false, f);
 }
 
 template <class F> void DynamicTree::ray_cast(Vec2d origin, Vec2d translation, F&& f) const {
