@@ -1,7 +1,7 @@
 // Broad phase: which shape pairs might touch. Each shape is a proxy with a fattened box in one
 // of two dynamic AABB trees (static shapes in their own tree, so static-static pairs are never
 // looked for). A proxy gets a new fat box only when its tight box leaves the old one, and only
-// such ("moved") proxies are queried for new pairs: a resting scene costs nothing here.
+// pairs with such a ("moved") proxy are looked for: a resting scene costs nothing here.
 #pragma once
 
 #include <cstdint>

@@ -56,6 +56,10 @@ void DynamicTree::enlarge_proxy(int id, const Aabb& box) {
 }
 
 void DynamicTree::mark_leaf(int id) {
+    // Room for every node, so that a step marking more than any before does not allocate (only a
+    // growing tree does).
+    if (marked_.capacity() < nodes_.size())
+        marked_.reserve(nodes_.size());
     // Up to the first node marked before: its ancestors are marked already.
     for (int i = id; i != null_node && !nodes_[i].marked; i = nodes_[i].parent) {
         nodes_[i].marked = true;
