@@ -26,10 +26,13 @@ namespace {
 using namespace tamias2d;
 
 /// Boxes of 0.5 m in 10 rows at a 0.55 m pitch, as a settled rain (their fat boxes overlap their
-/// neighbours'). Each iteration every eighth box leaves its fat box, alternately right and
-/// left, and the pairs of the moved boxes are found: the tree's partial rebuild and the queries.
+/// neighbours'). Each iteration every box, or every 2nd ... 128th (the second argument), leaves
+/// its fat box, alternately right and left, and the pairs of the moved boxes are found: the
+/// tree's partial rebuild and the pair search (which of its two searches update_pairs chooses
+/// depends on how scattered the moved boxes are).
 void broad_phase_update_pairs(benchmark::State& state) {
     const int n = static_cast<int>(state.range(0));
+    const int stride = static_cast<int>(state.range(1));
     const int columns = n / 10;
     constexpr double pitch = 0.55, half = 0.25;
     BroadPhase broad_phase;
@@ -46,7 +49,7 @@ void broad_phase_update_pairs(benchmark::State& state) {
     double shift = 0.15; // beyond the 0.1 m margin
     for (auto _ : state) {
         moves.clear();
-        for (int i = 0; i < n; i += 8) {
+        for (int i = 0; i < n; i += stride) {
             boxes[i].min_x += shift;
             boxes[i].max_x += shift;
             moves.push_back({proxies[i], broad_phase.fattened(boxes[i])});
@@ -58,15 +61,14 @@ void broad_phase_update_pairs(benchmark::State& state) {
         benchmark::DoNotOptimize(pairs.data());
         benchmark::ClobberMemory();
     }
-    state.SetItemsProcessed(state.iterations() * (n / 8)); // moved boxes
+    state.SetItemsProcessed(state.iterations() * (n / stride)); // moved boxes
     state.counters["pairs"] = double(pairs.size());
     state.counters["tree_height"] = broad_phase.dynamic_tree().height();
     state.counters["tree_area_ratio"] = broad_phase.dynamic_tree().area_ratio();
 }
 BENCHMARK(broad_phase_update_pairs)
     ->Name("broad_phase/update_pairs/boxes")
-    ->Arg(1000)
-    ->Arg(16000)
+    ->ArgsProduct({{1000, 16000}, {1, 2, 4, 8, 32, 128}})
     ->Unit(benchmark::kMicrosecond);
 
 /// Two unit boxes as the world's narrow phase sees them: B above A, turned by 0.01 rad, its

@@ -54,6 +54,8 @@ class DynamicTree {
     /// clear_marks()). Call after rebuild(): a rebuild frees ancestors.
     void mark_leaf(int id);
     void clear_marks();
+    /// Nodes marked since clear_marks (leaves and their ancestors).
+    std::size_t marked_count() const { return marked_.size(); }
     /// Calls f(a, b) once for every two distinct leaves of this tree whose boxes overlap (IM4),
     /// at least one of them marked: one descent of the tree against itself, where pairs of
     /// unmarked subtrees are never opened and the levels above the leaves are walked once for
