@@ -4,6 +4,15 @@
 
 namespace tamias2d {
 
+namespace {
+
+/// A pair as update_pairs reports it: (min user, max user).
+void emit_pair(std::vector<BroadPhase::Pair>& out, std::uint32_t u, std::uint32_t v) {
+    out.emplace_back(std::min(u, v), std::max(u, v));
+}
+
+} // namespace
+
 void BroadPhase::mark_moved(int proxy) {
     if (moved_[proxy] == 0) {
         moved_[proxy] = 1;
@@ -64,8 +73,7 @@ void BroadPhase::query_moved(std::vector<Pair>& out) {
             // Two moved proxies find each other twice: keep the query of the greater id.
             if (q == p || (moved_[q] != 0 && q > p))
                 return true;
-            const std::uint32_t other = user_data(q);
-            out.emplace_back(std::min(user, other), std::max(user, other));
+            emit_pair(out, user, user_data(q));
             return true;
         };
         trees_[0].query(box, [&](int id) { return visit(id * 2); });
@@ -76,15 +84,12 @@ void BroadPhase::query_moved(std::vector<Pair>& out) {
 
 void BroadPhase::descend_marked(std::vector<Pair>& out) {
     // (Static pairs are never looked for: the static tree is not descended against itself.)
-    const auto emit = [&out](std::uint32_t u, std::uint32_t v) {
-        out.emplace_back(std::min(u, v), std::max(u, v));
-    };
     DynamicTree& dynamic = trees_[0];
     const DynamicTree& fixed = trees_[1];
     dynamic.for_each_marked_pair(
-        [&](int a, int b) { emit(dynamic.user_data(a), dynamic.user_data(b)); });
+        [&](int a, int b) { emit_pair(out, dynamic.user_data(a), dynamic.user_data(b)); });
     dynamic.for_each_marked_pair(
-        fixed, [&](int a, int b) { emit(dynamic.user_data(a), fixed.user_data(b)); });
+        fixed, [&](int a, int b) { emit_pair(out, dynamic.user_data(a), fixed.user_data(b)); });
 }
 
 /// \srs{R7} candidate collisions: pairs whose fat boxes overlap by \srs{IM4}.

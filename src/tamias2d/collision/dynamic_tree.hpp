@@ -90,8 +90,8 @@ class DynamicTree {
         int child2 = null_node;
         int height = -1; ///< 0 leaf, -1 free
         std::uint32_t user = 0;
-        /// Enlarged since the last rebuild: its box may be loose. Every marked node's parent is
-        /// marked too, so a rebuild finds them all from the root.
+        /// Enlarged since the last rebuild: its box may be loose. Every enlarged node's parent
+        /// is enlarged too, so a rebuild finds them all from the root.
         bool enlarged = false;
         /// A marked leaf is in its subtree (mark_leaf): the marked-pair searches open it.
         bool marked = false;
