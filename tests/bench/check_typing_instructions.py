@@ -14,7 +14,7 @@ Checks, for each clone (AVX2 and baseline) the two builds share:
     logic, blend);
   * it has at most 1 % more instructions in all (padding not counted). Two compilations of
     equivalent code may allocate registers and schedule differently; that costs moves, not
-    arithmetic, and measured 0.3 % when this check was written (docs/performance.md).
+    arithmetic, and measured 0.1 % when this check was written (docs/performance.md).
 
 usage: check_typing_instructions.py OBJDUMP LIBRARY
 """
