@@ -19,7 +19,6 @@ Checks, for each clone (AVX2 and baseline) the two builds share:
 usage: check_typing_instructions.py OBJDUMP LIBRARY
 """
 
-import collections
 import re
 import subprocess
 import sys
@@ -72,11 +71,11 @@ def main():
     for clone in clones:
         typed = found[(clone, "bridge")]
         plain = found[(clone, "plain")]
-        ct, cp = collections.Counter(typed), collections.Counter(plain)
-        calls = (sum(n for k, n in ct.items() if k.startswith("call")),
-                 sum(n for k, n in cp.items() if k.startswith("call")))
-        arith = (sum(n for k, n in ct.items() if ARITHMETIC.match(k)),
-                 sum(n for k, n in cp.items() if ARITHMETIC.match(k)))
+        def both(kind):
+            return tuple(sum(1 for k in build if kind(k)) for build in (typed, plain))
+
+        calls = both(lambda k: k.startswith("call"))
+        arith = both(ARITHMETIC.match)
         total = (len(typed), len(plain))
         checks = [
             ("calls", calls, calls[0] <= calls[1]),
