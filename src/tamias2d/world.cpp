@@ -420,6 +420,15 @@ struct World::Impl {
         }
     }
 
+    /// \srs{R5} \srs{R6} IM1/IM2, the velocity half of the semi-implicit Euler step (DD4, DD7).
+    void integrate_velocities(double h) {
+        for (std::size_t k = 1; k < solver_bodies.size(); ++k) {
+            SolverBody& sb = solver_bodies[k];
+            sb.v += bridge::velocity_change(accelerations[k], h);
+            sb.w += bridge::angular_velocity_change(angular_accelerations[k], h);
+        }
+    }
+
     void solve(double dt) {
         const int n = def.substeps;
         const double h = dt / n;
@@ -443,12 +452,22 @@ struct World::Impl {
         if (bouncing.size() < bounce_count)
             bouncing.resize(bounce_count); // only while the scene grows: never shrunk
         wide_solver.colour(edges, solver_bodies.size());
+        // Those that can bounce get a scalar copy for the restitution pass, prepared from the
+        // velocities before the step (DD11's relative velocity before the impact).
+        for (std::uint32_t k = 0; k < edges.size(); ++k) {
+            if (edge_slot[k] == WideContactSolver::no_slot)
+                continue;
+            ContactConstraint& copy = bouncing[edge_slot[k]];
+            unprepared_constraint(copy, edges[k], edge_contact[k]);
+            prepare_contact(copy, solver_bodies);
+        }
+        // The first substep's velocity half comes before the preparation, so that each pack can
+        // be warm started as soon as it is prepared (below), as warm_start would after it.
+        integrate_velocities(h);
         // The manifolds are prepared straight into their packs, four lanes at once, in solve
-        // order (a per-step array of prepared constraints cost a pass over ~300 bytes each);
-        // those that can bounce also get a scalar copy for the restitution pass (the same
-        // arithmetic, so the same bits).
+        // order (a per-step array of prepared constraints cost a pass over ~300 bytes each).
         const auto order = wide_solver.order();
-        ContactConstraint cc; // reused: what set_input_lane and prepare_contact read is set anew
+        ContactConstraint cc; // reused: what set_input_lane reads is set anew
         // Reused too: every lane is set or cleared each pack (clearing the whole input per pack,
         // 600 bytes, was a tenth of this loop's time).
         WideManifoldInput in;
@@ -475,12 +494,8 @@ struct World::Impl {
                 }
                 unprepared_constraint(cc, edges[k], edge_contact[k]);
                 set_input_lane(in, l, cc, edge_slot[k]);
-                if (edge_slot[k] != WideContactSolver::no_slot) {
-                    bouncing[edge_slot[k]] = cc;
-                    prepare_contact(bouncing[edge_slot[k]], solver_bodies);
-                }
             }
-            wide_solver.prepare_pack(p, in, solver_bodies);
+            wide_solver.prepare_pack_and_warm_start(p, in, solver_bodies);
         }
 
         ContactSolverSettings st;
@@ -494,13 +509,10 @@ struct World::Impl {
 
         const std::size_t nb = solver_bodies.size();
         for (int sub = 0; sub < n; ++sub) {
-            // \srs{R5} \srs{R6} IM1/IM2, velocity half of the semi-implicit Euler step (DD4, DD7).
-            for (std::size_t k = 1; k < nb; ++k) {
-                SolverBody& sb = solver_bodies[k];
-                sb.v += bridge::velocity_change(accelerations[k], h);
-                sb.w += bridge::angular_velocity_change(angular_accelerations[k], h);
+            if (sub > 0) { // the first substep's were done with the preparation
+                integrate_velocities(h);
+                wide_solver.warm_start(solver_bodies);
             }
-            wide_solver.warm_start(solver_bodies);
             wide_solver.solve(solver_bodies, st, true);
             // IM1/IM2, position half with the new velocities (DD3, DD6).
             for (std::size_t k = 1; k < nb; ++k) {

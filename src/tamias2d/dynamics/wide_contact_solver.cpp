@@ -18,8 +18,10 @@ TAMIAS_WIDE_KERNEL void solve_packs(WideContactConstraint* packs, std::size_t co
     wide::solve_packs<bridge::Model>(packs, count, bodies, settings, use_bias);
 }
 
-TAMIAS_WIDE_KERNEL void prepare_lanes(WideContactConstraint& w, const WideManifoldInput& in,
-                                      const SolverBody* bodies) {
+/// Prepares the pack from its lanes' bodies (gathered by the caller). Inlined into the kernels
+/// below (flatten), so that each clone has its own copy.
+inline void prepare_from(WideContactConstraint& w, const WideManifoldInput& in, const WideBody& a,
+                         const WideBody& b) {
     for (int l = 0; l < wide_lanes; ++l) {
         w.body_a[l] = in.body_a[l];
         w.body_b[l] = in.body_b[l];
@@ -32,8 +34,6 @@ TAMIAS_WIDE_KERNEL void prepare_lanes(WideContactConstraint& w, const WideManifo
                      double(in.count[3])};
     const WideMask empty = count == zero;
     const WideMask valid[2] = {count >= splat(1.0), count == splat(2.0)};
-    const WideBody a = wide::gather(bodies, in.body_a);
-    const WideBody b = wide::gather(bodies, in.body_b);
     w.normal = in.normal;
     w.friction = in.friction;
     for (int j = 0; j < 2; ++j) {
@@ -67,6 +67,24 @@ TAMIAS_WIDE_KERNEL void prepare_lanes(WideContactConstraint& w, const WideManifo
     // An empty lane takes the block path, which gives it zero impulses too, so that a part-filled
     // pack of two-point manifolds does not also take the point-by-point path for it.
     w.use_block = either(both(two, k.use_block), empty);
+}
+
+TAMIAS_WIDE_KERNEL void prepare_lanes(WideContactConstraint& w, const WideManifoldInput& in,
+                                      const SolverBody* bodies) {
+    prepare_from(w, in, wide::gather(bodies, in.body_a), wide::gather(bodies, in.body_b));
+}
+
+/// prepare_lanes, then the warm start of the pack from the same gathered rows: the pack is still
+/// in registers and cache, where a later warm_start pass reads it back from memory.
+TAMIAS_WIDE_KERNEL void prepare_and_warm_start_lanes(WideContactConstraint& w,
+                                                     const WideManifoldInput& in,
+                                                     SolverBody* bodies) {
+    WideBody a = wide::gather(bodies, in.body_a);
+    WideBody b = wide::gather(bodies, in.body_b);
+    prepare_from(w, in, a, b);
+    iteration::warm_start<bridge::Model>(w, a, b);
+    wide::scatter(bodies, w.body_a, a);
+    wide::scatter(bodies, w.body_b, b);
 }
 
 /// Point j of lane l: anchors, separation and warm-start impulses.
@@ -116,6 +134,11 @@ void WideContactSolver::colour(std::span<const GraphEdge> edges, std::size_t bod
 void WideContactSolver::prepare_pack(std::size_t i, const WideManifoldInput& in,
                                      std::span<const SolverBody> bodies) {
     prepare_lanes(packs_[i], in, bodies.data());
+}
+
+void WideContactSolver::prepare_pack_and_warm_start(std::size_t i, const WideManifoldInput& in,
+                                                    std::span<SolverBody> bodies) {
+    prepare_and_warm_start_lanes(packs_[i], in, bodies.data());
 }
 
 void WideContactSolver::load(std::span<const ContactConstraint> constraints,

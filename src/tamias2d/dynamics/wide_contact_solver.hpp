@@ -39,6 +39,11 @@ class WideContactSolver {
     /// store() to update.
     void prepare_pack(std::size_t i, const WideManifoldInput& in,
                       std::span<const SolverBody> bodies);
+    /// prepare_pack, then warm_start's work on this pack alone. Called for every pack in order,
+    /// it gives warm_start's bits (no body appears twice in a pack, and the packs apply their
+    /// impulses in the same order), without a second pass over the packs.
+    void prepare_pack_and_warm_start(std::size_t i, const WideManifoldInput& in,
+                                     std::span<SolverBody> bodies);
     /// colour and prepare_pack for constraints given as an array (tests, benchmarks): their
     /// bodies, normals, friction, anchors, separations and warm-start impulses are read.
     void load(std::span<const ContactConstraint> constraints, std::span<const SolverBody> bodies);
