@@ -421,11 +421,19 @@ struct World::Impl {
             Vec2d a{};
             double alpha = 0.0;
             if (b.type == BodyType::dynamic) {
-                const Load l = loads.empty() ? Load{} : loads[i];
-                const Vec2d f = b.force + b.force_once + l.force;
-                const double tau = b.torque + b.torque_once + l.torque;
-                a = bridge::acceleration(b.gravity_scale * def.gravity, f, b.mass);
-                alpha = b.inv_inertia > 0.0 ? bridge::angular_acceleration(tau, b.inertia) : 0.0;
+                // Unloaded, F = 0 and tau = 0 give g and 0 bit for bit whatever m and I (0 / m is
+                // exactly 0), so the body's third line, loads and masses, is not read.
+                Vec2d f{};
+                double tau = 0.0, mass = 1.0, inertia = 1.0;
+                if (b.loaded || !loads.empty()) {
+                    const Load l = loads.empty() ? Load{} : loads[i];
+                    f = b.force + b.force_once + l.force;
+                    tau = b.torque + b.torque_once + l.torque;
+                    mass = b.mass;
+                    inertia = b.inertia;
+                }
+                a = bridge::acceleration(b.gravity_scale * def.gravity, f, mass);
+                alpha = b.inv_inertia > 0.0 ? bridge::angular_acceleration(tau, inertia) : 0.0;
             }
             accelerations.push_back(a);
             angular_accelerations.push_back(alpha);
@@ -554,8 +562,9 @@ struct World::Impl {
         // (their lines are neither asked for nor read).
         for (std::uint32_t i = 0; i < body_count; ++i) {
             if (i + body_ahead < body_count && solver_index[i + body_ahead] != 0) {
+                // Its first two lines: the third only if it is loaded (rare).
                 const char* p = reinterpret_cast<const char*>(&bodies[i + body_ahead]);
-                for (std::size_t line = 0; line < sizeof(Body); line += 64)
+                for (std::size_t line = 0; line < offsetof(Body, force); line += 64)
                     __builtin_prefetch(p + line);
             }
             if (i + shape_ahead < body_count && solver_index[i + shape_ahead] != 0) {
@@ -576,8 +585,11 @@ struct World::Impl {
             b.angle += sb.dq;
             b.xf.q = Rot::from_angle(b.angle);
             b.xf.p = b.center - rotate(b.xf.q, b.local_center);
-            b.force_once = {};
-            b.torque_once = 0.0;
+            if (b.loaded) {
+                b.force_once = {};
+                b.torque_once = 0.0;
+                b.loaded = !b.unloaded();
+            }
             // The shapes' copies, in the same pass.
             for (std::uint32_t s = b.first_shape; s != null_index; s = shapes[s].next) {
                 if (!follow_pose(shapes[s], b))
@@ -709,6 +721,7 @@ BodyId World::create_body(const BodyDef& def) {
     b.w = def.type == BodyType::static_body ? 0.0 : def.angular_velocity;
     b.force = def.force;
     b.torque = def.torque;
+    b.loaded = !b.unloaded();
     b.gravity_scale = def.gravity_scale;
     w.body_settings[i] = {def.name, def.load, def.mass, def.inertia, def.fixed_rotation};
     // With sleeping off every body is awake, whatever its definition asks.
@@ -942,12 +955,14 @@ void World::set_force(BodyId id, Vec2d force) {
     Body& b = impl_->body(id);
     require_finite("force", force);
     b.force = force;
+    b.loaded = true;
     impl_->wake(id.index);
 }
 void World::set_torque(BodyId id, double torque) {
     Body& b = impl_->body(id);
     require_finite("torque", torque);
     b.torque = torque;
+    b.loaded = true;
     impl_->wake(id.index);
 }
 void World::apply_force(BodyId id, Vec2d force, Vec2d world_point) {
@@ -955,6 +970,7 @@ void World::apply_force(BodyId id, Vec2d force, Vec2d world_point) {
     require_finite("force", force);
     require_finite("world_point", world_point);
     b.force_once += force;
+    b.loaded = true;
     b.torque_once += model::dd13::torque(bridge::typed<u::Length>(world_point - b.center),
                                          bridge::typed<u::Force>(force))
                          .value();
@@ -964,6 +980,7 @@ void World::apply_torque(BodyId id, double torque) {
     Body& b = impl_->body(id);
     require_finite("torque", torque);
     b.torque_once += torque;
+    b.loaded = true;
     impl_->wake(id.index);
 }
 void World::apply_impulse(BodyId id, Vec2d impulse, Vec2d world_point) {

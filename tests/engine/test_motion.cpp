@@ -131,6 +131,39 @@ BOOST_AUTO_TEST_CASE(force_at_point_gives_torque, *utf::label("R2") * utf::label
     BOOST_TEST(rel_err(world.angular_velocity(b), 2.0 / 1.25 * dt) < 1e-14);
 }
 
+// Oracle: IM1 and IM2 by hand, step by step: a load acts from the step after it is set until
+// the step after it is removed, dv = (F / m) dt and d omega = (tau / I) dt per step with it, and
+// nothing without it. (The step skips an unloaded body's loads and masses: this switches the
+// loads on and off, persistent and one-step, to show the skip never drops one.)
+BOOST_AUTO_TEST_CASE(loads_switched_on_and_off,
+                     *utf::label("R5") * utf::label("R6") * utf::label("IM1") * utf::label("IM2")) {
+    World world(WorldDef{.gravity = {0.0, 0.0}});
+    const BodyId b = make_box_body(world, {}); // m = 3 kg, I = 1.25 kg m^2
+    const double dt = 0.1;
+    world.step(dt);
+    BOOST_TEST(world.velocity(b).x == 0.0);
+    world.set_force(b, {6.0, 0.0}); // a = 2 m s^-2
+    for (int n = 1; n <= 3; ++n) {
+        world.step(dt);
+        BOOST_TEST(rel_err(world.velocity(b).x, 2.0 * dt * n) < 1e-14);
+    }
+    world.set_force(b, {0.0, 0.0});
+    for (int n = 0; n < 2; ++n) {
+        world.step(dt);
+        BOOST_TEST(rel_err(world.velocity(b).x, 6.0 * dt) < 1e-14);
+    }
+    world.apply_torque(b, 2.5); // alpha = 2 rad s^-2, this step only
+    world.step(dt);
+    BOOST_TEST(rel_err(world.angular_velocity(b), 2.0 * dt) < 1e-14);
+    world.step(dt);
+    BOOST_TEST(rel_err(world.angular_velocity(b), 2.0 * dt) < 1e-14);
+    world.set_torque(b, -2.5); // alpha = -2 rad s^-2 from now on
+    world.step(dt);
+    world.step(dt);
+    BOOST_TEST(std::abs(world.angular_velocity(b) - (2.0 * dt - 2.0 * 2.0 * dt)) < 1e-14);
+    BOOST_TEST(rel_err(world.velocity(b).x, 6.0 * dt) < 1e-14);
+}
+
 // Oracle: DD10 J = m dv and r x J = I d omega by hand: J = (0, 3) N s at (0.5, 0) m from the
 // centre on m = 3 kg, I = 1.25 kg m^2: dv = (0, 1) m/s, d omega = 1.5 / 1.25 rad/s.
 BOOST_AUTO_TEST_CASE(impulse_at_point, *utf::label("R2") * utf::label("DD10")) {
