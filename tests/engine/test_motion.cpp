@@ -131,10 +131,10 @@ BOOST_AUTO_TEST_CASE(force_at_point_gives_torque, *utf::label("R2") * utf::label
     BOOST_TEST(rel_err(world.angular_velocity(b), 2.0 / 1.25 * dt) < 1e-14);
 }
 
-// Oracle: IM1 and IM2 by hand, step by step: a load acts from the step after it is set until
-// the step after it is removed, dv = (F / m) dt and d omega = (tau / I) dt per step with it, and
-// nothing without it. (The step skips an unloaded body's loads and masses: this switches the
-// loads on and off, persistent and one-step, to show the skip never drops one.)
+// Oracle: IM1 and IM2 by hand, step by step: a load acts in every step taken while it is set
+// (a one-step load in the next step only), giving dv = (F / m) dt and d omega = (tau / I) dt
+// per step, and nothing without it. (The step skips an unloaded body's loads and masses: this
+// switches the loads on and off, persistent and one-step, to show the skip never drops one.)
 BOOST_AUTO_TEST_CASE(loads_switched_on_and_off,
                      *utf::label("R5") * utf::label("R6") * utf::label("IM1") * utf::label("IM2")) {
     World world(WorldDef{.gravity = {0.0, 0.0}});
