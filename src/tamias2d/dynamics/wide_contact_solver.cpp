@@ -133,12 +133,23 @@ void WideContactSolver::colour(std::span<const GraphEdge> edges, std::size_t bod
 
 void WideContactSolver::prepare_pack(std::size_t i, const WideManifoldInput& in,
                                      std::span<const SolverBody> bodies) {
+    prefetch_pack_after(i);
     prepare_lanes(packs_[i], in, bodies.data());
 }
 
 void WideContactSolver::prepare_pack_and_warm_start(std::size_t i, const WideManifoldInput& in,
                                                     std::span<SolverBody> bodies) {
+    prefetch_pack_after(i);
     prepare_and_warm_start_lanes(packs_[i], in, bodies.data());
+}
+
+void WideContactSolver::prefetch_pack_after(std::size_t i) const {
+    constexpr std::size_t ahead = 2; // 1 and 4 were slower
+    if (i + ahead >= packs_.size())
+        return;
+    const char* p = reinterpret_cast<const char*>(&packs_[i + ahead]);
+    for (std::size_t line = 0; line < sizeof(WideContactConstraint); line += 64)
+        __builtin_prefetch(p + line, 1);
 }
 
 void WideContactSolver::load(std::span<const ContactConstraint> constraints,

