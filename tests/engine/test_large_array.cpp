@@ -1,5 +1,6 @@
-// The world's large arrays (memory/large_array.hpp): a LargeArray behaves as a std::vector, and
-// its large blocks start on a 2 MiB boundary, so that the kernel can back them with huge pages.
+// The world's large arrays (memory/large_array.hpp): a LargeArray behaves as a std::vector, its
+// large blocks start on a 2 MiB boundary, so that the kernel can back them with huge pages, and
+// they grow by remapping their pages.
 #include <boost/test/unit_test.hpp>
 
 #include <cstdint>
@@ -36,6 +37,53 @@ BOOST_AUTO_TEST_CASE(large_blocks_start_on_a_huge_page, *utf::label("NFR1")) {
     };
     const LargeArray<Line> small(10); // small blocks keep the type's own alignment
     BOOST_TEST(reinterpret_cast<std::uintptr_t>(small.data()) % 64 == 0u);
+}
+
+// Oracle: the block's own first bytes, written before the growth, and the mapping counters
+// (a growth past the block's huge pages remaps it; within them it needs nothing).
+BOOST_AUTO_TEST_CASE(large_blocks_grow_without_a_new_mapping, *utf::label("NFR1")) {
+    LargeArray<std::uint64_t> a;
+    a.reserve(std::size_t(3) << 17); // 3 MiB: mapped as 4
+    for (std::uint64_t i = 0; i < (std::uint64_t(3) << 17); ++i)
+        a.push_back(i ^ 0x9e3779b97f4a7c15u);
+    const LargeArrayStats filled = large_array_stats();
+    a.reserve(std::size_t(1) << 19); // 4 MiB: within the mapping
+    BOOST_TEST(large_array_stats().remaps == filled.remaps);
+    a.reserve(std::size_t(5) << 17); // 5 MiB: past it
+    const LargeArrayStats grown = large_array_stats();
+    BOOST_TEST(grown.remaps == filled.remaps + 1);
+    BOOST_TEST(grown.maps == filled.maps); // the same block, grown
+    BOOST_TEST(reinterpret_cast<std::uintptr_t>(a.data()) % (std::uintptr_t(2) << 20) == 0u);
+    bool same = a.size() == (std::size_t(3) << 17);
+    for (std::uint64_t i = 0; i < a.size(); ++i)
+        same = same && a[i] == (i ^ 0x9e3779b97f4a7c15u);
+    BOOST_TEST(same);
+}
+
+// Oracle: std::vector's semantics (a copy is equal and independent; a move leaves the source
+// empty; an argument that is an element survives the growth it causes).
+BOOST_AUTO_TEST_CASE(copies_moves_and_self_references, *utf::label("NFR1")) {
+    LargeArray<std::uint64_t> a(std::size_t(3) << 17);
+    for (std::size_t i = 0; i < a.size(); ++i)
+        a[i] = i;
+    LargeArray<std::uint64_t> b = a;
+    b[5] = 99;
+    BOOST_TEST(a[5] == 5u);
+    BOOST_TEST((std::vector<std::uint64_t>(b.begin(), b.begin() + 4) ==
+                std::vector<std::uint64_t>{0, 1, 2, 3}));
+    const LargeArrayStats before_move = large_array_stats();
+    LargeArray<std::uint64_t> c = std::move(b);
+    BOOST_TEST(b.empty());
+    BOOST_TEST(c[5] == 99u);
+    BOOST_TEST(large_array_stats().maps == before_move.maps);
+    LargeArray<std::uint64_t> d;
+    d.push_back(41);
+    while (d.size() < (std::size_t(1) << 18)) // each growth copies or remaps under the argument
+        d.push_back(d[d.size() - 1] + 1);
+    BOOST_TEST(d.back() == 41u + (std::size_t(1) << 18) - 1);
+    d.assign(3, d[7]);
+    BOOST_TEST(
+        (std::vector<std::uint64_t>(d.begin(), d.end()) == std::vector<std::uint64_t>{48, 48, 48}));
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -39,6 +39,7 @@
 #include "bench_engines.hpp"
 #include "bench_scenes.hpp"
 #include "memory_probe.hpp"
+#include "tamias2d/memory/large_array.hpp"
 #include "thread_cpu_time.hpp"
 #include "typing_kernel.hpp"
 #include "verification_report.hpp"
@@ -134,11 +135,13 @@ struct Elapsed {
 };
 
 // ------------------------------------------------------------------------------- memory
-/// Live heap bytes (glibc): every engine allocates through malloc (Tamias2D via operator new,
-/// Box2D via b2Alloc, Chipmunk via calloc), in this single thread's main arena.
+/// Live heap bytes: what glibc's malloc holds for every engine (Tamias2D via operator new,
+/// Box2D via b2Alloc, Chipmunk via calloc, in this single thread's main arena), and Tamias2D's
+/// large arrays, which it maps from the kernel itself (memory/large_array.hpp).
 double live_heap_bytes() {
     const struct mallinfo2 mi = mallinfo2();
-    return double(mi.uordblks) + double(mi.hblkhd);
+    return double(mi.uordblks) + double(mi.hblkhd) +
+           double(tamias2d::large_array_stats().mapped_bytes);
 }
 
 /// Heap growth attributed to one engine: the live-heap change across each of its calls

@@ -1,42 +1,141 @@
 #include "tamias2d/memory/large_array.hpp"
 
 #include <algorithm>
+#include <atomic>
+#include <cstdint>
 
 #if defined(__linux__)
 #include <sys/mman.h>
 #endif
 
-namespace tamias2d::detail {
+namespace tamias2d {
 
 namespace {
 constexpr std::size_t huge_page = std::size_t(2) << 20;
 constexpr std::size_t large_from = std::size_t(1) << 20; ///< the rounding wastes under 2 MiB
 
+std::atomic<std::size_t> maps{0}, unmaps{0}, remaps{0}, mapped_bytes{0};
+
 bool is_large(std::size_t bytes) {
     return bytes >= large_from;
 }
+/// A large block's mapping: whole huge pages (a growth within them needs nothing).
 std::size_t rounded(std::size_t bytes) {
     return (bytes + huge_page - 1) / huge_page * huge_page;
 }
-std::align_val_t alignment(std::size_t bytes, std::size_t align) {
-    return std::align_val_t(is_large(bytes) ? huge_page
-                                            : std::max(align, alignof(std::max_align_t)));
+std::align_val_t small_alignment(std::size_t align) {
+    return std::align_val_t(std::max(align, alignof(std::max_align_t)));
 }
-} // namespace
 
-void* allocate_large_array(std::size_t bytes, std::size_t align) {
-    const std::size_t size = is_large(bytes) ? rounded(bytes) : bytes;
-    void* p = ::operator new(size, alignment(bytes, align));
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-    // Only advice: without transparent huge pages (or with them off) this fails harmlessly.
-    if (is_large(bytes))
-        madvise(p, size, MADV_HUGEPAGE);
+#if defined(__linux__)
+/// `size` bytes (whole huge pages) of fresh zero pages on a huge-page boundary, advised to be
+/// backed by huge pages (only advice: without transparent huge pages this fails harmlessly).
+void* map_aligned(std::size_t size) {
+    void* raw =
+        mmap(nullptr, size + huge_page, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if (raw == MAP_FAILED)
+        throw std::bad_alloc();
+    // Over-map by a huge page, then return the unaligned head and the tail.
+    const auto start = reinterpret_cast<std::uintptr_t>(raw);
+    const std::uintptr_t aligned = (start + huge_page - 1) / huge_page * huge_page;
+    if (aligned != start)
+        munmap(raw, aligned - start);
+    const std::uintptr_t tail = aligned + size, end = start + size + huge_page;
+    if (end != tail)
+        munmap(reinterpret_cast<void*>(tail), end - tail);
+    void* p = reinterpret_cast<void*>(aligned);
+#if defined(MADV_HUGEPAGE)
+    madvise(p, size, MADV_HUGEPAGE);
 #endif
     return p;
 }
+void* map_large(std::size_t bytes) {
+    void* p = map_aligned(rounded(bytes));
+    maps.fetch_add(1, std::memory_order_relaxed);
+    mapped_bytes.fetch_add(rounded(bytes), std::memory_order_relaxed);
+    return p;
+}
+void unmap_large(void* p, std::size_t bytes) noexcept {
+    munmap(p, rounded(bytes));
+    unmaps.fetch_add(1, std::memory_order_relaxed);
+    mapped_bytes.fetch_sub(rounded(bytes), std::memory_order_relaxed);
+}
+/// A large block grown to new_bytes: extended in place when the address space after it is free,
+/// else its pages moved (not copied) to the head of a fresh aligned mapping, so that huge pages
+/// stay whole.
+void* remap_large(void* p, std::size_t /*used: the pages move whole*/, std::size_t old_bytes,
+                  std::size_t new_bytes) {
+    const std::size_t old_size = rounded(old_bytes), new_size = rounded(new_bytes);
+    if (new_size == old_size)
+        return p;
+    if (mremap(p, old_size, new_size, 0) != MAP_FAILED) {
+#if defined(MADV_HUGEPAGE)
+        madvise(p, new_size, MADV_HUGEPAGE);
+#endif
+    } else {
+        void* q = map_aligned(new_size);
+        if (mremap(p, old_size, old_size, MREMAP_MAYMOVE | MREMAP_FIXED, q) == MAP_FAILED) {
+            munmap(q, new_size);
+            throw std::bad_alloc();
+        }
+        p = q;
+    }
+    remaps.fetch_add(1, std::memory_order_relaxed);
+    mapped_bytes.fetch_add(new_size - old_size, std::memory_order_relaxed);
+    return p;
+}
+#else
+// Elsewhere: aligned operator new, and growth by copying.
+void* map_large(std::size_t bytes) {
+    void* p = ::operator new(rounded(bytes), std::align_val_t(huge_page));
+    maps.fetch_add(1, std::memory_order_relaxed);
+    mapped_bytes.fetch_add(rounded(bytes), std::memory_order_relaxed);
+    return p;
+}
+void unmap_large(void* p, std::size_t bytes) noexcept {
+    ::operator delete(p, rounded(bytes), std::align_val_t(huge_page));
+    unmaps.fetch_add(1, std::memory_order_relaxed);
+    mapped_bytes.fetch_sub(rounded(bytes), std::memory_order_relaxed);
+}
+void* remap_large(void* p, std::size_t used, std::size_t old_bytes, std::size_t new_bytes) {
+    if (rounded(new_bytes) == rounded(old_bytes))
+        return p;
+    void* q = map_large(new_bytes);
+    std::memcpy(q, p, used);
+    unmap_large(p, old_bytes);
+    return q;
+}
+#endif
+} // namespace
 
-void deallocate_large_array(void* p, std::size_t bytes, std::size_t align) noexcept {
-    ::operator delete(p, is_large(bytes) ? rounded(bytes) : bytes, alignment(bytes, align));
+LargeArrayStats large_array_stats() {
+    return {maps.load(std::memory_order_relaxed), unmaps.load(std::memory_order_relaxed),
+            remaps.load(std::memory_order_relaxed), mapped_bytes.load(std::memory_order_relaxed)};
 }
 
-} // namespace tamias2d::detail
+namespace detail {
+
+void* allocate_block(std::size_t bytes, std::size_t align) {
+    return is_large(bytes) ? map_large(bytes) : ::operator new(bytes, small_alignment(align));
+}
+
+void* grow_block(void* p, std::size_t used, std::size_t old_bytes, std::size_t new_bytes,
+                 std::size_t align) {
+    if (is_large(old_bytes))
+        return remap_large(p, used, old_bytes, new_bytes);
+    void* q = allocate_block(new_bytes, align);
+    if (used != 0)
+        std::memcpy(q, p, used);
+    release_block(p, old_bytes, align);
+    return q;
+}
+
+void release_block(void* p, std::size_t bytes, std::size_t align) noexcept {
+    if (is_large(bytes))
+        unmap_large(p, bytes);
+    else
+        ::operator delete(p, bytes, small_alignment(align));
+}
+
+} // namespace detail
+} // namespace tamias2d
