@@ -86,4 +86,36 @@ BOOST_AUTO_TEST_CASE(copies_moves_and_self_references, *utf::label("NFR1")) {
         (std::vector<std::uint64_t>(d.begin(), d.end()) == std::vector<std::uint64_t>{48, 48, 48}));
 }
 
+// Oracle: the block's address (a released block is retained and handed out again whole, as
+// malloc hands out a freed chunk) and the retention limit, 64 MiB (glibc's largest trim
+// threshold). Blocks are only reserved here: their pages are never touched.
+BOOST_AUTO_TEST_CASE(released_blocks_are_retained_for_the_next, *utf::label("NFR1")) {
+    release_retained_memory();
+    BOOST_TEST(large_array_stats().retained_bytes == 0u);
+    const void* first = nullptr;
+    {
+        LargeArray<std::uint64_t> a;
+        a.reserve(std::size_t(3) << 17); // 3 MiB, mapped as 4
+        first = a.data();
+    }
+    BOOST_TEST(large_array_stats().retained_bytes == std::size_t(4) << 20);
+    {
+        LargeArray<std::uint64_t> b;
+        b.reserve(std::size_t(3) << 17);
+        BOOST_TEST(static_cast<const void*>(b.data()) == first);
+        BOOST_TEST(large_array_stats().retained_bytes == 0u);
+    }
+    {
+        LargeArray<std::uint64_t> x, y, z; // 30 MiB each: the third does not fit under 64
+        for (LargeArray<std::uint64_t>* a : {&x, &y, &z})
+            a->reserve(std::size_t(30) << 17);
+    }
+    BOOST_TEST(large_array_stats().retained_bytes <= std::size_t(64) << 20);
+    BOOST_TEST(large_array_stats().retained_bytes >= std::size_t(60) << 20);
+    const std::size_t in_use = large_array_stats().mapped_bytes;
+    release_retained_memory();
+    BOOST_TEST(large_array_stats().retained_bytes == 0u);
+    BOOST_TEST(large_array_stats().mapped_bytes == in_use);
+}
+
 BOOST_AUTO_TEST_SUITE_END()

@@ -1,5 +1,7 @@
 #include "tamias2d/memory/large_array.hpp"
 
+#include "tamias2d/memory/retained_blocks.hpp"
+
 #include <algorithm>
 #include <atomic>
 #include <cstdint>
@@ -50,25 +52,33 @@ void* map_aligned(std::size_t size) {
     return p;
 }
 void* map_large(std::size_t bytes) {
-    void* p = map_aligned(rounded(bytes));
+    void* p = detail::retained_blocks().take(rounded(bytes));
+    if (p == nullptr)
+        p = map_aligned(rounded(bytes));
     maps.fetch_add(1, std::memory_order_relaxed);
     mapped_bytes.fetch_add(rounded(bytes), std::memory_order_relaxed);
     return p;
 }
 void unmap_large(void* p, std::size_t bytes) noexcept {
-    munmap(p, rounded(bytes));
+    if (!detail::retained_blocks().keep(p, rounded(bytes)))
+        munmap(p, rounded(bytes));
     unmaps.fetch_add(1, std::memory_order_relaxed);
     mapped_bytes.fetch_sub(rounded(bytes), std::memory_order_relaxed);
 }
-/// A large block grown to new_bytes: extended in place when the address space after it is free,
-/// else its pages moved (not copied) to the head of a fresh aligned mapping, so that huge pages
-/// stay whole.
-void* remap_large(void* p, std::size_t /*used: the pages move whole*/, std::size_t old_bytes,
-                  std::size_t new_bytes) {
+/// A large block grown to new_bytes, its first `used` bytes kept: copied into a retained block
+/// if one holds it (the old block is retained in turn: no page is faulted or given up), else
+/// extended in place when the address space after it is free, else its pages moved (not
+/// copied) to the head of a fresh aligned mapping, so that huge pages stay whole.
+void* remap_large(void* p, std::size_t used, std::size_t old_bytes, std::size_t new_bytes) {
     const std::size_t old_size = rounded(old_bytes), new_size = rounded(new_bytes);
     if (new_size == old_size)
         return p;
-    if (mremap(p, old_size, new_size, 0) != MAP_FAILED) {
+    if (void* kept = detail::retained_blocks().take(new_size)) {
+        std::memcpy(kept, p, used);
+        if (!detail::retained_blocks().keep(p, old_size))
+            munmap(p, old_size);
+        p = kept;
+    } else if (mremap(p, old_size, new_size, 0) != MAP_FAILED) {
 #if defined(MADV_HUGEPAGE)
         madvise(p, new_size, MADV_HUGEPAGE);
 #endif
@@ -110,7 +120,17 @@ void* remap_large(void* p, std::size_t used, std::size_t old_bytes, std::size_t 
 
 LargeArrayStats large_array_stats() {
     return {maps.load(std::memory_order_relaxed), unmaps.load(std::memory_order_relaxed),
-            remaps.load(std::memory_order_relaxed), mapped_bytes.load(std::memory_order_relaxed)};
+            remaps.load(std::memory_order_relaxed), mapped_bytes.load(std::memory_order_relaxed),
+            detail::retained_blocks().bytes()};
+}
+
+void release_retained_memory() {
+#if defined(__linux__)
+    detail::retained_blocks().release_all([](void* p, std::size_t size) { munmap(p, size); });
+#else
+    detail::retained_blocks().release_all(
+        [](void* p, std::size_t size) { ::operator delete(p, size, std::align_val_t(huge_page)); });
+#endif
 }
 
 namespace detail {
