@@ -127,9 +127,11 @@ double wall_ms() {
 
 struct Elapsed {
     double cpu = 0.0, wall = 0.0; ///< ms
+    double system = 0.0;          ///< ms, the kernel's part of cpu
     Elapsed& operator+=(Elapsed o) {
         cpu += o.cpu;
         wall += o.wall;
+        system += o.system;
         return *this;
     }
 };
@@ -230,8 +232,9 @@ Quality assess(const SceneDesc& s, const Engine& e) {
 
 // ---------------------------------------------------------------------------- measuring
 struct EngineResult {
-    std::vector<double> ms_per_step;      ///< CPU ms/step, one per timed repetition
-    std::vector<double> wall_ms_per_step; ///< the same in wall-clock time
+    std::vector<double> ms_per_step;        ///< CPU ms/step, one per timed repetition
+    std::vector<double> wall_ms_per_step;   ///< the same in wall-clock time
+    std::vector<double> system_ms_per_step; ///< the kernel's part of ms_per_step
     std::optional<Quality> quality;
     double peak_heap = 0.0; ///< bytes
     std::string error;      ///< non-empty: the engine failed (exception) or ran out of budget
@@ -281,12 +284,14 @@ double budget_ms(const SceneSpec& spec, const Options& opt, EngineId id) {
 /// Steps `n` times, timed; the memory meter brackets the whole call (untimed sampling).
 Elapsed timed_steps(Engine& e, int n, MemoryMeter& mem) {
     mem.begin();
+    const double s0 = system_ms();
     const double w0 = wall_ms(), c0 = cpu_ms();
     for (int i = 0; i < n; ++i)
         e.step();
     const double c1 = cpu_ms(), w1 = wall_ms();
+    const double s1 = system_ms();
     mem.end();
-    return {c1 - c0, w1 - w0};
+    return {c1 - c0, w1 - w0, s1 - s0};
 }
 
 std::vector<EngineId> rotated(const std::vector<EngineId>& v, int k) {
@@ -325,6 +330,7 @@ SceneResult run_steady(const SceneSpec& spec, const Options& opt) {
                 const Elapsed el = timed_steps(*eng[k], res.steps, mem[k]);
                 res.engines[k].ms_per_step.push_back(el.cpu / res.steps);
                 res.engines[k].wall_ms_per_step.push_back(el.wall / res.steps);
+                res.engines[k].system_ms_per_step.push_back(el.system / res.steps);
                 if (el.cpu > budget_ms(spec, opt, id)) {
                     res.engines[k].error =
                         "stopped after " + std::to_string(rep + 1) + " repetitions: over the " +
@@ -411,6 +417,7 @@ SceneResult run_transient(const SceneSpec& spec, const Options& opt) {
                 }
                 r.ms_per_step.push_back(el.cpu / res.steps);
                 r.wall_ms_per_step.push_back(el.wall / res.steps);
+                r.system_ms_per_step.push_back(el.system / res.steps);
                 r.quality = assess(scene, *e);
             } catch (const std::exception& ex) {
                 r.error = std::string("failed: ") + ex.what();
@@ -1027,6 +1034,7 @@ int main(int argc, char** argv) {
             const EngineResult& x = r.engines[std::size_t(id)];
             e[std::string(engine_name(id))] = {{"cpu_ms_per_step", x.ms_per_step},
                                                {"wall_ms_per_step", x.wall_ms_per_step},
+                                               {"system_ms_per_step", x.system_ms_per_step},
                                                {"peak_heap_bytes", x.peak_heap},
                                                {"error", x.error}};
         }
