@@ -3,7 +3,9 @@
 // they grow by remapping their pages.
 #include <boost/test/unit_test.hpp>
 
+#include <atomic>
 #include <cstdint>
+#include <thread>
 #include <vector>
 
 #include "tamias2d/memory/large_array.hpp"
@@ -116,6 +118,27 @@ BOOST_AUTO_TEST_CASE(released_blocks_are_retained_for_the_next, *utf::label("NFR
     release_retained_memory();
     BOOST_TEST(large_array_stats().retained_bytes == 0u);
     BOOST_TEST(large_array_stats().mapped_bytes == in_use);
+}
+
+// Oracle: each thread's own pattern, read back after the other thread has had the chance to
+// write: a block handed to both (the retained table is shared by the process) would mix them.
+BOOST_AUTO_TEST_CASE(threads_share_the_retained_blocks_safely, *utf::label("NFR1")) {
+    std::atomic<int> wrong{0};
+    auto work = [&wrong](std::uint64_t tag) {
+        for (int round = 0; round < 40; ++round) {
+            LargeArray<std::uint64_t> a(std::size_t(3) << 17); // 3 MiB: a large block
+            for (std::size_t i = 0; i < a.size(); i += 512)
+                a[i] = tag << 32 | i;
+            std::this_thread::yield();
+            for (std::size_t i = 0; i < a.size(); i += 512)
+                if (a[i] != (tag << 32 | i))
+                    wrong.fetch_add(1);
+        }
+    };
+    std::thread first(work, 1u), second(work, 2u);
+    first.join();
+    second.join();
+    BOOST_TEST(wrong.load() == 0);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
