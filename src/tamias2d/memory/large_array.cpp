@@ -29,10 +29,12 @@ std::align_val_t small_alignment(std::size_t align) {
     return std::align_val_t(std::max(align, alignof(std::max_align_t)));
 }
 
+// The platform's part: fresh aligned blocks of whole huge pages, given back, and grown without
+// a copy where the platform can.
 #if defined(__linux__)
-/// `size` bytes (whole huge pages) of fresh zero pages on a huge-page boundary, advised to be
-/// backed by huge pages (only advice: without transparent huge pages this fails harmlessly).
-void* map_aligned(std::size_t size) {
+/// `size` bytes of fresh zero pages on a huge-page boundary, advised to be backed by huge pages
+/// (only advice: without transparent huge pages this fails harmlessly).
+void* map_fresh(std::size_t size) {
     void* raw =
         mmap(nullptr, size + huge_page, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
     if (raw == MAP_FAILED)
@@ -51,24 +53,62 @@ void* map_aligned(std::size_t size) {
 #endif
     return p;
 }
+void unmap_fresh(void* p, std::size_t size) noexcept {
+    munmap(p, size);
+}
+/// Block p grown from old_size to new_size bytes without copying: in place when the address
+/// space after it is free, else its pages moved to the head of a fresh aligned mapping, so that
+/// huge pages stay whole.
+void* grow_fresh(void* p, std::size_t /*used: the pages move whole*/, std::size_t old_size,
+                 std::size_t new_size) {
+    if (mremap(p, old_size, new_size, 0) != MAP_FAILED) {
+#if defined(MADV_HUGEPAGE)
+        madvise(p, new_size, MADV_HUGEPAGE);
+#endif
+        return p;
+    }
+    void* q = map_fresh(new_size);
+    if (mremap(p, old_size, old_size, MREMAP_MAYMOVE | MREMAP_FIXED, q) == MAP_FAILED) {
+        munmap(q, new_size);
+        throw std::bad_alloc();
+    }
+    return q;
+}
+#else
+// Elsewhere: aligned operator new, and growth by copying.
+void* map_fresh(std::size_t size) {
+    return ::operator new(size, std::align_val_t(huge_page));
+}
+void unmap_fresh(void* p, std::size_t size) noexcept {
+    ::operator delete(p, size, std::align_val_t(huge_page));
+}
+void* grow_fresh(void* p, std::size_t used, std::size_t old_size, std::size_t new_size) {
+    void* q = map_fresh(new_size);
+    std::memcpy(q, p, used);
+    unmap_fresh(p, old_size);
+    return q;
+}
+#endif
+
+/// A retained block if one holds the size, else a fresh one.
 void* map_large(std::size_t bytes) {
     void* p = detail::retained_blocks().take(rounded(bytes));
     if (p == nullptr)
-        p = map_aligned(rounded(bytes));
+        p = map_fresh(rounded(bytes));
     maps.fetch_add(1, std::memory_order_relaxed);
     mapped_bytes.fetch_add(rounded(bytes), std::memory_order_relaxed);
     return p;
 }
+/// Retained for the next blocks if it fits under the limit, else given back.
 void unmap_large(void* p, std::size_t bytes) noexcept {
     if (!detail::retained_blocks().keep(p, rounded(bytes)))
-        munmap(p, rounded(bytes));
+        unmap_fresh(p, rounded(bytes));
     unmaps.fetch_add(1, std::memory_order_relaxed);
     mapped_bytes.fetch_sub(rounded(bytes), std::memory_order_relaxed);
 }
 /// A large block grown to new_bytes, its first `used` bytes kept: copied into a retained block
 /// if one holds it (the old block is retained in turn: no page is faulted or given up), else
-/// extended in place when the address space after it is free, else its pages moved (not
-/// copied) to the head of a fresh aligned mapping, so that huge pages stay whole.
+/// grown by the platform.
 void* remap_large(void* p, std::size_t used, std::size_t old_bytes, std::size_t new_bytes) {
     const std::size_t old_size = rounded(old_bytes), new_size = rounded(new_bytes);
     if (new_size == old_size)
@@ -76,46 +116,15 @@ void* remap_large(void* p, std::size_t used, std::size_t old_bytes, std::size_t 
     if (void* kept = detail::retained_blocks().take(new_size)) {
         std::memcpy(kept, p, used);
         if (!detail::retained_blocks().keep(p, old_size))
-            munmap(p, old_size);
+            unmap_fresh(p, old_size);
         p = kept;
-    } else if (mremap(p, old_size, new_size, 0) != MAP_FAILED) {
-#if defined(MADV_HUGEPAGE)
-        madvise(p, new_size, MADV_HUGEPAGE);
-#endif
     } else {
-        void* q = map_aligned(new_size);
-        if (mremap(p, old_size, old_size, MREMAP_MAYMOVE | MREMAP_FIXED, q) == MAP_FAILED) {
-            munmap(q, new_size);
-            throw std::bad_alloc();
-        }
-        p = q;
+        p = grow_fresh(p, used, old_size, new_size);
     }
     remaps.fetch_add(1, std::memory_order_relaxed);
     mapped_bytes.fetch_add(new_size - old_size, std::memory_order_relaxed);
     return p;
 }
-#else
-// Elsewhere: aligned operator new, and growth by copying.
-void* map_large(std::size_t bytes) {
-    void* p = ::operator new(rounded(bytes), std::align_val_t(huge_page));
-    maps.fetch_add(1, std::memory_order_relaxed);
-    mapped_bytes.fetch_add(rounded(bytes), std::memory_order_relaxed);
-    return p;
-}
-void unmap_large(void* p, std::size_t bytes) noexcept {
-    ::operator delete(p, rounded(bytes), std::align_val_t(huge_page));
-    unmaps.fetch_add(1, std::memory_order_relaxed);
-    mapped_bytes.fetch_sub(rounded(bytes), std::memory_order_relaxed);
-}
-void* remap_large(void* p, std::size_t used, std::size_t old_bytes, std::size_t new_bytes) {
-    if (rounded(new_bytes) == rounded(old_bytes))
-        return p;
-    void* q = map_large(new_bytes);
-    std::memcpy(q, p, used);
-    unmap_large(p, old_bytes);
-    return q;
-}
-#endif
 } // namespace
 
 LargeArrayStats large_array_stats() {
@@ -125,12 +134,7 @@ LargeArrayStats large_array_stats() {
 }
 
 void release_retained_memory() {
-#if defined(__linux__)
-    detail::retained_blocks().release_all([](void* p, std::size_t size) { munmap(p, size); });
-#else
-    detail::retained_blocks().release_all(
-        [](void* p, std::size_t size) { ::operator delete(p, size, std::align_val_t(huge_page)); });
-#endif
+    detail::retained_blocks().release_all(unmap_fresh);
 }
 
 namespace detail {
