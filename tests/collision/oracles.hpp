@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "tamias2d/geometry/shape_factory.hpp"
+#include "tamias2d/math/vec2d.hpp"
 #include "tamias2d/model/t5_collision_detection.hpp"
 
 namespace oracle {

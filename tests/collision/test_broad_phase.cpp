@@ -48,7 +48,8 @@ constexpr double margin = 0.1;
 Aabb random_box(std::mt19937_64& rng, double extent) {
     std::uniform_real_distribution<double> c(-extent, extent);
     std::uniform_real_distribution<double> s(0.05, 2.0);
-    return im4::from_centre(c(rng), c(rng), s(rng), s(rng));
+    const auto b = im4::from_centre(c(rng), c(rng), s(rng), s(rng));
+    return {b.min_x, b.min_y, b.max_x, b.max_y};
 }
 
 Aabb shifted(const Aabb& b, double dx, double dy) {

@@ -21,7 +21,8 @@ Aabb random_box(std::mt19937_64& rng, double extent) {
     std::uniform_real_distribution<double> c(-extent, extent);
     std::uniform_real_distribution<double> s(0.05, 2.0);
     const double x = c(rng), y = c(rng), w = s(rng), h = s(rng);
-    return im4::from_centre(x, y, w, h);
+    const auto b = im4::from_centre(x, y, w, h);
+    return {b.min_x, b.min_y, b.max_x, b.max_y};
 }
 
 /// Segment-box overlap by the separating axis theorem (axes x, y and the segment normal);

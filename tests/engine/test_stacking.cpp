@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "tamias2d/io/scene_generators.hpp"
+#include "tamias2d/math/vec2d.hpp"
 #include "tamias2d/world.hpp"
 
 namespace utf = boost::unit_test;

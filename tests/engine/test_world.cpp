@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "tamias2d/errors.hpp"
+#include "tamias2d/math/vec2d.hpp"
 #include "tamias2d/world.hpp"
 
 namespace utf = boost::unit_test;

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "tamias2d/geometry/aabb.hpp"
 #include "tamias2d/io/scene_generators.hpp"
 #include "tamias2d/world.hpp"
 

@@ -56,7 +56,7 @@ struct BridgeOps : tamias2d::bridge::Model {
 /// The model's formulas on doubles or packs, operation for operation (see the model headers
 /// cited): V is double or tamias2d::Wide, Body SolverBody or WideBody.
 struct PlainOps {
-    template <class V> using Vec = tamias2d::units::Vec2<V>;
+    template <class V> using Vec = tamias2d::Vec2<V>;
 
     static Vec2d velocity_change(Vec2d a, double h) { return {a.x * h, a.y * h}; } // DD4
     static double angular_velocity_change(double al, double h) { return al * h; }  // DD7

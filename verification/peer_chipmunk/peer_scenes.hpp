@@ -24,6 +24,7 @@
 #include <string>
 #include <vector>
 
+#include "tamias2d/math/vec2d.hpp"
 #include "tamias2d/world.hpp"
 
 namespace tamias2d::peer {

@@ -4,7 +4,8 @@
 #pragma once
 
 #include "tamias2d/geometry/aabb.hpp"
-#include "tamias2d/geometry/shapes.hpp"
+#include "tamias2d/math/vec2d.hpp"
+#include "tamias2d/shapes.hpp"
 
 namespace tamias2d {
 

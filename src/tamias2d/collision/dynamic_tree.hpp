@@ -16,6 +16,7 @@
 
 #include "tamias2d/geometry/aabb.hpp"
 #include "tamias2d/memory/large_array.hpp"
+#include "tamias2d/vec2.hpp"
 
 namespace tamias2d {
 

@@ -7,7 +7,8 @@
 
 #include "tamias2d/collision/collider.hpp"
 #include "tamias2d/collision/manifold.hpp"
-#include "tamias2d/geometry/shapes.hpp"
+#include "tamias2d/math/vec2d.hpp"
+#include "tamias2d/shapes.hpp"
 
 namespace tamias2d {
 

@@ -4,15 +4,16 @@
 // the sequential Gauss-Seidel pass in creation order, bit for bit.
 //
 // Why not the fewest colours (greedy, as Box2D v3): that reorders constraints sharing a body,
-// and the order is what carries a stack's weight down within one pass. Tried (session 3,
-// docs/performance.md): pyramid40's top box sagged 0.185 m instead of 0.056 m, large_pyramid's
-// 0.84 m (it no longer stands) and 2 rain boxes escaped, for the same speed.
+// and the order is what carries a stack's weight down within one pass. Measured with greedy
+// colours (docs/performance.md, rejected designs): pyramid40's top box sags 0.185 m instead of
+// 0.056 m, large_pyramid's 0.84 m (it does not stand) and 2 rain boxes escape, for the same
+// speed.
 //
 // Packs are filled across level boundaries: the packs run in order, so a constraint may share
 // a pack with the last ones of the level before unless one of those is the constraint it
 // follows on a body. A pyramid has hundreds of small levels (pyramid40: 231 for 2380
-// manifolds): starting a new pack at each level left 23 % of pyramid20's lanes empty and 13 %
-// of pyramid40's (now 11 % and 3 %).
+// manifolds): starting a new pack at each level would leave 23 % of pyramid20's lanes empty
+// and 13 % of pyramid40's, against 11 % and 3 % when packs run across levels.
 #pragma once
 
 #include <array>

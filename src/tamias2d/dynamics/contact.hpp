@@ -36,8 +36,8 @@ static_assert(offsetof(Contact, manifold) + offsetof(Manifold, points) == 64,
 /// Impulses of a contact's manifold points, in arrays of their own indexed like the contacts:
 /// the warm-start impulses and the step's totals. The solver reads and writes them in the
 /// colouring's order, scattered over the contacts; in 32-byte records they are a dense array
-/// that stays in the cache (640 KB at 16k boxes), where as a line of each 256-byte contact they
-/// were 5 MB to gather from (docs/performance.md, session 8).
+/// that stays in the cache (640 KB at 16k boxes), where as a line of each 192-byte contact they
+/// would be gathered from about 4 MB (docs/performance.md).
 struct ContactImpulses {
     double normal[2] = {0.0, 0.0};  ///< N s
     double tangent[2] = {0.0, 0.0}; ///< N s

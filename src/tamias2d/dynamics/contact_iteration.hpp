@@ -12,13 +12,14 @@
 #include "tamias2d/dynamics/contact_solver.hpp"
 #include "tamias2d/dynamics/model_bridge.hpp"
 #include "tamias2d/dynamics/two_point_lcp.hpp"
+#include "tamias2d/math/vec2d.hpp"
 #include "tamias2d/math/wide.hpp"
 
 namespace tamias2d::iteration {
 
 using bridge::value_of;
 
-template <class V> units::Vec2<V> tangent_of(units::Vec2<V> n) {
+template <class V> Vec2<V> tangent_of(Vec2<V> n) {
     return right_perp(n);
 }
 
@@ -26,7 +27,7 @@ template <class V> units::Vec2<V> tangent_of(units::Vec2<V> n) {
 /// (rotations linearised: r' ~ r + dq x r, accurate for the small rotations of a step; with
 /// (dq x r) . n = dq (r x n), the moment arms give the rotations' share).
 template <class Point, class Body, class V = value_of<Body>>
-V current_separation(const Point& cp, const Body& a, const Body& b, units::Vec2<V> n) {
+V current_separation(const Point& cp, const Body& a, const Body& b, Vec2<V> n) {
     return cp.base_separation +
            (dot(b.dp - a.dp, n) + (b.dq * cp.normal_arm_b - a.dq * cp.normal_arm_a));
 }

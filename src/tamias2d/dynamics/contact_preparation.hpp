@@ -30,11 +30,10 @@ template <class V> struct PreparedPoint {
 /// One point with anchors r_a, r_b (relative to the centres of mass) on a manifold of unit
 /// normal n.
 template <class Body, class V = bridge::value_of<Body>>
-PreparedPoint<V> prepare_point(const Body& a, const Body& b, units::Vec2<V> r_a, units::Vec2<V> r_b,
-                               units::Vec2<V> n) {
+PreparedPoint<V> prepare_point(const Body& a, const Body& b, Vec2<V> r_a, Vec2<V> r_b, Vec2<V> n) {
     const V zero = broadcast<V>(0.0);
     const V one = broadcast<V>(1.0);
-    const units::Vec2<V> t = iteration::tangent_of(n); // the direction the iteration applies
+    const Vec2<V> t = iteration::tangent_of(n); // the direction the iteration applies
     PreparedPoint<V> p;
     p.normal_arm_a = bridge::moment_arm(r_a, n);
     p.normal_arm_b = bridge::moment_arm(r_b, n);

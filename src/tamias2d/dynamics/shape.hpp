@@ -8,6 +8,7 @@
 #include "tamias2d/collision/collider.hpp"
 #include "tamias2d/geometry/aabb.hpp"
 #include "tamias2d/handles.hpp"
+#include "tamias2d/math/vec2d.hpp"
 
 namespace tamias2d {
 

@@ -27,7 +27,7 @@ struct alignas(wide_alignment) WideContactConstraintPoint {
 
 struct alignas(wide_alignment) WideContactConstraint {
     std::uint32_t body_a[wide_lanes]{}, body_b[wide_lanes]{}; ///< solver body indices
-    units::Vec2<Wide> normal{};
+    Vec2<Wide> normal{};
     Wide friction{};
     Wide k11{}, k12{}, k22{};
     Wide inv_k11{}, inv_k12{}, inv_k22{};
@@ -44,9 +44,9 @@ struct alignas(wide_alignment) WideContactConstraint {
 /// a lane's count, and an empty lane, are zeros (set_input_lane and clear_input_lane write every
 /// field of a lane, so one input serves pack after pack).
 struct alignas(wide_alignment) WideManifoldInput {
-    units::Vec2<Wide> normal{};
+    Vec2<Wide> normal{};
     Wide friction{};
-    units::Vec2<Wide> r_a[2]{}, r_b[2]{};           ///< m, anchors relative to the centres of mass
+    Vec2<Wide> r_a[2]{}, r_b[2]{};                  ///< m, anchors relative to the centres of mass
     Wide separation[2]{};                           ///< m
     Wide normal_impulse[2]{}, tangent_impulse[2]{}; ///< N s, warm start
     std::uint32_t body_a[wide_lanes]{}, body_b[wide_lanes]{};
@@ -58,11 +58,11 @@ struct alignas(wide_alignment) WideManifoldInput {
 /// The bodies of four lanes (gathered from SolverBody by transposing its rows, written back
 /// after the solve).
 struct alignas(wide_alignment) WideBody {
-    units::Vec2<Wide> v{};
+    Vec2<Wide> v{};
     Wide w{};
     Wide inv_m{};
     Wide inv_I{};
-    units::Vec2<Wide> dp{};
+    Vec2<Wide> dp{};
     Wide dq{};
 };
 

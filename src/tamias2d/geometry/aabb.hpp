@@ -1,14 +1,13 @@
-// Axis-aligned bounding boxes (m, world frame). The overlap test is IM4's, on plain doubles.
+// Operations on axis-aligned bounding boxes (m, world frame) for the broad phase. The overlap
+// test is IM4's (model/im4_aabb_overlap.hpp), on plain doubles.
 #pragma once
 
 #include <algorithm>
 
-#include "tamias2d/math/vec2d.hpp"
+#include "tamias2d/aabb.hpp"
 #include "tamias2d/model/im4_aabb_overlap.hpp"
 
 namespace tamias2d {
-
-using Aabb = model::im4::Aabb<double>;
 
 constexpr bool overlaps(const Aabb& a, const Aabb& b) {
     return model::im4::overlaps(a, b);

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "tamias2d/errors.hpp"
+#include "tamias2d/math/vec2d.hpp"
 #include "tamias2d/model/dd01_center_of_mass.hpp"
 #include "tamias2d/model/dd14_moment_of_inertia.hpp"
 

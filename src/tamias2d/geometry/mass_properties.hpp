@@ -4,7 +4,7 @@
 
 #include <span>
 
-#include "tamias2d/geometry/shapes.hpp"
+#include "tamias2d/shapes.hpp"
 
 namespace tamias2d {
 

@@ -5,7 +5,8 @@
 
 #include "tamias2d/geometry/aabb.hpp"
 #include "tamias2d/geometry/shape_queries.hpp" // world queries pair the box with exact tests
-#include "tamias2d/geometry/shapes.hpp"
+#include "tamias2d/math/vec2d.hpp"
+#include "tamias2d/shapes.hpp"
 
 namespace tamias2d {
 

@@ -7,6 +7,7 @@
 
 #include "tamias2d/errors.hpp"
 #include "tamias2d/geometry/mass_properties.hpp"
+#include "tamias2d/math/vec2d.hpp"
 
 namespace tamias2d {
 namespace {

@@ -4,7 +4,8 @@
 
 #include <optional>
 
-#include "tamias2d/geometry/shapes.hpp"
+#include "tamias2d/math/vec2d.hpp"
+#include "tamias2d/shapes.hpp"
 
 namespace tamias2d {
 

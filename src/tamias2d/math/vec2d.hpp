@@ -4,12 +4,9 @@
 
 #include <cmath>
 
-#include "tamias2d/units/vec2.hpp"
+#include "tamias2d/vec2.hpp"
 
 namespace tamias2d {
-
-/// A vector in metres, m s^-1, N ... as the field it sits in says (SI, A3/A4 axes).
-using Vec2d = units::Vec2<double>;
 
 /// A rotation by angle phi (radians, CCW positive, A4) as its cosine and sine.
 struct Rot {
@@ -39,10 +36,10 @@ constexpr Vec2d inv_transform_point(const Transform& t, Vec2d v) {
 }
 
 /// The in-plane perpendicular (CCW): cross(w, v) for w = 1 (of a vector or a pack of lanes).
-template <class T> constexpr units::Vec2<T> left_perp(units::Vec2<T> v) {
+template <class T> constexpr Vec2<T> left_perp(Vec2<T> v) {
     return {-v.y, v.x};
 }
-template <class T> constexpr units::Vec2<T> right_perp(units::Vec2<T> v) {
+template <class T> constexpr Vec2<T> right_perp(Vec2<T> v) {
     return {v.y, -v.x};
 }
 

@@ -3,12 +3,12 @@
 //
 // From 1 MiB up, a block is mapped from the kernel, 2 MiB-aligned and asked to be backed by
 // transparent huge pages: at 16k bodies a step touches about 18 MB of such arrays, more than
-// the TLB maps in 4 KiB pages, and huge pages made rain_16k 5-12 % faster (docs/performance.md,
-// session 6). Such a block grows by remapping its pages (mremap), not by copying them into a
-// new block: a world whose contacts and packs grow during its first steps needs only the new
-// pages, not a second copy of the old ones. New pages are what costs on a virtual machine whose
+// the TLB maps in 4 KiB pages, and huge pages make rain_16k 5-12 % faster (docs/performance.md).
+// Such a block grows by remapping its pages (mremap), not by copying them into a new block: a
+// world whose contacts and packs grow during its first steps needs only the new pages, not a
+// second copy of the old ones. New pages are what costs on a virtual machine whose
 // kernel hands freed memory back to the host (free page reporting: rain_16k's growth needed
-// 42 MiB of them with copying and needs 24 by remapping; docs/performance.md, session 14).
+// 42 MiB of them with copying and needs 24 by remapping; docs/performance.md).
 // A released large block is kept mapped, up to 64 MiB in all, for the blocks of the next world,
 // as malloc keeps freed heap memory for the peers (release_retained_memory() returns it).
 // Smaller blocks come from operator new, so the steady-state allocation test sees them; the
@@ -21,19 +21,9 @@
 #include <type_traits>
 #include <utility>
 
-namespace tamias2d {
+#include "tamias2d/memory.hpp"
 
-/// What the large blocks of every LargeArray in the process have done (atomic counters).
-struct LargeArrayStats {
-    std::size_t maps = 0;           ///< large blocks handed out (a growth is not one)
-    std::size_t unmaps = 0;         ///< large blocks released
-    std::size_t remaps = 0;         ///< large blocks grown
-    std::size_t mapped_bytes = 0;   ///< bytes in use now
-    std::size_t retained_bytes = 0; ///< released, kept mapped for the next blocks (<= 64 MiB)
-};
-LargeArrayStats large_array_stats();
-/// Returns the retained blocks to the kernel (after unloading a large world, say).
-void release_retained_memory();
+namespace tamias2d {
 
 namespace detail {
 /// A block of `bytes` (its capacity), aligned to `align` (and to 2 MiB when large).

@@ -3,7 +3,7 @@
 // pages instead of faulting in fresh ones. Fresh pages are what costs where the kernel hands
 // freed memory back to a hypervisor (free page reporting): rain_16k's world took about 16
 // huge-page faults and 50 ms of system time per build-and-run after a 3 s peer run, and none
-// after its own previous run (docs/performance.md, session 14). Used by large_array.cpp only.
+// after its own previous run (docs/performance.md). Used by large_array.cpp only.
 #pragma once
 
 #include <cstddef>

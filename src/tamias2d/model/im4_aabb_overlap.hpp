@@ -2,13 +2,14 @@
 
 namespace tamias2d::model::im4 {
 
-/// An axis-aligned box by its corners. Templated on the scalar so the broad phase's hot loop
-/// runs it on plain doubles and the tests on Boost.Units lengths: one formula either way.
+/// An axis-aligned box by its corners, with unit-typed coordinates.
 template <class L> struct Aabb { L min_x, min_y, max_x, max_y; };
 
 /// \srs{IM4} Collision detection of rectangles by axis-aligned bounding boxes: boxes overlap
 /// when they overlap on both axes (strictly: touching boxes do not overlap, as in the SRS).
-template <class L> constexpr bool overlaps(const Aabb<L>& a, const Aabb<L>& b) {
+/// Any box type with min_x, min_y, max_x, max_y serves: Aabb<Length> in the tests, the engine's
+/// plain-double tamias2d::Aabb in the broad phase.
+template <class Box> constexpr bool overlaps(const Box& a, const Box& b) {
     return a.min_x < b.max_x && a.max_x > b.min_x && a.min_y < b.max_y && a.max_y > b.min_y;
 }
 

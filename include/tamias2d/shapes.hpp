@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <span>
 
-#include "tamias2d/math/vec2d.hpp"
+#include "tamias2d/vec2.hpp"
 
 namespace tamias2d {
 

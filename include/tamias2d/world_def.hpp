@@ -1,7 +1,7 @@
 // World settings. Defaults suit games in metres, kilograms and seconds.
 #pragma once
 
-#include "tamias2d/math/vec2d.hpp"
+#include "tamias2d/vec2.hpp"
 
 namespace tamias2d {
 

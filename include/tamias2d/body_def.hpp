@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "tamias2d/math/vec2d.hpp"
+#include "tamias2d/vec2.hpp"
 
 namespace tamias2d {
 

@@ -1,7 +1,7 @@
 // A body's state as the SRS outputs it (Table 2).
 #pragma once
 
-#include "tamias2d/math/vec2d.hpp"
+#include "tamias2d/vec2.hpp"
 
 namespace tamias2d {
 

@@ -7,10 +7,11 @@
 #include <span>
 #include <vector>
 
+#include "tamias2d/aabb.hpp"
 #include "tamias2d/body_def.hpp"
 #include "tamias2d/body_state.hpp"
 #include "tamias2d/contact_info.hpp"
-#include "tamias2d/geometry/aabb.hpp"
+#include "tamias2d/errors.hpp"
 #include "tamias2d/handles.hpp"
 #include "tamias2d/shape_def.hpp"
 #include "tamias2d/world_def.hpp"
@@ -118,7 +119,9 @@ class World {
     /// mean bitwise-equal worlds. Used by the determinism and strong-guarantee tests.
     std::uint64_t state_hash() const;
 
-    struct Impl;
+    /// \cond INTERNAL
+    struct Impl; // the engine's state (src/tamias2d/world.cpp): not part of the API
+                 /// \endcond
 
   private:
     std::unique_ptr<Impl> impl_;

@@ -2,7 +2,7 @@
 #pragma once
 
 #include "tamias2d/handles.hpp"
-#include "tamias2d/math/vec2d.hpp"
+#include "tamias2d/vec2.hpp"
 
 namespace tamias2d {
 

@@ -1,0 +1,21 @@
+#include "tamias2d/build_info.hpp"
+
+#include "tamias2d/dynamics/wide_contact_solver.hpp"
+
+namespace tamias2d {
+
+const char* library_version() noexcept {
+    return TAMIAS2D_VERSION;
+}
+
+const char* solver_instruction_set() noexcept {
+    if (WideContactSolver::uses_avx2())
+        return "avx2";
+#if defined(__x86_64__) || defined(_M_X64)
+    return "sse2"; // the x86-64 baseline
+#else
+    return "generic";
+#endif
+}
+
+} // namespace tamias2d
