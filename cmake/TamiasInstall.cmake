@@ -28,6 +28,9 @@ install(FILES ${PROJECT_BINARY_DIR}/tamias2dConfig.cmake
               ${PROJECT_BINARY_DIR}/tamias2dConfigVersion.cmake
         DESTINATION ${TAMIAS_CMAKE_DIR} COMPONENT development)
 
+# Relocatable: the prefix is found from the .pc file's own place.
+file(RELATIVE_PATH TAMIAS_PC_TO_PREFIX /root/${CMAKE_INSTALL_LIBDIR}/pkgconfig /root)
+string(REGEX REPLACE "/$" "" TAMIAS_PC_TO_PREFIX "${TAMIAS_PC_TO_PREFIX}")
 foreach(pc tamias2d tamias2d-io)
   if(pc STREQUAL "tamias2d-io" AND NOT TARGET tamias2d_io)
     continue()

@@ -2,9 +2,9 @@
 # Installs the Debian packages Tamias2D needs; silent and fast when all are present.
 set -euo pipefail
 pkgs=(build-essential cmake ninja-build pkg-config clang-format
-      libboost-dev libboost-test-dev libeigen3-dev nlohmann-json3-dev
+      libboost-dev libboost-test-dev nlohmann-json3-dev
       libgsl-dev libchipmunk-dev libbox2d-dev libbenchmark-dev
-      graphviz gcovr python3-yaml python3-matplotlib)
+      graphviz gcovr doxygen python3-yaml python3-matplotlib python3-jsonschema)
 missing=()
 for p in "${pkgs[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -7,10 +7,11 @@ cd "$(dirname "$0")/.."
 ./scripts/setup.sh
 build=build; extra=(); skip=()
 if [ "${1:-}" = "--sanitize" ]; then
-    # Only the C++ that runs: compile-fail checks and the Python harness tests are not repeated.
+    # Only the C++ that runs: compile-fail checks, the Python harness tests and the consumer
+    # builds (plain builds of the same sources) are not repeated.
     build=build-asan
     extra=(-DCMAKE_BUILD_TYPE=Asan -DCMAKE_CXX_FLAGS=-O1 -DTAMIAS_SANITIZE=ON -DTAMIAS_BUILD_VERIFICATION=OFF)
-    skip=(-LE "compile_fail|srs|traceability")
+    skip=(-LE "compile_fail|srs|traceability|consumer|docs")
     export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 fi
 cmake -S . -B "$build" -G Ninja -DTAMIAS_WERROR=ON "${extra[@]}" >/dev/null
