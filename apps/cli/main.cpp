@@ -1,8 +1,9 @@
 // tamias2d: runs and checks scene files (docs/scene-format.md) from the command line.
 //
-//   tamias2d run <scene.json> [--steps N] [--every K] [--format csv|json] [--output FILE]
-//   tamias2d validate <scene.json>
-//   tamias2d --help | --version
+//   tamias2d run <scene.json | -> [--steps N] [--every K] [--format csv|json] [-o FILE]
+//   tamias2d validate <scene.json | ->
+//   tamias2d info
+//   tamias2d help [COMMAND] | --help | --version
 //
 // Exit codes: 0 success, 1 invalid scene or failed run, 2 bad command line. Every error is one
 // line on stderr: "tamias2d: error: <file>: <JSON pointer or line:column>: <what is wrong>".
@@ -13,8 +14,10 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <iterator>
 #include <numbers>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -22,6 +25,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "tamias2d/build_info.hpp"
 #include "tamias2d/errors.hpp"
 #include "tamias2d/io/scene.hpp"
 #include "tamias2d/world.hpp"
@@ -31,26 +35,73 @@ namespace {
 using namespace tamias2d;
 
 constexpr const char* usage = R"(Usage:
-  tamias2d run <scene.json> [--steps N] [--every K] [--format csv|json] [--output FILE]
-  tamias2d validate <scene.json>
+  tamias2d run <scene.json | -> [--steps N] [--every K] [--format csv|json] [-o FILE]
+  tamias2d validate <scene.json | ->
+  tamias2d info
+  tamias2d help [COMMAND]
   tamias2d --help | --version
 
 Commands:
-  run        Simulate the scene and write body states: the initial state and every K steps,
-             and always the final state. Columns: step, time (s), body index, body name,
-             x, y (m, centre of mass), vx, vy (m/s), phi (rad, in [0, 2 pi)), omega (rad/s).
-  validate   Parse and check the scene without running it; prints a one-line summary.
+  run        Simulate a scene and write the bodies' states (SI units).
+  validate   Parse and check a scene without running it; print a one-line summary.
+  info       Print the version, the solver's instruction set on this machine and the build.
+  help       Print this text, or a command's own (also: tamias2d COMMAND --help).
 
-Options (run):
-  --steps N        number of steps (default: the scene's "steps")
-  --every K        write states every K steps; 0 writes only the final state
-                   (default: the scene's "output_every")
-  --format F       csv (default) or json
-  --output FILE    write to FILE instead of standard output
+A scene file of "-" is read from standard input.
 
 Exit status: 0 on success, 1 for an invalid scene or a failed run, 2 for a bad command line.
+Errors are one line on standard error: "tamias2d: error: <file>: <place>: <what is wrong>".
 The scene format is described in docs/scene-format.md.
 )";
+
+constexpr const char* run_usage = R"(Usage: tamias2d run <scene.json | -> [options]
+
+Simulate the scene and write body states: the initial state and every K steps, and always the
+final state. Columns: step, time (s), body index, body name, x, y (m, centre of mass), vx, vy
+(m/s), phi (rad, in [0, 2 pi)), omega (rad/s). Numbers are written in the shortest form that
+reads back as the same double. A scene file of "-" is read from standard input.
+
+Options:
+  --steps N          number of steps (default: the scene's "steps")
+  --every K          write states every K steps; 0 writes only the final state
+                     (default: the scene's "output_every")
+  --format F         csv (default) or json
+  -o, --output FILE  write to FILE instead of standard output ("-": standard output); no
+                     partial file is left behind when the run fails
+  -h, --help         print this text
+
+Exit status: 0 on success, 1 for an invalid scene or a failed run (a state that is not finite
+stops the run), 2 for a bad command line.
+)";
+
+constexpr const char* validate_usage = R"(Usage: tamias2d validate <scene.json | ->
+
+Parse and check the scene (syntax, types, every data constraint, a dry build of every body and
+shape) without running it, and print "<file>: OK: B bodies, S shapes, dt = T s, N steps".
+A scene file of "-" is read from standard input.
+
+Exit status: 0 for a valid scene, 1 for an invalid one (one line on standard error naming the
+place, the field and the violated constraint), 2 for a bad command line.
+)";
+
+constexpr const char* info_usage = R"(Usage: tamias2d info
+
+Print the library's version, the instruction set the contact solver runs with on this machine
+(avx2 or sse2 on x86-64, chosen when the program starts; both give bitwise the same results),
+and the compiler that built it.
+
+Exit status: 0.
+)";
+
+const char* usage_of(std::string_view command) {
+    if (command == "run")
+        return run_usage;
+    if (command == "validate")
+        return validate_usage;
+    if (command == "info")
+        return info_usage;
+    return nullptr;
+}
 
 /// A bad command line (exit status 2).
 struct UsageError : std::runtime_error {
@@ -59,6 +110,7 @@ struct UsageError : std::runtime_error {
 
 struct Options {
     std::string command;
+    bool help = false; ///< print the command's usage and stop
     std::string scene;
     std::optional<int> steps;
     std::optional<int> every;
@@ -78,10 +130,20 @@ int parse_count(std::string_view option, std::string_view text) {
 Options parse_args(const std::vector<std::string_view>& args) {
     Options o;
     if (args.empty())
-        throw UsageError("missing command (run or validate)");
+        throw UsageError("missing command (run, validate, info or help)");
     o.command = args[0];
-    if (o.command != "run" && o.command != "validate")
-        throw UsageError("unknown command '" + o.command + "' (expected run or validate)");
+    if (o.command == "help") {
+        if (args.size() > 2)
+            throw UsageError("help takes at most one command");
+        if (args.size() == 2 && usage_of(args[1]) == nullptr)
+            throw UsageError("no help for '" + std::string(args[1]) +
+                             "' (commands: run, validate, info)");
+        o.help = true;
+        o.command = args.size() == 2 ? std::string(args[1]) : std::string{};
+        return o;
+    }
+    if (usage_of(o.command) == nullptr)
+        throw UsageError("unknown command '" + o.command + "' (expected run, validate or info)");
     for (std::size_t i = 1; i < args.size(); ++i) {
         const std::string_view a = args[i];
         const auto value = [&]() -> std::string_view {
@@ -91,7 +153,9 @@ Options parse_args(const std::vector<std::string_view>& args) {
                 throw UsageError("option " + std::string(a) + " needs a value");
             return args[++i];
         };
-        if (a == "--steps") {
+        if (a == "--help" || a == "-h") {
+            o.help = true;
+        } else if (a == "--steps") {
             o.steps = parse_count(a, value());
         } else if (a == "--every") {
             o.every = parse_count(a, value());
@@ -99,19 +163,23 @@ Options parse_args(const std::vector<std::string_view>& args) {
             o.format = value();
             if (o.format != "csv" && o.format != "json")
                 throw UsageError("--format expects csv or json, got '" + o.format + "'");
-        } else if (a == "--output") {
+        } else if (a == "--output" || a == "-o") {
             o.output = value();
             if (o.output.empty())
-                throw UsageError("--output needs a file name");
+                throw UsageError(std::string(a) + " needs a file name");
+            if (o.output == "-")
+                o.output.clear();
         } else if (a.starts_with("-") && a.size() > 1) {
             throw UsageError("unknown option '" + std::string(a) + "'");
+        } else if (o.command == "info") {
+            throw UsageError("info takes no argument, got '" + std::string(a) + "'");
         } else if (o.scene.empty()) {
             o.scene = a;
         } else {
             throw UsageError("unexpected argument '" + std::string(a) + "'");
         }
     }
-    if (o.scene.empty())
+    if (o.scene.empty() && !o.help && o.command != "info")
         throw UsageError("missing scene file");
     return o;
 }
@@ -201,14 +269,54 @@ class Writer {
     bool first_frame_ = true;
 };
 
+/// The build's facts: version, solver instruction set, compiler.
+void print_info() {
+    std::cout << "tamias2d " << library_version() << "\n"
+              << "solver instruction set: " << solver_instruction_set() << "\n"
+              << "compiler: "
+#if defined(__clang__)
+              << "clang " << __clang_major__ << '.' << __clang_minor__ << '.'
+              << __clang_patchlevel__
+#elif defined(__GNUC__)
+              << "gcc " << __GNUC__ << '.' << __GNUC_MINOR__ << '.' << __GNUC_PATCHLEVEL__
+#else
+              << "unknown"
+#endif
+              << ", C++ " << __cplusplus << "\n"
+              << "floating point: IEEE 754 double, no fused multiply-add in the library\n";
+}
+
+/// The scene file's name in messages and outputs.
+std::string display_name(const std::string& scene) {
+    return scene == "-" ? std::string("<stdin>") : scene;
+}
+
+/// The scene named on the command line; "-" is standard input.
+io::Scene load(const std::string& scene) {
+    if (scene != "-")
+        return io::load_scene(scene);
+    const std::string text{std::istreambuf_iterator<char>(std::cin), {}};
+    return io::parse_scene(text, display_name(scene));
+}
+
 int run(const Options& o) {
-    const io::Scene scene = io::load_scene(o.scene);
+    if (o.help) {
+        const char* text = usage_of(o.command);
+        std::cout << (text != nullptr ? text : usage);
+        return 0;
+    }
+    if (o.command == "info") {
+        print_info();
+        return 0;
+    }
+    const io::Scene scene = load(o.scene);
     if (o.command == "validate") {
         std::size_t shapes = 0;
         for (const io::SceneBody& b : scene.bodies)
             shapes += b.shapes.size();
-        std::cout << o.scene << ": OK: " << scene.bodies.size() << " bodies, " << shapes
-                  << " shapes, dt = " << num(scene.dt) << " s, " << scene.steps << " steps\n";
+        std::cout << display_name(o.scene) << ": OK: " << scene.bodies.size() << " bodies, "
+                  << shapes << " shapes, dt = " << num(scene.dt) << " s, " << scene.steps
+                  << " steps\n";
         return 0;
     }
     const int steps = o.steps.value_or(scene.steps);
@@ -225,7 +333,7 @@ int run(const Options& o) {
     }
     std::ostream& out = o.output.empty() ? std::cout : file;
     try {
-        Writer w(out, o.format == "json", scene, o.scene, steps);
+        Writer w(out, o.format == "json", scene, display_name(o.scene), steps);
         if (every > 0)
             w.frame(0, world, ids, scene);
         for (int step = 1; step <= steps; ++step) {
@@ -260,12 +368,12 @@ std::string one_line(std::string s) {
 
 int main(int argc, char** argv) {
     std::vector<std::string_view> args(argv + 1, argv + argc);
-    if (!args.empty() && (args[0] == "--help" || args[0] == "-h" || args[0] == "help")) {
+    if (!args.empty() && (args[0] == "--help" || args[0] == "-h")) {
         std::cout << usage;
         return 0;
     }
     if (!args.empty() && args[0] == "--version") {
-        std::cout << "tamias2d 0.1.0\n";
+        std::cout << "tamias2d " << library_version() << '\n';
         return 0;
     }
     try {
