@@ -8,7 +8,7 @@ set -uo pipefail
 cd "$(dirname "$0")/.."
 t0=$(date +%s)
 phase() { printf '\n== [%4ds] %s\n' "$(( $(date +%s) - t0 ))" "$*"; }
-quick=0; full_bench=0; coverage_failed=0
+quick=0; full_bench=0; coverage_failed=0; api_failed=0
 for arg in "$@"; do
     case "$arg" in
         --quick) quick=1 ;;
@@ -55,14 +55,20 @@ if [ $quick -eq 0 ]; then
         coverage_failed=1
     fi
     rm -f build-coverage/failures.txt
-    gcovr -r . --filter 'src/' --json-summary reports/data/coverage.json \
+    gcovr -r . --filter 'src/' --filter 'include/' --json-summary reports/data/coverage.json \
           --html-details reports/coverage.html build-coverage >/dev/null 2>&1 ||
         echo "   gcovr failed"
+    # gcov writes its .gcov files into the working directory; gcovr leaves some of them there.
+    find . -maxdepth 1 -name '*.gcov' -delete
 fi
+
+phase "API reference (Doxygen) into reports/api"
+./scripts/api_reference.sh reports/api build || api_failed=1
 
 phase "tests and traceability report"
 /usr/bin/python3 traceability/build_report.py --source . --build build --out reports
 status=$?
 [ $coverage_failed -eq 0 ] || status=1
+[ $api_failed -eq 0 ] || status=1
 phase "done (exit $status): open reports/index.html"
 exit $status

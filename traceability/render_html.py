@@ -184,7 +184,10 @@ commit <code>{E(commit[:12])}</code>{E(dirty)} · {E(ran)} · report schema {E(r
         self.w("""<nav class="toc"><a href="#summary">Summary</a><a href="#items">Items</a>
 <a href="#gaps">Gaps &amp; orphans</a><a href="#matrices">Matrices</a><a href="#graphs">Graphs</a>
 <a href="#errata">Errata</a><a href="#vv">V&amp;V evidence</a><a href="#coverage">Coverage</a>
-<a href="#tests">All tests</a><a href="#method">Method &amp; warnings</a></nav><main>""")
+<a href="#tests">All tests</a><a href="#method">Method &amp; warnings</a>""")
+        if os.path.exists(os.path.join(r["inputs"]["out_dir"], "api", "index.html")):
+            self.w('<a href="api/index.html">API reference</a>')
+        self.w("</nav><main>")
 
     def gate(self):
         g = self.r["gate"]
