@@ -1,4 +1,5 @@
-// What a body is made from (SRS R2). Every field is in SI units, stated beside it.
+/// \file
+/// What a body is made from (SRS R2). Every field is in SI units, stated beside it.
 #pragma once
 
 #include <cstdint>
@@ -27,13 +28,13 @@ using LoadFunction = std::function<Load(double t)>;
 /// \srs{R2} The inputs of a body: mass, initial position, velocity, orientation, angular
 /// velocity and the forces applied to it.
 struct BodyDef {
-    BodyType type = BodyType::dynamic;
-    Vec2d position{};              ///< m, world position of the body origin
-    double angle = 0.0;            ///< rad, orientation phi (any real; read back in [0, 2 pi))
-    Vec2d linear_velocity{};       ///< m s^-1, of the centre of mass
-    double angular_velocity = 0.0; ///< rad s^-1, CCW positive
-    Vec2d force{};                 ///< N, persistent force at the centre of mass
-    double torque = 0.0;           ///< N m, persistent torque
+    BodyType type = BodyType::dynamic; ///< how the body moves
+    Vec2d position{};                  ///< m, world position of the body origin
+    double angle = 0.0;                ///< rad, orientation phi (any real; read back in [0, 2 pi))
+    Vec2d linear_velocity{};           ///< m s^-1, of the centre of mass
+    double angular_velocity = 0.0;     ///< rad s^-1, CCW positive
+    Vec2d force{};                     ///< N, persistent force at the centre of mass
+    double torque = 0.0;               ///< N m, persistent torque
     /// kg, > 0. Overrides the mass computed from the shapes and their densities (DD1).
     std::optional<double> mass;
     /// kg m^2 about the centre of mass, > 0. Overrides the computed moment of inertia (DD14).
@@ -43,7 +44,7 @@ struct BodyDef {
     /// With the world's sleeping on (WorldDef::enable_sleep): whether this body may sleep (a
     /// body that may not keeps every body touching it awake), and whether it starts awake.
     bool enable_sleep = true;
-    bool awake = true;
+    bool awake = true; ///< starts awake (false: asleep, e.g. a stack built at rest)
     LoadFunction load; ///< optional F(t), tau(t), added to the persistent loads
     std::string name;  ///< free text, for scene files and reports
 };

@@ -1,10 +1,12 @@
-// A body's state as the SRS outputs it (Table 2).
+/// \file
+/// A body's state as the SRS outputs it (Table 2).
 #pragma once
 
 #include "tamias2d/vec2.hpp"
 
 namespace tamias2d {
 
+/// \srs{R8} Position, velocity, orientation and angular velocity of one body after a step.
 struct BodyState {
     Vec2d position{};              ///< m, centre of mass p (DD1), world frame
     Vec2d velocity{};              ///< m s^-1, of the centre of mass

@@ -1,4 +1,5 @@
-// What the user learns about contacts after each step (SRS R7, R8).
+/// \file
+/// What the user learns about contacts after each step (SRS R7, R8).
 #pragma once
 
 #include "tamias2d/handles.hpp"
@@ -6,6 +7,7 @@
 
 namespace tamias2d {
 
+/// One point of a contact manifold.
 struct ContactPointInfo {
     Vec2d point{};                ///< m, world frame
     double separation = 0.0;      ///< m, negative when overlapping (measured before the step)
@@ -15,21 +17,21 @@ struct ContactPointInfo {
 
 /// A touching pair. `normal` is a unit vector from shape_a into shape_b.
 struct ContactInfo {
-    ShapeId shape_a;
-    ShapeId shape_b;
-    BodyId body_a;
-    BodyId body_b;
-    Vec2d normal{};
-    int point_count = 0;
-    ContactPointInfo points[2]{};
+    ShapeId shape_a;              ///< the first shape of the pair
+    ShapeId shape_b;              ///< the second shape of the pair
+    BodyId body_a;                ///< the body carrying shape_a
+    BodyId body_b;                ///< the body carrying shape_b
+    Vec2d normal{};               ///< unit, from shape_a into shape_b (DD4's n)
+    int point_count = 0;          ///< 1 or 2: how many of `points` hold a point
+    ContactPointInfo points[2]{}; ///< the manifold's points (two for a face-to-face contact)
 };
 
 /// A pair that began or ended touching during the last step.
 struct ContactEvent {
-    ShapeId shape_a;
-    ShapeId shape_b;
-    BodyId body_a;
-    BodyId body_b;
+    ShapeId shape_a; ///< the first shape of the pair
+    ShapeId shape_b; ///< the second shape of the pair
+    BodyId body_a;   ///< the body carrying shape_a (as it was when the event happened)
+    BodyId body_b;   ///< the body carrying shape_b
 };
 
 } // namespace tamias2d

@@ -1,6 +1,7 @@
-// The library's exceptions. Bad input is rejected before anything is mutated (R4), and the
-// error names the field, the offending value and the SRS data constraint it breaks, so a user
-// can fix the input and an auditor can trace the check to the SRS.
+/// \file
+/// The library's exceptions. Bad input is rejected before anything is mutated (R4), and the
+/// error names the field, the offending value and the SRS data constraint it breaks, so a user
+/// can fix the input and an auditor can trace the check to the SRS.
 #pragma once
 
 #include <charconv>

@@ -1,4 +1,5 @@
-// What a shape is made from: its geometry and its material (SRS R3).
+/// \file
+/// What a shape is made from: its geometry and its material (SRS R3).
 #pragma once
 
 #include <span>
@@ -15,9 +16,10 @@ struct Material {
     double friction = 0.0;
 };
 
+/// \srs{R3} The inputs of a shape: its geometry (body frame) and its material.
 struct ShapeDef {
-    Geometry geometry{};
-    Material material{};
+    Geometry geometry{}; ///< circle or convex polygon, m in the body frame
+    Material material{}; ///< density, restitution, friction
 };
 
 /// A rectangle w x h (m) centred on the body origin (or on `center`, rotated by `angle`).

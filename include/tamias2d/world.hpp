@@ -1,4 +1,5 @@
-// The world: the space in which rigid bodies move and collide (SRS R1).
+/// \file
+/// The world: the space in which rigid bodies move and collide (SRS R1).
 #pragma once
 
 #include <cstdint>
@@ -18,9 +19,10 @@
 
 namespace tamias2d {
 
+/// The first shape a ray meets (World::ray_cast).
 struct RayCastHit {
-    ShapeId shape;
-    BodyId body;
+    ShapeId shape;         ///< the shape hit
+    BodyId body;           ///< the body carrying it
     Vec2d point{};         ///< m
     Vec2d normal{};        ///< unit, outward from the shape
     double fraction = 0.0; ///< along the ray's translation, in [0, 1]
@@ -31,56 +33,78 @@ struct RayCastHit {
 /// InvalidHandle (errors.hpp) without changing anything: the world is left exactly as it was.
 class World {
   public:
+    /// An empty world with the given settings; throws ValidationError if a setting breaks its
+    /// constraint (e.g. substeps < 1, a non-finite gravity).
     explicit World(const WorldDef& def = {});
     ~World();
+    /// Worlds move (handles stay valid in the moved-to world) but are not copied: a copy of a
+    /// whole simulation is rarely meant, and a scene file (io/scene.hpp) rebuilds one.
     World(World&&) noexcept;
+    /// Takes over the other world's bodies, shapes and state.
     World& operator=(World&&) noexcept;
     World(const World&) = delete;
     World& operator=(const World&) = delete;
 
     // --- bodies and shapes (R1, R2, R3) ---
+    /// Adds a body (R1, R2) and returns its handle; throws ValidationError naming the field
+    /// of `def` that breaks its data constraint. The body has no mass until a shape gives it
+    /// one (or BodyDef::mass is set).
     BodyId create_body(const BodyDef& def);
     /// Destroys the body, its shapes and its contacts.
     void destroy_body(BodyId body);
+    /// Attaches a shape to a body (R3) and recomputes the body's mass, centre of mass and
+    /// inertia (DD1, DD14) unless BodyDef overrides them; throws ValidationError for degenerate
+    /// geometry or a material out of range.
     ShapeId create_shape(BodyId body, const ShapeDef& def);
+    /// Removes a shape and its contacts and recomputes the body's mass.
     void destroy_shape(ShapeId shape);
+    /// Whether the handle names a body that exists (not destroyed, slot not reused).
     bool is_valid(BodyId body) const;
+    /// Whether the handle names a shape that exists.
     bool is_valid(ShapeId shape) const;
-    std::vector<BodyId> bodies() const; ///< in creation order of their slots
-    std::vector<ShapeId> shapes(BodyId body) const;
-    std::size_t body_count() const;
+    std::vector<BodyId> bodies() const;             ///< in creation order of their slots
+    std::vector<ShapeId> shapes(BodyId body) const; ///< the body's shapes, in creation order
+    std::size_t body_count() const;                 ///< bodies that exist
 
     // --- stepping (R5, R6, R7, R8) ---
     /// Advances by dt (s, > 0 and finite).
     void step(double dt);
-    double time() const;       ///< s, simulated so far
-    void set_gravity(Vec2d g); ///< m s^-2 (GD2)
-    Vec2d gravity() const;
-    const WorldDef& settings() const;
+    double time() const;              ///< s, simulated so far
+    void set_gravity(Vec2d g);        ///< m s^-2 (GD2)
+    Vec2d gravity() const;            ///< m s^-2
+    const WorldDef& settings() const; ///< the settings, with the current gravity
 
     // --- body state (R2, Table 2) ---
+    /// The body's outputs as the SRS states them (Table 2). Every getter throws InvalidHandle
+    /// for a handle that names no body.
     BodyState state(BodyId body) const;
-    Vec2d position(BodyId body) const;     ///< m, centre of mass
-    Vec2d origin(BodyId body) const;       ///< m, body origin (where shapes are placed from)
-    double orientation(BodyId body) const; ///< rad in [0, 2 pi)
-    Vec2d velocity(BodyId body) const;
-    double angular_velocity(BodyId body) const;
-    double mass(BodyId body) const;        ///< kg (0 for static and kinematic bodies)
-    double inertia(BodyId body) const;     ///< kg m^2 about the centre of mass
-    Vec2d local_center(BodyId body) const; ///< m, centre of mass in the body frame
-    BodyType type(BodyId body) const;
-    const std::string& name(BodyId body) const;
+    Vec2d position(BodyId body) const;          ///< m, centre of mass
+    Vec2d origin(BodyId body) const;            ///< m, body origin (where shapes are placed from)
+    double orientation(BodyId body) const;      ///< rad in [0, 2 pi)
+    Vec2d velocity(BodyId body) const;          ///< m s^-1, of the centre of mass
+    double angular_velocity(BodyId body) const; ///< rad s^-1, CCW positive
+    double mass(BodyId body) const;             ///< kg (0 for static and kinematic bodies)
+    double inertia(BodyId body) const;          ///< kg m^2 about the centre of mass
+    Vec2d local_center(BodyId body) const;      ///< m, centre of mass in the body frame
+    BodyType type(BodyId body) const;           ///< as created
+    const std::string& name(BodyId body) const; ///< BodyDef::name
 
+    /// Moves the body origin to `origin` (m) at orientation `angle` (rad), without sweeping:
+    /// it teleports, and its contacts are found again at the next step.
     void set_transform(BodyId body, Vec2d origin, double angle);
+    /// Sets the velocity (m s^-1) of the centre of mass; ignored for static bodies.
     void set_velocity(BodyId body, Vec2d v);
+    /// Sets the angular velocity (rad s^-1); ignored for static bodies.
     void set_angular_velocity(BodyId body, double omega);
 
     // --- loads (R2, IM1, IM2) ---
     /// Persistent force at the centre of mass (N) and torque (N m): act every step until changed.
     void set_force(BodyId body, Vec2d force);
+    /// Persistent torque (N m, CCW positive) until changed.
     void set_torque(BodyId body, double torque);
     /// One-step force at a world point (N at m): the torque r x F (DD13) comes with it.
     void apply_force(BodyId body, Vec2d force, Vec2d world_point);
+    /// One-step torque (N m), cleared after the next step.
     void apply_torque(BodyId body, double torque);
     /// Instantaneous impulse J (N s) at a world point: dv = J / m (DD10), domega = r x J / I.
     void apply_impulse(BodyId body, Vec2d impulse, Vec2d world_point);
@@ -109,10 +133,16 @@ class World {
     /// deterministic order. Built on the first call after a step; not safe to call from two
     /// threads at once (nothing in World is).
     std::span<const ContactInfo> contacts() const;
+    /// Pairs that began touching during the last step, in a deterministic order.
     std::span<const ContactEvent> contact_begin_events() const;
+    /// Pairs that stopped touching during the last step (or lost a shape or body to destruction).
     std::span<const ContactEvent> contact_end_events() const;
+    /// Shapes whose bounding boxes overlap `box` (m), by shape index.
     std::vector<ShapeId> query_aabb(const Aabb& box) const;
+    /// Shapes that contain `point` (m, world frame), by shape index.
     std::vector<ShapeId> query_point(Vec2d point) const;
+    /// The first shape met by the segment origin -> origin + translation (m), if any; ties go
+    /// to the lower shape index so that the answer is deterministic.
     std::optional<RayCastHit> ray_cast(Vec2d origin, Vec2d translation) const;
 
     /// A hash of the complete simulation state (bit patterns of every double): equal hashes

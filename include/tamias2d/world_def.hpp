@@ -1,10 +1,13 @@
-// World settings. Defaults suit games in metres, kilograms and seconds.
+/// \file
+/// World settings. Defaults suit games in metres, kilograms and seconds.
 #pragma once
 
 #include "tamias2d/vec2.hpp"
 
 namespace tamias2d {
 
+/// The settings of a World: gravity, the soft step's substeps and contact softness, and
+/// sleeping. Checked when the World is made (SRS R4).
 struct WorldDef {
     Vec2d gravity{0.0, -9.81}; ///< m s^-2 (GD2; the SRS's g = 9.81 m s^-2)
     /// Substeps per step (soft step). IM1/IM2 are integrated with h = dt / substeps.
@@ -14,8 +17,8 @@ struct WorldDef {
     /// stiffness is capped at a quarter of the substep rate (60 Hz at 4 substeps of 1/60 s) for
     /// stability; a stiffer contact sinks less under load (overlap ~ load / (m (2 pi hertz)^2)).
     double contact_hertz = 45.0;
-    double contact_damping_ratio = 10.0;
-    double contact_push_max_velocity = 3.0;
+    double contact_damping_ratio = 10.0;    ///< of the soft contact, > 0 (10: overdamped)
+    double contact_push_max_velocity = 3.0; ///< m s^-1, >= 0
     /// Overlap (m) tolerated before the soft contact pushes back. Default 0: soft contacts do
     /// not jitter at rest, and any slop lets every layer of a stack sink by that much.
     double linear_slop = 0.0;

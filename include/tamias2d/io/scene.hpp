@@ -1,10 +1,11 @@
-// Scene files: a whole simulation (world settings, run length, bodies, shapes, materials, loads
-// and generated stacks) as one JSON document. The format is specified in docs/scene-format.md.
-//
-// Loading is all or nothing (SRS R4): the document is parsed, type-checked and validated in
-// full, including a dry run of every body and shape through a scratch World, before any Scene is
-// returned. An error is a SceneError naming the place (JSON pointer, or line and column for a
-// syntax error), the field, the value and the data constraint it breaks.
+/// \file
+/// Scene files: a whole simulation (world settings, run length, bodies, shapes, materials, loads
+/// and generated stacks) as one JSON document. The format is specified in docs/scene-format.md.
+///
+/// Loading is all or nothing (SRS R4): the document is parsed, type-checked and validated in
+/// full, including a dry run of every body and shape through a scratch World, before any Scene is
+/// returned. An error is a SceneError naming the place (JSON pointer, or line and column for a
+/// syntax error), the field, the value and the data constraint it breaks.
 #pragma once
 
 #include <cstdint>
@@ -30,54 +31,58 @@ namespace io {
 /// A scalar function of time f(t) (t in s) for one load component (IM1's F_i(t), IM2's
 /// tau_i(t)). Only the fields of its kind are used; the others keep their defaults.
 struct TimeFunction {
+    /// The form of f(t).
     enum class Kind : std::uint8_t { constant, sinusoid, step, ramp };
-    Kind kind = Kind::constant;
-    double value = 0.0;     ///< constant: f(t) = value
-    double amplitude = 0.0; ///< sinusoid: f(t) = offset + amplitude sin(omega t + phase)
-    double omega = 0.0;     ///< rad s^-1
-    double phase = 0.0;     ///< rad
-    double offset = 0.0;
-    double time = 0.0;   ///< step: f(t) = before for t < time, after for t >= time
-    double before = 0.0; ///< (step)
-    double after = 0.0;  ///< (step)
-    double t0 = 0.0;     ///< ramp: from at t <= t0, to at t >= t1, linear in between
-    double t1 = 1.0;     ///< (ramp), t1 > t0
-    double from = 0.0;   ///< (ramp)
-    double to = 0.0;     ///< (ramp)
+    Kind kind = Kind::constant; ///< which of the forms below applies
+    double value = 0.0;         ///< constant: f(t) = value
+    double amplitude = 0.0;     ///< sinusoid: f(t) = offset + amplitude sin(omega t + phase)
+    double omega = 0.0;         ///< rad s^-1
+    double phase = 0.0;         ///< rad
+    double offset = 0.0;        ///< (sinusoid)
+    double time = 0.0;          ///< step: f(t) = before for t < time, after for t >= time
+    double before = 0.0;        ///< (step)
+    double after = 0.0;         ///< (step)
+    double t0 = 0.0;            ///< ramp: from at t <= t0, to at t >= t1, linear in between
+    double t1 = 1.0;            ///< (ramp), t1 > t0
+    double from = 0.0;          ///< (ramp)
+    double to = 0.0;            ///< (ramp)
 
-    double operator()(double t) const;
+    double operator()(double t) const; ///< f(t), t in s
+    /// Same kind and same parameters.
     friend bool operator==(const TimeFunction&, const TimeFunction&) = default;
 };
 
 /// Time-varying loads of one body, each component optional; they add to BodyDef::force and
 /// BodyDef::torque.
 struct SceneLoads {
-    std::optional<TimeFunction> force_x; ///< N
-    std::optional<TimeFunction> force_y; ///< N
-    std::optional<TimeFunction> torque;  ///< N m
-    bool empty() const { return !force_x && !force_y && !torque; }
-    Load operator()(double t) const;
+    std::optional<TimeFunction> force_x;                           ///< N
+    std::optional<TimeFunction> force_y;                           ///< N
+    std::optional<TimeFunction> torque;                            ///< N m
+    bool empty() const { return !force_x && !force_y && !torque; } ///< no component set
+    Load operator()(double t) const; ///< the load at t (s); absent components are 0
+    /// Same components, each the same function.
     friend bool operator==(const SceneLoads&, const SceneLoads&) = default;
 };
 
 /// One body of a scene. `def.load` is set from `loads` when the scene is parsed; build_world
 /// uses `loads` when it is not empty (replacing `def.load`), else `def.load` as it is.
 struct SceneBody {
-    BodyDef def;
-    std::vector<ShapeDef> shapes;
-    SceneLoads loads;
+    BodyDef def;                  ///< the body as World::create_body takes it
+    std::vector<ShapeDef> shapes; ///< its shapes, in file order
+    SceneLoads loads;             ///< its time-varying loads, if any
     /// Where the body came from: the JSON pointer of its entry ("/bodies/3"), or of the
     /// generator that made it. Used in error messages.
     std::string source;
     bool generated = false; ///< made by a generator (then `source` is the generator's pointer)
 };
 
+/// A whole simulation as a scene file states it: the world, the run, the bodies.
 struct Scene {
-    std::string description;
-    WorldDef world;
-    double dt = 1.0 / 60.0; ///< s, > 0 (DCX_dt)
-    int steps = 0;          ///< number of steps a run takes, >= 0
-    int output_every = 0;   ///< write states every K steps (0: only the final state)
+    std::string description; ///< free text
+    WorldDef world;          ///< the world's settings
+    double dt = 1.0 / 60.0;  ///< s, > 0 (DCX_dt)
+    int steps = 0;           ///< number of steps a run takes, >= 0
+    int output_every = 0;    ///< write states every K steps (0: only the final state)
     /// Named materials as declared (shapes hold their resolved Material).
     std::map<std::string, Material> materials;
     std::vector<SceneBody> bodies; ///< generated bodies expanded in place, in file order
@@ -95,6 +100,7 @@ struct SceneError : std::runtime_error {
     std::string constraint; ///< data-constraint label (e.g. "DCX_shape"), "" if none applies
     std::string detail;     ///< the message without origin and place
 
+    /// Builds what() from the parts: "origin: pointer: detail", or "origin:line:column: detail".
     SceneError(std::string origin_, std::string pointer_, int line_, int column_,
                std::string field_, std::string constraint_, std::string detail_);
 };

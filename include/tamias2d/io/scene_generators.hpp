@@ -1,8 +1,9 @@
-// Generators for large or standard scenes: a pyramid of boxes on a static ground, a rain of
-// boxes into an open-top container, and a head-on elastic pair. Each returns plain SceneBody
-// values (the scene parser expands a {"generator": ...} entry into them), so a generated scene
-// is an ordinary scene. Parameters are validated first: ValidationError names the parameter by
-// its scene-file key ("base", "container.width", ...) and the data constraint it breaks.
+/// \file
+/// Generators for large or standard scenes: a pyramid of boxes on a static ground, a rain of
+/// boxes into an open-top container, and a head-on elastic pair. Each returns plain SceneBody
+/// values (the scene parser expands a {"generator": ...} entry into them), so a generated scene
+/// is an ordinary scene. Parameters are validated first: ValidationError names the parameter by
+/// its scene-file key ("base", "container.width", ...) and the data constraint it breaks.
 #pragma once
 
 #include <cstdint>
@@ -26,8 +27,10 @@ struct PyramidParams {
     Vec2d origin{};                      ///< m, centre of the ground's top face
     double ground_width = 0.0;           ///< m, 0: automatic (2 base box + 10 box)
     double ground_height = 0.0;          ///< m, 0: automatic (box)
-    Material material{1.0, 0.0, 0.6};
+    Material material{1.0, 0.0, 0.6};    ///< of every box (the ground's too)
 };
+/// The pyramid's bodies, ground first then the rows bottom-up, each left to right; throws
+/// ValidationError for a parameter out of range.
 std::vector<SceneBody> generate_pyramid(const PyramidParams& p);
 
 /// An open-top static container of three boxes (floor and two walls, one body) whose inner
@@ -44,17 +47,18 @@ struct ContainerParams {
 /// horizontally by a deterministic jitter in [-jitter, jitter] drawn from `seed` (splitmix64,
 /// the same on every platform). Bodies: the container first, then the boxes row by row.
 struct RainParams {
-    std::string name = "rain"; ///< body names: "<name>/container", "<name>/<index>"
-    static constexpr int max_count = 200000;
-    int count = 2000;         ///< boxes, in [0, max_count]
-    double box = 0.5;         ///< m, box side (> 0)
-    double spacing = 0.0;     ///< m, grid pitch; 0: automatic (1.5 box); must exceed box
-    double jitter = -1.0;     ///< m, < 0: automatic (0.2 box); 2 jitter < spacing - box
-    double drop_height = 1.0; ///< m, clearance between the walls' top and the lowest row
-    std::uint64_t seed = 1;
-    ContainerParams container{};
-    Material material{1.0, 0.0, 0.6};
+    std::string name = "rain";               ///< body names: "<name>/container", "<name>/<index>"
+    static constexpr int max_count = 200000; ///< the largest `count` accepted
+    int count = 2000;                        ///< boxes, in [0, max_count]
+    double box = 0.5;                        ///< m, box side (> 0)
+    double spacing = 0.0;             ///< m, grid pitch; 0: automatic (1.5 box); must exceed box
+    double jitter = -1.0;             ///< m, < 0: automatic (0.2 box); 2 jitter < spacing - box
+    double drop_height = 1.0;         ///< m, clearance between the walls' top and the lowest row
+    std::uint64_t seed = 1;           ///< of the jitter's random stream (SplitMix64)
+    ContainerParams container{};      ///< where the boxes fall into
+    Material material{1.0, 0.0, 0.6}; ///< of every box and of the container
 };
+/// The container and the falling boxes; throws ValidationError for a parameter out of range.
 std::vector<SceneBody> generate_rain(const RainParams& p);
 
 /// Two equal square boxes on the x axis, approaching head-on: "<name>/left" at
@@ -62,20 +66,21 @@ std::vector<SceneBody> generate_rain(const RainParams& p);
 /// (-speed, 0). Restitution 1, friction 0 and gravity_scale 0 (no gravity): momentum and
 /// kinetic energy are conserved and the bodies exchange velocities (GD1, DD12).
 struct ElasticPairParams {
-    std::string name = "elastic";
-    double box = 1.0;      ///< m, side (> 0)
-    double speed = 1.0;    ///< m s^-1, of each box (finite)
-    double distance = 3.0; ///< m, between the centres (> box)
-    double density = 1.0;  ///< kg m^-2 (> 0)
-    double restitution = 1.0;
+    std::string name = "elastic"; ///< body names: "<name>/left", "<name>/right"
+    double box = 1.0;             ///< m, side (> 0)
+    double speed = 1.0;           ///< m s^-1, of each box (finite)
+    double distance = 3.0;        ///< m, between the centres (> box)
+    double density = 1.0;         ///< kg m^-2 (> 0)
+    double restitution = 1.0;     ///< C_R of both boxes (DD12), in [0, 1]
 };
+/// The two boxes, left first; throws ValidationError for a parameter out of range.
 std::vector<SceneBody> generate_elastic_pair(const ElasticPairParams& p);
 
 /// The generators' deterministic random stream: splitmix64, uniform doubles in [0, 1).
 struct SplitMix64 {
-    std::uint64_t state;
-    std::uint64_t next();
-    double uniform(); ///< 53 random bits / 2^53
+    std::uint64_t state;  ///< the seed, then the stream's position
+    std::uint64_t next(); ///< the next 64 random bits
+    double uniform();     ///< 53 random bits / 2^53
 };
 
 } // namespace tamias2d::io
