@@ -19,6 +19,7 @@
 #include "tamias2d/geometry/mass_properties.hpp"
 #include "tamias2d/geometry/shape_aabb.hpp"
 #include "tamias2d/geometry/shape_queries.hpp"
+#include "tamias2d/math/prefetch.hpp"
 #include "tamias2d/memory/large_array.hpp"
 #include "tamias2d/memory/pair_map.hpp"
 #include "tamias2d/model/dd10_impulse.hpp"
@@ -313,10 +314,10 @@ struct World::Impl {
                 // (A contact kept as it is, below, reads no shape.)
                 if (!sleeping || active(next.body_a) || active(next.body_b)) {
                     for (const Shape* s : {&shapes[next.shape_a], &shapes[next.shape_b]}) {
-                        __builtin_prefetch(&s->fat_box);
-                        __builtin_prefetch(&s->body_xf);
-                        __builtin_prefetch(&s->collider.pairs[0]);
-                        __builtin_prefetch(&s->collider.pairs[1]);
+                        prefetch(&s->fat_box);
+                        prefetch(&s->body_xf);
+                        prefetch(&s->collider.pairs[0]);
+                        prefetch(&s->collider.pairs[1]);
                     }
                 }
             }
@@ -502,8 +503,8 @@ struct World::Impl {
                         continue;
                     const char* c = reinterpret_cast<const char*>(&contacts[edge_contact[k]]);
                     for (std::size_t line = 0; line < sizeof(Contact); line += 64)
-                        __builtin_prefetch(c + line);
-                    __builtin_prefetch(&warm_impulses[edge_contact[k]]);
+                        prefetch(c + line);
+                    prefetch(&warm_impulses[edge_contact[k]]);
                 }
             }
             for (int l = 0; l < wide_lanes; ++l) {
@@ -565,14 +566,14 @@ struct World::Impl {
                 // Its first two lines: the third only if it is loaded (rare).
                 const char* p = reinterpret_cast<const char*>(&bodies[i + body_ahead]);
                 for (std::size_t line = 0; line < offsetof(Body, force); line += 64)
-                    __builtin_prefetch(p + line);
+                    prefetch(p + line);
             }
             if (i + shape_ahead < body_count && solver_index[i + shape_ahead] != 0) {
                 const std::uint32_t s = bodies[i + shape_ahead].first_shape;
                 if (s != null_index) {
                     const Shape& sh = shapes[s];
-                    __builtin_prefetch(&sh.fat_box);
-                    __builtin_prefetch(&sh.body_xf);
+                    prefetch(&sh.fat_box);
+                    prefetch(&sh.body_xf);
                 }
             }
             if (solver_index[i] == 0)
@@ -604,10 +605,10 @@ struct World::Impl {
             if (j + refit_ahead < undecided_shapes.size()) {
                 const Shape& next = shapes[undecided_shapes[j + refit_ahead]];
                 const char* p = reinterpret_cast<const char*>(&next.collider);
-                __builtin_prefetch(p); // vertex pairs 0 and 1: a box's four vertices
-                __builtin_prefetch(p + 64);
-                __builtin_prefetch(&next.fat_box);
-                __builtin_prefetch(&next.body_xf);
+                prefetch(p); // vertex pairs 0 and 1: a box's four vertices
+                prefetch(p + 64);
+                prefetch(&next.fat_box);
+                prefetch(&next.body_xf);
             }
             refit_fat_box(shapes[undecided_shapes[j]]);
         }

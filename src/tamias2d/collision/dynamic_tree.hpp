@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "tamias2d/geometry/aabb.hpp"
+#include "tamias2d/math/prefetch.hpp"
 #include "tamias2d/memory/large_array.hpp"
 #include "tamias2d/vec2.hpp"
 
@@ -37,11 +38,11 @@ class DynamicTree {
     /// none is marked. Allocation-free once the scratch has grown to the tree's size.
     void rebuild();
     /// Cache hints for a coming enlarge_proxy(id): the leaf's node, the parent's.
-    void prefetch_node(int id) const { __builtin_prefetch(&nodes_[id]); }
+    void prefetch_node(int id) const { tamias2d::prefetch(&nodes_[id]); }
     void prefetch_parent(int id) const {
         const int p = nodes_[id].parent;
         if (p != null_node)
-            __builtin_prefetch(&nodes_[p]);
+            tamias2d::prefetch(&nodes_[p]);
     }
 
     const Aabb& aabb(int id) const { return nodes_[id].box; }

@@ -10,6 +10,7 @@
 
 #include "tamias2d/collision/collider.hpp"
 #include "tamias2d/collision/segment_distance.hpp"
+#include "tamias2d/math/lanes.hpp"
 
 namespace tamias2d {
 namespace {
@@ -43,8 +44,13 @@ void set_point(ManifoldPoint& mp, Vec2d local, double separation, FeatureId id,
 
 /// Two lanes: SSE2's register, which every x86-64 has (a four-lane pack split in two by the
 /// compiler went through the stack). Lane-wise IEEE arithmetic without fused multiply-add: each
-/// lane computes bit for bit what the scalar expression computes.
+/// lane computes bit for bit what the scalar expression computes. Without GCC/Clang vector
+/// extensions (or with TAMIAS_PORTABLE_LANES), a plain pair doing the same lane by lane.
+#if TAMIAS_GNU_LANES
 using Duo = double __attribute__((vector_size(2 * sizeof(double))));
+#else
+using Duo = lanes::Doubles<2>;
+#endif
 
 /// x in both lanes, bit for bit (-0 stays -0).
 Duo both(double x) {
@@ -53,7 +59,11 @@ Duo both(double x) {
 
 /// std::min(a, b) lane by lane: b if b < a, else a (one SSE2 minpd).
 Duo min2(Duo a, Duo b) {
+#if TAMIAS_GNU_LANES
     return b < a ? b : a;
+#else
+    return lanes::select(b < a, b, a);
+#endif
 }
 
 /// A polygon's vertices and normals in A's centroid frame, a plain array per coordinate (one

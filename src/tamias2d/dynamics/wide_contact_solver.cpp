@@ -2,6 +2,7 @@
 
 #include "tamias2d/dynamics/contact_preparation.hpp"
 #include "tamias2d/dynamics/wide_pack_loops.hpp"
+#include "tamias2d/math/prefetch.hpp"
 
 namespace tamias2d {
 
@@ -149,7 +150,7 @@ void WideContactSolver::prefetch_pack_after(std::size_t i) const {
         return;
     const char* p = reinterpret_cast<const char*>(&packs_[i + ahead]);
     for (std::size_t line = 0; line < sizeof(WideContactConstraint); line += 64)
-        __builtin_prefetch(p + line, 1);
+        prefetch_for_write(p + line);
 }
 
 void WideContactSolver::load(std::span<const ContactConstraint> constraints,
@@ -218,8 +219,8 @@ void WideContactSolver::store(std::span<ContactImpulses> warm, std::span<Contact
             const WideContactConstraint& next = packs_[i + ahead];
             for (int l = 0; l < wide_lanes; ++l) {
                 if (next.count[l] != 0) {
-                    __builtin_prefetch(&warm[next.contact[l]], 1);
-                    __builtin_prefetch(&totals[next.contact[l]], 1);
+                    prefetch_for_write(&warm[next.contact[l]]);
+                    prefetch_for_write(&totals[next.contact[l]]);
                 }
             }
         }

@@ -44,6 +44,7 @@ inline void store_row(SolverBody& b, Wide r) {
 /// or back. Eight shuffles instead of sixteen scalar loads and their inserts.
 inline void transpose(Wide r0, Wide r1, Wide r2, Wide r3, Wide& c0, Wide& c1, Wide& c2, Wide& c3) {
     static_assert(wide_lanes == 4);
+#if TAMIAS_GNU_LANES
     const Wide t0 = __builtin_shufflevector(r0, r1, 0, 4, 2, 6);
     const Wide t1 = __builtin_shufflevector(r0, r1, 1, 5, 3, 7);
     const Wide t2 = __builtin_shufflevector(r2, r3, 0, 4, 2, 6);
@@ -52,6 +53,13 @@ inline void transpose(Wide r0, Wide r1, Wide r2, Wide r3, Wide& c0, Wide& c1, Wi
     c1 = __builtin_shufflevector(t1, t3, 0, 1, 4, 5);
     c2 = __builtin_shufflevector(t0, t2, 2, 3, 6, 7);
     c3 = __builtin_shufflevector(t1, t3, 2, 3, 6, 7);
+#else
+    // Without shuffles (portable packs): lane i of column k is lane k of row i.
+    c0 = Wide{r0[0], r1[0], r2[0], r3[0]};
+    c1 = Wide{r0[1], r1[1], r2[1], r3[1]};
+    c2 = Wide{r0[2], r1[2], r2[2], r3[2]};
+    c3 = Wide{r0[3], r1[3], r2[3], r3[3]};
+#endif
 }
 
 /// The lanes' bodies: velocities, inverse masses and the motions so far in the step.

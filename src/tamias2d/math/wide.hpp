@@ -3,7 +3,9 @@
 // GCC/Clang vector extensions: the same source compiles to AVX2 (one 256-bit register) or to
 // two SSE2 registers, chosen at run time (wide_contact_solver.cpp). Every operation is
 // lane-wise IEEE arithmetic without fused multiply-add, so each lane computes bit for bit what
-// the scalar solver computes for that constraint, whichever instruction set runs it.
+// the scalar solver computes for that constraint, whichever instruction set runs it. Without
+// the extensions (MSVC), or with TAMIAS_PORTABLE_LANES, the packs are plain structures of four
+// lanes doing the same operations lane by lane (math/lanes.hpp): the same bits again.
 #pragma once
 
 #include <cstddef>
@@ -11,16 +13,25 @@
 #include <type_traits>
 #include <utility>
 
+#include "tamias2d/math/lanes.hpp"
+
 namespace tamias2d {
 
 inline constexpr int wide_lanes = 4;
 
+#if TAMIAS_GNU_LANES
 using Wide = double __attribute__((vector_size(wide_lanes * sizeof(double))));
-/// Lane-wise comparison results: all bits set (true) or clear (false) per lane.
-using WideMask = std::int64_t __attribute__((vector_size(wide_lanes * sizeof(std::int64_t))));
+/// Lane-wise comparison results: all bits set (true) or clear (false) per lane. The type a
+/// comparison yields: 64-bit lanes of long for GCC, of long long for Clang.
+using WideMask = decltype(Wide{} < Wide{});
+#else
+using Wide = lanes::Doubles<wide_lanes>;
+using WideMask = lanes::Mask<wide_lanes>;
+#endif
 /// Without AVX enabled GCC aligns Wide to 16 bytes only, while the AVX2 code reads it with
 /// aligned 32-byte loads: every structure holding packs is declared alignas(wide_alignment).
 inline constexpr std::size_t wide_alignment = sizeof(Wide);
+static_assert(sizeof(Wide) == wide_lanes * sizeof(double) && sizeof(WideMask) == sizeof(Wide));
 
 /// Every lane x, exactly (Wide{} + x would turn -0.0 into +0.0).
 inline Wide splat(double x) {
@@ -38,6 +49,19 @@ template <class V> V min(V a, V b) {
 template <class V> V max(V a, V b) {
     return a < b ? b : a;
 }
+#if !TAMIAS_GNU_LANES
+// The same for the portable packs, whose masks cannot be the condition of ?: (exact matches,
+// so these win over the templates above).
+inline Wide select(WideMask m, Wide if_true, Wide if_false) {
+    return lanes::select(m, if_true, if_false);
+}
+inline Wide min(Wide a, Wide b) {
+    return select(b < a, b, a);
+}
+inline Wide max(Wide a, Wide b) {
+    return select(a < b, b, a);
+}
+#endif
 inline bool any(WideMask m) {
     std::int64_t r = 0;
     for (int l = 0; l < wide_lanes; ++l)

@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "tamias2d/math/prefetch.hpp"
 #include "tamias2d/memory/large_array.hpp"
 
 namespace tamias2d {
@@ -25,7 +26,7 @@ class PairMap {
     /// A cache hint for a coming lookup of `key`: its home slot.
     void prefetch(std::uint64_t key) const {
         if (!slots_.empty())
-            __builtin_prefetch(&slots_[home(key)]);
+            tamias2d::prefetch(&slots_[home(key)]);
     }
     /// Adds `key` (absent; not empty_key) with `value`.
     void insert(std::uint64_t key, std::uint32_t value);
