@@ -44,7 +44,7 @@ if(TARGET tamias2d_cli)
   install(TARGETS tamias2d_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT runtime)
 endif()
 install(FILES ${PROJECT_SOURCE_DIR}/README.md ${PROJECT_SOURCE_DIR}/docs/user-guide.md
-              ${PROJECT_SOURCE_DIR}/docs/scene-format.md
+              ${PROJECT_SOURCE_DIR}/docs/scene-format.md ${PROJECT_SOURCE_DIR}/docs/scene.schema.json
         DESTINATION ${CMAKE_INSTALL_DOCDIR} COMPONENT development)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/examples/scenes DESTINATION ${CMAKE_INSTALL_DOCDIR}/examples
         COMPONENT development)
