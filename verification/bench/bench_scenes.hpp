@@ -54,7 +54,7 @@ struct SceneDesc {
     double inner_half_w = 0.0; ///< rain: container inner half width (m), floor at y = 0
     double box = 1.0;          ///< box side (m)
     double speed = 0.0;        ///< elastic: initial speed of each box (m s^-1)
-    /// Sleeping on in every engine, each with a 0.5 s time to sleep (off in the scenes).
+    /// Sleeping on in every engine, each with a 0.5 s time to sleep (off in the floors' scenes).
     bool sleep = false;
 };
 

@@ -55,15 +55,15 @@ using tamias2d::evidence::fmt;
 // NFR1 as the SRS states it ("comparable to Pymunk", read per erratum E56): on every scene,
 // Tamias2D's ms/step is at most this multiple of Chipmunk 7's (the engine inside Pymunk).
 constexpr double comparable_limit = 1.5;
-// The performance issue's floors on pyramid40, large_pyramid and rain, in steps/s: project
+// The project's floors on pyramid40, large_pyramid and rain, in steps/s: project
 // targets beyond the SRS, reported as targets (met or missed), never hidden.
 constexpr double floor_vs_chipmunk = 2.0;
 constexpr double floor_vs_box2d = 3.0;
 constexpr double scaling_limit = 20.0; ///< rain_16k ms/step over rain_1k ms/step
 constexpr double typing_limit = 0.02;  ///< bridge over plain doubles, minus 1
-const std::string performance_target = "issue 7 (performance floors)";
+const std::string performance_target = "project performance floors (beyond the SRS)";
 // Quality floors for Tamias2D (R7, R8); the peers' values are reported beside them. pyramid20
-// is the Engine issue's stack (top box within 0.05 m). Larger pyramids sag more under any
+// is the project's stable-stack target (top box within 0.05 m). Larger pyramids sag more under any
 // compliant contact (each level compresses under the weight above it, so the top's drop grows
 // roughly with the square of the height): there the stack must stand (top box within half a
 // box) and sag no more than the best peer on the identical scene.
@@ -100,7 +100,7 @@ std::vector<SceneSpec> all_scenes() {
     s.push_back(
         {"large_pyramid", [] { return make_pyramid("large_pyramid", 100); }, true, 10, 40, 8});
     s.push_back({"rain", [] { return make_rain("rain", 2000); }, false, 0, 1000, 300});
-    // Not one of the issue's scenes (they have sleeping off): pyramid40 with sleeping on in every
+    // Not one of the floors' scenes (they have sleeping off): pyramid40 with sleeping on in every
     // engine, timed after 10 s untimed, which is what a settled level costs a game.
     s.push_back({"pyramid40_sleep",
                  [] {
