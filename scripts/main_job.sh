@@ -48,14 +48,18 @@ if [ $quick -eq 0 ]; then
     find build-coverage/tests -name '*_tests' -type f -perm -u+x | sort |
         xargs -P 2 -I{} sh -c '"{}" --color_output=no >/dev/null 2>&1 || echo "{}" >&2' \
             2>build-coverage/failures.txt || true
-    ctest --test-dir build-coverage -j2 -LE compile_fail -E '@' >/dev/null ||
+    ctest --test-dir build-coverage -j2 -LE 'compile_fail|consumer' -E '@' >/dev/null ||
         echo "ctest (coverage build)" >>build-coverage/failures.txt
     if [ -s build-coverage/failures.txt ]; then
         echo "   FAILED in the coverage build (-O0):"; sed "s/^/     /" build-coverage/failures.txt
         coverage_failed=1
     fi
     rm -f build-coverage/failures.txt
-    gcovr -r . --filter 'src/' --filter 'include/' --json-summary reports/data/coverage.json \
+    # gcov 12 can print a function summary with a negative percentage ("returned -1857409%") for
+    # a function left by an exception; gcovr 5.2 stops at such a line unless told to skip it
+    # (it then skips that summary line only; line and branch counts are unaffected).
+    gcovr -r . --filter 'src/' --filter 'include/' --gcov-ignore-parse-errors \
+          --json-summary reports/data/coverage.json \
           --html-details reports/coverage.html build-coverage >/dev/null 2>&1 ||
         echo "   gcovr failed"
     # gcov writes its .gcov files into the working directory; gcovr leaves some of them there.
