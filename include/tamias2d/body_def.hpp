@@ -39,7 +39,12 @@ struct BodyDef {
     std::optional<double> mass;
     /// kg m^2 about the centre of mass, > 0. Overrides the computed moment of inertia (DD14).
     std::optional<double> inertia;
-    double gravity_scale = 1.0;  ///< multiplies the world's gravity for this body
+    double gravity_scale = 1.0; ///< multiplies the world's gravity for this body
+    /// \srs{DD17} s^-1, >= 0: viscous damping of the velocity (a = -c v, IM5). A body left
+    /// alone keeps e^(-c t) of its speed; 0 (the default) is the SRS's regime (A6).
+    double linear_damping = 0.0;
+    /// \srs{DD18} s^-1, >= 0: viscous damping of the angular velocity, as linear_damping.
+    double angular_damping = 0.0;
     bool fixed_rotation = false; ///< no rotation: infinite moment of inertia
     /// With the world's sleeping on (WorldDef::enable_sleep): whether this body may sleep (a
     /// body that may not keeps every body touching it awake), and whether it starts awake.

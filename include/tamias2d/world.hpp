@@ -96,6 +96,11 @@ class World {
     void set_velocity(BodyId body, Vec2d v);
     /// Sets the angular velocity (rad s^-1); ignored for static bodies.
     void set_angular_velocity(BodyId body, double omega);
+    /// \srs{IM5} Sets the damping rates (s^-1, >= 0: DCX_damping) of BodyDef::linear_damping
+    /// and BodyDef::angular_damping; they act on dynamic bodies only.
+    void set_damping(BodyId body, double linear, double angular);
+    double linear_damping(BodyId body) const;  ///< s^-1 (DD17)
+    double angular_damping(BodyId body) const; ///< s^-1 (DD18)
 
     // --- loads (R2, IM1, IM2) ---
     /// Persistent force at the centre of mass (N) and torque (N m): act every step until changed.

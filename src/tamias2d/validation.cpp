@@ -32,6 +32,12 @@ void validate_inertia(std::string_view field, double inertia) {
     }
 }
 
+void validate_damping(std::string_view field, double rate) {
+    require_finite(field, rate);
+    if (!(rate >= 0.0))
+        throw ValidationError(std::string(field), rate, "must be >= 0", "DCX_damping");
+}
+
 void validate(const BodyDef& def) {
     require_finite("body.position", def.position);
     // DCI_phi: any real orientation is accepted on input and wrapped to [0, 2 pi) on output.
@@ -41,6 +47,8 @@ void validate(const BodyDef& def) {
     require_finite("body.force", def.force);
     require_finite("body.torque", def.torque);
     require_finite("body.gravity_scale", def.gravity_scale);
+    validate_damping("body.linear_damping", def.linear_damping);
+    validate_damping("body.angular_damping", def.angular_damping);
     if (def.mass)
         validate_mass("body.mass", *def.mass);
     if (def.inertia)

@@ -24,5 +24,7 @@ void validate_time_step(double dt);
 void validate_mass(std::string_view field, double mass);
 /// DCI_I: a moment of inertia given is > 0 (the SRS's I >= 0 would divide by zero in IM2).
 void validate_inertia(std::string_view field, double inertia);
+/// DCX_damping: a damping rate is finite and >= 0 (a negative one would feed energy in).
+void validate_damping(std::string_view field, double rate);
 
 } // namespace tamias2d

@@ -78,9 +78,10 @@ struct World::Impl {
     LargeArray<SolverBody> solver_bodies;
     std::vector<Vec2d> accelerations;
     std::vector<double> angular_accelerations;
-    std::vector<std::uint32_t> solver_index; ///< per body: its SolverBody (0: static)
-    std::vector<GraphEdge> edges;            ///< the touching manifolds, creation order
-    std::vector<std::uint32_t> edge_contact; ///< per edge: its contact
+    std::vector<double> linear_decay, angular_decay; ///< IM5's factors per solver body
+    std::vector<std::uint32_t> solver_index;         ///< per body: its SolverBody (0: static)
+    std::vector<GraphEdge> edges;                    ///< the touching manifolds, creation order
+    std::vector<std::uint32_t> edge_contact;         ///< per edge: its contact
     std::vector<std::uint32_t> edge_slot;    ///< per edge: its copy in `bouncing`, or no_slot
     std::vector<ContactConstraint> bouncing; ///< manifolds with restitution, creation order
     WideContactSolver wide_solver;
@@ -403,12 +404,14 @@ struct World::Impl {
     /// The solver bodies and their accelerations (IM1, IM2's loads). Built before the narrow
     /// phase, not after it: a pass over every body between the narrow phase's sweep of the
     /// contacts and the lane filling's gather of them pushed them out of the cache (rain_16k).
-    void prepare_bodies() {
+    void prepare_bodies(double h) {
         // Solver body 0 is the shared immovable body standing in for every static body.
         solver_bodies.assign(1, SolverBody{});
         solver_index.resize(bodies.size());
         accelerations.assign(1, Vec2d{});
         angular_accelerations.assign(1, 0.0);
+        linear_decay.assign(1, 1.0);
+        angular_decay.assign(1, 1.0);
         for (std::uint32_t i = 0; i < bodies.size(); ++i) {
             Body& b = bodies[i];
             // A sleeping body is immovable this step, as a static one is.
@@ -438,15 +441,26 @@ struct World::Impl {
             }
             accelerations.push_back(a);
             angular_accelerations.push_back(alpha);
+            // Undamped, the factor 1 leaves IM1/IM2's step bit for bit (A6's regime).
+            double fv = 1.0, fw = 1.0;
+            if (b.damped) {
+                const BodySettings& set = body_settings[i];
+                fv = bridge::decay_factor(set.linear_damping, h);
+                fw = bridge::decay_factor(set.angular_damping, h);
+            }
+            linear_decay.push_back(fv);
+            angular_decay.push_back(fw);
         }
     }
 
-    /// \srs{R5} \srs{R6} IM1/IM2, the velocity half of the semi-implicit Euler step (DD4, DD7).
+    /// \srs{R5} \srs{R6} IM1/IM2, the velocity half of the semi-implicit Euler step (DD4, DD7),
+    /// with IM5's damping (a factor of 1 for an undamped body).
     void integrate_velocities(double h) {
         for (std::size_t k = 1; k < solver_bodies.size(); ++k) {
             SolverBody& sb = solver_bodies[k];
-            sb.v += bridge::velocity_change(accelerations[k], h);
-            sb.w += bridge::angular_velocity_change(angular_accelerations[k], h);
+            sb.v = bridge::velocity_step(sb.v, accelerations[k], h, linear_decay[k]);
+            sb.w =
+                bridge::angular_velocity_step(sb.w, angular_accelerations[k], h, angular_decay[k]);
         }
     }
 
@@ -724,7 +738,10 @@ BodyId World::create_body(const BodyDef& def) {
     b.torque = def.torque;
     b.loaded = !b.unloaded();
     b.gravity_scale = def.gravity_scale;
-    w.body_settings[i] = {def.name, def.load, def.mass, def.inertia, def.fixed_rotation};
+    w.body_settings[i] = {def.name,           def.load,           def.mass,           def.inertia,
+                          def.fixed_rotation, def.linear_damping, def.angular_damping};
+    b.damped =
+        def.type == BodyType::dynamic && (def.linear_damping != 0.0 || def.angular_damping != 0.0);
     // With sleeping off every body is awake, whatever its definition asks.
     const bool movable = def.type != BodyType::static_body;
     w.sleep_states[i] = {0.0, movable && (def.awake || !w.def.enable_sleep), def.enable_sleep,
@@ -856,11 +873,11 @@ void World::step(double dt) {
         // The islands need this step's touching contacts, and the solver bodies the islands.
         w.update_contacts();
         w.wake_islands();
-        w.prepare_bodies();
+        w.prepare_bodies(dt / w.def.substeps);
         w.solve(dt);
         w.update_sleep(dt);
     } else {
-        w.prepare_bodies();
+        w.prepare_bodies(dt / w.def.substeps);
         w.update_contacts();
         w.solve(dt);
     }
@@ -938,6 +955,24 @@ void World::set_transform(BodyId id, Vec2d origin, double angle) {
     if (impl_->def.enable_sleep && b.type == BodyType::static_body)
         impl_->wake_touching(id.index);
 }
+void World::set_damping(BodyId id, double linear, double angular) {
+    Body& b = impl_->body(id);
+    validate_damping("linear_damping", linear);
+    validate_damping("angular_damping", angular);
+    BodySettings& set = impl_->body_settings[id.index];
+    set.linear_damping = linear;
+    set.angular_damping = angular;
+    b.damped = b.type == BodyType::dynamic && (linear != 0.0 || angular != 0.0);
+}
+double World::linear_damping(BodyId id) const {
+    impl_->body(id); // handle check
+    return impl_->body_settings[id.index].linear_damping;
+}
+double World::angular_damping(BodyId id) const {
+    impl_->body(id); // handle check
+    return impl_->body_settings[id.index].angular_damping;
+}
+
 void World::set_velocity(BodyId id, Vec2d v) {
     Body& b = impl_->body(id);
     require_finite("velocity", v);
@@ -1180,6 +1215,10 @@ std::uint64_t World::state_hash() const {
         hs(b.inv_inertia);
         hs(b.gravity_scale);
         hs(std::uint64_t(set.fixed_rotation) << 1 | std::uint64_t(bool(set.load)));
+        if (b.damped) { // (so that undamped worlds hash as they always did)
+            hs(set.linear_damping);
+            hs(set.angular_damping);
+        }
         if (w.def.enable_sleep) { // (so that worlds without sleeping hash as they always did)
             const SleepState& st = w.sleep_states[i];
             hs(st.sleep_time);

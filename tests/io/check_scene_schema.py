@@ -40,6 +40,7 @@ SCHEMA_REJECTS = {
     "restitution_above_one.json": ("/materials/bouncy/restitution", "maximum"),
     "zero_density.json": ("/bodies/0/shapes/0/material/density", "exclusiveMinimum"),
     "negative_friction.json": ("/materials/default/friction", "minimum"),
+    "negative_damping.json": ("/bodies/0/linear_damping", "minimum"),
     "zero_dt.json": ("/dt", "exclusiveMinimum"),
     "unknown_load_kind.json": ("/bodies/0/loads/torque/kind", "enum"),
     "gravity_three_components.json": ("/world/gravity", "maxItems"),

@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -323,6 +324,44 @@ BOOST_AUTO_TEST_CASE(negative_friction_is_rejected,
     }
     for (const double mu : {0.0, 0.6, 1e3})
         BOOST_CHECK_NO_THROW(m.world.create_shape(m.box, circle_shape(0.2, {1.0, 0.0, mu})));
+}
+
+// Oracle: DCX_damping (srs/data_constraints.yaml): c_v, c_omega >= 0 and finite (0, A6's
+// regime, is valid); a rejected body leaves the world as it was.
+BOOST_AUTO_TEST_CASE(negative_or_non_finite_damping_is_rejected,
+                     *utf::label("R4") * utf::label("DCX_damping")) {
+    MovingWorld m;
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    for (const double c : {-1e-300, -0.5, nan, std::numeric_limits<double>::infinity()}) {
+        BOOST_TEST_CONTEXT("damping = " << c) {
+            BodyDef linear;
+            linear.linear_damping = c;
+            BodyDef angular;
+            angular.angular_damping = c;
+            const char* label = std::isfinite(c) ? "DCX_damping" : "DCX_finite";
+            expect_rejected_value(
+                m.world, [&] { m.world.create_body(linear); }, "linear_damping", label, c);
+            expect_rejected_value(
+                m.world, [&] { m.world.create_body(angular); }, "angular_damping", label, c);
+        }
+    }
+    for (const double c : {0.0, 0.1, 1e3}) {
+        BodyDef def;
+        def.linear_damping = c;
+        def.angular_damping = c;
+        BOOST_CHECK_NO_THROW(m.world.create_body(def));
+    }
+    // The same constraint on a living body, and the rates read back once accepted.
+    for (const double c : {-0.5, nan}) {
+        const char* label = std::isfinite(c) ? "DCX_damping" : "DCX_finite";
+        expect_rejected_value(
+            m.world, [&] { m.world.set_damping(m.box, c, 0.0); }, "linear_damping", label, c);
+        expect_rejected_value(
+            m.world, [&] { m.world.set_damping(m.box, 0.0, c); }, "angular_damping", label, c);
+    }
+    m.world.set_damping(m.box, 0.25, 4.0);
+    BOOST_TEST(m.world.linear_damping(m.box) == 0.25);
+    BOOST_TEST(m.world.angular_damping(m.box) == 4.0);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -25,6 +25,9 @@ struct alignas(64) Body {
     /// reads none of them, nor the masses (with no load, a = g and alpha = 0 whatever m and I).
     /// True is always safe; the step clears it when the loads are zero again.
     bool loaded = false;
+    /// A dynamic body with a non-zero damping rate (BodySettings): only then does the step read
+    /// the rates (IM5). It fills the byte before first_shape, so the layout does not change.
+    bool damped = false;
     /// The body's first shape (null_index: none); the rest follow Shape::next, in creation order.
     std::uint32_t first_shape = null_index;
 
@@ -54,12 +57,14 @@ static_assert(sizeof(Body) == 192);
 static_assert(offsetof(Body, local_center) == 64 && offsetof(Body, force) == 128,
               "what every step reads fills the first two lines, the loads and masses the third");
 
-/// The body's settings that only its creation, its mass update and the queries read.
+/// The body's settings that only its creation, its mass update and the queries read, and the
+/// step for a damped body.
 struct BodySettings {
     std::string name;
     LoadFunction load;
     std::optional<double> mass_override, inertia_override;
     bool fixed_rotation = false;
+    double linear_damping = 0.0, angular_damping = 0.0; ///< s^-1 (DD17, DD18)
 };
 
 } // namespace tamias2d

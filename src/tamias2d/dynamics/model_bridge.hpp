@@ -17,6 +17,7 @@
 #include "tamias2d/model/im1_translational_motion.hpp"
 #include "tamias2d/model/im2_rotational_motion.hpp"
 #include "tamias2d/model/im3_collision_response.hpp"
+#include "tamias2d/model/im5_motion_with_damping.hpp"
 
 namespace tamias2d::bridge {
 
@@ -61,15 +62,21 @@ inline double angular_acceleration(double torque, double inertia) {
                                         u::from_value<u::MomentOfInertia>(inertia))
         .value();
 }
-/// DD4 over a substep: dv = a h.
-inline Vec2d velocity_change(Vec2d a, double h) {
-    return plain(
-        m::dd04::velocity_change_over(typed<u::Acceleration>(a), u::from_value<u::Time>(h)));
+/// IM5's decay factor 1 / (1 + h c) of a velocity damped at rate c (s^-1) over a substep h.
+inline double decay_factor(double rate, double h) {
+    return m::im5::decay_factor(u::from_value<u::Rate>(rate), u::from_value<u::Time>(h)).value();
 }
-/// DD7 over a substep: d omega = alpha h.
-inline double angular_velocity_change(double alpha, double h) {
-    return m::dd07::angular_velocity_change_over(u::from_value<u::AngularAcceleration>(alpha),
-                                                 u::from_value<u::Time>(h))
+/// IM5 over a substep: v' = (v + a h) f, with f from decay_factor (1: IM1's DD4 step).
+inline Vec2d velocity_step(Vec2d v, Vec2d a, double h, double decay) {
+    return plain(m::im5::velocity_step(typed<u::Velocity>(v), typed<u::Acceleration>(a),
+                                       u::from_value<u::Time>(h),
+                                       u::from_value<u::Dimensionless>(decay)));
+}
+/// IM5 over a substep: omega' = (omega + alpha h) f (1: IM2's DD7 step).
+inline double angular_velocity_step(double w, double alpha, double h, double decay) {
+    return m::im5::angular_velocity_step(
+               u::from_value<u::AngularVelocity>(w), u::from_value<u::AngularAcceleration>(alpha),
+               u::from_value<u::Time>(h), u::from_value<u::Dimensionless>(decay))
         .value();
 }
 /// DD3 over a substep: dp = v h.

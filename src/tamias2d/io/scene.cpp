@@ -530,8 +530,8 @@ void claim_name(Ctx& ctx, const std::string& name, const std::string& ptr) {
 SceneBody parse_body(Ctx& ctx, const ojson& v, const std::string& ptr) {
     check_keys(ctx, v, ptr,
                {"name", "type", "position", "angle", "velocity", "angular_velocity", "mass",
-                "inertia", "gravity_scale", "fixed_rotation", "enable_sleep", "awake", "force",
-                "torque", "loads", "shapes"},
+                "inertia", "gravity_scale", "linear_damping", "angular_damping", "fixed_rotation",
+                "enable_sleep", "awake", "force", "torque", "loads", "shapes"},
                "a body");
     SceneBody b;
     b.source = ptr;
@@ -564,6 +564,15 @@ SceneBody parse_body(Ctx& ctx, const ojson& v, const std::string& ptr) {
         if (!(inertia > 0.0))
             fail_value(ctx, child(ptr, "inertia"), "inertia", inertia, "must be > 0", "DCI_I");
         d.inertia = inertia;
+    }
+    for (const auto& [key, rate] :
+         {std::pair<const char*, double*>{"linear_damping", &d.linear_damping},
+          {"angular_damping", &d.angular_damping}}) {
+        if (const ojson* c = find(v, key)) {
+            *rate = as_number(ctx, *c, child(ptr, key), key);
+            if (!(*rate >= 0.0))
+                fail_value(ctx, child(ptr, key), key, *rate, "must be >= 0", "DCX_damping");
+        }
     }
     if (const ojson* l = find(v, "loads"))
         b.loads = parse_loads(ctx, *l, child(ptr, "loads"));
@@ -1123,6 +1132,8 @@ std::string scene_to_json(const Scene& scene, int indent) {
         if (d.inertia)
             o["inertia"] = *d.inertia;
         o["gravity_scale"] = d.gravity_scale;
+        o["linear_damping"] = d.linear_damping;
+        o["angular_damping"] = d.angular_damping;
         o["fixed_rotation"] = d.fixed_rotation;
         o["enable_sleep"] = d.enable_sleep;
         o["awake"] = d.awake;

@@ -15,6 +15,7 @@
 #include <boost/units/systems/si/dimensionless.hpp>
 #include <boost/units/systems/si/energy.hpp>
 #include <boost/units/systems/si/force.hpp>
+#include <boost/units/systems/si/frequency.hpp>
 #include <boost/units/systems/si/length.hpp>
 #include <boost/units/systems/si/mass.hpp>
 #include <boost/units/systems/si/moment_of_inertia.hpp>
@@ -48,6 +49,8 @@ using AngularAcceleration = bu::quantity<si::angular_acceleration>;
 using AngularMomentum = bu::quantity<si::angular_momentum>;
 using Torque = bu::quantity<si::torque>;
 using MomentOfInertia = bu::quantity<si::moment_of_inertia>;
+/// A rate (s^-1): the damping rates of DD17 and DD18.
+using Rate = bu::quantity<si::frequency>;
 /// Mass per unit area (kg m^-2): the density of a 2D shape.
 using AreaDensity = bu::quantity<si::surface_density>;
 
