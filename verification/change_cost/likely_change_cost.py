@@ -1,0 +1,121 @@
+#!/usr/bin/python3
+"""NFR5 (maintainability) measured on the likely changes LC1-LC3 as they are made.
+
+Usage: likely_change_cost.py OUT_DIR [--repo DIR]
+
+A commit that makes a likely change says so in a trailer line "Likely-change: LC2". For each
+likely change with such commits this program sums, over those commits, the lines added and
+deleted in files of the library and its command (src/, include/, apps/) that existed before the
+commit: the existing code the change had to touch. New files, tests, verification programs,
+documents and the SRS data are the change itself, not its cost. The check compares that sum
+with 10 % of the lines the same directories held before the change's first commit: NFR5's
+"10 % of the original development" read as a share of existing code (erratum E71), because
+development time is recorded nowhere.
+
+Writes OUT_DIR/likely_change_cost.json in the verification schema (docs/traceability.md). In a
+checkout without the history (a shallow clone) it writes no check and says why.
+"""
+
+import json
+import os
+import subprocess
+import sys
+
+CODE_DIRS = ("src", "include", "apps")
+LIMIT = 0.10  # NFR5: 10 %
+CHANGES = ("LC1", "LC2", "LC3")
+
+
+def git(repo, *args):
+    return subprocess.run(["git", "-C", repo, *args], check=True, capture_output=True,
+                          text=True).stdout
+
+
+def code_lines(repo, rev):
+    """Lines of the files under CODE_DIRS at rev."""
+    names = git(repo, "ls-tree", "-r", "--name-only", rev, "--", *CODE_DIRS).split()
+    total = 0
+    for name in names:
+        blob = subprocess.run(["git", "-C", repo, "show", f"{rev}:{name}"], check=True,
+                              capture_output=True).stdout
+        total += blob.count(b"\n")
+    return total
+
+
+def existed(repo, rev, path):
+    return subprocess.run(["git", "-C", repo, "cat-file", "-e", f"{rev}:{path}"],
+                          capture_output=True).returncode == 0
+
+
+def measure(repo, label):
+    commits = git(repo, "log", "--reverse", "--format=%H", f"--grep=^Likely-change: {label}$",
+                  "HEAD").split()
+    if not commits:
+        return None
+    per_file = {}
+    new_lines = 0
+    for c in commits:
+        parent = f"{c}^"
+        for row in git(repo, "diff", "--numstat", parent, c, "--", *CODE_DIRS).splitlines():
+            added, deleted, path = row.split("\t", 2)
+            if added == "-":  # binary
+                continue
+            if existed(repo, parent, path):
+                a, d = per_file.get(path, (0, 0))
+                per_file[path] = (a + int(added), d + int(deleted))
+            else:
+                new_lines += int(added)
+    base = code_lines(repo, f"{commits[0]}^")
+    return {"commits": commits, "per_file": per_file, "new_lines": new_lines, "base": base}
+
+
+def main(argv):
+    if len(argv) < 2:
+        print(__doc__.strip().splitlines()[2], file=sys.stderr)
+        return 2
+    out_dir = argv[1]
+    repo = argv[argv.index("--repo") + 1] if "--repo" in argv else os.path.join(
+        os.path.dirname(os.path.abspath(__file__)), "..", "..")
+    checks, tables, notes = [], [], []
+    try:
+        shallow = git(repo, "rev-parse", "--is-shallow-repository").strip() == "true"
+    except (subprocess.CalledProcessError, FileNotFoundError) as exc:
+        shallow, notes = True, [f"no git history: {exc}"]
+    if shallow:
+        notes.append("the checkout has no complete history (shallow clone): NFR5 not measured")
+    else:
+        for label in CHANGES:
+            m = measure(repo, label)
+            if m is None:
+                notes.append(f"{label}: no commit carries 'Likely-change: {label}' yet")
+                continue
+            changed = sum(a + d for a, d in m["per_file"].values())
+            share = changed / m["base"] if m["base"] else 0.0
+            details = (f"{label} touched {changed} lines (added + deleted) of {len(m['per_file'])} "
+                       f"existing files of src/, include/, apps/ in {len(m['commits'])} commits: "
+                       f"{100 * share:.2f} % of the {m['base']} lines those directories held "
+                       f"before it (limit {100 * LIMIT:.0f} %); {m['new_lines']} lines in new "
+                       f"files of those directories")
+            checks.append({"name": f"{label} changes at most 10 % of the existing code",
+                           "labels": ["NFR5"], "passed": share <= LIMIT,
+                           "oracle": "git history: lines of pre-existing files changed by the "
+                                     f"commits marked 'Likely-change: {label}' (erratum E71)",
+                           "details": details})
+            tables.append({"name": f"{label}: existing files changed",
+                           "columns": ["file", "lines added", "lines deleted"],
+                           "rows": [[p, a, d] for p, (a, d) in sorted(m["per_file"].items())]})
+            print(("ok   " if share <= LIMIT else "FAIL ") + details)
+    for n in notes:
+        print("note " + n)
+    doc = {"program": "likely_change_cost",
+           "description": "NFR5: the existing code each likely change (LC1-LC3) touched, from "
+                          "the commits that make it. " + " ".join(notes),
+           "checks": checks, "tables": tables, "series": []}
+    os.makedirs(out_dir, exist_ok=True)
+    with open(os.path.join(out_dir, "likely_change_cost.json"), "w", encoding="utf-8") as fh:
+        json.dump(doc, fh, indent=1)
+    return 0 if all(c["passed"] for c in checks) else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
