@@ -79,9 +79,10 @@ struct World::Impl {
     std::vector<Vec2d> accelerations;
     std::vector<double> angular_accelerations;
     std::vector<double> linear_decay, angular_decay; ///< IM5's factors per solver body
-    std::vector<std::uint32_t> solver_index;         ///< per body: its SolverBody (0: static)
-    std::vector<GraphEdge> edges;                    ///< the touching manifolds, creation order
-    std::vector<std::uint32_t> edge_contact;         ///< per edge: its contact
+    bool any_damped = false; ///< this step: some solver body is damped (else no factors)
+    std::vector<std::uint32_t> solver_index; ///< per body: its SolverBody (0: static)
+    std::vector<GraphEdge> edges;            ///< the touching manifolds, creation order
+    std::vector<std::uint32_t> edge_contact; ///< per edge: its contact
     std::vector<std::uint32_t> edge_slot;    ///< per edge: its copy in `bouncing`, or no_slot
     std::vector<ContactConstraint> bouncing; ///< manifolds with restitution, creation order
     WideContactSolver wide_solver;
@@ -410,6 +411,7 @@ struct World::Impl {
         solver_index.resize(bodies.size());
         accelerations.assign(1, Vec2d{});
         angular_accelerations.assign(1, 0.0);
+        any_damped = false;
         linear_decay.assign(1, 1.0);
         angular_decay.assign(1, 1.0);
         for (std::uint32_t i = 0; i < bodies.size(); ++i) {
@@ -441,26 +443,38 @@ struct World::Impl {
             }
             accelerations.push_back(a);
             angular_accelerations.push_back(alpha);
-            // Undamped, the factor 1 leaves IM1/IM2's step bit for bit (A6's regime).
-            double fv = 1.0, fw = 1.0;
-            if (b.damped) {
-                const BodySettings& set = body_settings[i];
-                fv = bridge::decay_factor(set.linear_damping, h);
-                fw = bridge::decay_factor(set.angular_damping, h);
+            if (b.damped && !any_damped) { // the first damped body: undamped ones get 1
+                any_damped = true;
+                linear_decay.resize(solver_bodies.size() - 1, 1.0);
+                angular_decay.resize(solver_bodies.size() - 1, 1.0);
             }
-            linear_decay.push_back(fv);
-            angular_decay.push_back(fw);
+            if (any_damped) {
+                const BodySettings& set = body_settings[i];
+                linear_decay.push_back(b.damped ? bridge::decay_factor(set.linear_damping, h)
+                                                : 1.0);
+                angular_decay.push_back(b.damped ? bridge::decay_factor(set.angular_damping, h)
+                                                 : 1.0);
+            }
         }
     }
 
-    /// \srs{R5} \srs{R6} IM1/IM2, the velocity half of the semi-implicit Euler step (DD4, DD7),
-    /// with IM5's damping (a factor of 1 for an undamped body).
+    /// \srs{R5} \srs{R6} IM1/IM2, the velocity half of the semi-implicit Euler step (DD4, DD7);
+    /// \srs{IM5} with damping when some body is damped. IM5's factor 1 gives IM1/IM2's bits, so
+    /// the undamped loop is only the cheaper form of the same step (no factors to stream).
     void integrate_velocities(double h) {
+        if (any_damped) {
+            for (std::size_t k = 1; k < solver_bodies.size(); ++k) {
+                SolverBody& sb = solver_bodies[k];
+                sb.v = bridge::velocity_step(sb.v, accelerations[k], h, linear_decay[k]);
+                sb.w = bridge::angular_velocity_step(sb.w, angular_accelerations[k], h,
+                                                     angular_decay[k]);
+            }
+            return;
+        }
         for (std::size_t k = 1; k < solver_bodies.size(); ++k) {
             SolverBody& sb = solver_bodies[k];
-            sb.v = bridge::velocity_step(sb.v, accelerations[k], h, linear_decay[k]);
-            sb.w =
-                bridge::angular_velocity_step(sb.w, angular_accelerations[k], h, angular_decay[k]);
+            sb.v += bridge::velocity_change(accelerations[k], h);
+            sb.w += bridge::angular_velocity_change(angular_accelerations[k], h);
         }
     }
 

@@ -110,6 +110,30 @@ BOOST_AUTO_TEST_CASE(falling_body_reaches_the_terminal_velocity,
     BOOST_TEST(std::abs(previous - g / c) <= 1e-9);
 }
 
+// Oracle: as above, per body: in one world an undamped body (created first) falls as IM1 says,
+// v = g t, and a damped one (created second) decays by IM5's law, v = v_0 f^n, at once.
+BOOST_AUTO_TEST_CASE(damped_and_undamped_bodies_in_one_world,
+                     *utf::label("IM5") * utf::label("LC2")) {
+    World world(WorldDef{.gravity = {0.0, -10.0}});
+    BodyDef free_def;
+    const BodyId free_body = world.create_body(free_def);
+    world.create_shape(free_body, circle_shape(0.5));
+    BodyDef damped_def;
+    damped_def.position = {5.0, 0.0};
+    damped_def.gravity_scale = 0.0;
+    damped_def.linear_velocity = {2.0, 0.0};
+    damped_def.linear_damping = 1.5;
+    const BodyId damped_body = world.create_body(damped_def);
+    world.create_shape(damped_body, circle_shape(0.5));
+    const double h = dt / world.settings().substeps;
+    for (int step = 1; step <= 60; ++step)
+        world.step(dt);
+    const int n = 60 * world.settings().substeps;
+    BOOST_TEST(world.velocity(free_body).y == -10.0 * n * h, boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(world.velocity(damped_body).x == 2.0 * std::pow(1.0 / (1.0 + h * 1.5), n),
+               boost::test_tools::tolerance(1e-12));
+}
+
 // Oracle: IM5's factor is exactly 1 for a zero rate (A6's regime), so a body whose damping is
 // switched off by set_damping moves bit for bit as one created undamped, and switching it on
 // later equals creating it damped at that state (same state hashes). Not an SRS-level check of

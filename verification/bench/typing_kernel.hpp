@@ -28,7 +28,6 @@ struct KernelData {
     std::vector<SolverBody> bodies; ///< 0 is the static ground
     std::vector<Vec2d> acc;
     std::vector<double> alpha;
-    std::vector<double> linear_decay, angular_decay;    ///< IM5's factors
     std::vector<tamias2d::WideContactConstraint> packs; ///< prepared and packed by the engine
     int constraints = 0;
 };
@@ -44,11 +43,11 @@ void run_plain(KernelData& d, int steps, double dt);
 // ----------------------------------------------------------------------------- arithmetic
 /// The engine's adapters, for the integration as well as the contact iteration.
 struct BridgeOps : tamias2d::bridge::Model {
-    static Vec2d velocity_step(Vec2d v, Vec2d a, double h, double f) {
-        return tamias2d::bridge::velocity_step(v, a, h, f);
+    static Vec2d velocity_change(Vec2d a, double h) {
+        return tamias2d::bridge::velocity_change(a, h);
     }
-    static double angular_velocity_step(double w, double al, double h, double f) {
-        return tamias2d::bridge::angular_velocity_step(w, al, h, f);
+    static double angular_velocity_change(double al, double h) {
+        return tamias2d::bridge::angular_velocity_change(al, h);
     }
     static Vec2d displacement(Vec2d v, double h) { return tamias2d::bridge::displacement(v, h); }
     static double rotation(double w, double h) { return tamias2d::bridge::rotation(w, h); }
@@ -59,14 +58,10 @@ struct BridgeOps : tamias2d::bridge::Model {
 struct PlainOps {
     template <class V> using Vec = tamias2d::Vec2<V>;
 
-    static Vec2d velocity_step(Vec2d v, Vec2d a, double h, double f) { // IM5 (DD4)
-        return {(v.x + a.x * h) * f, (v.y + a.y * h) * f};
-    }
-    static double angular_velocity_step(double w, double al, double h, double f) { // IM5 (DD7)
-        return (w + al * h) * f;
-    }
-    static Vec2d displacement(Vec2d v, double h) { return {v.x * h, v.y * h}; } // DD3
-    static double rotation(double w, double h) { return w * h; }                // DD6
+    static Vec2d velocity_change(Vec2d a, double h) { return {a.x * h, a.y * h}; } // DD4
+    static double angular_velocity_change(double al, double h) { return al * h; }  // DD7
+    static Vec2d displacement(Vec2d v, double h) { return {v.x * h, v.y * h}; }    // DD3
+    static double rotation(double w, double h) { return w * h; }                   // DD6
     template <class Body, class V = tamias2d::bridge::value_of<Body>>
     static V relative_velocity(const Body& a, const Body& b, V arm_a, V arm_b,
                                Vec<V> dir) { // IM3: DD9 along dir (dd09), B's minus A's (DD11)
@@ -110,8 +105,8 @@ template <class Ops> struct Kernel {
             for (int sub = 0; sub < substeps; ++sub) {
                 for (std::size_t k = 1; k < nb; ++k) {
                     SolverBody& sb = d.bodies[k];
-                    sb.v = Ops::velocity_step(sb.v, d.acc[k], h, d.linear_decay[k]);
-                    sb.w = Ops::angular_velocity_step(sb.w, d.alpha[k], h, d.angular_decay[k]);
+                    sb.v += Ops::velocity_change(d.acc[k], h);
+                    sb.w += Ops::angular_velocity_change(d.alpha[k], h);
                 }
                 tamias2d::wide::warm_start_packs<Ops>(packs, np, d.bodies.data());
                 tamias2d::wide::solve_packs<Ops>(packs, np, d.bodies.data(), st, true);

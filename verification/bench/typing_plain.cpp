@@ -15,8 +15,6 @@ KernelData make_kernel_data(int base) {
     d.bodies.push_back({}); // the static ground: zero inverse mass and inertia
     d.acc.push_back({});
     d.alpha.push_back(0.0);
-    d.linear_decay.push_back(1.0);
-    d.angular_decay.push_back(1.0);
     // Unit boxes of density 1: m = 1 kg, I = (1 + 1) / 12 kg m^2.
     std::vector<std::vector<std::uint32_t>> index(static_cast<std::size_t>(base));
     for (int row = 0; row < base; ++row) {
@@ -28,8 +26,6 @@ KernelData make_kernel_data(int base) {
             d.bodies.push_back(b);
             d.acc.push_back({0.0, -10.0});
             d.alpha.push_back(0.0);
-            d.linear_decay.push_back(1.0); // undamped, as the benchmark scenes
-            d.angular_decay.push_back(1.0);
         }
     }
     std::vector<tamias2d::ContactConstraint> constraints;

@@ -62,6 +62,17 @@ inline double angular_acceleration(double torque, double inertia) {
                                         u::from_value<u::MomentOfInertia>(inertia))
         .value();
 }
+/// DD4 over a substep: dv = a h.
+inline Vec2d velocity_change(Vec2d a, double h) {
+    return plain(
+        m::dd04::velocity_change_over(typed<u::Acceleration>(a), u::from_value<u::Time>(h)));
+}
+/// DD7 over a substep: d omega = alpha h.
+inline double angular_velocity_change(double alpha, double h) {
+    return m::dd07::angular_velocity_change_over(u::from_value<u::AngularAcceleration>(alpha),
+                                                 u::from_value<u::Time>(h))
+        .value();
+}
 /// IM5's decay factor 1 / (1 + h c) of a velocity damped at rate c (s^-1) over a substep h.
 inline double decay_factor(double rate, double h) {
     return m::im5::decay_factor(u::from_value<u::Rate>(rate), u::from_value<u::Time>(h)).value();
