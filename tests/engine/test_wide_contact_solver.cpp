@@ -10,6 +10,7 @@
 
 #include "tamias2d/dynamics/constraint_graph.hpp"
 #include "tamias2d/dynamics/contact_iteration.hpp"
+#include "tamias2d/dynamics/restitution.hpp"
 #include "tamias2d/dynamics/wide_contact_solver.hpp"
 
 namespace utf = boost::unit_test;

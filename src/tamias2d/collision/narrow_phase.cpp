@@ -53,7 +53,7 @@ using Duo = lanes::Doubles<2>;
 #endif
 
 /// x in both lanes, bit for bit (-0 stays -0).
-Duo both(double x) {
+Duo in_both_lanes(double x) {
     return Duo{x, x};
 }
 
@@ -127,10 +127,10 @@ template <int D, int E, int NR, int NO>
     for (int k = 0; k < D; ++k) {
         const Duo nx = load2(&ref.nx[2 * k]), ny = load2(&ref.ny[2 * k]);
         off[k] = nx * load2(&ref.vx[2 * k]) + ny * load2(&ref.vy[2 * k]);
-        low[k] = both(std::numeric_limits<double>::infinity());
+        low[k] = in_both_lanes(std::numeric_limits<double>::infinity());
     }
     for (int j = 0; j < 2 * E; ++j) {
-        const Duo x = both(other.vx[j]), y = both(other.vy[j]);
+        const Duo x = in_both_lanes(other.vx[j]), y = in_both_lanes(other.vy[j]);
         for (int k = 0; k < D; ++k)
             low[k] = min2(low[k], load2(&ref.nx[2 * k]) * x + load2(&ref.ny[2 * k]) * y);
     }
@@ -323,9 +323,9 @@ void polygons_into(const Collider& a, const Collider& b, const CollideInput& in,
     Local lb;
     la.count = na;
     lb.count = nb;
-    const Duo c = both(q.c), sn = both(q.s);
+    const Duo c = in_both_lanes(q.c), sn = in_both_lanes(q.s);
     {
-        const Duo px = both(p.x), py = both(p.y);
+        const Duo px = in_both_lanes(p.x), py = in_both_lanes(p.y);
         for (int k = 0; k < (nb + 1) / 2; ++k) {
             const Duo vx = load2(b.pairs[k].vx), vy = load2(b.pairs[k].vy);
             store2(&lb.vx[2 * k], (c * vx - sn * vy) + px);
@@ -356,7 +356,7 @@ void polygons_into(const Collider& a, const Collider& b, const CollideInput& in,
         hint->face = -1;
     }
     {
-        const Duo cx = both(a.center.x), cy = both(a.center.y);
+        const Duo cx = in_both_lanes(a.center.x), cy = in_both_lanes(a.center.y);
         for (int k = 0; k < (na + 1) / 2; ++k) {
             const VertexPair& s = a.pairs[k];
             store2(&la.vx[2 * k], load2(s.vx) - cx);
@@ -515,13 +515,6 @@ Manifold collide_circles(const Circle& a, const Circle& b, const CollideInput& i
 Manifold collide_polygon_circle(const Polygon& a, const Circle& b, const CollideInput& in) {
     Manifold m;
     polygon_circle_into(make_collider(a), make_collider(b), in, m);
-    return m;
-}
-
-Manifold collide_polygons(const Polygon& a, const Polygon& b, const CollideInput& in,
-                          SeparationHint* hint) {
-    Manifold m;
-    collide(make_collider(a), make_collider(b), in, m, hint);
     return m;
 }
 

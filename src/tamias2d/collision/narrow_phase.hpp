@@ -33,8 +33,6 @@ struct SeparationHint {
 
 Manifold collide_circles(const Circle& a, const Circle& b, const CollideInput& in);
 Manifold collide_polygon_circle(const Polygon& a, const Circle& b, const CollideInput& in);
-Manifold collide_polygons(const Polygon& a, const Polygon& b, const CollideInput& in,
-                          SeparationHint* hint = nullptr);
 
 /// Dispatches on the shape types. A circle-polygon pair is computed as polygon-circle with the
 /// roles swapped and the result flipped, so the normal still points from a into b.

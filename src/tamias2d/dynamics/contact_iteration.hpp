@@ -9,8 +9,8 @@
 // costs nothing (verification/bench/typing_kernel.hpp).
 #pragma once
 
-#include "tamias2d/dynamics/contact_solver.hpp"
 #include "tamias2d/dynamics/model_bridge.hpp"
+#include "tamias2d/dynamics/solver_settings.hpp"
 #include "tamias2d/dynamics/two_point_lcp.hpp"
 #include "tamias2d/math/vec2d.hpp"
 #include "tamias2d/math/wide.hpp"

@@ -1,7 +1,7 @@
 // Preparing a contact manifold for the solver, once per step: the moment arms of the normal and
 // the tangent (DD8), the points' effective masses, and for two points the 2x2 matrix K with its
 // inverse. Written once as a template over the value type V, like the iteration: V = double
-// prepares one manifold (prepare_contact, contact_solver.cpp), V = Wide four, one per lane
+// prepares one manifold (prepare_contact, restitution.cpp), V = Wide four, one per lane
 // (WideContactSolver::prepare_pack). Neither uses fused multiply-add, so a lane and the scalar
 // preparation of the same manifold agree bit for bit.
 #pragma once

@@ -9,8 +9,8 @@
 #include "tamias2d/dynamics/constraint_graph.hpp"
 #include "tamias2d/dynamics/contact.hpp"
 #include "tamias2d/dynamics/contact_constraint.hpp"
-#include "tamias2d/dynamics/contact_solver.hpp"
 #include "tamias2d/dynamics/solver_body.hpp"
+#include "tamias2d/dynamics/solver_settings.hpp"
 #include "tamias2d/dynamics/wide_contact_constraint.hpp"
 #include "tamias2d/memory/large_array.hpp"
 

@@ -1,4 +1,4 @@
-#include "tamias2d/dynamics/contact_solver.hpp"
+#include "tamias2d/dynamics/restitution.hpp"
 
 #include <algorithm>
 

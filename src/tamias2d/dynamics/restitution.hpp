@@ -1,25 +1,17 @@
-// The contact solver of the soft step (see docs/design.md): per substep, warm start, one
-// biased soft iteration, position integration, one relaxing rigid iteration (those run on
-// packs of four manifolds: wide_contact_solver.hpp, contact_iteration.hpp); after the
-// substeps, one restitution pass (DD12 on the pre-step normal velocity).
+// The restitution pass of the soft step (DD12 on the pre-step normal velocity, after the
+// substeps; see docs/design.md) and the scalar preparation of the manifolds it solves. The
+// substeps' contact iterations run on packs of four manifolds (wide_contact_solver.hpp,
+// contact_iteration.hpp).
 #pragma once
 
 #include <cstdint>
 #include <span>
 
 #include "tamias2d/dynamics/contact_constraint.hpp"
-#include "tamias2d/dynamics/softness.hpp"
 #include "tamias2d/dynamics/solver_body.hpp"
+#include "tamias2d/dynamics/solver_settings.hpp"
 
 namespace tamias2d {
-
-struct ContactSolverSettings {
-    double inv_h = 0.0;                 ///< s^-1, substep rate
-    Softness softness{};                ///< contact softness for this substep length
-    double linear_slop = 0.0;           ///< m
-    double push_max_velocity = 0.0;     ///< m s^-1
-    double restitution_threshold = 0.0; ///< m s^-1
-};
 
 /// Effective masses (DD8), block matrices and the pre-step normal velocities. The constraint's
 /// bodies, normal, friction, restitution, count and its points' anchors, separations and

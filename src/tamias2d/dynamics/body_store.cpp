@@ -1,0 +1,114 @@
+#include "tamias2d/dynamics/body_store.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include "tamias2d/dynamics/shape_store.hpp"
+#include "tamias2d/errors.hpp"
+#include "tamias2d/geometry/mass_properties.hpp"
+
+namespace tamias2d {
+
+Body& BodyStore::get(BodyId id) {
+    if (id.index >= bodies.size() || !bodies[id.index].alive ||
+        generation[id.index] != id.generation) {
+        throw InvalidHandle("stale or unknown BodyId " + std::to_string(id.index) + ":" +
+                            std::to_string(id.generation));
+    }
+    return bodies[id.index];
+}
+
+bool BodyStore::is_valid(BodyId id) const {
+    return id.index < bodies.size() && bodies[id.index].alive &&
+           generation[id.index] == id.generation;
+}
+
+std::uint32_t BodyStore::create(const BodyDef& def, bool sleeping) {
+    std::uint32_t i;
+    if (!free_slots.empty()) {
+        i = free_slots.back();
+        free_slots.pop_back();
+    } else {
+        i = std::uint32_t(bodies.size());
+        bodies.emplace_back();
+        settings.emplace_back();
+        sleep_states.emplace_back();
+        generation.push_back(0);
+    }
+    Body& b = bodies[i];
+    ++generation[i];
+    b = Body{};
+    b.alive = true;
+    b.type = def.type;
+    b.angle = def.angle;
+    b.xf = {def.position, Rot::from_angle(def.angle)};
+    b.v = def.type == BodyType::static_body ? Vec2d{} : def.linear_velocity;
+    b.w = def.type == BodyType::static_body ? 0.0 : def.angular_velocity;
+    b.force = def.force;
+    b.torque = def.torque;
+    b.loaded = !b.unloaded();
+    b.gravity_scale = def.gravity_scale;
+    settings[i] = {def.name,           def.load,           def.mass,           def.inertia,
+                   def.fixed_rotation, def.linear_damping, def.angular_damping};
+    b.damped =
+        def.type == BodyType::dynamic && (def.linear_damping != 0.0 || def.angular_damping != 0.0);
+    const bool movable = def.type != BodyType::static_body;
+    sleep_states[i] = {0.0, movable && (def.awake || !sleeping), def.enable_sleep, movable};
+    loaded_bodies += def.load ? 1 : 0;
+    return i;
+}
+
+void BodyStore::destroy(std::uint32_t i) {
+    Body& b = bodies[i];
+    b.first_shape = null_index;
+    b.alive = false;
+    sleep_states[i] = SleepState{}; // neither awake nor movable
+    BodySettings& set = settings[i];
+    loaded_bodies -= set.load ? 1 : 0;
+    set = BodySettings{};
+    free_slots.push_back(i);
+}
+
+void BodyStore::update_mass(std::uint32_t i, ShapeStore& shapes) {
+    Body& b = bodies[i];
+    const BodySettings& set = settings[i];
+    b.mass = b.inv_mass = b.inertia = b.inv_inertia = 0.0;
+    b.local_center = {};
+    if (b.type == BodyType::dynamic) {
+        std::vector<MassData> parts;
+        for (std::uint32_t s = b.first_shape; s != null_index; s = shapes.shapes[s].next) {
+            const ShapeDef& d = shapes.defs[s];
+            parts.push_back(compute_mass(d.geometry, d.material.density));
+        }
+        MassData md{};
+        if (!parts.empty())
+            md = combine(parts);
+        b.local_center = md.center;
+        const double shape_mass = md.mass;
+        b.mass = set.mass_override.value_or(parts.empty() ? 1.0 : shape_mass);
+        // With the mass overridden, keep the shapes' distribution: scale I with the mass.
+        double inertia = md.inertia;
+        if (set.mass_override && shape_mass > 0.0)
+            inertia *= b.mass / shape_mass;
+        b.inertia = set.inertia_override.value_or(inertia);
+        b.inv_mass = 1.0 / b.mass;
+        b.inv_inertia = (set.fixed_rotation || !(b.inertia > 0.0)) ? 0.0 : 1.0 / b.inertia;
+    }
+    b.center = transform_point(b.xf, b.local_center);
+    shapes.sync_poses(b);
+}
+
+bool BodyStore::any_awake() const {
+    return std::any_of(sleep_states.begin(), sleep_states.end(),
+                       [](const SleepState& st) { return st.awake; });
+}
+
+void BodyStore::wake(std::uint32_t i) {
+    SleepState& st = sleep_states[i];
+    if (!st.movable)
+        return;
+    st.awake = true;
+    st.sleep_time = 0.0;
+}
+
+} // namespace tamias2d

@@ -1,0 +1,55 @@
+// The world's bodies (internal): their storage, slots and handles, per-body settings and sleep
+// states, indexed alike. Box2D keeps the same concerns in body.c.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "tamias2d/body_def.hpp"
+#include "tamias2d/dynamics/body.hpp"
+#include "tamias2d/dynamics/sleep.hpp"
+#include "tamias2d/handles.hpp"
+#include "tamias2d/memory/large_array.hpp"
+
+namespace tamias2d {
+
+class ShapeStore;
+
+struct BodyStore {
+    LargeArray<Body> bodies;
+    std::vector<BodySettings> settings; ///< per body, indexed alike
+    /// Per body, indexed alike: its handles' generation (only handle checks read it, so it is
+    /// kept out of Body, which a step streams three times).
+    std::vector<std::uint32_t> generation;
+    std::vector<std::uint32_t> free_slots;
+    /// Per body, indexed alike: awake or asleep, and for how long at rest (read by the step only
+    /// with sleeping on, WorldDef::enable_sleep).
+    std::vector<SleepState> sleep_states;
+    std::uint32_t loaded_bodies = 0; ///< live bodies with a load function
+
+    /// The body of a handle; throws InvalidHandle for a stale or unknown one.
+    Body& get(BodyId id);
+    const Body& get(BodyId id) const { return const_cast<BodyStore*>(this)->get(id); }
+    bool is_valid(BodyId id) const;
+    BodyId id(std::uint32_t i) const { return {i, generation[i]}; }
+    std::uint32_t size() const { return std::uint32_t(bodies.size()); }
+    std::size_t count() const { return bodies.size() - free_slots.size(); }
+
+    /// A slot for a new body made from a validated definition; its mass is not set yet
+    /// (update_mass). With sleeping off every body is awake, whatever `def` asks.
+    std::uint32_t create(const BodyDef& def, bool sleeping);
+    /// Frees the body's slot and settings (its shapes and contacts must be gone first).
+    void destroy(std::uint32_t i);
+
+    /// Mass, centre of mass and inertia from the shapes (DD1, DD14) or the overrides; copies
+    /// the body's pose into its shapes.
+    void update_mass(std::uint32_t i, ShapeStore& shapes);
+
+    /// Moves this step: alive, not static, and awake (every such body is, with sleeping off).
+    bool active(std::uint32_t i) const { return sleep_states[i].awake; }
+    bool any_awake() const;
+    /// Wakes the body (and so, at the next step, its island); its time at rest starts again.
+    void wake(std::uint32_t i);
+};
+
+} // namespace tamias2d

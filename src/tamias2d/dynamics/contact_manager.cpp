@@ -1,0 +1,235 @@
+#include "tamias2d/dynamics/contact_manager.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "tamias2d/collision/narrow_phase.hpp"
+#include "tamias2d/dynamics/body_store.hpp"
+#include "tamias2d/dynamics/shape_store.hpp"
+#include "tamias2d/math/prefetch.hpp"
+
+namespace tamias2d {
+namespace {
+
+bool should_collide(const BodyStore& bodies, const ShapeStore& shapes, std::uint32_t sa,
+                    std::uint32_t sb) {
+    const Body& a = bodies.bodies[shapes.shapes[sa].body];
+    const Body& b = bodies.bodies[shapes.shapes[sb].body];
+    if (shapes.shapes[sa].body == shapes.shapes[sb].body)
+        return false;
+    return a.type == BodyType::dynamic || b.type == BodyType::dynamic;
+}
+
+/// What the colouring needs of a contact (EdgeInput).
+ContactManager::EdgeInput edge_input(const Contact& c) {
+    // (The separations only matter with two points: read for one, or none, they would fetch
+    // the point lines of a pair that is apart.)
+    const int n = c.manifold.count;
+    const PathGroup group =
+        n == 2 ? path_group(n, c.manifold.points[0].separation, c.manifold.points[1].separation)
+               : path_group(n, 0.0, 0.0);
+    return {c.body_a, c.body_b, group, c.touching, c.restitution > 0.0};
+}
+
+} // namespace
+
+void ContactManager::destroy(std::uint32_t i, BodyStore& bodies, const ShapeStore& shapes) {
+    infos_stale_ = true; // a destroyed body's or shape's contacts leave the report at once
+    Contact& c = contacts[i];
+    if (c.touching) {
+        bodies.wake(c.body_a); // what held the other up, or pushed it, is gone
+        bodies.wake(c.body_b);
+        end_events.push_back({shapes.id(c.shape_a), shapes.id(c.shape_b),
+                              bodies.id(shapes.shapes[c.shape_a].body),
+                              bodies.id(shapes.shapes[c.shape_b].body)});
+    }
+    index_.erase(Contact::key(c.shape_a, c.shape_b));
+    const std::uint32_t last = std::uint32_t(contacts.size() - 1);
+    if (i != last) {
+        contacts[i] = contacts[last];
+        warm_impulses[i] = warm_impulses[last];
+        total_impulses[i] = total_impulses[last];
+        edge_inputs[i] = edge_inputs[last];
+        index_.assign(Contact::key(contacts[i].shape_a, contacts[i].shape_b), i);
+    }
+    contacts.pop_back();
+    warm_impulses.pop_back();
+    total_impulses.pop_back();
+    edge_inputs.pop_back();
+}
+
+void ContactManager::destroy_of_shape(std::uint32_t s, BodyStore& bodies,
+                                      const ShapeStore& shapes) {
+    for (std::uint32_t i = std::uint32_t(contacts.size()); i-- > 0;) {
+        if (contacts[i].shape_a == s || contacts[i].shape_b == s)
+            destroy(i, bodies, shapes);
+    }
+}
+
+void ContactManager::wake_touching(std::uint32_t i, BodyStore& bodies) const {
+    for (const Contact& c : contacts) {
+        if (c.touching && (c.body_a == i || c.body_b == i)) {
+            bodies.wake(c.body_a);
+            bodies.wake(c.body_b);
+        }
+    }
+}
+
+void ContactManager::find_new(const BodyStore& bodies, ShapeStore& shapes) {
+    new_pairs_.clear();
+    shapes.broad_phase.update_pairs(new_pairs_);
+    // Most pairs the broad phase reports are contacts already (rain_16k: 78 %), so the index
+    // is asked first, its slots eight pairs ahead: one line per pair, where the filter's shapes
+    // and bodies are four scattered lines.
+    constexpr std::size_t ahead = 8;
+    for (std::size_t i = 0; i < new_pairs_.size(); ++i) {
+        if (i + ahead < new_pairs_.size())
+            index_.prefetch(
+                Contact::key(new_pairs_[i + ahead].first, new_pairs_[i + ahead].second));
+        const auto [ua, ub] = new_pairs_[i];
+        const std::uint32_t sa = std::min(ua, ub), sb = std::max(ua, ub);
+        const std::uint64_t key = Contact::key(sa, sb);
+        if (index_.contains(key) || !should_collide(bodies, shapes, sa, sb))
+            continue;
+        Contact c;
+        c.shape_a = sa;
+        c.shape_b = sb;
+        c.body_a = shapes.shapes[sa].body;
+        c.body_b = shapes.shapes[sb].body;
+        // Combination rules (docs/design.md): friction geometric mean, restitution max.
+        const Material& ma = shapes.defs[sa].material;
+        const Material& mb = shapes.defs[sb].material;
+        c.friction = std::sqrt(ma.friction * mb.friction);
+        c.restitution = std::max(ma.restitution, mb.restitution);
+        index_.insert(key, std::uint32_t(contacts.size()));
+        contacts.push_back(c);
+        warm_impulses.emplace_back();
+        total_impulses.emplace_back();
+    }
+}
+
+void ContactManager::update(BodyStore& bodies, const ShapeStore& shapes, bool sleeping,
+                            double speculative_distance) {
+    doomed_.clear();
+    const auto& shape = shapes.shapes;
+    constexpr std::uint32_t ahead = 6; // contacts: the shapes' lines arrive before use
+    const auto count = std::uint32_t(contacts.size()); // the loop adds and removes none
+    edge_inputs.resize(count);
+    for (std::uint32_t i = 0; i < count; ++i) {
+        if (i + ahead < count) {
+            const Contact& next = contacts[i + ahead];
+            // (A contact kept as it is, below, reads no shape.)
+            if (!sleeping || bodies.active(next.body_a) || bodies.active(next.body_b)) {
+                for (const Shape* s : {&shape[next.shape_a], &shape[next.shape_b]}) {
+                    prefetch(&s->fat_box);
+                    prefetch(&s->body_xf);
+                    prefetch(&s->collider.pairs[0]);
+                    prefetch(&s->collider.pairs[1]);
+                }
+            }
+        }
+        Contact& c = contacts[i];
+        if (sleeping && !bodies.active(c.body_a) && !bodies.active(c.body_b))
+            continue; // its edge input stands too, from its last update
+        const Shape& sa = shape[c.shape_a];
+        const Shape& sb = shape[c.shape_b];
+        if (!overlaps(sa.fat_box, sb.fat_box)) {
+            doomed_.push_back(i);
+            continue;
+        }
+        const CollideInput in{sa.body_xf, sa.body_center, sb.body_xf, sb.body_center,
+                              speculative_distance};
+        // Warm starting needs only the old points' ids and impulses: the manifold itself is
+        // rewritten in place (building a new one and copying it in cost a fifth of this loop).
+        // Only the points in use are read: a pair that stays apart reads the first line only.
+        const int old_count = c.manifold.count;
+        ContactImpulses& warm = warm_impulses[i];
+        std::uint32_t old_id[2] = {};
+        double old_n[2] = {}, old_t[2] = {};
+        for (int k = 0; k < old_count; ++k) {
+            old_id[k] = c.manifold.points[k].id.key();
+            old_n[k] = warm.normal[k];
+            old_t[k] = warm.tangent[k];
+        }
+        collide(sa.collider, sb.collider, in, c.manifold, &c.hint);
+        // Warm starting: a point keeps its impulses when the same features touch again.
+        // (Chosen in registers, then stored: zeroing first made GCC call memset twice.)
+        for (int j = 0; j < c.manifold.count; ++j) {
+            double normal = 0.0, tangent = 0.0;
+            for (int k = 0; k < old_count; ++k) {
+                if (old_id[k] == c.manifold.points[j].id.key()) {
+                    normal = old_n[k];
+                    tangent = old_t[k];
+                }
+            }
+            warm.normal[j] = normal;
+            warm.tangent[j] = tangent;
+        }
+        const bool was = c.touching;
+        c.touching = c.manifold.count > 0;
+        edge_inputs[i] = edge_input(c);
+        if (c.touching != was) {
+            if (sleeping) { // a body met, or left, another: both islands wake
+                bodies.wake(c.body_a);
+                bodies.wake(c.body_b);
+            }
+            (c.touching ? begin_events : end_events)
+                .push_back({shapes.id(c.shape_a), shapes.id(c.shape_b), bodies.id(sa.body),
+                            bodies.id(sb.body)});
+        }
+    }
+    // Descending, so swap-removal never moves a contact that is still to be removed.
+    for (auto it = doomed_.rbegin(); it != doomed_.rend(); ++it)
+        destroy(*it, bodies, shapes); // moves the last contact into the gap
+}
+
+void ContactManager::unprepared_constraint(ContactConstraint& cc, const GraphEdge& edge,
+                                           std::uint32_t contact) const {
+    const Contact& c = contacts[contact];
+    const ContactImpulses& warm = warm_impulses[contact];
+    cc.body_a = edge.body_a;
+    cc.body_b = edge.body_b;
+    cc.contact = contact;
+    cc.normal = c.manifold.normal;
+    cc.friction = c.friction;
+    cc.restitution = c.restitution;
+    cc.count = c.manifold.count;
+    for (int j = 0; j < cc.count; ++j) {
+        const ManifoldPoint& mp = c.manifold.points[j];
+        ContactConstraintPoint& cp = cc.points[j];
+        cp.r_a = mp.anchor_a;
+        cp.r_b = mp.anchor_b;
+        cp.base_separation = mp.separation;
+        cp.normal_impulse = warm.normal[j];
+        cp.tangent_impulse = warm.tangent[j];
+    }
+}
+
+const std::vector<ContactInfo>& ContactManager::report(const BodyStore& bodies,
+                                                       const ShapeStore& shapes) {
+    if (!infos_stale_)
+        return infos_;
+    infos_stale_ = false;
+    infos_.clear();
+    for (std::size_t i = 0; i < contacts.size(); ++i) {
+        const Contact& c = contacts[i];
+        if (!c.touching)
+            continue;
+        const ContactImpulses& total = total_impulses[i];
+        ContactInfo ci;
+        ci.shape_a = shapes.id(c.shape_a);
+        ci.shape_b = shapes.id(c.shape_b);
+        ci.body_a = bodies.id(shapes.shapes[c.shape_a].body);
+        ci.body_b = bodies.id(shapes.shapes[c.shape_b].body);
+        ci.normal = c.manifold.normal;
+        ci.point_count = c.manifold.count;
+        for (int j = 0; j < c.manifold.count; ++j) {
+            ci.points[j] = {c.manifold.points[j].point, c.manifold.points[j].separation,
+                            total.normal[j], total.tangent[j]};
+        }
+        infos_.push_back(ci);
+    }
+    return infos_;
+}
+
+} // namespace tamias2d

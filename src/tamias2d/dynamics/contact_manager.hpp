@@ -1,0 +1,81 @@
+// The world's contacts (internal): one per pair of shapes whose fat boxes overlap, with the
+// arrays kept parallel to them (edge inputs, warm-start and total impulses), the index by shape
+// pair, the begin/end events and the report. Only this class knows that the arrays are
+// parallel: contacts are added and swap-removed here. Box2D keeps the same concerns in
+// contact.c.
+#pragma once
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "tamias2d/contact_info.hpp"
+#include "tamias2d/dynamics/constraint_graph.hpp"
+#include "tamias2d/dynamics/contact.hpp"
+#include "tamias2d/dynamics/contact_constraint.hpp"
+#include "tamias2d/memory/large_array.hpp"
+#include "tamias2d/memory/pair_map.hpp"
+
+namespace tamias2d {
+
+struct BodyStore;
+class ShapeStore;
+
+class ContactManager {
+  public:
+    /// Per contact, indexed alike: what the colouring needs of it, written by the narrow phase
+    /// while the contact is in cache. (Reading it back from the contacts cost a pass over most
+    /// of their lines: 3.8 MB per step at 16k boxes.)
+    struct EdgeInput {
+        std::uint32_t body_a, body_b;
+        PathGroup group;
+        bool touching, bounces;
+    };
+
+    LargeArray<Contact> contacts;
+    std::vector<EdgeInput> edge_inputs;
+    /// Per contact, indexed alike: the accumulated impulses (warm start) and the last step's
+    /// totals (contact report).
+    LargeArray<ContactImpulses> warm_impulses, total_impulses;
+    std::vector<ContactEvent> begin_events, end_events;
+
+    std::uint32_t size() const { return std::uint32_t(contacts.size()); }
+
+    /// New contacts for the pairs the broad phase found since the last step (creation order).
+    void find_new(const BodyStore& bodies, ShapeStore& shapes);
+    /// \srs{R7} Narrow phase for every contact; contacts whose fat boxes separated are
+    /// destroyed. With sleeping on, a contact between bodies that do not move this step (asleep
+    /// or static) is kept as it is: neither has moved since it was last updated.
+    void update(BodyStore& bodies, const ShapeStore& shapes, bool sleeping,
+                double speculative_distance);
+    /// Every body asleep: every contact stands as it is, its edge input included.
+    void keep_all() { edge_inputs.resize(contacts.size()); }
+    /// Destroys every contact of shape s (its end events and wakes included).
+    void destroy_of_shape(std::uint32_t s, BodyStore& bodies, const ShapeStore& shapes);
+    /// Wakes every body touching body i: what keeps them up may have gone (a static body does
+    /// not move in a step, so its contacts with sleeping bodies are not updated).
+    void wake_touching(std::uint32_t i, BodyStore& bodies) const;
+
+    /// A manifold as the solver takes it, before preparation: bodies, normal, materials,
+    /// anchors, separations and the impulses to warm start from.
+    void unprepared_constraint(ContactConstraint& cc, const GraphEdge& edge,
+                               std::uint32_t contact) const;
+
+    /// The touching pairs after the last step; built when first asked for after a step or a
+    /// destruction: most steps of a game never read it, and copying every contact out each
+    /// step cost a few percent of a pile's step.
+    const std::vector<ContactInfo>& report(const BodyStore& bodies, const ShapeStore& shapes);
+    void report_stale() { infos_stale_ = true; }
+
+  private:
+    void destroy(std::uint32_t i, BodyStore& bodies, const ShapeStore& shapes);
+
+    PairMap index_; ///< contact by Contact::key of its shapes
+    // Per-step scratch, kept to avoid allocation in steady state.
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> new_pairs_;
+    std::vector<std::uint32_t> doomed_;
+    std::vector<ContactInfo> infos_;
+    bool infos_stale_ = true;
+};
+
+} // namespace tamias2d

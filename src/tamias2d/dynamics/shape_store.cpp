@@ -1,0 +1,91 @@
+#include "tamias2d/dynamics/shape_store.hpp"
+
+#include <string>
+
+#include "tamias2d/errors.hpp"
+#include "tamias2d/math/prefetch.hpp"
+
+namespace tamias2d {
+
+Shape& ShapeStore::get(ShapeId id) {
+    if (id.index >= shapes.size() || !shapes[id.index].alive() ||
+        shapes[id.index].generation != id.generation) {
+        throw InvalidHandle("stale or unknown ShapeId " + std::to_string(id.index) + ":" +
+                            std::to_string(id.generation));
+    }
+    return shapes[id.index];
+}
+
+bool ShapeStore::is_valid(ShapeId id) const {
+    return id.index < shapes.size() && shapes[id.index].alive() &&
+           shapes[id.index].generation == id.generation;
+}
+
+std::uint32_t ShapeStore::create(std::uint32_t body_index, Body& b, const ShapeDef& def) {
+    std::uint32_t i;
+    if (!free_slots.empty()) {
+        i = free_slots.back();
+        free_slots.pop_back();
+    } else {
+        i = std::uint32_t(shapes.size());
+        shapes.emplace_back();
+        defs.emplace_back();
+    }
+    Shape& s = shapes[i];
+    s.generation += 1;
+    s.body = body_index;
+    s.next = null_index;
+    s.collider = make_collider(def.geometry);
+    defs[i] = def;
+    std::uint32_t* link = &b.first_shape;
+    while (*link != null_index)
+        link = &shapes[*link].next;
+    *link = i;
+    s.proxy = broad_phase.create_proxy(box(s, b), i, b.type == BodyType::static_body);
+    s.fat_box = broad_phase.fat_aabb(s.proxy);
+    return i;
+}
+
+void ShapeStore::destroy(std::uint32_t i, Body& b) {
+    Shape& s = shapes[i];
+    std::uint32_t* link = &b.first_shape;
+    while (*link != i)
+        link = &shapes[*link].next;
+    *link = s.next;
+    release(i);
+}
+
+void ShapeStore::release(std::uint32_t i) {
+    broad_phase.destroy_proxy(shapes[i].proxy);
+    shapes[i].proxy = -1;
+    free_slots.push_back(i);
+}
+
+void ShapeStore::sync_poses(const Body& b) {
+    for (std::uint32_t s = b.first_shape; s != null_index; s = shapes[s].next) {
+        shapes[s].body_xf = b.xf;
+        shapes[s].body_center = b.center;
+    }
+}
+
+void ShapeStore::refit_undecided() {
+    // The shapes the header could not decide (moving ones) read their vertex lines, which the
+    // step's sweep does not ask for: read after the sweep, a few shapes ahead, rather than
+    // waited for one by one inside it. The same shapes in the same order: the same moves.
+    constexpr std::size_t refit_ahead = 4;
+    for (std::size_t j = 0; j < undecided_.size(); ++j) {
+        if (j + refit_ahead < undecided_.size()) {
+            const Shape& next = shapes[undecided_[j + refit_ahead]];
+            const char* p = reinterpret_cast<const char*>(&next.collider);
+            prefetch(p); // vertex pairs 0 and 1: a box's four vertices
+            prefetch(p + 64);
+            prefetch(&next.fat_box);
+            prefetch(&next.body_xf);
+        }
+        refit_fat_box(shapes[undecided_[j]]);
+    }
+    undecided_.clear();
+    apply_moves();
+}
+
+} // namespace tamias2d

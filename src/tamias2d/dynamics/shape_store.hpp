@@ -1,0 +1,86 @@
+// The world's shapes (internal): their storage and slots, the definitions they were made from,
+// the broad phase over their fat boxes, and the copies of their bodies' poses that the narrow
+// phase reads. Box2D keeps the same concerns in shape.c.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "tamias2d/collision/broad_phase.hpp"
+#include "tamias2d/dynamics/body.hpp"
+#include "tamias2d/dynamics/shape.hpp"
+#include "tamias2d/handles.hpp"
+#include "tamias2d/memory/large_array.hpp"
+#include "tamias2d/shape_def.hpp"
+
+namespace tamias2d {
+
+class ShapeStore {
+  public:
+    LargeArray<Shape> shapes;
+    std::vector<ShapeDef> defs; ///< per shape, indexed alike: what it was made from
+    std::vector<std::uint32_t> free_slots;
+    BroadPhase broad_phase;
+
+    /// The shape of a handle; throws InvalidHandle for a stale or unknown one.
+    Shape& get(ShapeId id);
+    bool is_valid(ShapeId id) const;
+    ShapeId id(std::uint32_t i) const { return {i, shapes[i].generation}; }
+
+    /// A new shape on body `body_index` (whose Body is `b`), appended to its list so that the
+    /// body's shapes (and the mass summed over them) keep creation order. The body's mass is
+    /// not updated here (BodyStore::update_mass).
+    std::uint32_t create(std::uint32_t body_index, Body& b, const ShapeDef& def);
+    /// Unlinks the shape from its body `b` and frees its proxy and slot (its contacts must be
+    /// gone first).
+    void destroy(std::uint32_t i, Body& b);
+    /// Frees the proxy and slot of a shape whose body is being destroyed whole.
+    void release(std::uint32_t i);
+
+    Aabb box(const Shape& s, const Body& b) const { return compute_aabb(s.collider, b.xf); }
+
+    /// Copies the body's pose into its shapes (Shape::body_xf, body_center) after a mass update
+    /// moved its centre, so that the narrow phase may read the shapes' copies.
+    void sync_poses(const Body& b);
+    /// Brings a shape's copies up to its body after the body moved: the pose, and the fat box
+    /// if the shape left it (the common case, still inside, reads no tree node).
+    void follow_body(Shape& sh, const Body& b) {
+        if (!follow_pose(sh, b))
+            refit_fat_box(sh);
+    }
+    /// follow_body's first half: the pose, and whether the shape surely stayed inside its fat
+    /// box, decided from the collider's header without the vertex lines (if not, refit_fat_box
+    /// must follow).
+    bool follow_pose(Shape& sh, const Body& b) {
+        sh.body_xf = b.xf;
+        sh.body_center = b.center;
+        return surely_inside(sh.collider, b.xf, sh.fat_box);
+    }
+    /// follow_body's second half: the tight box from the vertex lines, and a new fat box if the
+    /// shape left the old one.
+    void refit_fat_box(Shape& sh) {
+        const Aabb tight = compute_aabb(sh.collider, sh.body_xf);
+        if (!contains(sh.fat_box, tight)) {
+            sh.fat_box = broad_phase.fattened(tight);
+            proxy_moves_.push_back({sh.proxy, sh.fat_box});
+        }
+    }
+    /// Refits the shapes follow_pose could not decide, marked by mark_undecided, then moves
+    /// every proxy that left its fat box (apply_moves).
+    void mark_undecided(std::uint32_t s) { undecided_.push_back(s); }
+    void reserve_undecided() { undecided_.reserve(shapes.size()); }
+    void refit_undecided();
+    /// Hands the proxies follow_body moved to the broad phase in one call.
+    void apply_moves() {
+        broad_phase.move_proxies(proxy_moves_);
+        proxy_moves_.clear();
+    }
+
+  private:
+    /// The proxies refit_fat_box moved, for one BroadPhase::move_proxies call.
+    std::vector<BroadPhase::ProxyMove> proxy_moves_;
+    /// The shapes follow_pose could not decide, for refit_undecided (step scratch).
+    std::vector<std::uint32_t> undecided_;
+};
+
+} // namespace tamias2d

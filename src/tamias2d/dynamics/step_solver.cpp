@@ -1,0 +1,244 @@
+#include "tamias2d/dynamics/step_solver.hpp"
+
+#include <algorithm>
+#include <cstddef>
+
+#include "tamias2d/dynamics/body_store.hpp"
+#include "tamias2d/dynamics/contact_manager.hpp"
+#include "tamias2d/dynamics/model_bridge.hpp"
+#include "tamias2d/dynamics/restitution.hpp"
+#include "tamias2d/dynamics/shape_store.hpp"
+#include "tamias2d/math/prefetch.hpp"
+
+namespace tamias2d {
+
+// Built before the narrow phase, not after it: a pass over every body between the narrow
+// phase's sweep of the contacts and the lane filling's gather of them pushed them out of the
+// cache (rain_16k).
+void StepSolver::prepare_bodies(const BodyStore& store, const std::vector<Load>& loads,
+                                const WorldDef& def, double h) {
+    const auto& bodies = store.bodies;
+    // Solver body 0 is the shared immovable body standing in for every static body.
+    solver_bodies_.assign(1, SolverBody{});
+    solver_index_.resize(bodies.size());
+    accelerations_.assign(1, Vec2d{});
+    angular_accelerations_.assign(1, 0.0);
+    any_damped_ = false;
+    linear_decay_.assign(1, 1.0);
+    angular_decay_.assign(1, 1.0);
+    for (std::uint32_t i = 0; i < bodies.size(); ++i) {
+        const Body& b = bodies[i];
+        // A sleeping body is immovable this step, as a static one is.
+        if ((def.enable_sleep && !store.sleep_states[i].awake) || !b.alive ||
+            b.type == BodyType::static_body) {
+            solver_index_[i] = 0;
+            continue;
+        }
+        solver_index_[i] = std::uint32_t(solver_bodies_.size());
+        solver_bodies_.push_back({b.v, b.w, b.inv_mass, b.inv_inertia, {}, 0.0});
+        Vec2d a{};
+        double alpha = 0.0;
+        if (b.type == BodyType::dynamic) {
+            // Unloaded, F = 0 and tau = 0 give g and 0 bit for bit whatever m and I (0 / m is
+            // exactly 0), so the body's third line, loads and masses, is not read.
+            Vec2d f{};
+            double tau = 0.0, mass = 1.0, inertia = 1.0;
+            if (b.loaded || !loads.empty()) {
+                const Load l = loads.empty() ? Load{} : loads[i];
+                f = b.force + b.force_once + l.force;
+                tau = b.torque + b.torque_once + l.torque;
+                mass = b.mass;
+                inertia = b.inertia;
+            }
+            a = bridge::acceleration(b.gravity_scale * def.gravity, f, mass);
+            alpha = b.inv_inertia > 0.0 ? bridge::angular_acceleration(tau, inertia) : 0.0;
+        }
+        accelerations_.push_back(a);
+        angular_accelerations_.push_back(alpha);
+        if (b.damped && !any_damped_) { // the first damped body: undamped ones get 1
+            any_damped_ = true;
+            linear_decay_.resize(solver_bodies_.size() - 1, 1.0);
+            angular_decay_.resize(solver_bodies_.size() - 1, 1.0);
+        }
+        if (any_damped_) {
+            const BodySettings& set = store.settings[i];
+            linear_decay_.push_back(b.damped ? bridge::decay_factor(set.linear_damping, h) : 1.0);
+            angular_decay_.push_back(b.damped ? bridge::decay_factor(set.angular_damping, h) : 1.0);
+        }
+    }
+}
+
+// IM5's factor 1 gives IM1/IM2's bits, so the undamped loop is only the cheaper form of the
+// same step (no factors to stream).
+void StepSolver::integrate_velocities(double h) {
+    if (any_damped_) {
+        for (std::size_t k = 1; k < solver_bodies_.size(); ++k) {
+            SolverBody& sb = solver_bodies_[k];
+            sb.v = bridge::velocity_step(sb.v, accelerations_[k], h, linear_decay_[k]);
+            sb.w = bridge::angular_velocity_step(sb.w, angular_accelerations_[k], h,
+                                                 angular_decay_[k]);
+        }
+        return;
+    }
+    for (std::size_t k = 1; k < solver_bodies_.size(); ++k) {
+        SolverBody& sb = solver_bodies_[k];
+        sb.v += bridge::velocity_change(accelerations_[k], h);
+        sb.w += bridge::angular_velocity_change(angular_accelerations_[k], h);
+    }
+}
+
+void StepSolver::solve(ContactManager& contacts, const WorldDef& def, double dt) {
+    const int n = def.substeps;
+    const double h = dt / n;
+    // The touching manifolds in creation order, as the colouring sees them; those that can
+    // bounce get a slot for the restitution pass's copy, also in creation order.
+    edges_.clear();
+    edge_contact_.clear();
+    edge_slot_.clear();
+    std::uint32_t bounce_count = 0;
+    for (std::uint32_t i = 0; i < contacts.edge_inputs.size(); ++i) {
+        const ContactManager::EdgeInput& e = contacts.edge_inputs[i];
+        if (!e.touching)
+            continue;
+        const std::uint32_t a = solver_index_[e.body_a], b = solver_index_[e.body_b];
+        if (a == 0 && b == 0)
+            continue; // both asleep or static (only with sleeping on): nothing to solve
+        edges_.push_back({a, b, e.group});
+        edge_contact_.push_back(i);
+        edge_slot_.push_back(e.bounces ? bounce_count++ : WideContactSolver::no_slot);
+    }
+    if (bouncing_.size() < bounce_count)
+        bouncing_.resize(bounce_count); // only while the scene grows: never shrunk
+    wide_solver_.colour(edges_, solver_bodies_.size());
+    // Those that can bounce get a scalar copy for the restitution pass, prepared from the
+    // velocities before the step (DD11's relative velocity before the impact).
+    for (std::uint32_t k = 0; k < edges_.size(); ++k) {
+        if (edge_slot_[k] == WideContactSolver::no_slot)
+            continue;
+        ContactConstraint& copy = bouncing_[edge_slot_[k]];
+        contacts.unprepared_constraint(copy, edges_[k], edge_contact_[k]);
+        prepare_contact(copy, solver_bodies_);
+    }
+    // The first substep's velocity half comes before the preparation, so that each pack can
+    // be warm started as soon as it is prepared (below), as warm_start would after it.
+    integrate_velocities(h);
+    // The manifolds are prepared straight into their packs, four lanes at once, in solve
+    // order (a per-step array of prepared constraints cost a pass over ~300 bytes each).
+    const auto order = wide_solver_.order();
+    ContactConstraint cc; // reused: what set_input_lane reads is set anew
+    // Reused too: every lane is set or cleared each pack (clearing the whole input per pack,
+    // 600 bytes, was a tenth of this loop's time).
+    WideManifoldInput in;
+    // The packs read the contacts level by level, a sparse sweep the hardware prefetcher
+    // does not follow once the contacts outgrow the caches: ask for them four packs ahead.
+    constexpr std::size_t ahead = 4;
+    for (std::size_t p = 0; p < order.size(); ++p) {
+        if (p + ahead < order.size()) {
+            for (int l = 0; l < wide_lanes; ++l) {
+                const std::uint32_t k = order[p + ahead][l];
+                if (k == ConstraintGraph::no_constraint)
+                    continue;
+                const char* c = reinterpret_cast<const char*>(&contacts.contacts[edge_contact_[k]]);
+                for (std::size_t line = 0; line < sizeof(Contact); line += 64)
+                    prefetch(c + line);
+                prefetch(&contacts.warm_impulses[edge_contact_[k]]);
+            }
+        }
+        for (int l = 0; l < wide_lanes; ++l) {
+            const std::uint32_t k = order[p][l];
+            if (k == ConstraintGraph::no_constraint) {
+                clear_input_lane(in, l);
+                continue;
+            }
+            contacts.unprepared_constraint(cc, edges_[k], edge_contact_[k]);
+            set_input_lane(in, l, cc, edge_slot_[k]);
+        }
+        wide_solver_.prepare_pack_and_warm_start(p, in, solver_bodies_);
+    }
+
+    ContactSolverSettings st;
+    st.inv_h = 1.0 / h;
+    // The contact spring is kept below a quarter of the substep rate to stay stable.
+    st.softness =
+        make_softness(std::min(def.contact_hertz, 0.25 * n / dt), def.contact_damping_ratio, h);
+    st.linear_slop = def.linear_slop;
+    st.push_max_velocity = def.contact_push_max_velocity;
+    st.restitution_threshold = def.restitution_threshold;
+
+    const std::size_t nb = solver_bodies_.size();
+    for (int sub = 0; sub < n; ++sub) {
+        if (sub > 0) { // the first substep's were done with the preparation
+            integrate_velocities(h);
+            wide_solver_.warm_start(solver_bodies_);
+        }
+        wide_solver_.solve(solver_bodies_, st, true);
+        // IM1/IM2, position half with the new velocities (DD3, DD6).
+        for (std::size_t k = 1; k < nb; ++k) {
+            SolverBody& sb = solver_bodies_[k];
+            sb.dp += bridge::displacement(sb.v, h);
+            sb.dq += bridge::rotation(sb.w, h);
+        }
+        wide_solver_.solve(solver_bodies_, st, false);
+    }
+    const std::span<ContactConstraint> bouncers(bouncing_.data(), bounce_count);
+    wide_solver_.store(contacts.warm_impulses, contacts.total_impulses, bouncers);
+    // \srs{R8} Post-collision velocities (and, integrated, positions) of colliding bodies.
+    apply_restitution(bouncers, solver_bodies_, st);
+    for (const ContactConstraint& b : bouncers) {
+        for (int j = 0; j < b.count; ++j)
+            contacts.total_impulses[b.contact].normal[j] = b.points[j].total_normal_impulse;
+    }
+}
+
+void StepSolver::finalize(BodyStore& store, ShapeStore& shape_store) {
+    auto& bodies = store.bodies;
+    auto& shapes = shape_store.shapes;
+    // Bodies and shapes are swept in order, but the sweep reads two lines of each shape
+    // at a 384-byte stride beside the bodies', which the hardware prefetcher does not keep
+    // ahead of at 16k boxes: ask for the bodies 16 ahead and their first shapes 8 ahead.
+    // (The vertex lines are read only by a shape the header's bound cannot decide.)
+    constexpr std::uint32_t body_ahead = 16, shape_ahead = 8;
+    const auto body_count = std::uint32_t(bodies.size());
+    shape_store.reserve_undecided(); // allocates only after shapes were added
+    // Solver body 0 stands for the bodies that did not move: static, asleep or destroyed
+    // (their lines are neither asked for nor read).
+    for (std::uint32_t i = 0; i < body_count; ++i) {
+        if (i + body_ahead < body_count && solver_index_[i + body_ahead] != 0) {
+            // Its first two lines: the third only if it is loaded (rare).
+            const char* p = reinterpret_cast<const char*>(&bodies[i + body_ahead]);
+            for (std::size_t line = 0; line < offsetof(Body, force); line += 64)
+                prefetch(p + line);
+        }
+        if (i + shape_ahead < body_count && solver_index_[i + shape_ahead] != 0) {
+            const std::uint32_t s = bodies[i + shape_ahead].first_shape;
+            if (s != null_index) {
+                const Shape& sh = shapes[s];
+                prefetch(&sh.fat_box);
+                prefetch(&sh.body_xf);
+            }
+        }
+        if (solver_index_[i] == 0)
+            continue;
+        Body& b = bodies[i];
+        const SolverBody& sb = solver_bodies_[solver_index_[i]];
+        b.v = sb.v;
+        b.w = sb.w;
+        b.center += sb.dp;
+        b.angle += sb.dq;
+        b.xf.q = Rot::from_angle(b.angle);
+        b.xf.p = b.center - rotate(b.xf.q, b.local_center);
+        if (b.loaded) {
+            b.force_once = {};
+            b.torque_once = 0.0;
+            b.loaded = !b.unloaded();
+        }
+        // The shapes' copies, in the same pass.
+        for (std::uint32_t s = b.first_shape; s != null_index; s = shapes[s].next) {
+            if (!shape_store.follow_pose(shapes[s], b))
+                shape_store.mark_undecided(s);
+        }
+    }
+    shape_store.refit_undecided();
+}
+
+} // namespace tamias2d

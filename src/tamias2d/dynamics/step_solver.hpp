@@ -1,0 +1,57 @@
+// One step's solution of the bodies' motion (internal): the solver bodies and their loads
+// (IM1, IM2, IM5), the touching manifolds coloured into packs, the substeps of the soft step
+// (velocities, contact iterations, positions), the restitution pass, and the write-back of
+// the bodies' new states into the world's bodies and shapes. Box2D keeps the same concerns in
+// solver.c. The world calls prepare_bodies, solve and finalize in that order each step.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "tamias2d/body_def.hpp"
+#include "tamias2d/dynamics/constraint_graph.hpp"
+#include "tamias2d/dynamics/contact_constraint.hpp"
+#include "tamias2d/dynamics/solver_body.hpp"
+#include "tamias2d/dynamics/wide_contact_solver.hpp"
+#include "tamias2d/memory/large_array.hpp"
+#include "tamias2d/world_def.hpp"
+
+namespace tamias2d {
+
+struct BodyStore;
+class ShapeStore;
+class ContactManager;
+
+class StepSolver {
+  public:
+    /// The solver bodies and their accelerations (IM1, IM2's loads; IM5's decay factors over
+    /// the substep h): one per awake non-static body, 0 standing for every immovable one.
+    /// `loads` holds the load functions' values per body, or is empty when no body has one.
+    void prepare_bodies(const BodyStore& bodies, const std::vector<Load>& loads,
+                        const WorldDef& def, double h);
+    /// The substeps of the soft step over dt and the restitution pass; the contacts' impulses
+    /// are stored back for the warm start and the report.
+    void solve(ContactManager& contacts, const WorldDef& def, double dt);
+    /// The new velocities and poses into the bodies, and the shapes' copies and fat boxes
+    /// after them (the broad phase's proxies moved).
+    void finalize(BodyStore& bodies, ShapeStore& shapes);
+
+  private:
+    /// \srs{R5} \srs{R6} IM1/IM2, the velocity half of the semi-implicit Euler step (DD4, DD7);
+    /// \srs{IM5} with damping when some body is damped.
+    void integrate_velocities(double h);
+
+    LargeArray<SolverBody> solver_bodies_;
+    std::vector<Vec2d> accelerations_;
+    std::vector<double> angular_accelerations_;
+    std::vector<double> linear_decay_, angular_decay_; ///< IM5's factors per solver body
+    bool any_damped_ = false; ///< this step: some solver body is damped (else no factors)
+    std::vector<std::uint32_t> solver_index_; ///< per body: its SolverBody (0: immovable)
+    std::vector<GraphEdge> edges_;            ///< the touching manifolds, creation order
+    std::vector<std::uint32_t> edge_contact_; ///< per edge: its contact
+    std::vector<std::uint32_t> edge_slot_;    ///< per edge: its copy in `bouncing_`, or no_slot
+    std::vector<ContactConstraint> bouncing_; ///< manifolds with restitution, creation order
+    WideContactSolver wide_solver_;
+};
+
+} // namespace tamias2d
