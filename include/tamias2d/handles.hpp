@@ -1,5 +1,5 @@
 /// \file
-/// Handles to bodies and shapes: an index plus a generation, so that a handle to something
+/// Handles to bodies, shapes and joints: an index plus a generation, so that a handle to something
 /// destroyed is detected (InvalidHandle) instead of silently reaching a recycled slot.
 #pragma once
 
@@ -25,6 +25,14 @@ struct ShapeId {
     std::uint32_t generation = 0;     ///< which use of the slot: bumped when it is reused
     /// Same slot and same generation: the same shape.
     friend constexpr bool operator==(const ShapeId&, const ShapeId&) = default;
+};
+
+/// A joint of a World. Default-constructed, it names no joint.
+struct JointId {
+    std::uint32_t index = null_index; ///< slot in the world's joint storage
+    std::uint32_t generation = 0;     ///< which use of the slot: bumped when it is reused
+    /// Same slot and same generation: the same joint.
+    friend constexpr bool operator==(const JointId&, const JointId&) = default;
 };
 
 } // namespace tamias2d

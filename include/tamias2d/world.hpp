@@ -14,6 +14,7 @@
 #include "tamias2d/contact_info.hpp"
 #include "tamias2d/errors.hpp"
 #include "tamias2d/handles.hpp"
+#include "tamias2d/joint_def.hpp"
 #include "tamias2d/shape_def.hpp"
 #include "tamias2d/world_def.hpp"
 
@@ -115,6 +116,23 @@ class World {
     void apply_impulse(BodyId body, Vec2d impulse, Vec2d world_point);
     /// Time-varying load F(t), tau(t); an empty function removes it.
     void set_load(BodyId body, LoadFunction load);
+
+    // --- joints (LC3, IM6) ---
+    /// \srs{DD19} Pins body_b to body_a at the anchor (see RevoluteJointDef) and wakes both.
+    /// Throws InvalidHandle for a body that does not exist, ValidationError (DCX_joint) for one
+    /// body twice, two bodies of which neither is dynamic, a non-finite anchor or a break force
+    /// that is not > 0. Unless collide_connected, the two bodies' contacts are removed.
+    JointId create_joint(const RevoluteJointDef& def);
+    /// Removes the joint and wakes its bodies. Destroying a body destroys its joints.
+    void destroy_joint(JointId joint);
+    bool is_valid(JointId joint) const; ///< whether the handle names a joint that exists
+    /// \srs{IM6} N: the force the joint applied to body_b during the last substep of the last
+    /// step (its impulse over the substep); the opposite force acted on body_a.
+    Vec2d joint_reaction_force(JointId joint) const;
+    /// The joints that broke in the last step (reaction force above break_force): they no
+    /// longer exist; their handles are listed so that a game can react.
+    std::span<const JointId> broken_joints() const;
+    std::size_t joint_count() const; ///< joints that exist
 
     // --- sleeping (WorldDef::enable_sleep) ---
     /// Every call above that changes a body's transform, velocities or loads wakes it, and with

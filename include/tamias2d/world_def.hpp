@@ -19,6 +19,11 @@ struct WorldDef {
     double contact_hertz = 45.0;
     double contact_damping_ratio = 10.0;    ///< of the soft contact, > 0 (10: overdamped)
     double contact_push_max_velocity = 3.0; ///< m s^-1, >= 0
+    /// Joint softness (IM6): stiffness (Hz) and damping ratio of the soft bias that pulls a
+    /// joint's position error back, capped like the contact's at a quarter of the substep rate.
+    /// A stiffer joint stretches less under load (error ~ load / (m (2 pi hertz)^2)).
+    double joint_hertz = 60.0;
+    double joint_damping_ratio = 2.0; ///< of the joints' soft bias, > 0
     /// Overlap (m) tolerated before the soft contact pushes back. Default 0: soft contacts do
     /// not jitter at rest, and any slop lets every layer of a stack sink by that much.
     double linear_slop = 0.0;

@@ -77,6 +77,18 @@ void validate(const ShapeDef& def) {
     validate(def.material);
 }
 
+void validate(const RevoluteJointDef& def, bool movable) {
+    if (def.body_a == def.body_b)
+        throw ValidationError("joint.body_b", double(def.body_b.index),
+                              "must be another body than body_a", "DCX_joint");
+    if (!movable)
+        throw ValidationError("joint.body_b", double(def.body_b.index),
+                              "one of the two bodies must be dynamic", "DCX_joint");
+    require_finite("joint.anchor", def.anchor);
+    if (!(def.break_force > 0.0))
+        throw ValidationError("joint.break_force", def.break_force, "must be > 0", "DCX_joint");
+}
+
 void validate(const WorldDef& def) {
     require_finite("world.gravity", def.gravity);
     if (def.substeps < 1 || def.substeps > 64) {
@@ -90,6 +102,8 @@ void validate(const WorldDef& def) {
     positive("world.contact_hertz", def.contact_hertz);
     positive("world.contact_damping_ratio", def.contact_damping_ratio);
     positive("world.contact_push_max_velocity", def.contact_push_max_velocity);
+    positive("world.joint_hertz", def.joint_hertz);
+    positive("world.joint_damping_ratio", def.joint_damping_ratio);
     const auto non_negative = [](const char* field, double v) {
         require_finite(field, v);
         if (!(v >= 0.0))

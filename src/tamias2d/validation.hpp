@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include "tamias2d/body_def.hpp"
+#include "tamias2d/joint_def.hpp"
 #include "tamias2d/shape_def.hpp"
 #include "tamias2d/world_def.hpp"
 
@@ -18,6 +19,9 @@ void validate(const BodyDef& def);
 void validate(const Material& material);
 void validate(const ShapeDef& def);
 void validate(const WorldDef& def);
+/// DCX_joint: distinct bodies, one of them dynamic (`movable`), a finite anchor, a break force
+/// > 0. The handles are checked by the caller.
+void validate(const RevoluteJointDef& def, bool movable);
 /// DCX_dt: the time step is finite and > 0.
 void validate_time_step(double dt);
 /// DCI_m: a mass given for a dynamic body is > 0 (the SRS's m >= 0 would divide by zero in IM1).

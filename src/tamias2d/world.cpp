@@ -6,6 +6,7 @@
 #include "tamias2d/dynamics/body_store.hpp"
 #include "tamias2d/dynamics/contact_manager.hpp"
 #include "tamias2d/dynamics/island_sleep.hpp"
+#include "tamias2d/dynamics/joint_store.hpp"
 #include "tamias2d/dynamics/model_bridge.hpp"
 #include "tamias2d/dynamics/shape_store.hpp"
 #include "tamias2d/dynamics/step_solver.hpp"
@@ -31,9 +32,26 @@ struct World::Impl {
     BodyStore bodies;
     ShapeStore shapes;
     ContactManager contacts;
+    JointStore joints;
     StepSolver solver;
     IslandSleep sleep;
-    std::vector<Load> loads; ///< this step's load-function values (empty when none has one)
+    std::vector<Load> loads;     ///< this step's load-function values (empty when none has one)
+    double inv_h = 0.0;          ///< s^-1, the last step's substep rate (reaction forces)
+    std::vector<JointId> broken; ///< joints the last step broke
+
+    /// After the step: a joint whose reaction force exceeded its break force is destroyed.
+    void break_joints() {
+        broken.clear();
+        for (std::uint32_t i = 0; i < joints.joints.size(); ++i) {
+            const Joint& j = joints.joints[i];
+            if (!j.alive || !(length(j.linear_impulse) * inv_h > j.break_force))
+                continue;
+            broken.push_back(joints.id(i));
+            bodies.wake(j.body_a);
+            bodies.wake(j.body_b);
+            joints.destroy(i);
+        }
+    }
 
     explicit Impl(const WorldDef& d) : def(d) {}
 
@@ -76,6 +94,8 @@ BodyId World::create_body(const BodyDef& def) {
 void World::destroy_body(BodyId id) {
     Impl& w = *impl_;
     const Body& b = w.bodies.get(id);
+    while (!w.joints.of_body(id.index).empty())
+        destroy_joint(w.joints.id(w.joints.of_body(id.index).back()));
     for (std::uint32_t s = b.first_shape; s != null_index;) {
         const std::uint32_t next = w.shapes.shapes[s].next;
         w.contacts.destroy_of_shape(s, w.bodies, w.shapes);
@@ -126,6 +146,51 @@ std::vector<ShapeId> World::shapes(BodyId id) const {
     return out;
 }
 
+JointId World::create_joint(const RevoluteJointDef& def) {
+    Impl& w = *impl_;
+    const Body& a = w.bodies.get(def.body_a);
+    const Body& b = w.bodies.get(def.body_b);
+    validate(def, a.type == BodyType::dynamic || b.type == BodyType::dynamic);
+    Joint j;
+    j.type = JointType::revolute;
+    j.body_a = def.body_a.index;
+    j.body_b = def.body_b.index;
+    j.local_anchor_a = inv_transform_point(a.xf, def.anchor);
+    j.local_anchor_b = inv_transform_point(b.xf, def.anchor);
+    j.collide_connected = def.collide_connected;
+    j.break_force = def.break_force;
+    const std::uint32_t i = w.joints.create(j);
+    if (!def.collide_connected)
+        w.contacts.destroy_between(j.body_a, j.body_b, w.bodies, w.shapes);
+    w.bodies.wake(j.body_a);
+    w.bodies.wake(j.body_b);
+    return w.joints.id(i);
+}
+
+void World::destroy_joint(JointId id) {
+    Impl& w = *impl_;
+    const Joint& j = w.joints.get(id);
+    w.bodies.wake(j.body_a);
+    w.bodies.wake(j.body_b);
+    w.joints.destroy(id.index);
+}
+
+bool World::is_valid(JointId id) const {
+    return impl_->joints.is_valid(id);
+}
+
+Vec2d World::joint_reaction_force(JointId id) const {
+    return impl_->joints.get(id).linear_impulse * impl_->inv_h;
+}
+
+std::span<const JointId> World::broken_joints() const {
+    return impl_->broken;
+}
+
+std::size_t World::joint_count() const {
+    return impl_->joints.live();
+}
+
 std::size_t World::body_count() const {
     return impl_->bodies.count();
 }
@@ -136,8 +201,9 @@ void World::step(double dt) {
     w.evaluate_loads();
     w.contacts.begin_events.clear();
     w.contacts.end_events.clear();
-    w.contacts.find_new(w.bodies, w.shapes);
+    w.contacts.find_new(w.bodies, w.shapes, w.joints);
     const double h = dt / w.def.substeps;
+    w.inv_h = w.def.substeps / dt;
     if (w.def.enable_sleep && !w.bodies.any_awake()) {
         // Every body asleep: every contact is kept as it is (a new one, of a static body moved
         // onto sleeping ones, too) and nothing is solved; the step does only this.
@@ -145,16 +211,20 @@ void World::step(double dt) {
     } else if (w.def.enable_sleep) {
         // The islands need this step's touching contacts, and the solver bodies the islands.
         w.contacts.update(w.bodies, w.shapes, true, w.def.speculative_distance);
-        w.sleep.wake_islands(w.bodies, w.contacts);
+        w.sleep.wake_islands(w.bodies, w.contacts, w.joints);
         w.solver.prepare_bodies(w.bodies, w.loads, w.def, h);
-        w.solver.solve(w.contacts, w.def, dt);
+        w.solver.prepare_joints(w.joints, w.bodies);
+        w.solver.solve(w.contacts, w.joints, w.def, dt);
         w.solver.finalize(w.bodies, w.shapes);
+        w.break_joints();
         w.sleep.update_sleep(w.bodies, w.def, dt);
     } else {
         w.solver.prepare_bodies(w.bodies, w.loads, w.def, h);
+        w.solver.prepare_joints(w.joints, w.bodies);
         w.contacts.update(w.bodies, w.shapes, false, w.def.speculative_distance);
-        w.solver.solve(w.contacts, w.def, dt);
+        w.solver.solve(w.contacts, w.joints, w.def, dt);
         w.solver.finalize(w.bodies, w.shapes);
+        w.break_joints();
     }
     // Compensated sum, so that a load switching at t = n dt is seen at step n, not n + 1.
     const double y = dt - w.time_error;
@@ -518,6 +588,20 @@ std::uint64_t World::state_hash() const {
         hs(d.material.density);
         hs(d.material.restitution);
         hs(d.material.friction);
+    }
+    if (w.joints.live() > 0) { // (so that worlds without joints hash as they always did)
+        for (std::uint32_t i = 0; i < w.joints.joints.size(); ++i) {
+            const Joint& j = w.joints.joints[i];
+            hs(std::uint64_t(j.generation) << 1 | std::uint64_t(j.alive));
+            if (!j.alive)
+                continue;
+            hs(std::uint64_t(j.body_a) << 32 | j.body_b);
+            hs(j.local_anchor_a);
+            hs(j.local_anchor_b);
+            hs(j.linear_impulse);
+            hs(j.break_force);
+            hs(std::uint64_t(j.collide_connected));
+        }
     }
     hs(std::uint64_t(w.contacts.size()));
     for (std::size_t i = 0; i < w.contacts.size(); ++i) {

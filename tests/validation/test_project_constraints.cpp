@@ -364,4 +364,42 @@ BOOST_AUTO_TEST_CASE(negative_or_non_finite_damping_is_rejected,
     BOOST_TEST(m.world.angular_damping(m.box) == 4.0);
 }
 
+// Oracle: DCX_joint (srs/data_constraints.yaml): two distinct bodies, one of them dynamic, a
+// finite anchor, a break force > 0; a rejected joint leaves the world as it was, and a handle
+// to no body is an InvalidHandle.
+BOOST_AUTO_TEST_CASE(invalid_joints_are_rejected, *utf::label("R4") * utf::label("DCX_joint")) {
+    MovingWorld m;
+    BodyDef ground_def;
+    ground_def.type = BodyType::static_body;
+    const BodyId ground = m.world.create_body(ground_def);
+    const BodyId ground2 = m.world.create_body(ground_def);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    expect_rejected(
+        m.world, [&] { m.world.create_joint({.body_a = m.box, .body_b = m.box}); }, "body_b",
+        "DCX_joint");
+    expect_rejected(
+        m.world, [&] { m.world.create_joint({.body_a = ground, .body_b = ground2}); }, "body_b",
+        "DCX_joint");
+    expect_rejected(
+        m.world,
+        [&] {
+            m.world.create_joint({.body_a = ground, .body_b = m.box, .anchor = {nan, 0.0}});
+        },
+        "anchor", "DCX_finite");
+    for (const double f : {0.0, -1.0, nan}) {
+        expect_rejected_value(
+            m.world,
+            [&] { m.world.create_joint({.body_a = ground, .body_b = m.box, .break_force = f}); },
+            "break_force", "DCX_joint", f);
+    }
+    const auto before = snapshot(m.world);
+    BOOST_CHECK_THROW(m.world.create_joint({.body_a = ground, .body_b = BodyId{}}), InvalidHandle);
+    check_unchanged(before, m.world);
+    const JointId j = m.world.create_joint({.body_a = ground, .body_b = m.box});
+    BOOST_TEST(m.world.is_valid(j));
+    m.world.destroy_body(m.box); // takes its joints with it
+    BOOST_TEST(!m.world.is_valid(j));
+    BOOST_CHECK_THROW(m.world.destroy_joint(j), InvalidHandle);
+}
+
 BOOST_AUTO_TEST_SUITE_END()

@@ -5,19 +5,23 @@
 
 #include "tamias2d/collision/narrow_phase.hpp"
 #include "tamias2d/dynamics/body_store.hpp"
+#include "tamias2d/dynamics/joint_store.hpp"
 #include "tamias2d/dynamics/shape_store.hpp"
 #include "tamias2d/math/prefetch.hpp"
 
 namespace tamias2d {
 namespace {
 
-bool should_collide(const BodyStore& bodies, const ShapeStore& shapes, std::uint32_t sa,
-                    std::uint32_t sb) {
-    const Body& a = bodies.bodies[shapes.shapes[sa].body];
-    const Body& b = bodies.bodies[shapes.shapes[sb].body];
-    if (shapes.shapes[sa].body == shapes.shapes[sb].body)
+bool should_collide(const BodyStore& bodies, const ShapeStore& shapes, const JointStore& joints,
+                    std::uint32_t sa, std::uint32_t sb) {
+    const std::uint32_t ia = shapes.shapes[sa].body, ib = shapes.shapes[sb].body;
+    const Body& a = bodies.bodies[ia];
+    const Body& b = bodies.bodies[ib];
+    if (ia == ib)
         return false;
-    return a.type == BodyType::dynamic || b.type == BodyType::dynamic;
+    if (a.type != BodyType::dynamic && b.type != BodyType::dynamic)
+        return false;
+    return joints.live() == 0 || !joints.filters(ia, ib);
 }
 
 /// What the colouring needs of a contact (EdgeInput).
@@ -75,7 +79,17 @@ void ContactManager::wake_touching(std::uint32_t i, BodyStore& bodies) const {
     }
 }
 
-void ContactManager::find_new(const BodyStore& bodies, ShapeStore& shapes) {
+void ContactManager::destroy_between(std::uint32_t a, std::uint32_t b, BodyStore& bodies,
+                                     const ShapeStore& shapes) {
+    for (std::uint32_t i = std::uint32_t(contacts.size()); i-- > 0;) {
+        const Contact& c = contacts[i];
+        if ((c.body_a == a && c.body_b == b) || (c.body_a == b && c.body_b == a))
+            destroy(i, bodies, shapes);
+    }
+}
+
+void ContactManager::find_new(const BodyStore& bodies, ShapeStore& shapes,
+                              const JointStore& joints) {
     new_pairs_.clear();
     shapes.broad_phase.update_pairs(new_pairs_);
     // Most pairs the broad phase reports are contacts already (rain_16k: 78 %), so the index
@@ -89,7 +103,7 @@ void ContactManager::find_new(const BodyStore& bodies, ShapeStore& shapes) {
         const auto [ua, ub] = new_pairs_[i];
         const std::uint32_t sa = std::min(ua, ub), sb = std::max(ua, ub);
         const std::uint64_t key = Contact::key(sa, sb);
-        if (index_.contains(key) || !should_collide(bodies, shapes, sa, sb))
+        if (index_.contains(key) || !should_collide(bodies, shapes, joints, sa, sb))
             continue;
         Contact c;
         c.shape_a = sa;

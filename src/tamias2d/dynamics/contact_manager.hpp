@@ -20,6 +20,7 @@ namespace tamias2d {
 
 struct BodyStore;
 class ShapeStore;
+class JointStore;
 
 class ContactManager {
   public:
@@ -41,8 +42,10 @@ class ContactManager {
 
     std::uint32_t size() const { return std::uint32_t(contacts.size()); }
 
-    /// New contacts for the pairs the broad phase found since the last step (creation order).
-    void find_new(const BodyStore& bodies, ShapeStore& shapes);
+    /// New contacts for the pairs the broad phase found since the last step (creation order),
+    /// except between two shapes of one body, two immovable bodies, or bodies a joint keeps
+    /// from colliding.
+    void find_new(const BodyStore& bodies, ShapeStore& shapes, const JointStore& joints);
     /// \srs{R7} Narrow phase for every contact; contacts whose fat boxes separated are
     /// destroyed. With sleeping on, a contact between bodies that do not move this step (asleep
     /// or static) is kept as it is: neither has moved since it was last updated.
@@ -52,6 +55,9 @@ class ContactManager {
     void keep_all() { edge_inputs.resize(contacts.size()); }
     /// Destroys every contact of shape s (its end events and wakes included).
     void destroy_of_shape(std::uint32_t s, BodyStore& bodies, const ShapeStore& shapes);
+    /// Destroys every contact between bodies a and b (a joint now keeps them apart).
+    void destroy_between(std::uint32_t a, std::uint32_t b, BodyStore& bodies,
+                         const ShapeStore& shapes);
     /// Wakes every body touching body i: what keeps them up may have gone (a static body does
     /// not move in a step, so its contacts with sleeping bodies are not updated).
     void wake_touching(std::uint32_t i, BodyStore& bodies) const;

@@ -5,16 +5,22 @@
 
 #include "tamias2d/dynamics/body_store.hpp"
 #include "tamias2d/dynamics/contact_manager.hpp"
+#include "tamias2d/dynamics/joint_store.hpp"
 
 namespace tamias2d {
 
-void IslandSleep::wake_islands(BodyStore& store, const ContactManager& contacts) {
+void IslandSleep::wake_islands(BodyStore& store, const ContactManager& contacts,
+                               const JointStore& joints) {
     const std::uint32_t n = store.size();
     islands_.reset(n);
     for (const Contact& c : contacts.contacts) {
         if (c.touching && store.sleep_states[c.body_a].movable &&
             store.sleep_states[c.body_b].movable)
             islands_.unite(c.body_a, c.body_b);
+    }
+    for (const Joint& j : joints.joints) {
+        if (j.alive && store.sleep_states[j.body_a].movable && store.sleep_states[j.body_b].movable)
+            islands_.unite(j.body_a, j.body_b);
     }
     island_awake_.assign(n, 0);
     for (std::uint32_t i = 0; i < n; ++i) {

@@ -14,12 +14,13 @@ namespace tamias2d {
 
 struct BodyStore;
 class ContactManager;
+class JointStore;
 
 class IslandSleep {
   public:
-    /// The islands of the touching contacts; an island with an awake body wakes whole (a body
-    /// met a sleeping one, or was changed through the API).
-    void wake_islands(BodyStore& bodies, const ContactManager& contacts);
+    /// The islands of the touching contacts and the joints; an island with an awake body wakes
+    /// whole (a body met a sleeping one, or was changed through the API).
+    void wake_islands(BodyStore& bodies, const ContactManager& contacts, const JointStore& joints);
     /// After the step: each awake body's time at rest, and an island whose bodies have all
     /// been at rest for time_to_sleep falls asleep (velocities zero: they no longer move). A
     /// body that may not sleep, or carries a persistent load, is never at rest.

@@ -14,6 +14,7 @@
 #include "tamias2d/model/dd07_angular_acceleration.hpp"
 #include "tamias2d/model/dd08_collision_impulse.hpp"
 #include "tamias2d/model/dd12_coefficient_of_restitution.hpp"
+#include "tamias2d/model/dd19_point_constraint.hpp"
 #include "tamias2d/model/im1_translational_motion.hpp"
 #include "tamias2d/model/im2_rotational_motion.hpp"
 #include "tamias2d/model/im3_collision_response.hpp"
@@ -163,6 +164,39 @@ inline void apply_impulse(Body& a, Body& b, V arm_a, V arm_b, u::Vec2<V> dir, V 
     a.v = plain_vec(va.v);
     a.w = va.omega.value();
     b.v = plain_vec(vb.v);
+    b.w = vb.omega.value();
+}
+
+// DD19, the revolute joint's pin, on one pair of solver bodies (joints are solved one by one).
+
+/// DD19's position error C (m): centres' offset plus the pin's offsets r_b - r_a.
+inline Vec2d pin_position_error(Vec2d center_offset, Vec2d r_a, Vec2d r_b) {
+    return plain(m::dd19::position_error(typed<u::Length>(center_offset), typed<u::Length>(r_a),
+                                         typed<u::Length>(r_b)));
+}
+/// DD19's velocity error Cdot (m s^-1).
+inline Vec2d pin_velocity_error(const SolverBody& a, Vec2d r_a, const SolverBody& b, Vec2d r_b) {
+    return plain(m::dd19::velocity_error(velocities(a), typed<u::Length>(r_a), velocities(b),
+                                         typed<u::Length>(r_b)));
+}
+/// DD19's impulse (N s) in IM6's soft form, K from the bodies and the pin's offsets.
+inline Vec2d pin_impulse(const SolverBody& a, Vec2d r_a, const SolverBody& b, Vec2d r_b, Vec2d rhs,
+                         double mass_scale, double impulse_scale, Vec2d accumulated) {
+    const m::dd19::PinMass K = m::dd19::effective_mass_inverse(
+        inverse_inertia(a), inverse_inertia(b), typed<u::Length>(r_a), typed<u::Length>(r_b));
+    return plain(m::dd19::impulse(
+        K, typed<u::Velocity>(rhs), u::from_value<u::Dimensionless>(mass_scale),
+        u::from_value<u::Dimensionless>(impulse_scale), typed<u::Impulse>(accumulated)));
+}
+/// DD19: P on b at the pin, -P on a.
+inline void apply_pin_impulse(SolverBody& a, Vec2d r_a, SolverBody& b, Vec2d r_b, Vec2d P) {
+    m::im3::Velocities va = velocities(a);
+    m::im3::Velocities vb = velocities(b);
+    m::dd19::apply(va, vb, inverse_inertia(a), inverse_inertia(b), typed<u::Length>(r_a),
+                   typed<u::Length>(r_b), typed<u::Impulse>(P));
+    a.v = plain(va.v);
+    a.w = va.omega.value();
+    b.v = plain(vb.v);
     b.w = vb.omega.value();
 }
 

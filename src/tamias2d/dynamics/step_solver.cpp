@@ -5,8 +5,10 @@
 
 #include "tamias2d/dynamics/body_store.hpp"
 #include "tamias2d/dynamics/contact_manager.hpp"
+#include "tamias2d/dynamics/joint_store.hpp"
 #include "tamias2d/dynamics/model_bridge.hpp"
 #include "tamias2d/dynamics/restitution.hpp"
+#include "tamias2d/dynamics/revolute_joint.hpp"
 #include "tamias2d/dynamics/shape_store.hpp"
 #include "tamias2d/math/prefetch.hpp"
 
@@ -87,9 +89,31 @@ void StepSolver::integrate_velocities(double h) {
     }
 }
 
-void StepSolver::solve(ContactManager& contacts, const WorldDef& def, double dt) {
+void StepSolver::prepare_joints(JointStore& joints, const BodyStore& bodies) {
+    for (Joint& j : joints.joints) {
+        if (j.alive)
+            prepare_revolute(j, bodies, solver_index_);
+    }
+}
+
+namespace {
+
+/// Whether a joint takes part in this step: alive, and not between two immovable bodies
+/// (both asleep, or asleep and static: solver body 0 on both sides).
+bool solved(const Joint& j) {
+    return j.alive && (j.solver_a != 0 || j.solver_b != 0);
+}
+
+} // namespace
+
+void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const WorldDef& def,
+                       double dt) {
     const int n = def.substeps;
     const double h = dt / n;
+    std::vector<Joint>& joints = joint_store.joints;
+    // IM6: the joints' soft bias, capped like the contacts' at a quarter of the substep rate.
+    const Softness joint_softness =
+        make_softness(std::min(def.joint_hertz, 0.25 * n / dt), def.joint_damping_ratio, h);
     // The touching manifolds in creation order, as the colouring sees them; those that can
     // bounce get a slot for the restitution pass's copy, also in creation order.
     edges_.clear();
@@ -120,8 +144,13 @@ void StepSolver::solve(ContactManager& contacts, const WorldDef& def, double dt)
         prepare_contact(copy, solver_bodies_);
     }
     // The first substep's velocity half comes before the preparation, so that each pack can
-    // be warm started as soon as it is prepared (below), as warm_start would after it.
+    // be warm started as soon as it is prepared (below), as warm_start would after it. The
+    // joints come before the contacts in every stage, as the later substeps have them.
     integrate_velocities(h);
+    for (const Joint& j : joints) {
+        if (solved(j))
+            warm_start_revolute(j, solver_bodies_);
+    }
     // The manifolds are prepared straight into their packs, four lanes at once, in solve
     // order (a per-step array of prepared constraints cost a pass over ~300 bytes each).
     const auto order = wide_solver_.order();
@@ -169,7 +198,15 @@ void StepSolver::solve(ContactManager& contacts, const WorldDef& def, double dt)
     for (int sub = 0; sub < n; ++sub) {
         if (sub > 0) { // the first substep's were done with the preparation
             integrate_velocities(h);
+            for (const Joint& j : joints) {
+                if (solved(j))
+                    warm_start_revolute(j, solver_bodies_);
+            }
             wide_solver_.warm_start(solver_bodies_);
+        }
+        for (Joint& j : joints) {
+            if (solved(j))
+                solve_revolute(j, solver_bodies_, joint_softness, true);
         }
         wide_solver_.solve(solver_bodies_, st, true);
         // IM1/IM2, position half with the new velocities (DD3, DD6).
@@ -177,6 +214,10 @@ void StepSolver::solve(ContactManager& contacts, const WorldDef& def, double dt)
             SolverBody& sb = solver_bodies_[k];
             sb.dp += bridge::displacement(sb.v, h);
             sb.dq += bridge::rotation(sb.w, h);
+        }
+        for (Joint& j : joints) {
+            if (solved(j))
+                solve_revolute(j, solver_bodies_, joint_softness, false);
         }
         wide_solver_.solve(solver_bodies_, st, false);
     }

@@ -21,6 +21,7 @@ namespace tamias2d {
 struct BodyStore;
 class ShapeStore;
 class ContactManager;
+class JointStore;
 
 class StepSolver {
   public:
@@ -29,9 +30,11 @@ class StepSolver {
     /// `loads` holds the load functions' values per body, or is empty when no body has one.
     void prepare_bodies(const BodyStore& bodies, const std::vector<Load>& loads,
                         const WorldDef& def, double h);
+    /// The joints' solver bodies and pins at the step's start (after prepare_bodies).
+    void prepare_joints(JointStore& joints, const BodyStore& bodies);
     /// The substeps of the soft step over dt and the restitution pass; the contacts' impulses
-    /// are stored back for the warm start and the report.
-    void solve(ContactManager& contacts, const WorldDef& def, double dt);
+    /// are stored back for the warm start and the report, the joints keep theirs.
+    void solve(ContactManager& contacts, JointStore& joints, const WorldDef& def, double dt);
     /// The new velocities and poses into the bodies, and the shapes' copies and fat boxes
     /// after them (the broad phase's proxies moved).
     void finalize(BodyStore& bodies, ShapeStore& shapes);

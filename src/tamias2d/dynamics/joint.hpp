@@ -1,0 +1,32 @@
+// A joint as the world stores it (internal). Public access goes through World and JointId.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+
+#include "tamias2d/math/vec2d.hpp"
+
+namespace tamias2d {
+
+enum class JointType : std::uint8_t { revolute };
+
+struct Joint {
+    JointType type = JointType::revolute;
+    bool alive = false;
+    bool collide_connected = false;
+    std::uint32_t generation = 0;
+    std::uint32_t body_a = 0, body_b = 0;     ///< world body indices
+    Vec2d local_anchor_a{}, local_anchor_b{}; ///< m, the pin in each body's frame (from origin)
+    double break_force = std::numeric_limits<double>::infinity(); ///< N
+    /// N s: the impulse accumulated over the last substep's iterations, the warm start of the
+    /// next; over the substep length it is the reaction force (IM6).
+    Vec2d linear_impulse{};
+
+    // Set by the step's preparation (revolute_joint.hpp).
+    std::uint32_t solver_a = 0, solver_b = 0; ///< solver bodies (0: immovable this step)
+    Vec2d frame_a{}, frame_b{};               ///< m, the pin from each centre, body frame
+    double angle_a = 0.0, angle_b = 0.0;      ///< rad, the bodies' angles at the step's start
+    Vec2d center_offset{};                    ///< m, p_B - p_A at the step's start
+};
+
+} // namespace tamias2d
