@@ -12,6 +12,10 @@ with 10 % of the lines the same directories held before the change's first commi
 "10 % of the original development" read as a share of existing code (erratum E71), because
 development time is recorded nowhere.
 
+A commit that restructures existing code so that a likely change can be made, without making
+it, says "Prepares-likely-change: LC3". Its cost is measured the same way and reported beside
+the change's, not added to it: the restructuring serves every later change as much as this one.
+
 Writes OUT_DIR/likely_change_cost.json in the verification schema (docs/traceability.md). In a
 checkout without the history (a shallow clone) it writes no check and says why.
 """
@@ -47,8 +51,8 @@ def existed(repo, rev, path):
                           capture_output=True).returncode == 0
 
 
-def measure(repo, label):
-    commits = git(repo, "log", "--reverse", "--format=%H", f"--grep=^Likely-change: {label}$",
+def measure(repo, label, trailer="Likely-change"):
+    commits = git(repo, "log", "--reverse", "--format=%H", f"--grep=^{trailer}: {label}$",
                   "HEAD").split()
     if not commits:
         return None
@@ -90,12 +94,24 @@ def main(argv):
                 notes.append(f"{label}: no commit carries 'Likely-change: {label}' yet")
                 continue
             changed = sum(a + d for a, d in m["per_file"].values())
+            prep = measure(repo, label, "Prepares-likely-change")
+            prepared = ""
+            if prep is not None:
+                prep_changed = sum(a + d for a, d in prep["per_file"].values())
+                prepared = (f"; the {len(prep['commits'])} commits preparing it touched "
+                            f"{prep_changed} lines of existing files "
+                            f"({100 * prep_changed / prep['base']:.2f} % of {prep['base']}), "
+                            f"reported, not counted")
+                tables.append({"name": f"{label}: existing files changed by its preparation",
+                               "columns": ["file", "lines added", "lines deleted"],
+                               "rows": [[p, a, d] for p, (a, d) in
+                                        sorted(prep["per_file"].items())]})
             share = changed / m["base"] if m["base"] else 0.0
             details = (f"{label} touched {changed} lines (added + deleted) of {len(m['per_file'])} "
                        f"existing files of src/, include/, apps/ in {len(m['commits'])} commits: "
                        f"{100 * share:.2f} % of the {m['base']} lines those directories held "
                        f"before it (limit {100 * LIMIT:.0f} %); {m['new_lines']} lines in new "
-                       f"files of those directories")
+                       f"files of those directories{prepared}")
             checks.append({"name": f"{label} changes at most 10 % of the existing code",
                            "labels": ["NFR5"], "passed": share <= LIMIT,
                            "oracle": "git history: lines of pre-existing files changed by the "
