@@ -98,7 +98,8 @@ def main(argv):
             prepared = ""
             if prep is not None:
                 prep_changed = sum(a + d for a, d in prep["per_file"].values())
-                prepared = (f"; the {len(prep['commits'])} commits preparing it touched "
+                n = len(prep["commits"])
+                prepared = (f"; the {n} commit{'s' if n > 1 else ''} preparing it touched "
                             f"{prep_changed} lines of existing files "
                             f"({100 * prep_changed / prep['base']:.2f} % of {prep['base']}), "
                             f"reported, not counted")
