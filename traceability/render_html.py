@@ -21,7 +21,7 @@ STATUS_HELP = {
     "untested": "code carries the item's \\srs tag (or labelled tests exist but did not run), but nothing passing verifies it",
     "not implemented": "neither a code tag nor a labelled test",
     "known-failure": "a test declared with Boost's expected_failures(N): exactly N known, documented findings fail (docs/verification.md); any other failure fails the test",
-    "target-missed": "a verification check stating a goal beyond the SRS (e.g. a speed floor of the performance issue) that this run did not reach; reported, not gating",
+    "target-missed": "a verification check stating a goal beyond the SRS (e.g. one of the project's speed floors) that this run did not reach; reported, not gating",
 }
 
 CSS = """
@@ -205,7 +205,7 @@ any test or check fails. This report is complete nonetheless; the reasons are:<u
 <code>expected_failures</code>); each failing case is a finding described in
 docs/verification.md, printed with its seed so it can be replayed:""", g.get("known_failures"))
         self._test_list_box("targets-missed", "Targets not met (goals beyond the SRS)",
-                            """These verification checks state project goals beyond the SRS (the performance issue's speed
+                            """These verification checks state project goals beyond the SRS (the project's speed
 floors); this run did not reach them. They do not gate the exit status, and the SRS items they
 are labelled with are judged by their other checks:""", g.get("targets_missed"))
 

@@ -37,7 +37,7 @@ def render(r):
         bullets("**Known failures (documented findings, docs/verification.md; declared with "
                 "Boost's expected_failures):**", g["known_failures"])
     if g.get("targets_missed"):
-        bullets("**Targets not met (goals beyond the SRS, e.g. the performance issue's speed "
+        bullets("**Targets not met (goals beyond the SRS, e.g. the project's speed "
                 "floors; reported, not gating):**", g["targets_missed"])
     s = r["summary"]
     w("## 1. Summary\n")
