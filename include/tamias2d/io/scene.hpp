@@ -19,6 +19,7 @@
 
 #include "tamias2d/body_def.hpp"
 #include "tamias2d/handles.hpp"
+#include "tamias2d/joint_def.hpp"
 #include "tamias2d/shape_def.hpp"
 #include "tamias2d/world_def.hpp"
 
@@ -76,6 +77,16 @@ struct SceneBody {
     bool generated = false; ///< made by a generator (then `source` is the generator's pointer)
 };
 
+/// One joint of a scene: a revolute joint (the library's joint kind) between two named bodies.
+struct SceneJoint {
+    std::string body_a; ///< the name of its first body (BodyDef::name, unique in the scene)
+    std::string body_b; ///< the name of its second body
+    /// The joint's anchor, collide_connected and break_force; its handles are set by
+    /// build_world from the names.
+    RevoluteJointDef def;
+    std::string source; ///< the JSON pointer of its entry ("/joints/0"), for error messages
+};
+
 /// A whole simulation as a scene file states it: the world, the run, the bodies.
 struct Scene {
     std::string description; ///< free text
@@ -85,7 +96,8 @@ struct Scene {
     int output_every = 0;    ///< write states every K steps (0: only the final state)
     /// Named materials as declared (shapes hold their resolved Material).
     std::map<std::string, Material> materials;
-    std::vector<SceneBody> bodies; ///< generated bodies expanded in place, in file order
+    std::vector<SceneBody> bodies;  ///< generated bodies expanded in place, in file order
+    std::vector<SceneJoint> joints; ///< in file order, created after every body
 };
 
 /// A scene that cannot be loaded. what() is one line:
@@ -115,9 +127,9 @@ Scene parse_scene(std::string_view json, std::string_view origin = "<scene>");
 /// at the body's `source` if the World rejects any body or shape.
 void validate_scene(const Scene& scene, std::string_view origin = "<scene>");
 
-/// Creates the scene's bodies and shapes in `world` (whose settings the caller made from
-/// scene.world) and returns the body handles in scene order. The scene is validated first
-/// (validate_scene), so on error `world` is left unchanged.
+/// Creates the scene's bodies and shapes, then its joints, in `world` (whose settings the
+/// caller made from scene.world) and returns the body handles in scene order. The scene is
+/// validated first (validate_scene), so on error `world` is left unchanged.
 std::vector<BodyId> build_world(const Scene& scene, World& world);
 
 /// The scene as canonical JSON: generators expanded, materials inlined, boxes written as

@@ -8,6 +8,7 @@
 #include <initializer_list>
 #include <limits>
 #include <sstream>
+#include <tuple>
 #include <utility>
 
 #include <nlohmann/json.hpp>
@@ -527,6 +528,33 @@ void claim_name(Ctx& ctx, const std::string& name, const std::string& ptr) {
              format_rule);
 }
 
+/// A "joints" entry: {"type": "revolute", "body_a", "body_b", "anchor", "collide_connected",
+/// "break_force"}. The names are resolved, and the joint checked (DCX_joint), by validate_scene.
+SceneJoint parse_joint(Ctx& ctx, const ojson& v, const std::string& ptr) {
+    require_object(ctx, v, ptr, "", "a joint object");
+    check_keys(ctx, v, ptr,
+               {"type", "body_a", "body_b", "anchor", "collide_connected", "break_force"},
+               "a joint");
+    SceneJoint j;
+    j.source = ptr;
+    const std::string type =
+        as_string(ctx, require_key(ctx, v, ptr, "type", "a joint"), child(ptr, "type"), "type");
+    if (type != "revolute")
+        fail(ctx, child(ptr, "type"), "type",
+             "unknown joint type '" + type + "'; expected \"revolute\"", format_rule);
+    j.body_a = as_string(ctx, require_key(ctx, v, ptr, "body_a", "a joint"), child(ptr, "body_a"),
+                         "body_a");
+    j.body_b = as_string(ctx, require_key(ctx, v, ptr, "body_b", "a joint"), child(ptr, "body_b"),
+                         "body_b");
+    j.def.anchor =
+        as_vec2(ctx, require_key(ctx, v, ptr, "anchor", "a joint"), child(ptr, "anchor"), "anchor");
+    if (const ojson* c = find(v, "collide_connected"))
+        j.def.collide_connected =
+            as_bool(ctx, *c, child(ptr, "collide_connected"), "collide_connected");
+    opt_number(ctx, v, ptr, "break_force", j.def.break_force);
+    return j;
+}
+
 SceneBody parse_body(Ctx& ctx, const ojson& v, const std::string& ptr) {
     check_keys(ctx, v, ptr,
                {"name", "type", "position", "angle", "velocity", "angular_velocity", "mass",
@@ -917,10 +945,10 @@ Scene parse_scene(std::string_view json, std::string_view origin_view) {
     const ojson root = parse_json(json, ctx.origin);
     const std::string ptr;
     require_object(ctx, root, ptr, "", "a scene object {\"dt\", \"steps\", \"bodies\", ...}");
-    check_keys(
-        ctx, root, ptr,
-        {"version", "description", "world", "dt", "steps", "output_every", "materials", "bodies"},
-        "a scene");
+    check_keys(ctx, root, ptr,
+               {"version", "description", "world", "dt", "steps", "output_every", "materials",
+                "bodies", "joints"},
+               "a scene");
     Scene scene;
     if (const ojson* v = find(root, "version")) {
         const long long version = as_integer(ctx, *v, "/version", "version", 1, 1);
@@ -953,6 +981,13 @@ Scene parse_scene(std::string_view json, std::string_view origin_view) {
             scene.bodies.push_back(parse_body(ctx, b, bp));
         }
     }
+    if (const ojson* joints = find(root, "joints")) {
+        if (!joints->is_array())
+            fail_type(ctx, "/joints", "joints", *joints, "an array of joints");
+        for (std::size_t i = 0; i < joints->size(); ++i)
+            scene.joints.push_back(
+                parse_joint(ctx, (*joints)[i], child(std::string("/joints"), i)));
+    }
     validate_scene(scene, ctx.origin);
     return scene;
 }
@@ -981,6 +1016,7 @@ void validate_scene(const Scene& scene, std::string_view origin_view) {
         fail_value(ctx, "/output_every", "output_every", scene.output_every, "must be >= 0",
                    format_rule);
     std::optional<World> world;
+    std::map<std::string, BodyId> by_name;
     try {
         world.emplace(scene.world);
     } catch (const ValidationError& e) {
@@ -996,6 +1032,8 @@ void validate_scene(const Scene& scene, std::string_view origin_view) {
         const std::string who = b.def.name.empty() ? std::string{} : " (body '" + b.def.name + "')";
         try {
             const BodyId id = world->create_body(b.def);
+            if (!b.def.name.empty())
+                by_name.emplace(b.def.name, id);
             for (std::size_t s = 0; s < b.shapes.size(); ++s) {
                 try {
                     world->create_shape(id, b.shapes[s]);
@@ -1006,6 +1044,25 @@ void validate_scene(const Scene& scene, std::string_view origin_view) {
             }
         } catch (const ValidationError& e) {
             fail(ctx, at, e.field, std::string(e.what()) + who, e.constraint);
+        }
+    }
+    for (const SceneJoint& j : scene.joints) {
+        RevoluteJointDef def = j.def;
+        for (const auto& [key, name, id] :
+             {std::tuple{"body_a", &j.body_a, &def.body_a}, {"body_b", &j.body_b, &def.body_b}}) {
+            const auto it = by_name.find(*name);
+            if (it == by_name.end())
+                fail(ctx, child(j.source, key), key, "no body is named '" + *name + "'",
+                     format_rule);
+            *id = it->second;
+        }
+        try {
+            world->create_joint(def);
+        } catch (const ValidationError& e) {
+            std::string field = e.field;
+            if (field.starts_with("joint."))
+                field.erase(0, 6);
+            fail(ctx, child(j.source, field), field, e.what(), e.constraint);
         }
     }
 }
@@ -1022,6 +1079,15 @@ std::vector<BodyId> build_world(const Scene& scene, World& world) {
         for (const ShapeDef& s : b.shapes)
             world.create_shape(id, s);
         ids.push_back(id);
+    }
+    std::map<std::string, BodyId> by_name;
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i)
+        by_name.emplace(scene.bodies[i].def.name, ids[i]);
+    for (const SceneJoint& j : scene.joints) {
+        RevoluteJointDef def = j.def;
+        def.body_a = by_name.at(j.body_a); // validate_scene found both names
+        def.body_b = by_name.at(j.body_b);
+        world.create_joint(def);
     }
     return ids;
 }
@@ -1170,6 +1236,21 @@ std::string scene_to_json(const Scene& scene, int indent) {
         bodies.push_back(std::move(o));
     }
     j["bodies"] = std::move(bodies);
+    if (!scene.joints.empty()) {
+        ojson joints = ojson::array();
+        for (const SceneJoint& sj : scene.joints) {
+            ojson o = ojson::object();
+            o["type"] = "revolute";
+            o["body_a"] = sj.body_a;
+            o["body_b"] = sj.body_b;
+            o["anchor"] = vec(sj.def.anchor);
+            o["collide_connected"] = sj.def.collide_connected;
+            if (std::isfinite(sj.def.break_force)) // infinite (never breaks): the default
+                o["break_force"] = sj.def.break_force;
+            joints.push_back(std::move(o));
+        }
+        j["joints"] = std::move(joints);
+    }
     return j.dump(indent);
 }
 
