@@ -210,7 +210,8 @@ class CommittedSrs(unittest.TestCase):
                 g = json.load(fh)
         for key in ("items", "uses", "ref_by", "seed_ref_by", "disagreements", "errata"):
             self.assertIn(key, g)
-        self.assertEqual(g["ref_by"]["DD8"], ["IM3"])
+        # Ref. By is computed from `uses`: IM3 and the distance constraint DD20 use DD8.
+        self.assertEqual(g["ref_by"]["DD8"], ["DD20", "IM3"])
 
 
 if __name__ == "__main__":
