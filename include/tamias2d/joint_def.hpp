@@ -4,6 +4,7 @@
 #pragma once
 
 #include <limits>
+#include <optional>
 
 #include "tamias2d/handles.hpp"
 #include "tamias2d/vec2.hpp"
@@ -23,6 +24,24 @@ struct RevoluteJointDef {
     /// N, > 0: the joint breaks (is destroyed, and listed by World::broken_joints) after a
     /// step in which the force it carried, |reaction force|, exceeded this. Infinite: never.
     double break_force = std::numeric_limits<double>::infinity();
+};
+
+/// \srs{DD20} A distance joint: two anchor points, one on each body, kept at a set distance
+/// by a rigid rod (the default) or by a spring-damper (a rope bridge's planks, a car's
+/// suspension seen along one axis, a soft link).
+struct DistanceJointDef {
+    BodyId body_a;    ///< the first body
+    BodyId body_b;    ///< the second body; not body_a
+    Vec2d anchor_a{}; ///< m, world frame: the anchor on body_a, fixed in it at creation
+    Vec2d anchor_b{}; ///< m, world frame: the anchor on body_b, fixed in it at creation
+    /// m, > 0: the rest length. Unset: the anchors' distance at creation (which must be > 0).
+    std::optional<double> length{};
+    /// Hz, >= 0: 0 (the default) makes the rod rigid (IM6's soft bias only); above 0 the
+    /// distance is held by a spring of this natural frequency for the joint's effective mass.
+    double hertz = 0.0;
+    double damping_ratio = 0.0;     ///< >= 0: the spring's damping ratio (1: critically damped)
+    bool collide_connected = false; ///< as RevoluteJointDef::collide_connected
+    double break_force = std::numeric_limits<double>::infinity(); ///< N, > 0, as for revolute
 };
 
 } // namespace tamias2d

@@ -123,6 +123,10 @@ class World {
     /// body twice, two bodies of which neither is dynamic, a non-finite anchor or a break force
     /// that is not > 0. Unless collide_connected, the two bodies' contacts are removed.
     JointId create_joint(const RevoluteJointDef& def);
+    /// \srs{DD20} Holds the two anchors at a distance (see DistanceJointDef) and wakes both
+    /// bodies. Throws as the revolute overload does, and ValidationError (DCX_joint) for a
+    /// length, hertz or damping ratio out of range.
+    JointId create_joint(const DistanceJointDef& def);
     /// Removes the joint and wakes its bodies. Destroying a body destroys its joints.
     void destroy_joint(JointId joint);
     bool is_valid(JointId joint) const; ///< whether the handle names a joint that exists

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "tamias2d/errors.hpp"
 #include "tamias2d/geometry/shape_factory.hpp"
@@ -77,16 +78,40 @@ void validate(const ShapeDef& def) {
     validate(def.material);
 }
 
-void validate(const RevoluteJointDef& def, bool movable) {
-    if (def.body_a == def.body_b)
-        throw ValidationError("joint.body_b", double(def.body_b.index),
-                              "must be another body than body_a", "DCX_joint");
+namespace {
+void validate_joint_bodies(BodyId a, BodyId b, bool movable, double break_force) {
+    if (a == b)
+        throw ValidationError("joint.body_b", double(b.index), "must be another body than body_a",
+                              "DCX_joint");
     if (!movable)
-        throw ValidationError("joint.body_b", double(def.body_b.index),
+        throw ValidationError("joint.body_b", double(b.index),
                               "one of the two bodies must be dynamic", "DCX_joint");
+    if (!(break_force > 0.0))
+        throw ValidationError("joint.break_force", break_force, "must be > 0", "DCX_joint");
+}
+} // namespace
+
+void validate(const DistanceJointDef& def, bool movable) {
+    validate_joint_bodies(def.body_a, def.body_b, movable, def.break_force);
+    require_finite("joint.anchor_a", def.anchor_a);
+    require_finite("joint.anchor_b", def.anchor_b);
+    const Vec2d d = def.anchor_b - def.anchor_a;
+    const double length = def.length.value_or(std::sqrt(d.x * d.x + d.y * d.y));
+    require_finite("joint.length", length);
+    if (!(length > 0.0))
+        throw ValidationError("joint.length", length,
+                              "must be > 0 (given, or the anchors' distance)", "DCX_joint");
+    for (const auto& [field, v] : {std::pair{"joint.hertz", def.hertz},
+                                   std::pair{"joint.damping_ratio", def.damping_ratio}}) {
+        require_finite(field, v);
+        if (!(v >= 0.0))
+            throw ValidationError(field, v, "must be >= 0", "DCX_joint");
+    }
+}
+
+void validate(const RevoluteJointDef& def, bool movable) {
+    validate_joint_bodies(def.body_a, def.body_b, movable, def.break_force);
     require_finite("joint.anchor", def.anchor);
-    if (!(def.break_force > 0.0))
-        throw ValidationError("joint.break_force", def.break_force, "must be > 0", "DCX_joint");
 }
 
 void validate(const WorldDef& def) {

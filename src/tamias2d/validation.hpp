@@ -22,6 +22,9 @@ void validate(const WorldDef& def);
 /// DCX_joint: distinct bodies, one of them dynamic (`movable`), a finite anchor, a break force
 /// > 0. The handles are checked by the caller.
 void validate(const RevoluteJointDef& def, bool movable);
+/// DCX_joint for a distance joint: as above, and a rest length > 0 (given, or the anchors'
+/// distance), hertz and damping ratio >= 0.
+void validate(const DistanceJointDef& def, bool movable);
 /// DCX_dt: the time step is finite and > 0.
 void validate_time_step(double dt);
 /// DCI_m: a mass given for a dynamic body is > 0 (the SRS's m >= 0 would divide by zero in IM1).

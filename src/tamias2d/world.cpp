@@ -44,7 +44,7 @@ struct World::Impl {
         broken.clear();
         for (std::uint32_t i = 0; i < joints.joints.size(); ++i) {
             const Joint& j = joints.joints[i];
-            if (!j.alive || !(length(j.linear_impulse) * inv_h > j.break_force))
+            if (!j.alive || !(length(reaction_impulse(j)) * inv_h > j.break_force))
                 continue;
             broken.push_back(joints.id(i));
             bodies.wake(j.body_a);
@@ -167,6 +167,30 @@ JointId World::create_joint(const RevoluteJointDef& def) {
     return w.joints.id(i);
 }
 
+JointId World::create_joint(const DistanceJointDef& def) {
+    Impl& w = *impl_;
+    const Body& a = w.bodies.get(def.body_a);
+    const Body& b = w.bodies.get(def.body_b);
+    validate(def, a.type == BodyType::dynamic || b.type == BodyType::dynamic);
+    Joint j;
+    j.type = JointType::distance;
+    j.body_a = def.body_a.index;
+    j.body_b = def.body_b.index;
+    j.local_anchor_a = inv_transform_point(a.xf, def.anchor_a);
+    j.local_anchor_b = inv_transform_point(b.xf, def.anchor_b);
+    j.length = def.length.value_or(length(def.anchor_b - def.anchor_a));
+    j.hertz = def.hertz;
+    j.damping_ratio = def.damping_ratio;
+    j.collide_connected = def.collide_connected;
+    j.break_force = def.break_force;
+    const std::uint32_t i = w.joints.create(j);
+    if (!def.collide_connected)
+        w.contacts.destroy_between(j.body_a, j.body_b, w.bodies, w.shapes);
+    w.bodies.wake(j.body_a);
+    w.bodies.wake(j.body_b);
+    return w.joints.id(i);
+}
+
 void World::destroy_joint(JointId id) {
     Impl& w = *impl_;
     const Joint& j = w.joints.get(id);
@@ -180,7 +204,7 @@ bool World::is_valid(JointId id) const {
 }
 
 Vec2d World::joint_reaction_force(JointId id) const {
-    return impl_->joints.get(id).linear_impulse * impl_->inv_h;
+    return reaction_impulse(impl_->joints.get(id)) * impl_->inv_h;
 }
 
 std::span<const JointId> World::broken_joints() const {
@@ -595,10 +619,15 @@ std::uint64_t World::state_hash() const {
             hs(std::uint64_t(j.generation) << 1 | std::uint64_t(j.alive));
             if (!j.alive)
                 continue;
+            hs(std::uint64_t(j.type));
             hs(std::uint64_t(j.body_a) << 32 | j.body_b);
             hs(j.local_anchor_a);
             hs(j.local_anchor_b);
             hs(j.linear_impulse);
+            hs(j.length);
+            hs(j.hertz);
+            hs(j.damping_ratio);
+            hs(j.axial_impulse);
             hs(j.break_force);
             hs(std::uint64_t(j.collide_connected));
         }

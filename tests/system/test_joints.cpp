@@ -1,7 +1,7 @@
-// Revolute joints (LC3: DD19, IM6) in the engine, against independent oracles: the exact
-// large-amplitude pendulum period (complete elliptic integral, GSL), a GSL rk8pd solution of the
-// pendulum ODE, the closed-form tension at the bottom of the swing, and the conservation of
-// linear momentum by the joint's equal and opposite impulses (T2).
+// Revolute and distance joints (LC3: DD19, DD20, IM6) in the engine, against independent oracles:
+// the exact large-amplitude pendulum period (complete elliptic integral, GSL), a GSL rk8pd solution
+// of the pendulum ODE, the damped harmonic oscillator, the closed-form tension at the bottom of the
+// swing, and the conservation of linear momentum by the joint's equal and opposite impulses (T2).
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
@@ -240,6 +240,100 @@ BOOST_AUTO_TEST_CASE(joint_impulses_conserve_linear_momentum,
     BOOST_TEST(drift480 <= 1e-12);
     BOOST_TEST(gap240 <= 1e-4);
     BOOST_TEST(gap240 / gap480 >= 3.0);
+}
+
+/// A disc on a distance joint to a static anchor at the origin, no gravity, released at rest
+/// `stretch` beyond the rest length L = 1 m; its largest deviation, over 2 s, from `expected`.
+template <class F>
+double spring_error(int steps_per_second, double hertz, double zeta, double stretch, F expected) {
+    World world(WorldDef{.gravity = {0.0, 0.0}});
+    BodyDef anchor_def;
+    anchor_def.type = BodyType::static_body;
+    const BodyId anchor = world.create_body(anchor_def);
+    BodyDef bob_def;
+    bob_def.position = {1.0 + stretch, 0.0};
+    const BodyId bob = world.create_body(bob_def);
+    world.create_shape(bob, circle_shape(0.1));
+    world.create_joint(DistanceJointDef{.body_a = anchor,
+                                        .body_b = bob,
+                                        .anchor_a = {0.0, 0.0},
+                                        .anchor_b = bob_def.position,
+                                        .length = 1.0,
+                                        .hertz = hertz,
+                                        .damping_ratio = zeta});
+    double worst = 0.0;
+    for (int k = 1; k <= 2 * steps_per_second; ++k) {
+        world.step(1.0 / steps_per_second);
+        worst = std::max(
+            worst, std::abs(world.position(bob).x - 1.0 - expected(k * 1.0 / steps_per_second)));
+    }
+    return worst;
+}
+
+// Oracle: the damped harmonic oscillator. A distance joint with a spring of frequency f and
+// damping ratio zeta holds its body as x'' = -omega^2 x - 2 zeta omega x' (omega = 2 pi f, x
+// the stretch; the joint's effective mass is the body's, the anchor being its centre), whose
+// solution from rest at x0 is x0 e^(-zeta omega t) (cos omega_d t + zeta omega / omega_d
+// sin omega_d t), omega_d = omega sqrt(1 - zeta^2). The soft step integrates the spring
+// implicitly, first order: the error over 2 s halves with the step (ratio >= 1.8) and is below
+// 2 % of x0 at 1/480 s.
+BOOST_AUTO_TEST_CASE(distance_spring_is_a_damped_oscillator,
+                     *utf::label("DD20") * utf::label("IM6") * utf::label("LC3")) {
+    const double f = 2.0, zeta = 0.1, x0 = 0.2;
+    const double w = 2.0 * std::numbers::pi * f, wd = w * std::sqrt(1.0 - zeta * zeta);
+    const auto exact = [&](double t) {
+        return x0 * std::exp(-zeta * w * t) * (std::cos(wd * t) + zeta * w / wd * std::sin(wd * t));
+    };
+    const double e240 = spring_error(240, f, zeta, x0, exact);
+    const double e480 = spring_error(480, f, zeta, x0, exact);
+    BOOST_TEST_MESSAGE("spring: max deviation " << e240 << " m at 1/240 s, " << e480
+                                                << " m at 1/480 s");
+    BOOST_TEST(e480 <= 0.02 * x0);
+    BOOST_TEST(e240 / e480 >= 1.8);
+}
+
+// Oracle: the exact period of the simple pendulum, 4 sqrt(l / g) K(sin(theta0 / 2)) (GSL). A
+// rigid distance joint from the pivot to a disc's centre is a massless rod: the disc's own
+// turning is free, so the pendulum is a point mass. At 1/960 s the period is within 1e-4 of
+// the exact one from 90 degrees, and the error shrinks at least as first order does.
+BOOST_AUTO_TEST_CASE(distance_rod_pendulum_period,
+                     *utf::label("DD20") * utf::label("IM6") * utf::label("LC3")) {
+    const double theta0 = std::numbers::pi / 2.0;
+    const double T =
+        4.0 * std::sqrt(l / g) * gsl_sf_ellint_Kcomp(std::sin(theta0 / 2.0), GSL_PREC_DOUBLE);
+    std::vector<double> errors;
+    for (const int steps_per_second : {480, 960}) {
+        World world(WorldDef{.gravity = {0.0, -g}, .joint_hertz = 1e9});
+        BodyDef pivot_def;
+        pivot_def.type = BodyType::static_body;
+        const BodyId pivot = world.create_body(pivot_def);
+        BodyDef bob_def;
+        bob_def.position = {l, 0.0};
+        const BodyId bob = world.create_body(bob_def);
+        world.create_shape(bob, circle_shape(bob_radius));
+        world.create_joint(DistanceJointDef{
+            .body_a = pivot, .body_b = bob, .anchor_a = {0.0, 0.0}, .anchor_b = {l, 0.0}});
+        const double dt = 1.0 / steps_per_second;
+        double previous = theta0, first = 0.0, last = 0.0;
+        int crossings = 0;
+        for (int k = 1; k <= int(5.0 * T * steps_per_second); ++k) {
+            world.step(dt);
+            const Vec2d p = world.position(bob);
+            const double theta = std::atan2(p.x, -p.y);
+            if (previous < 0.0 && theta >= 0.0) {
+                const double t = (k - 1) * dt + dt * (-previous) / (theta - previous);
+                (crossings == 0 ? first : last) = t;
+                ++crossings;
+            }
+            previous = theta;
+        }
+        BOOST_TEST_REQUIRE(crossings == 5);
+        errors.push_back(std::abs((last - first) / 4.0 - T) / T);
+    }
+    BOOST_TEST_MESSAGE("rod pendulum: relative period error " << errors[0] << " at 1/480 s, "
+                                                              << errors[1] << " at 1/960 s");
+    BOOST_TEST(errors[1] <= 1e-4);
+    BOOST_TEST(errors[0] / errors[1] >= 1.8);
 }
 
 // Not an SRS check: a jointed pair's shapes do not collide unless asked (collide_connected).

@@ -375,27 +375,59 @@ BOOST_AUTO_TEST_CASE(invalid_joints_are_rejected, *utf::label("R4") * utf::label
     const BodyId ground2 = m.world.create_body(ground_def);
     const double nan = std::numeric_limits<double>::quiet_NaN();
     expect_rejected(
-        m.world, [&] { m.world.create_joint({.body_a = m.box, .body_b = m.box}); }, "body_b",
-        "DCX_joint");
+        m.world, [&] { m.world.create_joint(RevoluteJointDef{.body_a = m.box, .body_b = m.box}); },
+        "body_b", "DCX_joint");
     expect_rejected(
-        m.world, [&] { m.world.create_joint({.body_a = ground, .body_b = ground2}); }, "body_b",
-        "DCX_joint");
+        m.world,
+        [&] { m.world.create_joint(RevoluteJointDef{.body_a = ground, .body_b = ground2}); },
+        "body_b", "DCX_joint");
     expect_rejected(
         m.world,
         [&] {
-            m.world.create_joint({.body_a = ground, .body_b = m.box, .anchor = {nan, 0.0}});
+            m.world.create_joint(
+                RevoluteJointDef{.body_a = ground, .body_b = m.box, .anchor = {nan, 0.0}});
         },
         "anchor", "DCX_finite");
     for (const double f : {0.0, -1.0, nan}) {
         expect_rejected_value(
             m.world,
-            [&] { m.world.create_joint({.body_a = ground, .body_b = m.box, .break_force = f}); },
+            [&] {
+                m.world.create_joint(
+                    RevoluteJointDef{.body_a = ground, .body_b = m.box, .break_force = f});
+            },
             "break_force", "DCX_joint", f);
     }
     const auto before = snapshot(m.world);
-    BOOST_CHECK_THROW(m.world.create_joint({.body_a = ground, .body_b = BodyId{}}), InvalidHandle);
+    BOOST_CHECK_THROW(m.world.create_joint(RevoluteJointDef{.body_a = ground, .body_b = BodyId{}}),
+                      InvalidHandle);
     check_unchanged(before, m.world);
-    const JointId j = m.world.create_joint({.body_a = ground, .body_b = m.box});
+    // The distance joint's own fields: a rest length > 0 (given, or the anchors' distance),
+    // hertz and damping ratio >= 0.
+    expect_rejected_value(
+        m.world,
+        [&] {
+            m.world.create_joint(
+                DistanceJointDef{.body_a = ground, .body_b = m.box, .length = -1.0});
+        },
+        "length", "DCX_joint", -1.0);
+    expect_rejected(
+        m.world, [&] { m.world.create_joint(DistanceJointDef{.body_a = ground, .body_b = m.box}); },
+        "length", "DCX_joint"); // coincident anchors, no length given
+    expect_rejected_value(
+        m.world,
+        [&] {
+            m.world.create_joint(
+                DistanceJointDef{.body_a = ground, .body_b = m.box, .length = 1.0, .hertz = -2.0});
+        },
+        "hertz", "DCX_joint", -2.0);
+    expect_rejected_value(
+        m.world,
+        [&] {
+            m.world.create_joint(DistanceJointDef{
+                .body_a = ground, .body_b = m.box, .length = 1.0, .damping_ratio = nan});
+        },
+        "damping_ratio", "DCX_finite", nan);
+    const JointId j = m.world.create_joint(RevoluteJointDef{.body_a = ground, .body_b = m.box});
     BOOST_TEST(m.world.is_valid(j));
     m.world.destroy_body(m.box); // takes its joints with it
     BOOST_TEST(!m.world.is_valid(j));

@@ -8,7 +8,7 @@
 
 namespace tamias2d {
 
-enum class JointType : std::uint8_t { revolute };
+enum class JointType : std::uint8_t { revolute, distance };
 
 struct Joint {
     JointType type = JointType::revolute;
@@ -21,6 +21,11 @@ struct Joint {
     /// N s: the impulse accumulated over the last substep's iterations, the warm start of the
     /// next; over the substep length it is the reaction force (IM6).
     Vec2d linear_impulse{};
+    // Distance joints (DD20): rest length, spring (hertz 0: rigid), the impulse along the axis
+    // (N s, as linear_impulse) and the axis of the last solve (for the reaction force).
+    double length = 0.0, hertz = 0.0, damping_ratio = 0.0;
+    double axial_impulse = 0.0;
+    Vec2d axis{1.0, 0.0};
 
     // Set by the step's preparation (revolute_joint.hpp).
     std::uint32_t solver_a = 0, solver_b = 0; ///< solver bodies (0: immovable this step)
@@ -28,5 +33,11 @@ struct Joint {
     double angle_a = 0.0, angle_b = 0.0;      ///< rad, the bodies' angles at the step's start
     Vec2d center_offset{};                    ///< m, p_B - p_A at the step's start
 };
+
+/// The impulse (N s) the joint applied to body B in the last substep: over the substep's
+/// length, its reaction force.
+inline Vec2d reaction_impulse(const Joint& j) {
+    return j.type == JointType::distance ? j.axial_impulse * j.axis : j.linear_impulse;
+}
 
 } // namespace tamias2d

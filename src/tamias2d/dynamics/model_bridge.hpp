@@ -15,6 +15,7 @@
 #include "tamias2d/model/dd08_collision_impulse.hpp"
 #include "tamias2d/model/dd12_coefficient_of_restitution.hpp"
 #include "tamias2d/model/dd19_point_constraint.hpp"
+#include "tamias2d/model/dd20_distance_constraint.hpp"
 #include "tamias2d/model/im1_translational_motion.hpp"
 #include "tamias2d/model/im2_rotational_motion.hpp"
 #include "tamias2d/model/im3_collision_response.hpp"
@@ -194,6 +195,51 @@ inline void apply_pin_impulse(SolverBody& a, Vec2d r_a, SolverBody& b, Vec2d r_b
     m::im3::Velocities vb = velocities(b);
     m::dd19::apply(va, vb, inverse_inertia(a), inverse_inertia(b), typed<u::Length>(r_a),
                    typed<u::Length>(r_b), typed<u::Impulse>(P));
+    a.v = plain(va.v);
+    a.w = va.omega.value();
+    b.v = plain(vb.v);
+    b.w = vb.omega.value();
+}
+
+// DD20, the distance joint's axis, on one pair of solver bodies.
+
+/// DD20's axis of the anchors' separation d (m): its length and unit direction.
+inline void distance_axis(Vec2d d, double& length, Vec2d& n) {
+    const m::dd20::Axis a = m::dd20::axis(typed<u::Length>(d));
+    length = a.length.value();
+    n = {a.n.x, a.n.y};
+}
+/// DD20's position error |d| - L (m).
+inline double distance_position_error(double length, double rest_length) {
+    return m::dd20::position_error({u::from_value<u::Length>(length), {1.0, 0.0}},
+                                   u::from_value<u::Length>(rest_length))
+        .value();
+}
+/// DD20's velocity error along n (m s^-1), from the anchors' moment arms r x n.
+inline double axial_velocity_error(const SolverBody& a, double arm_a, const SolverBody& b,
+                                   double arm_b, Vec2d n) {
+    return m::dd20::velocity_error(velocities(a), u::from_value<u::Length>(arm_a), velocities(b),
+                                   u::from_value<u::Length>(arm_b), {n.x, n.y})
+        .value();
+}
+/// DD20's impulse along n (N s) in IM6's soft form.
+inline double axial_impulse(const SolverBody& a, double arm_a, const SolverBody& b, double arm_b,
+                            double rhs, double mass_scale, double impulse_scale,
+                            double accumulated) {
+    return m::dd20::impulse(inverse_inertia(a), inverse_inertia(b), u::from_value<u::Length>(arm_a),
+                            u::from_value<u::Length>(arm_b), u::from_value<u::Velocity>(rhs),
+                            u::from_value<u::Dimensionless>(mass_scale),
+                            u::from_value<u::Dimensionless>(impulse_scale),
+                            u::from_value<u::Impulse>(accumulated))
+        .value();
+}
+/// DD20: lambda n on b at its anchor, -lambda n on a.
+inline void apply_axial_impulse(SolverBody& a, double arm_a, SolverBody& b, double arm_b, Vec2d n,
+                                double lambda) {
+    m::im3::Velocities va = velocities(a);
+    m::im3::Velocities vb = velocities(b);
+    m::dd20::apply(va, vb, inverse_inertia(a), inverse_inertia(b), u::from_value<u::Length>(arm_a),
+                   u::from_value<u::Length>(arm_b), {n.x, n.y}, u::from_value<u::Impulse>(lambda));
     a.v = plain(va.v);
     a.w = va.omega.value();
     b.v = plain(vb.v);

@@ -1,45 +1,22 @@
 #include "tamias2d/dynamics/revolute_joint.hpp"
 
-#include "tamias2d/dynamics/body_store.hpp"
+#include "tamias2d/dynamics/joint_solver.hpp"
 #include "tamias2d/dynamics/model_bridge.hpp"
 
 namespace tamias2d {
-namespace {
-
-/// The pin's offset from the centre in the world frame, with the body turned by the rotation
-/// it has made so far in the step (dq), as the write-back will place it.
-Vec2d pin_offset(Vec2d frame, double angle, const SolverBody& b) {
-    return rotate(Rot::from_angle(angle + b.dq), frame);
-}
-
-} // namespace
-
-void prepare_revolute(Joint& j, const BodyStore& store,
-                      const std::vector<std::uint32_t>& solver_index) {
-    const Body& a = store.bodies[j.body_a];
-    const Body& b = store.bodies[j.body_b];
-    j.solver_a = solver_index[j.body_a];
-    j.solver_b = solver_index[j.body_b];
-    j.frame_a = j.local_anchor_a - a.local_center;
-    j.frame_b = j.local_anchor_b - b.local_center;
-    j.angle_a = a.angle;
-    j.angle_b = b.angle;
-    j.center_offset = b.center - a.center;
-}
-
 void warm_start_revolute(const Joint& j, std::span<SolverBody> bodies) {
     SolverBody& a = bodies[j.solver_a];
     SolverBody& b = bodies[j.solver_b];
-    bridge::apply_pin_impulse(a, pin_offset(j.frame_a, j.angle_a, a), b,
-                              pin_offset(j.frame_b, j.angle_b, b), j.linear_impulse);
+    bridge::apply_pin_impulse(a, anchor_offset(j.frame_a, j.angle_a, a), b,
+                              anchor_offset(j.frame_b, j.angle_b, b), j.linear_impulse);
 }
 
 void solve_revolute(Joint& j, std::span<SolverBody> bodies, const Softness& softness,
                     bool use_bias) {
     SolverBody& a = bodies[j.solver_a];
     SolverBody& b = bodies[j.solver_b];
-    const Vec2d r_a = pin_offset(j.frame_a, j.angle_a, a);
-    const Vec2d r_b = pin_offset(j.frame_b, j.angle_b, b);
+    const Vec2d r_a = anchor_offset(j.frame_a, j.angle_a, a);
+    const Vec2d r_b = anchor_offset(j.frame_b, j.angle_b, b);
     Vec2d rhs = bridge::pin_velocity_error(a, r_a, b, r_b);
     double mass_scale = 1.0, impulse_scale = 0.0;
     if (use_bias) {

@@ -1,11 +1,9 @@
 // The revolute joint in the soft step (internal): DD19's pin constraint, solved as IM6 states.
-// The step prepares each joint once, then per substep warm starts it, solves it with the soft
-// bias, and after the positions relaxes it without the bias, always before the contacts.
+// Per substep the step warm starts it, solves it with the soft bias, and after the positions
+// relaxes it without the bias, always before the contacts (joint_solver.hpp).
 #pragma once
 
-#include <cstdint>
 #include <span>
-#include <vector>
 
 #include "tamias2d/dynamics/joint.hpp"
 #include "tamias2d/dynamics/softness.hpp"
@@ -13,12 +11,6 @@
 
 namespace tamias2d {
 
-struct BodyStore;
-
-/// The joint's solver bodies, the pin's offsets from the centres (body frames), the bodies'
-/// angles and the centres' offset at the step's start.
-void prepare_revolute(Joint& j, const BodyStore& bodies,
-                      const std::vector<std::uint32_t>& solver_index);
 /// Re-applies the impulse of the previous substep (it carries the solution forward).
 void warm_start_revolute(const Joint& j, std::span<SolverBody> bodies);
 /// \srs{IM6} One iteration: with use_bias the soft solve that also pulls the pins together

@@ -5,10 +5,10 @@
 
 #include "tamias2d/dynamics/body_store.hpp"
 #include "tamias2d/dynamics/contact_manager.hpp"
+#include "tamias2d/dynamics/joint_solver.hpp"
 #include "tamias2d/dynamics/joint_store.hpp"
 #include "tamias2d/dynamics/model_bridge.hpp"
 #include "tamias2d/dynamics/restitution.hpp"
-#include "tamias2d/dynamics/revolute_joint.hpp"
 #include "tamias2d/dynamics/shape_store.hpp"
 #include "tamias2d/math/prefetch.hpp"
 
@@ -92,7 +92,7 @@ void StepSolver::integrate_velocities(double h) {
 void StepSolver::prepare_joints(JointStore& joints, const BodyStore& bodies) {
     for (Joint& j : joints.joints) {
         if (j.alive)
-            prepare_revolute(j, bodies, solver_index_);
+            prepare_joint(j, bodies, solver_index_);
     }
 }
 
@@ -149,7 +149,7 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
     integrate_velocities(h);
     for (const Joint& j : joints) {
         if (solved(j))
-            warm_start_revolute(j, solver_bodies_);
+            warm_start_joint(j, solver_bodies_);
     }
     // The manifolds are prepared straight into their packs, four lanes at once, in solve
     // order (a per-step array of prepared constraints cost a pass over ~300 bytes each).
@@ -200,13 +200,13 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
             integrate_velocities(h);
             for (const Joint& j : joints) {
                 if (solved(j))
-                    warm_start_revolute(j, solver_bodies_);
+                    warm_start_joint(j, solver_bodies_);
             }
             wide_solver_.warm_start(solver_bodies_);
         }
         for (Joint& j : joints) {
             if (solved(j))
-                solve_revolute(j, solver_bodies_, joint_softness, true);
+                solve_joint(j, solver_bodies_, joint_softness, h, true);
         }
         wide_solver_.solve(solver_bodies_, st, true);
         // IM1/IM2, position half with the new velocities (DD3, DD6).
@@ -217,7 +217,7 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
         }
         for (Joint& j : joints) {
             if (solved(j))
-                solve_revolute(j, solver_bodies_, joint_softness, false);
+                solve_joint(j, solver_bodies_, joint_softness, h, false);
         }
         wide_solver_.solve(solver_bodies_, st, false);
     }
