@@ -24,7 +24,7 @@ namespace tamias2d {
 namespace u = tamias2d::units;
 
 /// The engine's state and the step's pipeline over its stages (dynamics/): the bodies, the
-/// shapes with the broad phase, the contacts, the solver, sleeping.
+/// shapes with the broad phase, the contacts, the joints, the solver, sleeping.
 struct World::Impl {
     WorldDef def;
     double time = 0.0;
@@ -41,7 +41,6 @@ struct World::Impl {
 
     /// After the step: a joint whose reaction force exceeded its break force is destroyed.
     void break_joints() {
-        broken.clear();
         for (std::uint32_t i = 0; i < joints.joints.size(); ++i) {
             const Joint& j = joints.joints[i];
             if (!j.alive || !(length(reaction_impulse(j)) * inv_h > j.break_force))
@@ -223,6 +222,7 @@ void World::step(double dt) {
     validate_time_step(dt);
     Impl& w = *impl_;
     w.evaluate_loads();
+    w.broken.clear();
     w.contacts.begin_events.clear();
     w.contacts.end_events.clear();
     w.contacts.find_new(w.bodies, w.shapes, w.joints);
