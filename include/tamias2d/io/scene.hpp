@@ -77,13 +77,17 @@ struct SceneBody {
     bool generated = false; ///< made by a generator (then `source` is the generator's pointer)
 };
 
-/// One joint of a scene: a revolute joint (the library's joint kind) between two named bodies.
+/// One joint of a scene, between two named bodies.
 struct SceneJoint {
-    std::string body_a; ///< the name of its first body (BodyDef::name, unique in the scene)
-    std::string body_b; ///< the name of its second body
-    /// The joint's anchor, collide_connected and break_force; its handles are set by
-    /// build_world from the names.
-    RevoluteJointDef def;
+    /// The joint's kind: which of `revolute` and `distance` holds its definition.
+    enum class Kind : std::uint8_t { revolute, distance };
+    Kind kind = Kind::revolute; ///< the "type" key
+    std::string body_a;         ///< the name of its first body (BodyDef::name, unique)
+    std::string body_b;         ///< the name of its second body
+    /// The definition when kind is revolute; its handles are set by build_world from the names.
+    RevoluteJointDef revolute;
+    /// The definition when kind is distance; its handles are set by build_world from the names.
+    DistanceJointDef distance;
     std::string source; ///< the JSON pointer of its entry ("/joints/0"), for error messages
 };
 

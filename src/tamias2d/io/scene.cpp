@@ -528,31 +528,68 @@ void claim_name(Ctx& ctx, const std::string& name, const std::string& ptr) {
              format_rule);
 }
 
-/// A "joints" entry: {"type": "revolute", "body_a", "body_b", "anchor", "collide_connected",
-/// "break_force"}. The names are resolved, and the joint checked (DCX_joint), by validate_scene.
+/// A "joints" entry: {"type": "revolute", "body_a", "body_b", "anchor", ...} or {"type":
+/// "distance", "body_a", "body_b", "anchor_a", "anchor_b", "length", "hertz", "damping_ratio",
+/// ...}. The names are resolved, and the joint checked (DCX_joint), by validate_scene.
 SceneJoint parse_joint(Ctx& ctx, const ojson& v, const std::string& ptr) {
     require_object(ctx, v, ptr, "", "a joint object");
-    check_keys(ctx, v, ptr,
-               {"type", "body_a", "body_b", "anchor", "collide_connected", "break_force"},
-               "a joint");
     SceneJoint j;
     j.source = ptr;
     const std::string type =
         as_string(ctx, require_key(ctx, v, ptr, "type", "a joint"), child(ptr, "type"), "type");
-    if (type != "revolute")
+    bool collide = false;
+    double break_force = std::numeric_limits<double>::infinity();
+    if (type == "revolute") {
+        check_keys(ctx, v, ptr,
+                   {"type", "body_a", "body_b", "anchor", "collide_connected", "break_force"},
+                   "a revolute joint");
+        j.kind = SceneJoint::Kind::revolute;
+        j.revolute.anchor = as_vec2(ctx, require_key(ctx, v, ptr, "anchor", "a revolute joint"),
+                                    child(ptr, "anchor"), "anchor");
+    } else if (type == "distance") {
+        check_keys(ctx, v, ptr,
+                   {"type", "body_a", "body_b", "anchor_a", "anchor_b", "length", "hertz",
+                    "damping_ratio", "collide_connected", "break_force"},
+                   "a distance joint");
+        j.kind = SceneJoint::Kind::distance;
+        DistanceJointDef& d = j.distance;
+        d.anchor_a = as_vec2(ctx, require_key(ctx, v, ptr, "anchor_a", "a distance joint"),
+                             child(ptr, "anchor_a"), "anchor_a");
+        d.anchor_b = as_vec2(ctx, require_key(ctx, v, ptr, "anchor_b", "a distance joint"),
+                             child(ptr, "anchor_b"), "anchor_b");
+        if (const ojson* l = find(v, "length"))
+            d.length = as_number(ctx, *l, child(ptr, "length"), "length");
+        opt_number(ctx, v, ptr, "hertz", d.hertz);
+        opt_number(ctx, v, ptr, "damping_ratio", d.damping_ratio);
+    } else {
         fail(ctx, child(ptr, "type"), "type",
-             "unknown joint type '" + type + "'; expected \"revolute\"", format_rule);
+             "unknown joint type '" + type + "'; expected \"revolute\" or \"distance\"",
+             format_rule);
+    }
     j.body_a = as_string(ctx, require_key(ctx, v, ptr, "body_a", "a joint"), child(ptr, "body_a"),
                          "body_a");
     j.body_b = as_string(ctx, require_key(ctx, v, ptr, "body_b", "a joint"), child(ptr, "body_b"),
                          "body_b");
-    j.def.anchor =
-        as_vec2(ctx, require_key(ctx, v, ptr, "anchor", "a joint"), child(ptr, "anchor"), "anchor");
     if (const ojson* c = find(v, "collide_connected"))
-        j.def.collide_connected =
-            as_bool(ctx, *c, child(ptr, "collide_connected"), "collide_connected");
-    opt_number(ctx, v, ptr, "break_force", j.def.break_force);
+        collide = as_bool(ctx, *c, child(ptr, "collide_connected"), "collide_connected");
+    opt_number(ctx, v, ptr, "break_force", break_force);
+    j.revolute.collide_connected = j.distance.collide_connected = collide;
+    j.revolute.break_force = j.distance.break_force = break_force;
     return j;
+}
+
+/// Creates the scene joint in `world` with the bodies of its names.
+JointId create_scene_joint(World& world, const SceneJoint& j, BodyId a, BodyId b) {
+    if (j.kind == SceneJoint::Kind::distance) {
+        DistanceJointDef def = j.distance;
+        def.body_a = a;
+        def.body_b = b;
+        return world.create_joint(def);
+    }
+    RevoluteJointDef def = j.revolute;
+    def.body_a = a;
+    def.body_b = b;
+    return world.create_joint(def);
 }
 
 SceneBody parse_body(Ctx& ctx, const ojson& v, const std::string& ptr) {
@@ -1047,9 +1084,9 @@ void validate_scene(const Scene& scene, std::string_view origin_view) {
         }
     }
     for (const SceneJoint& j : scene.joints) {
-        RevoluteJointDef def = j.def;
+        BodyId ids[2];
         for (const auto& [key, name, id] :
-             {std::tuple{"body_a", &j.body_a, &def.body_a}, {"body_b", &j.body_b, &def.body_b}}) {
+             {std::tuple{"body_a", &j.body_a, &ids[0]}, {"body_b", &j.body_b, &ids[1]}}) {
             const auto it = by_name.find(*name);
             if (it == by_name.end())
                 fail(ctx, child(j.source, key), key, "no body is named '" + *name + "'",
@@ -1057,7 +1094,7 @@ void validate_scene(const Scene& scene, std::string_view origin_view) {
             *id = it->second;
         }
         try {
-            world->create_joint(def);
+            create_scene_joint(*world, j, ids[0], ids[1]);
         } catch (const ValidationError& e) {
             std::string field = e.field;
             if (field.starts_with("joint."))
@@ -1083,12 +1120,8 @@ std::vector<BodyId> build_world(const Scene& scene, World& world) {
     std::map<std::string, BodyId> by_name;
     for (std::size_t i = 0; i < scene.bodies.size(); ++i)
         by_name.emplace(scene.bodies[i].def.name, ids[i]);
-    for (const SceneJoint& j : scene.joints) {
-        RevoluteJointDef def = j.def;
-        def.body_a = by_name.at(j.body_a); // validate_scene found both names
-        def.body_b = by_name.at(j.body_b);
-        world.create_joint(def);
-    }
+    for (const SceneJoint& j : scene.joints) // validate_scene found both names
+        create_scene_joint(world, j, by_name.at(j.body_a), by_name.at(j.body_b));
     return ids;
 }
 
@@ -1240,13 +1273,26 @@ std::string scene_to_json(const Scene& scene, int indent) {
         ojson joints = ojson::array();
         for (const SceneJoint& sj : scene.joints) {
             ojson o = ojson::object();
-            o["type"] = "revolute";
+            const bool distance = sj.kind == SceneJoint::Kind::distance;
+            o["type"] = distance ? "distance" : "revolute";
             o["body_a"] = sj.body_a;
             o["body_b"] = sj.body_b;
-            o["anchor"] = vec(sj.def.anchor);
-            o["collide_connected"] = sj.def.collide_connected;
-            if (std::isfinite(sj.def.break_force)) // infinite (never breaks): the default
-                o["break_force"] = sj.def.break_force;
+            if (distance) {
+                o["anchor_a"] = vec(sj.distance.anchor_a);
+                o["anchor_b"] = vec(sj.distance.anchor_b);
+                if (sj.distance.length)
+                    o["length"] = *sj.distance.length;
+                o["hertz"] = sj.distance.hertz;
+                o["damping_ratio"] = sj.distance.damping_ratio;
+            } else {
+                o["anchor"] = vec(sj.revolute.anchor);
+            }
+            const bool collide =
+                distance ? sj.distance.collide_connected : sj.revolute.collide_connected;
+            const double break_force = distance ? sj.distance.break_force : sj.revolute.break_force;
+            o["collide_connected"] = collide;
+            if (std::isfinite(break_force)) // infinite (never breaks): the default
+                o["break_force"] = break_force;
             joints.push_back(std::move(o));
         }
         j["joints"] = std::move(joints);
