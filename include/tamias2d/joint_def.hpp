@@ -44,4 +44,17 @@ struct DistanceJointDef {
     double break_force = std::numeric_limits<double>::infinity(); ///< N, > 0, as for revolute
 };
 
+/// \srs{DD21} A target joint (a mouse joint): pulls the point of `body` under `target` (as
+/// it is at creation) towards the target as a spring-damper, with at most `max_force`. Move
+/// the target with World::set_joint_target to drag the body.
+struct TargetJointDef {
+    BodyId body;                ///< the dragged body (dynamic)
+    Vec2d target{};             ///< m, world frame: the target, and the grabbed point of body
+    double hertz = 5.0;         ///< Hz, > 0: the spring's natural frequency
+    double damping_ratio = 0.7; ///< >= 0: the spring's damping ratio
+    /// N, > 0: the largest force the joint applies (infinite: unbounded). A few times the
+    /// body's weight drags it firmly without flinging it through walls.
+    double max_force = std::numeric_limits<double>::infinity();
+};
+
 } // namespace tamias2d

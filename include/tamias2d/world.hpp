@@ -127,6 +127,14 @@ class World {
     /// bodies. Throws as the revolute overload does, and ValidationError (DCX_joint) for a
     /// length, hertz or damping ratio out of range.
     JointId create_joint(const DistanceJointDef& def);
+    /// \srs{DD21} Pulls a body's point towards a target (see TargetJointDef) and wakes it.
+    /// Throws InvalidHandle for a body that does not exist, ValidationError (DCX_joint) for a
+    /// body that is not dynamic, a non-finite target, hertz not > 0, a negative damping ratio
+    /// or a max force not > 0.
+    JointId create_joint(const TargetJointDef& def);
+    /// Moves a target joint's target (m, world frame) and wakes its body; throws
+    /// ValidationError for a non-finite target or a joint of another kind.
+    void set_joint_target(JointId joint, Vec2d target);
     /// Removes the joint and wakes its bodies. Destroying a body destroys its joints.
     void destroy_joint(JointId joint);
     bool is_valid(JointId joint) const; ///< whether the handle names a joint that exists

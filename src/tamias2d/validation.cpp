@@ -109,6 +109,22 @@ void validate(const DistanceJointDef& def, bool movable) {
     }
 }
 
+void validate(const TargetJointDef& def, bool dynamic) {
+    if (!dynamic)
+        throw ValidationError("joint.body", double(def.body.index), "must be a dynamic body",
+                              "DCX_joint");
+    require_finite("joint.target", def.target);
+    require_finite("joint.hertz", def.hertz);
+    if (!(def.hertz > 0.0))
+        throw ValidationError("joint.hertz", def.hertz, "must be > 0", "DCX_joint");
+    require_finite("joint.damping_ratio", def.damping_ratio);
+    if (!(def.damping_ratio >= 0.0))
+        throw ValidationError("joint.damping_ratio", def.damping_ratio, "must be >= 0",
+                              "DCX_joint");
+    if (!(def.max_force > 0.0))
+        throw ValidationError("joint.max_force", def.max_force, "must be > 0", "DCX_joint");
+}
+
 void validate(const RevoluteJointDef& def, bool movable) {
     validate_joint_bodies(def.body_a, def.body_b, movable, def.break_force);
     require_finite("joint.anchor", def.anchor);

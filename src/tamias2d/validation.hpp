@@ -25,6 +25,9 @@ void validate(const RevoluteJointDef& def, bool movable);
 /// DCX_joint for a distance joint: as above, and a rest length > 0 (given, or the anchors'
 /// distance), hertz and damping ratio >= 0.
 void validate(const DistanceJointDef& def, bool movable);
+/// DCX_joint for a target joint: a dynamic body, a finite target, hertz > 0, damping ratio
+/// >= 0, max force > 0.
+void validate(const TargetJointDef& def, bool dynamic);
 /// DCX_dt: the time step is finite and > 0.
 void validate_time_step(double dt);
 /// DCI_m: a mass given for a dynamic body is > 0 (the SRS's m >= 0 would divide by zero in IM1).

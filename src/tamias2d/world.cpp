@@ -190,6 +190,33 @@ JointId World::create_joint(const DistanceJointDef& def) {
     return w.joints.id(i);
 }
 
+JointId World::create_joint(const TargetJointDef& def) {
+    Impl& w = *impl_;
+    const Body& b = w.bodies.get(def.body);
+    validate(def, b.type == BodyType::dynamic);
+    Joint j;
+    j.type = JointType::target;
+    j.body_a = j.body_b = def.body.index;
+    j.local_anchor_a = j.local_anchor_b = inv_transform_point(b.xf, def.target);
+    j.target = def.target;
+    j.hertz = def.hertz;
+    j.damping_ratio = def.damping_ratio;
+    j.max_force = def.max_force;
+    j.collide_connected = true; // one body: nothing to filter
+    const std::uint32_t i = w.joints.create(j);
+    w.bodies.wake(j.body_b);
+    return w.joints.id(i);
+}
+
+void World::set_joint_target(JointId id, Vec2d target) {
+    Joint& j = impl_->joints.get(id);
+    require_finite("joint.target", target);
+    if (j.type != JointType::target)
+        throw ValidationError("joint", double(id.index), "must be a target joint", "DCX_joint");
+    j.target = target;
+    impl_->bodies.wake(j.body_b);
+}
+
 void World::destroy_joint(JointId id) {
     Impl& w = *impl_;
     const Joint& j = w.joints.get(id);
@@ -628,6 +655,8 @@ std::uint64_t World::state_hash() const {
             hs(j.hertz);
             hs(j.damping_ratio);
             hs(j.axial_impulse);
+            hs(j.target);
+            hs(j.max_force);
             hs(j.break_force);
             hs(std::uint64_t(j.collide_connected));
         }

@@ -427,11 +427,37 @@ BOOST_AUTO_TEST_CASE(invalid_joints_are_rejected, *utf::label("R4") * utf::label
                 .body_a = ground, .body_b = m.box, .length = 1.0, .damping_ratio = nan});
         },
         "damping_ratio", "DCX_finite", nan);
+    // The target joint's: a dynamic body, hertz > 0, max force > 0; its target moves only
+    // for a target joint, to a finite point.
+    expect_rejected(
+        m.world, [&] { m.world.create_joint(TargetJointDef{.body = ground}); }, "body",
+        "DCX_joint");
+    expect_rejected_value(
+        m.world, [&] { m.world.create_joint(TargetJointDef{.body = m.box, .hertz = 0.0}); },
+        "hertz", "DCX_joint", 0.0);
+    expect_rejected_value(
+        m.world, [&] { m.world.create_joint(TargetJointDef{.body = m.box, .max_force = -1.0}); },
+        "max_force", "DCX_joint", -1.0);
+    const JointId drag = m.world.create_joint(TargetJointDef{.body = m.box});
+    expect_rejected(
+        m.world,
+        [&] {
+            m.world.set_joint_target(drag, {nan, 0.0});
+        },
+        "target", "DCX_finite");
+    m.world.destroy_joint(drag);
     const JointId j = m.world.create_joint(RevoluteJointDef{.body_a = ground, .body_b = m.box});
     BOOST_TEST(m.world.is_valid(j));
     m.world.destroy_body(m.box); // takes its joints with it
     BOOST_TEST(!m.world.is_valid(j));
     BOOST_CHECK_THROW(m.world.destroy_joint(j), InvalidHandle);
+    const JointId pin = m.world.create_joint(RevoluteJointDef{.body_a = ground, .body_b = m.plate});
+    expect_rejected(
+        m.world,
+        [&] {
+            m.world.set_joint_target(pin, {1.0, 0.0});
+        },
+        "joint", "DCX_joint");
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -8,7 +8,7 @@
 
 namespace tamias2d {
 
-enum class JointType : std::uint8_t { revolute, distance };
+enum class JointType : std::uint8_t { revolute, distance, target };
 
 struct Joint {
     JointType type = JointType::revolute;
@@ -26,12 +26,16 @@ struct Joint {
     double length = 0.0, hertz = 0.0, damping_ratio = 0.0;
     double axial_impulse = 0.0;
     Vec2d axis{1.0, 0.0};
+    // Target joints (DD21): one body (body_a = body_b), the target, the spring, the force limit.
+    Vec2d target{};
+    double max_force = std::numeric_limits<double>::infinity();
 
     // Set by the step's preparation (revolute_joint.hpp).
     std::uint32_t solver_a = 0, solver_b = 0; ///< solver bodies (0: immovable this step)
     Vec2d frame_a{}, frame_b{};               ///< m, the pin from each centre, body frame
     double angle_a = 0.0, angle_b = 0.0;      ///< rad, the bodies' angles at the step's start
     Vec2d center_offset{};                    ///< m, p_B - p_A at the step's start
+    Vec2d center_b{};                         ///< m, p_B at the step's start
 };
 
 /// The impulse (N s) the joint applied to body B in the last substep: over the substep's

@@ -3,6 +3,7 @@
 #include "tamias2d/dynamics/body_store.hpp"
 #include "tamias2d/dynamics/distance_joint.hpp"
 #include "tamias2d/dynamics/revolute_joint.hpp"
+#include "tamias2d/dynamics/target_joint.hpp"
 
 namespace tamias2d {
 
@@ -17,6 +18,7 @@ void prepare_joint(Joint& j, const BodyStore& store,
     j.angle_a = a.angle;
     j.angle_b = b.angle;
     j.center_offset = b.center - a.center;
+    j.center_b = b.center;
 }
 
 void warm_start_joint(const Joint& j, std::span<SolverBody> bodies) {
@@ -26,6 +28,9 @@ void warm_start_joint(const Joint& j, std::span<SolverBody> bodies) {
         return;
     case JointType::distance:
         warm_start_distance(j, bodies);
+        return;
+    case JointType::target:
+        warm_start_target(j, bodies);
         return;
     }
 }
@@ -38,6 +43,9 @@ void solve_joint(Joint& j, std::span<SolverBody> bodies, const Softness& rigid, 
         return;
     case JointType::distance:
         solve_distance(j, bodies, rigid, h, use_bias);
+        return;
+    case JointType::target:
+        solve_target(j, bodies, h, use_bias);
         return;
     }
 }

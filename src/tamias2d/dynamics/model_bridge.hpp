@@ -16,6 +16,7 @@
 #include "tamias2d/model/dd12_coefficient_of_restitution.hpp"
 #include "tamias2d/model/dd19_point_constraint.hpp"
 #include "tamias2d/model/dd20_distance_constraint.hpp"
+#include "tamias2d/model/dd21_target_constraint.hpp"
 #include "tamias2d/model/im1_translational_motion.hpp"
 #include "tamias2d/model/im2_rotational_motion.hpp"
 #include "tamias2d/model/im3_collision_response.hpp"
@@ -244,6 +245,19 @@ inline void apply_axial_impulse(SolverBody& a, double arm_a, SolverBody& b, doub
     a.w = va.omega.value();
     b.v = plain(vb.v);
     b.w = vb.omega.value();
+}
+
+// DD21, the target joint.
+
+/// DD21's position error (m): the grabbed point (centre plus offset) minus the target.
+inline Vec2d target_position_error(Vec2d center, Vec2d r, Vec2d target) {
+    return plain(m::dd21::position_error(typed<u::Length>(center), typed<u::Length>(r),
+                                         typed<u::Length>(target)));
+}
+/// DD21's clamp of the accumulated impulse (N s) to max_impulse.
+inline Vec2d clamp_impulse(Vec2d accumulated, double max_impulse) {
+    return plain(
+        m::dd21::clamp(typed<u::Impulse>(accumulated), u::from_value<u::Impulse>(max_impulse)));
 }
 
 /// The three adapters the contact iteration calls, as one type it is instantiated with

@@ -1,0 +1,35 @@
+#include "tamias2d/dynamics/target_joint.hpp"
+
+#include "tamias2d/dynamics/joint_solver.hpp"
+#include "tamias2d/dynamics/model_bridge.hpp"
+#include "tamias2d/dynamics/softness.hpp"
+
+namespace tamias2d {
+
+// The target is DD19's pin with an immovable body A (DD21): a solver body of zero inverse mass
+// at rest stands for it, so that the pin's formulas serve unchanged.
+
+void warm_start_target(const Joint& j, std::span<SolverBody> bodies) {
+    SolverBody& b = bodies[j.solver_b];
+    SolverBody world{};
+    bridge::apply_pin_impulse(world, {}, b, anchor_offset(j.frame_b, j.angle_b, b),
+                              j.linear_impulse);
+}
+
+void solve_target(Joint& j, std::span<SolverBody> bodies, double h, bool use_bias) {
+    if (!use_bias)
+        return;
+    SolverBody& b = bodies[j.solver_b];
+    SolverBody world{};
+    const Vec2d r = anchor_offset(j.frame_b, j.angle_b, b);
+    const Softness soft = make_softness(j.hertz, j.damping_ratio, h);
+    const Vec2d c = bridge::target_position_error(j.center_b + b.dp, r, j.target);
+    const Vec2d rhs = bridge::pin_velocity_error(world, {}, b, r) + soft.bias_rate * c;
+    const Vec2d P = bridge::pin_impulse(world, {}, b, r, rhs, soft.mass_scale, soft.impulse_scale,
+                                        j.linear_impulse);
+    const Vec2d old = j.linear_impulse;
+    j.linear_impulse = bridge::clamp_impulse(old + P, j.max_force * h);
+    bridge::apply_pin_impulse(world, {}, b, r, j.linear_impulse - old);
+}
+
+} // namespace tamias2d

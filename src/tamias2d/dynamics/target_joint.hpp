@@ -1,0 +1,17 @@
+// The target joint in the soft step (internal): DD21, a spring-damper pulling a point of one
+// body towards a target with a bounded force (a drag with the mouse). Like the distance joint's
+// spring it is a force, so it acts in the biased iteration only.
+#pragma once
+
+#include <span>
+
+#include "tamias2d/dynamics/joint.hpp"
+#include "tamias2d/dynamics/solver_body.hpp"
+
+namespace tamias2d {
+
+void warm_start_target(const Joint& j, std::span<SolverBody> bodies);
+/// \srs{IM6} One iteration (joint_solver.hpp's solve_joint).
+void solve_target(Joint& j, std::span<SolverBody> bodies, double h, bool use_bias);
+
+} // namespace tamias2d
