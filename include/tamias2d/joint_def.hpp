@@ -24,6 +24,16 @@ struct RevoluteJointDef {
     /// N, > 0: the joint breaks (is destroyed, and listed by World::broken_joints) after a
     /// step in which the force it carried, |reaction force|, exceeded this. Infinite: never.
     double break_force = std::numeric_limits<double>::infinity();
+    /// \srs{DD22} Limits of the joint angle (B's turn against A since creation, rad, CCW
+    /// positive), lower <= upper: a door's hinge, an elbow.
+    bool enable_limit = false;
+    double lower_angle = 0.0; ///< rad
+    double upper_angle = 0.0; ///< rad
+    /// \srs{DD22} A motor driving the joint speed to motor_speed (rad s^-1) with at most
+    /// max_motor_torque (N m, >= 0): a wheel, a fan; with speed 0, joint friction.
+    bool enable_motor = false;
+    double motor_speed = 0.0;      ///< rad s^-1
+    double max_motor_torque = 0.0; ///< N m, >= 0
 };
 
 /// \srs{DD20} A distance joint: two anchor points, one on each body, kept at a set distance

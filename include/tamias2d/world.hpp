@@ -141,6 +141,15 @@ class World {
     /// \srs{IM6} N: the force the joint applied to body_b during the last substep of the last
     /// step (its impulse over the substep); the opposite force acted on body_a.
     Vec2d joint_reaction_force(JointId joint) const;
+    /// \srs{DD22} N m: the torque a revolute joint's motor and limits applied to body_b during
+    /// the last substep (the opposite acted on body_a); 0 for other joints.
+    double joint_reaction_torque(JointId joint) const;
+    /// \srs{DD22} rad: a revolute joint's angle, body_b's turn against body_a since the joint
+    /// was made (CCW positive, not wrapped); ValidationError for another kind of joint.
+    double joint_angle(JointId joint) const;
+    /// Sets a revolute joint's motor speed (rad s^-1, finite; the motor must be enabled to
+    /// act) and wakes its bodies: a car's throttle.
+    void set_joint_motor_speed(JointId joint, double speed);
     /// The joints that broke in the last step (reaction force above break_force): they no
     /// longer exist; their handles are listed so that a game can react.
     std::span<const JointId> broken_joints() const;

@@ -128,6 +128,15 @@ void validate(const TargetJointDef& def, bool dynamic) {
 void validate(const RevoluteJointDef& def, bool movable) {
     validate_joint_bodies(def.body_a, def.body_b, movable, def.break_force);
     require_finite("joint.anchor", def.anchor);
+    require_finite("joint.lower_angle", def.lower_angle);
+    require_finite("joint.upper_angle", def.upper_angle);
+    if (!(def.lower_angle <= def.upper_angle))
+        throw ValidationError("joint.upper_angle", def.upper_angle, "must be >= lower_angle",
+                              "DCX_joint");
+    require_finite("joint.motor_speed", def.motor_speed);
+    if (!(def.max_motor_torque >= 0.0))
+        throw ValidationError("joint.max_motor_torque", def.max_motor_torque, "must be >= 0",
+                              "DCX_joint");
 }
 
 void validate(const WorldDef& def) {

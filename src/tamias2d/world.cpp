@@ -158,6 +158,13 @@ JointId World::create_joint(const RevoluteJointDef& def) {
     j.local_anchor_b = inv_transform_point(b.xf, def.anchor);
     j.collide_connected = def.collide_connected;
     j.break_force = def.break_force;
+    j.reference_angle = b.angle - a.angle;
+    j.enable_limit = def.enable_limit;
+    j.lower_angle = def.lower_angle;
+    j.upper_angle = def.upper_angle;
+    j.enable_motor = def.enable_motor;
+    j.motor_speed = def.motor_speed;
+    j.max_motor_torque = def.max_motor_torque;
     const std::uint32_t i = w.joints.create(j);
     if (!def.collide_connected)
         w.contacts.destroy_between(j.body_a, j.body_b, w.bodies, w.shapes);
@@ -231,6 +238,28 @@ bool World::is_valid(JointId id) const {
 
 Vec2d World::joint_reaction_force(JointId id) const {
     return reaction_impulse(impl_->joints.get(id)) * impl_->inv_h;
+}
+
+double World::joint_reaction_torque(JointId id) const {
+    return reaction_angular_impulse(impl_->joints.get(id)) * impl_->inv_h;
+}
+
+double World::joint_angle(JointId id) const {
+    const Joint& j = impl_->joints.get(id);
+    if (j.type != JointType::revolute)
+        throw ValidationError("joint", double(id.index), "must be a revolute joint", "DCX_joint");
+    return bridge::joint_angle(impl_->bodies.bodies[j.body_a].angle,
+                               impl_->bodies.bodies[j.body_b].angle, j.reference_angle);
+}
+
+void World::set_joint_motor_speed(JointId id, double speed) {
+    Joint& j = impl_->joints.get(id);
+    require_finite("joint.motor_speed", speed);
+    if (j.type != JointType::revolute)
+        throw ValidationError("joint", double(id.index), "must be a revolute joint", "DCX_joint");
+    j.motor_speed = speed;
+    impl_->bodies.wake(j.body_a);
+    impl_->bodies.wake(j.body_b);
 }
 
 std::span<const JointId> World::broken_joints() const {
@@ -656,6 +685,15 @@ std::uint64_t World::state_hash() const {
             hs(j.damping_ratio);
             hs(j.axial_impulse);
             hs(j.target);
+            hs(j.reference_angle);
+            hs(std::uint64_t(j.enable_limit) << 1 | std::uint64_t(j.enable_motor));
+            hs(j.lower_angle);
+            hs(j.upper_angle);
+            hs(j.motor_speed);
+            hs(j.max_motor_torque);
+            hs(j.motor_impulse);
+            hs(j.lower_impulse);
+            hs(j.upper_impulse);
             hs(j.max_force);
             hs(j.break_force);
             hs(std::uint64_t(j.collide_connected));

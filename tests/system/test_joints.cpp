@@ -1,4 +1,5 @@
-// Revolute, distance and target joints (LC3: DD19, DD20, DD21, IM6) in the engine, against
+// Revolute (with motor and limits), distance and target joints (LC3: DD19-DD22, IM6) in the
+// engine, against
 // independent oracles: the exact large-amplitude pendulum period (complete elliptic integral, GSL),
 // a GSL rk8pd solution of the pendulum ODE, the damped harmonic oscillator, the closed-form tension
 // at the bottom of the swing, and the conservation of linear momentum by the joint's equal and
@@ -409,6 +410,78 @@ BOOST_AUTO_TEST_CASE(target_joint_pulls_with_at_most_its_max_force,
     }
     BOOST_TEST(reaction.x == F, boost::test_tools::tolerance(1e-12));
     BOOST_TEST(std::abs(reaction.y) <= 1e-15);
+}
+
+// Oracle: T4 with the motor's torque limit. A disc pinned at its centre to the ground (no
+// gravity), its motor asked for 10 rad/s with at most tau: the motor applies tau until the
+// speed is reached, so omega = tau t / I exactly per substep (the clamp), then omega = 10 rad/s
+// exactly; the reaction torque reads tau while accelerating.
+BOOST_AUTO_TEST_CASE(revolute_motor_spins_up_under_its_torque_limit,
+                     *utf::label("DD22") * utf::label("IM6") * utf::label("LC3")) {
+    World world(WorldDef{.gravity = {0.0, 0.0}});
+    BodyDef ground_def;
+    ground_def.type = BodyType::static_body;
+    const BodyId ground = world.create_body(ground_def);
+    const BodyId wheel = world.create_body(BodyDef{});
+    world.create_shape(wheel, circle_shape(0.5));
+    const double tau = 0.2, target = 10.0;
+    const JointId j = world.create_joint(RevoluteJointDef{.body_a = ground,
+                                                          .body_b = wheel,
+                                                          .anchor = {0.0, 0.0},
+                                                          .enable_motor = true,
+                                                          .motor_speed = target,
+                                                          .max_motor_torque = tau});
+    const double I = world.inertia(wheel), dt = 1.0 / 60.0;
+    for (int k = 1; k <= 600; ++k) {
+        world.step(dt);
+        const double expected = std::min(tau * k * dt / I, target);
+        BOOST_TEST_REQUIRE(world.angular_velocity(wheel) == expected,
+                           boost::test_tools::tolerance(1e-9));
+        if (tau * k * dt / I < target)
+            BOOST_TEST_REQUIRE(world.joint_reaction_torque(j) == tau,
+                               boost::test_tools::tolerance(1e-9));
+    }
+    BOOST_TEST(world.angular_velocity(wheel) == target, boost::test_tools::tolerance(1e-12));
+}
+
+// Oracle: the limits themselves (DD22). A bar pinned at one end, released horizontal under
+// gravity with limits [-30, +10] degrees, swings down onto the lower limit: the joint angle
+// never passes it by more than 0.01 rad, and the bar comes to rest on it (within 2e-3 rad,
+// the soft bias's sag under the bar's weight). The upper limit stops a bar thrown upwards.
+BOOST_AUTO_TEST_CASE(revolute_limits_hold_the_angle,
+                     *utf::label("DD22") * utf::label("IM6") * utf::label("LC3")) {
+    const double lower = -std::numbers::pi / 6.0, upper = std::numbers::pi / 18.0;
+    for (const double spin : {0.0, 20.0}) {
+        World world(WorldDef{.gravity = {0.0, -g}});
+        BodyDef ground_def;
+        ground_def.type = BodyType::static_body;
+        const BodyId ground = world.create_body(ground_def);
+        BodyDef bar_def;
+        bar_def.position = {0.5, 0.0};
+        bar_def.angular_velocity = spin;
+        bar_def.linear_velocity = {0.0, 0.5 * spin};
+        const BodyId bar = world.create_body(bar_def);
+        world.create_shape(bar, box_shape(1.0, 0.1));
+        const JointId j = world.create_joint(RevoluteJointDef{.body_a = ground,
+                                                              .body_b = bar,
+                                                              .anchor = {0.0, 0.0},
+                                                              .enable_limit = true,
+                                                              .lower_angle = lower,
+                                                              .upper_angle = upper});
+        double lowest = 0.0, highest = 0.0;
+        for (int k = 0; k < 600; ++k) {
+            world.step(1.0 / 60.0);
+            lowest = std::min(lowest, world.joint_angle(j));
+            highest = std::max(highest, world.joint_angle(j));
+        }
+        BOOST_TEST_CONTEXT("initial spin " << spin << " rad/s") {
+            BOOST_TEST(lowest >= lower - 0.01);
+            BOOST_TEST(highest <= upper + 0.01);
+            BOOST_TEST(std::abs(world.joint_angle(j) - lower) <= 2e-3);
+            if (spin > 0.0)
+                BOOST_TEST(highest >= upper - 0.01); // it reached the upper limit
+        }
+    }
 }
 
 // Not an SRS check: a jointed pair's shapes do not collide unless asked (collide_connected).

@@ -451,6 +451,21 @@ BOOST_AUTO_TEST_CASE(invalid_joints_are_rejected, *utf::label("R4") * utf::label
     m.world.destroy_body(m.box); // takes its joints with it
     BOOST_TEST(!m.world.is_valid(j));
     BOOST_CHECK_THROW(m.world.destroy_joint(j), InvalidHandle);
+    // A revolute joint's limits in order and its motor torque >= 0.
+    expect_rejected_value(
+        m.world,
+        [&] {
+            m.world.create_joint(RevoluteJointDef{
+                .body_a = ground, .body_b = m.plate, .lower_angle = 0.5, .upper_angle = -0.5});
+        },
+        "upper_angle", "DCX_joint", -0.5);
+    expect_rejected_value(
+        m.world,
+        [&] {
+            m.world.create_joint(
+                RevoluteJointDef{.body_a = ground, .body_b = m.plate, .max_motor_torque = -1.0});
+        },
+        "max_motor_torque", "DCX_joint", -1.0);
     const JointId pin = m.world.create_joint(RevoluteJointDef{.body_a = ground, .body_b = m.plate});
     expect_rejected(
         m.world,

@@ -26,6 +26,12 @@ struct Joint {
     double length = 0.0, hertz = 0.0, damping_ratio = 0.0;
     double axial_impulse = 0.0;
     Vec2d axis{1.0, 0.0};
+    // Revolute motor and limits (DD22): the reference angle phi_B - phi_A at creation, and
+    // the angular impulses (N m s) accumulated in the last substep.
+    double reference_angle = 0.0;
+    bool enable_limit = false, enable_motor = false;
+    double lower_angle = 0.0, upper_angle = 0.0, motor_speed = 0.0, max_motor_torque = 0.0;
+    double motor_impulse = 0.0, lower_impulse = 0.0, upper_impulse = 0.0;
     // Target joints (DD21): one body (body_a = body_b), the target, the spring, the force limit.
     Vec2d target{};
     double max_force = std::numeric_limits<double>::infinity();
@@ -37,6 +43,12 @@ struct Joint {
     Vec2d center_offset{};                    ///< m, p_B - p_A at the step's start
     Vec2d center_b{};                         ///< m, p_B at the step's start
 };
+
+/// The angular impulse (N m s) the joint's motor and limits applied to body B in the last
+/// substep: over the substep's length, its reaction torque.
+inline double reaction_angular_impulse(const Joint& j) {
+    return j.motor_impulse + j.lower_impulse - j.upper_impulse;
+}
 
 /// The impulse (N s) the joint applied to body B in the last substep: over the substep's
 /// length, its reaction force.

@@ -39,7 +39,7 @@ void solve_joint(Joint& j, std::span<SolverBody> bodies, const Softness& rigid, 
                  bool use_bias) {
     switch (j.type) {
     case JointType::revolute:
-        solve_revolute(j, bodies, rigid, use_bias);
+        solve_revolute(j, bodies, rigid, h, use_bias);
         return;
     case JointType::distance:
         solve_distance(j, bodies, rigid, h, use_bias);

@@ -17,6 +17,7 @@
 #include "tamias2d/model/dd19_point_constraint.hpp"
 #include "tamias2d/model/dd20_distance_constraint.hpp"
 #include "tamias2d/model/dd21_target_constraint.hpp"
+#include "tamias2d/model/dd22_angular_constraint.hpp"
 #include "tamias2d/model/im1_translational_motion.hpp"
 #include "tamias2d/model/im2_rotational_motion.hpp"
 #include "tamias2d/model/im3_collision_response.hpp"
@@ -258,6 +259,44 @@ inline Vec2d target_position_error(Vec2d center, Vec2d r, Vec2d target) {
 inline Vec2d clamp_impulse(Vec2d accumulated, double max_impulse) {
     return plain(
         m::dd21::clamp(typed<u::Impulse>(accumulated), u::from_value<u::Impulse>(max_impulse)));
+}
+
+// DD22, a revolute joint's motor and limits.
+
+/// DD22's joint angle (rad).
+inline double joint_angle(double phi_a, double phi_b, double reference) {
+    return m::dd22::joint_angle(u::from_value<u::Angle>(phi_a), u::from_value<u::Angle>(phi_b),
+                                u::from_value<u::Angle>(reference))
+        .value();
+}
+/// DD22's joint speed (rad s^-1).
+inline double joint_speed(const SolverBody& a, const SolverBody& b) {
+    return m::dd22::joint_speed(velocities(a), velocities(b)).value();
+}
+/// DD22's angular impulse (N m s) in IM6's soft form.
+inline double angular_impulse(const SolverBody& a, const SolverBody& b, double rhs,
+                              double mass_scale, double impulse_scale, double accumulated) {
+    return m::dd22::impulse(inverse_inertia(a), inverse_inertia(b),
+                            u::from_value<u::AngularVelocity>(rhs),
+                            u::from_value<u::Dimensionless>(mass_scale),
+                            u::from_value<u::Dimensionless>(impulse_scale),
+                            m::dd22::AngularImpulse::from_value(accumulated))
+        .value();
+}
+/// DD22's motor clamp to [-max, max] (N m s).
+inline double clamp_angular_impulse(double accumulated, double max) {
+    return m::dd22::clamp(m::dd22::AngularImpulse::from_value(accumulated),
+                          m::dd22::AngularImpulse::from_value(max))
+        .value();
+}
+/// DD22: +lambda on b, -lambda on a (N m s).
+inline void apply_angular_impulse(SolverBody& a, SolverBody& b, double lambda) {
+    m::im3::Velocities va = velocities(a);
+    m::im3::Velocities vb = velocities(b);
+    m::dd22::apply(va, vb, inverse_inertia(a), inverse_inertia(b),
+                   m::dd22::AngularImpulse::from_value(lambda));
+    a.w = va.omega.value();
+    b.w = vb.omega.value();
 }
 
 /// The three adapters the contact iteration calls, as one type it is instantiated with

@@ -15,7 +15,8 @@ namespace tamias2d {
 void warm_start_revolute(const Joint& j, std::span<SolverBody> bodies);
 /// \srs{IM6} One iteration: with use_bias the soft solve that also pulls the pins together
 /// (DD19's impulse with the soft bias), without it the rigid relax.
-void solve_revolute(Joint& j, std::span<SolverBody> bodies, const Softness& softness,
+/// The motor and limits (DD22) come first, then the pin: the pin, solved last, holds best.
+void solve_revolute(Joint& j, std::span<SolverBody> bodies, const Softness& softness, double h,
                     bool use_bias);
 
 } // namespace tamias2d

@@ -1,0 +1,46 @@
+#pragma once
+#include <algorithm>
+
+#include "tamias2d/model/dd08_collision_impulse.hpp"
+#include "tamias2d/model/im3_collision_response.hpp"
+#include "tamias2d/units/angle.hpp"
+
+namespace tamias2d::model::dd22 {
+using namespace tamias2d::units;
+using dd08::InverseInertia;
+using im3::Velocities;
+
+/// An angular impulse (N m s): a torque over a time.
+using AngularImpulse = decltype(Torque{} * Time{});
+
+/// \srs{DD22} The joint angle theta = (phi_B - phi_A) - theta_0.
+inline Angle joint_angle(Angle phi_A, Angle phi_B, Angle reference) {
+    return (phi_B - phi_A) - reference;
+}
+
+/// \srs{DD22} The joint speed theta' = omega_B - omega_A.
+inline AngularVelocity joint_speed(const Velocities& A, const Velocities& B) {
+    return B.omega - A.omega;
+}
+
+/// \srs{DD22} The angular impulse that changes the joint speed by -(rhs): -rhs / k, with
+/// k = 1/I_A + 1/I_B (IM6's soft form with mass_scale and impulse_scale as for DD19).
+inline AngularImpulse impulse(InverseInertia A, InverseInertia B, AngularVelocity rhs,
+                              Dimensionless mass_scale, Dimensionless impulse_scale,
+                              AngularImpulse accumulated) {
+    return -(mass_scale * (rhs / (A.inv_I + B.inv_I))) - impulse_scale * accumulated;
+}
+
+/// \srs{DD22} The motor's accumulation bounded by tau_max h: [-max, max].
+inline AngularImpulse clamp(AngularImpulse accumulated, AngularImpulse max) {
+    return std::clamp(accumulated, -max, max);
+}
+
+/// \srs{DD22} +Lambda on B, -Lambda on A (T2 for torques): omega changes by Lambda / I (T4).
+inline void apply(Velocities& A, Velocities& B, InverseInertia a, InverseInertia b,
+                  AngularImpulse lambda) {
+    A.omega -= a.inv_I * lambda;
+    B.omega += b.inv_I * lambda;
+}
+
+} // namespace tamias2d::model::dd22
