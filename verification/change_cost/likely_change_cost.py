@@ -6,7 +6,8 @@ Usage: likely_change_cost.py OUT_DIR [--repo DIR]
 A commit that makes a likely change says so in a trailer line "Likely-change: LC2". For each
 likely change with such commits this program sums, over those commits, the lines added and
 deleted in files of the library and its command (src/, include/, apps/) that existed before the
-commit: the existing code the change had to touch. New files, tests, verification programs,
+change's first commit: the existing code the change had to touch. New files (also when a later
+commit of the change edits them), tests, verification programs,
 documents and the SRS data are the change itself, not its cost. The check compares that sum
 with 10 % of the lines the same directories held before the change's first commit: NFR5's
 "10 % of the original development" read as a share of existing code (erratum E71), because
@@ -58,19 +59,22 @@ def measure(repo, label, trailer="Likely-change"):
         return None
     per_file = {}
     new_lines = 0
+    # Existing means existing before the change began: a file the change itself created stays
+    # new however many of its commits then edit it.
+    base = f"{commits[0]}^"
     for c in commits:
         parent = f"{c}^"
         for row in git(repo, "diff", "--numstat", parent, c, "--", *CODE_DIRS).splitlines():
             added, deleted, path = row.split("\t", 2)
             if added == "-":  # binary
                 continue
-            if existed(repo, parent, path):
+            if existed(repo, base, path):
                 a, d = per_file.get(path, (0, 0))
                 per_file[path] = (a + int(added), d + int(deleted))
             else:
                 new_lines += int(added)
-    base = code_lines(repo, f"{commits[0]}^")
-    return {"commits": commits, "per_file": per_file, "new_lines": new_lines, "base": base}
+    return {"commits": commits, "per_file": per_file, "new_lines": new_lines,
+            "base": code_lines(repo, base)}
 
 
 def main(argv):
