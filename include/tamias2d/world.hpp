@@ -132,6 +132,25 @@ class World {
     /// body that is not dynamic, a non-finite target, hertz not > 0, a negative damping ratio
     /// or a max force not > 0.
     JointId create_joint(const TargetJointDef& def);
+    /// \srs{DD23} Lets body_b slide along an axis fixed in body_a (see PrismaticJointDef) and
+    /// wakes both bodies. Throws as the revolute overload does, and ValidationError (DCX_joint)
+    /// for a zero or non-finite axis, limits lower > upper, a negative motor force or an
+    /// enabled spring without a frequency > 0.
+    JointId create_joint(const PrismaticJointDef& def);
+    /// \srs{DD24} Welds body_b to body_a (see WeldJointDef) and wakes both bodies. Throws as
+    /// the revolute overload does, and ValidationError (DCX_joint) for a negative frequency or
+    /// damping ratio.
+    JointId create_joint(const WeldJointDef& def);
+    /// \srs{DD25} Mounts the wheel body_b on the chassis body_a (see WheelJointDef) and wakes
+    /// both. Throws as the prismatic overload does.
+    JointId create_joint(const WheelJointDef& def);
+    /// \srs{DD26} Drives body_b's pose relative to body_a (see MotorJointDef) and wakes both.
+    /// Throws as the revolute overload does, and ValidationError (DCX_joint) for non-finite
+    /// offsets, a negative force or torque, or a correction factor outside [0, 1].
+    JointId create_joint(const MotorJointDef& def);
+    /// Moves a motor joint's target pose (m in body_a's frame, rad; finite) and wakes its
+    /// bodies; ValidationError for a joint of another kind.
+    void set_motor_joint_offsets(JointId joint, Vec2d linear_offset, double angular_offset);
     /// Moves a target joint's target (m, world frame) and wakes its body; throws
     /// ValidationError for a non-finite target or a joint of another kind.
     void set_joint_target(JointId joint, Vec2d target);
@@ -141,14 +160,20 @@ class World {
     /// \srs{IM6} N: the force the joint applied to body_b during the last substep of the last
     /// step (its impulse over the substep); the opposite force acted on body_a.
     Vec2d joint_reaction_force(JointId joint) const;
-    /// \srs{DD22} N m: the torque a revolute joint's motor and limits applied to body_b during
-    /// the last substep (the opposite acted on body_a); 0 for other joints.
+    /// \srs{DD22} N m: the torque the joint's angular parts applied to body_b during the last
+    /// substep (the opposite acted on body_a): a revolute joint's motor, limits and spring, a
+    /// wheel's motor, the angle a prismatic, weld or motor joint holds; 0 for distance and
+    /// target joints. (The linear force's moment is not included: it acts at the anchors.)
     double joint_reaction_torque(JointId joint) const;
-    /// \srs{DD22} rad: a revolute joint's angle, body_b's turn against body_a since the joint
-    /// was made (CCW positive, not wrapped); ValidationError for another kind of joint.
+    /// \srs{DD22} rad: body_b's turn against body_a since the joint was made (CCW positive, not
+    /// wrapped) of a revolute, prismatic, weld or wheel joint; ValidationError for another kind.
     double joint_angle(JointId joint) const;
-    /// Sets a revolute joint's motor speed (rad s^-1, finite; the motor must be enabled to
-    /// act) and wakes its bodies: a car's throttle.
+    /// \srs{DD23} m: a prismatic or wheel joint's translation, the anchors' separation along
+    /// the axis (0 at creation); ValidationError for another kind of joint.
+    double joint_translation(JointId joint) const;
+    /// Sets the motor speed of a revolute or wheel joint (rad s^-1) or a prismatic joint
+    /// (m s^-1), finite (the motor must be enabled to act), and wakes its bodies: a car's
+    /// throttle, an elevator's lever. ValidationError for another kind of joint.
     void set_joint_motor_speed(JointId joint, double speed);
     /// The joints that broke in the last step (reaction force above break_force): they no
     /// longer exist; their handles are listed so that a game can react.

@@ -89,6 +89,47 @@ void validate_joint_bodies(BodyId a, BodyId b, bool movable, double break_force)
     if (!(break_force > 0.0))
         throw ValidationError("joint.break_force", break_force, "must be > 0", "DCX_joint");
 }
+
+void non_negative(const char* field, double v) {
+    require_finite(field, v);
+    if (!(v >= 0.0))
+        throw ValidationError(field, v, "must be >= 0", "DCX_joint");
+}
+
+/// An enabled spring: hertz > 0 and damping ratio >= 0 (a disabled one's values are unused,
+/// but must still be numbers).
+void validate_spring(bool enabled, double hertz, double damping_ratio) {
+    require_finite("joint.hertz", hertz);
+    if (enabled && !(hertz > 0.0))
+        throw ValidationError("joint.hertz", hertz, "must be > 0 with the spring enabled",
+                              "DCX_joint");
+    non_negative("joint.hertz", hertz);
+    non_negative("joint.damping_ratio", damping_ratio);
+}
+
+/// Limits lower <= upper, both finite (named as the definition names them).
+void validate_limits(const char* lower_field, double lower, const char* upper_field, double upper) {
+    require_finite(lower_field, lower);
+    require_finite(upper_field, upper);
+    if (!(lower <= upper))
+        throw ValidationError(upper_field, upper, std::string("must be >= ") + (lower_field + 6),
+                              "DCX_joint");
+}
+
+/// A motor: finite speed, largest force or torque >= 0 (infinite: unbounded).
+void validate_motor(double speed, const char* max_field, double max) {
+    require_finite("joint.motor_speed", speed);
+    if (!(max >= 0.0))
+        throw ValidationError(max_field, max, "must be >= 0", "DCX_joint");
+}
+
+/// An axis: finite and of non-zero length (it is normalised).
+void validate_axis(Vec2d axis) {
+    require_finite("joint.axis", axis);
+    if (!(axis.x * axis.x + axis.y * axis.y > 0.0))
+        throw ValidationError("joint.axis", std::sqrt(axis.x * axis.x + axis.y * axis.y),
+                              "must have a non-zero length", "DCX_joint");
+}
 } // namespace
 
 void validate(const DistanceJointDef& def, bool movable) {
@@ -101,12 +142,12 @@ void validate(const DistanceJointDef& def, bool movable) {
     if (!(length > 0.0))
         throw ValidationError("joint.length", length,
                               "must be > 0 (given, or the anchors' distance)", "DCX_joint");
-    for (const auto& [field, v] : {std::pair{"joint.hertz", def.hertz},
-                                   std::pair{"joint.damping_ratio", def.damping_ratio}}) {
-        require_finite(field, v);
-        if (!(v >= 0.0))
-            throw ValidationError(field, v, "must be >= 0", "DCX_joint");
-    }
+    non_negative("joint.hertz", def.hertz);
+    non_negative("joint.damping_ratio", def.damping_ratio);
+    non_negative("joint.min_length", def.min_length);
+    if (!(def.max_length >= def.min_length)) // an infinite max_length: no upper bound
+        throw ValidationError("joint.max_length", def.max_length, "must be >= min_length",
+                              "DCX_joint");
 }
 
 void validate(const TargetJointDef& def, bool dynamic) {
@@ -128,14 +169,51 @@ void validate(const TargetJointDef& def, bool dynamic) {
 void validate(const RevoluteJointDef& def, bool movable) {
     validate_joint_bodies(def.body_a, def.body_b, movable, def.break_force);
     require_finite("joint.anchor", def.anchor);
-    require_finite("joint.lower_angle", def.lower_angle);
-    require_finite("joint.upper_angle", def.upper_angle);
-    if (!(def.lower_angle <= def.upper_angle))
-        throw ValidationError("joint.upper_angle", def.upper_angle, "must be >= lower_angle",
-                              "DCX_joint");
-    require_finite("joint.motor_speed", def.motor_speed);
-    if (!(def.max_motor_torque >= 0.0))
-        throw ValidationError("joint.max_motor_torque", def.max_motor_torque, "must be >= 0",
+    validate_limits("joint.lower_angle", def.lower_angle, "joint.upper_angle", def.upper_angle);
+    validate_motor(def.motor_speed, "joint.max_motor_torque", def.max_motor_torque);
+    validate_spring(def.enable_spring, def.hertz, def.damping_ratio);
+}
+
+void validate(const PrismaticJointDef& def, bool movable) {
+    validate_joint_bodies(def.body_a, def.body_b, movable, def.break_force);
+    require_finite("joint.anchor", def.anchor);
+    validate_axis(def.axis);
+    validate_limits("joint.lower_translation", def.lower_translation, "joint.upper_translation",
+                    def.upper_translation);
+    validate_motor(def.motor_speed, "joint.max_motor_force", def.max_motor_force);
+    validate_spring(def.enable_spring, def.hertz, def.damping_ratio);
+}
+
+void validate(const WeldJointDef& def, bool movable) {
+    validate_joint_bodies(def.body_a, def.body_b, movable, def.break_force);
+    require_finite("joint.anchor", def.anchor);
+    non_negative("joint.linear_hertz", def.linear_hertz);
+    non_negative("joint.linear_damping_ratio", def.linear_damping_ratio);
+    non_negative("joint.angular_hertz", def.angular_hertz);
+    non_negative("joint.angular_damping_ratio", def.angular_damping_ratio);
+}
+
+void validate(const WheelJointDef& def, bool movable) {
+    validate_joint_bodies(def.body_a, def.body_b, movable, def.break_force);
+    require_finite("joint.anchor", def.anchor);
+    validate_axis(def.axis);
+    validate_spring(def.enable_spring, def.hertz, def.damping_ratio);
+    validate_limits("joint.lower_translation", def.lower_translation, "joint.upper_translation",
+                    def.upper_translation);
+    validate_motor(def.motor_speed, "joint.max_motor_torque", def.max_motor_torque);
+}
+
+void validate(const MotorJointDef& def, bool movable) {
+    validate_joint_bodies(def.body_a, def.body_b, movable, def.break_force);
+    require_finite("joint.linear_offset", def.linear_offset);
+    require_finite("joint.angular_offset", def.angular_offset);
+    if (!(def.max_force >= 0.0))
+        throw ValidationError("joint.max_force", def.max_force, "must be >= 0", "DCX_joint");
+    if (!(def.max_torque >= 0.0))
+        throw ValidationError("joint.max_torque", def.max_torque, "must be >= 0", "DCX_joint");
+    require_finite("joint.correction_factor", def.correction_factor);
+    if (!(def.correction_factor >= 0.0 && def.correction_factor <= 1.0))
+        throw ValidationError("joint.correction_factor", def.correction_factor, "must be in [0, 1]",
                               "DCX_joint");
 }
 

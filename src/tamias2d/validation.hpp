@@ -28,6 +28,16 @@ void validate(const DistanceJointDef& def, bool movable);
 /// DCX_joint for a target joint: a dynamic body, a finite target, hertz > 0, damping ratio
 /// >= 0, max force > 0.
 void validate(const TargetJointDef& def, bool dynamic);
+/// DCX_joint for a prismatic joint: as for a revolute one, a non-zero finite axis, limits
+/// lower <= upper, a motor force >= 0, an enabled spring's hertz > 0.
+void validate(const PrismaticJointDef& def, bool movable);
+/// DCX_joint for a weld joint: as for a revolute one, frequencies and damping ratios >= 0.
+void validate(const WeldJointDef& def, bool movable);
+/// DCX_joint for a wheel joint: as for a prismatic one, with a motor torque >= 0.
+void validate(const WheelJointDef& def, bool movable);
+/// DCX_joint for a motor joint: finite offsets, max force and torque >= 0, correction factor
+/// in [0, 1].
+void validate(const MotorJointDef& def, bool movable);
 /// DCX_dt: the time step is finite and > 0.
 void validate_time_step(double dt);
 /// DCI_m: a mass given for a dynamic body is > 0 (the SRS's m >= 0 would divide by zero in IM1).

@@ -145,32 +145,57 @@ std::vector<ShapeId> World::shapes(BodyId id) const {
     return out;
 }
 
+namespace {
+
+/// Stores a joint whose fields are set, removes the contacts it filters, wakes its bodies.
+JointId add_joint(World::Impl& w, const Joint& j) {
+    const std::uint32_t i = w.joints.create(j);
+    if (!j.collide_connected)
+        w.contacts.destroy_between(j.body_a, j.body_b, w.bodies, w.shapes);
+    w.bodies.wake(j.body_a);
+    w.bodies.wake(j.body_b);
+    return w.joints.id(i);
+}
+
+/// A two-body joint's common fields: the bodies, one anchor fixed on both, the reference angle.
+Joint two_body_joint(JointType type, BodyId id_a, const Body& a, BodyId id_b, const Body& b,
+                     Vec2d anchor, bool collide_connected, double break_force) {
+    Joint j;
+    j.type = type;
+    j.body_a = id_a.index;
+    j.body_b = id_b.index;
+    j.local_anchor_a = inv_transform_point(a.xf, anchor);
+    j.local_anchor_b = inv_transform_point(b.xf, anchor);
+    j.collide_connected = collide_connected;
+    j.break_force = break_force;
+    j.reference_angle = b.angle - a.angle;
+    return j;
+}
+
+/// The joint's axis in body A's frame, normalised (validated non-zero).
+Vec2d local_axis(const Body& a, Vec2d axis) {
+    return inv_rotate(a.xf.q, normalize(axis));
+}
+
+} // namespace
+
 JointId World::create_joint(const RevoluteJointDef& def) {
     Impl& w = *impl_;
     const Body& a = w.bodies.get(def.body_a);
     const Body& b = w.bodies.get(def.body_b);
     validate(def, a.type == BodyType::dynamic || b.type == BodyType::dynamic);
-    Joint j;
-    j.type = JointType::revolute;
-    j.body_a = def.body_a.index;
-    j.body_b = def.body_b.index;
-    j.local_anchor_a = inv_transform_point(a.xf, def.anchor);
-    j.local_anchor_b = inv_transform_point(b.xf, def.anchor);
-    j.collide_connected = def.collide_connected;
-    j.break_force = def.break_force;
-    j.reference_angle = b.angle - a.angle;
+    Joint j = two_body_joint(JointType::revolute, def.body_a, a, def.body_b, b, def.anchor,
+                             def.collide_connected, def.break_force);
     j.enable_limit = def.enable_limit;
-    j.lower_angle = def.lower_angle;
-    j.upper_angle = def.upper_angle;
+    j.lower_limit = def.lower_angle;
+    j.upper_limit = def.upper_angle;
     j.enable_motor = def.enable_motor;
     j.motor_speed = def.motor_speed;
-    j.max_motor_torque = def.max_motor_torque;
-    const std::uint32_t i = w.joints.create(j);
-    if (!def.collide_connected)
-        w.contacts.destroy_between(j.body_a, j.body_b, w.bodies, w.shapes);
-    w.bodies.wake(j.body_a);
-    w.bodies.wake(j.body_b);
-    return w.joints.id(i);
+    j.max_motor = def.max_motor_torque;
+    j.enable_spring = def.enable_spring;
+    j.hertz = def.hertz;
+    j.damping_ratio = def.damping_ratio;
+    return add_joint(w, j);
 }
 
 JointId World::create_joint(const DistanceJointDef& def) {
@@ -187,14 +212,89 @@ JointId World::create_joint(const DistanceJointDef& def) {
     j.length = def.length.value_or(length(def.anchor_b - def.anchor_a));
     j.hertz = def.hertz;
     j.damping_ratio = def.damping_ratio;
+    j.enable_limit = def.enable_limit;
+    j.lower_limit = def.min_length;
+    j.upper_limit = def.max_length;
     j.collide_connected = def.collide_connected;
     j.break_force = def.break_force;
-    const std::uint32_t i = w.joints.create(j);
-    if (!def.collide_connected)
-        w.contacts.destroy_between(j.body_a, j.body_b, w.bodies, w.shapes);
-    w.bodies.wake(j.body_a);
-    w.bodies.wake(j.body_b);
-    return w.joints.id(i);
+    return add_joint(w, j);
+}
+
+JointId World::create_joint(const PrismaticJointDef& def) {
+    Impl& w = *impl_;
+    const Body& a = w.bodies.get(def.body_a);
+    const Body& b = w.bodies.get(def.body_b);
+    validate(def, a.type == BodyType::dynamic || b.type == BodyType::dynamic);
+    Joint j = two_body_joint(JointType::prismatic, def.body_a, a, def.body_b, b, def.anchor,
+                             def.collide_connected, def.break_force);
+    j.local_axis = local_axis(a, def.axis);
+    j.axis = normalize(def.axis);
+    j.enable_limit = def.enable_limit;
+    j.lower_limit = def.lower_translation;
+    j.upper_limit = def.upper_translation;
+    j.enable_motor = def.enable_motor;
+    j.motor_speed = def.motor_speed;
+    j.max_motor = def.max_motor_force;
+    j.enable_spring = def.enable_spring;
+    j.hertz = def.hertz;
+    j.damping_ratio = def.damping_ratio;
+    return add_joint(w, j);
+}
+
+JointId World::create_joint(const WeldJointDef& def) {
+    Impl& w = *impl_;
+    const Body& a = w.bodies.get(def.body_a);
+    const Body& b = w.bodies.get(def.body_b);
+    validate(def, a.type == BodyType::dynamic || b.type == BodyType::dynamic);
+    Joint j = two_body_joint(JointType::weld, def.body_a, a, def.body_b, b, def.anchor,
+                             def.collide_connected, def.break_force);
+    j.hertz = def.linear_hertz;
+    j.damping_ratio = def.linear_damping_ratio;
+    j.angular_hertz = def.angular_hertz;
+    j.angular_damping_ratio = def.angular_damping_ratio;
+    return add_joint(w, j);
+}
+
+JointId World::create_joint(const WheelJointDef& def) {
+    Impl& w = *impl_;
+    const Body& a = w.bodies.get(def.body_a);
+    const Body& b = w.bodies.get(def.body_b);
+    validate(def, a.type == BodyType::dynamic || b.type == BodyType::dynamic);
+    Joint j = two_body_joint(JointType::wheel, def.body_a, a, def.body_b, b, def.anchor,
+                             def.collide_connected, def.break_force);
+    j.local_axis = local_axis(a, def.axis);
+    j.axis = normalize(def.axis);
+    j.enable_spring = def.enable_spring;
+    j.hertz = def.hertz;
+    j.damping_ratio = def.damping_ratio;
+    j.enable_limit = def.enable_limit;
+    j.lower_limit = def.lower_translation;
+    j.upper_limit = def.upper_translation;
+    j.enable_motor = def.enable_motor;
+    j.motor_speed = def.motor_speed;
+    j.max_motor = def.max_motor_torque;
+    return add_joint(w, j);
+}
+
+JointId World::create_joint(const MotorJointDef& def) {
+    Impl& w = *impl_;
+    const Body& a = w.bodies.get(def.body_a);
+    const Body& b = w.bodies.get(def.body_b);
+    validate(def, a.type == BodyType::dynamic || b.type == BodyType::dynamic);
+    Joint j;
+    j.type = JointType::motor;
+    j.body_a = def.body_a.index;
+    j.body_b = def.body_b.index;
+    // DD26's pin: body_b's origin held at linear_offset in body_a's frame.
+    j.local_anchor_a = def.linear_offset;
+    j.local_anchor_b = {0.0, 0.0};
+    j.reference_angle = def.angular_offset;
+    j.max_force = def.max_force;
+    j.max_torque = def.max_torque;
+    j.correction_factor = def.correction_factor;
+    j.collide_connected = def.collide_connected;
+    j.break_force = def.break_force;
+    return add_joint(w, j);
 }
 
 JointId World::create_joint(const TargetJointDef& def) {
@@ -246,18 +346,46 @@ double World::joint_reaction_torque(JointId id) const {
 
 double World::joint_angle(JointId id) const {
     const Joint& j = impl_->joints.get(id);
-    if (j.type != JointType::revolute)
-        throw ValidationError("joint", double(id.index), "must be a revolute joint", "DCX_joint");
+    if (j.type == JointType::distance || j.type == JointType::target || j.type == JointType::motor)
+        throw ValidationError("joint", double(id.index),
+                              "must be a revolute, prismatic, weld or wheel joint", "DCX_joint");
     return bridge::joint_angle(impl_->bodies.bodies[j.body_a].angle,
                                impl_->bodies.bodies[j.body_b].angle, j.reference_angle);
+}
+
+double World::joint_translation(JointId id) const {
+    const Joint& j = impl_->joints.get(id);
+    if (j.type != JointType::prismatic && j.type != JointType::wheel)
+        throw ValidationError("joint", double(id.index), "must be a prismatic or wheel joint",
+                              "DCX_joint");
+    const Body& a = impl_->bodies.bodies[j.body_a];
+    const Body& b = impl_->bodies.bodies[j.body_b];
+    const Vec2d r_a = rotate(a.xf.q, j.local_anchor_a - a.local_center);
+    const Vec2d r_b = rotate(b.xf.q, j.local_anchor_b - b.local_center);
+    return bridge::line((b.center + r_b) - (a.center + r_a), r_a, r_b, rotate(a.xf.q, j.local_axis))
+        .translation;
 }
 
 void World::set_joint_motor_speed(JointId id, double speed) {
     Joint& j = impl_->joints.get(id);
     require_finite("joint.motor_speed", speed);
-    if (j.type != JointType::revolute)
-        throw ValidationError("joint", double(id.index), "must be a revolute joint", "DCX_joint");
+    if (j.type != JointType::revolute && j.type != JointType::prismatic &&
+        j.type != JointType::wheel)
+        throw ValidationError("joint", double(id.index),
+                              "must be a revolute, prismatic or wheel joint", "DCX_joint");
     j.motor_speed = speed;
+    impl_->bodies.wake(j.body_a);
+    impl_->bodies.wake(j.body_b);
+}
+
+void World::set_motor_joint_offsets(JointId id, Vec2d linear_offset, double angular_offset) {
+    Joint& j = impl_->joints.get(id);
+    require_finite("joint.linear_offset", linear_offset);
+    require_finite("joint.angular_offset", angular_offset);
+    if (j.type != JointType::motor)
+        throw ValidationError("joint", double(id.index), "must be a motor joint", "DCX_joint");
+    j.local_anchor_a = linear_offset;
+    j.reference_angle = angular_offset;
     impl_->bodies.wake(j.body_a);
     impl_->bodies.wake(j.body_b);
 }
@@ -687,14 +815,23 @@ std::uint64_t World::state_hash() const {
             hs(j.target);
             hs(j.reference_angle);
             hs(std::uint64_t(j.enable_limit) << 1 | std::uint64_t(j.enable_motor));
-            hs(j.lower_angle);
-            hs(j.upper_angle);
+            hs(j.lower_limit);
+            hs(j.upper_limit);
             hs(j.motor_speed);
-            hs(j.max_motor_torque);
+            hs(j.max_motor);
             hs(j.motor_impulse);
             hs(j.lower_impulse);
             hs(j.upper_impulse);
             hs(j.max_force);
+            hs(j.local_axis);
+            hs(std::uint64_t(j.enable_spring));
+            hs(j.spring_impulse);
+            hs(j.angular_impulse);
+            hs(j.perp_impulse);
+            hs(j.angular_hertz);
+            hs(j.angular_damping_ratio);
+            hs(j.max_torque);
+            hs(j.correction_factor);
             hs(j.break_force);
             hs(std::uint64_t(j.collide_connected));
         }

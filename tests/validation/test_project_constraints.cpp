@@ -475,4 +475,60 @@ BOOST_AUTO_TEST_CASE(invalid_joints_are_rejected, *utf::label("R4") * utf::label
         "joint", "DCX_joint");
 }
 
+// Oracle: DCX_joint (srs/data_constraints.yaml) for the prismatic, weld, wheel and motor
+// joints and the revolute spring and distance limits: each out-of-range field is named with the
+// constraint it breaks, and the world is left exactly as it was.
+BOOST_AUTO_TEST_CASE(invalid_joint_options_are_rejected,
+                     *utf::label("R4") * utf::label("DCX_joint")) {
+    MovingWorld m;
+    BodyDef ground_def;
+    ground_def.type = BodyType::static_body;
+    const BodyId ground = m.world.create_body(ground_def);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const auto reject = [&](auto def, const char* field, const char* label, double value) {
+        def.body_a = ground;
+        def.body_b = m.box;
+        expect_rejected_value(
+            m.world, [&] { m.world.create_joint(def); }, field, label, value);
+    };
+    reject(RevoluteJointDef{.enable_spring = true, .hertz = 0.0}, "hertz", "DCX_joint", 0.0);
+    reject(RevoluteJointDef{.damping_ratio = -1.0}, "damping_ratio", "DCX_joint", -1.0);
+    reject(DistanceJointDef{.length = 1.0, .min_length = -0.5}, "min_length", "DCX_joint", -0.5);
+    reject(DistanceJointDef{.length = 1.0, .min_length = 2.0, .max_length = 1.0}, "max_length",
+           "DCX_joint", 1.0);
+    reject(PrismaticJointDef{.axis = {0.0, 0.0}}, "axis", "DCX_joint", 0.0);
+    expect_rejected(
+        m.world,
+        [&] {
+            m.world.create_joint(
+                PrismaticJointDef{.body_a = ground, .body_b = m.box, .axis = {nan, 1.0}});
+        },
+        "axis", "DCX_finite");
+    reject(PrismaticJointDef{.lower_translation = 1.0, .upper_translation = 0.0},
+           "upper_translation", "DCX_joint", 0.0);
+    reject(PrismaticJointDef{.max_motor_force = -2.0}, "max_motor_force", "DCX_joint", -2.0);
+    reject(PrismaticJointDef{.enable_spring = true, .hertz = 0.0}, "hertz", "DCX_joint", 0.0);
+    reject(WeldJointDef{.linear_hertz = -1.0}, "linear_hertz", "DCX_joint", -1.0);
+    reject(WeldJointDef{.angular_damping_ratio = -0.1}, "angular_damping_ratio", "DCX_joint", -0.1);
+    reject(WheelJointDef{.hertz = 0.0}, "hertz", "DCX_joint", 0.0); // the spring is on by default
+    reject(WheelJointDef{.enable_limit = true, .lower_translation = 0.2, .upper_translation = -0.2},
+           "upper_translation", "DCX_joint", -0.2);
+    reject(WheelJointDef{.max_motor_torque = -1.0}, "max_motor_torque", "DCX_joint", -1.0);
+    reject(MotorJointDef{.max_force = -1.0}, "max_force", "DCX_joint", -1.0);
+    reject(MotorJointDef{.max_torque = -1.0}, "max_torque", "DCX_joint", -1.0);
+    reject(MotorJointDef{.correction_factor = 1.5}, "correction_factor", "DCX_joint", 1.5);
+    reject(MotorJointDef{.angular_offset = nan}, "angular_offset", "DCX_finite", nan);
+    // The kind-specific setters refuse other kinds of joint.
+    const JointId weld = m.world.create_joint(WeldJointDef{.body_a = ground, .body_b = m.box});
+    expect_rejected(
+        m.world, [&] { m.world.set_joint_motor_speed(weld, 1.0); }, "joint", "DCX_joint");
+    expect_rejected(
+        m.world,
+        [&] {
+            m.world.set_motor_joint_offsets(weld, {1.0, 0.0}, 0.0);
+        },
+        "joint", "DCX_joint");
+    BOOST_CHECK_THROW((void)m.world.joint_translation(weld), ValidationError);
+}
+
 BOOST_AUTO_TEST_SUITE_END()

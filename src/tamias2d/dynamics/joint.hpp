@@ -1,4 +1,6 @@
 // A joint as the world stores it (internal). Public access goes through World and JointId.
+// One record serves every kind; each kind's file (revolute_joint.cpp, ...) reads the fields
+// its definition (tamias2d/joint_def.hpp) sets.
 #pragma once
 
 #include <cstdint>
@@ -8,7 +10,7 @@
 
 namespace tamias2d {
 
-enum class JointType : std::uint8_t { revolute, distance, target };
+enum class JointType : std::uint8_t { revolute, distance, target, prismatic, weld, wheel, motor };
 
 struct Joint {
     JointType type = JointType::revolute;
@@ -21,22 +23,36 @@ struct Joint {
     /// N s: the impulse accumulated over the last substep's iterations, the warm start of the
     /// next; over the substep length it is the reaction force (IM6).
     Vec2d linear_impulse{};
-    // Distance joints (DD20): rest length, spring (hertz 0: rigid), the impulse along the axis
-    // (N s, as linear_impulse) and the axis of the last solve (for the reaction force).
+    // A spring (distance, target, revolute, prismatic, wheel; a weld's linear part): hertz 0
+    // is rigid (distance, weld) or no spring. A distance joint's rest length.
     double length = 0.0, hertz = 0.0, damping_ratio = 0.0;
+    bool enable_spring = false;
+    // The impulse along the axis (N s: a distance joint's rod or spring) and the axis of the
+    // last solve (for the reaction force); prismatic and wheel joints: the axis in A's frame.
     double axial_impulse = 0.0;
     Vec2d axis{1.0, 0.0};
-    // Revolute motor and limits (DD22): the reference angle phi_B - phi_A at creation, and
-    // the angular impulses (N m s) accumulated in the last substep.
+    Vec2d local_axis{1.0, 0.0};
+    // The reference angle phi_B - phi_A at creation (DD22, DD23, DD24; a motor joint's
+    // angular offset), and the angular impulses (N m s) accumulated in the last substep.
     double reference_angle = 0.0;
     bool enable_limit = false, enable_motor = false;
-    double lower_angle = 0.0, upper_angle = 0.0, motor_speed = 0.0, max_motor_torque = 0.0;
+    /// Limits: rad (revolute), m (prismatic and wheel translation, distance length).
+    double lower_limit = 0.0, upper_limit = 0.0;
+    /// Motor: rad s^-1 and N m (revolute, wheel), m s^-1 and N (prismatic).
+    double motor_speed = 0.0, max_motor = 0.0;
     double motor_impulse = 0.0, lower_impulse = 0.0, upper_impulse = 0.0;
+    double spring_impulse = 0.0;  ///< N s or N m s: a spring's along the axis or about z
+    double angular_impulse = 0.0; ///< N m s: the angle held (prismatic, weld, motor joint)
+    double perp_impulse = 0.0;    ///< N s: the line held (prismatic, wheel)
+    // A weld's angular spring (hertz 0: rigid).
+    double angular_hertz = 0.0, angular_damping_ratio = 0.0;
     // Target joints (DD21): one body (body_a = body_b), the target, the spring, the force limit.
+    // Motor joints (DD26): max_force, max_torque and the correction factor.
     Vec2d target{};
     double max_force = std::numeric_limits<double>::infinity();
+    double max_torque = 0.0, correction_factor = 0.0;
 
-    // Set by the step's preparation (revolute_joint.hpp).
+    // Set by the step's preparation (joint_solver.hpp).
     std::uint32_t solver_a = 0, solver_b = 0; ///< solver bodies (0: immovable this step)
     Vec2d frame_a{}, frame_b{};               ///< m, the pin from each centre, body frame
     double angle_a = 0.0, angle_b = 0.0;      ///< rad, the bodies' angles at the step's start
@@ -44,16 +60,44 @@ struct Joint {
     Vec2d center_b{};                         ///< m, p_B at the step's start
 };
 
-/// The angular impulse (N m s) the joint's motor and limits applied to body B in the last
-/// substep: over the substep's length, its reaction torque.
+/// The angular impulse (N m s) the joint's angular parts (motor, limits, spring, held angle)
+/// applied to body B in the last substep: over the substep's length, its reaction torque.
 inline double reaction_angular_impulse(const Joint& j) {
-    return j.motor_impulse + j.lower_impulse - j.upper_impulse;
+    switch (j.type) {
+    case JointType::revolute:
+        return j.motor_impulse + j.lower_impulse - j.upper_impulse + j.spring_impulse;
+    case JointType::prismatic:
+    case JointType::weld:
+    case JointType::motor:
+        return j.angular_impulse;
+    case JointType::wheel:
+        return j.motor_impulse;
+    case JointType::distance:
+    case JointType::target:
+        return 0.0;
+    }
+    return 0.0;
 }
 
 /// The impulse (N s) the joint applied to body B in the last substep: over the substep's
 /// length, its reaction force.
 inline Vec2d reaction_impulse(const Joint& j) {
-    return j.type == JointType::distance ? j.axial_impulse * j.axis : j.linear_impulse;
+    switch (j.type) {
+    case JointType::distance:
+        return (j.axial_impulse + j.lower_impulse - j.upper_impulse) * j.axis;
+    case JointType::prismatic:
+        return j.perp_impulse * left_perp(j.axis) +
+               (j.spring_impulse + j.motor_impulse + j.lower_impulse - j.upper_impulse) * j.axis;
+    case JointType::wheel:
+        return j.perp_impulse * left_perp(j.axis) +
+               (j.spring_impulse + j.lower_impulse - j.upper_impulse) * j.axis;
+    case JointType::revolute:
+    case JointType::target:
+    case JointType::weld:
+    case JointType::motor:
+        return j.linear_impulse;
+    }
+    return j.linear_impulse;
 }
 
 } // namespace tamias2d

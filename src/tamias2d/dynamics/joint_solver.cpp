@@ -1,9 +1,15 @@
 #include "tamias2d/dynamics/joint_solver.hpp"
 
+#include <algorithm>
+
 #include "tamias2d/dynamics/body_store.hpp"
 #include "tamias2d/dynamics/distance_joint.hpp"
+#include "tamias2d/dynamics/motor_joint.hpp"
+#include "tamias2d/dynamics/prismatic_joint.hpp"
 #include "tamias2d/dynamics/revolute_joint.hpp"
 #include "tamias2d/dynamics/target_joint.hpp"
+#include "tamias2d/dynamics/weld_joint.hpp"
+#include "tamias2d/dynamics/wheel_joint.hpp"
 
 namespace tamias2d {
 
@@ -21,17 +27,101 @@ void prepare_joint(Joint& j, const BodyStore& store,
     j.center_b = b.center;
 }
 
+LineFrame line_frame(const Joint& j, const SolverBody& a, const SolverBody& b) {
+    const Vec2d r_a = anchor_offset(j.frame_a, j.angle_a, a);
+    const Vec2d r_b = anchor_offset(j.frame_b, j.angle_b, b);
+    const Vec2d axis = rotate(Rot::from_angle(j.angle_a + a.dq), j.local_axis);
+    // The anchors' separation now: the centres have moved by dp since the step's start.
+    const Vec2d d = j.center_offset + (b.dp - a.dp) + (r_b - r_a);
+    return {r_a, r_b, axis, bridge::line(d, r_a, r_b, axis)};
+}
+
+void solve_pin(Joint& j, SolverBody& a, SolverBody& b, const Softness& softness, bool use_bias) {
+    const Vec2d r_a = anchor_offset(j.frame_a, j.angle_a, a);
+    const Vec2d r_b = anchor_offset(j.frame_b, j.angle_b, b);
+    Vec2d rhs = bridge::pin_velocity_error(a, r_a, b, r_b);
+    double mass_scale = 1.0, impulse_scale = 0.0;
+    if (use_bias) {
+        // The pins' separation now: the centres have moved by dp since the step's start.
+        const Vec2d c = bridge::pin_position_error(j.center_offset + (b.dp - a.dp), r_a, r_b);
+        rhs += softness.bias_rate * c;
+        mass_scale = softness.mass_scale;
+        impulse_scale = softness.impulse_scale;
+    }
+    const Vec2d P =
+        bridge::pin_impulse(a, r_a, b, r_b, rhs, mass_scale, impulse_scale, j.linear_impulse);
+    j.linear_impulse += P;
+    bridge::apply_pin_impulse(a, r_a, b, r_b, P);
+}
+
+void solve_angular_motor(Joint& j, SolverBody& a, SolverBody& b, double h) {
+    const double lambda = bridge::angular_impulse(a, b, bridge::joint_speed(a, b) - j.motor_speed,
+                                                  1.0, 0.0, j.motor_impulse);
+    const double updated = bridge::clamp_angular_impulse(j.motor_impulse + lambda, j.max_motor * h);
+    bridge::apply_angular_impulse(a, b, updated - j.motor_impulse);
+    j.motor_impulse = updated;
+}
+
+void solve_angular_limits(Joint& j, SolverBody& a, SolverBody& b, const Softness& softness,
+                          double h, bool use_bias) {
+    const double angle = current_joint_angle(j, a, b);
+    for (const bool lower : {true, false}) {
+        const double c = lower ? angle - j.lower_limit : j.upper_limit - angle;
+        const LimitTerms t = limit_terms(c, softness, h, use_bias);
+        // The upper bound's impulse is taken positive against the turn, then applied negated.
+        const double speed = lower ? bridge::joint_speed(a, b) : -bridge::joint_speed(a, b);
+        double& accumulated = lower ? j.lower_impulse : j.upper_impulse;
+        const double lambda = bridge::angular_impulse(a, b, speed + t.bias, t.mass_scale,
+                                                      t.impulse_scale, accumulated);
+        const double updated = std::max(accumulated + lambda, 0.0);
+        const double applied = updated - accumulated;
+        accumulated = updated;
+        bridge::apply_angular_impulse(a, b, lower ? applied : -applied);
+    }
+}
+
+void solve_axial_limits(Joint& j, SolverBody& a, SolverBody& b, double arm_a, double arm_b, Vec2d n,
+                        double value, const Softness& softness, double h, bool use_bias) {
+    for (const bool lower : {true, false}) {
+        const double c = lower ? value - j.lower_limit : j.upper_limit - value;
+        const LimitTerms t = limit_terms(c, softness, h, use_bias);
+        const double v = bridge::axial_velocity_error(a, arm_a, b, arm_b, n);
+        double& accumulated = lower ? j.lower_impulse : j.upper_impulse;
+        const double lambda = bridge::axial_impulse(a, arm_a, b, arm_b, (lower ? v : -v) + t.bias,
+                                                    t.mass_scale, t.impulse_scale, accumulated);
+        const double updated = std::max(accumulated + lambda, 0.0);
+        const double applied = updated - accumulated;
+        accumulated = updated;
+        bridge::apply_axial_impulse(a, arm_a, b, arm_b, n, lower ? applied : -applied);
+    }
+}
+
+void solve_axial_spring(Joint& j, SolverBody& a, SolverBody& b, double arm_a, double arm_b, Vec2d n,
+                        double value, double h) {
+    const Softness soft = make_softness(j.hertz, j.damping_ratio, h);
+    const double rhs = bridge::axial_velocity_error(a, arm_a, b, arm_b, n) + soft.bias_rate * value;
+    const double lambda = bridge::axial_impulse(a, arm_a, b, arm_b, rhs, soft.mass_scale,
+                                                soft.impulse_scale, j.spring_impulse);
+    j.spring_impulse += lambda;
+    bridge::apply_axial_impulse(a, arm_a, b, arm_b, n, lambda);
+}
+
 void warm_start_joint(const Joint& j, std::span<SolverBody> bodies) {
     switch (j.type) {
     case JointType::revolute:
-        warm_start_revolute(j, bodies);
-        return;
+        return warm_start_revolute(j, bodies);
     case JointType::distance:
-        warm_start_distance(j, bodies);
-        return;
+        return warm_start_distance(j, bodies);
     case JointType::target:
-        warm_start_target(j, bodies);
-        return;
+        return warm_start_target(j, bodies);
+    case JointType::prismatic:
+        return warm_start_prismatic(j, bodies);
+    case JointType::weld:
+        return warm_start_weld(j, bodies);
+    case JointType::wheel:
+        return warm_start_wheel(j, bodies);
+    case JointType::motor:
+        return warm_start_motor(j, bodies);
     }
 }
 
@@ -39,14 +129,19 @@ void solve_joint(Joint& j, std::span<SolverBody> bodies, const Softness& rigid, 
                  bool use_bias) {
     switch (j.type) {
     case JointType::revolute:
-        solve_revolute(j, bodies, rigid, h, use_bias);
-        return;
+        return solve_revolute(j, bodies, rigid, h, use_bias);
     case JointType::distance:
-        solve_distance(j, bodies, rigid, h, use_bias);
-        return;
+        return solve_distance(j, bodies, rigid, h, use_bias);
     case JointType::target:
-        solve_target(j, bodies, h, use_bias);
-        return;
+        return solve_target(j, bodies, h, use_bias);
+    case JointType::prismatic:
+        return solve_prismatic(j, bodies, rigid, h, use_bias);
+    case JointType::weld:
+        return solve_weld(j, bodies, rigid, h, use_bias);
+    case JointType::wheel:
+        return solve_wheel(j, bodies, rigid, h, use_bias);
+    case JointType::motor:
+        return solve_motor(j, bodies, h, use_bias);
     }
 }
 

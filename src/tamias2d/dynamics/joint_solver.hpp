@@ -1,6 +1,7 @@
 // The joints in the soft step (internal): what every kind shares (the step's preparation of a
-// joint's frames, the anchors as the bodies turn) and the dispatch to each kind's warm start
-// and iterations (revolute_joint.hpp, distance_joint.hpp).
+// joint's frames, the anchors as the bodies turn, the pin, the motor, the spring and the
+// limits that several kinds are built from) and the dispatch to each kind's warm start and
+// iterations (revolute_joint.hpp, distance_joint.hpp, ...).
 #pragma once
 
 #include <cstdint>
@@ -8,6 +9,7 @@
 #include <vector>
 
 #include "tamias2d/dynamics/joint.hpp"
+#include "tamias2d/dynamics/model_bridge.hpp"
 #include "tamias2d/dynamics/softness.hpp"
 #include "tamias2d/dynamics/solver_body.hpp"
 
@@ -25,6 +27,49 @@ void prepare_joint(Joint& j, const BodyStore& bodies,
 inline Vec2d anchor_offset(Vec2d frame, double angle, const SolverBody& b) {
     return rotate(Rot::from_angle(angle + b.dq), frame);
 }
+
+/// The joint angle (DD22) now: the bodies' angles at the step's start plus their turn since.
+inline double current_joint_angle(const Joint& j, const SolverBody& a, const SolverBody& b) {
+    return bridge::joint_angle(j.angle_a + a.dq, j.angle_b + b.dq, j.reference_angle);
+}
+
+/// A prismatic or wheel joint's line now (DD23): the anchors' offsets, the axis (fixed in
+/// body A, turned with it) and the translation, line error and moment arms along it.
+struct LineFrame {
+    Vec2d r_a, r_b, axis;
+    bridge::Line line;
+};
+LineFrame line_frame(const Joint& j, const SolverBody& a, const SolverBody& b);
+
+/// The terms of one one-sided limit at a distance c (>= 0 inside) from its bound: a bound
+/// still ahead is approached no faster than it closes within the substep (speculative: bias
+/// c / h); a bound passed is pulled back softly (IM6's bias), or rigidly in the relax.
+struct LimitTerms {
+    double bias = 0.0, mass_scale = 1.0, impulse_scale = 0.0;
+};
+inline LimitTerms limit_terms(double c, const Softness& softness, double h, bool use_bias) {
+    if (c > 0.0)
+        return {c / h, 1.0, 0.0};
+    if (use_bias)
+        return {softness.bias_rate * c, softness.mass_scale, softness.impulse_scale};
+    return {};
+}
+
+/// \srs{IM6} DD19's pin (revolute, weld): with use_bias the soft solve that also pulls the
+/// pins together, without it the rigid relax.
+void solve_pin(Joint& j, SolverBody& a, SolverBody& b, const Softness& softness, bool use_bias);
+/// DD22's motor on the relative turn, its accumulation bounded by max_motor h.
+void solve_angular_motor(Joint& j, SolverBody& a, SolverBody& b, double h);
+/// DD22's limits on the joint angle [lower_limit, upper_limit] (rad).
+void solve_angular_limits(Joint& j, SolverBody& a, SolverBody& b, const Softness& softness,
+                          double h, bool use_bias);
+/// DD20/DD23: limits [lower_limit, upper_limit] on a length along the axis n with the given moment
+/// arms.
+void solve_axial_limits(Joint& j, SolverBody& a, SolverBody& b, double arm_a, double arm_b, Vec2d n,
+                        double value, const Softness& softness, double h, bool use_bias);
+/// DD23: a spring along the axis n pulling `value` to 0 (soft solve only).
+void solve_axial_spring(Joint& j, SolverBody& a, SolverBody& b, double arm_a, double arm_b, Vec2d n,
+                        double value, double h);
 
 /// Re-applies the impulses of the previous substep (they carry the solution forward).
 void warm_start_joint(const Joint& j, std::span<SolverBody> bodies);

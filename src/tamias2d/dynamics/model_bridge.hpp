@@ -18,6 +18,7 @@
 #include "tamias2d/model/dd20_distance_constraint.hpp"
 #include "tamias2d/model/dd21_target_constraint.hpp"
 #include "tamias2d/model/dd22_angular_constraint.hpp"
+#include "tamias2d/model/dd23_line_constraint.hpp"
 #include "tamias2d/model/im1_translational_motion.hpp"
 #include "tamias2d/model/im2_rotational_motion.hpp"
 #include "tamias2d/model/im3_collision_response.hpp"
@@ -297,6 +298,40 @@ inline void apply_angular_impulse(SolverBody& a, SolverBody& b, double lambda) {
                    m::dd22::AngularImpulse::from_value(lambda));
     a.w = va.omega.value();
     b.w = vb.omega.value();
+}
+
+// DD23, the line of a prismatic or wheel joint.
+
+/// DD23's translation, line error and moment arms (m) of the anchors' separation d along the
+/// unit axis a (and its perpendicular), from the anchors' offsets r_a, r_b.
+struct Line {
+    double translation, perpendicular, arm_a, arm_b, perp_arm_a, perp_arm_b;
+};
+inline Line line(Vec2d d, Vec2d r_a, Vec2d r_b, Vec2d axis) {
+    const m::dd23::Line l = m::dd23::line(typed<u::Length>(d), typed<u::Length>(r_a),
+                                          typed<u::Length>(r_b), {axis.x, axis.y});
+    return {l.translation.value(), l.perpendicular.value(), l.arm_A.value(),
+            l.arm_B.value(),       l.perp_arm_A.value(),    l.perp_arm_B.value()};
+}
+/// DD23's line-and-angle impulses (N s, N m s) in IM6's soft form; accumulated and result as
+/// (linear, angular).
+inline std::pair<double, double> block_impulse(const SolverBody& a, const SolverBody& b,
+                                               double perp_arm_a, double perp_arm_b,
+                                               double rhs_perp, double rhs_angle, double mass_scale,
+                                               double impulse_scale, double acc_linear,
+                                               double acc_angular) {
+    const m::dd23::BlockImpulse P = m::dd23::block_impulse(
+        inverse_inertia(a), inverse_inertia(b), u::from_value<u::Length>(perp_arm_a),
+        u::from_value<u::Length>(perp_arm_b), u::from_value<u::Velocity>(rhs_perp),
+        u::from_value<u::AngularVelocity>(rhs_angle), u::from_value<u::Dimensionless>(mass_scale),
+        u::from_value<u::Dimensionless>(impulse_scale),
+        {u::from_value<u::Impulse>(acc_linear), m::dd22::AngularImpulse::from_value(acc_angular)});
+    return {P.linear.value(), P.angular.value()};
+}
+/// DD23's motor clamp to [-max, max] (N s).
+inline double clamp_axial_impulse(double accumulated, double max) {
+    return m::dd23::clamp(u::from_value<u::Impulse>(accumulated), u::from_value<u::Impulse>(max))
+        .value();
 }
 
 /// The three adapters the contact iteration calls, as one type it is instantiated with

@@ -11,11 +11,11 @@
 
 namespace tamias2d {
 
-/// Re-applies the impulse of the previous substep (it carries the solution forward).
+/// Re-applies the impulses of the previous substep (they carry the solution forward).
 void warm_start_revolute(const Joint& j, std::span<SolverBody> bodies);
 /// \srs{IM6} One iteration: with use_bias the soft solve that also pulls the pins together
-/// (DD19's impulse with the soft bias), without it the rigid relax.
-/// The motor and limits (DD22) come first, then the pin: the pin, solved last, holds best.
+/// (DD19's impulse with the soft bias), without it the rigid relax. The spring, motor and
+/// limits (DD22) come first, then the pin: the pin, solved last, holds best.
 void solve_revolute(Joint& j, std::span<SolverBody> bodies, const Softness& softness, double h,
                     bool use_bias);
 

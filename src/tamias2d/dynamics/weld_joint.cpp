@@ -1,0 +1,41 @@
+#include "tamias2d/dynamics/weld_joint.hpp"
+
+#include "tamias2d/dynamics/joint_solver.hpp"
+#include "tamias2d/dynamics/model_bridge.hpp"
+
+namespace tamias2d {
+
+void warm_start_weld(const Joint& j, std::span<SolverBody> bodies) {
+    SolverBody& a = bodies[j.solver_a];
+    SolverBody& b = bodies[j.solver_b];
+    bridge::apply_angular_impulse(a, b, j.angular_impulse);
+    bridge::apply_pin_impulse(a, anchor_offset(j.frame_a, j.angle_a, a), b,
+                              anchor_offset(j.frame_b, j.angle_b, b), j.linear_impulse);
+}
+
+void solve_weld(Joint& j, std::span<SolverBody> bodies, const Softness& rigid, double h,
+                bool use_bias) {
+    SolverBody& a = bodies[j.solver_a];
+    SolverBody& b = bodies[j.solver_b];
+    // A soft part is a spring (hertz > 0): its own softness, and no relax, which would undo it.
+    const bool soft_angle = j.angular_hertz > 0.0, soft_pin = j.hertz > 0.0;
+    if (use_bias || !soft_angle) {
+        const Softness s =
+            soft_angle ? make_softness(j.angular_hertz, j.angular_damping_ratio, h) : rigid;
+        double rhs = bridge::joint_speed(a, b);
+        double mass_scale = 1.0, impulse_scale = 0.0;
+        if (use_bias) {
+            rhs += s.bias_rate * current_joint_angle(j, a, b);
+            mass_scale = s.mass_scale;
+            impulse_scale = s.impulse_scale;
+        }
+        const double lambda =
+            bridge::angular_impulse(a, b, rhs, mass_scale, impulse_scale, j.angular_impulse);
+        j.angular_impulse += lambda;
+        bridge::apply_angular_impulse(a, b, lambda);
+    }
+    if (use_bias || !soft_pin)
+        solve_pin(j, a, b, soft_pin ? make_softness(j.hertz, j.damping_ratio, h) : rigid, use_bias);
+}
+
+} // namespace tamias2d

@@ -1,0 +1,19 @@
+// The wheel joint in the soft step (internal): DD23's line held, a suspension spring and limits
+// along the axis and DD22's motor on the wheel's turn, solved as IM6 states (joint_solver.hpp).
+#pragma once
+
+#include <span>
+
+#include "tamias2d/dynamics/joint.hpp"
+#include "tamias2d/dynamics/softness.hpp"
+#include "tamias2d/dynamics/solver_body.hpp"
+
+namespace tamias2d {
+
+/// Re-applies the impulses of the previous substep (they carry the solution forward).
+void warm_start_wheel(const Joint& j, std::span<SolverBody> bodies);
+/// \srs{IM6} One iteration (DD25): with use_bias the soft solve, without it the rigid relax.
+void solve_wheel(Joint& j, std::span<SolverBody> bodies, const Softness& rigid, double h,
+                 bool use_bias);
+
+} // namespace tamias2d

@@ -1,0 +1,87 @@
+// Motor joints (LC3: DD26, IM6) in the engine, against independent oracles: T1 and T4 with the
+// joint's force and torque limits (exact per substep while a limit is reached), and the target
+// pose itself, which the driven body must reach and hold.
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+#include <numbers>
+
+#include "system/system_support.hpp"
+
+namespace utf = boost::unit_test;
+using namespace tamias2d;
+using namespace tamias2d::system_test;
+
+BOOST_AUTO_TEST_SUITE(motor_joint)
+
+// Oracle: T1 and T4 at the limits. A box at rest, no gravity, driven towards an offset 5 m
+// away and 2 rad turned with at most F and tau: while the limits hold it is pushed with exactly
+// F and turned with exactly tau, so after n substeps of h its displacement is F h^2 n (n + 1)
+// / (2 m) and its spin tau n h / I.
+BOOST_AUTO_TEST_CASE(drives_with_its_force_and_torque_limits,
+                     *utf::label("DD26") * utf::label("IM6") * utf::label("LC3")) {
+    World world(WorldDef{.gravity = {0.0, 0.0}, .enable_sleep = false});
+    BodyDef ground_def;
+    ground_def.type = BodyType::static_body;
+    const BodyId ground = world.create_body(ground_def);
+    const BodyId box = world.create_body(BodyDef{});
+    world.create_shape(box, box_shape(0.5, 0.5));
+    const double m = world.mass(box), I = world.inertia(box), F = 2.0 * m, tau = 0.5 * I;
+    const JointId j = world.create_joint(MotorJointDef{.body_a = ground,
+                                                       .body_b = box,
+                                                       .linear_offset = {5.0, 0.0},
+                                                       .angular_offset = 2.0,
+                                                       .max_force = F,
+                                                       .max_torque = tau});
+    const int substeps = WorldDef{}.substeps;
+    const double dt = 1.0 / 60.0, h = dt / substeps;
+    for (int k = 1; k <= 20; ++k) {
+        world.step(dt);
+        const double n = double(k * substeps);
+        BOOST_TEST_REQUIRE(world.position(box).x == F * h * h * n * (n + 1.0) / (2.0 * m),
+                           boost::test_tools::tolerance(1e-9));
+        BOOST_TEST_REQUIRE(std::abs(world.position(box).y) <= 1e-12);
+        BOOST_TEST_REQUIRE(world.angular_velocity(box) == tau * n * h / I,
+                           boost::test_tools::tolerance(1e-9));
+        BOOST_TEST_REQUIRE(world.joint_reaction_force(j).x == F,
+                           boost::test_tools::tolerance(1e-9));
+        BOOST_TEST_REQUIRE(world.joint_reaction_torque(j) == tau,
+                           boost::test_tools::tolerance(1e-9));
+    }
+}
+
+// Oracle: the target pose. With limits that do not bind, each substep asks for the velocity
+// that removes the share c of the pose error, so the error decays geometrically, as (1 - c)
+// per substep: after 1 s (240 substeps, c = 0.3) the box sits on the target pose to 1e-9,
+// whatever pose the reference body has (here moved and turned).
+BOOST_AUTO_TEST_CASE(settles_on_the_target_pose,
+                     *utf::label("DD26") * utf::label("IM6") * utf::label("LC3")) {
+    World world(WorldDef{.gravity = {0.0, 0.0}, .enable_sleep = false});
+    BodyDef base_def;
+    base_def.type = BodyType::static_body;
+    base_def.position = {1.0, -2.0};
+    base_def.angle = 0.5;
+    const BodyId base = world.create_body(base_def);
+    const BodyId box = world.create_body(BodyDef{});
+    world.create_shape(box, box_shape(0.5, 0.5));
+    const Vec2d offset{3.0, 1.0};
+    world.create_joint(MotorJointDef{.body_a = base,
+                                     .body_b = box,
+                                     .linear_offset = offset,
+                                     .angular_offset = -1.0,
+                                     .max_force = 1e6,
+                                     .max_torque = 1e6});
+    for (int k = 0; k < 60; ++k)
+        world.step(1.0 / 60.0);
+    const Vec2d target{1.0 + std::cos(0.5) * offset.x - std::sin(0.5) * offset.y,
+                       -2.0 + std::sin(0.5) * offset.x + std::cos(0.5) * offset.y};
+    // The orientation is read wrapped to [0, 2 pi): its error is taken modulo a turn.
+    const double turn_error =
+        std::remainder(world.orientation(box) - (0.5 - 1.0), 2.0 * std::numbers::pi);
+    BOOST_TEST_MESSAGE("motor joint: pose error " << norm(world.position(box) - target) << " m, "
+                                                  << turn_error << " rad");
+    BOOST_TEST(norm(world.position(box) - target) <= 1e-9);
+    BOOST_TEST(std::abs(turn_error) <= 1e-9);
+}
+
+BOOST_AUTO_TEST_SUITE_END()

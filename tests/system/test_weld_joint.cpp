@@ -1,0 +1,89 @@
+// Weld joints (LC3: DD24, IM6) in the engine, against independent oracles: the statics of a
+// cantilever (the reaction force and torque that balance the weight) and the damped harmonic
+// oscillator (a soft weld's angle).
+#include <boost/test/unit_test.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+#include "system/damped_oscillator.hpp"
+#include "system/system_support.hpp"
+
+namespace utf = boost::unit_test;
+using namespace tamias2d;
+using namespace tamias2d::system_test;
+
+BOOST_AUTO_TEST_SUITE(weld_joint)
+
+// Oracle: statics. A 1 m beam welded at its left end to a static wall holds still under
+// gravity; the joint must then balance its weight at the anchor, force (0, m g), and the
+// weight's moment about the beam's centre, which the force at the anchor (0.5 m to the left)
+// does not: the angular reaction is m g 0.5 N m. The rigid weld lets the tip sag by the soft
+// joint's compliance only (below 1 mm).
+BOOST_AUTO_TEST_CASE(rigid_cantilever_balances_its_weight,
+                     *utf::label("DD24") * utf::label("IM6") * utf::label("LC3")) {
+    const double g = 9.81;
+    World world(WorldDef{.gravity = {0.0, -g}, .enable_sleep = false});
+    BodyDef wall_def;
+    wall_def.type = BodyType::static_body;
+    const BodyId wall = world.create_body(wall_def);
+    BodyDef beam_def;
+    beam_def.position = {0.5, 0.0};
+    const BodyId beam = world.create_body(beam_def);
+    world.create_shape(beam, box_shape(1.0, 0.1));
+    const JointId j =
+        world.create_joint(WeldJointDef{.body_a = wall, .body_b = beam, .anchor = {0.0, 0.0}});
+    for (int k = 0; k < 120; ++k)
+        world.step(1.0 / 60.0);
+    const double m = world.mass(beam);
+    const Vec2d F = world.joint_reaction_force(j);
+    BOOST_TEST(F.y == m * g, boost::test_tools::tolerance(1e-6));
+    BOOST_TEST(std::abs(F.x) <= 1e-9 * m * g);
+    BOOST_TEST(world.joint_reaction_torque(j) == 0.5 * m * g, boost::test_tools::tolerance(1e-6));
+    const double sag = std::abs(world.position(beam).y) + 0.5 * std::abs(world.joint_angle(j));
+    BOOST_TEST_MESSAGE("cantilever tip sag " << sag << " m");
+    BOOST_TEST(sag <= 1e-3);
+}
+
+/// A box welded at its centre to a static body with a soft angle, set turning at w0: its
+/// largest deviation over 2 s from the oscillator.
+double soft_angle_error(int steps_per_second, const DampedOscillator& osc, double w0) {
+    World world(WorldDef{.gravity = {0.0, 0.0}, .enable_sleep = false});
+    BodyDef ground_def;
+    ground_def.type = BodyType::static_body;
+    const BodyId ground = world.create_body(ground_def);
+    BodyDef box_def;
+    box_def.angular_velocity = w0;
+    const BodyId box = world.create_body(box_def);
+    world.create_shape(box, box_shape(0.8, 0.3));
+    const JointId j = world.create_joint(WeldJointDef{.body_a = ground,
+                                                      .body_b = box,
+                                                      .anchor = {0.0, 0.0},
+                                                      .angular_hertz = osc.hertz,
+                                                      .angular_damping_ratio = osc.zeta});
+    double worst = 0.0;
+    for (int k = 1; k <= 2 * steps_per_second; ++k) {
+        world.step(1.0 / steps_per_second);
+        const double t = k * 1.0 / steps_per_second;
+        worst = std::max(worst, std::abs(world.joint_angle(j) - osc.from_speed(w0, t)));
+    }
+    return worst;
+}
+
+// Oracle: the damped harmonic oscillator. With the anchor at the box's centre of mass and the
+// other body static, the rigid point holds the centre still and the soft angle is a torsional
+// spring of frequency f for the box's inertia: from theta = 0 at speed w0, theta(t) = w0 /
+// omega_d e^(-zeta omega t) sin(omega_d t). First order: the error halves with the step
+// (ratio >= 1.8) and is below 2 % of the amplitude w0 / omega at 1/480 s.
+BOOST_AUTO_TEST_CASE(soft_angle_is_a_damped_oscillator,
+                     *utf::label("DD24") * utf::label("IM6") * utf::label("LC3")) {
+    const DampedOscillator osc{1.5, 0.2};
+    const double w0 = 2.0;
+    const double e240 = soft_angle_error(240, osc, w0), e480 = soft_angle_error(480, osc, w0);
+    BOOST_TEST_MESSAGE("soft weld: max deviation " << e240 << " rad at 1/240 s, " << e480
+                                                   << " rad at 1/480 s");
+    BOOST_TEST(e480 <= 0.02 * w0 / osc.omega());
+    BOOST_TEST(e240 / e480 >= 1.8);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
