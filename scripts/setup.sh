@@ -3,7 +3,7 @@
 set -euo pipefail
 pkgs=(build-essential cmake ninja-build pkg-config clang-format
       libboost-dev libboost-test-dev nlohmann-json3-dev
-      libgsl-dev libchipmunk-dev libbox2d-dev libbenchmark-dev
+      libgsl-dev libeigen3-dev libchipmunk-dev libbox2d-dev libbenchmark-dev
       graphviz gcovr doxygen python3-yaml python3-matplotlib python3-jsonschema)
 missing=()
 for p in "${pkgs[@]}"; do
