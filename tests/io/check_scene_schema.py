@@ -54,6 +54,8 @@ SCHEMA_REJECTS = {
 
 # Malformed scenes left to the loader, and why a JSON Schema cannot detect them.
 LOADER_ONLY = {
+    "joint_zero_axis.json": "a prismatic joint's axis of zero length: a schema can bound each "
+    "component, not the vector's length",
     "joint_unknown_body.json": "a joint names a body that does not exist: a schema cannot "
     "relate a value to the names elsewhere in the document",
     "trailing_comma.json": "not JSON (syntax error): no schema runs; an editor's JSON parser "

@@ -15,6 +15,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
 
 #include "tamias2d/body_def.hpp"
@@ -79,15 +80,13 @@ struct SceneBody {
 
 /// One joint of a scene, between two named bodies.
 struct SceneJoint {
-    /// The joint's kind: which of `revolute` and `distance` holds its definition.
-    enum class Kind : std::uint8_t { revolute, distance };
-    Kind kind = Kind::revolute; ///< the "type" key
-    std::string body_a;         ///< the name of its first body (BodyDef::name, unique)
-    std::string body_b;         ///< the name of its second body
-    /// The definition when kind is revolute; its handles are set by build_world from the names.
-    RevoluteJointDef revolute;
-    /// The definition when kind is distance; its handles are set by build_world from the names.
-    DistanceJointDef distance;
+    /// The definition, of the kind the "type" key names ("revolute", "distance", "prismatic",
+    /// "weld", "wheel", "motor"); its body handles are set by build_world from the names.
+    using Definition = std::variant<RevoluteJointDef, DistanceJointDef, PrismaticJointDef,
+                                    WeldJointDef, WheelJointDef, MotorJointDef>;
+    Definition def;
+    std::string body_a; ///< the name of its first body (BodyDef::name, unique)
+    std::string body_b; ///< the name of its second body
     std::string source; ///< the JSON pointer of its entry ("/joints/0"), for error messages
 };
 

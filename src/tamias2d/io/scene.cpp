@@ -1,6 +1,7 @@
 #include "tamias2d/io/scene.hpp"
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <cstring>
@@ -9,7 +10,10 @@
 #include <limits>
 #include <sstream>
 #include <tuple>
+#include <type_traits>
 #include <utility>
+#include <variant>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -194,8 +198,9 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
 using Keys = std::initializer_list<std::string_view>;
 
 /// Rejects keys outside `allowed` (in document order), suggesting the nearest allowed key.
-void check_keys(const Ctx& ctx, const ojson& obj, const std::string& ptr, Keys allowed,
-                const std::string& what) {
+template <class Allowed>
+void check_keys_in(const Ctx& ctx, const ojson& obj, const std::string& ptr, const Allowed& allowed,
+                   const std::string& what) {
     for (const auto& [key, value] : obj.items()) {
         if (std::find(allowed.begin(), allowed.end(), key) != allowed.end())
             continue;
@@ -216,6 +221,10 @@ void check_keys(const Ctx& ctx, const ojson& obj, const std::string& ptr, Keys a
                  "; allowed: " + list,
              format_rule);
     }
+}
+void check_keys(const Ctx& ctx, const ojson& obj, const std::string& ptr, Keys allowed,
+                const std::string& what) {
+    check_keys_in(ctx, obj, ptr, allowed, what);
 }
 
 const ojson& require_object(const Ctx& ctx, const ojson& v, const std::string& ptr,
@@ -528,68 +537,149 @@ void claim_name(Ctx& ctx, const std::string& name, const std::string& ptr) {
              format_rule);
 }
 
-/// A "joints" entry: {"type": "revolute", "body_a", "body_b", "anchor", ...} or {"type":
-/// "distance", "body_a", "body_b", "anchor_a", "anchor_b", "length", "hertz", "damping_ratio",
-/// ...}. The names are resolved, and the joint checked (DCX_joint), by validate_scene.
+// A joint's keys are its definition's fields under the same names: one table per kind, walked
+// by the parser, the writer and the key check alike, so the three cannot disagree. A visitor is
+// called as v(key, member, required).
+
+template <class V> void joint_fields(RevoluteJointDef& d, V&& v) {
+    v("anchor", d.anchor, true);
+    v("enable_limit", d.enable_limit, false);
+    v("lower_angle", d.lower_angle, false);
+    v("upper_angle", d.upper_angle, false);
+    v("enable_motor", d.enable_motor, false);
+    v("motor_speed", d.motor_speed, false);
+    v("max_motor_torque", d.max_motor_torque, false);
+    v("enable_spring", d.enable_spring, false);
+    v("hertz", d.hertz, false);
+    v("damping_ratio", d.damping_ratio, false);
+}
+template <class V> void joint_fields(DistanceJointDef& d, V&& v) {
+    v("anchor_a", d.anchor_a, true);
+    v("anchor_b", d.anchor_b, true);
+    v("length", d.length, false);
+    v("hertz", d.hertz, false);
+    v("damping_ratio", d.damping_ratio, false);
+    v("enable_limit", d.enable_limit, false);
+    v("min_length", d.min_length, false);
+    v("max_length", d.max_length, false);
+}
+template <class V> void joint_fields(PrismaticJointDef& d, V&& v) {
+    v("anchor", d.anchor, true);
+    v("axis", d.axis, true);
+    v("enable_limit", d.enable_limit, false);
+    v("lower_translation", d.lower_translation, false);
+    v("upper_translation", d.upper_translation, false);
+    v("enable_motor", d.enable_motor, false);
+    v("motor_speed", d.motor_speed, false);
+    v("max_motor_force", d.max_motor_force, false);
+    v("enable_spring", d.enable_spring, false);
+    v("hertz", d.hertz, false);
+    v("damping_ratio", d.damping_ratio, false);
+}
+template <class V> void joint_fields(WeldJointDef& d, V&& v) {
+    v("anchor", d.anchor, true);
+    v("linear_hertz", d.linear_hertz, false);
+    v("linear_damping_ratio", d.linear_damping_ratio, false);
+    v("angular_hertz", d.angular_hertz, false);
+    v("angular_damping_ratio", d.angular_damping_ratio, false);
+}
+template <class V> void joint_fields(WheelJointDef& d, V&& v) {
+    v("anchor", d.anchor, true);
+    v("axis", d.axis, true);
+    v("enable_spring", d.enable_spring, false);
+    v("hertz", d.hertz, false);
+    v("damping_ratio", d.damping_ratio, false);
+    v("enable_limit", d.enable_limit, false);
+    v("lower_translation", d.lower_translation, false);
+    v("upper_translation", d.upper_translation, false);
+    v("enable_motor", d.enable_motor, false);
+    v("motor_speed", d.motor_speed, false);
+    v("max_motor_torque", d.max_motor_torque, false);
+}
+template <class V> void joint_fields(MotorJointDef& d, V&& v) {
+    v("linear_offset", d.linear_offset, false);
+    v("angular_offset", d.angular_offset, false);
+    v("max_force", d.max_force, false);
+    v("max_torque", d.max_torque, false);
+    v("correction_factor", d.correction_factor, false);
+}
+/// The fields every two-body joint has.
+template <class Def, class V> void all_joint_fields(Def& d, V&& v) {
+    joint_fields(d, v);
+    v("collide_connected", d.collide_connected, false);
+    v("break_force", d.break_force, false);
+}
+
+/// The "type" names, in SceneJoint::Definition's order.
+constexpr std::array<std::string_view, std::variant_size_v<SceneJoint::Definition>> joint_types{
+    "revolute", "distance", "prismatic", "weld", "wheel", "motor"};
+
+/// A default definition of the kind named `type`; false for an unknown name.
+template <std::size_t I = 0> bool make_joint_def(std::string_view type, SceneJoint::Definition& d) {
+    if constexpr (I < std::variant_size_v<SceneJoint::Definition>) {
+        if (type == joint_types[I]) {
+            d.emplace<I>();
+            return true;
+        }
+        return make_joint_def<I + 1>(type, d);
+    } else {
+        return false;
+    }
+}
+
+/// A "joints" entry: {"type": ..., "body_a", "body_b", and the fields of its kind's
+/// definition (joint_fields)}. The names are resolved, and the joint checked (DCX_joint), by
+/// validate_scene.
 SceneJoint parse_joint(Ctx& ctx, const ojson& v, const std::string& ptr) {
     require_object(ctx, v, ptr, "", "a joint object");
     SceneJoint j;
     j.source = ptr;
     const std::string type =
         as_string(ctx, require_key(ctx, v, ptr, "type", "a joint"), child(ptr, "type"), "type");
-    bool collide = false;
-    double break_force = std::numeric_limits<double>::infinity();
-    if (type == "revolute") {
-        check_keys(ctx, v, ptr,
-                   {"type", "body_a", "body_b", "anchor", "collide_connected", "break_force"},
-                   "a revolute joint");
-        j.kind = SceneJoint::Kind::revolute;
-        j.revolute.anchor = as_vec2(ctx, require_key(ctx, v, ptr, "anchor", "a revolute joint"),
-                                    child(ptr, "anchor"), "anchor");
-    } else if (type == "distance") {
-        check_keys(ctx, v, ptr,
-                   {"type", "body_a", "body_b", "anchor_a", "anchor_b", "length", "hertz",
-                    "damping_ratio", "collide_connected", "break_force"},
-                   "a distance joint");
-        j.kind = SceneJoint::Kind::distance;
-        DistanceJointDef& d = j.distance;
-        d.anchor_a = as_vec2(ctx, require_key(ctx, v, ptr, "anchor_a", "a distance joint"),
-                             child(ptr, "anchor_a"), "anchor_a");
-        d.anchor_b = as_vec2(ctx, require_key(ctx, v, ptr, "anchor_b", "a distance joint"),
-                             child(ptr, "anchor_b"), "anchor_b");
-        if (const ojson* l = find(v, "length"))
-            d.length = as_number(ctx, *l, child(ptr, "length"), "length");
-        opt_number(ctx, v, ptr, "hertz", d.hertz);
-        opt_number(ctx, v, ptr, "damping_ratio", d.damping_ratio);
-    } else {
+    if (!make_joint_def(type, j.def)) {
+        std::string names;
+        for (const std::string_view t : joint_types)
+            names += (names.empty() ? "\"" : ", \"") + std::string(t) + "\"";
         fail(ctx, child(ptr, "type"), "type",
-             "unknown joint type '" + type + "'; expected \"revolute\" or \"distance\"",
-             format_rule);
+             "unknown joint type '" + type + "'; expected one of " + names, format_rule);
     }
+    const std::string what = "a " + type + " joint";
+    std::visit(
+        [&](auto& def) {
+            std::vector<std::string_view> keys{"type", "body_a", "body_b"};
+            all_joint_fields(def, [&](std::string_view key, auto&, bool) { keys.push_back(key); });
+            check_keys_in(ctx, v, ptr, keys, what);
+            all_joint_fields(def, [&](std::string_view key, auto& member, bool required) {
+                const ojson* value = required ? &require_key(ctx, v, ptr, key, what) : find(v, key);
+                if (!value)
+                    return;
+                const std::string at = child(ptr, key), field(key);
+                using T = std::remove_cvref_t<decltype(member)>;
+                if constexpr (std::is_same_v<T, Vec2d>)
+                    member = as_vec2(ctx, *value, at, field);
+                else if constexpr (std::is_same_v<T, bool>)
+                    member = as_bool(ctx, *value, at, field);
+                else
+                    member = as_number(ctx, *value, at, field);
+            });
+        },
+        j.def);
     j.body_a = as_string(ctx, require_key(ctx, v, ptr, "body_a", "a joint"), child(ptr, "body_a"),
                          "body_a");
     j.body_b = as_string(ctx, require_key(ctx, v, ptr, "body_b", "a joint"), child(ptr, "body_b"),
                          "body_b");
-    if (const ojson* c = find(v, "collide_connected"))
-        collide = as_bool(ctx, *c, child(ptr, "collide_connected"), "collide_connected");
-    opt_number(ctx, v, ptr, "break_force", break_force);
-    j.revolute.collide_connected = j.distance.collide_connected = collide;
-    j.revolute.break_force = j.distance.break_force = break_force;
     return j;
 }
 
 /// Creates the scene joint in `world` with the bodies of its names.
 JointId create_scene_joint(World& world, const SceneJoint& j, BodyId a, BodyId b) {
-    if (j.kind == SceneJoint::Kind::distance) {
-        DistanceJointDef def = j.distance;
-        def.body_a = a;
-        def.body_b = b;
-        return world.create_joint(def);
-    }
-    RevoluteJointDef def = j.revolute;
-    def.body_a = a;
-    def.body_b = b;
-    return world.create_joint(def);
+    return std::visit(
+        [&](auto def) {
+            def.body_a = a;
+            def.body_b = b;
+            return world.create_joint(def);
+        },
+        j.def);
 }
 
 SceneBody parse_body(Ctx& ctx, const ojson& v, const std::string& ptr) {
@@ -1273,26 +1363,26 @@ std::string scene_to_json(const Scene& scene, int indent) {
         ojson joints = ojson::array();
         for (const SceneJoint& sj : scene.joints) {
             ojson o = ojson::object();
-            const bool distance = sj.kind == SceneJoint::Kind::distance;
-            o["type"] = distance ? "distance" : "revolute";
+            o["type"] = joint_types[sj.def.index()];
             o["body_a"] = sj.body_a;
             o["body_b"] = sj.body_b;
-            if (distance) {
-                o["anchor_a"] = vec(sj.distance.anchor_a);
-                o["anchor_b"] = vec(sj.distance.anchor_b);
-                if (sj.distance.length)
-                    o["length"] = *sj.distance.length;
-                o["hertz"] = sj.distance.hertz;
-                o["damping_ratio"] = sj.distance.damping_ratio;
-            } else {
-                o["anchor"] = vec(sj.revolute.anchor);
-            }
-            const bool collide =
-                distance ? sj.distance.collide_connected : sj.revolute.collide_connected;
-            const double break_force = distance ? sj.distance.break_force : sj.revolute.break_force;
-            o["collide_connected"] = collide;
-            if (std::isfinite(break_force)) // infinite (never breaks): the default
-                o["break_force"] = break_force;
+            SceneJoint::Definition def = sj.def; // the field tables take mutable members
+            std::visit(
+                [&](auto& d) {
+                    all_joint_fields(d, [&](std::string_view key, auto& member, bool) {
+                        using T = std::remove_cvref_t<decltype(member)>;
+                        if constexpr (std::is_same_v<T, Vec2d>)
+                            o[std::string(key)] = vec(member);
+                        else if constexpr (std::is_same_v<T, std::optional<double>>) {
+                            if (member)
+                                o[std::string(key)] = *member;
+                        } else if constexpr (std::is_same_v<T, bool>)
+                            o[std::string(key)] = member;
+                        else if (std::isfinite(member)) // infinite (no bound): the default
+                            o[std::string(key)] = member;
+                    });
+                },
+                def);
             joints.push_back(std::move(o));
         }
         j["joints"] = std::move(joints);
