@@ -54,6 +54,10 @@ class TamiasEngine final : public Engine {
             bd.position = {d.position.x, d.position.y};
             bd.angle = d.angle;
             bd.linear_velocity = {d.velocity.x, d.velocity.y};
+            if (d.dynamic && d.boxes.empty()) {
+                bd.mass = d.mass;
+                bd.inertia = d.inertia;
+            }
             const tamias2d::BodyId id = world_.create_body(bd);
             const tamias2d::Material m{d.density, d.restitution, d.friction};
             for (const BoxPart& p : d.boxes) {
@@ -62,12 +66,19 @@ class TamiasEngine final : public Engine {
             }
             ids_.push_back(id);
         }
+        for (const JointDesc& j : s.joints) {
+            tamias2d::RevoluteJointDef jd;
+            jd.body_a = ids_[std::size_t(j.a)];
+            jd.body_b = ids_[std::size_t(j.b)];
+            jd.anchor = {j.anchor.x, j.anchor.y};
+            world_.create_joint(jd);
+        }
     }
     void step() override { world_.step(dt_); }
     Probe probe(int i) const override {
         const tamias2d::BodyId id = ids_[std::size_t(i)];
         const tamias2d::Vec2d p = world_.origin(id), v = world_.velocity(id);
-        return {{p.x, p.y}, {v.x, v.y}, world_.angular_velocity(id)};
+        return {{p.x, p.y}, {v.x, v.y}, world_.angular_velocity(id), world_.orientation(id)};
     }
 
   private:
@@ -94,7 +105,12 @@ class ChipmunkEngine final : public Engine {
         bodies_.reserve(s.bodies.size());
         for (const BodyDesc& d : s.bodies) {
             cpBody* body = nullptr;
-            if (d.dynamic) {
+            if (d.dynamic && d.boxes.empty()) {
+                body = cpSpaceAddBody(space_, cpBodyNew(d.mass, d.inertia));
+                cpBodySetPosition(body, cpv(d.position.x, d.position.y));
+                cpBodySetAngle(body, d.angle);
+                cpBodySetVelocity(body, cpv(d.velocity.x, d.velocity.y));
+            } else if (d.dynamic) {
                 if (d.boxes.size() != 1 || d.boxes[0].center.x != 0.0 ||
                     d.boxes[0].center.y != 0.0 || d.boxes[0].angle != 0.0) {
                     throw std::invalid_argument("Chipmunk adapter: dynamic bodies must be one "
@@ -121,8 +137,17 @@ class ChipmunkEngine final : public Engine {
             }
             bodies_.push_back(body);
         }
+        for (const JointDesc& j : s.joints) {
+            constraints_.push_back(cpSpaceAddConstraint(
+                space_, cpPivotJointNew(bodies_[std::size_t(j.a)], bodies_[std::size_t(j.b)],
+                                        cpv(j.anchor.x, j.anchor.y))));
+        }
     }
     ~ChipmunkEngine() override {
+        for (cpConstraint* c : constraints_) {
+            cpSpaceRemoveConstraint(space_, c);
+            cpConstraintFree(c);
+        }
         for (cpShape* sh : shapes_) {
             cpSpaceRemoveShape(space_, sh);
             cpShapeFree(sh);
@@ -140,7 +165,7 @@ class ChipmunkEngine final : public Engine {
     Probe probe(int i) const override {
         const cpBody* b = bodies_[std::size_t(i)];
         const cpVect p = cpBodyGetPosition(b), v = cpBodyGetVelocity(b);
-        return {{p.x, p.y}, {v.x, v.y}, cpBodyGetAngularVelocity(b)};
+        return {{p.x, p.y}, {v.x, v.y}, cpBodyGetAngularVelocity(b), cpBodyGetAngle(b)};
     }
 
   private:
@@ -155,6 +180,7 @@ class ChipmunkEngine final : public Engine {
     cpSpace* space_;
     std::vector<cpBody*> bodies_;
     std::vector<cpShape*> shapes_;
+    std::vector<cpConstraint*> constraints_;
 };
 
 // -------------------------------------------------------------------------------- Box2D 2.4
@@ -187,14 +213,27 @@ class Box2DEngine final : public Engine {
                 fd.restitution = f32(d.restitution); // Box2D: max(e1, e2)
                 body->CreateFixture(&fd);
             }
+            if (d.dynamic && d.boxes.empty()) {
+                b2MassData md;
+                md.mass = f32(d.mass);
+                md.center.SetZero();
+                md.I = f32(d.inertia); // about the origin, which is the centre of mass here
+                body->SetMassData(&md);
+            }
             bodies_.push_back(body);
+        }
+        for (const JointDesc& j : s.joints) {
+            b2RevoluteJointDef jd; // collideConnected false, no limit, no motor
+            jd.Initialize(bodies_[std::size_t(j.a)], bodies_[std::size_t(j.b)],
+                          b2Vec2(f32(j.anchor.x), f32(j.anchor.y)));
+            world_.CreateJoint(&jd);
         }
     }
     void step() override { world_.Step(dt_, 8, 3); }
     Probe probe(int i) const override {
         const b2Body* b = bodies_[std::size_t(i)];
         const b2Vec2 p = b->GetPosition(), v = b->GetLinearVelocity();
-        return {{p.x, p.y}, {v.x, v.y}, b->GetAngularVelocity()};
+        return {{p.x, p.y}, {v.x, v.y}, b->GetAngularVelocity(), b->GetAngle()};
     }
 
   private:

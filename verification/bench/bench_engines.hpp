@@ -1,8 +1,11 @@
 // One interface over the three engines the benchmark compares. Each adapter builds a
 // SceneDesc (bench_scenes.hpp) in its engine with the benchmark's settings and nothing else:
-//   Tamias2D  its WorldDef defaults (4 substeps, soft contacts), gravity from the scene;
+//   Tamias2D  its WorldDef defaults (4 substeps, soft contacts and joints), gravity from the
+//             scene;
 //   Chipmunk  7.0.3, 10 iterations, default collision slop and bias, sleeping off (default);
-//   Box2D     2.4.1, 8 velocity and 3 position iterations, sleeping off.
+//             joints: cpPivotJoint with its default error bias and unlimited max bias;
+//   Box2D     2.4.1, 8 velocity and 3 position iterations, sleeping off; joints:
+//             b2RevoluteJoint (no limit, no motor).
 #pragma once
 
 #include <memory>
@@ -18,11 +21,12 @@ inline constexpr int engine_count = 3;
 
 std::string_view engine_name(EngineId e);
 
-/// Origin, linear velocity and angular velocity of one body.
+/// Origin, linear velocity, angular velocity and angle of one body.
 struct Probe {
     V2 p{};
     V2 v{};
     double w = 0.0;
+    double angle = 0.0; ///< rad
 };
 
 class Engine {

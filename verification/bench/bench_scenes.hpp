@@ -4,7 +4,8 @@
 //
 // Layouts follow the project's scene generators (src/tamias2d/io/scene_generators.cpp) with
 // the benchmark's parameters: pyramids start with every box exactly touching its neighbours
-// (gap 0, as in Box2D v3's benchmark), rain uses the generator's container and grid.
+// (gap 0, as in Box2D v3's benchmark), rain uses the generator's container and grid. The joint
+// scenes are in bench_joint_scenes.hpp.
 #pragma once
 
 #include <algorithm>
@@ -38,9 +39,20 @@ struct BodyDesc {
     double density = 1.0;
     double friction = 0.6;
     double restitution = 0.0;
+    /// A dynamic body without boxes takes this mass (kg) and moment of inertia about its origin
+    /// (kg m^2), its centre of mass at the origin: it collides with nothing.
+    double mass = 0.0;
+    double inertia = 0.0;
 };
 
-enum class SceneKind : std::uint8_t { pyramid, rain, elastic };
+/// A revolute joint (a pin): bodies[a] and bodies[b] are held together at `anchor` (world frame
+/// at creation, fixed in both bodies from then on).
+struct JointDesc {
+    int a = 0, b = 0;
+    V2 anchor{};
+};
+
+enum class SceneKind : std::uint8_t { pyramid, rain, elastic, joints };
 
 struct SceneDesc {
     std::string name;
@@ -56,6 +68,11 @@ struct SceneDesc {
     double speed = 0.0;        ///< elastic: initial speed of each box (m s^-1)
     /// Sleeping on in every engine, each with a 0.5 s time to sleep (off in the floors' scenes).
     bool sleep = false;
+    std::vector<JointDesc> joints;
+    /// joints: a joint whose anchors are this far apart (m) has come apart (half the distance
+    /// between a link's two pins); `mass_ratio` is the heavy body's mass over a link's (0: none).
+    double apart_separation = 0.0;
+    double mass_ratio = 0.0;
 };
 
 inline BodyDesc box_body(V2 p, double side, bool dynamic) {

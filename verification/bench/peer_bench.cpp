@@ -4,7 +4,8 @@
 //   tamias_bench [<out_dir>] [--scenes a,b,...] [--reps N] [--quick] [--engines a,b]
 //                [--budget-seconds S] [--no-typing]
 // Scenes: elastic2 pyramid20 pyramid40 large_pyramid rain rain_1k rain_2k rain_4k rain_8k
-// rain_16k ("scaling" names the rain_* series) pyramid40_sleep; engines: tamias chipmunk box2d.
+// rain_16k ("scaling" names the rain_* series) pyramid40_sleep, and the joint scenes joint_grid
+// chain heavy_chain_100 heavy_chain_1000 ("joints" names them); engines: tamias chipmunk box2d.
 //
 // Writes <out_dir>/benchmark.json (schema: traceability/vvdata.py) and prints a table. Method
 // (docs/performance.md): every engine builds the same SceneDesc; repetitions alternate the
@@ -12,8 +13,10 @@
 // them; a scene's time is the median over repetitions of its ms/step.
 //   steady scenes (pyramids): each engine builds the scene once, takes `warmup` steps
 //     untimed, then `reps` timed blocks of `steps` steps, engines alternating block by block;
-//   transient scenes (rain, elastic pair): each repetition rebuilds the scene and times the
-//     whole run of `steps` steps (the build is never timed).
+//   transient scenes (rain, elastic pair, joint scenes): each repetition rebuilds the scene and
+//     times the whole run of `steps` steps (the build is never timed).
+// The joint scenes also measure drift (joint_drift.hpp) in one more run per engine, untimed,
+// sampling every joint after every step.
 #include <malloc.h>
 
 #include <algorithm>
@@ -37,7 +40,9 @@
 #include <nlohmann/json.hpp>
 
 #include "bench_engines.hpp"
+#include "bench_joint_scenes.hpp"
 #include "bench_scenes.hpp"
+#include "joint_drift.hpp"
 #include "memory_probe.hpp"
 #include "tamias2d/memory/large_array.hpp"
 #include "thread_cpu_time.hpp"
@@ -90,6 +95,7 @@ struct SceneSpec {
     /// there); elsewhere it guards the job's run time against a pathological case.
     double budget_s = 300.0;
     bool scaling = false; ///< part of the scaling series
+    bool joints = false;  ///< a joint scene (no contacts)
 };
 
 std::vector<SceneSpec> all_scenes() {
@@ -115,6 +121,20 @@ std::vector<SceneSpec> all_scenes() {
         // per box (tree re-insertions, cache misses) scales differently from the pile's.
         s.push_back({name, [name, k] { return make_wide_rain(name, 1000 * k); }, false, 0, 100, 100,
                      10.0, true});
+    }
+    // Joint scenes, contact-free (bench_joint_scenes.hpp), each timed from its start as Box2D
+    // v3 times joint_grid (500 steps). --quick keeps the full grid and times its first 60 steps:
+    // without contacts a step costs the same all through the fall, so the time per step holds,
+    // but the drift figures are those of the first second. The chains are cheap and run the
+    // same 600 steps (10 s, the swing and the hanging after it) in both modes.
+    s.push_back({"joint_grid", [] { return make_joint_grid("joint_grid", 100); }, false, 0, 500, 60,
+                 300.0, false, true});
+    s.push_back(
+        {"chain", [] { return make_chain("chain", 100); }, false, 0, 600, 600, 300.0, false, true});
+    for (const int ratio : {100, 1000}) {
+        const std::string name = "heavy_chain_" + std::to_string(ratio);
+        s.push_back({name, [name, ratio] { return make_chain(name, 10, ratio); }, false, 0, 600,
+                     600, 300.0, false, true});
     }
     return s;
 }
@@ -224,6 +244,13 @@ Quality assess(const SceneDesc& s, const Engine& e) {
         q.text = "swap error " + fmt(q.value) + ", spin " + fmt(q.spin) + " rad/s";
         break;
     }
+    case SceneKind::joints: {
+        q.metric = "largest joint separation (m)";
+        q.value = largest_separation(s, local_anchors(s), e);
+        q.tamias_ok = q.nonfinite == 0 && q.value < s.apart_separation;
+        q.text = "joints apart by at most " + fmt(q.value) + " m";
+        break;
+    }
     }
     if (q.nonfinite > 0)
         q.text += ", " + std::to_string(q.nonfinite) + " NaN bodies";
@@ -236,8 +263,9 @@ struct EngineResult {
     std::vector<double> wall_ms_per_step;   ///< the same in wall-clock time
     std::vector<double> system_ms_per_step; ///< the kernel's part of ms_per_step
     std::optional<Quality> quality;
-    double peak_heap = 0.0; ///< bytes
-    std::string error;      ///< non-empty: the engine failed (exception) or ran out of budget
+    std::optional<JointDrift> drift; ///< joint scenes: from the untimed sampled run
+    double peak_heap = 0.0;          ///< bytes
+    std::string error; ///< non-empty: the engine failed (exception) or ran out of budget
     bool complete() const { return error.empty() && !ms_per_step.empty(); }
 };
 
@@ -256,6 +284,9 @@ struct SceneResult {
     int reps = 0;
     std::array<EngineResult, engine_count> engines{};
     std::array<bool, engine_count> ran{};
+    bool joints = false;     ///< a joint scene
+    int joint_count = 0;     ///< joint scenes: pins
+    double mass_ratio = 0.0; ///< joint scenes: heavy body over link (0: none)
     double med(EngineId e) const {
         const EngineResult& r = engines[std::size_t(e)];
         return ran[std::size_t(e)] && !r.ms_per_step.empty() ? median(r.ms_per_step) : NAN;
@@ -363,6 +394,9 @@ SceneResult run_transient(const SceneSpec& spec, const Options& opt) {
     const SceneDesc scene = spec.make();
     SceneResult res{spec.name, scene.dynamic_count, opt.quick ? spec.quick_steps : spec.steps,
                     opt.reps};
+    res.joints = spec.joints;
+    res.joint_count = int(scene.joints.size());
+    res.mass_ratio = scene.mass_ratio;
     std::array<double, engine_count> spent{}, last_run{};
     for (EngineId id : opt.engines) {
         const auto k = std::size_t(id);
@@ -375,6 +409,20 @@ SceneResult run_transient(const SceneSpec& spec, const Options& opt) {
             res.engines[k].error = "skipped: projected over the " +
                                    fmt(budget_ms(spec, opt, id) / 1000.0) +
                                    " s CPU budget from the smaller sizes";
+        }
+    }
+    if (spec.joints) {
+        // Drift from a run of its own, so that sampling every joint after every step never
+        // falls inside a timed interval; the engines are deterministic, so the timed runs
+        // take the same path.
+        for (EngineId id : opt.engines) {
+            EngineResult& r = res.engines[std::size_t(id)];
+            try {
+                const std::unique_ptr<Engine> e = make_engine(id, scene);
+                r.drift = measure_drift(scene, *e, res.steps);
+            } catch (const std::exception& ex) {
+                r.error = std::string("failed: ") + ex.what();
+            }
         }
     }
     constexpr int chunk = 10; // heap sampled and budget checked between chunks, untimed
@@ -644,9 +692,9 @@ int main(int argc, char** argv) {
             chosen.push_back(&s);
     } else {
         for (const std::string& n : opt.scenes) {
-            if (n == "scaling") { // alias: the whole series
+            if (n == "scaling" || n == "joints") { // aliases: the series, the joint scenes
                 for (const SceneSpec& s : specs) {
-                    if (s.scaling)
+                    if (n == "scaling" ? s.scaling : s.joints)
                         chosen.push_back(&s);
                 }
                 continue;
@@ -674,6 +722,12 @@ int main(int argc, char** argv) {
                         std::string(engine_name(id)).c_str(), r.med(id),
                         e.quality ? e.quality->text.c_str() : "-", e.peak_heap / 1048576.0,
                         e.error.c_str());
+            if (e.drift) {
+                std::printf("  %-11s drift max %.3g m (step %d), end %.3g m, fastest body %.3g "
+                            "m/s: %s\n",
+                            "", e.drift->max, e.drift->max_step, e.drift->end, e.drift->max_speed,
+                            e.drift->outcome.c_str());
+            }
         }
         std::fflush(stdout);
         results.push_back(r);
@@ -722,7 +776,10 @@ int main(int argc, char** argv) {
     };
     if (have_tamias) {
         for (const SceneResult& r : results) {
-            if (!r.ran[std::size_t(EngineId::chipmunk)] || r.name.rfind("rain_", 0) == 0)
+            // NFR1 is about collision detection and resolution: the joint scenes have neither,
+            // and their figures are reported in tables only.
+            if (!r.ran[std::size_t(EngineId::chipmunk)] || r.name.rfind("rain_", 0) == 0 ||
+                r.joints)
                 continue;
             const double t = r.med(EngineId::tamias), c = r.med(EngineId::chipmunk);
             add_check(r.name + ": Tamias2D ms/step at most " + fmt(comparable_limit) +
@@ -794,8 +851,8 @@ int main(int argc, char** argv) {
         if (!have_tamias)
             break;
         const EngineResult& e = r.engines[0];
-        if (r.name.rfind("rain_", 0) == 0)
-            continue; // the scaling runs are shorter rains
+        if (r.name.rfind("rain_", 0) == 0 || r.joints)
+            continue; // the scaling runs are shorter rains; the joint scenes: drift table
         std::string peers;
         for (EngineId id : {EngineId::chipmunk, EngineId::box2d}) {
             const EngineResult& p = r.engines[std::size_t(id)];
@@ -887,6 +944,37 @@ int main(int argc, char** argv) {
     {
         json rows = json::array();
         for (const SceneResult& r : results) {
+            if (!r.joints)
+                continue;
+            for (EngineId id : opt.engines) {
+                const EngineResult& e = r.engines[std::size_t(id)];
+                if (!e.drift)
+                    continue;
+                rows.push_back({r.name,
+                                r.mass_ratio > 0.0 ? json(int(r.mass_ratio)) : json(nullptr),
+                                r.joint_count, engine_name(id), num(r.med(id)),
+                                num(e.drift->max, 3), e.drift->max_step, num(e.drift->end, 3),
+                                num(e.drift->max_speed, 3), e.drift->outcome});
+            }
+        }
+        if (!rows.empty()) {
+            tables.push_back(
+                {{"name", "Joint drift: the largest distance between a pin's two anchor points "
+                          "(world frame) over all joints, sampled after every step of one "
+                          "untimed run. Outcome: intact (no pin ever half a link apart), rejoined "
+                          "(apart at some step, not at the end), apart at the end, or exploded "
+                          "(a NaN, or a body faster than 10x the speed of free fall over the "
+                          "run)"},
+                 {"columns",
+                  {"scene", "mass ratio (heavy body / link)", "joints", "engine", "ms/step",
+                   "max separation (m)", "at step", "separation at the end (m)",
+                   "fastest body (m/s)", "outcome"}},
+                 {"rows", rows}});
+        }
+    }
+    {
+        json rows = json::array();
+        for (const SceneResult& r : results) {
             const auto it = box2d_v3_ms.find(r.name);
             if (it == box2d_v3_ms.end())
                 continue;
@@ -942,8 +1030,14 @@ int main(int argc, char** argv) {
                          "pyramid40_sleep: on, time_to_sleep 0.5 s), doubles"},
             {"scenes", "dt 1/60 s, gravity (0, -10), unit boxes of density 1 (rain: 0.5 m), "
                        "friction 0.6 per pair, restitution 0 (elastic2: 1, no gravity)"},
+            {"joint scenes", "revolute joints only, no shapes and no contacts (bodies carry "
+                             "their shapes' mass and inertia): Tamias2D joint_hertz 60, "
+                             "joint_damping_ratio 2 (WorldDef defaults); Chipmunk cpPivotJoint, "
+                             "default error bias, max bias unlimited; Box2D b2RevoluteJoint; "
+                             "the same substeps and iterations as every scene"},
             {"steps", "pyramids: 10 untimed (pyramid40_sleep: 600), then reps x timed block; "
-                      "rain, rain_* and elastic2: the whole run per rep (build untimed)"},
+                      "rain, rain_*, elastic2 and the joint scenes: the whole run per rep "
+                      "(build untimed); joint scenes: one more untimed run for the drift"},
             {"time", "thread CPU time (wall time in the spread table)"},
             {"total wall time (s)", num(total_s, 3)}};
         json rows = json::array();
@@ -958,7 +1052,7 @@ int main(int argc, char** argv) {
         for (EngineId id : opt.engines) {
             std::vector<std::pair<int, double>> pts;
             for (const SceneResult& r : results) {
-                if (r.name.rfind("rain_", 0) == 0)
+                if (r.name.rfind("rain_", 0) == 0 || r.joints)
                     continue;
                 if (std::isfinite(r.med(id)))
                     pts.push_back({r.dynamic_bodies, r.med(id)});
@@ -1037,6 +1131,14 @@ int main(int argc, char** argv) {
                                                {"system_ms_per_step", x.system_ms_per_step},
                                                {"peak_heap_bytes", x.peak_heap},
                                                {"error", x.error}};
+            if (x.drift) {
+                e[std::string(engine_name(id))]["drift"] = {
+                    {"max_m", num(x.drift->max)},
+                    {"max_step", x.drift->max_step},
+                    {"end_m", num(x.drift->end)},
+                    {"max_speed_m_s", num(x.drift->max_speed)},
+                    {"outcome", x.drift->outcome}};
+            }
         }
         raw[r.name] = {{"steps", r.steps}, {"dynamic_bodies", r.dynamic_bodies}, {"engines", e}};
     }
@@ -1045,8 +1147,8 @@ int main(int argc, char** argv) {
                 {"description",
                  "Tamias2D against Chipmunk 7.0.3 and Box2D 2.4.1 on identical scenes in one "
                  "process (NFR1), with a quality check per scene and engine (R7, R8), the cost "
-                 "of unit typing, and the scaling of a rain of boxes. Method and results: "
-                 "docs/performance.md."},
+                 "of unit typing, the scaling of a rain of boxes, and joint scenes (time and "
+                 "drift, no check). Method and results: docs/performance.md."},
                 {"checks", checks},
                 {"tables", tables},
                 {"series", series},
