@@ -84,7 +84,7 @@ struct SceneJoint {
     /// "weld", "wheel", "motor"); its body handles are set by build_world from the names.
     using Definition = std::variant<RevoluteJointDef, DistanceJointDef, PrismaticJointDef,
                                     WeldJointDef, WheelJointDef, MotorJointDef>;
-    Definition def;
+    Definition def; ///< the joint's definition (bodies unset: build_world sets them)
     std::string body_a; ///< the name of its first body (BodyDef::name, unique)
     std::string body_b; ///< the name of its second body
     std::string source; ///< the JSON pointer of its entry ("/joints/0"), for error messages
