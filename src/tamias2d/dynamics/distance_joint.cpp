@@ -8,8 +8,8 @@ namespace tamias2d {
 void warm_start_distance(const Joint& j, std::span<SolverBody> bodies) {
     SolverBody& a = bodies[j.solver_a];
     SolverBody& b = bodies[j.solver_b];
-    const Vec2d r_a = anchor_offset(j.frame_a, j.angle_a, a);
-    const Vec2d r_b = anchor_offset(j.frame_b, j.angle_b, b);
+    const Vec2d r_a = anchor_a(j);
+    const Vec2d r_b = anchor_b(j);
     bridge::apply_axial_impulse(a, bridge::moment_arm(r_a, j.axis), b,
                                 bridge::moment_arm(r_b, j.axis), j.axis,
                                 j.axial_impulse + j.lower_impulse - j.upper_impulse);
@@ -24,8 +24,8 @@ void solve_distance(Joint& j, std::span<SolverBody> bodies, const Softness& rigi
         return;
     SolverBody& a = bodies[j.solver_a];
     SolverBody& b = bodies[j.solver_b];
-    const Vec2d r_a = anchor_offset(j.frame_a, j.angle_a, a);
-    const Vec2d r_b = anchor_offset(j.frame_b, j.angle_b, b);
+    const Vec2d r_a = anchor_a(j);
+    const Vec2d r_b = anchor_b(j);
     // The anchors' separation now: the centres have moved by dp since the step's start.
     double length = 0.0;
     bridge::distance_axis(j.center_offset + (b.dp - a.dp) + (r_b - r_a), length, j.axis);

@@ -58,6 +58,10 @@ struct Joint {
     double angle_a = 0.0, angle_b = 0.0;      ///< rad, the bodies' angles at the step's start
     Vec2d center_offset{};                    ///< m, p_B - p_A at the step's start
     Vec2d center_b{};                         ///< m, p_B at the step's start
+    /// The bodies' rotations now, angle at the step's start plus the turn dq made since, as the
+    /// write-back will place them: the step solver updates them after each position half, one
+    /// cosine and sine per body rather than per joint and pass.
+    Rot q_a{}, q_b{};
 };
 
 /// The angular impulse (N m s) the joint's angular parts (motor, limits, spring, held angle)

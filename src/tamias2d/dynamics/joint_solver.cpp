@@ -28,17 +28,17 @@ void prepare_joint(Joint& j, const BodyStore& store,
 }
 
 LineFrame line_frame(const Joint& j, const SolverBody& a, const SolverBody& b) {
-    const Vec2d r_a = anchor_offset(j.frame_a, j.angle_a, a);
-    const Vec2d r_b = anchor_offset(j.frame_b, j.angle_b, b);
-    const Vec2d axis = rotate(Rot::from_angle(j.angle_a + a.dq), j.local_axis);
+    const Vec2d r_a = anchor_a(j);
+    const Vec2d r_b = anchor_b(j);
+    const Vec2d axis = rotate(j.q_a, j.local_axis);
     // The anchors' separation now: the centres have moved by dp since the step's start.
     const Vec2d d = j.center_offset + (b.dp - a.dp) + (r_b - r_a);
     return {r_a, r_b, axis, bridge::line(d, r_a, r_b, axis)};
 }
 
 void solve_pin(Joint& j, SolverBody& a, SolverBody& b, const Softness& softness, bool use_bias) {
-    const Vec2d r_a = anchor_offset(j.frame_a, j.angle_a, a);
-    const Vec2d r_b = anchor_offset(j.frame_b, j.angle_b, b);
+    const Vec2d r_a = anchor_a(j);
+    const Vec2d r_b = anchor_b(j);
     Vec2d rhs = bridge::pin_velocity_error(a, r_a, b, r_b);
     double mass_scale = 1.0, impulse_scale = 0.0;
     if (use_bias) {

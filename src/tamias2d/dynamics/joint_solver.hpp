@@ -22,10 +22,13 @@ struct BodyStore;
 void prepare_joint(Joint& j, const BodyStore& bodies,
                    const std::vector<std::uint32_t>& solver_index);
 
-/// An anchor's offset from its body's centre in the world frame, with the body turned by the
-/// rotation it has made so far in the step (dq), as the write-back will place it.
-inline Vec2d anchor_offset(Vec2d frame, double angle, const SolverBody& b) {
-    return rotate(Rot::from_angle(angle + b.dq), frame);
+/// The anchors' offsets from their bodies' centres in the world frame, with the bodies turned
+/// as far as they have in the step (q_a, q_b: the step solver keeps them current).
+inline Vec2d anchor_a(const Joint& j) {
+    return rotate(j.q_a, j.frame_a);
+}
+inline Vec2d anchor_b(const Joint& j) {
+    return rotate(j.q_b, j.frame_b);
 }
 
 /// The joint angle (DD22) now: the bodies' angles at the step's start plus their turn since.

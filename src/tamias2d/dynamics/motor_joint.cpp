@@ -9,8 +9,7 @@ void warm_start_motor(const Joint& j, std::span<SolverBody> bodies) {
     SolverBody& a = bodies[j.solver_a];
     SolverBody& b = bodies[j.solver_b];
     bridge::apply_angular_impulse(a, b, j.angular_impulse);
-    bridge::apply_pin_impulse(a, anchor_offset(j.frame_a, j.angle_a, a), b,
-                              anchor_offset(j.frame_b, j.angle_b, b), j.linear_impulse);
+    bridge::apply_pin_impulse(a, anchor_a(j), b, anchor_b(j), j.linear_impulse);
 }
 
 void solve_motor(Joint& j, std::span<SolverBody> bodies, double h, bool use_bias) {
@@ -28,8 +27,8 @@ void solve_motor(Joint& j, std::span<SolverBody> bodies, double h, bool use_bias
     bridge::apply_angular_impulse(a, b, angular - j.angular_impulse);
     j.angular_impulse = angular;
 
-    const Vec2d r_a = anchor_offset(j.frame_a, j.angle_a, a);
-    const Vec2d r_b = anchor_offset(j.frame_b, j.angle_b, b);
+    const Vec2d r_a = anchor_a(j);
+    const Vec2d r_b = anchor_b(j);
     const Vec2d c = bridge::pin_position_error(j.center_offset + (b.dp - a.dp), r_a, r_b);
     const Vec2d rhs = bridge::pin_velocity_error(a, r_a, b, r_b) + rate * c;
     const Vec2d P = bridge::pin_impulse(a, r_a, b, r_b, rhs, 1.0, 0.0, j.linear_impulse);

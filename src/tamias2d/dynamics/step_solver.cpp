@@ -89,13 +89,6 @@ void StepSolver::integrate_velocities(double h) {
     }
 }
 
-void StepSolver::prepare_joints(JointStore& joints, const BodyStore& bodies) {
-    for (Joint& j : joints.joints) {
-        if (j.alive)
-            prepare_joint(j, bodies, solver_index_);
-    }
-}
-
 namespace {
 
 /// Whether a joint takes part in this step: alive, and not between two immovable bodies
@@ -105,6 +98,48 @@ bool solved(const Joint& j) {
 }
 
 } // namespace
+
+void StepSolver::prepare_joints(JointStore& joints, const BodyStore& bodies) {
+    // The moving bodies the joints hold, each once, with its angle at the step's start.
+    jointed_.clear();
+    if (joints.live() == 0)
+        return;
+    joint_rotations_.resize(solver_bodies_.size());
+    listed_.resize(solver_bodies_.size()); // all false: cleared below after each use
+    for (Joint& j : joints.joints) {
+        if (!j.alive)
+            continue;
+        prepare_joint(j, bodies, solver_index_);
+        // An immovable side keeps its rotation all step (solver body 0 never turns).
+        j.q_a = Rot::from_angle(j.angle_a + solver_bodies_[j.solver_a].dq);
+        j.q_b = Rot::from_angle(j.angle_b + solver_bodies_[j.solver_b].dq);
+        if (!solved(j))
+            continue;
+        for (const auto& [k, angle] : {std::pair{j.solver_a, j.angle_a}, {j.solver_b, j.angle_b}}) {
+            if (k != 0 && !listed_[k]) {
+                listed_[k] = 1;
+                jointed_.push_back({k, angle});
+            }
+        }
+    }
+    for (const JointedBody& jb : jointed_)
+        listed_[jb.solver] = 0;
+}
+
+void StepSolver::turn_joints(std::vector<Joint>& joints) {
+    if (jointed_.empty())
+        return;
+    for (const JointedBody& jb : jointed_)
+        joint_rotations_[jb.solver] = Rot::from_angle(jb.angle + solver_bodies_[jb.solver].dq);
+    for (Joint& j : joints) {
+        if (!solved(j))
+            continue;
+        if (j.solver_a != 0)
+            j.q_a = joint_rotations_[j.solver_a];
+        if (j.solver_b != 0)
+            j.q_b = joint_rotations_[j.solver_b];
+    }
+}
 
 void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const WorldDef& def,
                        double dt) {
@@ -215,6 +250,7 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
             sb.dp += bridge::displacement(sb.v, h);
             sb.dq += bridge::rotation(sb.w, h);
         }
+        turn_joints(joints);
         for (Joint& j : joints) {
             if (solved(j))
                 solve_joint(j, solver_bodies_, joint_softness, h, false);

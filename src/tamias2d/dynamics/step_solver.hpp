@@ -11,6 +11,7 @@
 #include "tamias2d/body_def.hpp"
 #include "tamias2d/dynamics/constraint_graph.hpp"
 #include "tamias2d/dynamics/contact_constraint.hpp"
+#include "tamias2d/dynamics/joint.hpp"
 #include "tamias2d/dynamics/solver_body.hpp"
 #include "tamias2d/dynamics/wide_contact_solver.hpp"
 #include "tamias2d/memory/large_array.hpp"
@@ -43,6 +44,8 @@ class StepSolver {
     /// \srs{R5} \srs{R6} IM1/IM2, the velocity half of the semi-implicit Euler step (DD4, DD7);
     /// \srs{IM5} with damping when some body is damped.
     void integrate_velocities(double h);
+    /// The joints' body rotations after a position half (Joint::q_a, q_b).
+    void turn_joints(std::vector<Joint>& joints);
 
     LargeArray<SolverBody> solver_bodies_;
     std::vector<Vec2d> accelerations_;
@@ -55,6 +58,14 @@ class StepSolver {
     std::vector<std::uint32_t> edge_slot_;    ///< per edge: its copy in `bouncing_`, or no_slot
     std::vector<ContactConstraint> bouncing_; ///< manifolds with restitution, creation order
     WideContactSolver wide_solver_;
+    /// The moving bodies some joint holds: solver body and angle at the step's start.
+    struct JointedBody {
+        std::uint32_t solver;
+        double angle;
+    };
+    std::vector<JointedBody> jointed_;
+    std::vector<Rot> joint_rotations_; ///< per solver body, for the jointed ones
+    std::vector<std::uint8_t> listed_; ///< per solver body: in jointed_ (all 0 between steps)
 };
 
 } // namespace tamias2d

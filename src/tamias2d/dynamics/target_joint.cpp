@@ -12,8 +12,7 @@ namespace tamias2d {
 void warm_start_target(const Joint& j, std::span<SolverBody> bodies) {
     SolverBody& b = bodies[j.solver_b];
     SolverBody world{};
-    bridge::apply_pin_impulse(world, {}, b, anchor_offset(j.frame_b, j.angle_b, b),
-                              j.linear_impulse);
+    bridge::apply_pin_impulse(world, {}, b, anchor_b(j), j.linear_impulse);
 }
 
 void solve_target(Joint& j, std::span<SolverBody> bodies, double h, bool use_bias) {
@@ -21,7 +20,7 @@ void solve_target(Joint& j, std::span<SolverBody> bodies, double h, bool use_bia
         return;
     SolverBody& b = bodies[j.solver_b];
     SolverBody world{};
-    const Vec2d r = anchor_offset(j.frame_b, j.angle_b, b);
+    const Vec2d r = anchor_b(j);
     const Softness soft = make_softness(j.hertz, j.damping_ratio, h);
     const Vec2d c = bridge::target_position_error(j.center_b + b.dp, r, j.target);
     const Vec2d rhs = bridge::pin_velocity_error(world, {}, b, r) + soft.bias_rate * c;

@@ -9,8 +9,7 @@ void warm_start_weld(const Joint& j, std::span<SolverBody> bodies) {
     SolverBody& a = bodies[j.solver_a];
     SolverBody& b = bodies[j.solver_b];
     bridge::apply_angular_impulse(a, b, j.angular_impulse);
-    bridge::apply_pin_impulse(a, anchor_offset(j.frame_a, j.angle_a, a), b,
-                              anchor_offset(j.frame_b, j.angle_b, b), j.linear_impulse);
+    bridge::apply_pin_impulse(a, anchor_a(j), b, anchor_b(j), j.linear_impulse);
 }
 
 void solve_weld(Joint& j, std::span<SolverBody> bodies, const Softness& rigid, double h,
