@@ -34,4 +34,12 @@ struct ContactEvent {
     BodyId body_b;   ///< the body carrying shape_b
 };
 
+/// \srs{DD28} A shape that began or ended overlapping a sensor during the last step.
+struct SensorEvent {
+    ShapeId sensor;      ///< the sensor shape
+    ShapeId visitor;     ///< the shape that entered or left it
+    BodyId sensor_body;  ///< the body carrying the sensor (as it was when the event happened)
+    BodyId visitor_body; ///< the body carrying the visitor
+};
+
 } // namespace tamias2d

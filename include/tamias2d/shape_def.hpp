@@ -2,6 +2,7 @@
 /// What a shape is made from: its geometry and its material (SRS R3).
 #pragma once
 
+#include <cstdint>
 #include <span>
 
 #include "tamias2d/shapes.hpp"
@@ -16,10 +17,27 @@ struct Material {
     double friction = 0.0;
 };
 
+/// \srs{DD27} Which shapes a shape collides with: it belongs to the categories set in
+/// category_bits and collides with those set in mask_bits (both ways: each must accept the
+/// other); shapes of one non-zero group_index always collide (positive) or never (negative),
+/// whatever their bits. The default collides with everything.
+struct Filter {
+    std::uint32_t category_bits = 0x00000001; ///< the categories the shape belongs to
+    std::uint32_t mask_bits = 0xFFFFFFFF;     ///< the categories it collides with
+    std::int32_t group_index = 0;             ///< 0: no group
+    /// Field by field.
+    friend bool operator==(const Filter&, const Filter&) = default;
+};
+
 /// \srs{R3} The inputs of a shape: its geometry (body frame) and its material.
 struct ShapeDef {
     Geometry geometry{}; ///< circle or convex polygon, m in the body frame
     Material material{}; ///< density, restitution, friction
+    Filter filter{};     ///< DD27: which shapes it collides with
+    /// \srs{DD28} A sensor exerts no force and is not hit by ray casts: it reports the shapes
+    /// that begin and end overlapping it (World::sensor_begin_events), a pickup or a trigger.
+    /// Sensors do not detect each other. Its density still counts in its body's mass.
+    bool is_sensor = false;
 };
 
 /// A rectangle w x h (m) centred on the body origin (or on `center`, rotated by `angle`).

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <span>
@@ -59,6 +60,18 @@ class World {
     ShapeId create_shape(BodyId body, const ShapeDef& def);
     /// Removes a shape and its contacts and recomputes the body's mass.
     void destroy_shape(ShapeId shape);
+    /// \srs{DD27} Changes a shape's collision filter: its contacts the new filter refuses are
+    /// removed now (with their end events), and the pairs it now admits are found by the next
+    /// step.
+    void set_filter(ShapeId shape, const Filter& filter);
+    Filter filter(ShapeId shape) const; ///< the shape's collision filter (DD27)
+    /// \srs{DD27} A filter of the game's own, asked for each pair of shapes that comes close
+    /// and that the rules admit (DD27's bits and groups, joints, one body): false refuses the
+    /// pair. It must answer the same for the same pair (the step stays deterministic only if it
+    /// does), and not change the world. An empty function removes it. A pair in contact is not
+    /// asked again; a refused one is, whenever the broad phase reports it anew (one of its
+    /// shapes moved out of its fat box), and set_filter on a shape asks again for its pairs.
+    void set_custom_filter(std::function<bool(ShapeId, ShapeId)> filter);
     /// Whether the handle names a body that exists (not destroyed, slot not reused).
     bool is_valid(BodyId body) const;
     /// Whether the handle names a shape that exists.
@@ -206,6 +219,12 @@ class World {
     std::span<const ContactEvent> contact_begin_events() const;
     /// Pairs that stopped touching during the last step (or lost a shape or body to destruction).
     std::span<const ContactEvent> contact_end_events() const;
+    /// \srs{DD28} Shapes that began overlapping a sensor during the last step, in a
+    /// deterministic order (the pairs' storage order, which depends only on the inputs).
+    std::span<const SensorEvent> sensor_begin_events() const;
+    /// \srs{DD28} Shapes that stopped overlapping a sensor during the last step (or whose
+    /// shape or body, or the sensor's, was destroyed).
+    std::span<const SensorEvent> sensor_end_events() const;
     /// Shapes whose bounding boxes overlap `box` (m), by shape index.
     std::vector<ShapeId> query_aabb(const Aabb& box) const;
     /// Shapes that contain `point` (m, world frame), by shape index.

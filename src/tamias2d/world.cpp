@@ -8,6 +8,7 @@
 #include "tamias2d/dynamics/island_sleep.hpp"
 #include "tamias2d/dynamics/joint_store.hpp"
 #include "tamias2d/dynamics/model_bridge.hpp"
+#include "tamias2d/dynamics/sensor_overlaps.hpp"
 #include "tamias2d/dynamics/shape_store.hpp"
 #include "tamias2d/dynamics/step_solver.hpp"
 #include "tamias2d/errors.hpp"
@@ -33,6 +34,7 @@ struct World::Impl {
     ShapeStore shapes;
     ContactManager contacts;
     JointStore joints;
+    SensorOverlaps sensors;
     StepSolver solver;
     IslandSleep sleep;
     std::vector<Load> loads;     ///< this step's load-function values (empty when none has one)
@@ -98,6 +100,7 @@ void World::destroy_body(BodyId id) {
     for (std::uint32_t s = b.first_shape; s != null_index;) {
         const std::uint32_t next = w.shapes.shapes[s].next;
         w.contacts.destroy_of_shape(s, w.bodies, w.shapes);
+        w.sensors.remove_shape(s, w.bodies, w.shapes);
         w.shapes.release(s);
         s = next;
     }
@@ -110,13 +113,33 @@ ShapeId World::create_shape(BodyId body_id, const ShapeDef& def) {
     validate(def);
     const std::uint32_t i = w.shapes.create(body_id.index, b, def);
     w.bodies.update_mass(body_id.index, w.shapes); // also copies the body's pose into its shapes
+    if (def.is_sensor)
+        w.sensors.add(i);
     return w.shapes.id(i);
+}
+
+void World::set_filter(ShapeId id, const Filter& filter) {
+    Impl& w = *impl_;
+    const Shape& sh = w.shapes.get(id);
+    w.shapes.defs[id.index].filter = filter;
+    w.contacts.refilter(id.index, w.bodies, w.shapes, w.joints);
+    w.shapes.broad_phase.touch_proxy(sh.proxy); // the pairs it now admits, at the next step
+}
+
+Filter World::filter(ShapeId id) const {
+    impl_->shapes.get(id);
+    return impl_->shapes.defs[id.index].filter;
+}
+
+void World::set_custom_filter(std::function<bool(ShapeId, ShapeId)> filter) {
+    impl_->contacts.custom_filter = std::move(filter);
 }
 
 void World::destroy_shape(ShapeId id) {
     Impl& w = *impl_;
     const std::uint32_t body = w.shapes.get(id).body;
     w.contacts.destroy_of_shape(id.index, w.bodies, w.shapes);
+    w.sensors.remove_shape(id.index, w.bodies, w.shapes);
     w.shapes.destroy(id.index, w.bodies.bodies[body]);
     w.bodies.update_mass(body, w.shapes);
 }
@@ -409,6 +432,8 @@ void World::step(double dt) {
     w.broken.clear();
     w.contacts.begin_events.clear();
     w.contacts.end_events.clear();
+    w.sensors.begin_events.clear();
+    w.sensors.end_events.clear();
     w.contacts.find_new(w.bodies, w.shapes, w.joints);
     const double h = dt / w.def.substeps;
     w.inv_h = w.def.substeps / dt;
@@ -434,6 +459,9 @@ void World::step(double dt) {
         w.solver.finalize(w.bodies, w.shapes);
         w.break_joints();
     }
+    // DD28: the sensors see the poses this step made.
+    if (!w.sensors.empty())
+        w.sensors.update(w.bodies, w.shapes, w.contacts);
     // Compensated sum, so that a load switching at t = n dt is seen at step n, not n + 1.
     const double y = dt - w.time_error;
     const double t = w.time + y;
@@ -665,6 +693,12 @@ std::span<const ContactEvent> World::contact_begin_events() const {
 std::span<const ContactEvent> World::contact_end_events() const {
     return impl_->contacts.end_events;
 }
+std::span<const SensorEvent> World::sensor_begin_events() const {
+    return impl_->sensors.begin_events;
+}
+std::span<const SensorEvent> World::sensor_end_events() const {
+    return impl_->sensors.end_events;
+}
 
 std::vector<ShapeId> World::query_aabb(const Aabb& box) const {
     std::vector<ShapeId> out;
@@ -702,6 +736,8 @@ std::optional<RayCastHit> World::ray_cast(Vec2d origin, Vec2d translation) const
     std::optional<RayCastHit> best;
     impl_->shapes.broad_phase.query(inflated(box, 1e-9), [&](int proxy) {
         const std::uint32_t s = impl_->shapes.broad_phase.user_data(proxy);
+        if (impl_->shapes.defs[s].is_sensor)
+            return true; // a sensor is not there for rays (DD28)
         const Shape& sh = impl_->shapes.shapes[s];
         const auto hit = tamias2d::ray_cast(impl_->shapes.defs[s].geometry,
                                             impl_->bodies.bodies[sh.body].xf, origin, translation);
@@ -796,6 +832,11 @@ std::uint64_t World::state_hash() const {
         hs(d.material.density);
         hs(d.material.restitution);
         hs(d.material.friction);
+        if (!(d.filter == Filter{}) || d.is_sensor) { // (default shapes hash as they always did)
+            hs(std::uint64_t(d.filter.category_bits) << 32 | d.filter.mask_bits);
+            hs(std::uint64_t(std::uint32_t(d.filter.group_index)) << 1 |
+               std::uint64_t(d.is_sensor));
+        }
     }
     if (w.joints.live() > 0) { // (so that worlds without joints hash as they always did)
         for (std::uint32_t i = 0; i < w.joints.joints.size(); ++i) {

@@ -40,6 +40,9 @@ class BroadPhase {
     /// tree nodes asked for ahead: the world's write-back gathers its moves into one call, as
     /// each enlargement walks scattered nodes (rain_16k).
     void move_proxies(std::span<const ProxyMove> moves);
+    /// Marks a proxy moved without moving it: the next update_pairs reports its pairs again
+    /// (its shape's filter changed, so pairs once refused may now be wanted).
+    void touch_proxy(int proxy) { mark_moved(proxy); }
 
     const Aabb& fat_aabb(int proxy) const { return tree(proxy).aabb(node(proxy)); }
     std::uint32_t user_data(int proxy) const { return tree(proxy).user_data(node(proxy)); }

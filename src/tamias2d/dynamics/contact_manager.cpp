@@ -8,21 +8,17 @@
 #include "tamias2d/dynamics/joint_store.hpp"
 #include "tamias2d/dynamics/shape_store.hpp"
 #include "tamias2d/math/prefetch.hpp"
+#include "tamias2d/model/dd27_collision_filter.hpp"
 
 namespace tamias2d {
-namespace {
 
-bool should_collide(const BodyStore& bodies, const ShapeStore& shapes, const JointStore& joints,
-                    std::uint32_t sa, std::uint32_t sb) {
-    const std::uint32_t ia = shapes.shapes[sa].body, ib = shapes.shapes[sb].body;
-    const Body& a = bodies.bodies[ia];
-    const Body& b = bodies.bodies[ib];
-    if (ia == ib)
-        return false;
-    if (a.type != BodyType::dynamic && b.type != BodyType::dynamic)
-        return false;
-    return joints.live() == 0 || !joints.filters(ia, ib);
+/// DD27's rule on two shapes' filters.
+bool admits(const Filter& a, const Filter& b) {
+    return model::dd27::should_collide({a.category_bits, a.mask_bits, a.group_index},
+                                       {b.category_bits, b.mask_bits, b.group_index});
 }
+
+namespace {
 
 /// What the colouring needs of a contact (EdgeInput).
 ContactManager::EdgeInput edge_input(const Contact& c) {
@@ -84,6 +80,36 @@ void ContactManager::destroy_between(std::uint32_t a, std::uint32_t b, BodyStore
     for (std::uint32_t i = std::uint32_t(contacts.size()); i-- > 0;) {
         const Contact& c = contacts[i];
         if ((c.body_a == a && c.body_b == b) || (c.body_a == b && c.body_b == a))
+            destroy(i, bodies, shapes);
+    }
+}
+
+bool ContactManager::should_collide(const BodyStore& bodies, const ShapeStore& shapes,
+                                    const JointStore& joints, std::uint32_t sa,
+                                    std::uint32_t sb) const {
+    const std::uint32_t ia = shapes.shapes[sa].body, ib = shapes.shapes[sb].body;
+    const Body& a = bodies.bodies[ia];
+    const Body& b = bodies.bodies[ib];
+    if (ia == ib)
+        return false;
+    if (a.type != BodyType::dynamic && b.type != BodyType::dynamic)
+        return false;
+    if (joints.live() != 0 && joints.filters(ia, ib))
+        return false;
+    const ShapeDef& da = shapes.defs[sa];
+    const ShapeDef& db = shapes.defs[sb];
+    if (da.is_sensor || db.is_sensor)
+        return false;
+    return admits(da.filter, db.filter) &&
+           (!custom_filter || custom_filter(shapes.id(sa), shapes.id(sb)));
+}
+
+void ContactManager::refilter(std::uint32_t s, BodyStore& bodies, const ShapeStore& shapes,
+                              const JointStore& joints) {
+    for (std::uint32_t i = std::uint32_t(contacts.size()); i-- > 0;) {
+        const Contact& c = contacts[i];
+        if ((c.shape_a == s || c.shape_b == s) &&
+            !should_collide(bodies, shapes, joints, c.shape_a, c.shape_b))
             destroy(i, bodies, shapes);
     }
 }

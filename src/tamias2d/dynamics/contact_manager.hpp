@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -15,12 +16,16 @@
 #include "tamias2d/dynamics/contact_constraint.hpp"
 #include "tamias2d/memory/large_array.hpp"
 #include "tamias2d/memory/pair_map.hpp"
+#include "tamias2d/shape_def.hpp"
 
 namespace tamias2d {
 
 struct BodyStore;
 class ShapeStore;
 class JointStore;
+
+/// DD27's rule: whether two shapes' filters let them collide (or a sensor detect a shape).
+bool admits(const Filter& a, const Filter& b);
 
 class ContactManager {
   public:
@@ -39,6 +44,13 @@ class ContactManager {
     /// totals (contact report).
     LargeArray<ContactImpulses> warm_impulses, total_impulses;
     std::vector<ContactEvent> begin_events, end_events;
+    /// The user's filter, asked for each new pair the rules admit (empty: none).
+    std::function<bool(ShapeId, ShapeId)> custom_filter;
+    /// Whether the rules and the filters let shapes sa and sb collide (DD27): not two shapes of
+    /// one body, two immovable bodies or bodies a joint keeps apart, no sensor (sensors have
+    /// no contacts: SensorOverlaps), and admitted by the filters and the user's filter.
+    bool should_collide(const BodyStore& bodies, const ShapeStore& shapes, const JointStore& joints,
+                        std::uint32_t sa, std::uint32_t sb) const;
 
     std::uint32_t size() const { return std::uint32_t(contacts.size()); }
 
@@ -58,6 +70,10 @@ class ContactManager {
     /// Destroys every contact between bodies a and b (a joint now keeps them apart).
     void destroy_between(std::uint32_t a, std::uint32_t b, BodyStore& bodies,
                          const ShapeStore& shapes);
+    /// Destroys the contacts of shape s that its filter (changed) no longer admits; the pairs
+    /// it now admits are found by the next step (its proxy is marked moved by the caller).
+    void refilter(std::uint32_t s, BodyStore& bodies, const ShapeStore& shapes,
+                  const JointStore& joints);
     /// Wakes every body touching body i: what keeps them up may have gone (a static body does
     /// not move in a step, so its contacts with sleeping bodies are not updated).
     void wake_touching(std::uint32_t i, BodyStore& bodies) const;

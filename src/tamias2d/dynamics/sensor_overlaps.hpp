@@ -1,0 +1,43 @@
+// The sensors (internal, DD28): each sensor shape's overlapping shapes after the last step and
+// the begin and end events their changes make. Sensors have no contacts: after each step every
+// sensor asks the broad phase for the shapes near it and the narrow phase (R7's) whether they
+// overlap, so that an event belongs to the step whose motion made it. Box2D v3 keeps sensors
+// apart from contacts the same way (sensor.c).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "tamias2d/contact_info.hpp"
+
+namespace tamias2d {
+
+struct BodyStore;
+class ShapeStore;
+class ContactManager;
+
+class SensorOverlaps {
+  public:
+    std::vector<SensorEvent> begin_events, end_events; ///< the last step's (and destructions')
+
+    /// A sensor shape was created: it overlaps nothing until the next step's update.
+    void add(std::uint32_t sensor_shape);
+    /// Shape s leaves the world (destroyed, or its body): the overlaps it ends become end
+    /// events now, whether it is a sensor or a visitor. Call before its slot is released.
+    void remove_shape(std::uint32_t s, const BodyStore& bodies, const ShapeStore& shapes);
+    /// \srs{DD28} After a step: each sensor's overlaps now, in shape order, against the last
+    /// step's; a shape that overlaps now and did not gives a begin event, one that did and no
+    /// longer does an end event. Sensors in creation order, visitors in shape order.
+    void update(const BodyStore& bodies, const ShapeStore& shapes, const ContactManager& rules);
+    bool empty() const { return sensors_.empty(); }
+
+  private:
+    struct Sensor {
+        std::uint32_t shape;
+        std::vector<std::uint32_t> visitors; ///< shape indices, ascending
+    };
+    std::vector<Sensor> sensors_;
+    std::vector<std::uint32_t> now_; ///< scratch: one sensor's overlaps this step
+};
+
+} // namespace tamias2d
