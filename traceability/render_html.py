@@ -3,6 +3,7 @@ are inline SVG; plots are SVG files under reports/plots/)."""
 from __future__ import annotations
 
 import html
+import json
 import os
 import re
 
@@ -108,6 +109,9 @@ ul.compact{margin:4px 0;padding-left:20px}
 .plots figure{margin:0;border:1px solid var(--line);border-radius:6px;padding:6px;background:#fff}
 .plots img{width:560px;max-width:100%}
 .orphan{color:var(--fail);font-weight:600}
+.player-frame{width:100%;height:640px;border:1px solid var(--line);border-radius:6px;background:#fff}
+table.data td img.thumb{width:210px;border:1px solid var(--line);border-radius:4px;display:block}
+table.data td code.nowrap{white-space:nowrap}
 """
 
 JS = """
@@ -124,6 +128,8 @@ document.querySelectorAll('table.sortable').forEach(function(t){
     });
   });
 });
+var pick=document.getElementById('player-pick');
+if(pick)pick.addEventListener('change',function(){document.getElementById('player-frame').src=pick.value;});
 """
 
 
@@ -187,6 +193,8 @@ commit <code>{E(commit[:12])}</code>{E(dirty)} · {E(ran)} · report schema {E(r
 <a href="#tests">All tests</a><a href="#method">Method &amp; warnings</a>""")
         if os.path.exists(os.path.join(r["inputs"]["out_dir"], "api", "index.html")):
             self.w('<a href="api/index.html">API reference</a>')
+        if self._players():
+            self.w('<a href="#players">Recorded runs</a>')
         self.w("</nav><main>")
 
     def gate(self):
@@ -594,7 +602,65 @@ are labelled with are judged by their other checks:""", g.get("targets_missed"))
                 self.w('<div class="plots">' + "".join(
                     f'<figure><img src="{E(s["svg"])}" alt="{E(str(s.get("name")))}"><figcaption class="small">'
                     f'{E(str(s.get("name")))}</figcaption></figure>' for s in figs) + '</div>')
+        self.players()
         self.w('</section>')
+
+    # Scenes whose motion the V&V evidence refers to, shown first in the player (IM3's
+    # collision, the elastic pair, the pyramid, the rain).
+    FEATURED_PLAYERS = ("collision_im3", "elastic2", "pyramid20", "rain")
+
+    def _players(self):
+        """reports/players/index.json, written by the main job (tests/viewer/check_player.py):
+        one entry per page of `tamias2d view`; [] when absent or unreadable."""
+        path = os.path.join(self.r["inputs"]["out_dir"], "players", "index.json")
+        try:
+            with open(path, encoding="utf-8") as fh:
+                entries = json.load(fh)
+        except (OSError, ValueError):
+            return []
+        return [e for e in entries if isinstance(e, dict) and e.get("name") and e.get("page")]
+
+    def players(self):
+        entries = self._players()
+        if not entries:
+            return
+        featured = sorted(entries, key=lambda e: (e["name"] not in self.FEATURED_PLAYERS,
+                                                  self.FEATURED_PLAYERS.index(e["name"])
+                                                  if e["name"] in self.FEATURED_PLAYERS else 0, e["name"]))
+        first = f'players/{featured[0]["page"]}'
+        self.w('<h3 id="players">Recorded runs (tamias2d view)</h3>')
+        self.w('<p class="small">The example scenes run by <code>tamias2d view</code>, each into one '
+               'self-contained page (docs/viewer.md) that plays the recorded states: play, step, '
+               'scrub, zoom (wheel), pan (drag), contacts, AABBs, velocities, trails, joints, the '
+               'state of the body under the cursor and the energy (DD15, DD16). Headless Chromium '
+               'checked each page (tests/viewer/check_player.py): its states equal '
+               '<code>tamias2d run</code>\'s CSV to half a quantisation step, and its screenshots '
+               'show the bodies.</p>')
+        options = "".join(f'<option value="players/{E(e["page"])}">{E(e["name"])}</option>' for e in featured)
+        self.w(f'<p><label>Scene: <select id="player-pick">{options}</select></label> '
+               f'<span class="small mute">(or open a page from the table)</span></p>'
+               f'<iframe id="player-frame" class="player-frame" src="{E(first)}" loading="lazy" '
+               f'title="Recorded run"></iframe>')
+        self.w('<table class="data sortable"><thead><tr><th>Scene</th><th>Recorded</th>'
+               '<th class="num">Page size</th><th>Browser check</th><th>Middle frame</th></tr></thead><tbody>')
+        for e in sorted(entries, key=lambda e: e["name"]):
+            page = f'players/{e["page"]}'
+            result = str(e.get("result") or "")
+            status = "passed" if result.startswith("OK") else "failed" if result.startswith("failed") else "skipped"
+            size = e.get("bytes")
+            size_text = (f"{size / 1e6:.2f} MB" if size >= 1e5 else f"{size / 1e3:.0f} kB") \
+                if isinstance(size, (int, float)) else ""
+            recorded = ", ".join(x for x in (
+                f'{e["frames"]} frames' if e.get("frames") is not None else "",
+                f'{e["bodies"]} bodies' if e.get("bodies") is not None else "",
+                f'<code class="nowrap">{E(e["options"])}</code>' if e.get("options") else "") if x)
+            shot = (f'<a href="{E(page)}"><img class="thumb" loading="lazy" src="players/{E(e["screenshot"])}" '
+                    f'alt="{E(e["name"])}"></a>') if e.get("screenshot") else '<span class="mute">none</span>'
+            desc = f'<div class="small mute">{E(str(e["description"]))}</div>' if e.get("description") else ""
+            self.w(f'<tr><td><a href="{E(page)}">{E(e["name"])}</a>{desc}</td><td>{recorded}</td>'
+                   f'<td class="num" data-sort="{E(str(size or 0))}">{E(size_text)}</td>'
+                   f'<td>{badge(status)} <span class="small">{E(result)}</span></td><td>{shot}</td></tr>')
+        self.w('</tbody></table>')
 
     def coverage(self):
         cov = self.r["coverage"]

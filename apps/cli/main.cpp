@@ -2,6 +2,7 @@
 //
 //   tamias2d run <scene.json | -> [--steps N] [--every K] [--format csv|json] [-o FILE]
 //   tamias2d validate <scene.json | ->
+//   tamias2d view <scene.json | -> [--steps N] [--every K] [-o FILE]   (view_command.cpp)
 //   tamias2d info
 //   tamias2d help [COMMAND] | --help | --version
 //
@@ -29,6 +30,7 @@
 #include "tamias2d/errors.hpp"
 #include "tamias2d/io/scene.hpp"
 #include "tamias2d/world.hpp"
+#include "view_command.hpp"
 
 namespace {
 
@@ -37,6 +39,7 @@ using namespace tamias2d;
 constexpr const char* usage = R"(Usage:
   tamias2d run <scene.json | -> [--steps N] [--every K] [--format csv|json] [-o FILE]
   tamias2d validate <scene.json | ->
+  tamias2d view <scene.json | -> [--steps N] [--every K] [-o FILE.html]
   tamias2d info
   tamias2d help [COMMAND]
   tamias2d --help | --version
@@ -44,6 +47,7 @@ constexpr const char* usage = R"(Usage:
 Commands:
   run        Simulate a scene and write the bodies' states (SI units).
   validate   Parse and check a scene without running it; print a one-line summary.
+  view       Simulate a scene and write a self-contained HTML page that plays the run.
   info       Print the version, the solver's instruction set on this machine and the build.
   help       Print this text, or a command's own (also: tamias2d COMMAND --help).
 
@@ -100,13 +104,13 @@ const char* usage_of(std::string_view command) {
         return validate_usage;
     if (command == "info")
         return info_usage;
+    if (command == "view")
+        return cli::view_usage;
     return nullptr;
 }
 
-/// A bad command line (exit status 2).
-struct UsageError : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
+/// A bad command line (exit status 2); shared with view_command.cpp.
+using UsageError = cli::UsageError;
 
 struct Options {
     std::string command;
@@ -130,20 +134,21 @@ int parse_count(std::string_view option, std::string_view text) {
 Options parse_args(const std::vector<std::string_view>& args) {
     Options o;
     if (args.empty())
-        throw UsageError("missing command (run, validate, info or help)");
+        throw UsageError("missing command (run, validate, view, info or help)");
     o.command = args[0];
     if (o.command == "help") {
         if (args.size() > 2)
             throw UsageError("help takes at most one command");
         if (args.size() == 2 && usage_of(args[1]) == nullptr)
             throw UsageError("no help for '" + std::string(args[1]) +
-                             "' (commands: run, validate, info)");
+                             "' (commands: run, validate, view, info)");
         o.help = true;
         o.command = args.size() == 2 ? std::string(args[1]) : std::string{};
         return o;
     }
     if (usage_of(o.command) == nullptr)
-        throw UsageError("unknown command '" + o.command + "' (expected run, validate or info)");
+        throw UsageError("unknown command '" + o.command +
+                         "' (expected run, validate, view or info)");
     for (std::size_t i = 1; i < args.size(); ++i) {
         const std::string_view a = args[i];
         const auto value = [&]() -> std::string_view {
@@ -377,6 +382,8 @@ int main(int argc, char** argv) {
         return 0;
     }
     try {
+        if (!args.empty() && args[0] == "view") // its own options (view_command.cpp)
+            return cli::view_command(std::span(args).subspan(1), {load, display_name});
         return run(parse_args(args));
     } catch (const UsageError& e) {
         std::cerr << "tamias2d: error: " << one_line(e.what()) << " (see tamias2d --help)\n";
