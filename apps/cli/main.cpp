@@ -296,12 +296,12 @@ std::string display_name(const std::string& scene) {
     return scene == "-" ? std::string("<stdin>") : scene;
 }
 
-/// The scene named on the command line; "-" is standard input.
+/// The scene named on the command line; "-" is standard input. Both are read in chunks up to
+/// the scene size limit (io::max_scene_bytes), so an endless input is refused promptly.
 io::Scene load(const std::string& scene) {
     if (scene != "-")
         return io::load_scene(scene);
-    const std::string text{std::istreambuf_iterator<char>(std::cin), {}};
-    return io::parse_scene(text, display_name(scene));
+    return io::load_scene(std::cin, display_name(scene));
 }
 
 int run(const Options& o) {

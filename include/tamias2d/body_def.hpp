@@ -30,7 +30,7 @@ using LoadFunction = std::function<Load(double t)>;
 struct BodyDef {
     BodyType type = BodyType::dynamic; ///< how the body moves
     Vec2d position{};                  ///< m, world position of the body origin
-    double angle = 0.0;                ///< rad, orientation phi (any real; read back in [0, 2 pi))
+    double angle = 0.0;                ///< rad, orientation (|phi| <= 1e12; read back in [0, 2 pi))
     Vec2d linear_velocity{};           ///< m s^-1, of the centre of mass
     double angular_velocity = 0.0;     ///< rad s^-1, CCW positive
     Vec2d force{};                     ///< N, persistent force at the centre of mass

@@ -33,6 +33,8 @@ struct RayCastHit {
 /// \srs{R1} The space in which all rigid bodies of a simulation interact.
 /// Every mutating call validates its input first (SRS R4) and throws ValidationError or
 /// InvalidHandle (errors.hpp) without changing anything: the world is left exactly as it was.
+/// Every real input must be finite (DCX_finite) and within the supported range (DCX_range:
+/// magnitudes up to 1e12 in SI units, sizes from 1e-12; docs/design.md, "Supported ranges").
 class World {
   public:
     /// An empty world with the given settings; throws ValidationError if a setting breaks its
@@ -81,7 +83,9 @@ class World {
     std::size_t body_count() const;                 ///< bodies that exist
 
     // --- stepping (R5, R6, R7, R8) ---
-    /// Advances by dt (s, > 0 and finite).
+    /// Advances by dt (s, in [1e-12, 1e12]). Throws ValidationError (DCX_range), changing
+    /// nothing, if a moving body's position, velocity, angle or angular velocity has grown
+    /// beyond 1e24 in SI units, or a load function returns a value beyond the supported range.
     void step(double dt);
     double time() const;              ///< s, simulated so far
     void set_gravity(Vec2d g);        ///< m s^-2 (GD2)
@@ -121,11 +125,13 @@ class World {
     void set_force(BodyId body, Vec2d force);
     /// Persistent torque (N m, CCW positive) until changed.
     void set_torque(BodyId body, double torque);
-    /// One-step force at a world point (N at m): the torque r x F (DD13) comes with it.
+    /// One-step force at a world point (N at m): the torque r x F (DD13) comes with it. The
+    /// one-step forces and torques applied before a step must sum to at most 1e24 (DCX_range).
     void apply_force(BodyId body, Vec2d force, Vec2d world_point);
     /// One-step torque (N m), cleared after the next step.
     void apply_torque(BodyId body, double torque);
-    /// Instantaneous impulse J (N s) at a world point: dv = J / m (DD10), domega = r x J / I.
+    /// Instantaneous impulse J (N s) at a world point: dv = J / m (DD10), domega = r x J / I;
+    /// refused (DCX_range) if the velocities it gives exceed 1e24.
     void apply_impulse(BodyId body, Vec2d impulse, Vec2d world_point);
     /// Time-varying load F(t), tau(t); an empty function removes it.
     void set_load(BodyId body, LoadFunction load);
@@ -230,7 +236,8 @@ class World {
     /// Shapes that contain `point` (m, world frame), by shape index.
     std::vector<ShapeId> query_point(Vec2d point) const;
     /// The first shape met by the segment origin -> origin + translation (m), if any; ties go
-    /// to the lower shape index so that the answer is deterministic.
+    /// to the lower shape index so that the answer is deterministic. Both within the supported
+    /// range (DCX_range, |x| <= 1e12 m), so that the answer is never NaN.
     std::optional<RayCastHit> ray_cast(Vec2d origin, Vec2d translation) const;
 
     /// A hash of the complete simulation state (bit patterns of every double): equal hashes

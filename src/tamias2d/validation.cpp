@@ -1,11 +1,13 @@
 #include "tamias2d/validation.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <utility>
 
 #include "tamias2d/errors.hpp"
 #include "tamias2d/geometry/shape_factory.hpp"
+#include "tamias2d/math/vec2d.hpp"
 
 namespace tamias2d {
 
@@ -20,10 +22,92 @@ void require_finite(std::string_view field, Vec2d value) {
     require_finite(std::string(field) + ".y", value.y);
 }
 
+namespace {
+std::string with_unit(std::string_view unit) {
+    return unit.empty() ? std::string{} : " " + std::string(unit);
+}
+} // namespace
+
+void require_within(std::string_view field, double value, double max, std::string_view unit) {
+    require_finite(field, value);
+    if (!(std::abs(value) <= max))
+        throw ValidationError(std::string(field), value,
+                              "must be in [-" + detail::format_value(max) + ", " +
+                                  detail::format_value(max) + "]" + with_unit(unit) +
+                                  ", the supported range",
+                              "DCX_range");
+}
+
+void require_within(std::string_view field, Vec2d value, double max, std::string_view unit) {
+    require_within(std::string(field) + ".x", value.x, max, unit);
+    require_within(std::string(field) + ".y", value.y, max, unit);
+}
+
+void require_scale(std::string_view field, double value, double lo, double hi,
+                   std::string_view unit) {
+    if (!(value >= lo && value <= hi))
+        throw ValidationError(std::string(field), value,
+                              "must be in [" + detail::format_value(lo) + ", " +
+                                  detail::format_value(hi) + "]" + with_unit(unit) +
+                                  ", the supported range",
+                              "DCX_range");
+}
+
+void validate_size(std::string_view field, double value) {
+    require_finite(field, value);
+    if (!(value > 0.0))
+        throw ValidationError(std::string(field), value, "must be > 0", "DCX_shape");
+    require_scale(field, value, supported::input_min, supported::input_max, "m");
+}
+
+namespace {
+double cross(Vec2d a, Vec2d b) {
+    return a.x * b.y - a.y * b.x;
+}
+/// Distance from p to the line through a and b, as make_polygon computes it.
+double distance_to_line(Vec2d a, Vec2d b, Vec2d p) {
+    return std::abs(cross(b - a, p - a)) / length(b - a);
+}
+} // namespace
+
+void validate_proportions(const Polygon& p) {
+    const int n = p.count;
+    double lo_x = p.vertices[0].x, hi_x = lo_x, lo_y = p.vertices[0].y, hi_y = lo_y;
+    for (int i = 1; i < n; ++i) {
+        lo_x = std::min(lo_x, p.vertices[i].x);
+        hi_x = std::max(hi_x, p.vertices[i].x);
+        lo_y = std::min(lo_y, p.vertices[i].y);
+        hi_y = std::max(hi_y, p.vertices[i].y);
+    }
+    const double extent = std::max(hi_x - lo_x, hi_y - lo_y);
+    const double tol = hull_weld_tolerance * extent;
+    // make_polygon's final check, term for term, on the same vertex triples and the same fan
+    // (its hull order is the polygon's); the area's sign is dropped so that a clockwise
+    // polygon reaches validate's orientation check instead.
+    double twice_area = 0.0;
+    double min_height = extent;
+    for (int i = 0; i < n; ++i) {
+        twice_area += cross(p.vertices[i] - p.vertices[0], p.vertices[(i + 1) % n] - p.vertices[0]);
+        min_height = std::min(min_height, distance_to_line(p.vertices[(i + n - 1) % n],
+                                                           p.vertices[(i + 1) % n], p.vertices[i]));
+    }
+    const std::string of_extent = detail::format_value(hull_weld_tolerance) + " x the extent (" +
+                                  detail::format_value(extent) + " m)";
+    if (!(min_height >= tol))
+        throw ValidationError("polygon.thickness", min_height,
+                              "must be >= " + of_extent +
+                                  ": every vertex that far from its neighbours' chord (a sliver)",
+                              "DCX_shape");
+    if (!(std::abs(twice_area) > 2.0 * tol * extent))
+        throw ValidationError("polygon.area", 0.5 * twice_area,
+                              "must be > " + of_extent + " x the extent (a sliver)", "DCX_shape");
+}
+
 void validate_mass(std::string_view field, double mass) {
     require_finite(field, mass);
     if (!(mass > 0.0))
         throw ValidationError(std::string(field), mass, "must be > 0", "DCI_m");
+    require_scale(field, mass, supported::mass_min, supported::mass_max, "kg");
 }
 
 void validate_inertia(std::string_view field, double inertia) {
@@ -31,23 +115,27 @@ void validate_inertia(std::string_view field, double inertia) {
     if (!(inertia > 0.0)) {
         throw ValidationError(std::string(field), inertia, "must be > 0", "DCI_I");
     }
+    require_scale(field, inertia, supported::inertia_min, supported::inertia_max, "kg m^2");
 }
 
 void validate_damping(std::string_view field, double rate) {
     require_finite(field, rate);
     if (!(rate >= 0.0))
         throw ValidationError(std::string(field), rate, "must be >= 0", "DCX_damping");
+    require_within(field, rate, supported::input_max, "s^-1");
 }
 
 void validate(const BodyDef& def) {
-    require_finite("body.position", def.position);
-    // DCI_phi: any real orientation is accepted on input and wrapped to [0, 2 pi) on output.
-    require_finite("body.angle", def.angle);
-    require_finite("body.linear_velocity", def.linear_velocity);
-    require_finite("body.angular_velocity", def.angular_velocity);
-    require_finite("body.force", def.force);
-    require_finite("body.torque", def.torque);
-    require_finite("body.gravity_scale", def.gravity_scale);
+    using supported::input_max;
+    require_within("body.position", def.position, input_max, "m");
+    // DCI_phi: any real orientation (within the supported range: joints multiply angle
+    // differences) is accepted on input and wrapped to [0, 2 pi) on output.
+    require_within("body.angle", def.angle, input_max, "rad");
+    require_within("body.linear_velocity", def.linear_velocity, input_max, "m s^-1");
+    require_within("body.angular_velocity", def.angular_velocity, input_max, "rad s^-1");
+    require_within("body.force", def.force, input_max, "N");
+    require_within("body.torque", def.torque, input_max, "N m");
+    require_within("body.gravity_scale", def.gravity_scale, input_max, "");
     validate_damping("body.linear_damping", def.linear_damping);
     validate_damping("body.angular_damping", def.angular_damping);
     if (def.mass)
@@ -61,6 +149,8 @@ void validate(const Material& material) {
     if (!(material.density > 0.0)) {
         throw ValidationError("material.density", material.density, "must be > 0", "DCX_density");
     }
+    require_scale("material.density", material.density, supported::input_min, supported::input_max,
+                  "kg m^-2");
     require_finite("material.restitution", material.restitution);
     if (!(material.restitution >= 0.0 && material.restitution <= 1.0)) {
         throw ValidationError("material.restitution", material.restitution, "must be in [0, 1]",
@@ -71,9 +161,47 @@ void validate(const Material& material) {
         throw ValidationError("material.friction", material.friction, "must be >= 0",
                               "DCX_friction");
     }
+    require_within("material.friction", material.friction, supported::input_max, "");
 }
 
+namespace {
+/// DCX_range of a shape's numbers that are finite and positive where they must be (the rest is
+/// left to validate(Geometry), which names them): before the structural checks, which a shape
+/// too large or too small for doubles fails with a meaningless message (a normal of length 0).
+void validate_geometry_range(const Geometry& g) {
+    using supported::input_max;
+    if (g.type == ShapeType::circle) {
+        if (std::isfinite(g.circle.radius) && g.circle.radius > 0.0)
+            validate_size("shape.radius", g.circle.radius);
+        if (std::isfinite(g.circle.center.x) && std::isfinite(g.circle.center.y))
+            require_within("shape.center", g.circle.center, input_max, "m");
+        return;
+    }
+    const Polygon& p = g.polygon;
+    if (p.count < 3 || p.count > max_polygon_vertices)
+        return;
+    for (int i = 0; i < p.count; ++i) {
+        if (!std::isfinite(p.vertices[i].x) || !std::isfinite(p.vertices[i].y))
+            return;
+    }
+    for (int i = 0; i < p.count; ++i)
+        require_within("polygon.vertices[" + std::to_string(i) + "]", p.vertices[i], input_max,
+                       "m");
+    double lo_x = p.vertices[0].x, hi_x = lo_x, lo_y = p.vertices[0].y, hi_y = lo_y;
+    for (int i = 1; i < p.count; ++i) {
+        lo_x = std::min(lo_x, p.vertices[i].x);
+        hi_x = std::max(hi_x, p.vertices[i].x);
+        lo_y = std::min(lo_y, p.vertices[i].y);
+        hi_y = std::max(hi_y, p.vertices[i].y);
+    }
+    require_scale("polygon.extent", std::max(hi_x - lo_x, hi_y - lo_y), supported::input_min,
+                  2.0 * input_max, "m");
+    validate_proportions(p);
+}
+} // namespace
+
 void validate(const ShapeDef& def) {
+    validate_geometry_range(def.geometry);
     validate(def.geometry);
     validate(def.material);
 }
@@ -90,10 +218,25 @@ void validate_joint_bodies(BodyId a, BodyId b, bool movable, double break_force)
         throw ValidationError("joint.break_force", break_force, "must be > 0", "DCX_joint");
 }
 
-void non_negative(const char* field, double v) {
+/// A frequency, damping ratio or length >= 0, within the supported range.
+void non_negative(const char* field, double v, std::string_view unit = "") {
     require_finite(field, v);
     if (!(v >= 0.0))
         throw ValidationError(field, v, "must be >= 0", "DCX_joint");
+    require_within(field, v, supported::input_max, unit);
+}
+
+/// A frequency (Hz) already checked >= 0: 0 (off, where allowed) or within [input_min,
+/// input_max]. A smaller one underflows h omega to zero, and with a damping ratio of 0 the soft
+/// step's omega / (2 zeta + h omega) divides by zero.
+void frequency(const char* field, double hertz) {
+    if (hertz != 0.0)
+        require_scale(field, hertz, supported::input_min, supported::input_max, "Hz");
+}
+
+/// A point (m): finite and within the supported range.
+void point(const char* field, Vec2d p) {
+    require_within(field, p, supported::input_max, "m");
 }
 
 /// An enabled spring: hertz > 0 and damping ratio >= 0 (a disabled one's values are unused,
@@ -103,110 +246,123 @@ void validate_spring(bool enabled, double hertz, double damping_ratio) {
     if (enabled && !(hertz > 0.0))
         throw ValidationError("joint.hertz", hertz, "must be > 0 with the spring enabled",
                               "DCX_joint");
-    non_negative("joint.hertz", hertz);
+    non_negative("joint.hertz", hertz, "Hz");
+    frequency("joint.hertz", hertz);
     non_negative("joint.damping_ratio", damping_ratio);
 }
 
-/// Limits lower <= upper, both finite (named as the definition names them).
-void validate_limits(const char* lower_field, double lower, const char* upper_field, double upper) {
-    require_finite(lower_field, lower);
-    require_finite(upper_field, upper);
+/// Limits lower <= upper, both finite and within the supported range (named as the definition
+/// names them; `unit`: rad or m).
+void validate_limits(const char* lower_field, double lower, const char* upper_field, double upper,
+                     std::string_view unit) {
+    require_within(lower_field, lower, supported::input_max, unit);
+    require_within(upper_field, upper, supported::input_max, unit);
     if (!(lower <= upper))
         throw ValidationError(upper_field, upper, std::string("must be >= ") + (lower_field + 6),
                               "DCX_joint");
 }
 
-/// A motor: finite speed, largest force or torque >= 0 (infinite: unbounded).
-void validate_motor(double speed, const char* max_field, double max) {
-    require_finite("joint.motor_speed", speed);
+/// A motor: a speed within the supported range, largest force or torque >= 0 (infinite:
+/// unbounded; it only clamps, so any value is safe).
+void validate_motor(double speed, std::string_view speed_unit, const char* max_field, double max) {
+    require_within("joint.motor_speed", speed, supported::input_max, speed_unit);
     if (!(max >= 0.0))
         throw ValidationError(max_field, max, "must be >= 0", "DCX_joint");
 }
 
-/// An axis: finite and of non-zero length (it is normalised).
+/// An axis: finite and of non-zero length (it is normalised); DCX_range: components within
+/// input_max and a length of at least input_min, so that its squared length neither overflows
+/// nor underflows (either would normalise it to zero).
 void validate_axis(Vec2d axis) {
-    require_finite("joint.axis", axis);
-    if (!(axis.x * axis.x + axis.y * axis.y > 0.0))
-        throw ValidationError("joint.axis", std::sqrt(axis.x * axis.x + axis.y * axis.y),
-                              "must have a non-zero length", "DCX_joint");
+    require_within("joint.axis", axis, supported::input_max, "");
+    const double len = std::hypot(axis.x, axis.y);
+    if (!(len > 0.0))
+        throw ValidationError("joint.axis", len, "must have a non-zero length", "DCX_joint");
+    require_scale("joint.axis", len, supported::input_min, 2.0 * supported::input_max, "");
 }
 } // namespace
 
 void validate(const DistanceJointDef& def, bool movable) {
     validate_joint_bodies(def.body_a, def.body_b, movable, def.break_force);
-    require_finite("joint.anchor_a", def.anchor_a);
-    require_finite("joint.anchor_b", def.anchor_b);
+    point("joint.anchor_a", def.anchor_a);
+    point("joint.anchor_b", def.anchor_b);
     const Vec2d d = def.anchor_b - def.anchor_a;
     const double length = def.length.value_or(std::sqrt(d.x * d.x + d.y * d.y));
     require_finite("joint.length", length);
     if (!(length > 0.0))
         throw ValidationError("joint.length", length,
                               "must be > 0 (given, or the anchors' distance)", "DCX_joint");
-    non_negative("joint.hertz", def.hertz);
+    if (def.length) // (the anchors' distance is within range with them)
+        require_within("joint.length", *def.length, supported::input_max, "m");
+    non_negative("joint.hertz", def.hertz, "Hz");
+    frequency("joint.hertz", def.hertz);
     non_negative("joint.damping_ratio", def.damping_ratio);
-    non_negative("joint.min_length", def.min_length);
+    non_negative("joint.min_length", def.min_length, "m");
     if (!(def.max_length >= def.min_length)) // an infinite max_length: no upper bound
         throw ValidationError("joint.max_length", def.max_length, "must be >= min_length",
                               "DCX_joint");
+    if (std::isfinite(def.max_length)) // the limit multiplies its error: a finite one is bounded
+        require_within("joint.max_length", def.max_length, supported::input_max, "m");
 }
 
 void validate(const TargetJointDef& def, bool dynamic) {
     if (!dynamic)
         throw ValidationError("joint.body", double(def.body.index), "must be a dynamic body",
                               "DCX_joint");
-    require_finite("joint.target", def.target);
+    point("joint.target", def.target);
     require_finite("joint.hertz", def.hertz);
     if (!(def.hertz > 0.0))
         throw ValidationError("joint.hertz", def.hertz, "must be > 0", "DCX_joint");
-    require_finite("joint.damping_ratio", def.damping_ratio);
-    if (!(def.damping_ratio >= 0.0))
-        throw ValidationError("joint.damping_ratio", def.damping_ratio, "must be >= 0",
-                              "DCX_joint");
+    frequency("joint.hertz", def.hertz);
+    non_negative("joint.damping_ratio", def.damping_ratio);
     if (!(def.max_force > 0.0))
         throw ValidationError("joint.max_force", def.max_force, "must be > 0", "DCX_joint");
 }
 
 void validate(const RevoluteJointDef& def, bool movable) {
     validate_joint_bodies(def.body_a, def.body_b, movable, def.break_force);
-    require_finite("joint.anchor", def.anchor);
-    validate_limits("joint.lower_angle", def.lower_angle, "joint.upper_angle", def.upper_angle);
-    validate_motor(def.motor_speed, "joint.max_motor_torque", def.max_motor_torque);
+    point("joint.anchor", def.anchor);
+    validate_limits("joint.lower_angle", def.lower_angle, "joint.upper_angle", def.upper_angle,
+                    "rad");
+    validate_motor(def.motor_speed, "rad s^-1", "joint.max_motor_torque", def.max_motor_torque);
     validate_spring(def.enable_spring, def.hertz, def.damping_ratio);
 }
 
 void validate(const PrismaticJointDef& def, bool movable) {
     validate_joint_bodies(def.body_a, def.body_b, movable, def.break_force);
-    require_finite("joint.anchor", def.anchor);
+    point("joint.anchor", def.anchor);
     validate_axis(def.axis);
     validate_limits("joint.lower_translation", def.lower_translation, "joint.upper_translation",
-                    def.upper_translation);
-    validate_motor(def.motor_speed, "joint.max_motor_force", def.max_motor_force);
+                    def.upper_translation, "m");
+    validate_motor(def.motor_speed, "m s^-1", "joint.max_motor_force", def.max_motor_force);
     validate_spring(def.enable_spring, def.hertz, def.damping_ratio);
 }
 
 void validate(const WeldJointDef& def, bool movable) {
     validate_joint_bodies(def.body_a, def.body_b, movable, def.break_force);
-    require_finite("joint.anchor", def.anchor);
-    non_negative("joint.linear_hertz", def.linear_hertz);
+    point("joint.anchor", def.anchor);
+    non_negative("joint.linear_hertz", def.linear_hertz, "Hz");
+    frequency("joint.linear_hertz", def.linear_hertz);
     non_negative("joint.linear_damping_ratio", def.linear_damping_ratio);
-    non_negative("joint.angular_hertz", def.angular_hertz);
+    non_negative("joint.angular_hertz", def.angular_hertz, "Hz");
+    frequency("joint.angular_hertz", def.angular_hertz);
     non_negative("joint.angular_damping_ratio", def.angular_damping_ratio);
 }
 
 void validate(const WheelJointDef& def, bool movable) {
     validate_joint_bodies(def.body_a, def.body_b, movable, def.break_force);
-    require_finite("joint.anchor", def.anchor);
+    point("joint.anchor", def.anchor);
     validate_axis(def.axis);
     validate_spring(def.enable_spring, def.hertz, def.damping_ratio);
     validate_limits("joint.lower_translation", def.lower_translation, "joint.upper_translation",
-                    def.upper_translation);
-    validate_motor(def.motor_speed, "joint.max_motor_torque", def.max_motor_torque);
+                    def.upper_translation, "m");
+    validate_motor(def.motor_speed, "rad s^-1", "joint.max_motor_torque", def.max_motor_torque);
 }
 
 void validate(const MotorJointDef& def, bool movable) {
     validate_joint_bodies(def.body_a, def.body_b, movable, def.break_force);
-    require_finite("joint.linear_offset", def.linear_offset);
-    require_finite("joint.angular_offset", def.angular_offset);
+    point("joint.linear_offset", def.linear_offset);
+    require_within("joint.angular_offset", def.angular_offset, supported::input_max, "rad");
     if (!(def.max_force >= 0.0))
         throw ValidationError("joint.max_force", def.max_force, "must be >= 0", "DCX_joint");
     if (!(def.max_torque >= 0.0))
@@ -218,37 +374,42 @@ void validate(const MotorJointDef& def, bool movable) {
 }
 
 void validate(const WorldDef& def) {
-    require_finite("world.gravity", def.gravity);
+    require_within("world.gravity", def.gravity, supported::input_max, "m s^-2");
     if (def.substeps < 1 || def.substeps > 64) {
         throw ValidationError("world.substeps", def.substeps, "must be in [1, 64]", "DCX_dt");
     }
-    const auto positive = [](const char* field, double v) {
+    const auto positive = [](const char* field, double v, std::string_view unit) {
         require_finite(field, v);
         if (!(v > 0.0))
             throw ValidationError(field, v, "must be > 0", "DCX_finite");
+        require_within(field, v, supported::input_max, unit);
     };
-    positive("world.contact_hertz", def.contact_hertz);
-    positive("world.contact_damping_ratio", def.contact_damping_ratio);
-    positive("world.contact_push_max_velocity", def.contact_push_max_velocity);
-    positive("world.joint_hertz", def.joint_hertz);
-    positive("world.joint_damping_ratio", def.joint_damping_ratio);
-    const auto non_negative = [](const char* field, double v) {
+    positive("world.contact_hertz", def.contact_hertz, "Hz");
+    frequency("world.contact_hertz", def.contact_hertz);
+    positive("world.contact_damping_ratio", def.contact_damping_ratio, "");
+    positive("world.contact_push_max_velocity", def.contact_push_max_velocity, "m s^-1");
+    positive("world.joint_hertz", def.joint_hertz, "Hz");
+    frequency("world.joint_hertz", def.joint_hertz);
+    positive("world.joint_damping_ratio", def.joint_damping_ratio, "");
+    const auto non_negative = [](const char* field, double v, std::string_view unit) {
         require_finite(field, v);
         if (!(v >= 0.0))
             throw ValidationError(field, v, "must be >= 0", "DCX_finite");
+        require_within(field, v, supported::input_max, unit);
     };
-    non_negative("world.linear_slop", def.linear_slop);
-    non_negative("world.speculative_distance", def.speculative_distance);
-    non_negative("world.restitution_threshold", def.restitution_threshold);
-    non_negative("world.time_to_sleep", def.time_to_sleep);
-    non_negative("world.linear_sleep_tolerance", def.linear_sleep_tolerance);
-    non_negative("world.angular_sleep_tolerance", def.angular_sleep_tolerance);
+    non_negative("world.linear_slop", def.linear_slop, "m");
+    non_negative("world.speculative_distance", def.speculative_distance, "m");
+    non_negative("world.restitution_threshold", def.restitution_threshold, "m s^-1");
+    non_negative("world.time_to_sleep", def.time_to_sleep, "s");
+    non_negative("world.linear_sleep_tolerance", def.linear_sleep_tolerance, "m s^-1");
+    non_negative("world.angular_sleep_tolerance", def.angular_sleep_tolerance, "rad s^-1");
 }
 
 void validate_time_step(double dt) {
     require_finite("dt", dt);
     if (!(dt > 0.0))
         throw ValidationError("dt", dt, "must be > 0", "DCX_dt");
+    require_scale("dt", dt, supported::input_min, supported::input_max, "s");
 }
 
 } // namespace tamias2d

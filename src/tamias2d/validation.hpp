@@ -11,9 +11,38 @@
 
 namespace tamias2d {
 
+/// \srs{DCX_range} The supported magnitudes (docs/design.md, "Supported ranges", derives them). An
+/// input is one factor of at most `input_max` in its SI unit, and a size, density, time step or
+/// axis length at least `input_min`; a given mass or moment of inertia may span what rho w h and
+/// rho w h (w^2 + h^2) / 12 span (3 and 5 factors). A step starts only from a state (position,
+/// velocity, angle, angular velocity, accumulated one-step loads) within `state_max`, the
+/// square of input_max: the headroom a simulation may grow into.
+namespace supported {
+inline constexpr double input_max = 1e12;
+inline constexpr double input_min = 1e-12;
+inline constexpr double mass_min = 1e-36, mass_max = 1e36;       ///< kg
+inline constexpr double inertia_min = 1e-60, inertia_max = 1e60; ///< kg m^2
+inline constexpr double state_max = 1e24;
+} // namespace supported
+
 /// DCX_finite: a real input must be a finite number.
 void require_finite(std::string_view field, double value);
 void require_finite(std::string_view field, Vec2d value);
+/// DCX_finite, then DCX_range: |value| <= max (`unit` names the SI unit in the message).
+void require_within(std::string_view field, double value, double max, std::string_view unit);
+void require_within(std::string_view field, Vec2d value, double max, std::string_view unit);
+/// DCX_range for a positive scale already checked > 0 by its own constraint: lo <= value <= hi.
+void require_scale(std::string_view field, double value, double lo, double hi,
+                   std::string_view unit);
+/// DCX_finite, DCX_shape (> 0) and DCX_range: a shape dimension (width, height, radius) in
+/// [input_min, input_max] m.
+void validate_size(std::string_view field, double value);
+/// DCX_shape: the sliver rule, the one criterion for every polygon, boxes included: each vertex
+/// lies at least hull_weld_tolerance x extent from the chord of its neighbours, and twice the
+/// area exceeds 2 x that tolerance x extent (extent: the larger of the x and y spans). make_polygon
+/// applies the same rule to the hull it builds, so a box is accepted exactly when its vertices,
+/// written as a polygon (io::scene_to_json), are.
+void validate_proportions(const Polygon& p);
 
 void validate(const BodyDef& def);
 void validate(const Material& material);
@@ -38,7 +67,7 @@ void validate(const WheelJointDef& def, bool movable);
 /// DCX_joint for a motor joint: finite offsets, max force and torque >= 0, correction factor
 /// in [0, 1].
 void validate(const MotorJointDef& def, bool movable);
-/// DCX_dt: the time step is finite and > 0.
+/// DCX_dt: the time step is finite and > 0; DCX_range: in [input_min, input_max] s.
 void validate_time_step(double dt);
 /// DCI_m: a mass given for a dynamic body is > 0 (the SRS's m >= 0 would divide by zero in IM1).
 void validate_mass(std::string_view field, double mass);

@@ -1,7 +1,9 @@
 #include "tamias2d/world.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <string>
 
 #include "tamias2d/dynamics/body_store.hpp"
 #include "tamias2d/dynamics/contact_manager.hpp"
@@ -69,9 +71,32 @@ struct World::Impl {
             if (!b.alive || !load || b.type != BodyType::dynamic)
                 continue;
             const Load l = load(time);
-            require_finite("load(t).force", l.force);
-            require_finite("load(t).torque", l.torque);
+            require_within("load(t).force", l.force, supported::input_max, "N");
+            require_within("load(t).torque", l.torque, supported::input_max, "N m");
             loads[i] = l;
+        }
+    }
+
+    /// \srs{DCX_range} A step starts only from a state within supported::state_max, the headroom a
+    /// simulation of in-range inputs may grow into; from there no product of one step
+    /// overflows (docs/design.md, "Supported ranges"). One pass over the bodies, before
+    /// anything changes.
+    void check_state() const {
+        constexpr double m = supported::state_max;
+        for (std::uint32_t i = 0; i < bodies.size(); ++i) {
+            const Body& b = bodies.bodies[i];
+            if (!b.alive || b.type == BodyType::static_body)
+                continue;
+            if (std::abs(b.center.x) <= m && std::abs(b.center.y) <= m && std::abs(b.v.x) <= m &&
+                std::abs(b.v.y) <= m && std::abs(b.w) <= m && std::abs(b.angle) <= m)
+                continue;
+            const std::string& name = bodies.settings[i].name;
+            const std::string at =
+                "body[" + std::to_string(i) + (name.empty() ? "" : " '" + name + "'") + "].";
+            require_within(at + "position", b.center, m, "m");
+            require_within(at + "velocity", b.v, m, "m s^-1");
+            require_within(at + "angular_velocity", b.w, m, "rad s^-1");
+            require_within(at + "angle", b.angle, m, "rad");
         }
     }
 };
@@ -340,7 +365,7 @@ JointId World::create_joint(const TargetJointDef& def) {
 
 void World::set_joint_target(JointId id, Vec2d target) {
     Joint& j = impl_->joints.get(id);
-    require_finite("joint.target", target);
+    require_within("joint.target", target, supported::input_max, "m");
     if (j.type != JointType::target)
         throw ValidationError("joint", double(id.index), "must be a target joint", "DCX_joint");
     j.target = target;
@@ -391,7 +416,8 @@ double World::joint_translation(JointId id) const {
 
 void World::set_joint_motor_speed(JointId id, double speed) {
     Joint& j = impl_->joints.get(id);
-    require_finite("joint.motor_speed", speed);
+    require_within("joint.motor_speed", speed, supported::input_max,
+                   j.type == JointType::prismatic ? "m s^-1" : "rad s^-1");
     if (j.type != JointType::revolute && j.type != JointType::prismatic &&
         j.type != JointType::wheel)
         throw ValidationError("joint", double(id.index),
@@ -403,8 +429,8 @@ void World::set_joint_motor_speed(JointId id, double speed) {
 
 void World::set_motor_joint_offsets(JointId id, Vec2d linear_offset, double angular_offset) {
     Joint& j = impl_->joints.get(id);
-    require_finite("joint.linear_offset", linear_offset);
-    require_finite("joint.angular_offset", angular_offset);
+    require_within("joint.linear_offset", linear_offset, supported::input_max, "m");
+    require_within("joint.angular_offset", angular_offset, supported::input_max, "rad");
     if (j.type != JointType::motor)
         throw ValidationError("joint", double(id.index), "must be a motor joint", "DCX_joint");
     j.local_anchor_a = linear_offset;
@@ -428,6 +454,7 @@ std::size_t World::body_count() const {
 void World::step(double dt) {
     validate_time_step(dt);
     Impl& w = *impl_;
+    w.check_state();
     w.evaluate_loads();
     w.broken.clear();
     w.contacts.begin_events.clear();
@@ -474,7 +501,7 @@ double World::time() const {
     return impl_->time;
 }
 void World::set_gravity(Vec2d g) {
-    require_finite("gravity", g);
+    require_within("gravity", g, supported::input_max, "m s^-2");
     impl_->def.gravity = g;
     for (std::uint32_t i = 0; i < impl_->bodies.size(); ++i)
         impl_->bodies.wake(
@@ -525,8 +552,8 @@ const std::string& World::name(BodyId id) const {
 
 void World::set_transform(BodyId id, Vec2d origin, double angle) {
     Body& b = impl_->bodies.get(id);
-    require_finite("origin", origin);
-    require_finite("angle", angle);
+    require_within("origin", origin, supported::input_max, "m");
+    require_within("angle", angle, supported::input_max, "rad");
     b.angle = angle;
     b.xf = {origin, Rot::from_angle(angle)};
     b.center = transform_point(b.xf, b.local_center);
@@ -557,66 +584,79 @@ double World::angular_damping(BodyId id) const {
 
 void World::set_velocity(BodyId id, Vec2d v) {
     Body& b = impl_->bodies.get(id);
-    require_finite("velocity", v);
+    require_within("velocity", v, supported::input_max, "m s^-1");
     if (b.type != BodyType::static_body)
         b.v = v;
     impl_->bodies.wake(id.index);
 }
 void World::set_angular_velocity(BodyId id, double omega) {
     Body& b = impl_->bodies.get(id);
-    require_finite("angular_velocity", omega);
+    require_within("angular_velocity", omega, supported::input_max, "rad s^-1");
     if (b.type != BodyType::static_body)
         b.w = omega;
     impl_->bodies.wake(id.index);
 }
 void World::set_force(BodyId id, Vec2d force) {
     Body& b = impl_->bodies.get(id);
-    require_finite("force", force);
+    require_within("force", force, supported::input_max, "N");
     b.force = force;
     b.loaded = true;
     impl_->bodies.wake(id.index);
 }
 void World::set_torque(BodyId id, double torque) {
     Body& b = impl_->bodies.get(id);
-    require_finite("torque", torque);
+    require_within("torque", torque, supported::input_max, "N m");
     b.torque = torque;
     b.loaded = true;
     impl_->bodies.wake(id.index);
 }
 void World::apply_force(BodyId id, Vec2d force, Vec2d world_point) {
     Body& b = impl_->bodies.get(id);
-    require_finite("force", force);
-    require_finite("world_point", world_point);
-    b.force_once += force;
+    require_within("force", force, supported::input_max, "N");
+    require_within("world_point", world_point, supported::input_max, "m");
+    // The one-step loads add up until the next step: their sums stay within the state's range.
+    const Vec2d force_once = b.force_once + force;
+    const double torque_once =
+        b.torque_once + model::dd13::torque(bridge::typed<u::Length>(world_point - b.center),
+                                            bridge::typed<u::Force>(force))
+                            .value();
+    require_within("force (summed one-step forces)", force_once, supported::state_max, "N");
+    require_within("torque (summed one-step torques)", torque_once, supported::state_max, "N m");
+    b.force_once = force_once;
     b.loaded = true;
-    b.torque_once += model::dd13::torque(bridge::typed<u::Length>(world_point - b.center),
-                                         bridge::typed<u::Force>(force))
-                         .value();
+    b.torque_once = torque_once;
     impl_->bodies.wake(id.index);
 }
 void World::apply_torque(BodyId id, double torque) {
     Body& b = impl_->bodies.get(id);
-    require_finite("torque", torque);
+    require_within("torque", torque, supported::input_max, "N m");
+    require_within("torque (summed one-step torques)", b.torque_once + torque, supported::state_max,
+                   "N m");
     b.torque_once += torque;
     b.loaded = true;
     impl_->bodies.wake(id.index);
 }
 void World::apply_impulse(BodyId id, Vec2d impulse, Vec2d world_point) {
     Body& b = impl_->bodies.get(id);
-    require_finite("impulse", impulse);
-    require_finite("world_point", world_point);
+    require_within("impulse", impulse, supported::input_max, "N s");
+    require_within("world_point", world_point, supported::input_max, "m");
     if (b.type != BodyType::dynamic)
         return;
-    impl_->bodies.wake(id.index);
     const double magnitude = length(impulse);
-    if (magnitude == 0.0)
+    if (magnitude == 0.0) {
+        impl_->bodies.wake(id.index);
         return;
+    }
     // IM3's impulse application (DD10 for v, r x J / I for omega), against an immovable body.
     SolverBody ground{};
     SolverBody self{b.v, b.w, b.inv_mass, b.inv_inertia, {}, 0.0};
     const Vec2d n = impulse / magnitude;
     bridge::apply_impulse(ground, self, 0.0, bridge::moment_arm(world_point - b.center, n), n,
                           magnitude);
+    // A light body struck hard: refused, as the next step would refuse its state.
+    require_within("impulse: the velocity", self.v, supported::state_max, "m s^-1");
+    require_within("impulse: the angular velocity", self.w, supported::state_max, "rad s^-1");
+    impl_->bodies.wake(id.index);
     b.v = self.v;
     b.w = self.w;
 }
@@ -728,8 +768,9 @@ std::vector<ShapeId> World::query_point(Vec2d p) const {
 }
 
 std::optional<RayCastHit> World::ray_cast(Vec2d origin, Vec2d translation) const {
-    require_finite("origin", origin);
-    require_finite("translation", translation);
+    // Within the supported range, |translation|^2 and the hit fraction cannot overflow.
+    require_within("origin", origin, supported::input_max, "m");
+    require_within("translation", translation, supported::input_max, "m");
     const Vec2d end = origin + translation;
     const Aabb box{std::min(origin.x, end.x), std::min(origin.y, end.y), std::max(origin.x, end.x),
                    std::max(origin.y, end.y)};

@@ -50,6 +50,8 @@ SCHEMA_REJECTS = {
     "negative_inertia.json": ("/bodies/0/inertia", "exclusiveMinimum"),
     "zero_mass.json": ("/bodies/0/mass", "exclusiveMinimum"),
     "rain_negative_width.json": ("/bodies/0/container/width", "exclusiveMinimum"),
+    "control_char_key.json": ("", "additionalProperties"),
+    "rain_seed_2_63.json": ("/bodies/0/seed", "maximum"),
 }
 
 # Malformed scenes left to the loader, and why a JSON Schema cannot detect them.
@@ -72,6 +74,19 @@ LOADER_ONLY = {
     "standard JSON Schema cannot express",
     "collinear_polygon.json": "the convex hull's area and vertex count are geometry (DCX_shape), "
     "computed by the loader",
+    "bow_tie_polygon.json": "whether a polygon's outline crosses itself is geometry (DCX_shape): "
+    "a schema sees each point, not the segments between them",
+    "sliver_box.json": "the sliver rule (DCX_shape) relates a box's sides to each other, which a "
+    "schema's per-value bounds cannot",
+    "box_too_wide.json": "the supported range (DCX_range, docs/design.md) is the library's check; "
+    "the schema bounds signs, not magnitudes",
+    "box_too_thin.json": "the supported range (DCX_range) is the library's check",
+    "velocity_too_large.json": "the supported range (DCX_range) is the library's check",
+    "force_too_large.json": "the supported range (DCX_range) is the library's check",
+    "dt_too_large.json": "the supported range (DCX_range) is the library's check",
+    "deep_nesting.json": "nesting deeper than 128 levels: JSON Schema has no depth keyword (it "
+    "rejects the array at /bodies/0 by its type, not where the loader stops)",
+    "nul_after_scene.json": "not JSON (a NUL byte after the document): no schema runs",
 }
 
 # Inline variants: name -> (scene, expected (pointer, keyword) or None for "accepted").

@@ -8,8 +8,10 @@
 /// syntax error), the field, the value and the data constraint it breaks.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <iosfwd>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -84,7 +86,7 @@ struct SceneJoint {
     /// "weld", "wheel", "motor"); its body handles are set by build_world from the names.
     using Definition = std::variant<RevoluteJointDef, DistanceJointDef, PrismaticJointDef,
                                     WeldJointDef, WheelJointDef, MotorJointDef>;
-    Definition def; ///< the joint's definition (bodies unset: build_world sets them)
+    Definition def;     ///< the joint's definition (bodies unset: build_world sets them)
     std::string body_a; ///< the name of its first body (BodyDef::name, unique)
     std::string body_b; ///< the name of its second body
     std::string source; ///< the JSON pointer of its entry ("/joints/0"), for error messages
@@ -120,11 +122,27 @@ struct SceneError : std::runtime_error {
                std::string field_, std::string constraint_, std::string detail_);
 };
 
-/// Reads and parses a scene file (origin in messages: the path as given).
-Scene load_scene(const std::filesystem::path& path);
+/// The largest scene text read or parsed by default: 64 MiB (docs/scene-format.md, "Limits").
+/// It holds about 65 000 bodies written out as scene_to_json writes them (150 000 without
+/// indentation); loading takes up to about 12 times the text in memory (document, scene and
+/// the dry run's World), so the limit keeps a load below 1 GB. Larger scenes are better made by
+/// generators; the functions below take a larger limit where one is meant.
+inline constexpr std::size_t max_scene_bytes = std::size_t{64} << 20;
 
-/// Parses and validates a scene from JSON text; `origin` names it in error messages.
-Scene parse_scene(std::string_view json, std::string_view origin = "<scene>");
+/// Reads and parses a scene file (origin in messages: the path as given). The file is read in
+/// chunks and refused as soon as it exceeds `max_bytes`, so that an endless source (/dev/zero,
+/// a pipe) is refused promptly and with bounded memory.
+Scene load_scene(const std::filesystem::path& path, std::size_t max_bytes = max_scene_bytes);
+
+/// Reads a scene from a stream (standard input, a pipe) as load_scene reads a file; `origin`
+/// names it in error messages.
+Scene load_scene(std::istream& in, std::string_view origin,
+                 std::size_t max_bytes = max_scene_bytes);
+
+/// Parses and validates a scene from JSON text; `origin` names it in error messages. A text
+/// longer than `max_bytes` is refused.
+Scene parse_scene(std::string_view json, std::string_view origin = "<scene>",
+                  std::size_t max_bytes = max_scene_bytes);
 
 /// Checks a Scene (parsed or hand-made) by building it into a scratch World: throws SceneError
 /// at the body's `source` if the World rejects any body or shape.
@@ -136,7 +154,9 @@ void validate_scene(const Scene& scene, std::string_view origin = "<scene>");
 std::vector<BodyId> build_world(const Scene& scene, World& world);
 
 /// The scene as canonical JSON: generators expanded, materials inlined, boxes written as
-/// polygons. parse_scene(scene_to_json(s)) reproduces s (loads, materials and geometry).
+/// polygons. parse_scene(scene_to_json(s)) reproduces s (loads, materials and geometry): a
+/// box is accepted exactly when its polygon is, both by the one sliver rule (DCX_shape). (A text
+/// beyond max_scene_bytes needs a larger limit passed to parse_scene.)
 std::string scene_to_json(const Scene& scene, int indent = 2);
 
 } // namespace io

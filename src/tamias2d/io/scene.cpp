@@ -2,13 +2,14 @@
 
 #include <algorithm>
 #include <array>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstring>
 #include <fstream>
 #include <initializer_list>
+#include <istream>
 #include <limits>
-#include <sstream>
 #include <tuple>
 #include <type_traits>
 #include <utility>
@@ -19,6 +20,7 @@
 
 #include "tamias2d/errors.hpp"
 #include "tamias2d/io/scene_generators.hpp"
+#include "tamias2d/validation.hpp"
 #include "tamias2d/world.hpp"
 
 namespace tamias2d::io {
@@ -64,10 +66,67 @@ Load SceneLoads::operator()(double t) const {
 
 namespace {
 
+/// What a message quotes of a user's text: control characters escaped as JSON writes them (a
+/// key or name with a newline stays on one line, and a terminal sees no escape sequence), and
+/// at most `max` bytes of it, cut at a character boundary, the rest counted.
+std::string printable(std::string_view s, std::size_t max) {
+    std::string out;
+    std::size_t kept = 0;
+    for (; kept < s.size() && out.size() < max; ++kept) {
+        const auto c = static_cast<unsigned char>(s[kept]);
+        if (c == '\n') {
+            out += "\\n";
+        } else if (c == '\r') {
+            out += "\\r";
+        } else if (c == '\t') {
+            out += "\\t";
+        } else if (c < 0x20 || c == 0x7f) {
+            static constexpr char hex[] = "0123456789abcdef";
+            out += "\\u00";
+            out += hex[c >> 4];
+            out += hex[c & 15];
+        } else {
+            out += static_cast<char>(c);
+        }
+    }
+    while (kept < s.size() && kept > 0 && (static_cast<unsigned char>(s[kept]) & 0xc0) == 0x80) {
+        --kept; // not inside a UTF-8 sequence
+        out.pop_back();
+    }
+    if (kept < s.size())
+        out += "... (" + std::to_string(s.size()) + " bytes)";
+    return out;
+}
+
+/// A JSON pointer as messages show it: each token printable and short, and a deep pointer
+/// (nesting up to the parser's limit) shortened to its first and last levels.
+std::string shown_pointer(std::string_view pointer) {
+    constexpr std::size_t token_max = 32, keep = 6;
+    std::vector<std::string> tokens;
+    for (std::size_t start = 1; start <= pointer.size();) {
+        std::size_t end = pointer.find('/', start);
+        if (end == std::string_view::npos)
+            end = pointer.size();
+        tokens.push_back(printable(pointer.substr(start, end - start), token_max));
+        start = end + 1;
+    }
+    std::string out;
+    for (std::size_t i = 0; i < tokens.size(); ++i) {
+        if (tokens.size() > 2 * keep && i == keep) {
+            out += "/[... " + std::to_string(tokens.size() - 2 * keep) + " levels ...]";
+            i = tokens.size() - keep - 1;
+            continue;
+        }
+        out += "/" + tokens[i];
+    }
+    return out;
+}
+
 std::string where(const std::string& origin, const std::string& pointer, int line, int column) {
+    const std::string file = printable(origin, 256);
     if (line > 0)
-        return origin + ":" + std::to_string(line) + ":" + std::to_string(column);
-    return origin + ": " + (pointer.empty() ? std::string("(root)") : pointer);
+        return file + ":" + std::to_string(line) + ":" + std::to_string(column);
+    return file + ": " + (pointer.empty() ? std::string("(root)") : shown_pointer(pointer));
 }
 
 } // namespace
@@ -82,6 +141,11 @@ namespace {
 
 // Rules of the scene format that are no SRS data constraint carry this in place of a label.
 constexpr const char* format_rule = "scene format";
+
+/// A user's string (key, name, kind) in a message: 'text', escaped and shortened.
+std::string quote(std::string_view s) {
+    return "'" + printable(s, 64) + "'";
+}
 
 /// RFC 6901 escaping of one reference token.
 std::string escape_token(std::string_view key) {
@@ -125,29 +189,45 @@ struct Ctx {
     fail(ctx, ptr, field, detail::validation_message(field, value, rule, constraint), constraint);
 }
 
-/// Maps a ValidationError from the library or a generator to the scene: `base` is the pointer
-/// of the object whose keys the error's field names ("container.width" -> base/container/width).
-[[noreturn]] void fail_from(const Ctx& ctx, const std::string& base, const ValidationError& e,
-                            bool map_field) {
-    std::string ptr = base;
-    if (map_field) {
-        std::string f = e.field;
-        for (const std::string_view suffix : {".x", ".y"}) {
-            if (f.size() > suffix.size() && f.ends_with(suffix)) {
-                f.resize(f.size() - suffix.size());
-                ptr = child(ptr, f) + (suffix == ".x" ? "/0" : "/1");
-                f.clear();
-                break;
-            }
-        }
-        if (!f.empty()) {
-            std::size_t start = 0;
-            for (std::size_t dot; (dot = f.find('.', start)) != std::string::npos; start = dot + 1)
-                ptr = child(ptr, std::string_view(f).substr(start, dot - start));
-            ptr = child(ptr, std::string_view(f).substr(start));
+/// The pointer of a library field name under `base`, whose keys it names ("container.width" ->
+/// base/container/width, "center.x" -> base/center/0).
+std::string field_pointer(std::string ptr, std::string f) {
+    if (f.empty()) // the value at base itself
+        return ptr;
+    for (const std::string_view suffix : {".x", ".y"}) {
+        if (f.size() > suffix.size() && f.ends_with(suffix)) {
+            f.resize(f.size() - suffix.size());
+            return child(ptr, f) + (suffix == ".x" ? "/0" : "/1");
         }
     }
-    fail(ctx, ptr, e.field, e.what(), e.constraint);
+    std::size_t start = 0;
+    for (std::size_t dot; (dot = f.find('.', start)) != std::string::npos; start = dot + 1)
+        ptr = child(ptr, std::string_view(f).substr(start, dot - start));
+    return child(ptr, std::string_view(f).substr(start));
+}
+
+/// Maps a ValidationError from the library or a generator to the scene: `base` is the pointer
+/// of the object whose keys the error's field names (see field_pointer).
+[[noreturn]] void fail_from(const Ctx& ctx, const std::string& base, const ValidationError& e,
+                            bool map_field) {
+    fail(ctx, map_field ? field_pointer(base, e.field) : base, e.field, e.what(), e.constraint);
+}
+
+/// Runs the library's own check of what was read at `base` (validation.hpp: each criterion in
+/// one place), reporting a violation at the key its field names, less `prefix` ("body.").
+template <class Check>
+void check_as_library(const Ctx& ctx, const std::string& base, std::string_view prefix,
+                      Check&& check) {
+    try {
+        check();
+    } catch (const ValidationError& e) {
+        std::string key = e.field;
+        if (key.starts_with(prefix))
+            key.erase(0, prefix.size());
+        if (key.starts_with("linear_velocity")) // BodyDef's name of the scene's "velocity"
+            key.replace(0, 15, "velocity");
+        fail(ctx, field_pointer(base, key), e.field, e.what(), e.constraint);
+    }
 }
 
 const char* type_name(const ojson& v) {
@@ -216,7 +296,7 @@ void check_keys_in(const Ctx& ctx, const ojson& obj, const std::string& ptr, con
             }
         }
         fail(ctx, child(ptr, key), key,
-             "unknown key '" + key + "' in " + what +
+             "unknown key " + quote(key) + " in " + what +
                  (best.empty() ? std::string{} : " (did you mean '" + best + "'?)") +
                  "; allowed: " + list,
              format_rule);
@@ -286,10 +366,15 @@ long long as_integer(const Ctx& ctx, const ojson& v, const std::string& ptr,
             fail_value(ctx, ptr, field, double(i), range, format_rule);
         return i;
     }
+    // A double converts to long long only below 2^63: double(LLONG_MAX) is 2^63 itself, so
+    // the range is checked on the integer, after the conversion is known to be defined.
     const double d = v.get<double>();
-    if (!(d == std::floor(d)) || d < double(lo) || d > double(hi))
+    if (!(d == std::floor(d)) || !(d >= -0x1p63 && d < 0x1p63))
         fail_value(ctx, ptr, field, d, range, format_rule);
-    return static_cast<long long>(d);
+    const auto i = static_cast<long long>(d);
+    if (i < lo || i > hi)
+        fail_value(ctx, ptr, field, d, range, format_rule);
+    return i;
 }
 
 std::string as_string(const Ctx& ctx, const ojson& v, const std::string& ptr,
@@ -321,12 +406,12 @@ double req_number(const Ctx& ctx, const ojson& obj, const std::string& ptr, std:
     return as_number(ctx, require_key(ctx, obj, ptr, key, what), child(ptr, key), std::string(key));
 }
 
-/// DCX_shape (the SRS's DCI_L, corrected): a shape dimension is > 0.
+/// DCX_shape (the SRS's DCI_L, corrected): a shape dimension is > 0; DCX_range: within the
+/// supported sizes.
 double req_length(const Ctx& ctx, const ojson& obj, const std::string& ptr, std::string_view key,
                   const std::string& what) {
     const double v = req_number(ctx, obj, ptr, key, what);
-    if (!(v > 0.0))
-        fail_value(ctx, child(ptr, key), std::string(key), v, "must be > 0", "DCX_shape");
+    check_as_library(ctx, ptr, "", [&] { validate_size(key, v); });
     return v;
 }
 
@@ -348,6 +433,7 @@ Material parse_material_object(const Ctx& ctx, const ojson& v, const std::string
     if (!(m.friction >= 0.0))
         fail_value(ctx, child(ptr, "friction"), "friction", m.friction, "must be >= 0",
                    "DCX_friction");
+    check_as_library(ctx, ptr, "material.", [&] { validate(m); }); // DCX_range
     return m;
 }
 
@@ -360,10 +446,16 @@ Material parse_material_ref(const Ctx& ctx, const ojson& v, const std::string& p
         const auto it = ctx.materials.find(name);
         if (it == ctx.materials.end()) {
             std::string known;
-            for (const auto& [n, m] : ctx.materials)
-                known += (known.empty() ? "" : ", ") + n;
+            std::size_t listed = 0;
+            for (const auto& [n, m] : ctx.materials) {
+                if (++listed > 10) {
+                    known += ", ... (" + std::to_string(ctx.materials.size()) + " in all)";
+                    break;
+                }
+                known += (known.empty() ? "" : ", ") + quote(n);
+            }
             fail(ctx, ptr, "material",
-                 "unknown material '" + name + "'" +
+                 "unknown material " + quote(name) +
                      (known.empty() ? std::string("; no materials are declared")
                                     : "; declared: " + known),
                  format_rule);
@@ -390,8 +482,12 @@ Material generator_default_material(const Ctx& ctx) {
 TimeFunction parse_time_function(const Ctx& ctx, const ojson& v, const std::string& ptr,
                                  const std::string& field) {
     TimeFunction f;
+    const char* unit = field == "torque" ? "N m" : "N";
     if (v.is_number()) { // shorthand for {"kind": "constant", "value": v}
         f.value = as_number(ctx, v, ptr, field);
+        check_as_library(ctx, ptr, field, [&] { // DCX_range, as World::step checks loads
+            require_within(field, f.value, supported::input_max, unit);
+        });
         return f;
     }
     require_object(ctx, v, ptr, field, "a number or a load object {\"kind\": ...}");
@@ -427,9 +523,25 @@ TimeFunction parse_time_function(const Ctx& ctx, const ojson& v, const std::stri
             fail_value(ctx, child(ptr, "t1"), "t1", f.t1, "must be > t0", format_rule);
     } else {
         fail(ctx, child(ptr, "kind"), "kind",
-             "unknown load kind '" + kind + "'; allowed: constant, sinusoid, step, ramp",
+             "unknown load kind " + quote(kind) + "; allowed: constant, sinusoid, step, ramp",
              format_rule);
     }
+    // DCX_range: every value the load takes is a force (torque) within the supported range,
+    // which World::step checks again on each evaluation.
+    for (const auto& [key, value] : {std::pair<const char*, double>{"value", f.value},
+                                     {"amplitude", f.amplitude},
+                                     {"offset", f.offset},
+                                     {"before", f.before},
+                                     {"after", f.after},
+                                     {"from", f.from},
+                                     {"to", f.to}})
+        check_as_library(ctx, ptr, "",
+                         [&] { require_within(key, value, supported::input_max, unit); });
+    if (f.kind == TimeFunction::Kind::sinusoid)
+        check_as_library(ctx, ptr, "", [&] {
+            require_within("amplitude", std::abs(f.offset) + std::abs(f.amplitude),
+                           supported::input_max, std::string(unit) + " (|offset| + |amplitude|)");
+        });
     return f;
 }
 
@@ -456,6 +568,48 @@ void attach_loads(SceneBody& b) {
 // Shapes and bodies
 // ---------------------------------------------------------------------------------------------
 
+/// The library's check of a shape read at `ptr` (DCX_shape, DCX_range): a polygon's defects,
+/// a box's included, are reported at `polygon_ptr`, the others at their key.
+ShapeDef checked(const Ctx& ctx, const std::string& ptr, const std::string& polygon_ptr,
+                 ShapeDef shape) {
+    try {
+        validate(shape);
+    } catch (const ValidationError& e) {
+        if (e.field.starts_with("polygon."))
+            fail(ctx, polygon_ptr, e.field, e.what(), e.constraint);
+        std::string key = e.field;
+        if (key.starts_with("shape."))
+            key.erase(0, 6);
+        fail(ctx, field_pointer(ptr, key), e.field, e.what(), e.constraint);
+    }
+    return shape;
+}
+
+/// DCX_shape: a polygon's points, read in order as a closed outline, must not cross: a crossing
+/// outline (a bow tie) is a mistake in their order, which taking the convex hull would hide. A
+/// simple outline, concave or not, stands for its convex hull (docs/scene-format.md).
+void check_outline(const Ctx& ctx, const std::string& ptr, const std::vector<Vec2d>& p) {
+    const auto side = [](Vec2d a, Vec2d b, Vec2d c) {
+        const double t = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+        return (t > 0.0) - (t < 0.0);
+    };
+    const std::size_t n = p.size();
+    for (std::size_t i = 0; i + 2 < n; ++i) {
+        for (std::size_t j = i + 2; j < n; ++j) {
+            if (i == 0 && j == n - 1)
+                continue; // the closing edge meets edge 0 at point 0
+            const Vec2d a = p[i], b = p[i + 1], c = p[j], d = p[(j + 1) % n];
+            if (side(a, b, c) * side(a, b, d) < 0 && side(c, d, a) * side(c, d, b) < 0)
+                fail(ctx, ptr, "points",
+                     "points: the outline crosses itself (edge " + std::to_string(i) + "-" +
+                         std::to_string(i + 1) + " crosses edge " + std::to_string(j) + "-" +
+                         std::to_string((j + 1) % n) +
+                         "); list the points in order around the polygon (DCX_shape)",
+                     "DCX_shape");
+        }
+    }
+}
+
 ShapeDef parse_shape(const Ctx& ctx, const ojson& v, const std::string& ptr) {
     require_object(ctx, v, ptr, "shape", "a shape object {\"type\": ...}");
     const std::string type =
@@ -476,7 +630,7 @@ ShapeDef parse_shape(const Ctx& ctx, const ojson& v, const std::string& ptr) {
             opt_vec2(ctx, v, ptr, "center", center);
             opt_number(ctx, v, ptr, "angle", angle);
             read_material();
-            return box_shape(w, h, material, center, angle);
+            return checked(ctx, ptr, ptr, box_shape(w, h, material, center, angle));
         }
         if (type == "circle") {
             check_keys(ctx, v, ptr, {"type", "radius", "center", "material"}, "a circle shape");
@@ -484,7 +638,7 @@ ShapeDef parse_shape(const Ctx& ctx, const ojson& v, const std::string& ptr) {
             Vec2d center{};
             opt_vec2(ctx, v, ptr, "center", center);
             read_material();
-            return circle_shape(r, material, center);
+            return checked(ctx, ptr, ptr, circle_shape(r, material, center));
         }
         if (type == "polygon") {
             check_keys(ctx, v, ptr, {"type", "points", "material"}, "a polygon shape");
@@ -497,11 +651,23 @@ ShapeDef parse_shape(const Ctx& ctx, const ojson& v, const std::string& ptr) {
                            "must be >= 3 (and at most 64 points, whose hull has <= 8)",
                            "DCX_shape");
             std::vector<Vec2d> points;
-            for (std::size_t i = 0; i < pts.size(); ++i)
-                points.push_back(as_vec2(ctx, pts[i], child(pp, i), "points"));
+            for (std::size_t i = 0; i < pts.size(); ++i) {
+                const std::string at = child(pp, i);
+                points.push_back(as_vec2(ctx, pts[i], at, "points"));
+                for (const std::size_t k : {std::size_t{0}, std::size_t{1}}) {
+                    try { // DCX_range, before any product of them
+                        require_within(k == 0 ? "points.x" : "points.y",
+                                       k == 0 ? points.back().x : points.back().y,
+                                       supported::input_max, "m");
+                    } catch (const ValidationError& e) {
+                        fail(ctx, child(at, k), e.field, e.what(), e.constraint);
+                    }
+                }
+            }
+            check_outline(ctx, pp, points);
             read_material();
             try {
-                return polygon_shape(points, material);
+                return checked(ctx, ptr, pp, polygon_shape(points, material));
             } catch (const ValidationError& e) {
                 fail_from(ctx, pp, e, false);
             }
@@ -511,7 +677,7 @@ ShapeDef parse_shape(const Ctx& ctx, const ojson& v, const std::string& ptr) {
         fail_from(ctx, ptr, e, false);
     }
     fail(ctx, child(ptr, "type"), "type",
-         "unknown shape type '" + type + "'; allowed: box, circle, polygon", format_rule);
+         "unknown shape type " + quote(type) + "; allowed: box, circle, polygon", format_rule);
 }
 
 BodyType parse_body_type(const Ctx& ctx, const ojson& v, const std::string& ptr) {
@@ -522,8 +688,8 @@ BodyType parse_body_type(const Ctx& ctx, const ojson& v, const std::string& ptr)
         return BodyType::static_body;
     if (t == "kinematic")
         return BodyType::kinematic;
-    fail(ctx, ptr, "type", "unknown body type '" + t + "'; allowed: dynamic, static, kinematic",
-         format_rule);
+    fail(ctx, ptr, "type",
+         "unknown body type " + quote(t) + "; allowed: dynamic, static, kinematic", format_rule);
 }
 
 void claim_name(Ctx& ctx, const std::string& name, const std::string& ptr) {
@@ -532,7 +698,7 @@ void claim_name(Ctx& ctx, const std::string& name, const std::string& ptr) {
     const auto [it, fresh] = ctx.names.emplace(name, ptr);
     if (!fresh)
         fail(ctx, ptr, "name",
-             "body name '" + name + "' is already used by " + it->second +
+             "body name " + quote(name) + " is already used by " + shown_pointer(it->second) +
                  " (names must be unique)",
              format_rule);
 }
@@ -641,7 +807,7 @@ SceneJoint parse_joint(Ctx& ctx, const ojson& v, const std::string& ptr) {
         for (const std::string_view t : joint_types)
             names += (names.empty() ? "\"" : ", \"") + std::string(t) + "\"";
         fail(ctx, child(ptr, "type"), "type",
-             "unknown joint type '" + type + "'; expected one of " + names, format_rule);
+             "unknown joint type " + quote(type) + "; expected one of " + names, format_rule);
     }
     const std::string what = "a " + type + " joint";
     std::visit(
@@ -741,6 +907,7 @@ SceneBody parse_body(Ctx& ctx, const ojson& v, const std::string& ptr) {
     if (d.type == BodyType::dynamic && b.shapes.empty() && !d.mass)
         fail(ctx, child(ptr, "shapes"), "shapes",
              "a dynamic body needs at least one shape or a \"mass\" (DCI_m)", "DCI_m");
+    check_as_library(ctx, ptr, "body.", [&] { validate(d); }); // DCX_range, at the key
     claim_name(ctx, d.name, child(ptr, "name"));
     attach_loads(b);
     return b;
@@ -827,7 +994,7 @@ std::vector<SceneBody> parse_generator(Ctx& ctx, const ojson& v, const std::stri
             bodies = generate_elastic_pair(p);
         } else {
             fail(ctx, child(ptr, "generator"), "generator",
-                 "unknown generator '" + kind + "'; allowed: pyramid, rain, elastic_pair",
+                 "unknown generator " + quote(kind) + "; allowed: pyramid, rain, elastic_pair",
                  format_rule);
         }
     } catch (const ValidationError& e) {
@@ -860,8 +1027,8 @@ double parse_dt(const Ctx& ctx, const ojson& v, const std::string& ptr) {
         if (slash == std::string::npos || !parse(std::string_view(s).substr(0, slash), num) ||
             !parse(std::string_view(s).substr(slash + 1), den) || !(den != 0.0))
             fail(ctx, ptr, "dt",
-                 "dt: expected a number of seconds or a fraction string such as \"1/60\", got \"" +
-                     s + "\"",
+                 "dt: expected a number of seconds or a fraction string such as \"1/60\", got " +
+                     quote(s),
                  format_rule);
         dt = num / den;
         if (!std::isfinite(dt))
@@ -871,6 +1038,7 @@ double parse_dt(const Ctx& ctx, const ojson& v, const std::string& ptr) {
     }
     if (!(dt > 0.0))
         fail_value(ctx, ptr, "dt", dt, "must be > 0", "DCX_dt");
+    check_as_library(ctx, ptr, "dt", [&] { validate_time_step(dt); }); // DCX_range
     return dt;
 }
 
@@ -951,7 +1119,7 @@ class DomBuilder {
     bool key(string_t& k) {
         if (stack_.back()->contains(k)) {
             pointer = current_pointer() + "/" + escape_token(k);
-            return error_at_pointer("duplicate key '" + k + "'");
+            return error_at_pointer("duplicate key " + quote(k));
         }
         key_ = k;
         return true;
@@ -967,6 +1135,16 @@ class DomBuilder {
             what.erase(0, syntax);
         } else if (const auto close = what.find("] "); close != std::string::npos) {
             what.erase(0, close + 2);
+        }
+        // The parser quotes the whole token it stopped in ("last read: '...'"), which may be a
+        // string of megabytes: keep its start.
+        if (const auto lr = what.find("last read: '"); lr != std::string::npos) {
+            const std::size_t start = lr + 12;
+            std::size_t end = what.find("'; expected", start);
+            if (end == std::string::npos)
+                end = what.rfind('\'');
+            if (end != std::string::npos && end > start)
+                what.replace(start, end - start, printable(what.substr(start, end - start), 40));
         }
         if (what.starts_with("number overflow"))
             what += " (DCX_finite)";
@@ -1034,7 +1212,23 @@ class DomBuilder {
     }
 };
 
+/// 1-based line and column of the byte at `at`.
+std::pair<int, int> line_column(std::string_view text, std::size_t at) {
+    const auto nl_before = text.substr(0, at).rfind('\n');
+    const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + at, '\n'));
+    const int column =
+        static_cast<int>(nl_before == std::string_view::npos ? at + 1 : at - nl_before);
+    return {line, column};
+}
+
 ojson parse_json(std::string_view text, const std::string& origin) {
+    // The parser takes a NUL byte for the end of the input, so that a scene followed by one and
+    // garbage would load. JSON text has no NUL (in a string it must be escaped): reject it.
+    if (const auto nul = text.find('\0'); nul != std::string_view::npos) {
+        const auto [line, column] = line_column(text, nul);
+        throw SceneError(origin, "", line, column, "", "",
+                         "syntax error: a NUL byte (JSON text has none)");
+    }
     DomBuilder dom;
     const bool ok = ojson::sax_parse(text.begin(), text.end(), &dom);
     if (ok && !dom.failed)
@@ -1050,10 +1244,7 @@ ojson parse_json(std::string_view text, const std::string& origin) {
         if (whole_token && tok.size() <= dom.position && dom.position <= text.size() &&
             text.substr(dom.position - tok.size(), tok.size()) == tok)
             at = dom.position - tok.size();
-        const auto nl_before = text.substr(0, at).rfind('\n');
-        const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + at, '\n'));
-        const int column =
-            static_cast<int>(nl_before == std::string_view::npos ? at + 1 : at - nl_before);
+        const auto [line, column] = line_column(text, at);
         throw SceneError(origin, "", line, column, "",
                          dom.message.ends_with("(DCX_finite)") ? "DCX_finite" : "", dom.message);
     }
@@ -1066,9 +1257,43 @@ ojson parse_json(std::string_view text, const std::string& origin) {
 // Public functions
 // ---------------------------------------------------------------------------------------------
 
-Scene parse_scene(std::string_view json, std::string_view origin_view) {
+namespace {
+
+/// "the scene is larger than the limit of N bytes": the one message of the size limit.
+[[noreturn]] void fail_size(const std::string& origin, std::size_t max_bytes) {
+    const std::string mib = max_bytes % (1 << 20) == 0
+                                ? " (" + std::to_string(max_bytes >> 20) + " MiB)"
+                                : std::string{};
+    throw SceneError(origin, "", 0, 0, "", "",
+                     "the scene is larger than the size limit of " + std::to_string(max_bytes) +
+                         " bytes" + mib + " (docs/scene-format.md, Limits)");
+}
+
+/// The whole stream, in chunks, refused as soon as it exceeds max_bytes: never more than that
+/// (and one chunk) is held, whatever the source.
+std::string read_limited(std::istream& in, const std::string& origin, std::size_t max_bytes) {
+    std::string text;
+    std::array<char, 1 << 16> chunk;
+    while (in) {
+        in.read(chunk.data(), std::streamsize(chunk.size()));
+        const auto n = static_cast<std::size_t>(in.gcount());
+        if (n > max_bytes - text.size()) // text.size() <= max_bytes: no wrap-around
+            fail_size(origin, max_bytes);
+        text.append(chunk.data(), n);
+    }
+    if (in.bad())
+        throw SceneError(origin, "", 0, 0, "", "",
+                         std::string("cannot read the scene: ") + std::strerror(errno));
+    return text;
+}
+
+} // namespace
+
+Scene parse_scene(std::string_view json, std::string_view origin_view, std::size_t max_bytes) {
     Ctx ctx;
     ctx.origin = std::string(origin_view);
+    if (json.size() > max_bytes)
+        fail_size(ctx.origin, max_bytes);
     const ojson root = parse_json(json, ctx.origin);
     const std::string ptr;
     require_object(ctx, root, ptr, "", "a scene object {\"dt\", \"steps\", \"bodies\", ...}");
@@ -1119,17 +1344,18 @@ Scene parse_scene(std::string_view json, std::string_view origin_view) {
     return scene;
 }
 
-Scene load_scene(const std::filesystem::path& path) {
+Scene load_scene(const std::filesystem::path& path, std::size_t max_bytes) {
     const std::string origin = path.string();
     std::ifstream in(path, std::ios::binary);
     if (!in)
         throw SceneError(origin, "", 0, 0, "", "",
                          std::string("cannot open the scene file: ") + std::strerror(errno));
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (in.bad())
-        throw SceneError(origin, "", 0, 0, "", "", "cannot read the scene file");
-    return parse_scene(text.str(), origin);
+    return parse_scene(read_limited(in, origin, max_bytes), origin, max_bytes);
+}
+
+Scene load_scene(std::istream& in, std::string_view origin, std::size_t max_bytes) {
+    const std::string name(origin);
+    return parse_scene(read_limited(in, name, max_bytes), name, max_bytes);
 }
 
 void validate_scene(const Scene& scene, std::string_view origin_view) {
@@ -1137,6 +1363,7 @@ void validate_scene(const Scene& scene, std::string_view origin_view) {
     ctx.origin = std::string(origin_view);
     if (!(std::isfinite(scene.dt) && scene.dt > 0.0))
         fail_value(ctx, "/dt", "dt", scene.dt, "must be finite and > 0", "DCX_dt");
+    check_as_library(ctx, "/dt", "dt", [&] { validate_time_step(scene.dt); }); // DCX_range
     if (scene.steps < 0)
         fail_value(ctx, "/steps", "steps", scene.steps, "must be >= 0", format_rule);
     if (scene.output_every < 0)
@@ -1156,7 +1383,8 @@ void validate_scene(const Scene& scene, std::string_view origin_view) {
     for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
         const SceneBody& b = scene.bodies[i];
         const std::string at = b.source.empty() ? child(std::string("/bodies"), i) : b.source;
-        const std::string who = b.def.name.empty() ? std::string{} : " (body '" + b.def.name + "')";
+        const std::string who =
+            b.def.name.empty() ? std::string{} : " (body " + quote(b.def.name) + ")";
         try {
             const BodyId id = world->create_body(b.def);
             if (!b.def.name.empty())
@@ -1179,7 +1407,7 @@ void validate_scene(const Scene& scene, std::string_view origin_view) {
              {std::tuple{"body_a", &j.body_a, &ids[0]}, {"body_b", &j.body_b, &ids[1]}}) {
             const auto it = by_name.find(*name);
             if (it == by_name.end())
-                fail(ctx, child(j.source, key), key, "no body is named '" + *name + "'",
+                fail(ctx, child(j.source, key), key, "no body is named " + quote(*name),
                      format_rule);
             *id = it->second;
         }
@@ -1189,7 +1417,7 @@ void validate_scene(const Scene& scene, std::string_view origin_view) {
             std::string field = e.field;
             if (field.starts_with("joint."))
                 field.erase(0, 6);
-            fail(ctx, child(j.source, field), field, e.what(), e.constraint);
+            fail(ctx, field_pointer(j.source, field), field, e.what(), e.constraint);
         }
     }
 }

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "tamias2d/errors.hpp"
+#include "tamias2d/validation.hpp"
 
 namespace tamias2d::io {
 namespace {
@@ -17,15 +18,9 @@ void require_finite(const std::string& field, double v) {
         throw ValidationError(field, v, "must be a finite number", "DCX_finite");
 }
 
-void require_finite(const std::string& field, Vec2d v) {
-    require_finite(field + ".x", v.x);
-    require_finite(field + ".y", v.y);
-}
-
+/// DCX_shape and DCX_range: a size > 0 within the supported sizes (the library's check).
 void require_length(const std::string& field, double v) {
-    require_finite(field, v);
-    if (!(v > 0.0))
-        throw ValidationError(field, v, "must be > 0", "DCX_shape");
+    validate_size(field, v);
 }
 
 void require_count(const std::string& field, int v, int lo, int hi) {
@@ -71,12 +66,12 @@ double SplitMix64::uniform() {
 std::vector<SceneBody> generate_pyramid(const PyramidParams& p) {
     require_count("base", p.base, 1, PyramidParams::max_base);
     require_length("box", p.box);
-    require_finite("gap", p.gap);
+    require_within("gap", p.gap, supported::input_max, "m");
     if (!(p.gap >= 0.0))
         throw ValidationError("gap", p.gap, "must be >= 0", format_rule);
-    require_finite("origin", p.origin);
-    require_finite("ground_width", p.ground_width);
-    require_finite("ground_height", p.ground_height);
+    require_within("origin", p.origin, supported::input_max, "m");
+    require_within("ground_width", p.ground_width, supported::input_max, "m");
+    require_within("ground_height", p.ground_height, supported::input_max, "m");
     if (p.ground_width < 0.0)
         throw ValidationError("ground_width", p.ground_width, "must be > 0 (0: automatic)",
                               "DCX_shape");
@@ -116,19 +111,19 @@ std::vector<SceneBody> generate_rain(const RainParams& p) {
     require_length("box", p.box);
     const double spacing = p.spacing == 0.0 ? 1.5 * p.box : p.spacing;
     const double jitter = p.jitter < 0.0 ? 0.2 * p.box : p.jitter;
-    require_finite("spacing", p.spacing);
+    require_within("spacing", p.spacing, supported::input_max, "m");
     if (!(spacing > p.box))
         throw ValidationError("spacing", spacing, "must be > box (0: automatic)", "DCX_shape");
-    require_finite("jitter", p.jitter);
+    require_within("jitter", p.jitter, supported::input_max, "m");
     if (!(2.0 * jitter < spacing - p.box))
         throw ValidationError("jitter", jitter, "must be < (spacing - box) / 2", format_rule);
-    require_finite("drop_height", p.drop_height);
+    require_within("drop_height", p.drop_height, supported::input_max, "m");
     if (!(p.drop_height >= 0.0))
         throw ValidationError("drop_height", p.drop_height, "must be >= 0", format_rule);
     require_length("container.width", p.container.width);
     require_length("container.height", p.container.height);
     require_length("container.wall", p.container.wall);
-    require_finite("container.origin", p.container.origin);
+    require_within("container.origin", p.container.origin, supported::input_max, "m");
     if (!(p.container.width >= spacing))
         throw ValidationError("container.width", p.container.width, "must be >= spacing",
                               "DCX_shape");
@@ -147,12 +142,15 @@ std::vector<SceneBody> generate_rain(const RainParams& p) {
         box_shape(c.wall, c.height, p.material, {half_w + 0.5 * c.wall, 0.5 * c.height}));
     out.push_back(std::move(box));
 
-    const int columns = std::max(1, static_cast<int>(std::floor(c.width / spacing)));
+    // In doubles: a wide container holds more columns than an int counts (width / spacing up to
+    // 1e24), and the conversion would be undefined. Rows and columns are whole numbers below
+    // 2^53, so the grid is the integer one exactly.
+    const double columns = std::max(1.0, std::floor(c.width / spacing));
     SplitMix64 rng{p.seed};
     const double y0 = c.origin.y + c.height + p.drop_height + 0.5 * p.box;
     for (int i = 0; i < p.count; ++i) {
-        const int row = i / columns;
-        const int col = i % columns;
+        const double row = std::floor(i / columns);
+        const double col = i - row * columns;
         const double dx = jitter * (2.0 * rng.uniform() - 1.0);
         const double x = c.origin.x + (col - 0.5 * (columns - 1)) * spacing + dx;
         const double y = y0 + row * spacing;
@@ -165,8 +163,8 @@ std::vector<SceneBody> generate_rain(const RainParams& p) {
 
 std::vector<SceneBody> generate_elastic_pair(const ElasticPairParams& p) {
     require_length("box", p.box);
-    require_finite("speed", p.speed);
-    require_finite("distance", p.distance);
+    require_within("speed", p.speed, supported::input_max, "m s^-1");
+    require_within("distance", p.distance, supported::input_max, "m");
     if (!(p.distance > p.box))
         throw ValidationError("distance", p.distance, "must be > box (no initial overlap)",
                               "DCX_shape");
