@@ -42,7 +42,9 @@ const char* const full_scene = R"({
       "shapes": [ { "type": "box", "width": 2, "height": 1, "center": [0.5, 0], "angle": 0,
                     "material": "rubber" },
                   { "type": "circle", "radius": 0.25, "center": [-1, 0],
-                    "material": { "density": 2, "restitution": 1 } } ] },
+                    "material": { "density": 2, "restitution": 1 },
+                    "filter": { "category_bits": 6, "mask_bits": 4294967293, "group_index": -3 },
+                    "sensor": true } ] },
     { "name": "wedge", "type": "kinematic", "velocity": [1, 0],
       "loads": { "torque": { "kind": "step", "time": 2, "before": -1, "after": 1 } },
       "shapes": [ { "type": "polygon", "points": [[0, 0], [2, 0], [0, 1]] } ] }
@@ -119,6 +121,8 @@ void check_same(const Scene& a, const Scene& b) {
                 BOOST_TEST(p.material.density == q.material.density);
                 BOOST_TEST(p.material.restitution == q.material.restitution);
                 BOOST_TEST(p.material.friction == q.material.friction);
+                BOOST_TEST((p.filter == q.filter));
+                BOOST_TEST(p.is_sensor == q.is_sensor);
                 if (p.geometry.type == ShapeType::circle) {
                     BOOST_TEST(p.geometry.circle.radius == q.geometry.circle.radius);
                     BOOST_TEST(p.geometry.circle.center.x == q.geometry.circle.center.x);
@@ -213,6 +217,12 @@ BOOST_AUTO_TEST_CASE(every_field_reaches_the_scene,
     BOOST_TEST(ball.material.density == 2.0); // inline: missing friction from "default"
     BOOST_TEST(ball.material.restitution == 1.0);
     BOOST_TEST(ball.material.friction == 0.6);
+    BOOST_TEST(ball.filter.category_bits == 6u); // the filter as written (DD27)
+    BOOST_TEST(ball.filter.mask_bits == 0xFFFFFFFDu);
+    BOOST_TEST(ball.filter.group_index == -3);
+    BOOST_TEST(ball.is_sensor);
+    BOOST_TEST(!box.is_sensor); // the defaults
+    BOOST_TEST((box.filter == Filter{}));
 
     const SceneBody& wedge = s.bodies[2];
     BOOST_TEST((wedge.def.type == BodyType::kinematic));

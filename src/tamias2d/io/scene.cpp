@@ -610,7 +610,37 @@ void check_outline(const Ctx& ctx, const std::string& ptr, const std::vector<Vec
     }
 }
 
+/// A shape's "filter" (DD27) and "sensor" (DD28), the keys every kind of shape has.
+void parse_filter_and_sensor(const Ctx& ctx, const ojson& v, const std::string& ptr,
+                             ShapeDef& def) {
+    if (const ojson* f = find(v, "filter")) {
+        const std::string fp = child(ptr, "filter");
+        require_object(ctx, *f, fp, "filter", "a filter object");
+        check_keys(ctx, *f, fp, {"category_bits", "mask_bits", "group_index"}, "a filter");
+        const auto bits = [&](std::string_view key, std::uint32_t& out, long long lo,
+                              long long hi) {
+            if (const ojson* b = find(*f, key))
+                out = std::uint32_t(as_integer(ctx, *b, child(fp, key), std::string(key), lo, hi));
+        };
+        bits("category_bits", def.filter.category_bits, 0, 0xFFFFFFFFll);
+        bits("mask_bits", def.filter.mask_bits, 0, 0xFFFFFFFFll);
+        if (const ojson* gi = find(*f, "group_index"))
+            def.filter.group_index = std::int32_t(as_integer(
+                ctx, *gi, child(fp, "group_index"), "group_index", -2147483648ll, 2147483647ll));
+    }
+    if (const ojson* s = find(v, "sensor"))
+        def.is_sensor = as_bool(ctx, *s, child(ptr, "sensor"), "sensor");
+}
+
+ShapeDef parse_shape_geometry(const Ctx& ctx, const ojson& v, const std::string& ptr);
+
 ShapeDef parse_shape(const Ctx& ctx, const ojson& v, const std::string& ptr) {
+    ShapeDef def = parse_shape_geometry(ctx, v, ptr);
+    parse_filter_and_sensor(ctx, v, ptr, def);
+    return def;
+}
+
+ShapeDef parse_shape_geometry(const Ctx& ctx, const ojson& v, const std::string& ptr) {
     require_object(ctx, v, ptr, "shape", "a shape object {\"type\": ...}");
     const std::string type =
         as_string(ctx, require_key(ctx, v, ptr, "type", "a shape"), child(ptr, "type"), "type");
@@ -621,8 +651,10 @@ ShapeDef parse_shape(const Ctx& ctx, const ojson& v, const std::string& ptr) {
     };
     try {
         if (type == "box") {
-            check_keys(ctx, v, ptr, {"type", "width", "height", "center", "angle", "material"},
-                       "a box shape");
+            check_keys(
+                ctx, v, ptr,
+                {"type", "width", "height", "center", "angle", "material", "filter", "sensor"},
+                "a box shape");
             const double w = req_length(ctx, v, ptr, "width", "a box shape");
             const double h = req_length(ctx, v, ptr, "height", "a box shape");
             Vec2d center{};
@@ -633,7 +665,8 @@ ShapeDef parse_shape(const Ctx& ctx, const ojson& v, const std::string& ptr) {
             return checked(ctx, ptr, ptr, box_shape(w, h, material, center, angle));
         }
         if (type == "circle") {
-            check_keys(ctx, v, ptr, {"type", "radius", "center", "material"}, "a circle shape");
+            check_keys(ctx, v, ptr, {"type", "radius", "center", "material", "filter", "sensor"},
+                       "a circle shape");
             const double r = req_length(ctx, v, ptr, "radius", "a circle shape");
             Vec2d center{};
             opt_vec2(ctx, v, ptr, "center", center);
@@ -641,7 +674,8 @@ ShapeDef parse_shape(const Ctx& ctx, const ojson& v, const std::string& ptr) {
             return checked(ctx, ptr, ptr, circle_shape(r, material, center));
         }
         if (type == "polygon") {
-            check_keys(ctx, v, ptr, {"type", "points", "material"}, "a polygon shape");
+            check_keys(ctx, v, ptr, {"type", "points", "material", "filter", "sensor"},
+                       "a polygon shape");
             const ojson& pts = require_key(ctx, v, ptr, "points", "a polygon shape");
             const std::string pp = child(ptr, "points");
             if (!pts.is_array())
@@ -1581,6 +1615,12 @@ std::string scene_to_json(const Scene& scene, int indent) {
                 sj["points"] = std::move(pts);
             }
             sj["material"] = material_json(s.material);
+            if (!(s.filter == Filter{})) // (the default filter is left out)
+                sj["filter"] = {{"category_bits", s.filter.category_bits},
+                                {"mask_bits", s.filter.mask_bits},
+                                {"group_index", s.filter.group_index}};
+            if (s.is_sensor)
+                sj["sensor"] = true;
             shapes.push_back(std::move(sj));
         }
         o["shapes"] = std::move(shapes);
