@@ -1,23 +1,34 @@
-// One interface over the three engines the benchmark compares. Each adapter builds a
-// SceneDesc (bench_scenes.hpp) in its engine with the benchmark's settings and nothing else:
+// One interface over the engines the benchmark compares. Each adapter builds a SceneDesc
+// (bench_scenes.hpp) in its engine with the benchmark's settings and nothing else:
 //   Tamias2D  its WorldDef defaults (4 substeps, soft contacts and joints), gravity from the
 //             scene;
 //   Chipmunk  7.0.3, 10 iterations, default collision slop and bias, sleeping off (default);
 //             joints: cpPivotJoint with its default error bias and unlimited max bias;
 //   Box2D     2.4.1, 8 velocity and 3 position iterations, sleeping off; joints:
-//             b2RevoluteJoint (no limit, no motor).
+//             b2RevoluteJoint (no limit, no motor);
+//   Box2D v3  b2DefaultWorldDef, 4 substeps, one worker thread, sleeping as the scene says;
+//             joints: b2RevoluteJoint with its defaults (box2d_v3_engine.cpp). Its SSE2 and AVX2
+//             builds each run in an executable of their own (remote_engine.hpp).
 #pragma once
 
+#include <chrono>
 #include <memory>
 #include <string>
 #include <string_view>
 
 #include "bench_scenes.hpp"
+#include "thread_cpu_time.hpp"
 
 namespace tamias_bench {
 
-enum class EngineId : int { tamias = 0, chipmunk = 1, box2d = 2 };
-inline constexpr int engine_count = 3;
+enum class EngineId : int {
+    tamias = 0,
+    chipmunk = 1,
+    box2d = 2,
+    box2d_v3_sse2 = 3,
+    box2d_v3_avx2 = 4
+};
+inline constexpr int engine_count = 5;
 
 std::string_view engine_name(EngineId e);
 
@@ -29,15 +40,45 @@ struct Probe {
     double angle = 0.0; ///< rad
 };
 
+/// The time a block of steps took (ms): the thread's CPU time (the benchmark's measure), wall
+/// time, and the kernel's part of the CPU time.
+struct StepTimes {
+    double cpu = 0.0, wall = 0.0, system = 0.0;
+    StepTimes& operator+=(StepTimes o) {
+        cpu += o.cpu;
+        wall += o.wall;
+        system += o.system;
+        return *this;
+    }
+};
+
 class Engine {
   public:
     virtual ~Engine() = default;
     virtual void step() = 0;
     /// State of the scene's body `index` (index into SceneDesc::bodies).
     virtual Probe probe(int index) const = 0;
+    /// Steps `n` times, timed by the thread that steps: an engine in another process times its
+    /// steps there, so the pipe to it is never in the time.
+    virtual StepTimes timed_steps(int n) {
+        const double s0 = system_ms();
+        const double w0 = wall_ms(), c0 = cpu_ms();
+        for (int i = 0; i < n; ++i)
+            step();
+        const double c1 = cpu_ms(), w1 = wall_ms();
+        const double s1 = system_ms();
+        return {c1 - c0, w1 - w0, s1 - s0};
+    }
+
+  private:
+    static double wall_ms() {
+        return std::chrono::duration<double, std::milli>(
+                   std::chrono::steady_clock::now().time_since_epoch())
+            .count();
+    }
 };
 
-/// Builds the scene; throws (std::exception) if the engine rejects it.
+/// Builds the scene; throws (std::exception) if the engine rejects it or is not available.
 std::unique_ptr<Engine> make_engine(EngineId id, const SceneDesc& scene);
 
 } // namespace tamias_bench

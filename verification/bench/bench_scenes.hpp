@@ -1,6 +1,7 @@
 // The benchmark scenes, described once, engine-neutrally: every engine adapter
 // (bench_engines.cpp) builds exactly this geometry, so Tamias2D, Chipmunk 7 and Box2D 2.4 see
-// identical bodies, shapes, masses and initial states.
+// identical bodies, shapes, masses and initial states (Box2D v3, in a process of its own, gets
+// the same description through a pipe: remote_engine.hpp).
 //
 // Layouts follow the project's scene generators (src/tamias2d/io/scene_generators.cpp) with
 // the benchmark's parameters: pyramids start with every box exactly touching its neighbours
@@ -62,7 +63,7 @@ struct SceneDesc {
     std::vector<BodyDesc> bodies;
     int dynamic_count = 0;
     // Quality probes.
-    int top_index = -1;        ///< pyramid: the top box
+    std::vector<int> tops;     ///< pyramid: the top box of each pyramid
     double inner_half_w = 0.0; ///< rain: container inner half width (m), floor at y = 0
     double box = 1.0;          ///< box side (m)
     double speed = 0.0;        ///< elastic: initial speed of each box (m s^-1)
@@ -105,7 +106,44 @@ inline SceneDesc make_pyramid(const std::string& name, int base) {
         }
     }
     s.dynamic_count = base * (base + 1) / 2;
-    s.top_index = int(s.bodies.size()) - 1;
+    s.tops.push_back(int(s.bodies.size()) - 1);
+    return s;
+}
+
+/// Box2D v3's many_pyramids: `levels` x `columns` pyramids of base `base` (v3: 20 x 20 of base
+/// 10, 22000 boxes of 1 m). The pyramids of a level stand 1 m apart, centred on x = 0, on a floor
+/// 2 (base + 1) columns wide whose top face is y = 0 for the lowest level and (base + 1) m higher
+/// for each next one, 1 m above the tops of the pyramids below. v3's floors are segments
+/// (Tamias2D has none yet): here they are boxes 0.5 m thick with the same top faces, all on one
+/// static body as in v3, so 0.5 m of air separates a floor from the tops under it.
+inline SceneDesc make_many_pyramids(const std::string& name, int base, int levels, int columns) {
+    SceneDesc s;
+    s.name = name;
+    s.kind = SceneKind::pyramid;
+    const double box = 1.0, pitch = (base + 1) * box, floor = 0.5 * box;
+    s.box = box;
+    BodyDesc ground;
+    ground.dynamic = false;
+    for (int level = 0; level < levels; ++level) {
+        ground.boxes.push_back(
+            {{0.0, level * pitch - 0.5 * floor}, 0.5 * columns * pitch, 0.5 * floor, 0.0});
+    }
+    s.bodies.push_back(ground);
+    for (int level = 0; level < levels; ++level) {
+        for (int column = 0; column < columns; ++column) {
+            const double middle = (column - 0.5 * (columns - 1)) * pitch;
+            for (int row = 0; row < base; ++row) {
+                const int n = base - row;
+                const double y = level * pitch + (row + 0.5) * box;
+                for (int col = 0; col < n; ++col) {
+                    s.bodies.push_back(
+                        box_body({middle + (col - 0.5 * (n - 1)) * box, y}, box, true));
+                }
+            }
+            s.tops.push_back(int(s.bodies.size()) - 1);
+        }
+    }
+    s.dynamic_count = levels * columns * base * (base + 1) / 2;
     return s;
 }
 

@@ -1,0 +1,94 @@
+#include "box2d_v3_engine.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+#include <box2d/box2d.h>
+
+#include "joint_drift.hpp"
+
+namespace tamias_bench {
+
+namespace {
+
+float f32(double x) {
+    return static_cast<float>(x);
+}
+
+b2Vec2 vec(V2 v) {
+    return {f32(v.x), f32(v.y)};
+}
+
+/// The exact rotation (v3's b2MakeRot approximates the cosine and sine).
+b2Rot rotation(double angle) {
+    return {f32(std::cos(angle)), f32(std::sin(angle))};
+}
+
+class Box2DV3Engine final : public Engine {
+  public:
+    explicit Box2DV3Engine(const SceneDesc& s) : dt_(f32(s.dt)) {
+        b2WorldDef wd = b2DefaultWorldDef(); // contact 30 Hz, continuous collision on
+        wd.gravity = vec(s.gravity);
+        wd.enableSleep = s.sleep; // a body falls asleep after b2_timeToSleep, 0.5 s
+        wd.workerCount = 1;       // one thread, as the other engines
+        world_ = b2CreateWorld(&wd);
+        bodies_.reserve(s.bodies.size());
+        for (const BodyDesc& d : s.bodies) {
+            b2BodyDef bd = b2DefaultBodyDef();
+            bd.type = d.dynamic ? b2_dynamicBody : b2_staticBody;
+            bd.position = vec(d.position);
+            bd.rotation = rotation(d.angle);
+            bd.linearVelocity = vec(d.velocity);
+            const b2BodyId body = b2CreateBody(world_, &bd);
+            for (const BoxPart& p : d.boxes) {
+                const b2Polygon box =
+                    b2MakeOffsetBox(f32(p.hx), f32(p.hy), vec(p.center), rotation(p.angle));
+                b2ShapeDef sd = b2DefaultShapeDef();
+                sd.density = f32(d.density);
+                sd.material.friction = f32(d.friction);       // v3: sqrt(f1 f2)
+                sd.material.restitution = f32(d.restitution); // v3: max(e1, e2)
+                b2CreatePolygonShape(body, &sd, &box);
+            }
+            if (d.dynamic && d.boxes.empty()) {
+                // About the origin, which is the centre of mass here.
+                b2Body_SetMassData(body, {f32(d.mass), {0.0f, 0.0f}, f32(d.inertia)});
+            }
+            bodies_.push_back(body);
+        }
+        const std::vector<LocalAnchors> anchors = local_anchors(s);
+        for (std::size_t k = 0; k < s.joints.size(); ++k) {
+            b2RevoluteJointDef jd = b2DefaultRevoluteJointDef(); // no limit, motor or spring
+            jd.base.bodyIdA = bodies_[std::size_t(s.joints[k].a)];
+            jd.base.bodyIdB = bodies_[std::size_t(s.joints[k].b)];
+            jd.base.localFrameA.p = vec(anchors[k].on_a);
+            jd.base.localFrameB.p = vec(anchors[k].on_b);
+            b2CreateRevoluteJoint(world_, &jd);
+        }
+    }
+    ~Box2DV3Engine() override { b2DestroyWorld(world_); }
+    Box2DV3Engine(const Box2DV3Engine&) = delete;
+    Box2DV3Engine& operator=(const Box2DV3Engine&) = delete;
+
+    void step() override { b2World_Step(world_, dt_, 4); }
+    Probe probe(int i) const override {
+        const b2BodyId b = bodies_[std::size_t(i)];
+        const b2Vec2 p = b2Body_GetPosition(b), v = b2Body_GetLinearVelocity(b);
+        const b2Rot q = b2Body_GetRotation(b);
+        // atan2 itself: v3's b2Rot_GetAngle approximates it, which would show as joint drift.
+        return {{p.x, p.y}, {v.x, v.y}, b2Body_GetAngularVelocity(b), std::atan2(q.s, q.c)};
+    }
+
+  private:
+    float dt_;
+    b2WorldId world_{};
+    std::vector<b2BodyId> bodies_;
+};
+
+} // namespace
+
+std::unique_ptr<Engine> make_box2d_v3_engine(const SceneDesc& scene) {
+    return std::make_unique<Box2DV3Engine>(scene);
+}
+
+} // namespace tamias_bench

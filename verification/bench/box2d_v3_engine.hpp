@@ -1,0 +1,15 @@
+// Box2D v3 behind the benchmark's engine interface. Its C API names its types as Box2D 2.4's C++
+// classes (b2Vec2, b2BodyDef, ...), so it lives in a translation unit of its own, linked only
+// into the engine workers (engine_worker.cpp), never beside Box2D 2.4.
+#pragma once
+
+#include <memory>
+
+#include "bench_engines.hpp"
+
+namespace tamias_bench {
+
+/// Builds the scene in Box2D v3; throws (std::exception) if v3 rejects it.
+std::unique_ptr<Engine> make_box2d_v3_engine(const SceneDesc& scene);
+
+} // namespace tamias_bench
