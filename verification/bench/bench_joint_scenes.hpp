@@ -4,8 +4,8 @@
 // No body has a shape: each carries the mass and moment of inertia of the shape it stands for,
 // and no scene has a contact. Box2D v3's joint_grid, which `joint_grid` follows, gives its
 // circles a collision filter that keeps them from colliding with one another, so its grid has
-// no contact either; Tamias2D has no collision filter yet, and the grid folds as it falls, so
-// spacing alone cannot keep neighbours apart. Leaving the shapes out in all three engines makes
+// no contact either; the grid folds as it falls, so spacing alone cannot keep neighbours apart,
+// and the shared description has no filter to give every engine. Leaving the shapes out makes
 // the scenes identical and contact-free (the one difference from v3: its filtered shapes still
 // cost it broad-phase updates, ours cost none). The chains have no shapes either, so that their
 // drift is the joints' own, not a contact's push between folded links.
