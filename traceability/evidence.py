@@ -473,6 +473,11 @@ def parse_junit(path):
             if why.startswith(("Unable to find executable", "Required files missing",
                                "Fixture dependency failed", "Failed to start")):
                 status = "error"  # registered but could not run: not a legitimate skip
+        # Boost.Test counts the assertions a case evaluated: a case that passed without one
+        # checked nothing, so it cannot stand as evidence (CTest's entries carry no count).
+        if status == "passed" and tc.get("assertions") == "0":
+            status = "error"
+            message = "passed without evaluating a single assertion: it verifies nothing"
         # CTest's JUnit carries status="run|fail|disabled|notrun"
         cstat = tc.get("status")
         if cstat == "fail" and status == "passed":

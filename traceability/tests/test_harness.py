@@ -316,6 +316,19 @@ class Units(unittest.TestCase):
         self.assertEqual(analysis.item_status([], [s]), "untested")
         self.assertEqual(analysis.item_status([], []), "not implemented")
 
+    def test_a_case_without_assertions_is_no_evidence(self):
+        # Oracle: Boost.Test's JUnit count: a case that passed after zero assertions is an
+        # error (it checked nothing); one with assertions stays passed.
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "cases.xml")
+            with open(path, "w", encoding="utf-8") as fh:
+                fh.write('<testsuite><testcase assertions="0" classname="s" name="empty"/>'
+                         '<testcase assertions="2" classname="s" name="real"/></testsuite>')
+            r = evidence.parse_junit(path)
+        self.assertEqual(r[("s", "empty")]["status"], "error")
+        self.assertIn("verifies nothing", r[("s", "empty")]["message"])
+        self.assertEqual(r[("s", "real")]["status"], "passed")
+
     def test_comment_spans(self):
         spans, inb = evidence._comment_spans('x = "\\srs{A}"; // \\srs{B}', False, False)
         self.assertEqual(len(spans), 1)
