@@ -35,7 +35,17 @@ while read -r prog; do
     p0=$(date +%s)
     args=()
     [ "$(basename "$prog")" = tamias_bench ] && [ $full_bench -eq 0 ] && args=(--quick)
-    "$prog" reports/data "${args[@]}" || echo "   $(basename "$prog") exited non-zero (its checks say why)"
+    before=$(ls reports/data | wc -l)
+    "$prog" reports/data "${args[@]}"
+    rc=$?
+    [ $rc -eq 0 ] || echo "   $(basename "$prog") exited $rc (its checks say why)"
+    if [ "$(ls reports/data | wc -l)" -eq "$before" ]; then
+        # A program that wrote nothing (a crash) must not vanish from the report: one failed
+        # check stands for it.
+        name=$(basename "$prog")
+        printf '{"program": "%s", "description": "wrote no results", "checks": [{"name": "%s wrote its results", "labels": [], "passed": false, "oracle": "the program writes reports/data/<program>.json", "details": "exit status %s, no JSON written"}], "tables": [], "series": []}\n' \
+            "$name" "$name" "$rc" > "reports/data/$name.missing.json"
+    fi
     echo "   $(basename "$prog"): $(( $(date +%s) - p0 )) s"
 done < build/verification_programs.txt
 
