@@ -497,7 +497,10 @@ def parse_junit(path):
 def _run(cmd, cwd, timeout, log=None, stderr_to=None):
     t0 = time.time()
     try:
-        proc = subprocess.run(cmd, cwd=cwd or None, capture_output=True, text=True,
+        # A property-test replay seed would shrink the seeded properties to one scene: the
+        # report's runs never see it.
+        env = {k: v for k, v in os.environ.items() if k != "TAMIAS_PROPERTY_SEED"}
+        proc = subprocess.run(cmd, cwd=cwd or None, capture_output=True, text=True, env=env,
                               timeout=timeout, errors="replace")
         rc, out, err = proc.returncode, proc.stdout, proc.stderr
     except subprocess.TimeoutExpired as exc:
