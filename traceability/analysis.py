@@ -35,14 +35,15 @@ def load_config(path):
     return cfg
 
 
-def item_status(code_sites, tests):
+def item_status(code_sites, tests, kind=None):
     passed = [t for t in tests if t["status"] == "passed"]
     failing = [t for t in tests if t["status"] in FAILING]
     if failing:
         return "failing"
     if passed:
         return "verified"
-    if code_sites or tests:
+    # An assumption, goal or change is never "implemented": without a test it is untested.
+    if code_sites or tests or kind in LABEL_ONLY_KINDS:
         return "untested"
     return "not implemented"
 
@@ -64,7 +65,7 @@ def analyse(srs, code_sites, tests, config):
         it = srs.items[lab]
         sites = sites_by.get(lab, [])
         its_tests = sorted(tests_by.get(lab, []), key=lambda t: (t["status"] not in FAILING, t["id"]))
-        status = item_status(sites, its_tests)
+        status = item_status(sites, its_tests, it["kind"])
         notes = []
         if it["kind"] in LABEL_ONLY_KINDS:
             notes.append(LABEL_ONLY_KINDS[it["kind"]])

@@ -67,8 +67,9 @@ class FixtureReport(unittest.TestCase):
             "IM1": "verified", "DD1": "verified", "R1": "verified", "NFR1": "verified",
             "IM2": "failing",
             "T1": "untested", "R2": "untested", "LC1": "untested",
-            "GS1": "not implemented", "A1": "not implemented", "DD2": "not implemented",
-            "DC1": "not implemented",
+            # Kinds only tests verify are "untested" without one, never "not implemented".
+            "GS1": "untested", "A1": "untested", "DD2": "not implemented",
+            "DC1": "untested",
         }
         self.assertEqual({k: v["status"] for k, v in self.items.items()}, expected)
 
@@ -79,7 +80,7 @@ class FixtureReport(unittest.TestCase):
         self.assertEqual(by_kind["IM"]["failing"], 1)
         self.assertEqual(by_kind["IM"]["verified_percent"], 50.0)
         self.assertEqual(self.report["summary"]["by_status"],
-                         {"verified": 4, "failing": 1, "untested": 3, "not implemented": 4})
+                         {"verified": 4, "failing": 1, "untested": 6, "not implemented": 1})
         self.assertNotIn("GD", by_kind)  # general_definitions.yaml is an empty list
 
     def test_orphans_both_directions(self):
@@ -315,6 +316,7 @@ class Units(unittest.TestCase):
         self.assertEqual(analysis.item_status([1], []), "untested")
         self.assertEqual(analysis.item_status([], [s]), "untested")
         self.assertEqual(analysis.item_status([], []), "not implemented")
+        self.assertEqual(analysis.item_status([], [], "A"), "untested")
 
     def test_a_case_without_assertions_is_no_evidence(self):
         # Oracle: Boost.Test's JUnit count: a case that passed after zero assertions is an
