@@ -274,7 +274,7 @@ BOOST_AUTO_TEST_CASE(batched_moves_equal_single_moves, *utf::label("IM4") * utf:
 
 // Oracle: heap allocation counter (replaced global operator new): once warmed up, moving
 // proxies, update_pairs and queries allocate nothing.
-BOOST_AUTO_TEST_CASE(steady_state_allocation_free, *utf::label("NFR1")) {
+BOOST_AUTO_TEST_CASE(steady_state_allocation_free) {
     std::mt19937_64 rng(23);
     BroadPhase bp(margin);
     std::vector<int> ids;

@@ -82,7 +82,7 @@ BOOST_AUTO_TEST_SUITE(sleeping)
 // Oracle: the rule (at rest for time_to_sleep) and the scene's geometry. A box dropped 0.5 m
 // falls for about 0.32 s, so it cannot be asleep before 0.3 s + time_to_sleep; asleep, it has
 // no velocity, rests on the ground (centre 0.5 m up) and does not move at all.
-BOOST_AUTO_TEST_CASE(a_resting_box_falls_asleep_and_stays_put, *utf::label("NFR1")) {
+BOOST_AUTO_TEST_CASE(a_resting_box_falls_asleep_and_stays_put) {
     World w(def_with_sleep());
     ground(w);
     const BodyId b = box(w, 0.0, 1.0);
@@ -105,7 +105,7 @@ BOOST_AUTO_TEST_CASE(a_resting_box_falls_asleep_and_stays_put, *utf::label("NFR1
 
 // Oracle: the same scene with sleeping off. Until a body sleeps, sleeping changes nothing: a
 // pyramid whose bodies never reach time_to_sleep moves bit for bit as without sleeping.
-BOOST_AUTO_TEST_CASE(sleeping_changes_nothing_until_a_body_sleeps, *utf::label("NFR1")) {
+BOOST_AUTO_TEST_CASE(sleeping_changes_nothing_until_a_body_sleeps) {
     const auto run = [](bool on) {
         WorldDef d = def_with_sleep(on);
         d.time_to_sleep = 1e9;
@@ -133,7 +133,7 @@ BOOST_AUTO_TEST_CASE(sleeping_changes_nothing_until_a_body_sleeps, *utf::label("
 // Oracle: the wake rule. A box dropped onto a sleeping stack wakes the box it lands on, and
 // through the island the whole stack, in the step it first touches; once everything has been at
 // rest for time_to_sleep again, all four sleep.
-BOOST_AUTO_TEST_CASE(an_impact_wakes_the_sleeping_stack, *utf::label("NFR1")) {
+BOOST_AUTO_TEST_CASE(an_impact_wakes_the_sleeping_stack) {
     World w(def_with_sleep());
     ground(w);
     const std::vector<BodyId> stack = {box(w, 0.0, 0.5), box(w, 0.0, 1.5), box(w, 0.0, 2.5)};
@@ -161,7 +161,7 @@ BOOST_AUTO_TEST_CASE(an_impact_wakes_the_sleeping_stack, *utf::label("NFR1")) {
 // Oracle: the rule at its edge: with time_to_sleep 0 a body sleeps at the first step it ends
 // slower than the tolerances, and not before (a falling box is not slow). That may be in the
 // air, at the top of a small rebound: time_to_sleep is what guards against it.
-BOOST_AUTO_TEST_CASE(time_to_sleep_zero_still_needs_rest, *utf::label("NFR1")) {
+BOOST_AUTO_TEST_CASE(time_to_sleep_zero_still_needs_rest) {
     WorldDef d = def_with_sleep();
     d.time_to_sleep = 0.0;
     World w(d);
@@ -181,7 +181,7 @@ BOOST_AUTO_TEST_CASE(time_to_sleep_zero_still_needs_rest, *utf::label("NFR1")) {
 
 // Oracle: the API's contract (world.hpp): every call that changes a body's transform,
 // velocities or loads wakes it.
-BOOST_AUTO_TEST_CASE(api_calls_wake_a_sleeping_body, *utf::label("NFR1")) {
+BOOST_AUTO_TEST_CASE(api_calls_wake_a_sleeping_body) {
     std::vector<test::BodyCall> calls = test::body_changes();
     calls.push_back({"set_awake", [](World& w, BodyId b) { w.set_awake(b, true); }});
     calls.push_back({"set_gravity", [](World& w, BodyId) { w.set_gravity({0.0, -10.0}); }});
@@ -200,7 +200,7 @@ BOOST_AUTO_TEST_CASE(api_calls_wake_a_sleeping_body, *utf::label("NFR1")) {
 // Oracle: the wake rule for lost support, and free fall (the box falls 1 m to the ground).
 // Destroying the box under a sleeping box, or moving the static ground away, wakes what rested
 // on it, which then falls.
-BOOST_AUTO_TEST_CASE(removing_the_support_wakes_what_rests_on_it, *utf::label("NFR1")) {
+BOOST_AUTO_TEST_CASE(removing_the_support_wakes_what_rests_on_it) {
     {
         World w(def_with_sleep());
         ground(w);
@@ -227,7 +227,7 @@ BOOST_AUTO_TEST_CASE(removing_the_support_wakes_what_rests_on_it, *utf::label("N
 
 // Oracle: the rule's exceptions. A body that may not sleep keeps its island awake, and a body
 // with a persistent load is never at rest.
-BOOST_AUTO_TEST_CASE(what_may_not_sleep_keeps_its_island_awake, *utf::label("NFR1")) {
+BOOST_AUTO_TEST_CASE(what_may_not_sleep_keeps_its_island_awake) {
     World w(def_with_sleep());
     ground(w);
     BodyDef restless;
@@ -247,7 +247,7 @@ BOOST_AUTO_TEST_CASE(what_may_not_sleep_keeps_its_island_awake, *utf::label("NFR
 
 // Oracle: the API's contract. With sleeping on, a body defined asleep hangs where it is until
 // woken; set_awake(false) does the same to a falling body; with sleeping off both are ignored.
-BOOST_AUTO_TEST_CASE(bodies_put_to_sleep_wait_to_be_woken, *utf::label("NFR1")) {
+BOOST_AUTO_TEST_CASE(bodies_put_to_sleep_wait_to_be_woken) {
     BodyDef asleep;
     asleep.awake = false;
     {
@@ -279,7 +279,7 @@ BOOST_AUTO_TEST_CASE(bodies_put_to_sleep_wait_to_be_woken, *utf::label("NFR1")) 
 
 // Oracle: a kinematic body's given motion. A moving kinematic body that reaches a sleeping box
 // wakes it and pushes it along; a kinematic body at rest falls asleep like any other.
-BOOST_AUTO_TEST_CASE(kinematic_bodies_wake_what_they_reach, *utf::label("NFR1")) {
+BOOST_AUTO_TEST_CASE(kinematic_bodies_wake_what_they_reach) {
     World w(def_with_sleep());
     ground(w);
     const BodyId b = box(w, 0.0, 0.5);
@@ -299,7 +299,7 @@ BOOST_AUTO_TEST_CASE(kinematic_bodies_wake_what_they_reach, *utf::label("NFR1"))
 }
 
 // Oracle: determinism (the brief's standard): the same input gives the same bits, sleeping on.
-BOOST_AUTO_TEST_CASE(sleeping_is_deterministic, *utf::label("NFR1")) {
+BOOST_AUTO_TEST_CASE(sleeping_is_deterministic) {
     const auto run = [] {
         World w(def_with_sleep());
         io::RainParams p;
@@ -325,7 +325,7 @@ BOOST_AUTO_TEST_CASE(sleeping_is_deterministic, *utf::label("NFR1")) {
 // teleports, destroyed boxes, boxes put to sleep by hand): two touching non-static bodies are
 // both awake or both asleep (islands sleep and wake whole), and a sleeping body has no velocity
 // and has not moved since the step before, if it slept then too.
-BOOST_AUTO_TEST_CASE(sleep_invariants_hold_under_random_changes, *utf::label("NFR1")) {
+BOOST_AUTO_TEST_CASE(sleep_invariants_hold_under_random_changes) {
     World w(def_with_sleep());
     io::RainParams p;
     p.count = 150;

@@ -82,7 +82,7 @@ BOOST_AUTO_TEST_SUITE(wide_contact_solver)
 // V = double). Constraints that share no moving body commute, so the packed, level-ordered
 // solve must give the same numbers exactly; any lane mix-up, lost write or reordering of two
 // manifolds on one body shows up as a difference.
-BOOST_AUTO_TEST_CASE(packs_reproduce_the_sequential_pass, *utf::label("IM3") * utf::label("NFR1")) {
+BOOST_AUTO_TEST_CASE(packs_reproduce_the_sequential_pass) {
     const ContactSolverSettings st = settings();
     int compared = 0;
     for (std::uint32_t seed = 1; seed <= 40; ++seed) {
@@ -135,8 +135,7 @@ BOOST_AUTO_TEST_CASE(packs_reproduce_the_sequential_pass, *utf::label("IM3") * u
 // Oracle: the level rule itself, checked pack by pack: every constraint is in exactly one lane,
 // no moving body appears twice in a pack, and two constraints on one moving body are solved in
 // creation order.
-BOOST_AUTO_TEST_CASE(levels_separate_bodies_and_keep_their_order,
-                     *utf::label("IM3") * utf::label("NFR1")) {
+BOOST_AUTO_TEST_CASE(levels_separate_bodies_and_keep_their_order) {
     for (std::uint32_t seed = 100; seed < 120; ++seed) {
         const Scene scene = random_scene(seed, 4 + int(seed % 13), 60);
         std::vector<GraphEdge> edges;
@@ -178,7 +177,7 @@ BOOST_AUTO_TEST_CASE(levels_separate_bodies_and_keep_their_order,
 // make level 1 (a full pack and one left over); in case A, three more each follow one manifold of
 // the full pack, so they join the left-over one; in case B the first of two more follows the
 // left-over manifold itself (body 5), so that pack closes with one lane.
-BOOST_AUTO_TEST_CASE(packs_fill_across_levels, *utf::label("NFR1")) {
+BOOST_AUTO_TEST_CASE(packs_fill_across_levels) {
     using P = ConstraintGraph::Pack;
     constexpr std::uint32_t x = ConstraintGraph::no_constraint;
     const auto packs_of = [](std::vector<GraphEdge> edges) {
