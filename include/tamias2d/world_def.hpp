@@ -29,6 +29,15 @@ struct WorldDef {
     double linear_slop = 0.0;
     /// Contacts are created this far (m) before the shapes touch (speculative contacts).
     double speculative_distance = 0.02;
+    /// Continuous collision (DD29): after each step, a dynamic body that moved farther than
+    /// the speculative distance is swept from its start pose to its end pose against the
+    /// static shapes; if the core of one of its shapes (a disc about its centroid) would reach
+    /// one, the body is put back just short of the impact (pose and velocity interpolated; the
+    /// next step's contact stops it), so that it cannot pass through a thin static shape
+    /// between two steps. Not guarded: pairs of moving bodies (dynamic or kinematic), and a
+    /// body whose core already overlaps a static shape at the step's start. Off: bodies move as
+    /// the solver leaves them, and a fast one can tunnel.
+    bool enable_continuous = true;
     /// Restitution (DD12) applies when the bodies approach faster than this (m s^-1).
     double restitution_threshold = 0.0;
     /// Sleeping (dynamics/sleep.hpp): a group of touching bodies that has stayed slower than

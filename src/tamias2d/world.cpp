@@ -475,7 +475,7 @@ void World::step(double dt) {
         w.solver.prepare_bodies(w.bodies, w.loads, w.def, h);
         w.solver.prepare_joints(w.joints, w.bodies);
         w.solver.solve(w.contacts, w.joints, w.def, dt);
-        w.solver.finalize(w.bodies, w.shapes);
+        w.solver.finalize(w.bodies, w.shapes, w.contacts, w.joints, w.def);
         w.break_joints();
         w.sleep.update_sleep(w.bodies, w.def, dt);
     } else {
@@ -483,7 +483,7 @@ void World::step(double dt) {
         w.solver.prepare_joints(w.joints, w.bodies);
         w.contacts.update(w.bodies, w.shapes, false, w.def.speculative_distance);
         w.solver.solve(w.contacts, w.joints, w.def, dt);
-        w.solver.finalize(w.bodies, w.shapes);
+        w.solver.finalize(w.bodies, w.shapes, w.contacts, w.joints, w.def);
         w.break_joints();
     }
     // DD28: the sensors see the poses this step made.

@@ -1,6 +1,7 @@
 #include "tamias2d/dynamics/step_solver.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 
 #include "tamias2d/dynamics/body_store.hpp"
@@ -267,7 +268,8 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
     }
 }
 
-void StepSolver::finalize(BodyStore& store, ShapeStore& shape_store) {
+void StepSolver::finalize(BodyStore& store, ShapeStore& shape_store, const ContactManager& contacts,
+                          const JointStore& joints, const WorldDef& def) {
     auto& bodies = store.bodies;
     auto& shapes = shape_store.shapes;
     // Bodies and shapes are swept in order, but the sweep reads two lines of each shape
@@ -277,6 +279,10 @@ void StepSolver::finalize(BodyStore& store, ShapeStore& shape_store) {
     constexpr std::uint32_t body_ahead = 16, shape_ahead = 8;
     const auto body_count = std::uint32_t(bodies.size());
     shape_store.reserve_undecided(); // allocates only after shapes were added
+    continuous_.clear();
+    // A body whose every point moved less than the speculative distance cannot reach a shape
+    // it had no contact with at the step's start: only the others are swept (DD29).
+    const double seen = def.speculative_distance;
     // Solver body 0 stands for the bodies that did not move: static, asleep or destroyed
     // (their lines are neither asked for nor read).
     for (std::uint32_t i = 0; i < body_count; ++i) {
@@ -298,8 +304,24 @@ void StepSolver::finalize(BodyStore& store, ShapeStore& shape_store) {
             continue;
         Body& b = bodies[i];
         const SolverBody& sb = solver_bodies_[solver_index_[i]];
+        const Vec2d v0 = b.v;
+        const double w0 = b.w;
         b.v = sb.v;
         b.w = sb.w;
+        const double dp2 = dot(sb.dp, sb.dp);
+        // Most bodies are decided by the translation alone; a turning slow one by its reach.
+        bool fast = def.enable_continuous && b.type == BodyType::dynamic && dp2 > seen * seen;
+        if (def.enable_continuous && !fast && sb.dq != 0.0 && b.type == BodyType::dynamic) {
+            double reach = 0.0; // a bound: the radius plus the centre's offset in 1-norm
+            for (std::uint32_t s = b.first_shape; s != null_index; s = shapes[s].next) {
+                const Collider& k = shapes[s].collider;
+                reach = std::max(reach, k.radius + std::abs(k.center.x - b.local_center.x) +
+                                            std::abs(k.center.y - b.local_center.y));
+            }
+            fast = std::sqrt(dp2) + std::abs(sb.dq) * reach > seen;
+        }
+        if (fast)
+            continuous_.add(i, b.center, b.angle, v0, w0);
         b.center += sb.dp;
         b.angle += sb.dq;
         b.xf.q = Rot::from_angle(b.angle);
@@ -316,6 +338,7 @@ void StepSolver::finalize(BodyStore& store, ShapeStore& shape_store) {
         }
     }
     shape_store.refit_undecided();
+    continuous_.run(store, shape_store, contacts, joints, def);
 }
 
 } // namespace tamias2d

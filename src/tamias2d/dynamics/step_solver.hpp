@@ -11,6 +11,7 @@
 #include "tamias2d/body_def.hpp"
 #include "tamias2d/dynamics/constraint_graph.hpp"
 #include "tamias2d/dynamics/contact_constraint.hpp"
+#include "tamias2d/dynamics/continuous.hpp"
 #include "tamias2d/dynamics/joint.hpp"
 #include "tamias2d/dynamics/solver_body.hpp"
 #include "tamias2d/dynamics/wide_contact_solver.hpp"
@@ -37,8 +38,10 @@ class StepSolver {
     /// are stored back for the warm start and the report, the joints keep theirs.
     void solve(ContactManager& contacts, JointStore& joints, const WorldDef& def, double dt);
     /// The new velocities and poses into the bodies, and the shapes' copies and fat boxes
-    /// after them (the broad phase's proxies moved).
-    void finalize(BodyStore& bodies, ShapeStore& shapes);
+    /// after them (the broad phase's proxies moved); then, with def.enable_continuous, the
+    /// continuous pass (DD29) over the dynamic bodies that moved far.
+    void finalize(BodyStore& bodies, ShapeStore& shapes, const ContactManager& contacts,
+                  const JointStore& joints, const WorldDef& def);
 
   private:
     /// \srs{R5} \srs{R6} IM1/IM2, the velocity half of the semi-implicit Euler step (DD4, DD7);
@@ -66,6 +69,7 @@ class StepSolver {
     std::vector<JointedBody> jointed_;
     std::vector<Rot> joint_rotations_; ///< per solver body, for the jointed ones
     std::vector<std::uint8_t> listed_; ///< per solver body: in jointed_ (all 0 between steps)
+    ContinuousPass continuous_;
 };
 
 } // namespace tamias2d

@@ -1082,7 +1082,7 @@ WorldDef parse_world(const Ctx& ctx, const ojson& v, const std::string& ptr) {
                {"gravity", "substeps", "contact_hertz", "contact_damping_ratio",
                 "contact_push_max_velocity", "linear_slop", "speculative_distance",
                 "restitution_threshold", "enable_sleep", "time_to_sleep", "linear_sleep_tolerance",
-                "angular_sleep_tolerance"},
+                "angular_sleep_tolerance", "enable_continuous"},
                "world settings");
     WorldDef w;
     opt_vec2(ctx, v, ptr, "gravity", w.gravity); // DCI_g
@@ -1102,6 +1102,9 @@ WorldDef parse_world(const Ctx& ctx, const ojson& v, const std::string& ptr) {
     opt_number(ctx, v, ptr, "time_to_sleep", w.time_to_sleep);
     opt_number(ctx, v, ptr, "linear_sleep_tolerance", w.linear_sleep_tolerance);
     opt_number(ctx, v, ptr, "angular_sleep_tolerance", w.angular_sleep_tolerance);
+    if (const ojson* e = find(v, "enable_continuous"))
+        w.enable_continuous =
+            as_bool(ctx, *e, child(ptr, "enable_continuous"), "enable_continuous");
     return w;
 }
 
@@ -1557,7 +1560,8 @@ std::string scene_to_json(const Scene& scene, int indent) {
                   {"enable_sleep", w.enable_sleep},
                   {"time_to_sleep", w.time_to_sleep},
                   {"linear_sleep_tolerance", w.linear_sleep_tolerance},
-                  {"angular_sleep_tolerance", w.angular_sleep_tolerance}};
+                  {"angular_sleep_tolerance", w.angular_sleep_tolerance},
+                  {"enable_continuous", w.enable_continuous}};
     j["dt"] = scene.dt;
     j["steps"] = scene.steps;
     j["output_every"] = scene.output_every;

@@ -1,0 +1,171 @@
+#include "tamias2d/collision/time_of_impact.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "tamias2d/collision/segment_distance.hpp"
+#include "tamias2d/model/dd29_time_of_impact.hpp"
+
+namespace tamias2d {
+
+namespace {
+
+/// A collider's polygon in the world frame (vertices and outward normals).
+struct WorldPolygon {
+    Vec2d v[max_polygon_vertices];
+    Vec2d n[max_polygon_vertices];
+    int count = 0;
+};
+
+WorldPolygon place(const Collider& k, const Transform& xf) {
+    WorldPolygon p;
+    p.count = k.count;
+    for (int i = 0; i < k.count; ++i) {
+        p.v[i] = transform_point(xf, k.vertex(i));
+        p.n[i] = rotate(xf.q, k.normal(i));
+    }
+    return p;
+}
+
+/// The greatest separation of b's vertices from a face of a (negative: all behind every face).
+double max_face_separation(const WorldPolygon& a, const WorldPolygon& b) {
+    double best = -INFINITY;
+    for (int i = 0; i < a.count; ++i) {
+        double least = INFINITY;
+        for (int j = 0; j < b.count; ++j)
+            least = std::min(least, dot(a.n[i], b.v[j] - a.v[i]));
+        best = std::max(best, least);
+    }
+    return best;
+}
+
+/// A circle (centre c, radius r) and a polygon: the normal from the circle to the polygon.
+ShapeDistance circle_polygon(Vec2d c, double r, const WorldPolygon& p) {
+    ShapeDistance out;
+    double face = -INFINITY;
+    for (int i = 0; i < p.count; ++i)
+        face = std::max(face, dot(p.n[i], c - p.v[i]));
+    if (face <= 0.0)
+        return out; // the centre is inside
+    double best = INFINITY;
+    Vec2d closest{};
+    for (int i = 0; i < p.count; ++i) {
+        const SegmentDistance sd = segment_distance(p.v[i], p.v[(i + 1) % p.count], c, c);
+        if (sd.distance_squared < best) {
+            best = sd.distance_squared;
+            closest = sd.closest1;
+        }
+    }
+    const double d = std::sqrt(best) - r;
+    if (d > 0.0) {
+        out.distance = d;
+        out.normal = normalize(closest - c);
+    }
+    return out;
+}
+
+ShapeDistance polygon_polygon(const WorldPolygon& a, const WorldPolygon& b) {
+    ShapeDistance out;
+    // Convex polygons overlap unless a face of one separates them (separating axis theorem).
+    if (max_face_separation(a, b) <= 0.0 && max_face_separation(b, a) <= 0.0)
+        return out;
+    double best = INFINITY;
+    Vec2d from{}, to{};
+    for (int i = 0; i < a.count; ++i) {
+        for (int j = 0; j < b.count; ++j) {
+            const SegmentDistance sd =
+                segment_distance(a.v[i], a.v[(i + 1) % a.count], b.v[j], b.v[(j + 1) % b.count]);
+            if (sd.distance_squared < best) {
+                best = sd.distance_squared;
+                from = sd.closest1;
+                to = sd.closest2;
+            }
+        }
+    }
+    if (best > 0.0) {
+        out.distance = std::sqrt(best);
+        out.normal = normalize(to - from);
+    }
+    return out;
+}
+
+} // namespace
+
+ShapeDistance shape_distance(const Collider& a, const Transform& xa, const Collider& b,
+                             const Transform& xb) {
+    const bool ca = a.type == ShapeType::circle, cb = b.type == ShapeType::circle;
+    if (ca && cb) {
+        const Vec2d pa = transform_point(xa, a.center), pb = transform_point(xb, b.center);
+        ShapeDistance out;
+        const double d = length(pb - pa) - a.radius - b.radius;
+        if (d > 0.0) {
+            out.distance = d;
+            out.normal = normalize(pb - pa);
+        }
+        return out;
+    }
+    if (ca)
+        return circle_polygon(transform_point(xa, a.center), a.radius, place(b, xb));
+    if (cb) {
+        ShapeDistance out = circle_polygon(transform_point(xb, b.center), b.radius, place(a, xa));
+        out.normal = -1.0 * out.normal;
+        return out;
+    }
+    return polygon_polygon(place(a, xa), place(b, xb));
+}
+
+double reach(const Collider& k, Vec2d pivot) {
+    if (k.type == ShapeType::circle)
+        return length(k.center - pivot) + k.radius;
+    double r = 0.0;
+    for (int i = 0; i < k.count; ++i)
+        r = std::max(r, length(k.vertex(i) - pivot));
+    return r;
+}
+
+ToiResult time_of_impact(const Collider& moving, const Sweep& sweep, const Collider& fixed,
+                         const Transform& fixed_xf, double target, double tolerance, double t_max,
+                         int max_iterations) {
+    namespace u = tamias2d::units;
+    ToiResult out;
+    const Vec2d dp = sweep.c1 - sweep.c0;
+    const double turn = std::abs(sweep.a1 - sweep.a0);
+    const double r = reach(moving, sweep.local_center);
+    double t = 0.0;
+    ShapeDistance sd = shape_distance(moving, sweep.at(0.0), fixed, fixed_xf);
+    if (sd.distance <= target + tolerance) {
+        out.state = ToiState::overlapped;
+        out.t = 0.0;
+        return out;
+    }
+    for (;;) {
+        // Every point of the moving shape moves towards the fixed one, across the plane
+        // normal to sd.normal, at most this far per unit t.
+        const double bound =
+            model::dd29::motion_bound(u::Length::from_value(dot(dp, sd.normal)),
+                                      u::Angle::from_value(turn), u::Length::from_value(r))
+                .value();
+        if (bound <= 0.0) { // it never reaches the plane
+            out.t = t_max;
+            return out;
+        }
+        const double step =
+            model::dd29::advance(u::Length::from_value(sd.distance), u::Length::from_value(target),
+                                 u::Length::from_value(bound))
+                .value();
+        if (step >= t_max - t) {
+            out.t = t_max;
+            return out;
+        }
+        t += step;
+        ++out.iterations;
+        sd = shape_distance(moving, sweep.at(t), fixed, fixed_xf);
+        if (sd.distance <= target + tolerance || out.iterations >= max_iterations) {
+            out.state = ToiState::hit;
+            out.t = t;
+            return out;
+        }
+    }
+}
+
+} // namespace tamias2d
