@@ -3,7 +3,8 @@
 # extensions, as MSVC gets them) must give bit for bit the results of the vector build. Builds
 # the CLI with the option into build-portable, runs every example scene through it and through
 # build/apps/cli/tamias2d (built by the test suite), and fails unless the outputs are
-# byte-identical.
+# byte-identical. It also runs the golden-hash test (tests/determinism) in the portable build:
+# the same committed hashes as the vector builds, Release and ASan, must come out.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -19,8 +20,12 @@ fi
 
 echo "== portable lanes build (TAMIAS_PORTABLE_LANES=ON)"
 cmake -S . -B build-portable -G Ninja -DTAMIAS_WERROR=ON -DTAMIAS_PORTABLE_LANES=ON \
-    -DTAMIAS_BUILD_TESTS=OFF -DTAMIAS_BUILD_VERIFICATION=OFF >/dev/null
-cmake --build build-portable -j2 --target tamias2d_cli
+    -DTAMIAS_BUILD_TESTS=ON -DTAMIAS_BUILD_VERIFICATION=OFF >/dev/null
+cmake --build build-portable -j2 --target tamias2d_cli determinism_tests
+
+echo "== golden state hashes (tests/determinism/golden_hashes.txt), portable lanes"
+golden_ok=1
+build-portable/tests/determinism/determinism_tests --color_output=no || golden_ok=0
 
 echo "== example scenes, $steps steps (--every $every): vector lanes vs portable lanes"
 out=$(mktemp -d)
@@ -50,4 +55,5 @@ for scene in "${scenes[@]}"; do
     fi
 done
 echo "$passed passed, $failed failed"
-((failed == 0))
+((golden_ok == 1)) || echo "FAIL golden state hashes differ in the portable build (above)"
+((failed == 0 && golden_ok == 1))

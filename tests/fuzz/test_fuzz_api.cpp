@@ -1,0 +1,454 @@
+// Seeded fuzzing of the World API (R4): random sequences of calls with extreme arguments
+// (NaN, infinities, denormals, 1e308, the supported range's bounds), stale, destroyed and
+// forged handles, odd time steps, and queries and ray casts of zero, huge and NaN vectors.
+//
+// Oracle: the library's stated promises (docs/user-guide.md, "Errors" and "Handles"): no crash
+// and no sanitizer report; every rejection is a ValidationError (non-empty field and message)
+// or an InvalidHandle (non-empty message); a rejected call leaves World::state_hash()
+// unchanged; after every accepted call every state, energy and ray-cast result is finite.
+//
+// TAMIAS_FUZZ_API_ITERATIONS=<n> runs more sequences (the default is printed); a failure
+// prints its seed, replayed alone with TAMIAS_FUZZ_SEED=<seed> TAMIAS_FUZZ_API_ITERATIONS=1.
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+#include <cstdlib>
+#include <functional>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "fuzz/fuzz_support.hpp"
+#include "tamias2d/errors.hpp"
+#include "tamias2d/world.hpp"
+
+namespace utf = boost::unit_test;
+using namespace tamias2d;
+using namespace tamias2d::fuzz;
+
+namespace {
+
+// About a second in Release and a few seconds under ASan/UBSan at -O1.
+constexpr long default_iterations = 1000;
+constexpr int calls_per_sequence = 120;
+
+struct Driver {
+    Rng r;
+    World world;
+    std::vector<BodyId> bodies;  // every body created, destroyed ones kept (stale handles)
+    std::vector<ShapeId> shapes; // likewise
+    std::vector<JointId> joints; // likewise
+    long accepted = 0, rejected = 0;
+    // Finding F1 (docs/verification.md, "Fuzzing"): a joint whose anchor lies far (~1e6 m and
+    // more, within the supported 1e12 m) from a body's centre of mass makes the next step give
+    // that body a NaN state, accepted silently. The anchor may be far from the start or become
+    // so when a shape placed far off moves the centre of mass. Until the library refuses such
+    // a joint or step, a sequence that reaches one ends at its first non-finite state and is
+    // counted, not failed.
+    static constexpr double far_lever = 1e5;
+    struct Jointed {
+        BodyId a, b;
+        std::vector<Vec2d> anchors; // world frame, at creation
+    };
+    std::vector<Jointed> jointed;
+    bool far_at_creation = false;
+
+    bool far(BodyId b, Vec2d p) const {
+        if (!world.is_valid(b))
+            return false;
+        const Vec2d c = world.position(b);
+        return std::hypot(p.x - c.x, p.y - c.y) >= far_lever;
+    }
+    void note_joint(BodyId a, BodyId b, std::vector<Vec2d> anchors) {
+        for (const Vec2d p : anchors)
+            far_at_creation = far_at_creation || far(a, p) || far(b, p);
+        jointed.push_back({a, b, std::move(anchors)});
+    }
+    bool far_joint() const {
+        if (far_at_creation)
+            return true;
+        for (const Jointed& j : jointed)
+            for (const Vec2d p : j.anchors)
+                if (far(j.a, p) || far(j.b, p))
+                    return true;
+        return false;
+    }
+    // Finding F2 (docs/verification.md, "Fuzzing"): a jointed dynamic body whose moment of
+    // inertia is tiny for its mass (an accepted override: radius of gyration sqrt(I / m) far
+    // below 1 mm) makes the joint solver diverge within a few steps, to inf and NaN when the
+    // body carries two joints. Counted as F1 is.
+    static constexpr double tiny_gyration_squared = 1e-6; // m^2
+    bool tiny_inertia_joint() const {
+        for (const Jointed& j : jointed)
+            for (const BodyId x : {j.a, j.b})
+                if (world.is_valid(x) && world.mass(x) > 0.0 &&
+                    world.inertia(x) < tiny_gyration_squared * world.mass(x))
+                    return true;
+        return false;
+    }
+    // Finding F3 (docs/verification.md, "Fuzzing"): under an accepted but huge gravity
+    // (|g| >= ~1e7 m s^-2, within the supported 1e12) or a long step (|g| dt^2 of hundreds of
+    // metres) a joint does not hold (its body ends hundreds of metres from the pin after one
+    // step) and can turn NaN.
+    static constexpr double huge_gravity = 1e6; // m s^-2
+    static constexpr double huge_fall = 1e2;    // m, |g| dt^2
+    double last_dt = 0.0;
+    bool huge_load_joint() const {
+        const Vec2d g = world.gravity();
+        const double a = std::hypot(g.x, g.y);
+        return !jointed.empty() && (a >= huge_gravity || a * last_dt * last_dt >= huge_fall);
+    }
+
+    explicit Driver(std::uint64_t seed) : r(seed), world(make_def(r)) {}
+
+    static WorldDef make_def(Rng& r) {
+        WorldDef d;
+        // Valid settings: the constructor's own rejections are tested elsewhere.
+        d.gravity = {0.0, r.chance(80) ? -10.0 : r.between(-100.0, 100.0)};
+        d.enable_sleep = r.chance(50);
+        return d;
+    }
+
+    Vec2d vec() { return {any_double(r), any_double(r)}; }
+
+    BodyId body() {
+        if (bodies.empty() || r.chance(5))
+            return BodyId{static_cast<std::uint32_t>(r.below(8)),
+                          static_cast<std::uint32_t>(r.below(3))}; // forged
+        return bodies[r.below(bodies.size())];
+    }
+    ShapeId shape() {
+        if (shapes.empty() || r.chance(5))
+            return ShapeId{static_cast<std::uint32_t>(r.below(8)), 0};
+        return shapes[r.below(shapes.size())];
+    }
+    JointId joint() {
+        if (joints.empty() || r.chance(5))
+            return JointId{static_cast<std::uint32_t>(r.below(4)), 0};
+        return joints[r.below(joints.size())];
+    }
+
+    Material material() {
+        Material m;
+        m.density = r.chance(85) ? r.between(0.1, 5.0) : any_double(r);
+        m.restitution = r.chance(85) ? r.unit() : any_double(r);
+        m.friction = r.chance(85) ? r.unit() : any_double(r);
+        return m;
+    }
+
+    ShapeDef shape_def() {
+        switch (r.below(3)) {
+        case 0:
+            return circle_shape(positive_size(r), material(), r.chance(80) ? Vec2d{} : vec());
+        case 1:
+            return box_shape(positive_size(r), positive_size(r), material(),
+                             r.chance(80) ? Vec2d{} : vec(), r.chance(80) ? 0.0 : any_double(r));
+        default: {
+            std::vector<Vec2d> pts;
+            const std::size_t n = 1 + r.below(9);
+            for (std::size_t i = 0; i < n; ++i)
+                pts.push_back(r.chance(80) ? Vec2d{r.between(-1, 1), r.between(-1, 1)} : vec());
+            return polygon_shape(pts, material());
+        }
+        }
+    }
+
+    BodyDef body_def() {
+        BodyDef d;
+        d.type = r.chance(15) ? BodyType::static_body
+                              : (r.chance(10) ? BodyType::kinematic : BodyType::dynamic);
+        d.position = r.chance(70) ? Vec2d{r.between(-20, 20), r.between(-5, 20)} : vec();
+        d.angle = r.chance(70) ? r.between(-4, 4) : any_double(r);
+        d.linear_velocity = r.chance(70) ? Vec2d{} : vec();
+        d.angular_velocity = r.chance(70) ? 0.0 : any_double(r);
+        if (r.chance(10))
+            d.force = vec();
+        if (r.chance(10))
+            d.mass = any_double(r);
+        if (r.chance(10))
+            d.inertia = any_double(r);
+        if (r.chance(10))
+            d.gravity_scale = any_double(r);
+        if (r.chance(10))
+            d.linear_damping = any_double(r);
+        d.awake = r.chance(90);
+        return d;
+    }
+
+    double dt() { return r.chance(80) ? 1.0 / 60.0 : any_double(r); }
+
+    /// The call about to be made, for the failure message and TAMIAS_FUZZ_TRACE.
+    std::ostringstream last;
+    static std::string str(Vec2d v) {
+        std::ostringstream o;
+        o.precision(17);
+        o << "(" << v.x << ", " << v.y << ")";
+        return o.str();
+    }
+    static std::string str(double v) { return str(Vec2d{v, 0.0}).substr(1, std::string::npos); }
+    static std::string str(BodyId b) {
+        return "body#" + std::to_string(b.index) + "." + std::to_string(b.generation);
+    }
+
+    /// One random call; throws what the library throws.
+    void call() {
+        last.str("");
+        last.precision(17);
+        switch (r.below(22)) {
+        case 0:
+        case 1: {
+            const BodyDef def = body_def();
+            last << "create_body(type " << static_cast<int>(def.type) << ", position "
+                 << str(def.position) << ", angle " << def.angle << ", velocity "
+                 << str(def.linear_velocity) << ", omega " << def.angular_velocity << ", force "
+                 << str(def.force) << ", mass " << def.mass.value_or(-1) << ", inertia "
+                 << def.inertia.value_or(-1) << ", gravity_scale " << def.gravity_scale
+                 << ", damping " << def.linear_damping << ")";
+            bodies.push_back(world.create_body(def));
+            break;
+        }
+        case 2:
+        case 3: {
+            const BodyId b = body();
+            const ShapeDef def = shape_def();
+            last << "create_shape(" << str(b) << ", geometry kind "
+                 << static_cast<int>(def.geometry.type) << ", radius " << def.geometry.circle.radius
+                 << ", vertices " << def.geometry.polygon.count << ", density "
+                 << def.material.density << ")";
+            shapes.push_back(world.create_shape(b, def));
+            break;
+        }
+        case 4: {
+            const BodyId b = body();
+            last << "destroy_body(" << str(b) << ")";
+            world.destroy_body(b);
+            break;
+        }
+        case 5:
+            last << "destroy_shape";
+            world.destroy_shape(shape());
+            break;
+        case 6: {
+            const BodyId b = body();
+            const Vec2d v = vec();
+            last << "set_velocity(" << str(b) << ", " << str(v) << ")";
+            world.set_velocity(b, v);
+            break;
+        }
+        case 7: {
+            const BodyId b = body();
+            const Vec2d p = vec();
+            const double a = any_double(r);
+            last << "set_transform(" << str(b) << ", " << str(p) << ", " << a << ")";
+            world.set_transform(b, p, a);
+            break;
+        }
+        case 8: {
+            const BodyId b = body();
+            const double w = any_double(r);
+            last << "set_angular_velocity(" << str(b) << ", " << w << ")";
+            world.set_angular_velocity(b, w);
+            break;
+        }
+        case 9: {
+            const BodyId b = body();
+            const double l = any_double(r), a = any_double(r);
+            last << "set_damping(" << str(b) << ", " << l << ", " << a << ")";
+            world.set_damping(b, l, a);
+            break;
+        }
+        case 10: {
+            const BodyId b = body();
+            const Vec2d f = vec();
+            last << "set_force(" << str(b) << ", " << str(f) << ")";
+            world.set_force(b, f);
+            break;
+        }
+        case 11: {
+            const BodyId b = body();
+            const Vec2d f = vec(), p = vec();
+            last << "apply_force(" << str(b) << ", " << str(f) << ", " << str(p) << ")";
+            world.apply_force(b, f, p);
+            break;
+        }
+        case 12: {
+            const BodyId b = body();
+            const Vec2d j = vec(), p = vec();
+            last << "apply_impulse(" << str(b) << ", " << str(j) << ", " << str(p) << ")";
+            world.apply_impulse(b, j, p);
+            break;
+        }
+        case 13: {
+            const BodyId b = body();
+            const double t = any_double(r);
+            last << "apply_torque(" << str(b) << ", " << t << ")";
+            world.apply_torque(b, t);
+            break;
+        }
+        case 14: {
+            const Vec2d g = vec();
+            last << "set_gravity(" << str(g) << ")";
+            world.set_gravity(g);
+            break;
+        }
+        case 15: {
+            RevoluteJointDef d;
+            d.body_a = body();
+            d.body_b = body();
+            d.anchor = r.chance(80) ? Vec2d{r.between(-5, 5), r.between(0, 10)} : vec();
+            if (r.chance(20))
+                d.break_force = any_double(r);
+            last << "create_joint(revolute " << str(d.body_a) << ", " << str(d.body_b)
+                 << ", anchor " << str(d.anchor) << ", break_force " << d.break_force << ")";
+            joints.push_back(world.create_joint(d));
+            note_joint(d.body_a, d.body_b, {d.anchor});
+            break;
+        }
+        case 16: {
+            DistanceJointDef d;
+            d.body_a = body();
+            d.body_b = body();
+            d.anchor_a = r.chance(80) ? Vec2d{r.between(-5, 5), r.between(0, 10)} : vec();
+            d.anchor_b = r.chance(80) ? Vec2d{r.between(-5, 5), r.between(0, 10)} : vec();
+            if (r.chance(30))
+                d.length = any_double(r);
+            last << "create_joint(distance " << str(d.body_a) << ", " << str(d.body_b) << ", "
+                 << str(d.anchor_a) << ", " << str(d.anchor_b) << ", length "
+                 << d.length.value_or(-1) << ")";
+            joints.push_back(world.create_joint(d));
+            note_joint(d.body_a, d.body_b, {d.anchor_a, d.anchor_b});
+            if (std::hypot(d.anchor_a.x - d.anchor_b.x, d.anchor_a.y - d.anchor_b.y) >= far_lever ||
+                d.length.value_or(0.0) >= far_lever)
+                far_at_creation = true;
+            break;
+        }
+        case 17:
+            last << "destroy_joint";
+            world.destroy_joint(joint());
+            break;
+        case 18: {
+            const BodyId b = body();
+            const bool awake = r.chance(50);
+            last << "set_awake(" << str(b) << ", " << awake << ")";
+            world.set_awake(b, awake);
+            break;
+        }
+        case 19: { // queries are const: they may refuse, never change the world
+            last << "query_aabb, query_point";
+            (void)world.query_aabb(
+                Aabb{any_double(r), any_double(r), any_double(r), any_double(r)});
+            (void)world.query_point(vec());
+            break;
+        }
+        default: {
+            const double h = dt();
+            last << "step(" << h << ")";
+            last_dt = h;
+            world.step(h);
+            break;
+        }
+        }
+    }
+};
+
+std::string check_after_accepted(Driver& d) {
+    if (std::string bad = non_finite_state(d.world); !bad.empty())
+        return "non-finite state: " + bad;
+    const Vec2d origin = d.r.chance(70) ? Vec2d{d.r.between(-30, 30), 30.0} : d.vec();
+    const Vec2d translation = d.r.chance(70) ? Vec2d{d.r.between(-5, 5), -60.0} : d.vec();
+    try {
+        return bad_ray_cast(d.world, origin, translation);
+    } catch (const ValidationError& e) {
+        if (e.field.empty())
+            return std::string("ray_cast: ValidationError without a field: ") + e.what();
+        return {}; // a NaN or out-of-range ray is refused: allowed
+    }
+}
+
+struct Tally {
+    long accepted = 0, rejected = 0, known_f1 = 0, known_f2 = 0, known_f3 = 0;
+};
+
+void run_sequence(std::uint64_t seed, Tally& tally) {
+    Driver d(seed);
+    const bool trace = std::getenv("TAMIAS_FUZZ_TRACE") != nullptr;
+    for (int c = 0; c < calls_per_sequence; ++c) {
+        const std::uint64_t before = d.world.state_hash();
+        // Before the call: a step that fails turns the positions F1 is judged by into NaN.
+        const bool far_joint = d.far_joint();
+        std::string problem;
+        bool refused = true;
+        try {
+            d.call();
+            refused = false;
+        } catch (const ValidationError& e) {
+            if (e.field.empty() || std::string(e.what()).empty())
+                problem = "ValidationError with an empty field or message";
+        } catch (const InvalidHandle& e) {
+            if (std::string(e.what()).empty())
+                problem = "InvalidHandle with an empty message";
+        } catch (const std::exception& e) {
+            problem = std::string("an exception of another kind: ") + e.what();
+        }
+        if (refused) {
+            ++tally.rejected;
+            if (problem.empty() && d.world.state_hash() != before)
+                problem = "a rejected call changed the world";
+        } else {
+            ++tally.accepted;
+            problem = check_after_accepted(d);
+            if (!problem.empty() && problem.rfind("non-finite state", 0) == 0) {
+                if (far_joint) {
+                    ++tally.known_f1; // finding F1, see Driver::far_lever
+                    return;
+                }
+                if (d.tiny_inertia_joint()) {
+                    ++tally.known_f2; // finding F2, see Driver::tiny_inertia_joint
+                    return;
+                }
+                if (d.huge_load_joint()) {
+                    ++tally.known_f3; // finding F3, see Driver::huge_load_joint
+                    return;
+                }
+            }
+        }
+        if (trace)
+            BOOST_TEST_MESSAGE("call " << c << ": " << d.last.str() << (refused ? " refused" : ""));
+        if (!problem.empty()) {
+            BOOST_ERROR("seed " << seed << ", call " << c << " " << d.last.str() << ": "
+                                << problem);
+            return;
+        }
+    }
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(fuzz)
+
+BOOST_AUTO_TEST_CASE(random_api_sequences_keep_the_promises, *utf::label("R4")) {
+    const long n = iterations("TAMIAS_FUZZ_API_ITERATIONS", default_iterations);
+    const std::uint64_t first = base_seed(20261000);
+    BOOST_TEST_MESSAGE("API fuzz: " << n << " sequences of " << calls_per_sequence
+                                    << " calls, seeds " << first << ".." << first + n - 1
+                                    << " (TAMIAS_FUZZ_API_ITERATIONS, TAMIAS_FUZZ_SEED)");
+    Tally tally;
+    for (long i = 0; i < n; ++i) {
+        const std::uint64_t seed = first + static_cast<std::uint64_t>(i);
+        BOOST_TEST_CHECKPOINT("API fuzz seed " << seed);
+        run_sequence(seed, tally);
+    }
+    BOOST_TEST_MESSAGE("API fuzz: " << tally.accepted << " calls accepted, " << tally.rejected
+                                    << " rejected; sequences ended by known findings: F1 (far "
+                                       "joint anchor) "
+                                    << tally.known_f1 << ", F2 (tiny inertia, jointed) "
+                                    << tally.known_f2 << ", F3 (huge load, jointed) "
+                                    << tally.known_f3);
+    // Both paths must be exercised, or the driver proves little.
+    BOOST_TEST(tally.accepted > n * calls_per_sequence / 5);
+    BOOST_TEST(tally.rejected > n);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
