@@ -46,6 +46,10 @@ struct BodyDef {
     /// \srs{DD18} s^-1, >= 0: viscous damping of the angular velocity, as linear_damping.
     double angular_damping = 0.0;
     bool fixed_rotation = false; ///< no rotation: infinite moment of inertia
+    /// \srs{DD29} A fast dynamic body (a projectile) swept over each step against the other
+    /// dynamic bodies too (at their end poses), not only against static shapes, so it cannot
+    /// pass through a thin moving body. Costs a sweep per fast step; meant for a few bodies.
+    bool bullet = false;
     /// With the world's sleeping on (WorldDef::enable_sleep): whether this body may sleep (a
     /// body that may not keeps every body touching it awake), and whether it starts awake.
     bool enable_sleep = true;

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include "tamias2d/shapes.hpp"
 
@@ -47,5 +48,16 @@ ShapeDef box_shape(double width, double height, Material material = {}, Vec2d ce
 ShapeDef circle_shape(double radius, Material material = {}, Vec2d center = {});
 /// The convex hull of 3 to 8 points (m, body frame).
 ShapeDef polygon_shape(std::span<const Vec2d> points, Material material = {});
+/// \srs{DD30} A capsule: the points within `radius` (m, > 0) of the segment center1 -> center2.
+ShapeDef capsule_shape(Vec2d center1, Vec2d center2, double radius, Material material = {});
+/// A two-sided segment point1 -> point2 (no area: no mass).
+ShapeDef segment_shape(Vec2d point1, Vec2d point2, Material material = {});
+/// \srs{DD31} The one-sided segments of a chain through `points` (at least 2; 3 for a loop),
+/// each colliding on the right of its direction (a counter-clockwise loop is solid inside; a
+/// ground drawn right to left is walked on from above), ready for World::create_shape. A
+/// shape sliding along the chain meets no ghost corner at its vertices. World::create_chain
+/// creates them all at once.
+std::vector<ShapeDef> chain_shapes(std::span<const Vec2d> points, bool loop,
+                                   Material material = {});
 
 } // namespace tamias2d

@@ -60,6 +60,9 @@ class World {
     /// inertia (DD1, DD14) unless BodyDef overrides them; throws ValidationError for degenerate
     /// geometry or a material out of range.
     ShapeId create_shape(BodyId body, const ShapeDef& def);
+    /// \srs{DD31} Attaches a chain's segments (chain_shapes) to a body, all or none: every
+    /// definition is checked before the first is attached. Returns their handles in order.
+    std::vector<ShapeId> create_chain(BodyId body, std::span<const ShapeDef> segments);
     /// Removes a shape and its contacts and recomputes the body's mass.
     void destroy_shape(ShapeId shape);
     /// \srs{DD27} Changes a shape's collision filter: its contacts the new filter refuses are

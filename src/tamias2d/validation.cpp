@@ -177,6 +177,42 @@ void validate_geometry_range(const Geometry& g) {
             require_within("shape.center", g.circle.center, input_max, "m");
         return;
     }
+    if (g.type != ShapeType::polygon) {
+        // A segment kind: its points within range, its length (and a capsule's radius) in
+        // scale; non-finite values are left to validate(Geometry), which names them.
+        Vec2d ends[4]{};
+        const char* names[4]{};
+        const char* kind = g.type == ShapeType::capsule   ? "capsule.length"
+                           : g.type == ShapeType::segment ? "segment.length"
+                                                          : "chain_segment.length";
+        int count = 2;
+        double radius = 0.0;
+        if (g.type == ShapeType::capsule) {
+            ends[0] = g.capsule.center1, ends[1] = g.capsule.center2;
+            names[0] = "capsule.center1", names[1] = "capsule.center2";
+            radius = g.capsule.radius;
+        } else if (g.type == ShapeType::segment) {
+            ends[0] = g.segment.point1, ends[1] = g.segment.point2;
+            names[0] = "segment.point1", names[1] = "segment.point2";
+        } else {
+            const ChainSegment& c = g.chain_segment;
+            ends[0] = c.point1, ends[1] = c.point2, ends[2] = c.ghost1, ends[3] = c.ghost2;
+            names[0] = "chain_segment.point1", names[1] = "chain_segment.point2";
+            names[2] = "chain_segment.ghost1", names[3] = "chain_segment.ghost2";
+            count = 4;
+        }
+        for (int i = 0; i < count; ++i)
+            if (!std::isfinite(ends[i].x) || !std::isfinite(ends[i].y))
+                return;
+        for (int i = 0; i < count; ++i)
+            require_within(names[i], ends[i], input_max, "m");
+        if (std::isfinite(radius) && radius > 0.0)
+            validate_size("capsule.radius", radius);
+        const double len = length(ends[1] - ends[0]);
+        if (len > 0.0)
+            require_scale(kind, len, supported::input_min, 2.0 * input_max, "m");
+        return;
+    }
     const Polygon& p = g.polygon;
     if (p.count < 3 || p.count > max_polygon_vertices)
         return;

@@ -143,6 +143,28 @@ ShapeId World::create_shape(BodyId body_id, const ShapeDef& def) {
     return w.shapes.id(i);
 }
 
+std::vector<ShapeId> World::create_chain(BodyId body_id, std::span<const ShapeDef> segments) {
+    Impl& w = *impl_;
+    Body& b = w.bodies.get(body_id);
+    for (std::size_t k = 0; k < segments.size(); ++k) {
+        if (segments[k].geometry.type != ShapeType::chain_segment)
+            throw ValidationError("chain[" + std::to_string(k) + "].type",
+                                  double(segments[k].geometry.type), "must be a chain segment",
+                                  "DCX_shape");
+        validate(segments[k]);
+    }
+    std::vector<ShapeId> out;
+    out.reserve(segments.size());
+    for (const ShapeDef& def : segments) {
+        const std::uint32_t i = w.shapes.create(body_id.index, b, def);
+        if (def.is_sensor)
+            w.sensors.add(i);
+        out.push_back(w.shapes.id(i));
+    }
+    w.bodies.update_mass(body_id.index, w.shapes);
+    return out;
+}
+
 void World::set_filter(ShapeId id, const Filter& filter) {
     Impl& w = *impl_;
     const Shape& sh = w.shapes.get(id);
@@ -843,6 +865,8 @@ std::uint64_t World::state_hash() const {
         hs(b.inv_inertia);
         hs(b.gravity_scale);
         hs(std::uint64_t(set.fixed_rotation) << 1 | std::uint64_t(bool(set.load)));
+        if (set.bullet) // (other bodies hash as they always did)
+            hs(std::uint64_t(1) << 2);
         if (b.damped) { // (so that undamped worlds hash as they always did)
             hs(set.linear_damping);
             hs(set.angular_damping);
@@ -870,6 +894,19 @@ std::uint64_t World::state_hash() const {
         hs(std::uint64_t(d.geometry.polygon.count));
         for (int k = 0; k < d.geometry.polygon.count; ++k)
             hs(d.geometry.polygon.vertices[std::size_t(k)]);
+        if (d.geometry.type == ShapeType::capsule) {
+            hs(d.geometry.capsule.center1);
+            hs(d.geometry.capsule.center2);
+            hs(d.geometry.capsule.radius);
+        } else if (d.geometry.type == ShapeType::segment) {
+            hs(d.geometry.segment.point1);
+            hs(d.geometry.segment.point2);
+        } else if (d.geometry.type == ShapeType::chain_segment) {
+            hs(d.geometry.chain_segment.ghost1);
+            hs(d.geometry.chain_segment.point1);
+            hs(d.geometry.chain_segment.point2);
+            hs(d.geometry.chain_segment.ghost2);
+        }
         hs(d.material.density);
         hs(d.material.restitution);
         hs(d.material.friction);

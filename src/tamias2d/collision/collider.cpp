@@ -45,15 +45,67 @@ Collider make_collider(const Polygon& p) {
     return k;
 }
 
+namespace {
+
+/// The core segment a -> b with rounding r; the chain segment's ghosts are set by the caller.
+Collider segment_collider(ShapeType type, Vec2d a, Vec2d b, double r) {
+    Collider k;
+    k.type = type;
+    k.count = 2;
+    k.radius = r;
+    k.center = 0.5 * (a + b);
+    const Vec2d n = normalize(right_perp(b - a));
+    for (int lane = 0; lane < 2; ++lane) {
+        const Vec2d v = lane == 0 ? a : b;
+        const Vec2d m = lane == 0 ? n : -n;
+        k.pairs[0].vx[lane] = v.x;
+        k.pairs[0].vy[lane] = v.y;
+        k.pairs[0].nx[lane] = m.x;
+        k.pairs[0].ny[lane] = m.y;
+    }
+    for (int pair = 1; pair < max_vertex_pairs; ++pair) {
+        for (int lane = 0; lane < 2; ++lane) { // lanes past the count repeat vertex 0
+            k.pairs[pair].vx[lane] = a.x;
+            k.pairs[pair].vy[lane] = a.y;
+            k.pairs[pair].nx[lane] = n.x;
+            k.pairs[pair].ny[lane] = n.y;
+        }
+    }
+    return k;
+}
+
+} // namespace
+
+Collider make_collider(const Capsule& c) {
+    return segment_collider(ShapeType::capsule, c.center1, c.center2, c.radius);
+}
+
+Collider make_collider(const Segment& s) {
+    return segment_collider(ShapeType::segment, s.point1, s.point2, 0.0);
+}
+
+Collider make_collider(const ChainSegment& s) {
+    Collider k = segment_collider(ShapeType::chain_segment, s.point1, s.point2, 0.0);
+    k.pairs[1].vx[0] = s.ghost1.x;
+    k.pairs[1].vy[0] = s.ghost1.y;
+    k.pairs[1].vx[1] = s.ghost2.x;
+    k.pairs[1].vy[1] = s.ghost2.y;
+    return k;
+}
+
 Aabb compute_aabb(const Collider& k, const Transform& xf) {
     if (k.type == ShapeType::circle)
         return compute_aabb(Circle{k.center, k.radius}, xf);
+    if (k.is_segment_kind())
+        return compute_aabb(Capsule{k.vertex(0), k.vertex(1), k.radius}, xf);
     return vertices_aabb(
         k.count, [&](int i) { return k.vertex(i); }, xf);
 }
 
 bool surely_inside(const Collider& k, const Transform& xf, const Aabb& box) {
-    if (k.type == ShapeType::circle) // its exact box reads only the header: the caller's test
+    // A circle's exact box reads only the header: the caller's test. A segment kind's reads
+    // one pair: no shortcut worth a bound.
+    if (k.type != ShapeType::polygon)
         return false;
     // Each vertex is the centroid plus u with |u.x| <= hx and |u.y| <= hy, so once rotated its
     // offset is within |c| hx + |s| hy along x and |s| hx + |c| hy along y.
@@ -71,7 +123,19 @@ bool surely_inside(const Collider& k, const Transform& xf, const Aabb& box) {
 }
 
 Collider make_collider(const Geometry& g) {
-    return g.type == ShapeType::polygon ? make_collider(g.polygon) : make_collider(g.circle);
+    switch (g.type) {
+    case ShapeType::polygon:
+        return make_collider(g.polygon);
+    case ShapeType::capsule:
+        return make_collider(g.capsule);
+    case ShapeType::segment:
+        return make_collider(g.segment);
+    case ShapeType::chain_segment:
+        return make_collider(g.chain_segment);
+    case ShapeType::circle:
+        break;
+    }
+    return make_collider(g.circle);
 }
 
 } // namespace tamias2d

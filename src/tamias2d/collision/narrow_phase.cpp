@@ -11,6 +11,7 @@
 #include "tamias2d/collision/collider.hpp"
 #include "tamias2d/collision/segment_distance.hpp"
 #include "tamias2d/math/lanes.hpp"
+#include "tamias2d/model/dd31_chain_segment_normal.hpp"
 
 namespace tamias2d {
 namespace {
@@ -291,17 +292,26 @@ void polygon_circle_into(const Collider& a, const Collider& b, const CollideInpu
     set_point(m.points[0], 0.5 * (on_a + on_b), separation, id, in.xf_a, in);
 }
 
-/// Circle A, polygon B: solved as polygon-circle with the roles swapped, then flipped back.
-void circle_polygon_into(const Collider& a, const Collider& b, const CollideInput& in,
-                         Manifold& m) {
-    const CollideInput swapped{in.xf_b, in.center_b, in.xf_a, in.center_a, in.margin};
-    polygon_circle_into(b, a, swapped, m);
+/// The input with the two shapes' roles exchanged.
+CollideInput swapped(const CollideInput& in) {
+    return {in.xf_b, in.center_b, in.xf_a, in.center_a, in.margin};
+}
+
+/// A manifold of (b, a) made into one of (a, b): the normal reversed, anchors and ids swapped.
+void swap_roles(Manifold& m) {
     m.normal = -m.normal;
     for (int i = 0; i < m.count; ++i) {
         ManifoldPoint& mp = m.points[i];
         std::swap(mp.anchor_a, mp.anchor_b);
         mp.id = {mp.id.index_b, mp.id.type_b, mp.id.index_a, mp.id.type_a};
     }
+}
+
+/// Circle A, polygon B: solved as polygon-circle with the roles swapped, then flipped back.
+void circle_polygon_into(const Collider& a, const Collider& b, const CollideInput& in,
+                         Manifold& m) {
+    polygon_circle_into(b, a, swapped(in), m);
+    swap_roles(m);
 }
 
 /// \srs{T5} polygons by the separating axis test; \srs{A5} vertex-edge gives one point,
@@ -477,12 +487,202 @@ void polygons_into(const Collider& a, const Collider& b, const CollideInput& in,
     m.count = count;
 }
 
+/// A shape's core in A's centroid frame: a point (a circle's centre), a segment or a polygon,
+/// and the rounding every point of its surface has around the core.
+struct Core {
+    Vec2d v[max_polygon_vertices];
+    Vec2d n[max_polygon_vertices];
+    int count;     ///< 1: a point (no faces)
+    double radius; ///< m
+    double size;   ///< m: the rounding plus the core's largest vertex distance from its centre
+};
+
+/// k's core placed by `q`, `p` (its body frame seen from A's centroid frame).
+Core core_of(const Collider& k, Rot q, Vec2d p) {
+    Core c;
+    if (k.type == ShapeType::circle) {
+        c.count = 1;
+        c.v[0] = rotate(q, k.center) + p;
+        c.radius = k.radius;
+        c.size = k.radius;
+        return c;
+    }
+    c.count = k.count;
+    c.radius = k.type == ShapeType::polygon ? 0.0 : k.radius;
+    double reach = 0.0;
+    for (int i = 0; i < c.count; ++i) {
+        c.v[i] = rotate(q, k.vertex(i)) + p;
+        c.n[i] = rotate(q, k.normal(i));
+        reach = std::max(reach, length(k.vertex(i) - k.center));
+    }
+    c.size = c.radius + reach;
+    return c;
+}
+
+/// The greatest separation of `other`'s core vertices along one of `ref`'s faces (SAT on the
+/// cores, both of two or more vertices), and that face.
+double core_separation(const Core& ref, const Core& other, int& edge) {
+    double best = -std::numeric_limits<double>::infinity();
+    edge = 0;
+    for (int i = 0; i < ref.count; ++i) {
+        double s = std::numeric_limits<double>::infinity();
+        for (int j = 0; j < other.count; ++j)
+            s = std::min(s, dot(ref.n[i], other.v[j] - ref.v[i]));
+        if (s > best) {
+            best = s;
+            edge = i;
+        }
+    }
+    return best;
+}
+
+/// \srs{T5} Shapes with a rounding (capsules, segments) against any shape, as their cores (a
+/// point, a segment or a polygon) grown by their radii: the separating axis test on the cores
+/// picks the reference face, the incident edge is clipped to it (LC1: two points for parallel
+/// faces) and each point's separation is its core distance less both radii. Cores apart at two
+/// vertices give one point along the true gap (A5). With `forced_face` >= 0, A's face of that
+/// index is the reference, whatever the test would pick (DD31's answer for a chain edge).
+void rounded_into(const Collider& a, const Collider& b, const CollideInput& in, Manifold& m,
+                  int forced_face = -1) {
+    const Transform frame{transform_point(in.xf_a, a.center), in.xf_a.q};
+    const Core ca = core_of(a, Rot{}, -a.center);
+    const Core cb =
+        core_of(b, inv_mul(in.xf_a.q, in.xf_b.q), inv_transform_point(frame, in.xf_b.p));
+    const double rsum = ca.radius + cb.radius;
+    const double inf = std::numeric_limits<double>::infinity();
+
+    int edge_a = 0, edge_b = 0;
+    double sep_a = ca.count >= 2 ? core_separation(ca, cb, edge_a) : -inf;
+    double sep_b = cb.count >= 2 ? core_separation(cb, ca, edge_b) : -inf;
+    bool flip = false;
+    if (forced_face >= 0) {
+        edge_a = forced_face;
+        sep_a = inf; // never the vertex-vertex shortcut below
+        sep_b = -inf;
+    } else {
+        // The separating axis bounds the cores' distance from below: at or past the margin
+        // plus both radii, the surfaces are apart by the margin.
+        if (!(std::max(sep_a, sep_b) - rsum < in.margin))
+            return set_empty(m);
+        flip = sep_b > sep_a + relative_tolerance * std::min(ca.size, cb.size);
+    }
+    const Core& ref = flip ? cb : ca;
+    const Core& inc = flip ? ca : cb;
+    const int i11 = flip ? edge_b : edge_a;
+    const int i12 = i11 + 1 == ref.count ? 0 : i11 + 1;
+    const Vec2d n = ref.n[i11];
+    int i21 = 0;
+    if (inc.count >= 2) {
+        double min_dot = inf;
+        for (int i = 0; i < inc.count; ++i) {
+            const double d = dot(n, inc.n[i]);
+            if (d < min_dot) {
+                min_dot = d;
+                i21 = i;
+            }
+        }
+    }
+    const int i22 = inc.count >= 2 ? (i21 + 1 == inc.count ? 0 : i21 + 1) : i21;
+    const Vec2d v11 = ref.v[i11], v12 = ref.v[i12], v21 = inc.v[i21], v22 = inc.v[i22];
+    const double r_ref = ref.radius, r_inc = inc.radius;
+
+    const double sep_max = std::max(sep_a, sep_b);
+    if (forced_face < 0 && sep_max > 0.0) {
+        // Cores apart: closest at two vertices, the gap runs between them, not along a face.
+        const SegmentDistance sd = segment_distance(v11, v12, v21, v22);
+        const bool ref_vertex = sd.fraction1 == 0.0 || sd.fraction1 == 1.0;
+        const bool inc_vertex = sd.fraction2 == 0.0 || sd.fraction2 == 1.0;
+        const double dist = std::sqrt(sd.distance_squared);
+        if (ref_vertex && inc_vertex &&
+            dist > sep_max + relative_tolerance * std::min(ca.size, cb.size)) {
+            const double separation = dist - rsum;
+            if (!(separation < in.margin))
+                return set_empty(m);
+            const Vec2d g = (sd.closest2 - sd.closest1) / dist; // reference -> incident
+            const int ri = sd.fraction1 == 0.0 ? i11 : i12;
+            const int ii = sd.fraction2 == 0.0 ? i21 : i22;
+            m.normal = rotate(frame.q, flip ? -g : g);
+            m.count = 1;
+            set_point(m.points[0], sd.closest1 + (r_ref + 0.5 * separation) * g, separation,
+                      make_id(flip, ri, vertex_feature, ii, vertex_feature), frame, in);
+            return;
+        }
+    }
+
+    // Clip the incident edge (or point) to the reference face's side planes.
+    const Vec2d t = left_perp(n);
+    const double upper1 = dot(v12 - v11, t);
+    const double upper2 = dot(v21 - v11, t);
+    const double lower2 = dot(v22 - v11, t);
+    if (forced_face >= 0 && (std::max(upper2, lower2) < 0.0 || std::min(upper2, lower2) > upper1))
+        return set_empty(m); // wholly beside the forced face: another feature's contact
+    const double span = upper2 - lower2;
+    Vec2d lower = v22;
+    Vec2d upper = v21;
+    if (span > 0.0) {
+        if (lower2 < 0.0)
+            lower = v22 + ((0.0 - lower2) / span) * (v21 - v22);
+        if (upper2 > upper1)
+            upper = v22 + ((upper1 - lower2) / span) * (v21 - v22);
+    }
+    const double sep_lower = dot(lower - v11, n) - rsum;
+    const double sep_upper = dot(upper - v11, n) - rsum;
+    m.normal = rotate(frame.q, flip ? -n : n);
+    int count = 0;
+    if (sep_lower < in.margin) {
+        set_point(m.points[count++], lower - (r_inc + 0.5 * sep_lower) * n, sep_lower,
+                  make_id(flip, i11, face_feature, i22, vertex_feature), frame, in);
+    }
+    if (inc.count >= 2 && sep_upper < in.margin) {
+        set_point(m.points[count++], upper - (r_inc + 0.5 * sep_upper) * n, sep_upper,
+                  make_id(flip, i11, face_feature, i21, vertex_feature), frame, in);
+    }
+    m.count = count;
+    if (count == 0)
+        m.normal = {};
+}
+
+/// The admissible-normal tolerance of DD31 (the sine of about 0.6 degrees): a shape resting
+/// almost flat on an edge keeps the normal the separating axis test gives it.
+constexpr double chain_normal_tolerance = 1e-2;
+
+/// \srs{DD31} A chain edge (A) against any shape but another chain edge: one-sided (a shape
+/// whose centre is behind the edge's line does not collide with it), and a normal the edge's
+/// vertices cannot have (a ghost of the joint between two edges) is replaced by the edge's own
+/// face as the reference.
+void chain_into(const Collider& a, const Collider& b, const CollideInput& in, Manifold& m) {
+    if (b.type == ShapeType::chain_segment)
+        return set_empty(m);
+    const Vec2d v1 = a.vertex(0), v2 = a.vertex(1);
+    const Vec2d n = a.normal(0);
+    const Vec2d centre_b = inv_transform_point(in.xf_a, transform_point(in.xf_b, b.center));
+    if (dot(n, centre_b - v1) < 0.0)
+        return set_empty(m);
+    rounded_into(a, b, in, m);
+    if (m.count == 0)
+        return;
+    const Vec2d n_prev = normalize(right_perp(v1 - a.ghost(0)));
+    const Vec2d n_next = normalize(right_perp(a.ghost(1) - v2));
+    const Vec2d normal = inv_rotate(in.xf_a.q, m.normal);
+    if (!model::dd31::admissible(n_prev, n, n_next, normal, chain_normal_tolerance))
+        rounded_into(a, b, in, m, 0);
+}
+
 } // namespace
 
 void collide(const Collider& a, const Collider& b, const CollideInput& in, Manifold& m,
              SeparationHint* hint) {
     const int used = m.count;
-    if (a.type == ShapeType::polygon) {
+    if (a.is_segment_kind() || b.is_segment_kind()) {
+        if (a.type == ShapeType::chain_segment) {
+            chain_into(a, b, in, m);
+        } else if (b.type == ShapeType::chain_segment) {
+            chain_into(b, a, swapped(in), m);
+            swap_roles(m);
+        } else {
+            rounded_into(a, b, in, m);
+        }
+    } else if (a.type == ShapeType::polygon) {
         if (b.type != ShapeType::polygon)
             polygon_circle_into(a, b, in, m);
         else if (a.count == 4 && b.count == 4)

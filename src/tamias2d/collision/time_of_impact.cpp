@@ -89,10 +89,86 @@ ShapeDistance polygon_polygon(const WorldPolygon& a, const WorldPolygon& b) {
     return out;
 }
 
+/// A segment kind or any shape with it, as cores grown by their radii: a point (a circle's
+/// centre), a segment or a polygon, placed in the world.
+struct WorldCore {
+    WorldPolygon shape;
+    double radius = 0.0;
+};
+
+WorldCore place_core(const Collider& k, const Transform& xf) {
+    WorldCore c;
+    if (k.type == ShapeType::circle) {
+        c.shape.count = 1;
+        c.shape.v[0] = transform_point(xf, k.center);
+        c.radius = k.radius;
+        return c;
+    }
+    c.shape = place(k, xf);
+    c.radius = k.type == ShapeType::polygon ? 0.0 : k.radius;
+    return c;
+}
+
+/// One of a core's edges: a point is its own edge, a segment has one, a polygon `count`.
+int edge_count(const WorldPolygon& p) {
+    return p.count <= 2 ? 1 : p.count;
+}
+Vec2d edge_end(const WorldPolygon& p, int i) {
+    return p.count == 1 ? p.v[0] : p.v[(i + 1) % p.count];
+}
+
+/// Whether a vertex of `b` lies in polygon `a` (three or more vertices).
+bool holds_vertex_of(const WorldPolygon& a, const WorldPolygon& b) {
+    for (int j = 0; j < b.count; ++j) {
+        double face = -INFINITY;
+        for (int i = 0; i < a.count; ++i)
+            face = std::max(face, dot(a.n[i], b.v[j] - a.v[i]));
+        if (face <= 0.0)
+            return true;
+    }
+    return false;
+}
+
+ShapeDistance rounded_distance(const WorldCore& a, const WorldCore& b) {
+    ShapeDistance out;
+    const WorldPolygon& pa = a.shape;
+    const WorldPolygon& pb = b.shape;
+    // Cores overlap when polygons do (separating axes), or one holds a vertex of the other;
+    // otherwise (segments crossing included) their least edge distance decides.
+    if (pa.count >= 3 && pb.count >= 3) {
+        if (max_face_separation(pa, pb) <= 0.0 && max_face_separation(pb, pa) <= 0.0)
+            return out;
+    } else if ((pa.count >= 3 && holds_vertex_of(pa, pb)) ||
+               (pb.count >= 3 && holds_vertex_of(pb, pa))) {
+        return out;
+    }
+    double best = INFINITY;
+    Vec2d from{}, to{};
+    for (int i = 0; i < edge_count(pa); ++i) {
+        for (int j = 0; j < edge_count(pb); ++j) {
+            const SegmentDistance sd =
+                segment_distance(pa.v[i], edge_end(pa, i), pb.v[j], edge_end(pb, j));
+            if (sd.distance_squared < best) {
+                best = sd.distance_squared;
+                from = sd.closest1;
+                to = sd.closest2;
+            }
+        }
+    }
+    const double d = std::sqrt(best) - a.radius - b.radius;
+    if (d > 0.0) {
+        out.distance = d;
+        out.normal = normalize(to - from);
+    }
+    return out;
+}
+
 } // namespace
 
 ShapeDistance shape_distance(const Collider& a, const Transform& xa, const Collider& b,
                              const Transform& xb) {
+    if (a.is_segment_kind() || b.is_segment_kind())
+        return rounded_distance(place_core(a, xa), place_core(b, xb));
     const bool ca = a.type == ShapeType::circle, cb = b.type == ShapeType::circle;
     if (ca && cb) {
         const Vec2d pa = transform_point(xa, a.center), pb = transform_point(xb, b.center);
@@ -120,7 +196,7 @@ double reach(const Collider& k, Vec2d pivot) {
     double r = 0.0;
     for (int i = 0; i < k.count; ++i)
         r = std::max(r, length(k.vertex(i) - pivot));
-    return r;
+    return k.is_segment_kind() ? r + k.radius : r;
 }
 
 ToiResult time_of_impact(const Collider& moving, const Sweep& sweep, const Collider& fixed,

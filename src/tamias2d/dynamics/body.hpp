@@ -64,6 +64,7 @@ struct BodySettings {
     LoadFunction load;
     std::optional<double> mass_override, inertia_override;
     bool fixed_rotation = false;
+    bool bullet = false;                                ///< swept against dynamic bodies too (DD29)
     double linear_damping = 0.0, angular_damping = 0.0; ///< s^-1 (DD17, DD18)
 };
 

@@ -48,8 +48,8 @@ std::uint32_t BodyStore::create(const BodyDef& def, bool sleeping) {
     b.torque = def.torque;
     b.loaded = !b.unloaded();
     b.gravity_scale = def.gravity_scale;
-    settings[i] = {def.name,           def.load,           def.mass,           def.inertia,
-                   def.fixed_rotation, def.linear_damping, def.angular_damping};
+    settings[i] = {def.name,           def.load,   def.mass,           def.inertia,
+                   def.fixed_rotation, def.bullet, def.linear_damping, def.angular_damping};
     b.damped =
         def.type == BodyType::dynamic && (def.linear_damping != 0.0 || def.angular_damping != 0.0);
     const bool movable = def.type != BodyType::static_body;
@@ -85,7 +85,8 @@ void BodyStore::update_mass(std::uint32_t i, ShapeStore& shapes) {
             md = combine(parts);
         b.local_center = md.center;
         const double shape_mass = md.mass;
-        b.mass = set.mass_override.value_or(parts.empty() ? 1.0 : shape_mass);
+        // No shape, or only shapes of no area (segments, chains): the shapeless default.
+        b.mass = set.mass_override.value_or(shape_mass > 0.0 ? shape_mass : 1.0);
         // With the mass overridden, keep the shapes' distribution: scale I with the mass.
         double inertia = md.inertia;
         if (set.mass_override && shape_mass > 0.0)

@@ -15,8 +15,8 @@ namespace {
 
 /// A collider's least distance from its centre to its boundary, m.
 double inner_extent(const Collider& k) {
-    if (k.type == ShapeType::circle)
-        return k.radius;
+    if (k.type == ShapeType::circle || k.is_segment_kind())
+        return k.radius; // a segment's (no area) is 0: its core is its midpoint
     double least = INFINITY;
     for (int i = 0; i < k.count; ++i)
         least = std::min(least, dot(k.normal(i), k.vertex(i) - k.center));
@@ -40,73 +40,115 @@ void ContinuousPass::run(BodyStore& store, ShapeStore& shape_store, const Contac
                          const JointStore& joints, const WorldDef& def) {
     if (fast_.empty())
         return;
+    // Bullets last, against the other bodies' final poses (their own sweeps done): the
+    // moves so far go to the broad phase first, so its dynamic tree holds those poses.
+    bool bullets = false;
+    for (const FastBody& f : fast_) {
+        if (store.settings[f.body].bullet)
+            bullets = true;
+        else
+            sweep(f, false, store, shape_store, contacts, joints, def);
+    }
+    if (bullets) {
+        shape_store.apply_moves();
+        for (const FastBody& f : fast_)
+            if (store.settings[f.body].bullet)
+                sweep(f, true, store, shape_store, contacts, joints, def);
+    }
+    shape_store.apply_moves();
+}
+
+void ContinuousPass::sweep(const FastBody& f, bool bullet, BodyStore& store,
+                           ShapeStore& shape_store, const ContactManager& contacts,
+                           const JointStore& joints, const WorldDef& def) {
     auto& shapes = shape_store.shapes;
-    const DynamicTree& statics = shape_store.broad_phase.static_tree();
+    const BroadPhase& broad = shape_store.broad_phase;
     // Stop a little short of touching, well inside the speculative distance, so that the next
     // step's narrow phase gives the pair a speculative point and the solver stops the body.
     const double target = std::max(def.linear_slop, 0.25 * def.speculative_distance);
     const double tolerance = 0.25 * target;
-    for (const FastBody& f : fast_) {
-        Body& b = store.bodies[f.body];
-        const Sweep sweep{b.local_center, f.c0, b.center, f.a0, b.angle};
-        double reach_max = 0.0;
-        for (std::uint32_t s = b.first_shape; s != null_index; s = shapes[s].next)
-            reach_max = std::max(reach_max, reach(shapes[s].collider, b.local_center));
-        // Every point of the body stays within reach_max of its centre, which moves along
-        // the segment c0-c1.
-        const double grow = reach_max + target + tolerance;
-        const Aabb swept{
-            std::min(sweep.c0.x, sweep.c1.x) - grow, std::min(sweep.c0.y, sweep.c1.y) - grow,
-            std::max(sweep.c0.x, sweep.c1.x) + grow, std::max(sweep.c0.y, sweep.c1.y) + grow};
-        nearby_.clear();
-        statics.query(swept, [&](int node) {
-            nearby_.push_back(statics.user_data(node));
+    Body& b = store.bodies[f.body];
+    const Sweep sweep{b.local_center, f.c0, b.center, f.a0, b.angle};
+    double reach_max = 0.0;
+    for (std::uint32_t s = b.first_shape; s != null_index; s = shapes[s].next)
+        reach_max = std::max(reach_max, reach(shapes[s].collider, b.local_center));
+    // Every point of the body stays within reach_max of its centre, which moves along
+    // the segment c0-c1.
+    const double grow = reach_max + target + tolerance;
+    const Aabb swept{
+        std::min(sweep.c0.x, sweep.c1.x) - grow, std::min(sweep.c0.y, sweep.c1.y) - grow,
+        std::max(sweep.c0.x, sweep.c1.x) + grow, std::max(sweep.c0.y, sweep.c1.y) + grow};
+    nearby_.clear();
+    const auto collect = [&](const DynamicTree& tree) {
+        tree.query(swept, [&](int node) {
+            nearby_.push_back(tree.user_data(node));
             return true;
         });
-        if (nearby_.empty())
-            continue;
-        // Shape order, so that equal times of impact resolve the same way whatever the tree.
-        std::sort(nearby_.begin(), nearby_.end());
-        double t = 1.0;
-        for (std::uint32_t s = b.first_shape; s != null_index; s = shapes[s].next) {
-            if (shape_store.defs[s].is_sensor)
-                continue;
-            const Collider& shape = shapes[s].collider;
-            const Collider core = core_of(shape);
-            for (const std::uint32_t o : nearby_) {
-                if (!contacts.should_collide(store, shape_store, joints, s, o))
-                    continue;
-                const Shape& other = shapes[o];
-                // A core never enters a static shape it starts outside of: one that starts
-                // within the target may close half its gap (so a body that its contact turns
-                // about a corner cannot swing its centroid through a thin shape).
-                const double gap =
-                    shape_distance(core, sweep.at(0.0), other.collider, other.body_xf).distance;
-                if (gap <= 0.0)
-                    continue; // already deep inside: the contact's alone
-                const double core_target = std::min(target, 0.5 * gap);
-                const ToiResult c = time_of_impact(core, sweep, other.collider, other.body_xf,
-                                                   core_target, 0.25 * core_target, t);
-                if (c.state != ToiState::hit)
-                    continue; // the core stays clear
-                // Stopped before touching if it started apart; else as its core touches.
-                const ToiResult r = time_of_impact(shape, sweep, other.collider, other.body_xf,
-                                                   target, tolerance, c.t);
-                t = r.state == ToiState::hit ? r.t : c.t;
-            }
-        }
-        if (t >= 1.0)
-            continue;
-        b.center = f.c0 + t * (sweep.c1 - sweep.c0);
-        b.angle = f.a0 + t * (sweep.a1 - sweep.a0);
-        b.v = f.v0 + t * (b.v - f.v0);
-        b.w = f.w0 + t * (b.w - f.w0);
-        b.xf.q = Rot::from_angle(b.angle);
-        b.xf.p = b.center - rotate(b.xf.q, b.local_center);
-        for (std::uint32_t s = b.first_shape; s != null_index; s = shapes[s].next)
-            shape_store.follow_body(shapes[s], b);
+    };
+    collect(broad.static_tree());
+    if (bullet) {
+        // Other dynamic bodies that are not bullets (two bullets meet at the step's poses).
+        const std::size_t statics = nearby_.size();
+        collect(broad.dynamic_tree());
+        nearby_.erase(std::remove_if(nearby_.begin() + std::ptrdiff_t(statics), nearby_.end(),
+                                     [&](std::uint32_t o) {
+                                         const Body& other = store.bodies[shapes[o].body];
+                                         return shapes[o].body == f.body ||
+                                                other.type != BodyType::dynamic ||
+                                                store.settings[shapes[o].body].bullet;
+                                     }),
+                      nearby_.end());
     }
-    shape_store.apply_moves();
+    if (nearby_.empty())
+        return;
+    // Shape order, so that equal times of impact resolve the same way whatever the tree.
+    std::sort(nearby_.begin(), nearby_.end());
+    double t = 1.0;
+    for (std::uint32_t s = b.first_shape; s != null_index; s = shapes[s].next) {
+        if (shape_store.defs[s].is_sensor)
+            continue;
+        const Collider& shape = shapes[s].collider;
+        const Collider core = core_of(shape);
+        for (const std::uint32_t o : nearby_) {
+            if (!contacts.should_collide(store, shape_store, joints, s, o))
+                continue;
+            const Shape& other = shapes[o];
+            if (other.collider.type == ShapeType::chain_segment) {
+                // One-sided (DD31): a body that starts behind a chain edge passes through it.
+                const Collider& e = other.collider;
+                const Vec2d start = transform_point(sweep.at(0.0), core.center);
+                if (dot(rotate(other.body_xf.q, e.normal(0)),
+                        start - transform_point(other.body_xf, e.vertex(0))) < 0.0)
+                    continue;
+            }
+            // A core never enters a shape it starts outside of: one that starts within the
+            // target may close half its gap (so a body that its contact turns about a corner
+            // cannot swing its centroid through a thin shape).
+            const double gap =
+                shape_distance(core, sweep.at(0.0), other.collider, other.body_xf).distance;
+            if (gap <= 0.0)
+                continue; // already deep inside: the contact's alone
+            const double core_target = std::min(target, 0.5 * gap);
+            const ToiResult c = time_of_impact(core, sweep, other.collider, other.body_xf,
+                                               core_target, 0.25 * core_target, t);
+            if (c.state != ToiState::hit)
+                continue; // the core stays clear
+            // Stopped before touching if it started apart; else as its core touches.
+            const ToiResult r =
+                time_of_impact(shape, sweep, other.collider, other.body_xf, target, tolerance, c.t);
+            t = r.state == ToiState::hit ? r.t : c.t;
+        }
+    }
+    if (t >= 1.0)
+        return;
+    b.center = f.c0 + t * (sweep.c1 - sweep.c0);
+    b.angle = f.a0 + t * (sweep.a1 - sweep.a0);
+    b.v = f.v0 + t * (b.v - f.v0);
+    b.w = f.w0 + t * (b.w - f.w0);
+    b.xf.q = Rot::from_angle(b.angle);
+    b.xf.p = b.center - rotate(b.xf.q, b.local_center);
+    for (std::uint32_t s = b.first_shape; s != null_index; s = shapes[s].next)
+        shape_store.follow_body(shapes[s], b);
 }
 
 } // namespace tamias2d

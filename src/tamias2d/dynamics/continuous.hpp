@@ -29,11 +29,11 @@ class ContinuousPass {
         fast_.push_back({body, start_center, start_angle, start_v, start_w});
     }
     /// Sweeps the listed bodies, in index order, against the static shapes their filters let
-    /// them collide with. A body whose core (a disc about each shape's centroid, a quarter of
-    /// its inner extent in radius) would reach a static shape is moved to its state at the
-    /// time of impact: the pose there, and the velocity interpolated like the pose (the end
-    /// velocity at an earlier pose would add energy, m g h of the height not fallen). The next
-    /// step's speculative contact stops it. Its shapes follow it.
+    /// them collide with (bullets after the others, also against dynamic bodies). A body whose core
+    /// (a disc about each shape's centroid, a quarter of its inner extent in radius) would reach a
+    /// static shape is moved to its state at the time of impact: the pose there, and the velocity
+    /// interpolated like the pose (the end velocity at an earlier pose would add energy, m g h of
+    /// the height not fallen). The next step's speculative contact stops it. Its shapes follow it.
     void run(BodyStore& bodies, ShapeStore& shapes, const ContactManager& contacts,
              const JointStore& joints, const WorldDef& def);
 
@@ -45,6 +45,11 @@ class ContinuousPass {
         Vec2d v0;
         double w0;
     };
+    /// One body's sweep: against static shapes, and for a bullet also against the dynamic
+    /// bodies that are not bullets, at their poses now.
+    void sweep(const FastBody& f, bool bullet, BodyStore& bodies, ShapeStore& shapes,
+               const ContactManager& contacts, const JointStore& joints, const WorldDef& def);
+
     std::vector<FastBody> fast_;
     std::vector<std::uint32_t> nearby_; ///< scratch: the static shapes near one body's path
 };

@@ -8,12 +8,14 @@
 #include "tamias2d/math/vec2d.hpp"
 #include "tamias2d/model/dd01_center_of_mass.hpp"
 #include "tamias2d/model/dd14_moment_of_inertia.hpp"
+#include "tamias2d/model/dd30_capsule_mass.hpp"
 
 namespace tamias2d {
 namespace {
 
 namespace dd01 = model::dd01;
 namespace dd14 = model::dd14;
+namespace dd30 = model::dd30;
 using units::from_value;
 using units::Length;
 using units::Mass;
@@ -53,6 +55,21 @@ double area(const Polygon& p) {
     for (int i = 1; i + 1 < p.count; ++i)
         twice += cross(p.vertices[i] - p.vertices[0], p.vertices[i + 1] - p.vertices[0]);
     return 0.5 * twice;
+}
+
+/// \srs{DD30} a capsule's area
+double area(const Capsule& c) {
+    return dd30::area(metres(length(c.center2 - c.center1)), metres(c.radius)).value();
+}
+
+MassData compute_mass(const Capsule& c, double density) {
+    require_density(density);
+    const Vec2d center = 0.5 * (c.center1 + c.center2);
+    const Length L = metres(length(c.center2 - c.center1));
+    /// \srs{DD30} its inertia about its centre
+    const double inertia =
+        dd30::inertia(from_value<units::AreaDensity>(density), L, metres(c.radius)).value();
+    return {density * area(c), center, inertia};
 }
 
 MassData compute_mass(const Circle& c, double density) {
@@ -99,8 +116,21 @@ MassData compute_mass(const Polygon& p, double density) {
 }
 
 MassData compute_mass(const Geometry& g, double density) {
-    return g.type == ShapeType::circle ? compute_mass(g.circle, density)
-                                       : compute_mass(g.polygon, density);
+    switch (g.type) {
+    case ShapeType::polygon:
+        return compute_mass(g.polygon, density);
+    case ShapeType::capsule:
+        return compute_mass(g.capsule, density);
+    case ShapeType::segment:
+        require_density(density);
+        return {0.0, 0.5 * (g.segment.point1 + g.segment.point2), 0.0};
+    case ShapeType::chain_segment:
+        require_density(density);
+        return {0.0, 0.5 * (g.chain_segment.point1 + g.chain_segment.point2), 0.0};
+    case ShapeType::circle:
+        break;
+    }
+    return compute_mass(g.circle, density);
 }
 
 MassData combine(std::span<const MassData> parts) {

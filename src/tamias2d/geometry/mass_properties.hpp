@@ -19,6 +19,8 @@ struct MassData {
 /// Throws ValidationError (DCX_density) otherwise.
 MassData compute_mass(const Circle& c, double density);
 MassData compute_mass(const Polygon& p, double density);
+MassData compute_mass(const Capsule& c, double density);
+/// Segments and chain segments have no area: zero mass and inertia, centred on their midpoint.
 MassData compute_mass(const Geometry& g, double density);
 
 /// The mass properties of several parts of one body: centre by DD1, inertia about it by the
@@ -29,5 +31,6 @@ MassData combine(std::span<const MassData> parts);
 /// Area of a shape (m^2).
 double area(const Circle& c);
 double area(const Polygon& p);
+double area(const Capsule& c);
 
 } // namespace tamias2d

@@ -28,6 +28,8 @@ template <class VertexAt> Aabb vertices_aabb(int count, VertexAt vertex, const T
 
 Aabb compute_aabb(const Circle& c, const Transform& xf);
 Aabb compute_aabb(const Polygon& p, const Transform& xf);
+/// A segment kind's box: its core segment's, grown by its rounding on every side.
+Aabb compute_aabb(const Capsule& c, const Transform& xf);
 Aabb compute_aabb(const Geometry& g, const Transform& xf);
 
 } // namespace tamias2d

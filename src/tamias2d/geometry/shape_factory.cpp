@@ -153,6 +153,56 @@ Circle make_circle(double radius, Vec2d center) {
     return {center, radius};
 }
 
+namespace {
+
+void require_distinct(Vec2d a, Vec2d b, const std::string& field) {
+    if (!(length(b - a) > 0.0))
+        throw ValidationError(field + ".length", length(b - a),
+                              "must be > 0 (the two ends coincide)", "DCX_shape");
+}
+
+} // namespace
+
+Capsule make_capsule(Vec2d center1, Vec2d center2, double radius) {
+    const Capsule c{center1, center2, radius};
+    validate(c);
+    return c;
+}
+
+Segment make_segment(Vec2d point1, Vec2d point2) {
+    const Segment s{point1, point2};
+    validate(s);
+    return s;
+}
+
+std::vector<ChainSegment> make_chain(std::span<const Vec2d> points, bool loop) {
+    const std::size_t n = points.size();
+    const std::size_t least = loop ? 3 : 2;
+    if (n < least)
+        throw ValidationError("chain.points.size", double(n),
+                              "must be >= " + std::to_string(least) + (loop ? " (a loop)" : ""),
+                              "DCX_shape");
+    for (std::size_t i = 0; i < n; ++i)
+        require_finite(points[i], "chain.points[" + std::to_string(i) + "]");
+    const std::size_t edges = loop ? n : n - 1;
+    for (std::size_t i = 0; i < edges; ++i)
+        require_distinct(points[i], points[(i + 1) % n],
+                         "chain.points[" + std::to_string((i + 1) % n) + "]");
+    std::vector<ChainSegment> out(edges);
+    for (std::size_t i = 0; i < edges; ++i) {
+        ChainSegment& s = out[i];
+        s.point1 = points[i];
+        s.point2 = points[(i + 1) % n];
+        const Vec2d n_right = normalize(right_perp(s.point2 - s.point1));
+        const double len = length(s.point2 - s.point1);
+        // An open end's ghost makes the edge before (after) it run along the normal (against
+        // it): a right-angle convex corner, whose arc admits every normal a free end can have.
+        s.ghost1 = loop || i > 0 ? points[(i + n - 1) % n] : s.point1 - len * n_right;
+        s.ghost2 = loop || i + 1 < edges ? points[(i + 2) % n] : s.point2 + len * n_right;
+    }
+    return out;
+}
+
 Geometry to_geometry(const Circle& c) {
     Geometry g;
     g.type = ShapeType::circle;
@@ -165,6 +215,50 @@ Geometry to_geometry(const Polygon& p) {
     g.type = ShapeType::polygon;
     g.polygon = p;
     return g;
+}
+
+Geometry to_geometry(const Capsule& c) {
+    Geometry g;
+    g.type = ShapeType::capsule;
+    g.capsule = c;
+    return g;
+}
+
+Geometry to_geometry(const Segment& s) {
+    Geometry g;
+    g.type = ShapeType::segment;
+    g.segment = s;
+    return g;
+}
+
+Geometry to_geometry(const ChainSegment& s) {
+    Geometry g;
+    g.type = ShapeType::chain_segment;
+    g.chain_segment = s;
+    return g;
+}
+
+void validate(const Capsule& c) {
+    require_positive(c.radius, "capsule.radius");
+    require_finite(c.center1, "capsule.center1");
+    require_finite(c.center2, "capsule.center2");
+    require_distinct(c.center1, c.center2, "capsule");
+}
+
+void validate(const Segment& s) {
+    require_finite(s.point1, "segment.point1");
+    require_finite(s.point2, "segment.point2");
+    require_distinct(s.point1, s.point2, "segment");
+}
+
+void validate(const ChainSegment& s) {
+    require_finite(s.ghost1, "chain_segment.ghost1");
+    require_finite(s.point1, "chain_segment.point1");
+    require_finite(s.point2, "chain_segment.point2");
+    require_finite(s.ghost2, "chain_segment.ghost2");
+    require_distinct(s.point1, s.point2, "chain_segment");
+    require_distinct(s.ghost1, s.point1, "chain_segment.ghost1");
+    require_distinct(s.point2, s.ghost2, "chain_segment.ghost2");
 }
 
 void validate(const Circle& c) {
@@ -199,10 +293,19 @@ void validate(const Polygon& p) {
 }
 
 void validate(const Geometry& g) {
-    if (g.type == ShapeType::circle)
-        validate(g.circle);
-    else
-        validate(g.polygon);
+    switch (g.type) {
+    case ShapeType::circle:
+        return validate(g.circle);
+    case ShapeType::polygon:
+        return validate(g.polygon);
+    case ShapeType::capsule:
+        return validate(g.capsule);
+    case ShapeType::segment:
+        return validate(g.segment);
+    case ShapeType::chain_segment:
+        return validate(g.chain_segment);
+    }
+    throw ValidationError("shape.type", double(g.type), "must be a ShapeType", "DCX_shape");
 }
 
 } // namespace tamias2d

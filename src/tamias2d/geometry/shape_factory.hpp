@@ -5,6 +5,7 @@
 #pragma once
 
 #include <span>
+#include <vector>
 
 #include "tamias2d/shapes.hpp"
 
@@ -24,13 +25,31 @@ Polygon make_polygon(std::span<const Vec2d> points);
 /// A circle of `radius` m (> 0) centred at `center` (body frame).
 Circle make_circle(double radius, Vec2d center = {});
 
+/// A capsule of `radius` m (> 0) around the segment center1 -> center2 (distinct, finite).
+Capsule make_capsule(Vec2d center1, Vec2d center2, double radius);
+
+/// A two-sided segment point1 -> point2 (distinct, finite).
+Segment make_segment(Vec2d point1, Vec2d point2);
+
+/// The one-sided segments of a chain through `points` (m, body frame; at least 2, or 3 for a
+/// loop; consecutive points distinct, all finite), each colliding on its right (DD31). A loop
+/// also joins the last point to the first. An open chain's two ends are convex corners (their
+/// ghosts lie straight behind the end, so a shape rolls round an end as round a box's corner).
+std::vector<ChainSegment> make_chain(std::span<const Vec2d> points, bool loop);
+
 /// Wraps a shape in the tagged Geometry the world stores.
 Geometry to_geometry(const Circle& c);
 Geometry to_geometry(const Polygon& p);
+Geometry to_geometry(const Capsule& c);
+Geometry to_geometry(const Segment& s);
+Geometry to_geometry(const ChainSegment& s);
 
 /// Checks a hand-made shape against the invariants the factories guarantee (same errors).
 void validate(const Circle& c);
 void validate(const Polygon& p);
+void validate(const Capsule& c);
+void validate(const Segment& s);
+void validate(const ChainSegment& s);
 void validate(const Geometry& g);
 
 /// The relative tolerance used to weld hull points and to reject slivers.

@@ -1,5 +1,6 @@
 #include "tamias2d/geometry/shape_queries.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace tamias2d {
@@ -15,6 +16,18 @@ bool contains(const Polygon& p, Vec2d local) {
         if (dot(p.normals[i], local - p.vertices[i]) > 0.0)
             return false;
     return true;
+}
+
+/// The point of segment a -> b nearest p.
+Vec2d nearest_on_segment(Vec2d a, Vec2d b, Vec2d p) {
+    const Vec2d e = b - a;
+    const double t = std::clamp(dot(p - a, e) / dot(e, e), 0.0, 1.0);
+    return a + t * e;
+}
+
+bool contains(const Capsule& c, Vec2d local) {
+    const Vec2d d = local - nearest_on_segment(c.center1, c.center2, local);
+    return dot(d, d) <= c.radius * c.radius;
 }
 
 /// Ray in the shape's body frame.
@@ -72,20 +85,90 @@ std::optional<RayHit> cast(const Polygon& p, Vec2d o, Vec2d d) {
     return hit;
 }
 
+/// A segment a -> b, hit from the side `n` faces, or either side when two_sided.
+std::optional<RayHit> cast_segment(Vec2d a, Vec2d b, Vec2d o, Vec2d d, bool two_sided) {
+    Vec2d n = normalize(right_perp(b - a));
+    const double den = dot(n, d);
+    if (den == 0.0 || !(dot(d, d) > 0.0))
+        return std::nullopt; // parallel: a zero-thickness segment is never entered
+    if (den > 0.0) {
+        if (!two_sided)
+            return std::nullopt; // from behind a one-sided segment
+        n = -n;
+    }
+    const double t = dot(n, a - o) / dot(n, d);
+    if (!(t >= 0.0 && t <= 1.0))
+        return std::nullopt;
+    const Vec2d p = o + t * d;
+    const Vec2d e = b - a;
+    const double u = dot(p - a, e);
+    if (!(u >= 0.0 && u <= dot(e, e)))
+        return std::nullopt;
+    return RayHit{p, n, t};
+}
+
+/// The side faces (offset by the radius) and the two end discs; the earliest entry wins.
+std::optional<RayHit> cast(const Capsule& c, Vec2d o, Vec2d d) {
+    if (contains(c, o))
+        return std::nullopt;
+    std::optional<RayHit> best;
+    auto keep = [&](std::optional<RayHit> h) {
+        if (h && (!best || h->fraction < best->fraction))
+            best = h;
+    };
+    const Vec2d n = normalize(right_perp(c.center2 - c.center1));
+    for (double side : {1.0, -1.0}) {
+        const Vec2d off = (side * c.radius) * n;
+        const Vec2d a = side > 0.0 ? c.center1 + off : c.center2 + off;
+        const Vec2d b = side > 0.0 ? c.center2 + off : c.center1 + off;
+        keep(cast_segment(a, b, o, d, false));
+    }
+    keep(cast(Circle{c.center1, c.radius}, o, d));
+    keep(cast(Circle{c.center2, c.radius}, o, d));
+    return best;
+}
+
 } // namespace
 
-/// \srs{T5} p in A, for one placed shape.
+/// \srs{T5} p in A, for one placed shape. Segments and chains have no interior.
 bool test_point(const Geometry& g, const Transform& xf, Vec2d p) {
     const Vec2d local = inv_transform_point(xf, p);
-    return g.type == ShapeType::circle ? contains(g.circle, local) : contains(g.polygon, local);
+    switch (g.type) {
+    case ShapeType::circle:
+        return contains(g.circle, local);
+    case ShapeType::polygon:
+        return contains(g.polygon, local);
+    case ShapeType::capsule:
+        return contains(g.capsule, local);
+    case ShapeType::segment:
+    case ShapeType::chain_segment:
+        break;
+    }
+    return false;
 }
 
 std::optional<RayHit> ray_cast(const Geometry& g, const Transform& xf, Vec2d origin,
                                Vec2d translation) {
     const Vec2d o = inv_transform_point(xf, origin);
     const Vec2d d = inv_rotate(xf.q, translation);
-    std::optional<RayHit> hit =
-        g.type == ShapeType::circle ? cast(g.circle, o, d) : cast(g.polygon, o, d);
+    std::optional<RayHit> hit;
+    switch (g.type) {
+    case ShapeType::circle:
+        hit = cast(g.circle, o, d);
+        break;
+    case ShapeType::polygon:
+        hit = cast(g.polygon, o, d);
+        break;
+    case ShapeType::capsule:
+        hit = cast(g.capsule, o, d);
+        break;
+    case ShapeType::segment:
+        hit = cast_segment(g.segment.point1, g.segment.point2, o, d, true);
+        break;
+    case ShapeType::chain_segment:
+        hit = cast_segment(g.chain_segment.point1, g.chain_segment.point2, o, d, false);
+        break;
+    }
     if (hit) {
         hit->point = origin + hit->fraction * translation; // consistent with the fraction
         hit->normal = rotate(xf.q, hit->normal);
