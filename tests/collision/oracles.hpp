@@ -180,6 +180,88 @@ inline Geometry random_shape(std::mt19937_64& rng) {
     }
 }
 
+/// A shape as a core (one point, the two ends of a segment, or a polygon's vertices) and the
+/// radius every surface point lies at from it: circles, capsules, segments, polygons alike.
+struct Rounded {
+    std::vector<Vec2d> core;
+    double radius = 0.0;
+};
+
+inline Rounded rounded(const Geometry& g, const Transform& xf) {
+    switch (g.type) {
+    case ShapeType::circle:
+        return {{world_point(xf, g.circle.center)}, g.circle.radius};
+    case ShapeType::polygon:
+        return {world_vertices(g.polygon, xf), 0.0};
+    case ShapeType::capsule:
+        return {{world_point(xf, g.capsule.center1), world_point(xf, g.capsule.center2)},
+                g.capsule.radius};
+    case ShapeType::segment:
+        return {{world_point(xf, g.segment.point1), world_point(xf, g.segment.point2)}, 0.0};
+    case ShapeType::chain_segment:
+        return {{world_point(xf, g.chain_segment.point1), world_point(xf, g.chain_segment.point2)},
+                0.0};
+    }
+    return {};
+}
+
+/// Distance between two cores (0 when they share a point): a polygon holding a vertex of the
+/// other, crossing edges, else the least vertex-to-edge distance (a point is its own edge).
+inline double core_distance(const std::vector<Vec2d>& A, const std::vector<Vec2d>& B) {
+    if (A.size() >= 3)
+        for (const Vec2d& v : B)
+            if (inside(A, v))
+                return 0.0;
+    if (B.size() >= 3)
+        for (const Vec2d& v : A)
+            if (inside(B, v))
+                return 0.0;
+    auto edges = [](const std::vector<Vec2d>& P) {
+        return P.size() <= 2 ? std::size_t(1) : P.size();
+    };
+    double d = INFINITY;
+    for (std::size_t i = 0; i < edges(A); ++i)
+        for (std::size_t j = 0; j < edges(B); ++j) {
+            const Vec2d a0 = A[i], a1 = A[(i + 1) % A.size()];
+            const Vec2d b0 = B[j], b1 = B[(j + 1) % B.size()];
+            if (segments_cross(a0, a1, b0, b1))
+                return 0.0;
+            // A point's edge has no direction: the distance to it is to its one point.
+            auto to_edge = [](Vec2d p, Vec2d e0, Vec2d e1) {
+                return e0.x == e1.x && e0.y == e1.y ? len({p.x - e0.x, p.y - e0.y})
+                                                    : point_segment_distance(p, e0, e1);
+            };
+            d = std::min({d, to_edge(a0, b0, b1), to_edge(a1, b0, b1), to_edge(b0, a0, a1),
+                          to_edge(b1, a0, a1)});
+        }
+    return d;
+}
+
+/// Distance between two placed shapes of any kind (0 when they overlap).
+inline double rounded_distance(const Geometry& a, const Transform& xa, const Geometry& b,
+                               const Transform& xb) {
+    const Rounded ra = rounded(a, xa), rb = rounded(b, xb);
+    return std::max(0.0, core_distance(ra.core, rb.core) - ra.radius - rb.radius);
+}
+
+/// p lies in the shape grown by delta.
+inline bool within(const Geometry& g, const Transform& xf, Vec2d p, double delta) {
+    const Rounded r = rounded(g, xf);
+    return core_distance(r.core, {p}) <= r.radius + delta;
+}
+
+/// A random capsule (radius 0.05-0.5 m) or segment, its core up to ~1.7 m long.
+inline Geometry random_rounded_shape(std::mt19937_64& rng) {
+    std::uniform_real_distribution<double> u(-0.6, 0.6);
+    std::uniform_real_distribution<double> radius(0.05, 0.5);
+    Vec2d a{u(rng), u(rng)}, b{u(rng), u(rng)};
+    if (len({b.x - a.x, b.y - a.y}) < 0.1)
+        b = {a.x + 0.3, a.y};
+    if (std::uniform_int_distribution<int>(0, 2)(rng) == 0)
+        return tamias2d::to_geometry(tamias2d::make_segment(a, b));
+    return tamias2d::to_geometry(tamias2d::make_capsule(a, b, radius(rng)));
+}
+
 inline Transform random_transform(std::mt19937_64& rng, double extent) {
     std::uniform_real_distribution<double> u(-extent, extent);
     std::uniform_real_distribution<double> angle(-3.14159, 3.14159);

@@ -99,6 +99,53 @@ BOOST_AUTO_TEST_CASE(ray_cast_closed_forms, *utf::label("T5")) {
     BOOST_TEST(c->normal.y == -0.8, tt::tolerance(1e-14));
 }
 
+// Oracle: closed forms for a capsule (core x in [-1, 1], radius 0.5), placed turned and moved:
+// a ray straight down onto its side enters at 0.5 above the core; one along its axis at the end
+// disc's tip; one 0.3 off the axis on the end disc where x = 1 + sqrt(0.25 - 0.09) = 1.4, with
+// the normal (0.8, 0.6); containment is distance to the core at most the radius. A segment is
+// hit from either side, a chain edge only from its collision side (its right, DD31); neither
+// contains a point.
+BOOST_AUTO_TEST_CASE(capsule_segment_and_chain_queries, *utf::label("T5") * utf::label("DD31")) {
+    const Geometry cap = to_geometry(make_capsule({-1.0, 0.0}, {1.0, 0.0}, 0.5));
+    const Transform xf{{2.0, -1.0}, Rot::from_angle(0.7)};
+    const Rot q = xf.q;
+    auto world = [&](Vec2d v) { return placed(xf, v); };
+    auto dir = [&](Vec2d v) { return Vec2d{q.c * v.x - q.s * v.y, q.s * v.x + q.c * v.y}; };
+    const auto side = ray_cast(cap, xf, world({0.2, 3.0}), dir({0.0, -4.0}));
+    BOOST_TEST_REQUIRE(side.has_value());
+    BOOST_TEST(side->fraction == 2.5 / 4.0, tt::tolerance(1e-13));
+    BOOST_TEST(side->normal.x == dir({0.0, 1.0}).x, tt::tolerance(1e-13));
+    const auto tip = ray_cast(cap, xf, world({3.0, 0.0}), dir({-4.0, 0.0}));
+    BOOST_TEST_REQUIRE(tip.has_value());
+    BOOST_TEST(tip->fraction == 1.5 / 4.0, tt::tolerance(1e-13));
+    const auto off = ray_cast(cap, xf, world({3.0, 0.3}), dir({-4.0, 0.0}));
+    BOOST_TEST_REQUIRE(off.has_value());
+    BOOST_TEST(off->fraction == 1.6 / 4.0, tt::tolerance(1e-13));
+    BOOST_TEST(off->normal.x == dir({0.8, 0.6}).x, tt::tolerance(1e-12));
+    BOOST_TEST(off->normal.y == dir({0.8, 0.6}).y, tt::tolerance(1e-12));
+    BOOST_TEST(!ray_cast(cap, xf, world({0.0, 0.2}), dir({0.0, 4.0})).has_value());  // inside
+    BOOST_TEST(!ray_cast(cap, xf, world({3.0, 0.6}), dir({-6.0, 0.0})).has_value()); // misses
+    BOOST_TEST(test_point(cap, xf, world({1.3, 0.3})));   // 0.42 from the core's end
+    BOOST_TEST(!test_point(cap, xf, world({1.4, 0.4})));  // 0.57 from it
+    BOOST_TEST(test_point(cap, xf, world({-0.7, -0.5}))); // on the side
+
+    const Geometry seg = to_geometry(make_segment({-1.0, 0.0}, {1.0, 0.0}));
+    for (const double from : {2.0, -2.0}) {
+        const auto h = ray_cast(seg, Transform{}, {0.5, from}, {0.0, -2.0 * from});
+        BOOST_TEST_REQUIRE(h.has_value());
+        BOOST_TEST(h->fraction == 0.5);
+        BOOST_TEST(h->normal.y == (from > 0.0 ? 1.0 : -1.0));
+    }
+    const Geometry edge =
+        to_geometry(ChainSegment{{2.0, 0.0}, {1.0, 0.0}, {-1.0, 0.0}, {-2.0, 0.0}});
+    const auto above = ray_cast(edge, Transform{}, {0.5, 2.0}, {0.0, -4.0});
+    BOOST_TEST_REQUIRE(above.has_value());
+    BOOST_TEST(above->normal.y == 1.0);
+    BOOST_TEST(!ray_cast(edge, Transform{}, {0.5, -2.0}, {0.0, 4.0}).has_value()); // from behind
+    BOOST_TEST(!test_point(seg, Transform{}, {0.0, 0.0}));
+    BOOST_TEST(!test_point(edge, Transform{}, {0.0, 0.0}));
+}
+
 // Oracle: T5 containment along the ray: random rays that hit end on the boundary (just
 // inside after, just outside before), and rays that miss never pass through the shape.
 BOOST_AUTO_TEST_CASE(ray_cast_random_consistent, *utf::label("T5")) {

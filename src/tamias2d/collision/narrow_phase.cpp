@@ -536,12 +536,85 @@ double core_separation(const Core& ref, const Core& other, int& edge) {
     return best;
 }
 
+/// The closest points of two cores, from A's to B's, and the features they lie on.
+struct CoreGap {
+    double distance = 0.0; ///< m: 0 when the cores overlap
+    Vec2d from{}, to{};
+    int feature_a = 0, feature_b = 0;
+    std::uint8_t type_a = vertex_feature, type_b = vertex_feature;
+};
+
+/// The cores' least distance over their edges (a point is its own edge, a segment has one),
+/// or 0 when a polygon core holds a vertex of the other (edges that cross give 0 themselves).
+CoreGap core_gap(const Core& a, const Core& b) {
+    CoreGap out;
+    auto holds = [](const Core& p, const Core& q) {
+        if (p.count < 3)
+            return false;
+        for (int j = 0; j < q.count; ++j) {
+            bool in = true;
+            for (int i = 0; i < p.count && in; ++i)
+                in = dot(p.n[i], q.v[j] - p.v[i]) <= 0.0;
+            if (in)
+                return true;
+        }
+        return false;
+    };
+    if (holds(a, b) || holds(b, a))
+        return out;
+    const int ea = a.count <= 2 ? 1 : a.count, eb = b.count <= 2 ? 1 : b.count;
+    double best = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < ea; ++i) {
+        const int i2 = a.count == 1 ? i : (i + 1) % a.count;
+        for (int j = 0; j < eb; ++j) {
+            const int j2 = b.count == 1 ? j : (j + 1) % b.count;
+            const SegmentDistance sd = segment_distance(a.v[i], a.v[i2], b.v[j], b.v[j2]);
+            if (sd.distance_squared < best) {
+                best = sd.distance_squared;
+                out.from = sd.closest1;
+                out.to = sd.closest2;
+                const bool va = a.count == 1 || sd.fraction1 == 0.0 || sd.fraction1 == 1.0;
+                const bool vb = b.count == 1 || sd.fraction2 == 0.0 || sd.fraction2 == 1.0;
+                out.feature_a = va && sd.fraction1 == 1.0 ? i2 : i;
+                out.feature_b = vb && sd.fraction2 == 1.0 ? j2 : j;
+                out.type_a = va ? vertex_feature : face_feature;
+                out.type_b = vb ? vertex_feature : face_feature;
+            }
+        }
+    }
+    out.distance = std::sqrt(best);
+    return out;
+}
+
+/// One contact point along the cores' gap (A5), from A's core to B's, midway between the
+/// surfaces, when that is nearer than the margin.
+void one_point_along(const CoreGap& gap, double radius_a, double rsum, const Transform& frame,
+                     const CollideInput& in, Manifold& m) {
+    const double separation = gap.distance - rsum;
+    if (!(separation < in.margin))
+        return set_empty(m);
+    const Vec2d g = (gap.to - gap.from) / gap.distance; // A -> B
+    m.normal = rotate(frame.q, g);
+    m.count = 1;
+    set_point(m.points[0], gap.from + (radius_a + 0.5 * separation) * g, separation,
+              make_id(false, gap.feature_a, gap.type_a, gap.feature_b, gap.type_b), frame, in);
+}
+
+/// The least separation of a manifold's points plus the radii: its cores' gap as it reports it.
+double deepest_core(const Manifold& m, double rsum) {
+    double d = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < m.count; ++i)
+        d = std::min(d, m.points[i].separation);
+    return d + rsum;
+}
+
 /// \srs{T5} Shapes with a rounding (capsules, segments) against any shape, as their cores (a
 /// point, a segment or a polygon) grown by their radii: the separating axis test on the cores
 /// picks the reference face, the incident edge is clipped to it (LC1: two points for parallel
-/// faces) and each point's separation is its core distance less both radii. Cores apart at two
-/// vertices give one point along the true gap (A5). With `forced_face` >= 0, A's face of that
-/// index is the reference, whatever the test would pick (DD31's answer for a chain edge).
+/// faces) and each point's separation is its core distance less both radii. Cores apart by
+/// more than the faces show give one point along the true gap (A5). With `forced_face` >= 0, A's
+/// face of that index is the reference, whatever the test would pick (DD31's answer for a chain
+/// edge).
 void rounded_into(const Collider& a, const Collider& b, const CollideInput& in, Manifold& m,
                   int forced_face = -1) {
     const Transform frame{transform_point(in.xf_a, a.center), in.xf_a.q};
@@ -555,16 +628,29 @@ void rounded_into(const Collider& a, const Collider& b, const CollideInput& in, 
     double sep_a = ca.count >= 2 ? core_separation(ca, cb, edge_a) : -inf;
     double sep_b = cb.count >= 2 ? core_separation(cb, ca, edge_b) : -inf;
     bool flip = false;
+    CoreGap gap;
+    double tol = 0.0;
     if (forced_face >= 0) {
         edge_a = forced_face;
-        sep_a = inf; // never the vertex-vertex shortcut below
         sep_b = -inf;
     } else {
         // The separating axis bounds the cores' distance from below: at or past the margin
         // plus both radii, the surfaces are apart by the margin.
         if (!(std::max(sep_a, sep_b) - rsum < in.margin))
             return set_empty(m);
-        flip = sep_b > sep_a + relative_tolerance * std::min(ca.size, cb.size);
+        tol = relative_tolerance * std::min(ca.size, cb.size);
+        // A point or a segment has no face along its own direction, so the faces' axes can
+        // understate the cores' gap (two capsules end to end on one line read as overlapping):
+        // the cores' true gap decides. Apart by more than the faces say, or nearest at two
+        // vertices, the contact is one point along the gap (A5). (Cores whose edges cross give
+        // a gap of rounding size, not exactly 0: below the tolerance, the faces decide.)
+        gap = core_gap(ca, cb);
+        const double sep_max = std::max(sep_a, sep_b);
+        const bool vertices = gap.type_a == vertex_feature && gap.type_b == vertex_feature;
+        if (gap.distance > tol &&
+            (gap.distance > sep_max + tol || (vertices && gap.distance > sep_max + 1e-9 * ca.size)))
+            return one_point_along(gap, ca.radius, rsum, frame, in, m);
+        flip = sep_b > sep_a + tol;
     }
     const Core& ref = flip ? cb : ca;
     const Core& inc = flip ? ca : cb;
@@ -584,30 +670,7 @@ void rounded_into(const Collider& a, const Collider& b, const CollideInput& in, 
     }
     const int i22 = inc.count >= 2 ? (i21 + 1 == inc.count ? 0 : i21 + 1) : i21;
     const Vec2d v11 = ref.v[i11], v12 = ref.v[i12], v21 = inc.v[i21], v22 = inc.v[i22];
-    const double r_ref = ref.radius, r_inc = inc.radius;
-
-    const double sep_max = std::max(sep_a, sep_b);
-    if (forced_face < 0 && sep_max > 0.0) {
-        // Cores apart: closest at two vertices, the gap runs between them, not along a face.
-        const SegmentDistance sd = segment_distance(v11, v12, v21, v22);
-        const bool ref_vertex = sd.fraction1 == 0.0 || sd.fraction1 == 1.0;
-        const bool inc_vertex = sd.fraction2 == 0.0 || sd.fraction2 == 1.0;
-        const double dist = std::sqrt(sd.distance_squared);
-        if (ref_vertex && inc_vertex &&
-            dist > sep_max + relative_tolerance * std::min(ca.size, cb.size)) {
-            const double separation = dist - rsum;
-            if (!(separation < in.margin))
-                return set_empty(m);
-            const Vec2d g = (sd.closest2 - sd.closest1) / dist; // reference -> incident
-            const int ri = sd.fraction1 == 0.0 ? i11 : i12;
-            const int ii = sd.fraction2 == 0.0 ? i21 : i22;
-            m.normal = rotate(frame.q, flip ? -g : g);
-            m.count = 1;
-            set_point(m.points[0], sd.closest1 + (r_ref + 0.5 * separation) * g, separation,
-                      make_id(flip, ri, vertex_feature, ii, vertex_feature), frame, in);
-            return;
-        }
-    }
+    const double r_inc = inc.radius;
 
     // Clip the incident edge (or point) to the reference face's side planes.
     const Vec2d t = left_perp(n);
@@ -638,7 +701,15 @@ void rounded_into(const Collider& a, const Collider& b, const CollideInput& in, 
                   make_id(flip, i11, face_feature, i21, vertex_feature), frame, in);
     }
     m.count = count;
-    if (count == 0)
+    // Clipping keeps the incident points inside the reference face's side planes; when the
+    // nearest point lies outside them, the clipped points would overstate the gap (or miss a
+    // contact): the true gap is the answer then.
+    if (forced_face < 0 && gap.distance > tol &&
+        (count == 0 || deepest_core(m, rsum) > gap.distance + 1e-9 * ca.size)) {
+        if (gap.distance - rsum < in.margin)
+            return one_point_along(gap, ca.radius, rsum, frame, in, m);
+    }
+    if (m.count == 0)
         m.normal = {};
 }
 
