@@ -1,0 +1,131 @@
+// Chain ground (DD31): a body sliding over the joints between a chain's edges meets no bump.
+#include <boost/test/unit_test.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "tamias2d/world.hpp"
+
+namespace utf = boost::unit_test;
+namespace tt = boost::test_tools;
+using namespace tamias2d;
+
+namespace {
+
+constexpr double dt = 1.0 / 60.0;
+constexpr int edges = 100;    // 1 m each, from x = 0 to x = 100
+constexpr double speed = 5.0; // m/s to the right
+
+struct Slide {
+    double max_vy = 0.0;  ///< m/s, largest |vertical velocity| over the run
+    double max_dvx = 0.0; ///< m/s, largest |vx - speed|
+    double max_w = 0.0;   ///< rad/s, largest |angular velocity|
+    double max_dy = 0.0;  ///< m, largest |height - resting height|
+    double end_x = 0.0;   ///< m
+};
+
+/// A frictionless box (or circle) resting on the ground and sliding right at `speed` until it
+/// nears the far end; the ground is a chain, or `edges` separate 1 m static boxes.
+Slide slide(bool chain, bool circle) {
+    World world;
+    BodyDef ground;
+    ground.type = BodyType::static_body;
+    const BodyId g = world.create_body(ground);
+    if (chain) {
+        // Listed right to left: each edge's collision side (its right) is up.
+        std::vector<Vec2d> points;
+        for (int i = edges; i >= 0; --i)
+            points.push_back({double(i), 0.0});
+        world.create_chain(g, chain_shapes(points, false));
+    } else {
+        for (int i = 0; i < edges; ++i)
+            world.create_shape(g, box_shape(1.0, 1.0, {}, {i + 0.5, -0.5}));
+    }
+    BodyDef def;
+    def.position = {1.0, circle ? 0.3 : 0.25};
+    def.linear_velocity = {speed, 0.0};
+    const BodyId body = world.create_body(def);
+    world.create_shape(body, circle ? circle_shape(0.3) : box_shape(0.5, 0.5));
+    const double rest = def.position.y;
+    Slide out;
+    const int steps = int((edges - 3.0) / (speed * dt));
+    for (int k = 0; k < steps; ++k) {
+        world.step(dt);
+        const BodyState s = world.state(body);
+        out.max_vy = std::max(out.max_vy, std::abs(s.velocity.y));
+        out.max_dvx = std::max(out.max_dvx, std::abs(s.velocity.x - speed));
+        out.max_w = std::max(out.max_w, std::abs(s.angular_velocity));
+        out.max_dy = std::max(out.max_dy, std::abs(s.position.y - rest));
+        out.end_x = s.position.x;
+    }
+    return out;
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(chain_ground)
+
+// Oracle: the closed form of frictionless sliding on a horizontal plane under gravity: the
+// velocity stays (5, 0) m/s, the height and the angle constant. A box and a circle cross 96 of
+// the chain's joints: vertical and angular velocity stay zero to rounding, and the height
+// within the soft contact's resting compliance (under the linear slop, millimetres). The same box
+// on separate boxes, whose corners meet at each joint, is reported (not asserted): that bump is
+// what chains remove.
+BOOST_AUTO_TEST_CASE(box_slides_over_joints_without_a_bump,
+                     *utf::label("DD31") * utf::label("R7")) {
+    for (const bool circle : {false, true}) {
+        const Slide s = slide(true, circle);
+        BOOST_TEST_MESSAGE((circle ? "circle" : "box")
+                           << " on a chain: |vy| <= " << s.max_vy
+                           << " m/s, |vx - 5| <= " << s.max_dvx << " m/s, |w| <= " << s.max_w
+                           << " rad/s, |dy| <= " << s.max_dy << " m");
+        BOOST_TEST_CONTEXT((circle ? "circle" : "box")) {
+            BOOST_TEST(s.end_x > 95.0); // it crossed the joints
+            BOOST_TEST(s.max_vy < 1e-9);
+            BOOST_TEST(s.max_dvx < 1e-9);
+            BOOST_TEST(s.max_dy < 5e-3);
+            if (!circle)
+                BOOST_TEST(s.max_w < 1e-9);
+        }
+    }
+    const Slide boxes = slide(false, false);
+    BOOST_TEST_MESSAGE("box on separate boxes: |vy| <= "
+                       << boxes.max_vy << " m/s, |vx - 5| <= " << boxes.max_dvx << " m/s, |w| <= "
+                       << boxes.max_w << " rad/s, end x " << boxes.end_x << " m");
+}
+
+// Oracle: DD31's one-sidedness under gravity: a ball thrown up at 10 m/s from 1 m below the
+// chain passes through it: while it rises its height is free flight's, to rounding, in IM1's
+// discrete closed form (semi-implicit Euler, n substeps of h: y = y0 + v0 n h - g h^2 n (n+1)/2),
+// as if the chain were not there; then it lands on the chain from above and rests on its top.
+BOOST_AUTO_TEST_CASE(thrown_up_through_a_chain_lands_on_it, *utf::label("DD31")) {
+    World world;
+    BodyDef ground;
+    ground.type = BodyType::static_body;
+    const BodyId g = world.create_body(ground);
+    const Vec2d points[] = {{10.0, 0.0}, {0.0, 0.0}, {-10.0, 0.0}};
+    world.create_chain(g, chain_shapes(points, false));
+    BodyDef def;
+    def.position = {0.5, -1.0};
+    def.linear_velocity = {0.0, 10.0};
+    const BodyId ball = world.create_body(def);
+    world.create_shape(ball, circle_shape(0.2));
+    double worst = 0.0, highest = -INFINITY;
+    for (int k = 1; k <= 240; ++k) {
+        world.step(dt);
+        const double y = world.state(ball).position.y;
+        highest = std::max(highest, y);
+        const double h = dt / WorldDef{}.substeps, n = double(k * WorldDef{}.substeps);
+        if (world.state(ball).velocity.y > 0.0) // rising: free flight, through the chain too
+            worst = std::max(
+                worst, std::abs(y - (-1.0 + 10.0 * n * h - 9.81 * h * h * n * (n + 1.0) / 2.0)));
+    }
+    BOOST_TEST(highest > 3.0); // it went through (from behind) to about 4.1 m
+    BOOST_TEST(worst < 1e-12);
+    const BodyState end = world.state(ball);
+    BOOST_TEST(end.position.y == 0.2, tt::tolerance(0.05)); // resting on the top side
+    BOOST_TEST(std::abs(end.velocity.y) < 1e-2);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
