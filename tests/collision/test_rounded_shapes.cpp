@@ -232,4 +232,67 @@ BOOST_AUTO_TEST_CASE(convex_vertex_keeps_its_arc, *utf::label("DD31")) {
     }
 }
 
+// Oracle: brute-force distance (oracles.hpp) and DD31's one-sidedness: a chain edge whose
+// ghosts make its ends right-angle convex corners (an open chain of one edge) admits every
+// normal into the half-plane in front of it, so against any shape wholly in front of its line
+// it is a segment: overlapping shapes touch, shapes apart by the margin do not, a speculative
+// contact reports the true gap; against a shape whose centre is behind its line it never
+// touches, whatever the overlap.
+BOOST_AUTO_TEST_CASE(chain_edge_against_every_kind, *utf::label("DD31") * utf::label("T5")) {
+    std::mt19937_64 rng(11);
+    const std::vector<Vec2d> pts = {{1.0, 0.0}, {-1.0, 0.0}}; // normal +y
+    const Geometry e = to_geometry(make_chain(pts, false)[0]);
+    int in_front = 0, behind = 0, touching = 0;
+    for (int trial = 0; trial < 4000; ++trial) {
+        const Geometry b =
+            trial % 2 == 0 ? oracle::random_shape(rng) : oracle::random_rounded_shape(rng);
+        const Transform xb = oracle::random_transform(rng, 1.5);
+        const double margin = 0.1;
+        const oracle::Rounded r = oracle::rounded(b, xb);
+        double lowest = INFINITY;
+        for (const Vec2d& v : r.core)
+            lowest = std::min(lowest, v.y);
+        lowest -= r.radius;
+        // The shape's centre: a polygon's area centroid (shoelace), else the core's midpoint.
+        double cy = 0.0;
+        if (r.core.size() >= 3) {
+            double area2 = 0.0;
+            for (std::size_t i = 0; i < r.core.size(); ++i) {
+                const Vec2d p = r.core[i], q = r.core[(i + 1) % r.core.size()];
+                const double c = p.x * q.y - q.x * p.y;
+                area2 += c;
+                cy += (p.y + q.y) * c;
+            }
+            cy /= 3.0 * area2;
+        } else {
+            for (const Vec2d& v : r.core)
+                cy += v.y / double(r.core.size());
+        }
+        for (int order = 0; order < 2; ++order) {
+            const Manifold m = order == 0 ? collide(e, b, input(at(0, 0), xb, margin))
+                                          : collide(b, e, input(xb, at(0, 0), margin));
+            BOOST_TEST_CONTEXT("trial " << trial << " order " << order) {
+                if (cy < 0.0) { // the shape's centre behind the edge
+                    ++behind;
+                    BOOST_TEST(m.count == 0);
+                } else if (lowest >= 0.0) { // wholly in front
+                    ++in_front;
+                    const double d = oracle::rounded_distance(e, at(0, 0), b, xb);
+                    if (d >= margin)
+                        BOOST_TEST(m.count == 0);
+                    else {
+                        ++touching;
+                        BOOST_TEST_REQUIRE(m.count >= 1);
+                        BOOST_TEST(deepest(m) == d, tt::tolerance(1e-9));
+                    }
+                }
+            }
+        }
+    }
+    BOOST_TEST_MESSAGE("chain edge: " << in_front << " in front (" << touching
+                                      << " within the margin), " << behind << " behind");
+    BOOST_TEST(touching > 100);
+    BOOST_TEST(behind > 1000);
+}
+
 BOOST_AUTO_TEST_SUITE_END()

@@ -198,7 +198,7 @@ std::vector<ChainSegment> make_chain(std::span<const Vec2d> points, bool loop) {
         // An open end's ghost makes the edge before (after) it run along the normal (against
         // it): a right-angle convex corner, whose arc admits every normal a free end can have.
         s.ghost1 = loop || i > 0 ? points[(i + n - 1) % n] : s.point1 - len * n_right;
-        s.ghost2 = loop || i + 1 < edges ? points[(i + 2) % n] : s.point2 + len * n_right;
+        s.ghost2 = loop || i + 1 < edges ? points[(i + 2) % n] : s.point2 - len * n_right;
     }
     return out;
 }
