@@ -138,8 +138,22 @@ struct Driver {
         return m;
     }
 
+    Vec2d near_point() { return r.chance(80) ? Vec2d{r.between(-1, 1), r.between(-1, 1)} : vec(); }
+
     ShapeDef shape_def() {
-        switch (r.below(3)) {
+        switch (r.below(6)) {
+        case 3:
+            return capsule_shape(near_point(), near_point(), positive_size(r), material());
+        case 4:
+            return segment_shape(near_point(), near_point(), material());
+        case 5: {
+            std::vector<Vec2d> pts;
+            const std::size_t n = 1 + r.below(6);
+            for (std::size_t i = 0; i < n; ++i)
+                pts.push_back(near_point());
+            const std::vector<ShapeDef> chain = chain_shapes(pts, r.chance(30), material());
+            return chain[r.below(chain.size())];
+        }
         case 0:
             return circle_shape(positive_size(r), material(), r.chance(80) ? Vec2d{} : vec());
         case 1:
@@ -174,6 +188,7 @@ struct Driver {
         if (r.chance(10))
             d.linear_damping = any_double(r);
         d.awake = r.chance(90);
+        d.bullet = r.chance(10);
         return d;
     }
 
@@ -215,8 +230,13 @@ struct Driver {
             const ShapeDef def = shape_def();
             last << "create_shape(" << str(b) << ", geometry kind "
                  << static_cast<int>(def.geometry.type) << ", radius " << def.geometry.circle.radius
-                 << ", vertices " << def.geometry.polygon.count << ", density "
-                 << def.material.density << ")";
+                 << ", capsule " << str(def.geometry.capsule.center1) << " "
+                 << str(def.geometry.capsule.center2) << " " << def.geometry.capsule.radius
+                 << ", segment " << str(def.geometry.segment.point1) << " "
+                 << str(def.geometry.segment.point2) << ", chain segment "
+                 << str(def.geometry.chain_segment.point1) << " "
+                 << str(def.geometry.chain_segment.point2) << ", vertices "
+                 << def.geometry.polygon.count << ", density " << def.material.density << ")";
             shapes.push_back(world.create_shape(b, def));
             break;
         }
