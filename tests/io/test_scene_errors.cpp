@@ -226,14 +226,100 @@ BOOST_AUTO_TEST_CASE(duplicates_and_bad_references_are_rejected, *utf::label("R4
     expect_error(
         with_bodies(R"({"shapes": [{"type": "circle", "radius": 1, "material": "gold"}]})"),
         {"/bodies/0/shapes/0/material", "material", "", "unknown material 'gold'"});
-    expect_error(with_bodies(R"({"shapes": [{"type": "capsule"}]})"),
-                 {"/bodies/0/shapes/0/type", "type", "", "unknown shape type 'capsule'"});
+    expect_error(with_bodies(R"({"shapes": [{"type": "ellipse"}]})"),
+                 {"/bodies/0/shapes/0/type", "type", "",
+                  "unknown shape type 'ellipse'; allowed: box, circle, polygon, capsule, "
+                  "segment, chain, chain_segment"});
     expect_error(with_bodies(R"({"type": "ghost", "mass": 1})"),
                  {"/bodies/0/type", "type", "", "allowed: dynamic, static, kinematic"});
     expect_error(with_bodies(R"({"generator": "tower"})"),
                  {"/bodies/0/generator", "generator", "", "unknown generator 'tower'"});
     expect_error(with_bodies(R"({"mass": 1, "loads": {"torque": {"kind": "square"}}})"),
                  {"/bodies/0/loads/torque/kind", "kind", "", "unknown load kind 'square'"});
+}
+
+// Oracle: docs/scene-format.md's capsule, segment and chain keys and the library's shape
+// constraints (DCX_shape: a radius > 0, distinct ends, a chain of >= 2 points, >= 3 for a loop,
+// consecutive points distinct; DCX_range): each value below breaks one, and the error names
+// the key or the point at fault.
+BOOST_AUTO_TEST_CASE(capsule_segment_and_chain_defects_are_named,
+                     *utf::label("R4") * utf::label("DCX_shape") * utf::label("DCX_range") *
+                         utf::label("DCI_m")) {
+    const auto shape = [](const std::string& s) {
+        return with_bodies(R"({"type": "static", "shapes": [)" + s + "]}");
+    };
+    // Capsules.
+    expect_error(
+        shape(R"({"type": "capsule", "center1": [0, 0], "center2": [1, 0], "radius": -1})"),
+        {"/bodies/0/shapes/0/radius", "radius", "DCX_shape", "radius = -1: must be > 0"});
+    expect_error(shape(R"({"type": "capsule", "center1": [0, 0], "center2": [1, 0], "radius": 0})"),
+                 {"/bodies/0/shapes/0/radius", "radius", "DCX_shape", "radius = 0: must be > 0"});
+    expect_error(
+        shape(R"({"type": "capsule", "center1": [2, 1], "center2": [2, 1], "radius": 0.5})"),
+        {"/bodies/0/shapes/0/center2", "capsule.length", "DCX_shape",
+         "capsule.length = 0: must be > 0 (the two ends coincide) (DCX_shape)"});
+    expect_error(
+        shape(R"({"type": "capsule", "center1": [0, 2e12], "center2": [1, 0], "radius": 1})"),
+        {"/bodies/0/shapes/0/center1/1", "capsule.center1.y", "DCX_range", "the supported range"});
+    expect_error(shape(R"({"type": "capsule", "center1": [0, 0], "radius": 1})"),
+                 {"/bodies/0/shapes/0/center2", "center2", "", "missing required key 'center2'"});
+    expect_error(
+        shape(
+            R"({"type": "capsule", "center1": [0, 0], "center2": [1, 0], "radius": 1, "width": 1})"),
+        {"/bodies/0/shapes/0/width", "width", "", "unknown key 'width' in a capsule shape"});
+    // Segments.
+    expect_error(shape(R"({"type": "segment", "point1": [3, -1], "point2": [3, -1]})"),
+                 {"/bodies/0/shapes/0/point2", "segment.length", "DCX_shape",
+                  "segment.length = 0: must be > 0 (the two ends coincide) (DCX_shape)"});
+    expect_error(shape(R"({"type": "segment", "point1": [0, 0], "point2": [1e-13, 0]})"),
+                 {"/bodies/0/shapes/0/point2", "segment.length", "DCX_range",
+                  "must be in [1e-12, 2e+12] m"});
+    expect_error(shape(R"({"type": "segment", "point1": [0, 0], "point2": [1, "a"]})"),
+                 {"/bodies/0/shapes/0/point2/1", "point2.y", "", "expected a number"});
+    // Chains.
+    expect_error(shape(R"({"type": "chain", "points": [[0, 0]]})"),
+                 {"/bodies/0/shapes/0/points", "chain.points.size", "DCX_shape",
+                  "chain.points.size = 1: must be >= 2 (DCX_shape)"});
+    expect_error(shape(R"({"type": "chain", "points": []})"),
+                 {"/bodies/0/shapes/0/points", "chain.points.size", "DCX_shape", "must be >= 2"});
+    expect_error(shape(R"({"type": "chain", "points": [[0, 0], [1, 0]], "loop": true})"),
+                 {"/bodies/0/shapes/0/points", "chain.points.size", "DCX_shape",
+                  "chain.points.size = 2: must be >= 3 (a loop) (DCX_shape)"});
+    expect_error(shape(R"({"type": "chain", "points": [[0, 0], [1, 0], [1, 0], [2, 1]]})"),
+                 {"/bodies/0/shapes/0/points/2", "chain.points[2].length", "DCX_shape",
+                  "chain.points[2].length = 0: must be > 0 (the two ends coincide)"});
+    // A loop also joins its last point to its first: here they coincide.
+    expect_error(
+        shape(R"({"type": "chain", "points": [[0, 0], [1, 0], [1, 1], [0, 0]], "loop": true})"),
+        {"/bodies/0/shapes/0/points/0", "chain.points[0].length", "DCX_shape", "coincide"});
+    expect_error(shape(R"({"type": "chain", "points": [[0, 0], [1, 0], [1, 1e-13]]})"),
+                 {"/bodies/0/shapes/0/points/2", "chain_segment.length", "DCX_range",
+                  "chain_segment.length = 1e-13: must be in [1e-12, 2e+12] m"});
+    expect_error(shape(R"({"type": "chain", "points": [[0, 0], [-1e13, 0]]})"),
+                 {"/bodies/0/shapes/0/points/1/0", "points.x", "DCX_range", "the supported range"});
+    expect_error(shape(R"({"type": "chain", "points": [[0, 0], [1, 0]], "loop": "no"})"),
+                 {"/bodies/0/shapes/0/loop", "loop", "", "loop: expected true or false"});
+    expect_error(shape(R"({"type": "chain", "points": [[0, 0], [1]]})"),
+                 {"/bodies/0/shapes/0/points/1", "points", "", "expected an array [x, y]"});
+    expect_error(shape(R"({"type": "chain", "loop": true})"),
+                 {"/bodies/0/shapes/0/points", "points", "", "missing required key 'points'"});
+    expect_error(shape(R"({"type": "chain", "points": [[0, 0], [1, 0]], "closed": true})"),
+                 {"/bodies/0/shapes/0/closed", "closed", "", "unknown key 'closed' in a chain"});
+    // A chain segment written with its ghosts.
+    expect_error(
+        shape(R"({"type": "chain_segment", "ghost1": [-1, 0], "point1": [0, 0],
+                           "point2": [1, 0], "ghost2": [1, 0]})"),
+        {"/bodies/0/shapes/0/ghost2", "chain_segment.ghost2.length", "DCX_shape", "coincide"});
+    expect_error(shape(R"({"type": "chain_segment", "point1": [0, 0], "point2": [1, 0]})"),
+                 {"/bodies/0/shapes/0/ghost1", "ghost1", "", "missing required key 'ghost1'"});
+    // The body keys.
+    expect_error(with_bodies(R"({"bullet": 1, "shapes": [{"type": "circle", "radius": 1}]})"),
+                 {"/bodies/0/bullet", "bullet", "", "bullet: expected true or false"});
+    // Segments and chains have no area: a dynamic body of only those needs a mass (DCI_m).
+    expect_error(with_bodies(R"({"shapes": [{"type": "segment", "point1": [0, 0], "point2": [1, 0]},
+                                            {"type": "chain", "points": [[0, 1], [1, 1]]}]})"),
+                 {"/bodies/0/shapes", "shapes", "DCI_m",
+                  "shapes are all segments or chains (no area, so no mass) needs a \"mass\""});
 }
 
 // Oracle: docs/scene-format.md's generator parameters, each out of its range.

@@ -22,6 +22,7 @@
 
 #include "tamias2d/io/scene.hpp"
 #include "tamias2d/io/scene_generators.hpp"
+#include "tamias2d/world.hpp"
 
 namespace utf = boost::unit_test;
 using namespace tamias2d;
@@ -337,6 +338,50 @@ BOOST_AUTO_TEST_CASE(a_self_crossing_outline_is_rejected,
 // Oracle: the round trip promised in scene.hpp, parse_scene(scene_to_json(s)) ~ s: a box loads
 // exactly when its written form (a polygon) does, over aspect ratios across the sliver rule's
 // 1e-6 and several angles. The 1e-7 x 1 box loaded and its written form was rejected.
+// Oracle: docs/scene-format.md, Limits: the chains of a scene have at most max_chain_points
+// points in all, counted across entries and bodies; one more is refused at the entry that
+// exceeds the limit, before its points are read. A hand-made Scene beyond the limit is
+// written with its excess chains segment by segment ("chain_segment", not counted), so its
+// written form loads and builds the same world (World::state_hash()).
+BOOST_AUTO_TEST_CASE(chain_points_beyond_the_limit_are_refused, *utf::label("R4")) {
+    const auto chain = [](std::size_t n) {
+        std::string pts;
+        for (std::size_t i = 0; i < n; ++i)
+            pts += (i ? ", [" : "[") + std::to_string(i) + ", " + std::to_string(i % 3) + "]";
+        return R"({"type": "chain", "points": [)" + pts + "]}";
+    };
+    const std::size_t half = max_chain_points / 2;
+    (void)parse_scene(
+        with_bodies(R"({"type": "static", "shapes": [)" + chain(half) + ", " + chain(half) + "]}"));
+    expect_rejected(with_bodies(R"({"type": "static", "shapes": [)" + chain(half) + "]}, " +
+                                R"({"type": "static", "shapes": [)" + chain(half + 1) + "]}"),
+                    "/bodies/1/shapes/0/points", "",
+                    "points.size = " + std::to_string(half + 1) +
+                        ": the scene's chains may have at most " +
+                        std::to_string(max_chain_points) + " points in all");
+
+    Scene s;
+    std::vector<Vec2d> points;
+    for (std::size_t i = 0; i < half + 1; ++i)
+        points.push_back({double(i), double(i % 3)});
+    for (int b = 0; b < 2; ++b) {
+        SceneBody body;
+        body.def.type = BodyType::static_body;
+        body.shapes = chain_shapes(points, b == 1);
+        s.bodies.push_back(body);
+    }
+    const std::string written = scene_to_json(s, -1);
+    BOOST_TEST(written.find(R"({"type":"chain","points")") != std::string::npos);
+    BOOST_TEST(written.find(R"({"type":"chain_segment")") != std::string::npos);
+    const Scene back = parse_scene(written, "written");
+    BOOST_TEST_REQUIRE(back.bodies.size() == 2u);
+    BOOST_TEST(back.bodies[1].shapes.size() == half + 1); // the loop, segment by segment
+    World a(s.world), b(back.world);
+    build_world(s, a);
+    build_world(back, b);
+    BOOST_TEST(a.state_hash() == b.state_hash());
+}
+
 BOOST_AUTO_TEST_CASE(every_box_that_loads_loads_again_from_its_written_form,
                      *utf::label("R4") * utf::label("DCX_shape")) {
     int loaded = 0, rejected = 0;

@@ -2,7 +2,9 @@
 // get (R1, R2, R3), and canonical JSON round-trips.
 #include <boost/test/unit_test.hpp>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <numbers>
 #include <string>
@@ -50,6 +52,57 @@ const char* const full_scene = R"({
       "shapes": [ { "type": "polygon", "points": [[0, 0], [2, 0], [0, 1]] } ] }
   ]
 })";
+
+// Capsules, segments and chains, each key written out (docs/scene-format.md, "Shapes").
+const char* const shapes_scene = R"({
+  "dt": "1/60",
+  "steps": 120,
+  "materials": { "grip": { "friction": 0.9 } },
+  "bodies": [
+    { "name": "ground", "type": "static",
+      "shapes": [ { "type": "chain", "points": [[8, 0], [4, 1], [0, 0], [-4, -1], [-8, 0]],
+                    "material": "grip", "filter": { "category_bits": 2 }, "sensor": false },
+                  { "type": "chain", "points": [[-2, 4], [2, 4], [2, 6], [-2, 6]], "loop": true },
+                  { "type": "segment", "point1": [-6, 3], "point2": [-2, 2.5] },
+                  { "type": "chain_segment", "ghost1": [10, 1], "point1": [10, 0],
+                    "point2": [12, 0], "ghost2": [13, 1] } ] },
+    { "name": "pill", "position": [-5, 5], "bullet": true, "velocity": [30, 0],
+      "shapes": [ { "type": "capsule", "center1": [-0.5, 0], "center2": [0.5, 0.25],
+                    "radius": 0.25, "material": { "density": 2 } } ] },
+    { "name": "rod", "position": [5, 4], "mass": 1.5, "inertia": 0.2,
+      "shapes": [ { "type": "segment", "point1": [-1, 0], "point2": [1, 0] } ] }
+  ]
+})";
+
+/// Bit for bit: -0 and 0 differ (the round trip is promised for the bits).
+bool same_bits(double a, double b) {
+    return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+}
+bool same_bits(Vec2d a, Vec2d b) {
+    return same_bits(a.x, b.x) && same_bits(a.y, b.y);
+}
+
+/// The geometry of a capsule, segment or chain segment, bit for bit.
+bool same_segment_kind(const Geometry& a, const Geometry& b) {
+    if (a.type != b.type)
+        return false;
+    switch (a.type) {
+    case ShapeType::capsule:
+        return same_bits(a.capsule.center1, b.capsule.center1) &&
+               same_bits(a.capsule.center2, b.capsule.center2) &&
+               same_bits(a.capsule.radius, b.capsule.radius);
+    case ShapeType::segment:
+        return same_bits(a.segment.point1, b.segment.point1) &&
+               same_bits(a.segment.point2, b.segment.point2);
+    case ShapeType::chain_segment:
+        return same_bits(a.chain_segment.ghost1, b.chain_segment.ghost1) &&
+               same_bits(a.chain_segment.point1, b.chain_segment.point1) &&
+               same_bits(a.chain_segment.point2, b.chain_segment.point2) &&
+               same_bits(a.chain_segment.ghost2, b.chain_segment.ghost2);
+    default:
+        return false;
+    }
+}
 
 bool same_polygon(const Polygon& a, const Polygon& b, double tol) {
     if (a.count != b.count)
@@ -110,6 +163,7 @@ void check_same(const Scene& a, const Scene& b) {
             BOOST_TEST((x.inertia == y.inertia));
             BOOST_TEST(x.gravity_scale == y.gravity_scale);
             BOOST_TEST(x.fixed_rotation == y.fixed_rotation);
+            BOOST_TEST(x.bullet == y.bullet);
             BOOST_TEST(x.enable_sleep == y.enable_sleep);
             BOOST_TEST(x.awake == y.awake);
             BOOST_TEST((a.bodies[i].loads == b.bodies[i].loads));
@@ -127,6 +181,8 @@ void check_same(const Scene& a, const Scene& b) {
                     BOOST_TEST(p.geometry.circle.radius == q.geometry.circle.radius);
                     BOOST_TEST(p.geometry.circle.center.x == q.geometry.circle.center.x);
                     BOOST_TEST(p.geometry.circle.center.y == q.geometry.circle.center.y);
+                } else if (p.geometry.type != ShapeType::polygon) {
+                    BOOST_TEST(same_segment_kind(p.geometry, q.geometry), "shape " << s);
                 } else {
                     BOOST_TEST(same_polygon(p.geometry.polygon, q.geometry.polygon, 0.0));
                 }
@@ -310,11 +366,114 @@ BOOST_AUTO_TEST_CASE(build_world_is_all_or_nothing, *utf::label("R4") * utf::lab
     BOOST_TEST(world.body_count() == 1u);
 }
 
+// Oracle: the library's own factories (shape_def.hpp): each capsule, segment and chain the
+// file states is the ShapeDef capsule_shape, segment_shape and chain_shapes make from the same
+// numbers, bit for bit (a chain of n points: n - 1 segments, n for a loop); a chain entry's
+// filter and sensor flag reach each of its segments; a chain_segment entry keeps its ghosts.
+BOOST_AUTO_TEST_CASE(capsules_segments_and_chains_reach_the_scene,
+                     *utf::label("R1") * utf::label("R3")) {
+    const Scene s = parse_scene(shapes_scene, "shapes");
+    BOOST_TEST_REQUIRE(s.bodies.size() == 3u);
+    const std::vector<ShapeDef>& ground = s.bodies[0].shapes;
+    BOOST_TEST_REQUIRE(ground.size() == 4u + 4u + 1u + 1u);
+    const Material grip{1.0, 0.0, 0.9};
+    const std::vector<Vec2d> open{{8, 0}, {4, 1}, {0, 0}, {-4, -1}, {-8, 0}};
+    const std::vector<ShapeDef> open_chain = chain_shapes(open, false, grip);
+    const std::vector<Vec2d> box{{-2, 4}, {2, 4}, {2, 6}, {-2, 6}};
+    const std::vector<ShapeDef> loop_chain = chain_shapes(box, true);
+    for (std::size_t k = 0; k < 4; ++k) {
+        BOOST_TEST_CONTEXT("segment " << k) {
+            BOOST_TEST(same_segment_kind(ground[k].geometry, open_chain[k].geometry));
+            BOOST_TEST(ground[k].material.friction == 0.9);
+            BOOST_TEST(ground[k].filter.category_bits == 2u);
+            BOOST_TEST(!ground[k].is_sensor);
+            BOOST_TEST(same_segment_kind(ground[4 + k].geometry, loop_chain[k].geometry));
+            BOOST_TEST((ground[4 + k].filter == Filter{}));
+        }
+    }
+    // The loop's last segment closes it: from the last point back to the first.
+    BOOST_TEST(ground[7].geometry.chain_segment.point1.x == -2.0);
+    BOOST_TEST(ground[7].geometry.chain_segment.point2.y == 4.0);
+    BOOST_TEST(same_segment_kind(ground[8].geometry, segment_shape({-6, 3}, {-2, 2.5}).geometry));
+    const ChainSegment& alone = ground[9].geometry.chain_segment;
+    BOOST_TEST((ground[9].geometry.type == ShapeType::chain_segment));
+    BOOST_TEST(alone.ghost1.x == 10.0);
+    BOOST_TEST(alone.ghost1.y == 1.0);
+    BOOST_TEST(alone.ghost2.x == 13.0);
+
+    const SceneBody& pill = s.bodies[1];
+    BOOST_TEST(pill.def.bullet);
+    BOOST_TEST(!s.bodies[0].def.bullet); // the default
+    BOOST_TEST_REQUIRE(pill.shapes.size() == 1u);
+    BOOST_TEST(same_segment_kind(pill.shapes[0].geometry,
+                                 capsule_shape({-0.5, 0}, {0.5, 0.25}, 0.25).geometry));
+    BOOST_TEST(pill.shapes[0].material.density == 2.0);
+    BOOST_TEST(*s.bodies[2].def.mass == 1.5); // a segment has no mass: the body states one
+}
+
+// Oracle: the same world made through the API (world.hpp): a body with bullet set, a capsule,
+// chains by World::create_chain: build_world gives the same World::state_hash() (every body's
+// state, mass and flags, every shape's geometry and material), so the file means what the API
+// means. The capsule's mass is DD30's, as World computes it.
+BOOST_AUTO_TEST_CASE(capsules_segments_and_chains_reach_the_world,
+                     *utf::label("R1") * utf::label("R2") * utf::label("R3")) {
+    const Scene s = parse_scene(shapes_scene, "shapes");
+    World from_file(s.world);
+    const std::vector<BodyId> ids = build_world(s, from_file);
+
+    World by_hand(s.world);
+    BodyDef ground_def;
+    ground_def.type = BodyType::static_body;
+    ground_def.name = "ground";
+    const BodyId ground = by_hand.create_body(ground_def);
+    std::vector<ShapeDef> open =
+        chain_shapes(std::vector<Vec2d>{{8, 0}, {4, 1}, {0, 0}, {-4, -1}, {-8, 0}}, false,
+                     Material{1.0, 0.0, 0.9});
+    for (ShapeDef& d : open)
+        d.filter.category_bits = 2;
+    by_hand.create_chain(ground, open);
+    by_hand.create_chain(ground,
+                         chain_shapes(std::vector<Vec2d>{{-2, 4}, {2, 4}, {2, 6}, {-2, 6}}, true));
+    by_hand.create_shape(ground, segment_shape({-6, 3}, {-2, 2.5}));
+    ShapeDef alone;
+    alone.geometry.type = ShapeType::chain_segment;
+    alone.geometry.chain_segment = {{10, 1}, {10, 0}, {12, 0}, {13, 1}};
+    by_hand.create_shape(ground, alone);
+    BodyDef pill_def;
+    pill_def.name = "pill";
+    pill_def.position = {-5, 5};
+    pill_def.linear_velocity = {30, 0};
+    pill_def.bullet = true;
+    const BodyId pill = by_hand.create_body(pill_def);
+    by_hand.create_shape(pill, capsule_shape({-0.5, 0}, {0.5, 0.25}, 0.25, Material{2.0}));
+    BodyDef rod_def;
+    rod_def.name = "rod";
+    rod_def.position = {5, 4};
+    rod_def.mass = 1.5;
+    rod_def.inertia = 0.2;
+    by_hand.create_shape(by_hand.create_body(rod_def), segment_shape({-1, 0}, {1, 0}));
+
+    BOOST_TEST(from_file.state_hash() == by_hand.state_hash());
+    BOOST_TEST_REQUIRE(ids.size() == 3u);
+    BOOST_TEST(from_file.shapes(ids[0]).size() == 10u);
+    BOOST_TEST(from_file.mass(ids[1]) == by_hand.mass(pill));
+    // DD30 by hand: rectangle 2 r l plus disc pi r^2, l = |(1, 0.25)|, density 2.
+    const double l = std::hypot(1.0, 0.25);
+    BOOST_TEST(from_file.mass(ids[1]) == 2.0 * (2 * 0.25 * l + std::numbers::pi * 0.0625),
+               boost::test_tools::tolerance(1e-14));
+    for (int i = 0; i < 30; ++i) {
+        from_file.step(s.dt);
+        by_hand.step(s.dt);
+    }
+    BOOST_TEST(from_file.state_hash() == by_hand.state_hash());
+}
+
 // Oracle: the documented round-trip property: parse(scene_to_json(s)) reproduces s (values
 // bit for bit, polygons up to the starting vertex) and scene_to_json is then a fixed point.
 BOOST_AUTO_TEST_CASE(canonical_json_round_trips, *utf::label("R1") * utf::label("R2")) {
     std::vector<std::pair<std::string, Scene>> scenes;
     scenes.emplace_back("full", parse_scene(full_scene, "full"));
+    scenes.emplace_back("shapes", parse_scene(shapes_scene, "shapes"));
     for (const char* name : {"two_bodies", "free_fall", "projectile", "spinning", "collision_im3",
                              "elastic2", "pyramid20", "rain", "damped", "pendulum", "chain",
                              "double_pendulum", "bridge", "car", "ragdoll", "machines"}) {
@@ -327,6 +486,45 @@ BOOST_AUTO_TEST_CASE(canonical_json_round_trips, *utf::label("R1") * utf::label(
             const std::string once = scene_to_json(s);
             const Scene back = parse_scene(once, name + " (canonical)");
             check_same(s, back);
+            BOOST_TEST(scene_to_json(back) == once);
+        }
+    }
+}
+
+/// How often `needle` occurs in `text`.
+std::size_t occurrences(const std::string& text, const std::string& needle) {
+    std::size_t n = 0;
+    for (std::size_t at = text.find(needle); at != std::string::npos;
+         at = text.find(needle, at + 1))
+        ++n;
+    return n;
+}
+
+// Oracle: docs/scene-format.md, "Chains in the written form": a chain read from a file is
+// written back as one "chain" entry with its points; a chain segment that is not exactly
+// the segment chain_shapes makes (here an open end's ghost moved, and a lone segment with its
+// own ghosts) is written with its ghosts, as a "chain_segment" entry, run and all. Either way
+// the written form reads back bit for bit (-0 included).
+BOOST_AUTO_TEST_CASE(chains_are_written_as_chains, *utf::label("R1")) {
+    const std::string written = scene_to_json(parse_scene(shapes_scene, "shapes"));
+    BOOST_TEST(occurrences(written, R"("type": "chain")") == 2u);
+    BOOST_TEST(occurrences(written, R"("type": "chain_segment")") == 1u);
+    BOOST_TEST(occurrences(written, R"("loop": true)") == 1u);
+
+    Scene s = parse_scene(R"({"dt": 0.01, "steps": 1, "bodies": [{"type": "static", "shapes": [
+        {"type": "chain", "points": [[-0.0, 0], [1, -0.0], [2, 0.5], [3, 0]]}]}]})",
+                          "signed zeros");
+    BOOST_TEST(std::signbit(s.bodies[0].shapes[0].geometry.chain_segment.point1.x));
+    Scene moved = s;
+    moved.bodies[0].shapes[0].geometry.chain_segment.ghost1 = {-1.0, 0.0}; // not a right angle
+    for (const auto& [name, scene] : {std::pair{"as read", s}, std::pair{"ghost moved", moved}}) {
+        BOOST_TEST_CONTEXT(name) {
+            const std::string once = scene_to_json(scene);
+            const bool as_read = std::string(name) == "as read";
+            BOOST_TEST(occurrences(once, R"("type": "chain")") == (as_read ? 1u : 0u));
+            BOOST_TEST(occurrences(once, R"("type": "chain_segment")") == (as_read ? 0u : 3u));
+            const Scene back = parse_scene(once, "written");
+            check_same(scene, back);
             BOOST_TEST(scene_to_json(back) == once);
         }
     }

@@ -129,6 +129,13 @@ struct SceneError : std::runtime_error {
 /// generators; the functions below take a larger limit where one is meant.
 inline constexpr std::size_t max_scene_bytes = std::size_t{64} << 20;
 
+/// The most points the "chain" shapes of one scene may have in all (docs/scene-format.md,
+/// "Limits"). A point is a few bytes of text but a shape in the Scene and in the dry run's World
+/// (about 2 kB together), and the time to attach shapes to one body grows with the square of
+/// their number (each is appended at the end of the body's list): 10 000 points load in a
+/// quarter of a second, in 30 MB.
+inline constexpr std::size_t max_chain_points = 10000;
+
 /// Reads and parses a scene file (origin in messages: the path as given). The file is read in
 /// chunks and refused as soon as it exceeds `max_bytes`, so that an endless source (/dev/zero,
 /// a pipe) is refused promptly and with bounded memory.
@@ -154,9 +161,11 @@ void validate_scene(const Scene& scene, std::string_view origin = "<scene>");
 std::vector<BodyId> build_world(const Scene& scene, World& world);
 
 /// The scene as canonical JSON: generators expanded, materials inlined, boxes written as
-/// polygons. parse_scene(scene_to_json(s)) reproduces s (loads, materials and geometry): a
-/// box is accepted exactly when its polygon is, both by the one sliver rule (DCX_shape). (A text
-/// beyond max_scene_bytes needs a larger limit passed to parse_scene.)
+/// polygons, the segments of a chain as one "chain" (each segment that is not exactly the
+/// segment of a chain through its neighbours, or beyond max_chain_points, as a "chain_segment"
+/// with its ghosts). parse_scene(scene_to_json(s)) reproduces s (loads, materials and
+/// geometry, bit for bit): a box is accepted exactly when its polygon is, both by the one sliver
+/// rule (DCX_shape). (A text beyond max_scene_bytes needs a larger limit passed to parse_scene.)
 std::string scene_to_json(const Scene& scene, int indent = 2);
 
 } // namespace io

@@ -19,6 +19,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tamias2d/errors.hpp"
+#include "tamias2d/io/chain_runs.hpp"
 #include "tamias2d/io/scene_generators.hpp"
 #include "tamias2d/validation.hpp"
 #include "tamias2d/world.hpp"
@@ -172,8 +173,9 @@ std::string child(const std::string& ptr, std::size_t index) {
 struct Ctx {
     std::string origin;
     std::map<std::string, Material> materials;
-    std::optional<Material> default_material; // materials["default"]
-    std::map<std::string, std::string> names; // body name -> pointer of first use
+    std::optional<Material> default_material;    // materials["default"]
+    std::map<std::string, std::string> names;    // body name -> pointer of first use
+    std::size_t chain_budget = max_chain_points; // chain points the scene may still have
 };
 
 [[noreturn]] void fail(const Ctx& ctx, const std::string& ptr, std::string field,
@@ -568,6 +570,23 @@ void attach_loads(SceneBody& b) {
 // Shapes and bodies
 // ---------------------------------------------------------------------------------------------
 
+/// The scene key a library field of a capsule, segment or chain segment names
+/// ("capsule.center1.x" -> "center1.x"), "" for other fields. A length of zero means the two
+/// ends coincide: it is reported at the second end (a ghost's, at the ghost).
+std::string segment_key(const std::string& field) {
+    for (const std::string_view kind : {"capsule.", "segment.", "chain_segment."}) {
+        if (!field.starts_with(kind))
+            continue;
+        std::string key = field.substr(kind.size());
+        if (key == "length")
+            return kind == "capsule." ? "center2" : "point2";
+        if (key.ends_with(".length"))
+            key.resize(key.size() - 7);
+        return key;
+    }
+    return {};
+}
+
 /// The library's check of a shape read at `ptr` (DCX_shape, DCX_range): a polygon's defects,
 /// a box's included, are reported at `polygon_ptr`, the others at their key.
 ShapeDef checked(const Ctx& ctx, const std::string& ptr, const std::string& polygon_ptr,
@@ -580,9 +599,88 @@ ShapeDef checked(const Ctx& ctx, const std::string& ptr, const std::string& poly
         std::string key = e.field;
         if (key.starts_with("shape."))
             key.erase(0, 6);
+        else if (std::string k = segment_key(key); !k.empty())
+            key = std::move(k);
         fail(ctx, field_pointer(ptr, key), e.field, e.what(), e.constraint);
     }
     return shape;
+}
+
+/// Points [x, y] at `pp` (a polygon's or a chain's), each coordinate within the supported range
+/// (DCX_range) before any product of them is formed.
+std::vector<Vec2d> read_points(const Ctx& ctx, const ojson& pts, const std::string& pp) {
+    std::vector<Vec2d> points;
+    points.reserve(pts.size());
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+        const std::string at = child(pp, i);
+        points.push_back(as_vec2(ctx, pts[i], at, "points"));
+        for (const std::size_t k : {std::size_t{0}, std::size_t{1}}) {
+            try {
+                require_within(k == 0 ? "points.x" : "points.y",
+                               k == 0 ? points.back().x : points.back().y, supported::input_max,
+                               "m");
+            } catch (const ValidationError& e) {
+                fail(ctx, child(at, k), e.field, e.what(), e.constraint);
+            }
+        }
+    }
+    return points;
+}
+
+/// The point of a chain (at `pp`, n points) that a library error about its segment k names:
+/// the segment runs from point k to point k + 1, its ghosts are the points before and after
+/// it, or at an open end, made from the end point.
+std::string chain_point(const std::string& pp, std::size_t k, std::size_t n, bool loop,
+                        const std::string& field) {
+    const std::string key = segment_key(field);
+    const std::size_t edges = loop ? n : n - 1;
+    std::size_t at = k;
+    if (key.starts_with("point2") || key.starts_with("length"))
+        at = (k + 1) % n;
+    else if (key.starts_with("ghost1"))
+        at = loop || k > 0 ? (k + n - 1) % n : k;
+    else if (key.starts_with("ghost2"))
+        at = loop || k + 1 < edges ? (k + 2) % n : k + 1;
+    return child(pp, at);
+}
+
+/// A "chain": its one-sided segments (chain_shapes), the library's errors reported at the
+/// point they concern. `budget` is what remains of the scene's max_chain_points.
+std::vector<ShapeDef> parse_chain(const Ctx& ctx, const ojson& v, const std::string& ptr,
+                                  const Material& material, std::size_t& budget) {
+    const ojson& pts = require_key(ctx, v, ptr, "points", "a chain shape");
+    const std::string pp = child(ptr, "points");
+    if (!pts.is_array())
+        fail_type(ctx, pp, "points", pts, "an array of [x, y] points");
+    if (pts.size() > budget) // before reading them: the limit bounds the memory a load takes
+        fail_value(ctx, pp, "points.size", double(pts.size()),
+                   "the scene's chains may have at most " + std::to_string(max_chain_points) +
+                       " points in all (docs/scene-format.md, Limits)",
+                   format_rule);
+    budget -= pts.size();
+    const std::vector<Vec2d> points = read_points(ctx, pts, pp);
+    bool loop = false;
+    if (const ojson* l = find(v, "loop"))
+        loop = as_bool(ctx, *l, child(ptr, "loop"), "loop");
+    std::vector<ShapeDef> segments;
+    try {
+        segments = chain_shapes(points, loop, material);
+    } catch (const ValidationError& e) {
+        // "chain.points.size", or "chain.points[i]..." for point i (which repeats point i - 1).
+        std::string at = pp;
+        if (const auto open = e.field.find('['); open != std::string::npos)
+            at = child(pp, std::stoul(e.field.substr(open + 1)));
+        fail(ctx, at, e.field, e.what(), e.constraint);
+    }
+    for (std::size_t k = 0; k < segments.size(); ++k) {
+        try {
+            validate(segments[k]);
+        } catch (const ValidationError& e) {
+            fail(ctx, chain_point(pp, k, points.size(), loop, e.field), e.field, e.what(),
+                 e.constraint);
+        }
+    }
+    return segments;
 }
 
 /// DCX_shape: a polygon's points, read in order as a closed outline, must not cross: a crossing
@@ -632,15 +730,23 @@ void parse_filter_and_sensor(const Ctx& ctx, const ojson& v, const std::string& 
         def.is_sensor = as_bool(ctx, *s, child(ptr, "sensor"), "sensor");
 }
 
-ShapeDef parse_shape_geometry(const Ctx& ctx, const ojson& v, const std::string& ptr);
+std::vector<ShapeDef> parse_shape_geometry(const Ctx& ctx, const ojson& v, const std::string& ptr,
+                                           std::size_t& chain_budget);
 
-ShapeDef parse_shape(const Ctx& ctx, const ojson& v, const std::string& ptr) {
-    ShapeDef def = parse_shape_geometry(ctx, v, ptr);
-    parse_filter_and_sensor(ctx, v, ptr, def);
-    return def;
+/// A "shapes" entry: one shape, or a chain's segments, each with the entry's filter and sensor.
+std::vector<ShapeDef> parse_shape(Ctx& ctx, const ojson& v, const std::string& ptr) {
+    std::vector<ShapeDef> defs = parse_shape_geometry(ctx, v, ptr, ctx.chain_budget);
+    ShapeDef common;
+    parse_filter_and_sensor(ctx, v, ptr, common);
+    for (ShapeDef& def : defs) {
+        def.filter = common.filter;
+        def.is_sensor = common.is_sensor;
+    }
+    return defs;
 }
 
-ShapeDef parse_shape_geometry(const Ctx& ctx, const ojson& v, const std::string& ptr) {
+std::vector<ShapeDef> parse_shape_geometry(const Ctx& ctx, const ojson& v, const std::string& ptr,
+                                           std::size_t& chain_budget) {
     require_object(ctx, v, ptr, "shape", "a shape object {\"type\": ...}");
     const std::string type =
         as_string(ctx, require_key(ctx, v, ptr, "type", "a shape"), child(ptr, "type"), "type");
@@ -648,6 +754,9 @@ ShapeDef parse_shape_geometry(const Ctx& ctx, const ojson& v, const std::string&
     const auto read_material = [&] {
         if (const ojson* m = find(v, "material"))
             material = parse_material_ref(ctx, *m, child(ptr, "material"), material);
+    };
+    const auto req_vec2 = [&](std::string_view key, const std::string& what) {
+        return as_vec2(ctx, require_key(ctx, v, ptr, key, what), child(ptr, key), std::string(key));
     };
     try {
         if (type == "box") {
@@ -662,7 +771,7 @@ ShapeDef parse_shape_geometry(const Ctx& ctx, const ojson& v, const std::string&
             opt_vec2(ctx, v, ptr, "center", center);
             opt_number(ctx, v, ptr, "angle", angle);
             read_material();
-            return checked(ctx, ptr, ptr, box_shape(w, h, material, center, angle));
+            return {checked(ctx, ptr, ptr, box_shape(w, h, material, center, angle))};
         }
         if (type == "circle") {
             check_keys(ctx, v, ptr, {"type", "radius", "center", "material", "filter", "sensor"},
@@ -671,7 +780,7 @@ ShapeDef parse_shape_geometry(const Ctx& ctx, const ojson& v, const std::string&
             Vec2d center{};
             opt_vec2(ctx, v, ptr, "center", center);
             read_material();
-            return checked(ctx, ptr, ptr, circle_shape(r, material, center));
+            return {checked(ctx, ptr, ptr, circle_shape(r, material, center))};
         }
         if (type == "polygon") {
             check_keys(ctx, v, ptr, {"type", "points", "material", "filter", "sensor"},
@@ -684,34 +793,71 @@ ShapeDef parse_shape_geometry(const Ctx& ctx, const ojson& v, const std::string&
                 fail_value(ctx, pp, "points.size", double(pts.size()),
                            "must be >= 3 (and at most 64 points, whose hull has <= 8)",
                            "DCX_shape");
-            std::vector<Vec2d> points;
-            for (std::size_t i = 0; i < pts.size(); ++i) {
-                const std::string at = child(pp, i);
-                points.push_back(as_vec2(ctx, pts[i], at, "points"));
-                for (const std::size_t k : {std::size_t{0}, std::size_t{1}}) {
-                    try { // DCX_range, before any product of them
-                        require_within(k == 0 ? "points.x" : "points.y",
-                                       k == 0 ? points.back().x : points.back().y,
-                                       supported::input_max, "m");
-                    } catch (const ValidationError& e) {
-                        fail(ctx, child(at, k), e.field, e.what(), e.constraint);
-                    }
-                }
-            }
+            const std::vector<Vec2d> points = read_points(ctx, pts, pp);
             check_outline(ctx, pp, points);
             read_material();
             try {
-                return checked(ctx, ptr, pp, polygon_shape(points, material));
+                return {checked(ctx, ptr, pp, polygon_shape(points, material))};
             } catch (const ValidationError& e) {
                 fail_from(ctx, pp, e, false);
             }
+        }
+        if (type == "capsule") {
+            check_keys(ctx, v, ptr,
+                       {"type", "center1", "center2", "radius", "material", "filter", "sensor"},
+                       "a capsule shape");
+            const Vec2d c1 = req_vec2("center1", "a capsule shape");
+            const Vec2d c2 = req_vec2("center2", "a capsule shape");
+            const double r = req_length(ctx, v, ptr, "radius", "a capsule shape");
+            read_material();
+            // Built unchecked so that `checked` reports a defect at its key (capsule_shape
+            // would throw first, naming no key of the file).
+            ShapeDef def{};
+            def.geometry.type = ShapeType::capsule;
+            def.geometry.capsule = {c1, c2, r};
+            def.material = material;
+            return {checked(ctx, ptr, ptr, def)};
+        }
+        if (type == "segment") {
+            check_keys(ctx, v, ptr, {"type", "point1", "point2", "material", "filter", "sensor"},
+                       "a segment shape");
+            ShapeDef def{};
+            def.geometry.type = ShapeType::segment;
+            def.geometry.segment = {req_vec2("point1", "a segment shape"),
+                                    req_vec2("point2", "a segment shape")};
+            read_material();
+            def.material = material;
+            return {checked(ctx, ptr, ptr, def)};
+        }
+        if (type == "chain") {
+            check_keys(ctx, v, ptr, {"type", "points", "loop", "material", "filter", "sensor"},
+                       "a chain shape");
+            read_material();
+            return parse_chain(ctx, v, ptr, material, chain_budget);
+        }
+        if (type == "chain_segment") {
+            check_keys(
+                ctx, v, ptr,
+                {"type", "ghost1", "point1", "point2", "ghost2", "material", "filter", "sensor"},
+                "a chain_segment shape");
+            ShapeDef def{};
+            def.geometry.type = ShapeType::chain_segment;
+            def.geometry.chain_segment = {req_vec2("ghost1", "a chain_segment shape"),
+                                          req_vec2("point1", "a chain_segment shape"),
+                                          req_vec2("point2", "a chain_segment shape"),
+                                          req_vec2("ghost2", "a chain_segment shape")};
+            read_material();
+            def.material = material;
+            return {checked(ctx, ptr, ptr, def)};
         }
     } catch (const ValidationError& e) {
         // The library's own shape checks (after ours): reported at the shape.
         fail_from(ctx, ptr, e, false);
     }
     fail(ctx, child(ptr, "type"), "type",
-         "unknown shape type " + quote(type) + "; allowed: box, circle, polygon", format_rule);
+         "unknown shape type " + quote(type) +
+             "; allowed: box, circle, polygon, capsule, segment, chain, chain_segment",
+         format_rule);
 }
 
 BodyType parse_body_type(const Ctx& ctx, const ojson& v, const std::string& ptr) {
@@ -886,7 +1032,7 @@ SceneBody parse_body(Ctx& ctx, const ojson& v, const std::string& ptr) {
     check_keys(ctx, v, ptr,
                {"name", "type", "position", "angle", "velocity", "angular_velocity", "mass",
                 "inertia", "gravity_scale", "linear_damping", "angular_damping", "fixed_rotation",
-                "enable_sleep", "awake", "force", "torque", "loads", "shapes"},
+                "bullet", "enable_sleep", "awake", "force", "torque", "loads", "shapes"},
                "a body");
     SceneBody b;
     b.source = ptr;
@@ -904,6 +1050,8 @@ SceneBody parse_body(Ctx& ctx, const ojson& v, const std::string& ptr) {
     opt_number(ctx, v, ptr, "gravity_scale", d.gravity_scale);
     if (const ojson* f = find(v, "fixed_rotation"))
         d.fixed_rotation = as_bool(ctx, *f, child(ptr, "fixed_rotation"), "fixed_rotation");
+    if (const ojson* f = find(v, "bullet")) // DD29
+        d.bullet = as_bool(ctx, *f, child(ptr, "bullet"), "bullet");
     if (const ojson* e = find(v, "enable_sleep"))
         d.enable_sleep = as_bool(ctx, *e, child(ptr, "enable_sleep"), "enable_sleep");
     if (const ojson* a = find(v, "awake"))
@@ -936,11 +1084,23 @@ SceneBody parse_body(Ctx& ctx, const ojson& v, const std::string& ptr) {
         if (!s->is_array())
             fail_type(ctx, sp, "shapes", *s, "an array of shapes");
         for (std::size_t i = 0; i < s->size(); ++i)
-            b.shapes.push_back(parse_shape(ctx, (*s)[i], child(sp, i)));
+            for (ShapeDef& def : parse_shape(ctx, (*s)[i], child(sp, i)))
+                b.shapes.push_back(std::move(def));
     }
     if (d.type == BodyType::dynamic && b.shapes.empty() && !d.mass)
         fail(ctx, child(ptr, "shapes"), "shapes",
              "a dynamic body needs at least one shape or a \"mass\" (DCI_m)", "DCI_m");
+    // Segments and chains have no area: alone they would leave the library's arbitrary 1 kg.
+    const auto has_area = [](const ShapeDef& def) {
+        const ShapeType t = def.geometry.type;
+        return t == ShapeType::circle || t == ShapeType::polygon || t == ShapeType::capsule;
+    };
+    if (d.type == BodyType::dynamic && !d.mass &&
+        !std::any_of(b.shapes.begin(), b.shapes.end(), has_area))
+        fail(ctx, child(ptr, "shapes"), "shapes",
+             "a dynamic body whose shapes are all segments or chains (no area, so no mass) "
+             "needs a \"mass\" (DCI_m)",
+             "DCI_m");
     check_as_library(ctx, ptr, "body.", [&] { validate(d); }); // DCX_range, at the key
     claim_name(ctx, d.name, child(ptr, "name"));
     attach_loads(b);
@@ -1541,6 +1701,36 @@ const char* body_type_name(BodyType t) {
     return "dynamic";
 }
 
+/// A shape's geometry keys; a chain segment alone, with its ghosts.
+ojson geometry_json(const Geometry& g) {
+    switch (g.type) {
+    case ShapeType::circle:
+        return {{"type", "circle"}, {"radius", g.circle.radius}, {"center", vec(g.circle.center)}};
+    case ShapeType::polygon: {
+        ojson pts = ojson::array();
+        for (int k = 0; k < g.polygon.count; ++k)
+            pts.push_back(vec(g.polygon.vertices[std::size_t(k)]));
+        return {{"type", "polygon"}, {"points", std::move(pts)}};
+    }
+    case ShapeType::capsule:
+        return {{"type", "capsule"},
+                {"center1", vec(g.capsule.center1)},
+                {"center2", vec(g.capsule.center2)},
+                {"radius", g.capsule.radius}};
+    case ShapeType::segment:
+        return {{"type", "segment"},
+                {"point1", vec(g.segment.point1)},
+                {"point2", vec(g.segment.point2)}};
+    case ShapeType::chain_segment:
+        break;
+    }
+    return {{"type", "chain_segment"},
+            {"ghost1", vec(g.chain_segment.ghost1)},
+            {"point1", vec(g.chain_segment.point1)},
+            {"point2", vec(g.chain_segment.point2)},
+            {"ghost2", vec(g.chain_segment.ghost2)}};
+}
+
 } // namespace
 
 std::string scene_to_json(const Scene& scene, int indent) {
@@ -1572,6 +1762,8 @@ std::string scene_to_json(const Scene& scene, int indent) {
         j["materials"] = std::move(mats);
     }
     ojson bodies = ojson::array();
+    // Chains beyond the limit parse_scene sets are written segment by segment.
+    std::size_t chain_budget = max_chain_points;
     for (const SceneBody& b : scene.bodies) {
         const BodyDef& d = b.def;
         ojson o = ojson::object();
@@ -1590,6 +1782,8 @@ std::string scene_to_json(const Scene& scene, int indent) {
         o["linear_damping"] = d.linear_damping;
         o["angular_damping"] = d.angular_damping;
         o["fixed_rotation"] = d.fixed_rotation;
+        if (d.bullet) // (left out when false, so scenes without bullets write as before)
+            o["bullet"] = true;
         o["enable_sleep"] = d.enable_sleep;
         o["awake"] = d.awake;
         o["force"] = vec(d.force);
@@ -1605,19 +1799,8 @@ std::string scene_to_json(const Scene& scene, int indent) {
             o["loads"] = std::move(l);
         }
         ojson shapes = ojson::array();
-        for (const ShapeDef& s : b.shapes) {
-            ojson sj = ojson::object();
-            if (s.geometry.type == ShapeType::circle) {
-                sj["type"] = "circle";
-                sj["radius"] = s.geometry.circle.radius;
-                sj["center"] = vec(s.geometry.circle.center);
-            } else {
-                sj["type"] = "polygon";
-                ojson pts = ojson::array();
-                for (int k = 0; k < s.geometry.polygon.count; ++k)
-                    pts.push_back(vec(s.geometry.polygon.vertices[std::size_t(k)]));
-                sj["points"] = std::move(pts);
-            }
+        // An entry: its geometry's keys, then the keys every shape has.
+        const auto add = [&shapes](ojson sj, const ShapeDef& s) {
             sj["material"] = material_json(s.material);
             if (!(s.filter == Filter{})) // (the default filter is left out)
                 sj["filter"] = {{"category_bits", s.filter.category_bits},
@@ -1626,6 +1809,27 @@ std::string scene_to_json(const Scene& scene, int indent) {
             if (s.is_sensor)
                 sj["sensor"] = true;
             shapes.push_back(std::move(sj));
+        };
+        for (std::size_t i = 0; i < b.shapes.size();) {
+            const ShapeDef& s = b.shapes[i];
+            const Geometry& g = s.geometry;
+            if (g.type != ShapeType::chain_segment) {
+                add(geometry_json(g), s);
+                ++i;
+                continue;
+            }
+            const ChainRun run = chain_run_at(b.shapes, i);
+            if (run.reproduced && run.points.size() <= chain_budget) {
+                ojson pts = ojson::array();
+                for (const Vec2d p : run.points)
+                    pts.push_back(vec(p));
+                add({{"type", "chain"}, {"points", std::move(pts)}, {"loop", run.loop}}, s);
+                chain_budget -= run.points.size();
+            } else {
+                for (std::size_t k = i; k < i + run.count; ++k)
+                    add(geometry_json(b.shapes[k].geometry), b.shapes[k]);
+            }
+            i += run.count;
         }
         o["shapes"] = std::move(shapes);
         bodies.push_back(std::move(o));
