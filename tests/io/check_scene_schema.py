@@ -52,6 +52,9 @@ SCHEMA_REJECTS = {
     "rain_negative_width.json": ("/bodies/0/container/width", "exclusiveMinimum"),
     "control_char_key.json": ("", "additionalProperties"),
     "rain_seed_2_63.json": ("/bodies/0/seed", "maximum"),
+    "chain_one_point.json": ("/bodies/0/shapes/0/points", "minItems"),
+    "capsule_negative_radius.json": ("/bodies/0/shapes/0/radius", "exclusiveMinimum"),
+    "segment_only_dynamic.json": ("/bodies/0/shapes", "contains"),
 }
 
 # Malformed scenes left to the loader, and why a JSON Schema cannot detect them.
@@ -87,6 +90,8 @@ LOADER_ONLY = {
     "deep_nesting.json": "nesting deeper than 128 levels: JSON Schema has no depth keyword (it "
     "rejects the array at /bodies/0 by its type, not where the loader stops)",
     "nul_after_scene.json": "not JSON (a NUL byte after the document): no schema runs",
+    "zero_length_segment.json": "whether a segment's two ends coincide is geometry (DCX_shape): "
+    "a schema sees each point, not the distance between them",
 }
 
 # Inline variants: name -> (scene, expected (pointer, keyword) or None for "accepted").
@@ -119,6 +124,31 @@ INLINE = {
         ("/bodies/0/container", "additionalProperties")),
     "dynamic body without shape or mass": (
         {"dt": 0.1, "steps": 1, "bodies": [{"name": "a"}]}, ("/bodies/0", "required")),
+    "a loop of two points": (
+        {"dt": 0.1, "steps": 1, "bodies": [{"type": "static", "shapes": [
+            {"type": "chain", "points": [[0, 0], [1, 0]], "loop": True}]}]},
+        ("/bodies/0/shapes/0/points", "minItems")),
+    "unknown key in a chain": (
+        {"dt": 0.1, "steps": 1, "bodies": [{"type": "static", "shapes": [
+            {"type": "chain", "points": [[0, 0], [1, 0]], "closed": True}]}]},
+        ("/bodies/0/shapes/0", "additionalProperties")),
+    "bullet not a boolean": (
+        {"dt": 0.1, "steps": 1, "bodies": [{"bullet": 1, "shapes": [_SHAPE]}]},
+        ("/bodies/0/bullet", "type")),
+    "accepted: every shape kind, a bullet, a dynamic body of a segment with a mass": (
+        {"dt": 0.1, "steps": 1,
+         "bodies": [{"type": "static", "shapes": [
+             {"type": "chain", "points": [[4, 0], [0, 0], [-4, 1]]},
+             {"type": "chain", "points": [[0, 0], [1, 0], [0, 1]], "loop": True,
+              "material": {"friction": 0.5}, "filter": {"mask_bits": 3}},
+             {"type": "chain_segment", "ghost1": [-1, 0], "point1": [0, 0], "point2": [1, 0],
+              "ghost2": [2, 0]},
+             {"type": "segment", "point1": [0, 2], "point2": [3, 2], "sensor": True}]},
+                    {"bullet": True, "shapes": [
+                        {"type": "capsule", "center1": [0, 0], "center2": [1, 0], "radius": 0.2},
+                        {"type": "segment", "point1": [0, 0], "point2": [1, 1]}]},
+                    {"mass": 1, "shapes": [{"type": "segment", "point1": [0, 0], "point2": [1, 0]}]}]},
+        None),
     "dt fraction string with a typo": (
         {"dt": "1:60", "steps": 1, "bodies": []}, ("/dt", "pattern")),
     "accepted: static body without shapes, dt \"-1/-60\", steps 10.0, constant load number": (
