@@ -205,19 +205,43 @@ Recording::Recording(const io::Scene& scene, const World& world, std::vector<Bod
         for (const ShapeDef& shape : body.shapes) {
             const Geometry& g = shape.geometry;
             json item;
-            if (g.type == ShapeType::circle) {
+            // The farthest point of the shape from the centre of mass: of a disc about `c`.
+            const auto reach = [&](Vec2d c, double r) {
+                radius_[i] = std::max(radius_[i], std::hypot(c.x - lc.x, c.y - lc.y) + r);
+            };
+            const auto ends = [](Vec2d a, Vec2d b) { return json::array({a.x, a.y, b.x, b.y}); };
+            switch (g.type) {
+            case ShapeType::circle:
                 item = {{"c", pair(g.circle.center)}, {"r", g.circle.radius}};
-                const Vec2d d = g.circle.center - lc;
-                radius_[i] = std::max(radius_[i], std::hypot(d.x, d.y) + g.circle.radius);
-            } else {
+                reach(g.circle.center, g.circle.radius);
+                break;
+            case ShapeType::polygon: {
                 json points = json::array();
                 for (int k = 0; k < g.polygon.count; ++k) {
                     const Vec2d v = g.polygon.vertices[static_cast<std::size_t>(k)];
                     points.push_back(v.x);
                     points.push_back(v.y);
-                    radius_[i] = std::max(radius_[i], std::hypot(v.x - lc.x, v.y - lc.y));
+                    reach(v, 0.0);
                 }
                 item = {{"p", std::move(points)}};
+                break;
+            }
+            case ShapeType::capsule:
+                item = {{"cap", ends(g.capsule.center1, g.capsule.center2)},
+                        {"r", g.capsule.radius}};
+                reach(g.capsule.center1, g.capsule.radius);
+                reach(g.capsule.center2, g.capsule.radius);
+                break;
+            case ShapeType::segment:
+                item = {{"seg", ends(g.segment.point1, g.segment.point2)}};
+                reach(g.segment.point1, 0.0);
+                reach(g.segment.point2, 0.0);
+                break;
+            case ShapeType::chain_segment: // its ghosts only matter to collisions
+                item = {{"edge", ends(g.chain_segment.point1, g.chain_segment.point2)}};
+                reach(g.chain_segment.point1, 0.0);
+                reach(g.chain_segment.point2, 0.0);
+                break;
             }
             const auto [it, added] = geom_index.try_emplace(item.dump(), geoms.size());
             if (added)

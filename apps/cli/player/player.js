@@ -129,14 +129,20 @@
     // centre of mass holding every shape (for culling and picking).
     const FILLS = ['#f2b36b', '#8fc1e3', '#9fd6a4', '#e8a0a0', '#c5a8e0', '#e6d27a'];
     const STROKES = ['#a8692a', '#3f7ca6', '#4f9256', '#a85353', '#7d5aa3', '#9c8a2e'];
+    // Each geometry's kind, from its keys: circle {c, r}, polygon {p}, capsule {cap: ends, r},
+    // two-sided segment {seg: ends}, one-sided chain edge {edge: ends}; ends are [x1, y1, x2, y2].
+    for (const g of D.geoms)
+      g.kind = g.p ? 'polygon' : g.cap ? 'capsule' : g.seg ? 'segment' : g.edge ? 'edge' : 'circle';
     bodies = D.bodies.map((b, i) => {
       let radius = 0;
+      const reach = (x, y, r) => { radius = Math.max(radius, Math.hypot(x - b.lc[0], y - b.lc[1]) + r); };
       for (const g of b.shapes.map((s) => D.geoms[s])) {
-        if (g.r !== undefined) {
-          radius = Math.max(radius, Math.hypot(g.c[0] - b.lc[0], g.c[1] - b.lc[1]) + g.r);
-        } else {
-          for (let k = 0; k < g.p.length; k += 2)
-            radius = Math.max(radius, Math.hypot(g.p[k] - b.lc[0], g.p[k + 1] - b.lc[1]));
+        if (g.kind === 'circle') reach(g.c[0], g.c[1], g.r);
+        else if (g.kind === 'polygon') for (let k = 0; k < g.p.length; k += 2) reach(g.p[k], g.p[k + 1], 0);
+        else {
+          const e = ends(g), r = g.kind === 'capsule' ? g.r : 0;
+          reach(e[0], e[1], r);
+          reach(e[2], e[3], r);
         }
       }
       const group = b.type === 'static' ? 'static' : b.type === 'kinematic' ? 'kinematic' : i % FILLS.length;
@@ -234,13 +240,25 @@
     }
 
     // --- drawing --------------------------------------------------------------------------
-    function addBodyPath(f, b, p) {
+    // The shapes with area, outlined (lines: also the segments and chain edges, for a highlight).
+    function addBodyPath(f, b, p, lines) {
       for (const g of bodies[b].geoms) {
-        if (g.r !== undefined) {
+        if (g.kind === 'circle') {
           const x = sx(p.ox + p.c * g.c[0] - p.s * g.c[1]), y = sy(p.oy + p.s * g.c[0] + p.c * g.c[1]);
           const r = g.r * view.scale;
           ctx.moveTo(x + r, y);
           ctx.arc(x, y, r, 0, TWO_PI);
+        } else if (g.kind === 'capsule') {
+          // A rounded rectangle: the half circle round each end, joined by the two sides.
+          const e = worldEnds(g, p);
+          const x1 = sx(e[0]), y1 = sy(e[1]), x2 = sx(e[2]), y2 = sy(e[3]);
+          const a = Math.atan2(y2 - y1, x2 - x1), r = g.r * view.scale;
+          ctx.moveTo(x2 + r * Math.cos(a - Math.PI / 2), y2 + r * Math.sin(a - Math.PI / 2));
+          ctx.arc(x2, y2, r, a - Math.PI / 2, a + Math.PI / 2);
+          ctx.arc(x1, y1, r, a + Math.PI / 2, a + 1.5 * Math.PI);
+          ctx.closePath();
+        } else if (g.kind !== 'polygon') {
+          if (lines) addLine(g, p);
         } else {
           for (let k = 0; k < g.p.length; k += 2) {
             const x = sx(p.ox + p.c * g.p[k] - p.s * g.p[k + 1]);
@@ -253,10 +271,39 @@
       }
     }
 
+    // A segment's or chain edge's ends in world coordinates: [x1, y1, x2, y2].
+    function ends(g) {
+      return g.cap || g.seg || g.edge;
+    }
+    function worldEnds(g, p) {
+      const e = ends(g);
+      return [p.ox + p.c * e[0] - p.s * e[1], p.oy + p.s * e[0] + p.c * e[1],
+        p.ox + p.c * e[2] - p.s * e[3], p.oy + p.s * e[2] + p.c * e[3]];
+    }
+
+    // A segment, or a chain edge with a tick at its middle on the side it collides with (the
+    // right of its direction; the other side lets shapes through).
+    function addLine(g, p) {
+      const e = worldEnds(g, p);
+      ctx.moveTo(sx(e[0]), sy(e[1]));
+      ctx.lineTo(sx(e[2]), sy(e[3]));
+      if (g.kind !== 'edge') return;
+      const dx = e[2] - e[0], dy = e[3] - e[1], len = Math.hypot(dx, dy);
+      const tick = Math.min(6 * dpr / view.scale, 0.25 * len); // m: 6 px, shorter on a short edge
+      const mx = 0.5 * (e[0] + e[2]), my = 0.5 * (e[1] + e[3]);
+      ctx.moveTo(sx(mx), sy(my));
+      ctx.lineTo(sx(mx + tick * dy / len), sy(my - tick * dx / len));
+    }
+
+    function addLines(b, p) {
+      for (const g of bodies[b].geoms)
+        if (g.kind === 'segment' || g.kind === 'edge') addLine(g, p);
+    }
+
     // A circle's radius line shows its turn.
     function addSpokes(b, p) {
       for (const g of bodies[b].geoms) {
-        if (g.r === undefined) continue;
+        if (g.kind !== 'circle') continue;
         const cx = p.ox + p.c * g.c[0] - p.s * g.c[1], cy = p.oy + p.s * g.c[0] + p.c * g.c[1];
         ctx.moveTo(sx(cx), sy(cy));
         ctx.lineTo(sx(cx + g.r * p.c), sy(cy + g.r * p.s));
@@ -345,12 +392,18 @@
         ctx.fillStyle = g === 'static' ? '#c9ced8' : g === 'kinematic' ? '#b7d3ea' : FILLS[g];
         ctx.strokeStyle = g === 'static' ? '#7d8696' : g === 'kinematic' ? '#4f7fa8' : STROKES[g];
         ctx.beginPath();
-        for (const b of list) addBodyPath(f, b, poses[b]);
+        for (const b of list) addBodyPath(f, b, poses[b], false);
         ctx.fill();
         ctx.stroke();
         ctx.beginPath();
         for (const b of list) addSpokes(b, poses[b]);
         ctx.stroke();
+        // Segments and chain edges have no area: lines, drawn thicker to be seen.
+        ctx.lineWidth = 2 * dpr;
+        ctx.beginPath();
+        for (const b of list) addLines(b, poses[b]);
+        ctx.stroke();
+        ctx.lineWidth = dpr;
       }
     }
 
@@ -389,9 +442,13 @@
         if (!visible(p, b)) continue;
         for (const g of bodies[b].geoms) {
           let x0, y0, x1, y1;
-          if (g.r !== undefined) {
+          if (g.kind === 'circle') {
             const cx = p.ox + p.c * g.c[0] - p.s * g.c[1], cy = p.oy + p.s * g.c[0] + p.c * g.c[1];
             x0 = cx - g.r; x1 = cx + g.r; y0 = cy - g.r; y1 = cy + g.r;
+          } else if (g.kind !== 'polygon') {
+            const e = worldEnds(g, p), r = g.kind === 'capsule' ? g.r : 0;
+            x0 = Math.min(e[0], e[2]) - r; x1 = Math.max(e[0], e[2]) + r;
+            y0 = Math.min(e[1], e[3]) - r; y1 = Math.max(e[1], e[3]) + r;
           } else {
             x0 = y0 = Infinity; x1 = y1 = -Infinity;
             for (let k = 0; k < g.p.length; k += 2) {
@@ -456,7 +513,7 @@
         ctx.strokeStyle = colour;
         ctx.lineWidth = 2.5 * dpr;
         ctx.beginPath();
-        addBodyPath(f, b, poses[b]);
+        addBodyPath(f, b, poses[b], true);
         ctx.stroke();
       }
     }
@@ -470,8 +527,16 @@
         const dx = x - p.ox, dy = y - p.oy;
         const lx = p.c * dx + p.s * dy, ly = -p.s * dx + p.c * dy;
         for (const g of bodies[b].geoms) {
-          if (g.r !== undefined) {
+          if (g.kind === 'circle') {
             if (Math.hypot(lx - g.c[0], ly - g.c[1]) <= g.r) return b;
+            continue;
+          }
+          if (g.kind !== 'polygon') {
+            // Within the radius of the core segment; a line within 4 px of it.
+            const e = ends(g), dx = e[2] - e[0], dy = e[3] - e[1];
+            const t = Math.max(0, Math.min(1, ((lx - e[0]) * dx + (ly - e[1]) * dy) / (dx * dx + dy * dy)));
+            const r = g.kind === 'capsule' ? g.r : 4 * dpr / view.scale;
+            if (Math.hypot(lx - e[0] - t * dx, ly - e[1] - t * dy) <= r) return b;
             continue;
           }
           let pos = 0, neg = 0;
