@@ -474,9 +474,10 @@ BOOST_AUTO_TEST_CASE(canonical_json_round_trips, *utf::label("R1") * utf::label(
     std::vector<std::pair<std::string, Scene>> scenes;
     scenes.emplace_back("full", parse_scene(full_scene, "full"));
     scenes.emplace_back("shapes", parse_scene(shapes_scene, "shapes"));
-    for (const char* name : {"two_bodies", "free_fall", "projectile", "spinning", "collision_im3",
-                             "elastic2", "pyramid20", "rain", "damped", "pendulum", "chain",
-                             "double_pendulum", "bridge", "car", "ragdoll", "machines"}) {
+    for (const char* name :
+         {"two_bodies", "free_fall", "projectile", "spinning", "collision_im3", "elastic2",
+          "pyramid20", "rain", "damped", "pendulum", "chain", "double_pendulum", "bridge", "car",
+          "ragdoll", "machines", "terrain"}) {
         const std::filesystem::path p =
             std::filesystem::path(TAMIAS_EXAMPLE_SCENES) / (std::string(name) + ".json");
         scenes.emplace_back(name, load_scene(p));
@@ -538,7 +539,7 @@ BOOST_AUTO_TEST_CASE(example_scenes_load, *utf::label("R1")) {
         {"collision_im3", 2},    {"elastic2", 2},        {"pyramid20", 211}, {"pyramid40", 821},
         {"large_pyramid", 5051}, {"rain", 2001},         {"damped", 3},      {"pendulum", 5},
         {"chain", 23},           {"double_pendulum", 3}, {"bridge", 26},     {"car", 4},
-        {"ragdoll", 11},         {"machines", 9}};
+        {"ragdoll", 11},         {"machines", 9},        {"terrain", 14}};
     for (const auto& [name, count] : expected) {
         BOOST_TEST_CONTEXT(name) {
             const Scene s = load_scene(std::filesystem::path(TAMIAS_EXAMPLE_SCENES) /
