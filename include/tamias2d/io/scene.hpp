@@ -72,7 +72,7 @@ struct SceneLoads {
 /// uses `loads` when it is not empty (replacing `def.load`), else `def.load` as it is.
 struct SceneBody {
     BodyDef def;                  ///< the body as World::create_body takes it
-    std::vector<ShapeDef> shapes; ///< its shapes, in file order
+    std::vector<ShapeDef> shapes; ///< its shapes, in file order (a chain as its segments)
     SceneLoads loads;             ///< its time-varying loads, if any
     /// Where the body came from: the JSON pointer of its entry ("/bodies/3"), or of the
     /// generator that made it. Used in error messages.
