@@ -155,11 +155,12 @@ std::vector<ShapeId> World::create_chain(BodyId body_id, std::span<const ShapeDe
     }
     std::vector<ShapeId> out;
     out.reserve(segments.size());
+    std::uint32_t last = null_index; // each segment follows the one before: a linear build
     for (const ShapeDef& def : segments) {
-        const std::uint32_t i = w.shapes.create(body_id.index, b, def);
+        last = w.shapes.create(body_id.index, b, def, last);
         if (def.is_sensor)
-            w.sensors.add(i);
-        out.push_back(w.shapes.id(i));
+            w.sensors.add(last);
+        out.push_back(w.shapes.id(last));
     }
     w.bodies.update_mass(body_id.index, w.shapes);
     return out;

@@ -131,10 +131,9 @@ inline constexpr std::size_t max_scene_bytes = std::size_t{64} << 20;
 
 /// The most points the "chain" shapes of one scene may have in all (docs/scene-format.md,
 /// "Limits"). A point is a few bytes of text but a shape in the Scene and in the dry run's World
-/// (about 2 kB together), and the time to attach shapes to one body grows with the square of
-/// their number (each is appended at the end of the body's list): 10 000 points load in a
-/// quarter of a second, in 30 MB.
-inline constexpr std::size_t max_chain_points = 10000;
+/// (about 2 kB together): 100 000 points take about 200 MB to load (a chain attaches in time
+/// linear in its points: World::create_chain).
+inline constexpr std::size_t max_chain_points = 100000;
 
 /// Reads and parses a scene file (origin in messages: the path as given). The file is read in
 /// chunks and refused as soon as it exceeds `max_bytes`, so that an endless source (/dev/zero,

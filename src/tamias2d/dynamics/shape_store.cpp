@@ -21,7 +21,8 @@ bool ShapeStore::is_valid(ShapeId id) const {
            shapes[id.index].generation == id.generation;
 }
 
-std::uint32_t ShapeStore::create(std::uint32_t body_index, Body& b, const ShapeDef& def) {
+std::uint32_t ShapeStore::create(std::uint32_t body_index, Body& b, const ShapeDef& def,
+                                 std::uint32_t last) {
     std::uint32_t i;
     if (!free_slots.empty()) {
         i = free_slots.back();
@@ -37,7 +38,7 @@ std::uint32_t ShapeStore::create(std::uint32_t body_index, Body& b, const ShapeD
     s.next = null_index;
     s.collider = make_collider(def.geometry);
     defs[i] = def;
-    std::uint32_t* link = &b.first_shape;
+    std::uint32_t* link = last != null_index ? &shapes[last].next : &b.first_shape;
     while (*link != null_index)
         link = &shapes[*link].next;
     *link = i;

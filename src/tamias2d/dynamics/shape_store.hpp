@@ -29,8 +29,11 @@ class ShapeStore {
 
     /// A new shape on body `body_index` (whose Body is `b`), appended to its list so that the
     /// body's shapes (and the mass summed over them) keep creation order. The body's mass is
-    /// not updated here (BodyStore::update_mass).
-    std::uint32_t create(std::uint32_t body_index, Body& b, const ShapeDef& def);
+    /// not updated here (BodyStore::update_mass). `last`, when given, is the body's last shape
+    /// (a caller adding many shapes in a row passes the one it added before), so that the list
+    /// is not walked from its head each time.
+    std::uint32_t create(std::uint32_t body_index, Body& b, const ShapeDef& def,
+                         std::uint32_t last = null_index);
     /// Unlinks the shape from its body `b` and frees its proxy and slot (its contacts must be
     /// gone first).
     void destroy(std::uint32_t i, Body& b);

@@ -1456,6 +1456,14 @@ ojson parse_json(std::string_view text, const std::string& origin) {
 
 namespace {
 
+/// How many shapes from `s` on are chain segments in a row (0 when shapes[s] is not one).
+std::size_t chain_run(const std::vector<ShapeDef>& shapes, std::size_t s) {
+    std::size_t n = 0;
+    while (s + n < shapes.size() && shapes[s + n].geometry.type == ShapeType::chain_segment)
+        ++n;
+    return n;
+}
+
 /// "the scene is larger than the limit of N bytes": the one message of the size limit.
 [[noreturn]] void fail_size(const std::string& origin, std::size_t max_bytes) {
     const std::string mib = max_bytes % (1 << 20) == 0
@@ -1586,12 +1594,25 @@ void validate_scene(const Scene& scene, std::string_view origin_view) {
             const BodyId id = world->create_body(b.def);
             if (!b.def.name.empty())
                 by_name.emplace(b.def.name, id);
-            for (std::size_t s = 0; s < b.shapes.size(); ++s) {
+            for (std::size_t s = 0; s < b.shapes.size();) {
+                // A chain's segments go in at once (create_chain: linear in their number);
+                // one that fails is found again shape by shape, for its pointer.
+                const std::size_t run = chain_run(b.shapes, s);
                 try {
-                    world->create_shape(id, b.shapes[s]);
-                } catch (const ValidationError& e) {
-                    fail(ctx, b.generated ? at : child(child(at, "shapes"), s), e.field,
-                         std::string(e.what()) + who, e.constraint);
+                    if (run > 1) {
+                        world->create_chain(id, std::span(b.shapes).subspan(s, run));
+                        s += run;
+                        continue;
+                    }
+                } catch (const ValidationError&) {
+                }
+                for (const std::size_t end = s + std::max<std::size_t>(run, 1); s < end; ++s) {
+                    try {
+                        world->create_shape(id, b.shapes[s]);
+                    } catch (const ValidationError& e) {
+                        fail(ctx, b.generated ? at : child(child(at, "shapes"), s), e.field,
+                             std::string(e.what()) + who, e.constraint);
+                    }
                 }
             }
         } catch (const ValidationError& e) {
@@ -1628,8 +1649,15 @@ std::vector<BodyId> build_world(const Scene& scene, World& world) {
         if (!b.loads.empty()) // the data wins over a function set by hand (see scene.hpp)
             def.load = [loads = b.loads](double t) { return loads(t); };
         const BodyId id = world.create_body(def);
-        for (const ShapeDef& s : b.shapes)
-            world.create_shape(id, s);
+        for (std::size_t s = 0; s < b.shapes.size();) {
+            const std::size_t run = chain_run(b.shapes, s);
+            if (run > 1) {
+                world.create_chain(id, std::span(b.shapes).subspan(s, run));
+                s += run;
+            } else {
+                world.create_shape(id, b.shapes[s++]);
+            }
+        }
         ids.push_back(id);
     }
     std::map<std::string, BodyId> by_name;
