@@ -25,6 +25,7 @@
 
 #include "fuzz/fuzz_support.hpp"
 #include "tamias2d/errors.hpp"
+#include "tamias2d/geometry/mass_properties.hpp"
 #include "tamias2d/io/scene.hpp"
 #include "tamias2d/world.hpp"
 
@@ -196,9 +197,27 @@ struct Tally {
 
 /// The known findings a scene can reach (docs/verification.md, "Fuzzing"; the API fuzzer's
 /// Driver describes each): F1, a joint whose bodies or anchors lie >= 1e5 m apart; F2, a
-/// jointed body with an inertia override tiny for its mass; F3, joints under a huge load per
-/// step (|g| >= 1e6 m s^-2, or |g| dt^2 >= 100 m). A non-finite state there is counted, not
-/// failed, until the library refuses such input or holds such joints.
+/// jointed body with an inertia (given, or made by its shapes) tiny for its mass; F3, joints under
+/// a huge load per step (|g| >= 1e6 m s^-2, or |g| dt^2 >= 100 m). A non-finite state there is
+/// counted, not failed, until the library refuses such input or holds such joints. Whether the
+/// named body's shapes give it a moment of inertia below 1e-6 of its mass (a radius of gyration
+/// under 1 mm): finding F2 reached through a shape (a circle of radius 1e-12 as a ragdoll's head)
+/// rather than an inertia override.
+bool tiny_shape_inertia(const io::Scene& scene, const std::string& name) {
+    for (const io::SceneBody& b : scene.bodies) {
+        if (b.def.name != name || b.shapes.empty())
+            continue;
+        std::vector<MassData> parts;
+        for (const ShapeDef& sd : b.shapes)
+            parts.push_back(compute_mass(sd.geometry, sd.material.density));
+        const MassData m = combine(parts);
+        const double mass = b.def.mass.value_or(m.mass);
+        const double inertia = m.mass > 0.0 ? m.inertia * mass / m.mass : 0.0;
+        return mass > 0.0 && inertia < 1e-6 * mass;
+    }
+    return false;
+}
+
 bool reaches_known_finding(const io::Scene& scene) {
     if (scene.joints.empty())
         return false;
@@ -216,6 +235,8 @@ bool reaches_known_finding(const io::Scene& scene) {
                 const BodyDef& d = *it->second;
                 if (d.inertia && *d.inertia < 1e-6 * d.mass.value_or(1.0))
                     return true; // F2
+                if (!d.inertia && tiny_shape_inertia(scene, n))
+                    return true; // F2, the tiny inertia made by the body's shapes
             }
         }
         std::visit(
