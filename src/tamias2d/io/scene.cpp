@@ -530,15 +530,17 @@ TimeFunction parse_time_function(const Ctx& ctx, const ojson& v, const std::stri
     }
     // DCX_range: every value the load takes is a force (torque) within the supported range,
     // which World::step checks again on each evaluation.
-    for (const auto& [key, value] : {std::pair<const char*, double>{"value", f.value},
-                                     {"amplitude", f.amplitude},
-                                     {"offset", f.offset},
-                                     {"before", f.before},
-                                     {"after", f.after},
-                                     {"from", f.from},
-                                     {"to", f.to}})
-        check_as_library(ctx, ptr, "",
-                         [&] { require_within(key, value, supported::input_max, unit); });
+    // (A pair, not a structured binding: clang before 16 lets no lambda capture one.)
+    for (const auto& item : {std::pair<const char*, double>{"value", f.value},
+                             {"amplitude", f.amplitude},
+                             {"offset", f.offset},
+                             {"before", f.before},
+                             {"after", f.after},
+                             {"from", f.from},
+                             {"to", f.to}})
+        check_as_library(ctx, ptr, "", [&] {
+            require_within(item.first, item.second, supported::input_max, unit);
+        });
     if (f.kind == TimeFunction::Kind::sinusoid)
         check_as_library(ctx, ptr, "", [&] {
             require_within("amplitude", std::abs(f.offset) + std::abs(f.amplitude),
