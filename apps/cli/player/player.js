@@ -1,12 +1,378 @@
 // The player of `tamias2d view`: decodes the run embedded in this page (apps/cli/view_html.cpp
 // writes it; docs/viewer.md describes it) and draws it on a canvas. It loads nothing: the page
 // works from a file, offline. window.tamiasPlayer exposes the decoded states for tests.
+// Drawing a world on a canvas: the bodies' shapes, joints, contact points, AABBs, the grid and
+// the body under a point. Shared by this player and the live sandbox (apps/wasm/sandbox.js),
+// whose page includes this file; the player below runs only in a page that holds a run.
+window.TamiasDraw = (function () {
+  'use strict';
+
+  const TWO_PI = 2 * Math.PI;
+  const FILLS = ['#f2b36b', '#8fc1e3', '#9fd6a4', '#e8a0a0', '#c5a8e0', '#e6d27a'];
+  const STROKES = ['#a8692a', '#3f7ca6', '#4f9256', '#a85353', '#7d5aa3', '#9c8a2e'];
+
+
+  function niceNumber(v) {
+    const e = Math.pow(10, Math.floor(Math.log10(v)));
+    const m = v / e;
+    return +((m < 1.5 ? 1 : m < 3.5 ? 2 : m < 7.5 ? 5 : 10) * e).toPrecision(3);
+  }
+
+  // Per body ({name, type, m, I, lc, geoms}): its shapes, centre of mass in its frame, and the
+  // radius of a circle about the centre of mass holding every shape (for culling and picking).
+  // `index` picks its colour.
+  // Each geometry's kind, from its keys: circle {c, r}, polygon {p}, capsule {cap: ends, r},
+  // two-sided segment {seg: ends}, one-sided chain edge {edge: ends}; ends are [x1, y1, x2, y2].
+  function kindOf(g) {
+    return g.p ? 'polygon' : g.cap ? 'capsule' : g.seg ? 'segment' : g.edge ? 'edge' : 'circle';
+  }
+
+  // A segment's, capsule's or chain edge's ends in its body frame: [x1, y1, x2, y2].
+  function ends(g) {
+    return g.cap || g.seg || g.edge;
+  }
+
+  function prepareBody(b, index) {
+    let radius = 0;
+    const reach = (x, y, r) => { radius = Math.max(radius, Math.hypot(x - b.lc[0], y - b.lc[1]) + r); };
+    for (const g of b.geoms) {
+      g.kind = kindOf(g);
+      if (g.kind === 'circle') reach(g.c[0], g.c[1], g.r);
+      else if (g.kind === 'polygon') for (let k = 0; k < g.p.length; k += 2) reach(g.p[k], g.p[k + 1], 0);
+      else {
+        const e = ends(g), r = g.kind === 'capsule' ? g.r : 0;
+        reach(e[0], e[1], r);
+        reach(e[2], e[3], r);
+      }
+    }
+    const group = b.type === 'static' ? 'static' : b.type === 'kinematic' ? 'kinematic' : index % FILLS.length;
+    return { name: b.name, type: b.type, lc: b.lc, mass: b.m, inertia: b.I, geoms: b.geoms, radius, group };
+  }
+
+  // The body frame of a body whose centre of mass is at (x, y), turned by a (rad), with its
+  // centre of mass at lc in its frame: origin and rotation.
+  function pose(x, y, a, lc) {
+    const c = Math.cos(a), s = Math.sin(a);
+    return { x, y, c, s, ox: x - (c * lc[0] - s * lc[1]), oy: y - (s * lc[0] + c * lc[1]) };
+  }
+
+  // A drawing on `canvas` of the bodies given to setBodies (prepared), at the poses given to
+  // each call; view.scale is in device pixels per metre.
+  function create(canvas) {
+    const ctx = canvas.getContext('2d');
+    const view = { cx: 0, cy: 0, scale: 50 };
+    let bodies = [], dpr = window.devicePixelRatio || 1;
+    const sx = (x) => (x - view.cx) * view.scale + canvas.width / 2;
+    const sy = (y) => canvas.height / 2 - (y - view.cy) * view.scale;
+    const wx = (px) => (px - canvas.width / 2) / view.scale + view.cx;
+    const wy = (py) => (canvas.height / 2 - py) / view.scale + view.cy;
+
+    // Centres the box [x0, y0, x1, y1] (m) in the canvas with a margin of a quarter of it.
+    function fitBox(b) {
+      const w = b[2] - b[0], h = b[3] - b[1];
+      const mx = Math.max(0.25 * w, 0.25 * h, 1), my = Math.max(0.25 * h, 0.25 * w, 1);
+      view.cx = (b[0] + b[2]) / 2;
+      view.cy = (b[1] + b[3]) / 2;
+      view.scale = Math.min(canvas.width / (w + 2 * mx), canvas.height / (h + 2 * my));
+    }
+
+    function clear(background) {
+      ctx.setTransform(1, 0, 0, 1, 0, 0);
+      ctx.fillStyle = background;
+      ctx.fillRect(0, 0, canvas.width, canvas.height);
+    }
+
+
+    // --- drawing --------------------------------------------------------------------------
+    // The shapes with area, outlined (lines: also the segments and chain edges, for a highlight).
+    function addBodyPath(b, p, lines) {
+      for (const g of bodies[b].geoms) {
+        if (g.kind === 'circle') {
+          const x = sx(p.ox + p.c * g.c[0] - p.s * g.c[1]), y = sy(p.oy + p.s * g.c[0] + p.c * g.c[1]);
+          const r = g.r * view.scale;
+          ctx.moveTo(x + r, y);
+          ctx.arc(x, y, r, 0, TWO_PI);
+        } else if (g.kind === 'capsule') {
+          // A rounded rectangle: the half circle round each end, joined by the two sides.
+          const e = worldEnds(g, p);
+          const x1 = sx(e[0]), y1 = sy(e[1]), x2 = sx(e[2]), y2 = sy(e[3]);
+          const a = Math.atan2(y2 - y1, x2 - x1), r = g.r * view.scale;
+          ctx.moveTo(x2 + r * Math.cos(a - Math.PI / 2), y2 + r * Math.sin(a - Math.PI / 2));
+          ctx.arc(x2, y2, r, a - Math.PI / 2, a + Math.PI / 2);
+          ctx.arc(x1, y1, r, a + Math.PI / 2, a + 1.5 * Math.PI);
+          ctx.closePath();
+        } else if (g.kind !== 'polygon') {
+          if (lines) addLine(g, p);
+        } else {
+          for (let k = 0; k < g.p.length; k += 2) {
+            const x = sx(p.ox + p.c * g.p[k] - p.s * g.p[k + 1]);
+            const y = sy(p.oy + p.s * g.p[k] + p.c * g.p[k + 1]);
+            if (k === 0) ctx.moveTo(x, y);
+            else ctx.lineTo(x, y);
+          }
+          ctx.closePath();
+        }
+      }
+    }
+
+    function worldEnds(g, p) {
+      const e = ends(g);
+      return [p.ox + p.c * e[0] - p.s * e[1], p.oy + p.s * e[0] + p.c * e[1],
+        p.ox + p.c * e[2] - p.s * e[3], p.oy + p.s * e[2] + p.c * e[3]];
+    }
+
+    // A segment, or a chain edge with a tick at its middle on the side it collides with (the
+    // right of its direction; the other side lets shapes through).
+    function addLine(g, p) {
+      const e = worldEnds(g, p);
+      ctx.moveTo(sx(e[0]), sy(e[1]));
+      ctx.lineTo(sx(e[2]), sy(e[3]));
+      if (g.kind !== 'edge') return;
+      const dx = e[2] - e[0], dy = e[3] - e[1], len = Math.hypot(dx, dy);
+      const tick = Math.min(6 * dpr / view.scale, 0.25 * len); // m: 6 px, shorter on a short edge
+      const mx = 0.5 * (e[0] + e[2]), my = 0.5 * (e[1] + e[3]);
+      ctx.moveTo(sx(mx), sy(my));
+      ctx.lineTo(sx(mx + tick * dy / len), sy(my - tick * dx / len));
+    }
+
+    function addLines(b, p) {
+      for (const g of bodies[b].geoms)
+        if (g.kind === 'segment' || g.kind === 'edge') addLine(g, p);
+    }
+
+    // A circle's radius line shows its turn.
+    function addSpokes(b, p) {
+      for (const g of bodies[b].geoms) {
+        if (g.kind !== 'circle') continue;
+        const cx = p.ox + p.c * g.c[0] - p.s * g.c[1], cy = p.oy + p.s * g.c[0] + p.c * g.c[1];
+        ctx.moveTo(sx(cx), sy(cy));
+        ctx.lineTo(sx(cx + g.r * p.c), sy(cy + g.r * p.s));
+      }
+    }
+
+    function visible(p, b) {
+      const r = bodies[b].radius * view.scale + 2;
+      const x = sx(p.x), y = sy(p.y);
+      return x + r >= 0 && x - r <= canvas.width && y + r >= 0 && y - r <= canvas.height;
+    }
+
+    function niceStep(pixels) {
+      return niceNumber(pixels / view.scale);
+    }
+
+    function drawGrid() {
+      const step = niceStep(80 * dpr);
+      ctx.lineWidth = 1;
+      ctx.strokeStyle = '#e8ebf0';
+      ctx.beginPath();
+      const x0 = Math.floor(wx(0) / step) * step, x1 = wx(canvas.width);
+      for (let x = x0; x <= x1; x += step) {
+        const px = Math.round(sx(x)) + 0.5;
+        ctx.moveTo(px, 0);
+        ctx.lineTo(px, canvas.height);
+      }
+      const y0 = Math.floor(wy(canvas.height) / step) * step, y1 = wy(0);
+      for (let y = y0; y <= y1; y += step) {
+        const py = Math.round(sy(y)) + 0.5;
+        ctx.moveTo(0, py);
+        ctx.lineTo(canvas.width, py);
+      }
+      ctx.stroke();
+      ctx.strokeStyle = '#d3d8e0';
+      ctx.beginPath();
+      ctx.moveTo(Math.round(sx(0)) + 0.5, 0);
+      ctx.lineTo(Math.round(sx(0)) + 0.5, canvas.height);
+      ctx.moveTo(0, Math.round(sy(0)) + 0.5);
+      ctx.lineTo(canvas.width, Math.round(sy(0)) + 0.5);
+      ctx.stroke();
+      // Scale bar.
+      const len = step * view.scale;
+      const bx = 12 * dpr, by = canvas.height - 12 * dpr;
+      ctx.strokeStyle = '#5b6474';
+      ctx.lineWidth = 2 * dpr;
+      ctx.beginPath();
+      ctx.moveTo(bx, by - 4 * dpr);
+      ctx.lineTo(bx, by);
+      ctx.lineTo(bx + len, by);
+      ctx.lineTo(bx + len, by - 4 * dpr);
+      ctx.stroke();
+      ctx.fillStyle = '#5b6474';
+      ctx.font = 11 * dpr + 'px sans-serif';
+      ctx.fillText(step + ' m', bx + len + 6 * dpr, by);
+    }
+
+    function drawBodies(poses) {
+      const groups = new Map();
+      for (let b = 0; b < bodies.length; b++) {
+        if (!visible(poses[b], b)) continue;
+        const g = bodies[b].group;
+        if (!groups.has(g)) groups.set(g, []);
+        groups.get(g).push(b);
+      }
+      ctx.lineWidth = dpr;
+      ctx.lineJoin = 'round';
+      for (const [g, list] of groups) {
+        ctx.fillStyle = g === 'static' ? '#c9ced8' : g === 'kinematic' ? '#b7d3ea' : FILLS[g];
+        ctx.strokeStyle = g === 'static' ? '#7d8696' : g === 'kinematic' ? '#4f7fa8' : STROKES[g];
+        ctx.beginPath();
+        for (const b of list) addBodyPath(b, poses[b], false);
+        ctx.fill();
+        ctx.stroke();
+        ctx.beginPath();
+        for (const b of list) addSpokes(b, poses[b]);
+        ctx.stroke();
+        // Segments and chain edges have no area: lines, drawn thicker to be seen.
+        ctx.lineWidth = 2 * dpr;
+        ctx.beginPath();
+        for (const b of list) addLines(b, poses[b]);
+        ctx.stroke();
+        ctx.lineWidth = dpr;
+      }
+    }
+
+    function drawJoints(joints, poses) {
+      if (!joints.length) return;
+      ctx.strokeStyle = '#00897b';
+      ctx.fillStyle = '#00897b';
+      ctx.lineWidth = 1.5 * dpr;
+      const anchors = [];
+      ctx.beginPath();
+      for (const j of joints) {
+        const pa = poses[j.a], pb = poses[j.b];
+        const ax = pa.ox + pa.c * j.la[0] - pa.s * j.la[1], ay = pa.oy + pa.s * j.la[0] + pa.c * j.la[1];
+        const bx = pb.ox + pb.c * j.lb[0] - pb.s * j.lb[1], by = pb.oy + pb.s * j.lb[0] + pb.c * j.lb[1];
+        ctx.moveTo(sx(pa.x), sy(pa.y));
+        ctx.lineTo(sx(ax), sy(ay));
+        ctx.lineTo(sx(bx), sy(by));
+        ctx.lineTo(sx(pb.x), sy(pb.y));
+        anchors.push(sx(ax), sy(ay), sx(bx), sy(by));
+      }
+      ctx.stroke();
+      ctx.beginPath();
+      for (let k = 0; k < anchors.length; k += 2) {
+        ctx.moveTo(anchors[k] + 3 * dpr, anchors[k + 1]);
+        ctx.arc(anchors[k], anchors[k + 1], 3 * dpr, 0, TWO_PI);
+      }
+      ctx.fill();
+    }
+
+    function drawAabbs(poses) {
+      ctx.strokeStyle = 'rgba(194, 24, 91, 0.7)';
+      ctx.lineWidth = dpr;
+      ctx.beginPath();
+      for (let b = 0; b < bodies.length; b++) {
+        const p = poses[b];
+        if (!visible(p, b)) continue;
+        for (const g of bodies[b].geoms) {
+          let x0, y0, x1, y1;
+          if (g.kind === 'circle') {
+            const cx = p.ox + p.c * g.c[0] - p.s * g.c[1], cy = p.oy + p.s * g.c[0] + p.c * g.c[1];
+            x0 = cx - g.r; x1 = cx + g.r; y0 = cy - g.r; y1 = cy + g.r;
+          } else if (g.kind !== 'polygon') {
+            const e = worldEnds(g, p), r = g.kind === 'capsule' ? g.r : 0;
+            x0 = Math.min(e[0], e[2]) - r; x1 = Math.max(e[0], e[2]) + r;
+            y0 = Math.min(e[1], e[3]) - r; y1 = Math.max(e[1], e[3]) + r;
+          } else {
+            x0 = y0 = Infinity; x1 = y1 = -Infinity;
+            for (let k = 0; k < g.p.length; k += 2) {
+              const x = p.ox + p.c * g.p[k] - p.s * g.p[k + 1], y = p.oy + p.s * g.p[k] + p.c * g.p[k + 1];
+              x0 = Math.min(x0, x); x1 = Math.max(x1, x); y0 = Math.min(y0, y); y1 = Math.max(y1, y);
+            }
+          }
+          ctx.rect(sx(x0), sy(y1), (x1 - x0) * view.scale, (y1 - y0) * view.scale);
+        }
+      }
+      ctx.stroke();
+    }
+
+    // Points k0 to k1 - 1 of (px, py) with normals at angles pa.
+    function drawContacts(contacts, k0, k1) {
+      if (k1 === k0) return;
+      ctx.strokeStyle = '#d62728';
+      ctx.fillStyle = '#d62728';
+      ctx.lineWidth = 1.5 * dpr;
+      const len = 12 * dpr;
+      ctx.beginPath();
+      for (let k = k0; k < k1; k++) {
+        const x = sx(contacts.px[k]), y = sy(contacts.py[k]);
+        ctx.moveTo(x, y);
+        ctx.lineTo(x + len * Math.cos(contacts.pa[k]), y - len * Math.sin(contacts.pa[k]));
+      }
+      ctx.stroke();
+      ctx.beginPath();
+      for (let k = k0; k < k1; k++) {
+        const x = sx(contacts.px[k]), y = sy(contacts.py[k]);
+        ctx.moveTo(x + 2.5 * dpr, y);
+        ctx.arc(x, y, 2.5 * dpr, 0, TWO_PI);
+      }
+      ctx.fill();
+    }
+
+    // The outlines of the selected and hovered bodies (-1: none).
+    function drawHighlight(poses, selected, hovered) {
+      for (const [b, colour] of [[selected, '#1d2330'], [hovered, '#2f5d9e']]) {
+        if (b < 0) continue;
+        ctx.strokeStyle = colour;
+        ctx.lineWidth = 2.5 * dpr;
+        ctx.beginPath();
+        addBodyPath(b, poses[b], true);
+        ctx.stroke();
+      }
+    }
+
+    // The topmost body whose shapes contain the world point (x, y), or -1; pose(b) is its pose.
+    function bodyAt(pose, x, y) {
+      for (let b = bodies.length - 1; b >= 0; b--) {
+        const p = pose(b);
+        if (Math.hypot(x - p.x, y - p.y) > bodies[b].radius) continue;
+        // The point in the body frame.
+        const dx = x - p.ox, dy = y - p.oy;
+        const lx = p.c * dx + p.s * dy, ly = -p.s * dx + p.c * dy;
+        for (const g of bodies[b].geoms) {
+          if (g.kind === 'circle') {
+            if (Math.hypot(lx - g.c[0], ly - g.c[1]) <= g.r) return b;
+            continue;
+          }
+          if (g.kind !== 'polygon') {
+            // Within the radius of the core segment; a line within 4 px of it.
+            const e = ends(g), dx = e[2] - e[0], dy = e[3] - e[1];
+            const t = Math.max(0, Math.min(1, ((lx - e[0]) * dx + (ly - e[1]) * dy) / (dx * dx + dy * dy)));
+            const r = g.kind === 'capsule' ? g.r : 4 * dpr / view.scale;
+            if (Math.hypot(lx - e[0] - t * dx, ly - e[1] - t * dy) <= r) return b;
+            continue;
+          }
+          let pos = 0, neg = 0;
+          const n = g.p.length;
+          for (let k = 0; k < n; k += 2) {
+            const ax = g.p[k], ay = g.p[k + 1], bx = g.p[(k + 2) % n], by = g.p[(k + 3) % n];
+            const cross = (bx - ax) * (ly - ay) - (by - ay) * (lx - ax);
+            if (cross > 0) pos++;
+            else if (cross < 0) neg++;
+          }
+          if (pos === 0 || neg === 0) return b;
+        }
+      }
+      return -1;
+    }
+
+    return {
+      ctx, view, sx, sy, wx, wy, fitBox, clear, addBodyPath, visible, drawGrid, drawBodies, drawJoints,
+      drawAabbs, drawContacts, drawHighlight, bodyAt,
+      setBodies: (list) => { bodies = list; },
+      setDpr: (d) => { dpr = d; },
+    };
+  }
+
+  return { TWO_PI, BACKGROUND: '#f7f8fa', niceNumber, prepareBody, pose, create };
+})();
+
 (function () {
   'use strict';
 
   const $ = (id) => document.getElementById(id);
-  const TWO_PI = 2 * Math.PI;
-  const BACKGROUND = '#f7f8fa';
+  if (!$('tamias-run')) return; // a page that draws with TamiasDraw only (the live sandbox)
+  const TWO_PI = TamiasDraw.TWO_PI;
+  const BACKGROUND = TamiasDraw.BACKGROUND;
 
   // --- decoding -------------------------------------------------------------------------
   function bytesOf(b64) {
@@ -125,29 +491,7 @@
   function start() {
     $('message').textContent = '';
 
-    // Per body: its shapes, centre of mass in its frame, and the radius of a circle about the
-    // centre of mass holding every shape (for culling and picking).
-    const FILLS = ['#f2b36b', '#8fc1e3', '#9fd6a4', '#e8a0a0', '#c5a8e0', '#e6d27a'];
-    const STROKES = ['#a8692a', '#3f7ca6', '#4f9256', '#a85353', '#7d5aa3', '#9c8a2e'];
-    // Each geometry's kind, from its keys: circle {c, r}, polygon {p}, capsule {cap: ends, r},
-    // two-sided segment {seg: ends}, one-sided chain edge {edge: ends}; ends are [x1, y1, x2, y2].
-    for (const g of D.geoms)
-      g.kind = g.p ? 'polygon' : g.cap ? 'capsule' : g.seg ? 'segment' : g.edge ? 'edge' : 'circle';
-    bodies = D.bodies.map((b, i) => {
-      let radius = 0;
-      const reach = (x, y, r) => { radius = Math.max(radius, Math.hypot(x - b.lc[0], y - b.lc[1]) + r); };
-      for (const g of b.shapes.map((s) => D.geoms[s])) {
-        if (g.kind === 'circle') reach(g.c[0], g.c[1], g.r);
-        else if (g.kind === 'polygon') for (let k = 0; k < g.p.length; k += 2) reach(g.p[k], g.p[k + 1], 0);
-        else {
-          const e = ends(g), r = g.kind === 'capsule' ? g.r : 0;
-          reach(e[0], e[1], r);
-          reach(e[2], e[3], r);
-        }
-      }
-      const group = b.type === 'static' ? 'static' : b.type === 'kinematic' ? 'kinematic' : i % FILLS.length;
-      return { name: b.name, type: b.type, lc: b.lc, mass: b.m, inertia: b.I, geoms: b.shapes.map((s) => D.geoms[s]), radius, group };
-    });
+    bodies = D.bodies.map((b, i) => TamiasDraw.prepareBody({ ...b, geoms: b.shapes.map((s) => D.geoms[s]) }, i));
     const movingIds = [];
     bodies.forEach((b, i) => { if (b.type !== 'static') movingIds.push(i); });
 
@@ -166,39 +510,29 @@
     // The body frame at frame f: origin and rotation (the recorded state is the centre of mass).
     function pose(f, b) {
       const i = f * B + b;
-      const a = ch.phi[i] * Q.angle;
-      const c = Math.cos(a), s = Math.sin(a);
-      const x = ch.x[i] * Q.position, y = ch.y[i] * Q.position;
-      const lc = bodies[b].lc;
-      return { x, y, c, s, ox: x - (c * lc[0] - s * lc[1]), oy: y - (s * lc[0] + c * lc[1]) };
+      return TamiasDraw.pose(ch.x[i] * Q.position, ch.y[i] * Q.position, ch.phi[i] * Q.angle, bodies[b].lc);
     }
 
     // --- view -----------------------------------------------------------------------------
     const canvas = $('view');
-    const ctx = canvas.getContext('2d');
+    const drawing = TamiasDraw.create(canvas);
+    drawing.setBodies(bodies);
+    const { ctx, view, sx, sy, wx, wy } = drawing; // view.scale: device pixels per metre
     const stage = $('stage');
     let dpr = window.devicePixelRatio || 1;
-    const view = { cx: 0, cy: 0, scale: 50 }; // scale: device pixels per metre
     let fitted = false;
-    const sx = (x) => (x - view.cx) * view.scale + canvas.width / 2;
-    const sy = (y) => canvas.height / 2 - (y - view.cy) * view.scale;
-    const wx = (px) => (px - canvas.width / 2) / view.scale + view.cx;
-    const wy = (py) => (canvas.height / 2 - py) / view.scale + view.cy;
 
     function fit() {
       const b = D.bounds.moving || D.bounds.all;
       if (!b || canvas.width === 0) return;
-      const w = b[2] - b[0], h = b[3] - b[1];
-      const mx = Math.max(0.25 * w, 0.25 * h, 1), my = Math.max(0.25 * h, 0.25 * w, 1);
-      view.cx = (b[0] + b[2]) / 2;
-      view.cy = (b[1] + b[3]) / 2;
-      view.scale = Math.min(canvas.width / (w + 2 * mx), canvas.height / (h + 2 * my));
+      drawing.fitBox(b);
       fitted = true;
       dirty = true;
     }
 
     function resize() {
       dpr = window.devicePixelRatio || 1;
+      drawing.setDpr(dpr);
       const w = Math.max(1, Math.round(stage.clientWidth * dpr));
       const h = Math.max(1, Math.round(stage.clientHeight * dpr));
       if (canvas.width !== w || canvas.height !== h) {
@@ -229,137 +563,9 @@
     const velocityScale = (() => {
       const b = D.bounds.moving || D.bounds.all;
       const size = b ? Math.hypot(b[2] - b[0], b[3] - b[1]) : 1;
-      return vmax > 0 ? niceNumber((0.1 * size) / vmax) : 0.1;
+      return vmax > 0 ? TamiasDraw.niceNumber((0.1 * size) / vmax) : 0.1;
     })();
     $('velocity-scale').textContent = '(v \u00d7 ' + velocityScale + ' s)';
-
-    function niceNumber(v) {
-      const e = Math.pow(10, Math.floor(Math.log10(v)));
-      const m = v / e;
-      return +((m < 1.5 ? 1 : m < 3.5 ? 2 : m < 7.5 ? 5 : 10) * e).toPrecision(3);
-    }
-
-    // --- drawing --------------------------------------------------------------------------
-    // The shapes with area, outlined (lines: also the segments and chain edges, for a highlight).
-    function addBodyPath(f, b, p, lines) {
-      for (const g of bodies[b].geoms) {
-        if (g.kind === 'circle') {
-          const x = sx(p.ox + p.c * g.c[0] - p.s * g.c[1]), y = sy(p.oy + p.s * g.c[0] + p.c * g.c[1]);
-          const r = g.r * view.scale;
-          ctx.moveTo(x + r, y);
-          ctx.arc(x, y, r, 0, TWO_PI);
-        } else if (g.kind === 'capsule') {
-          // A rounded rectangle: the half circle round each end, joined by the two sides.
-          const e = worldEnds(g, p);
-          const x1 = sx(e[0]), y1 = sy(e[1]), x2 = sx(e[2]), y2 = sy(e[3]);
-          const a = Math.atan2(y2 - y1, x2 - x1), r = g.r * view.scale;
-          ctx.moveTo(x2 + r * Math.cos(a - Math.PI / 2), y2 + r * Math.sin(a - Math.PI / 2));
-          ctx.arc(x2, y2, r, a - Math.PI / 2, a + Math.PI / 2);
-          ctx.arc(x1, y1, r, a + Math.PI / 2, a + 1.5 * Math.PI);
-          ctx.closePath();
-        } else if (g.kind !== 'polygon') {
-          if (lines) addLine(g, p);
-        } else {
-          for (let k = 0; k < g.p.length; k += 2) {
-            const x = sx(p.ox + p.c * g.p[k] - p.s * g.p[k + 1]);
-            const y = sy(p.oy + p.s * g.p[k] + p.c * g.p[k + 1]);
-            if (k === 0) ctx.moveTo(x, y);
-            else ctx.lineTo(x, y);
-          }
-          ctx.closePath();
-        }
-      }
-    }
-
-    // A segment's or chain edge's ends in world coordinates: [x1, y1, x2, y2].
-    function ends(g) {
-      return g.cap || g.seg || g.edge;
-    }
-    function worldEnds(g, p) {
-      const e = ends(g);
-      return [p.ox + p.c * e[0] - p.s * e[1], p.oy + p.s * e[0] + p.c * e[1],
-        p.ox + p.c * e[2] - p.s * e[3], p.oy + p.s * e[2] + p.c * e[3]];
-    }
-
-    // A segment, or a chain edge with a tick at its middle on the side it collides with (the
-    // right of its direction; the other side lets shapes through).
-    function addLine(g, p) {
-      const e = worldEnds(g, p);
-      ctx.moveTo(sx(e[0]), sy(e[1]));
-      ctx.lineTo(sx(e[2]), sy(e[3]));
-      if (g.kind !== 'edge') return;
-      const dx = e[2] - e[0], dy = e[3] - e[1], len = Math.hypot(dx, dy);
-      const tick = Math.min(6 * dpr / view.scale, 0.25 * len); // m: 6 px, shorter on a short edge
-      const mx = 0.5 * (e[0] + e[2]), my = 0.5 * (e[1] + e[3]);
-      ctx.moveTo(sx(mx), sy(my));
-      ctx.lineTo(sx(mx + tick * dy / len), sy(my - tick * dx / len));
-    }
-
-    function addLines(b, p) {
-      for (const g of bodies[b].geoms)
-        if (g.kind === 'segment' || g.kind === 'edge') addLine(g, p);
-    }
-
-    // A circle's radius line shows its turn.
-    function addSpokes(b, p) {
-      for (const g of bodies[b].geoms) {
-        if (g.kind !== 'circle') continue;
-        const cx = p.ox + p.c * g.c[0] - p.s * g.c[1], cy = p.oy + p.s * g.c[0] + p.c * g.c[1];
-        ctx.moveTo(sx(cx), sy(cy));
-        ctx.lineTo(sx(cx + g.r * p.c), sy(cy + g.r * p.s));
-      }
-    }
-
-    function visible(p, b) {
-      const r = bodies[b].radius * view.scale + 2;
-      const x = sx(p.x), y = sy(p.y);
-      return x + r >= 0 && x - r <= canvas.width && y + r >= 0 && y - r <= canvas.height;
-    }
-
-    function niceStep(pixels) {
-      return niceNumber(pixels / view.scale);
-    }
-
-    function drawGrid() {
-      const step = niceStep(80 * dpr);
-      ctx.lineWidth = 1;
-      ctx.strokeStyle = '#e8ebf0';
-      ctx.beginPath();
-      const x0 = Math.floor(wx(0) / step) * step, x1 = wx(canvas.width);
-      for (let x = x0; x <= x1; x += step) {
-        const px = Math.round(sx(x)) + 0.5;
-        ctx.moveTo(px, 0);
-        ctx.lineTo(px, canvas.height);
-      }
-      const y0 = Math.floor(wy(canvas.height) / step) * step, y1 = wy(0);
-      for (let y = y0; y <= y1; y += step) {
-        const py = Math.round(sy(y)) + 0.5;
-        ctx.moveTo(0, py);
-        ctx.lineTo(canvas.width, py);
-      }
-      ctx.stroke();
-      ctx.strokeStyle = '#d3d8e0';
-      ctx.beginPath();
-      ctx.moveTo(Math.round(sx(0)) + 0.5, 0);
-      ctx.lineTo(Math.round(sx(0)) + 0.5, canvas.height);
-      ctx.moveTo(0, Math.round(sy(0)) + 0.5);
-      ctx.lineTo(canvas.width, Math.round(sy(0)) + 0.5);
-      ctx.stroke();
-      // Scale bar.
-      const len = step * view.scale;
-      const bx = 12 * dpr, by = canvas.height - 12 * dpr;
-      ctx.strokeStyle = '#5b6474';
-      ctx.lineWidth = 2 * dpr;
-      ctx.beginPath();
-      ctx.moveTo(bx, by - 4 * dpr);
-      ctx.lineTo(bx, by);
-      ctx.lineTo(bx + len, by);
-      ctx.lineTo(bx + len, by - 4 * dpr);
-      ctx.stroke();
-      ctx.fillStyle = '#5b6474';
-      ctx.font = 11 * dpr + 'px sans-serif';
-      ctx.fillText(step + ' m', bx + len + 6 * dpr, by);
-    }
 
     function drawTrails(f) {
       if (movingIds.length === 0) return;
@@ -373,90 +579,6 @@
           const x = sx(ch.x[g * B + b] * Q.position), y = sy(ch.y[g * B + b] * Q.position);
           if (g === first) ctx.moveTo(x, y);
           else ctx.lineTo(x, y);
-        }
-      }
-      ctx.stroke();
-    }
-
-    function drawBodies(f, poses) {
-      const groups = new Map();
-      for (let b = 0; b < B; b++) {
-        if (!visible(poses[b], b)) continue;
-        const g = bodies[b].group;
-        if (!groups.has(g)) groups.set(g, []);
-        groups.get(g).push(b);
-      }
-      ctx.lineWidth = dpr;
-      ctx.lineJoin = 'round';
-      for (const [g, list] of groups) {
-        ctx.fillStyle = g === 'static' ? '#c9ced8' : g === 'kinematic' ? '#b7d3ea' : FILLS[g];
-        ctx.strokeStyle = g === 'static' ? '#7d8696' : g === 'kinematic' ? '#4f7fa8' : STROKES[g];
-        ctx.beginPath();
-        for (const b of list) addBodyPath(f, b, poses[b], false);
-        ctx.fill();
-        ctx.stroke();
-        ctx.beginPath();
-        for (const b of list) addSpokes(b, poses[b]);
-        ctx.stroke();
-        // Segments and chain edges have no area: lines, drawn thicker to be seen.
-        ctx.lineWidth = 2 * dpr;
-        ctx.beginPath();
-        for (const b of list) addLines(b, poses[b]);
-        ctx.stroke();
-        ctx.lineWidth = dpr;
-      }
-    }
-
-    function drawJoints(poses) {
-      if (!D.joints.length) return;
-      ctx.strokeStyle = '#00897b';
-      ctx.fillStyle = '#00897b';
-      ctx.lineWidth = 1.5 * dpr;
-      const anchors = [];
-      ctx.beginPath();
-      for (const j of D.joints) {
-        const pa = poses[j.a], pb = poses[j.b];
-        const ax = pa.ox + pa.c * j.la[0] - pa.s * j.la[1], ay = pa.oy + pa.s * j.la[0] + pa.c * j.la[1];
-        const bx = pb.ox + pb.c * j.lb[0] - pb.s * j.lb[1], by = pb.oy + pb.s * j.lb[0] + pb.c * j.lb[1];
-        ctx.moveTo(sx(pa.x), sy(pa.y));
-        ctx.lineTo(sx(ax), sy(ay));
-        ctx.lineTo(sx(bx), sy(by));
-        ctx.lineTo(sx(pb.x), sy(pb.y));
-        anchors.push(sx(ax), sy(ay), sx(bx), sy(by));
-      }
-      ctx.stroke();
-      ctx.beginPath();
-      for (let k = 0; k < anchors.length; k += 2) {
-        ctx.moveTo(anchors[k] + 3 * dpr, anchors[k + 1]);
-        ctx.arc(anchors[k], anchors[k + 1], 3 * dpr, 0, TWO_PI);
-      }
-      ctx.fill();
-    }
-
-    function drawAabbs(poses) {
-      ctx.strokeStyle = 'rgba(194, 24, 91, 0.7)';
-      ctx.lineWidth = dpr;
-      ctx.beginPath();
-      for (let b = 0; b < B; b++) {
-        const p = poses[b];
-        if (!visible(p, b)) continue;
-        for (const g of bodies[b].geoms) {
-          let x0, y0, x1, y1;
-          if (g.kind === 'circle') {
-            const cx = p.ox + p.c * g.c[0] - p.s * g.c[1], cy = p.oy + p.s * g.c[0] + p.c * g.c[1];
-            x0 = cx - g.r; x1 = cx + g.r; y0 = cy - g.r; y1 = cy + g.r;
-          } else if (g.kind !== 'polygon') {
-            const e = worldEnds(g, p), r = g.kind === 'capsule' ? g.r : 0;
-            x0 = Math.min(e[0], e[2]) - r; x1 = Math.max(e[0], e[2]) + r;
-            y0 = Math.min(e[1], e[3]) - r; y1 = Math.max(e[1], e[3]) + r;
-          } else {
-            x0 = y0 = Infinity; x1 = y1 = -Infinity;
-            for (let k = 0; k < g.p.length; k += 2) {
-              const x = p.ox + p.c * g.p[k] - p.s * g.p[k + 1], y = p.oy + p.s * g.p[k] + p.c * g.p[k + 1];
-              x0 = Math.min(x0, x); x1 = Math.max(x1, x); y0 = Math.min(y0, y); y1 = Math.max(y1, y);
-            }
-          }
-          ctx.rect(sx(x0), sy(y1), (x1 - x0) * view.scale, (y1 - y0) * view.scale);
         }
       }
       ctx.stroke();
@@ -482,75 +604,6 @@
         ctx.lineTo(x + dx - head * (ux + 0.5 * uy), y + dy - head * (uy - 0.5 * ux));
       }
       ctx.stroke();
-    }
-
-    function drawContacts(f) {
-      const k0 = contacts.start[f], k1 = contacts.start[f + 1];
-      if (k1 === k0) return;
-      ctx.strokeStyle = '#d62728';
-      ctx.fillStyle = '#d62728';
-      ctx.lineWidth = 1.5 * dpr;
-      const len = 12 * dpr;
-      ctx.beginPath();
-      for (let k = k0; k < k1; k++) {
-        const x = sx(contacts.px[k]), y = sy(contacts.py[k]);
-        ctx.moveTo(x, y);
-        ctx.lineTo(x + len * Math.cos(contacts.pa[k]), y - len * Math.sin(contacts.pa[k]));
-      }
-      ctx.stroke();
-      ctx.beginPath();
-      for (let k = k0; k < k1; k++) {
-        const x = sx(contacts.px[k]), y = sy(contacts.py[k]);
-        ctx.moveTo(x + 2.5 * dpr, y);
-        ctx.arc(x, y, 2.5 * dpr, 0, TWO_PI);
-      }
-      ctx.fill();
-    }
-
-    function drawHighlight(f, poses) {
-      for (const [b, colour] of [[selected, '#1d2330'], [hovered, '#2f5d9e']]) {
-        if (b < 0) continue;
-        ctx.strokeStyle = colour;
-        ctx.lineWidth = 2.5 * dpr;
-        ctx.beginPath();
-        addBodyPath(f, b, poses[b], true);
-        ctx.stroke();
-      }
-    }
-
-    // The topmost body whose shapes contain the world point (x, y) at frame f, or -1.
-    function bodyAt(f, x, y) {
-      for (let b = B - 1; b >= 0; b--) {
-        const p = pose(f, b);
-        if (Math.hypot(x - p.x, y - p.y) > bodies[b].radius) continue;
-        // The point in the body frame.
-        const dx = x - p.ox, dy = y - p.oy;
-        const lx = p.c * dx + p.s * dy, ly = -p.s * dx + p.c * dy;
-        for (const g of bodies[b].geoms) {
-          if (g.kind === 'circle') {
-            if (Math.hypot(lx - g.c[0], ly - g.c[1]) <= g.r) return b;
-            continue;
-          }
-          if (g.kind !== 'polygon') {
-            // Within the radius of the core segment; a line within 4 px of it.
-            const e = ends(g), dx = e[2] - e[0], dy = e[3] - e[1];
-            const t = Math.max(0, Math.min(1, ((lx - e[0]) * dx + (ly - e[1]) * dy) / (dx * dx + dy * dy)));
-            const r = g.kind === 'capsule' ? g.r : 4 * dpr / view.scale;
-            if (Math.hypot(lx - e[0] - t * dx, ly - e[1] - t * dy) <= r) return b;
-            continue;
-          }
-          let pos = 0, neg = 0;
-          const n = g.p.length;
-          for (let k = 0; k < n; k += 2) {
-            const ax = g.p[k], ay = g.p[k + 1], bx = g.p[(k + 2) % n], by = g.p[(k + 3) % n];
-            const cross = (bx - ax) * (ly - ay) - (by - ay) * (lx - ax);
-            if (cross > 0) pos++;
-            else if (cross < 0) neg++;
-          }
-          if (pos === 0 || neg === 0) return b;
-        }
-      }
-      return -1;
     }
 
     const fmt = (v, d) => (Math.abs(v) < 0.5 * Math.pow(10, -d) ? 0 : v).toFixed(d);
@@ -619,20 +672,18 @@
       resize();
       dirty = false;
       const f = frame;
-      ctx.setTransform(1, 0, 0, 1, 0, 0);
-      ctx.fillStyle = BACKGROUND;
-      ctx.fillRect(0, 0, canvas.width, canvas.height);
-      drawGrid();
+      drawing.clear(BACKGROUND);
+      drawing.drawGrid();
       const poses = new Array(B);
       for (let b = 0; b < B; b++) poses[b] = pose(f, b);
       if (show.trails) drawTrails(f);
-      drawBodies(f, poses);
-      if (show.joints) drawJoints(poses);
-      if (show.aabbs) drawAabbs(poses);
+      drawing.drawBodies(poses);
+      if (show.joints) drawing.drawJoints(D.joints, poses);
+      if (show.aabbs) drawing.drawAabbs(poses);
       if (show.velocities) drawVelocities(f);
-      if (show.contacts) drawContacts(f);
-      hovered = mouse ? bodyAt(f, wx(mouse.x * dpr), wy(mouse.y * dpr)) : -1;
-      drawHighlight(f, poses);
+      if (show.contacts) drawing.drawContacts(contacts, contacts.start[f], contacts.start[f + 1]);
+      hovered = mouse ? drawing.bodyAt((b) => pose(f, b), wx(mouse.x * dpr), wy(mouse.y * dpr)) : -1;
+      drawing.drawHighlight(poses, selected, hovered);
       showBody(f);
       drawEnergy(f);
       const t = D.frames.time[f];
@@ -752,7 +803,7 @@
     canvas.addEventListener('pointerup', (e) => {
       if (drag && !drag.moved) {
         const r = canvas.getBoundingClientRect();
-        const b = bodyAt(frame, wx((e.clientX - r.left) * dpr), wy((e.clientY - r.top) * dpr));
+        const b = drawing.bodyAt((k) => pose(frame, k), wx((e.clientX - r.left) * dpr), wy((e.clientY - r.top) * dpr));
         selected = b === selected ? -1 : b;
       }
       drag = null;
