@@ -1,0 +1,85 @@
+#!/usr/bin/env bash
+# The live sandbox (docs/viewer.md, "Live sandbox"): the library's own sources (src/tamias2d/,
+# scene reader included) and apps/wasm/sandbox_bindings.cpp compiled to WebAssembly with
+# Debian's emscripten, and one self-contained page, build-wasm/sandbox.html, that runs them.
+#   scripts/build_wasm.sh [BUILD_DIR]     (default build-wasm/)
+# Installs emscripten when em++ is missing (about 30 s on a machine that has clang 14; it is
+# not in scripts/setup.sh: nothing else needs it).
+#
+# em++ directly, not emcmake + the project's CMake: its find_package(Boost) and
+# find_package(nlohmann_json) would either fail inside emscripten's sysroot or put /usr/include
+# on the include path, whose glibc headers clash with emscripten's libc. Here only the two
+# header-only libraries are exposed, through a directory of symlinks added with -isystem.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$PWD
+out=${1:-build-wasm}
+mkdir -p "$out/obj" "$out/include/tamias2d" "$out/host"
+out=$(cd "$out" && pwd)
+
+if ! command -v em++ >/dev/null; then
+    echo "build_wasm: installing emscripten"
+    SUDO=""; [ "$(id -u)" -eq 0 ] || SUDO="sudo"
+    $SUDO apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq emscripten >/dev/null
+fi
+for p in libboost-dev nlohmann-json3-dev; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || ./scripts/setup.sh
+done
+# Debian's emscripten runs its JavaScript tools with node and finds their modules (acorn) in
+# /usr/share/nodejs, where Debian's nodejs looks by itself but another build of node does not.
+export NODE_PATH=/usr/share/nodejs${NODE_PATH:+:$NODE_PATH}
+
+ln -sfn /usr/include/boost "$out/host/boost"
+ln -sfn /usr/include/nlohmann "$out/host/nlohmann"
+version=$(sed -n 's/^project(tamias2d VERSION \([0-9.]*\).*/\1/p' CMakeLists.txt)
+IFS=. read -r major minor patch <<<"$version"
+sed -e "s/@PROJECT_VERSION_MAJOR@/$major/" -e "s/@PROJECT_VERSION_MINOR@/$minor/" \
+    -e "s/@PROJECT_VERSION_PATCH@/$patch/" -e "s/@PROJECT_VERSION@/$version/" \
+    cmake/version.hpp.in >"$out/include/tamias2d/version.hpp.new"
+cmp -s "$out/include/tamias2d/version.hpp.new" "$out/include/tamias2d/version.hpp" ||
+    mv "$out/include/tamias2d/version.hpp.new" "$out/include/tamias2d/version.hpp"
+rm -f "$out/include/tamias2d/version.hpp.new"
+
+# The flags that decide the results' bits are the native build's (src/CMakeLists.txt): no
+# contraction into fused multiply-adds, no -ffast-math. -fexceptions: the library reports bad
+# input by exceptions, which the binding turns into messages.
+# charconv_compat.hpp: floating-point to_chars/from_chars, which emscripten's libc++ lacks.
+flags=(-std=c++20 -O2 -ffp-contract=off -fexceptions -DNDEBUG
+       -I"$root/include" -I"$out/include" -I"$root/src" -isystem "$out/host"
+       -include "$root/apps/wasm/charconv_compat.hpp")
+sources=$(find src/tamias2d -name '*.cpp' | sort)
+sources="$sources apps/wasm/sandbox_bindings.cpp"
+start=$(date +%s)
+# Two compilers at a time, each object rebuilt only when its source or a header is newer.
+for s in $sources; do
+    o="$out/obj/$(echo "${s%.cpp}" | tr / _).o"
+    if [ ! -f "$o" ] || [ -n "$(find "$s" include src apps/wasm -newer "$o" -name '*.[ch]pp' -print -quit)" ]; then
+        echo "$s $o"
+    fi
+done | nice -n 5 xargs -r -P 2 -n 2 sh -c 'echo "em++ $0"; em++ '"${flags[*]}"' -c "$0" -o "$1"'
+
+exports=$(sed -n 's/^TAMIAS_EXPORT [^(]* \**\(tamias_[a-z_]*\)(.*/_\1/p' apps/wasm/sandbox_bindings.cpp |
+          paste -sd, -)
+# SINGLE_FILE: the .wasm travels inside the .js as base64, so that the page opens from disk
+# (a browser does not fetch a file beside a file:// page).
+nice -n 5 em++ "${flags[@]}" "$out"/obj/*.o -o "$out/tamias_sandbox.js" \
+    -sMODULARIZE=1 -sEXPORT_NAME=createTamiasSandbox -sALLOW_MEMORY_GROWTH=1 \
+    -sSINGLE_FILE=1 -sENVIRONMENT=web -sEXPORTED_FUNCTIONS="$exports" \
+    -sEXPORTED_RUNTIME_METHODS=ccall,cwrap,UTF8ToString
+# The same link without SINGLE_FILE gives the .wasm alone, to measure it.
+nice -n 5 em++ "${flags[@]}" "$out"/obj/*.o -o "$out/tamias_sandbox_size.js" \
+    -sMODULARIZE=1 -sEXPORT_NAME=createTamiasSandbox -sALLOW_MEMORY_GROWTH=1 \
+    -sENVIRONMENT=web -sEXPORTED_FUNCTIONS="$exports" \
+    -sEXPORTED_RUNTIME_METHODS=ccall,cwrap,UTF8ToString
+mv "$out/tamias_sandbox_size.wasm" "$out/tamias_sandbox.wasm"
+rm -f "$out/tamias_sandbox_size.js"
+
+# The page: apps/wasm/sandbox.html with the player's styles and drawing code
+# (apps/cli/player/), the module and the example scenes inlined.
+python3 apps/wasm/assemble_sandbox.py --template apps/wasm/sandbox.html \
+    --css apps/cli/player/player.css --player-js apps/cli/player/player.js \
+    --sandbox-js apps/wasm/sandbox.js --module "$out/tamias_sandbox.js" \
+    --scenes examples/scenes -o "$out/sandbox.html"
+echo "build_wasm: $out/sandbox.html ($(stat -c %s "$out/sandbox.html") bytes; wasm" \
+     "$(stat -c %s "$out/tamias_sandbox.wasm") bytes) in $(( $(date +%s) - start )) s"
