@@ -49,7 +49,7 @@ flags=(-std=c++20 -O2 -ffp-contract=off -fexceptions -DNDEBUG
        -I"$root/include" -I"$out/include" -I"$root/src" -isystem "$out/host"
        -include "$root/apps/wasm/charconv_compat.hpp")
 sources=$(find src/tamias2d -name '*.cpp' | sort)
-sources="$sources apps/wasm/sandbox_bindings.cpp"
+sources="$sources apps/cli/view_geometry.cpp apps/wasm/sandbox_bindings.cpp"
 start=$(date +%s)
 # Two compilers at a time, each object rebuilt only when its source or a header is newer.
 for s in $sources; do

@@ -19,6 +19,7 @@
 
 #include "player_assets.hpp" // generated from apps/cli/player/ by embed_player.cmake
 #include "view_deflate.hpp"
+#include "view_geometry.hpp"
 
 namespace tamias2d::cli {
 namespace {
@@ -117,17 +118,10 @@ const char* type_name(BodyType t) {
     return "dynamic";
 }
 
-/// A world point in the body frame (relative to the body origin, as shapes are placed).
-Vec2d to_body_frame(const World& world, BodyId id, Vec2d p) {
-    const Vec2d o = world.origin(id);
-    const double a = world.orientation(id);
-    const double c = std::cos(a), s = std::sin(a);
-    const Vec2d d = p - o;
-    return {c * d.x + s * d.y, -s * d.x + c * d.y};
-}
+using view::to_body_frame;
 
 json pair(Vec2d v) {
-    return json::array({v.x, v.y});
+    return view::point_json(v);
 }
 
 /// Table 2 (DCO_p, DCO_v, DCO_phi, DCO_omega): the check `run` makes on every row it writes.
@@ -204,41 +198,28 @@ Recording::Recording(const io::Scene& scene, const World& world, std::vector<Bod
         json shapes = json::array();
         for (const ShapeDef& shape : body.shapes) {
             const Geometry& g = shape.geometry;
-            json item;
+            json item = view::geometry_json(g);
             // The farthest point of the shape from the centre of mass: of a disc about `c`.
             const auto reach = [&](Vec2d c, double r) {
                 radius_[i] = std::max(radius_[i], std::hypot(c.x - lc.x, c.y - lc.y) + r);
             };
-            const auto ends = [](Vec2d a, Vec2d b) { return json::array({a.x, a.y, b.x, b.y}); };
             switch (g.type) {
             case ShapeType::circle:
-                item = {{"c", pair(g.circle.center)}, {"r", g.circle.radius}};
                 reach(g.circle.center, g.circle.radius);
                 break;
-            case ShapeType::polygon: {
-                json points = json::array();
-                for (int k = 0; k < g.polygon.count; ++k) {
-                    const Vec2d v = g.polygon.vertices[static_cast<std::size_t>(k)];
-                    points.push_back(v.x);
-                    points.push_back(v.y);
-                    reach(v, 0.0);
-                }
-                item = {{"p", std::move(points)}};
+            case ShapeType::polygon:
+                for (int k = 0; k < g.polygon.count; ++k)
+                    reach(g.polygon.vertices[static_cast<std::size_t>(k)], 0.0);
                 break;
-            }
             case ShapeType::capsule:
-                item = {{"cap", ends(g.capsule.center1, g.capsule.center2)},
-                        {"r", g.capsule.radius}};
                 reach(g.capsule.center1, g.capsule.radius);
                 reach(g.capsule.center2, g.capsule.radius);
                 break;
             case ShapeType::segment:
-                item = {{"seg", ends(g.segment.point1, g.segment.point2)}};
                 reach(g.segment.point1, 0.0);
                 reach(g.segment.point2, 0.0);
                 break;
-            case ShapeType::chain_segment: // its ghosts only matter to collisions
-                item = {{"edge", ends(g.chain_segment.point1, g.chain_segment.point2)}};
+            case ShapeType::chain_segment:
                 reach(g.chain_segment.point1, 0.0);
                 reach(g.chain_segment.point2, 0.0);
                 break;

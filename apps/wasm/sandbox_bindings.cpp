@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "../cli/view_geometry.hpp"
 #include "tamias2d/io/scene.hpp"
 #include "tamias2d/world.hpp"
 
@@ -59,9 +60,8 @@ template <class F> int guarded(F&& f) {
     return -1;
 }
 
-json pair(Vec2d v) {
-    return json::array({v.x, v.y});
-}
+using tamias2d::view::point_json;
+using tamias2d::view::to_body_frame;
 
 const char* type_name(BodyType t) {
     return t == BodyType::static_body ? "static"
@@ -70,37 +70,18 @@ const char* type_name(BodyType t) {
 }
 
 /// A body as the player's drawing code takes it (apps/cli/player/player.js): name, type,
-/// mass, inertia, local centre of mass and its shapes' geometry (circles and polygons, in the
-/// body frame; the same keys as `tamias2d view` writes).
+/// mass, inertia, local centre of mass and its shapes' geometry (in the body frame, as
+/// `tamias2d view` writes them: view_geometry.hpp).
 json body_json(const World& world, BodyId id, const std::vector<ShapeDef>& shapes) {
     json geoms = json::array();
-    for (const ShapeDef& shape : shapes) {
-        const Geometry& g = shape.geometry;
-        if (g.type == ShapeType::circle) {
-            geoms.push_back({{"c", pair(g.circle.center)}, {"r", g.circle.radius}});
-        } else if (g.type == ShapeType::polygon) {
-            json points = json::array();
-            for (int k = 0; k < g.polygon.count; ++k) {
-                points.push_back(g.polygon.vertices[static_cast<std::size_t>(k)].x);
-                points.push_back(g.polygon.vertices[static_cast<std::size_t>(k)].y);
-            }
-            geoms.push_back({{"p", std::move(points)}});
-        }
-    }
+    for (const ShapeDef& shape : shapes)
+        geoms.push_back(tamias2d::view::geometry_json(shape.geometry));
     return {{"name", world.name(id)},
             {"type", type_name(world.type(id))},
             {"m", world.mass(id)},
             {"I", world.inertia(id)},
-            {"lc", pair(world.local_center(id))},
+            {"lc", point_json(world.local_center(id))},
             {"geoms", std::move(geoms)}};
-}
-
-Vec2d body_frame(const World& world, BodyId id, Vec2d p) {
-    const Vec2d o = world.origin(id);
-    const double a = world.orientation(id);
-    const double c = std::cos(a), s = std::sin(a);
-    const Vec2d d{p.x - o.x, p.y - o.y};
-    return {c * d.x + s * d.y, -s * d.x + c * d.y};
 }
 
 /// The scene's joints, their anchors in each body's frame (as `tamias2d view` records them).
@@ -122,17 +103,17 @@ json joints_json(const Sandbox& s) {
             [&](const auto& d) {
                 using D = std::decay_t<decltype(d)>;
                 if constexpr (std::is_same_v<D, DistanceJointDef>) {
-                    la = body_frame(w, s.ids[a], d.anchor_a);
-                    lb = body_frame(w, s.ids[b], d.anchor_b);
+                    la = to_body_frame(w, s.ids[a], d.anchor_a);
+                    lb = to_body_frame(w, s.ids[b], d.anchor_b);
                 } else if constexpr (std::is_same_v<D, MotorJointDef>) {
                     la = d.linear_offset;
                 } else {
-                    la = body_frame(w, s.ids[a], d.anchor);
-                    lb = body_frame(w, s.ids[b], d.anchor);
+                    la = to_body_frame(w, s.ids[a], d.anchor);
+                    lb = to_body_frame(w, s.ids[b], d.anchor);
                 }
             },
             joint.def);
-        joints.push_back({{"a", a}, {"b", b}, {"la", pair(la)}, {"lb", pair(lb)}});
+        joints.push_back({{"a", a}, {"b", b}, {"la", point_json(la)}, {"lb", point_json(lb)}});
     }
     return joints;
 }
@@ -210,7 +191,7 @@ TAMIAS_EXPORT int tamias_load(const char* scene_json, const char* origin) {
         s.text = json{{"description", s.scene.description},
                       {"dt", s.scene.dt},
                       {"steps", s.scene.steps},
-                      {"gravity", pair(s.scene.world.gravity)},
+                      {"gravity", point_json(s.scene.world.gravity)},
                       {"bodies", std::move(bodies)},
                       {"joints", joints_json(s)}}
                      .dump(-1, ' ', false, json::error_handler_t::replace);

@@ -1,7 +1,6 @@
 #include "tamias2d/io/chain_runs.hpp"
 
-#include <bit>
-#include <cstdint>
+#include <cstring>
 
 #include "tamias2d/errors.hpp"
 
@@ -10,8 +9,9 @@ namespace tamias2d::io {
 namespace {
 
 // Bits, not values: -0 and 0 differ in the file, and the round trip is promised bit for bit.
+// (memcmp, not std::bit_cast: the WebAssembly build's libc++ has no bit_cast.)
 bool same(double a, double b) {
-    return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+    return std::memcmp(&a, &b, sizeof a) == 0;
 }
 bool same(Vec2d a, Vec2d b) {
     return same(a.x, b.x) && same(a.y, b.y);
