@@ -83,6 +83,9 @@ struct PlainOps {
     template <class V> static V impulse_to_reach(V vn, V target, V m) {
         return -(vn - target) * m; // DD8
     }
+    template <class V> static V soft_impulse(V mass_scale, V rigid, V impulse_scale, V acc) {
+        return rigid * mass_scale - acc * impulse_scale; // IM7
+    }
 };
 
 // ------------------------------------------------------------------------------- the loop

@@ -4,7 +4,7 @@
 // lane (WideContactConstraint, WideBody; see wide_contact_solver.cpp). The field names of the
 // two constraint and body types match, and both points are always processed: an unused second
 // point is all zeros and changes nothing. Every formula is a call into the model layer through
-// Model (bridge::Model: DD8, DD9, DD11, IM3 on Boost.Units quantities); the benchmark also
+// Model (bridge::Model: DD8, DD9, DD11, IM3, IM7 on Boost.Units quantities); the benchmark also
 // instantiates the iteration with the same formulas on plain doubles, to show that the typing
 // costs nothing (verification/bench/typing_kernel.hpp).
 #pragma once
@@ -32,8 +32,9 @@ V current_separation(const Point& cp, const Body& a, const Body& b, Vec2<V> n) {
            (dot(b.dp - a.dp, n) + (b.dq * cp.normal_arm_b - a.dq * cp.normal_arm_a));
 }
 
-/// Normal velocity the point must reach in this iteration (m s^-1): a speculative gap may be
-/// closed within the substep; with bias, an overlap beyond the slop is pushed out softly.
+/// \srs{IM7} Normal velocity the point must reach in this iteration (m s^-1): a speculative gap
+/// may be closed within the substep; with bias, an overlap beyond the slop is pushed out softly.
+/// (Lane selects and clamps on V: written here, not in model/, which has no packs of lanes.)
 template <class V> struct NormalTarget {
     V target{};
     V mass_scale{};
@@ -88,8 +89,9 @@ V point_update(const Constraint& c, int j, const Body& a, const Body& b,
                const NormalTarget<V>& nt) {
     const auto& cp = c.points[j];
     const V vn = Model::relative_velocity(a, b, cp.normal_arm_a, cp.normal_arm_b, c.normal);
-    const V lambda = nt.mass_scale * Model::impulse_to_reach(vn, nt.target, cp.normal_mass) -
-                     nt.impulse_scale * cp.normal_impulse;
+    const V lambda =
+        Model::soft_impulse(nt.mass_scale, Model::impulse_to_reach(vn, nt.target, cp.normal_mass),
+                            nt.impulse_scale, cp.normal_impulse);
     return max(cp.normal_impulse + lambda, broadcast<V>(0.0));
 }
 

@@ -23,6 +23,7 @@
 #include "tamias2d/model/im2_rotational_motion.hpp"
 #include "tamias2d/model/im3_collision_response.hpp"
 #include "tamias2d/model/im5_motion_with_damping.hpp"
+#include "tamias2d/model/im7_soft_contact.hpp"
 
 namespace tamias2d::bridge {
 
@@ -163,6 +164,13 @@ inline void apply_impulse(Body& a, Body& b, V arm_a, V arm_b, u::Vec2<V> dir, V 
     m::im3::VelocitiesOver<V> va = velocities(a);
     m::im3::VelocitiesOver<V> vb = velocities(b);
     m::im3::apply_impulse(vb, va, inverse_inertia(b), inverse_inertia(a),
+/// IM7's soft impulse (N s): the rigid impulse scaled, minus the relaxed accumulated share.
+template <class V> inline V soft_impulse(V mass_scale, V rigid, V impulse_scale, V accumulated) {
+    return m::im7::soft_impulse(mass_scale, typed_value<u::Impulse>(rigid), impulse_scale,
+                                typed_value<u::Impulse>(accumulated))
+        .value();
+}
+
                           typed_value<u::Length>(arm_b), typed_value<u::Length>(arm_a), dir,
                           typed_value<u::Impulse>(lambda));
     a.v = plain_vec(va.v);
@@ -334,7 +342,7 @@ inline double clamp_axial_impulse(double accumulated, double max) {
         .value();
 }
 
-/// The three adapters the contact iteration calls, as one type it is instantiated with
+/// The four adapters the contact iteration calls, as one type it is instantiated with
 /// (contact_iteration.hpp's Model parameter).
 struct Model {
     template <class V> static V impulse_to_reach(V vn, V target, V effective_mass) {
@@ -351,3 +359,7 @@ struct Model {
 };
 
 } // namespace tamias2d::bridge
+    template <class V>
+    static V soft_impulse(V mass_scale, V rigid, V impulse_scale, V accumulated) {
+        return bridge::soft_impulse(mass_scale, rigid, impulse_scale, accumulated);
+    }

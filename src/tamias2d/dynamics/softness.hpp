@@ -3,7 +3,7 @@
 // which removes overlap smoothly instead of Baumgarte's energy-adding kicks.
 #pragma once
 
-#include <numbers>
+#include "tamias2d/model/im7_soft_contact.hpp"
 
 namespace tamias2d {
 
@@ -13,14 +13,21 @@ struct Softness {
     double impulse_scale = 0.0; ///< fraction of the accumulated impulse relaxed away
 };
 
+/// IM7's coefficients (model/im7_soft_contact.hpp), unwrapped; once per step and constraint.
 inline Softness make_softness(double hertz, double damping_ratio, double h) {
-    if (hertz == 0.0)
-        return {};
-    const double omega = 2.0 * std::numbers::pi * hertz;
-    const double a1 = 2.0 * damping_ratio + h * omega;
-    const double a2 = h * omega * a1;
-    const double a3 = 1.0 / (1.0 + a2);
-    return {omega / a1, a2 * a3, a3};
+    namespace u = tamias2d::units;
+    const model::im7::Softness s = model::im7::softness(
+        u::from_value<u::Rate>(hertz), u::from_value<u::Dimensionless>(damping_ratio),
+        u::from_value<u::Time>(h));
+    return {s.bias_rate.value(), s.mass_scale.value(), s.impulse_scale.value()};
+}
+
+/// IM7's frequency cap: a quarter of the substep rate (Hz).
+inline double capped_frequency(double hertz, int substeps, double dt) {
+    namespace u = tamias2d::units;
+    return model::im7::frequency(u::from_value<u::Rate>(hertz), substeps,
+                                 u::from_value<u::Time>(dt))
+        .value();
 }
 
 } // namespace tamias2d

@@ -149,7 +149,7 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
     std::vector<Joint>& joints = joint_store.joints;
     // IM6: the joints' soft bias, capped like the contacts' at a quarter of the substep rate.
     const Softness joint_softness =
-        make_softness(std::min(def.joint_hertz, 0.25 * n / dt), def.joint_damping_ratio, h);
+        make_softness(capped_frequency(def.joint_hertz, n, dt), def.joint_damping_ratio, h);
     // The touching manifolds in creation order, as the colouring sees them; those that can
     // bounce get a slot for the restitution pass's copy, also in creation order.
     edges_.clear();
@@ -225,7 +225,7 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
     st.inv_h = 1.0 / h;
     // The contact spring is kept below a quarter of the substep rate to stay stable.
     st.softness =
-        make_softness(std::min(def.contact_hertz, 0.25 * n / dt), def.contact_damping_ratio, h);
+        make_softness(capped_frequency(def.contact_hertz, n, dt), def.contact_damping_ratio, h);
     st.linear_slop = def.linear_slop;
     st.push_max_velocity = def.contact_push_max_velocity;
     st.restitution_threshold = def.restitution_threshold;
