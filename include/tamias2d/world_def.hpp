@@ -6,10 +6,14 @@
 
 namespace tamias2d {
 
+/// The SRS's value of the magnitude of g (m s^-2, GD2 and erratum E30). Stated here, where the
+/// default gravity needs it without the model layer's units; model::gd2::g_srs is this value.
+inline constexpr double srs_gravity = 9.81;
+
 /// The settings of a World: gravity, the soft step's substeps and contact softness, and
 /// sleeping. Checked when the World is made (SRS R4).
 struct WorldDef {
-    Vec2d gravity{0.0, -9.81}; ///< m s^-2 (GD2; the SRS's g = 9.81 m s^-2)
+    Vec2d gravity{0.0, -srs_gravity}; ///< m s^-2 (GD2; the SRS's g, srs_gravity)
     /// Substeps per step (soft step). IM1/IM2 are integrated with h = dt / substeps.
     int substeps = 4;
     /// Contact softness: stiffness (Hz) and damping ratio of the soft contact constraint that

@@ -61,9 +61,6 @@ void validate_size(std::string_view field, double value) {
 }
 
 namespace {
-double cross(Vec2d a, Vec2d b) {
-    return a.x * b.y - a.y * b.x;
-}
 /// Distance from p to the line through a and b, as make_polygon computes it.
 double distance_to_line(Vec2d a, Vec2d b, Vec2d p) {
     return std::abs(cross(b - a, p - a)) / length(b - a);

@@ -68,6 +68,29 @@ inline double angular_acceleration(double torque, double inertia) {
                                         u::from_value<u::MomentOfInertia>(inertia))
         .value();
 }
+/// IM1's velocity half over a substep: v + a h (DD4).
+inline Vec2d velocity_half(Vec2d v, Vec2d a, double h) {
+    return plain(m::im1::velocity_half(typed<u::Velocity>(v), typed<u::Acceleration>(a),
+                                       u::from_value<u::Time>(h)));
+}
+/// IM2's velocity half over a substep: omega + alpha h (DD7).
+inline double angular_velocity_half(double w, double alpha, double h) {
+    return m::im2::velocity_half(u::from_value<u::AngularVelocity>(w),
+                                 u::from_value<u::AngularAcceleration>(alpha),
+                                 u::from_value<u::Time>(h))
+        .value();
+}
+/// IM1's position half over a substep: p + v h with the new velocity (DD3).
+inline Vec2d position_half(Vec2d p, Vec2d v, double h) {
+    return plain(m::im1::position_half(typed<u::Length>(p), typed<u::Velocity>(v),
+                                       u::from_value<u::Time>(h)));
+}
+/// IM2's position half over a substep: phi + omega h with the new angular velocity (DD6).
+inline double angle_half(double phi, double w, double h) {
+    return m::im2::position_half(u::from_value<u::Angle>(phi), u::from_value<u::AngularVelocity>(w),
+                                 u::from_value<u::Time>(h))
+        .value();
+}
 /// DD4 over a substep: dv = a h.
 inline Vec2d velocity_change(Vec2d a, double h) {
     return plain(
@@ -141,6 +164,13 @@ template <class V> inline V impulse_to_reach(V vn, V target, V effective_mass) {
         .value();
 }
 
+/// IM7's soft impulse (N s): the rigid impulse scaled, minus the relaxed accumulated share.
+template <class V> inline V soft_impulse(V mass_scale, V rigid, V impulse_scale, V accumulated) {
+    return m::im7::soft_impulse(mass_scale, typed_value<u::Impulse>(rigid), impulse_scale,
+                                typed_value<u::Impulse>(accumulated))
+        .value();
+}
+
 // The manifold normal points from A into B; IM3's n points from its "B" into its "A" (A is
 // pushed along +n). So IM3's A is the manifold's B and vice versa in the two adapters below.
 
@@ -164,13 +194,6 @@ inline void apply_impulse(Body& a, Body& b, V arm_a, V arm_b, u::Vec2<V> dir, V 
     m::im3::VelocitiesOver<V> va = velocities(a);
     m::im3::VelocitiesOver<V> vb = velocities(b);
     m::im3::apply_impulse(vb, va, inverse_inertia(b), inverse_inertia(a),
-/// IM7's soft impulse (N s): the rigid impulse scaled, minus the relaxed accumulated share.
-template <class V> inline V soft_impulse(V mass_scale, V rigid, V impulse_scale, V accumulated) {
-    return m::im7::soft_impulse(mass_scale, typed_value<u::Impulse>(rigid), impulse_scale,
-                                typed_value<u::Impulse>(accumulated))
-        .value();
-}
-
                           typed_value<u::Length>(arm_b), typed_value<u::Length>(arm_a), dir,
                           typed_value<u::Impulse>(lambda));
     a.v = plain_vec(va.v);
@@ -348,6 +371,10 @@ struct Model {
     template <class V> static V impulse_to_reach(V vn, V target, V effective_mass) {
         return bridge::impulse_to_reach(vn, target, effective_mass);
     }
+    template <class V>
+    static V soft_impulse(V mass_scale, V rigid, V impulse_scale, V accumulated) {
+        return bridge::soft_impulse(mass_scale, rigid, impulse_scale, accumulated);
+    }
     template <class Body, class V = value_of<Body>>
     static V relative_velocity(const Body& a, const Body& b, V arm_a, V arm_b, u::Vec2<V> dir) {
         return bridge::relative_velocity(a, b, arm_a, arm_b, dir);
@@ -359,7 +386,3 @@ struct Model {
 };
 
 } // namespace tamias2d::bridge
-    template <class V>
-    static V soft_impulse(V mass_scale, V rigid, V impulse_scale, V accumulated) {
-        return bridge::soft_impulse(mass_scale, rigid, impulse_scale, accumulated);
-    }

@@ -85,8 +85,8 @@ void StepSolver::integrate_velocities(double h) {
     }
     for (std::size_t k = 1; k < solver_bodies_.size(); ++k) {
         SolverBody& sb = solver_bodies_[k];
-        sb.v += bridge::velocity_change(accelerations_[k], h);
-        sb.w += bridge::angular_velocity_change(angular_accelerations_[k], h);
+        sb.v = bridge::velocity_half(sb.v, accelerations_[k], h);
+        sb.w = bridge::angular_velocity_half(sb.w, angular_accelerations_[k], h);
     }
 }
 
@@ -248,8 +248,8 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
         // IM1/IM2, position half with the new velocities (DD3, DD6).
         for (std::size_t k = 1; k < nb; ++k) {
             SolverBody& sb = solver_bodies_[k];
-            sb.dp += bridge::displacement(sb.v, h);
-            sb.dq += bridge::rotation(sb.w, h);
+            sb.dp = bridge::position_half(sb.dp, sb.v, h);
+            sb.dq = bridge::angle_half(sb.dq, sb.w, h);
         }
         turn_joints(joints);
         for (Joint& j : joints) {

@@ -3,19 +3,17 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tamias2d/model/t5_collision_detection.hpp"
+
 namespace tamias2d {
 namespace {
 
 bool contains(const Circle& c, Vec2d local) {
-    const Vec2d d = local - c.center;
-    return dot(d, d) <= c.radius * c.radius;
+    return model::t5::contains(c.center, c.radius, local);
 }
 
 bool contains(const Polygon& p, Vec2d local) {
-    for (int i = 0; i < p.count; ++i)
-        if (dot(p.normals[i], local - p.vertices[i]) > 0.0)
-            return false;
-    return true;
+    return model::t5::contains(p.vertices.data(), p.normals.data(), p.count, local);
 }
 
 /// The point of segment a -> b nearest p.

@@ -11,7 +11,9 @@ inline Vec2<Impulse> impulse(Mass m, Vec2<Velocity> dv) {
 
 /// \srs{DD10} The same law solved for the velocity change: dv = J / m (with 1/m = 0 for a
 /// static body).
-inline Vec2<Velocity> velocity_change(Vec2<Impulse> J, InverseMass inv_m) {
+/// (V: double, or a pack of lanes.)
+template <class V>
+Vec2<Over<Velocity, V>> velocity_change(Vec2<Over<Impulse, V>> J, Over<InverseMass, V> inv_m) {
     return inv_m * J;
 }
 

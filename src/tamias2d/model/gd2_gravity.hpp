@@ -1,11 +1,13 @@
 #pragma once
 #include "tamias2d/units/vec2.hpp"
+#include "tamias2d/world_def.hpp"
 
 namespace tamias2d::model::gd2 {
 using namespace tamias2d::units;
 
-/// The SRS's standard gravitational acceleration magnitude g (section 2.2): 9.81 m s^-2.
-inline const Acceleration g_srs = 9.81 * metre / (second * second);
+/// The SRS's standard gravitational acceleration magnitude g (section 2.2): 9.81 m s^-2, the
+/// value the public WorldDef's default gravity also uses (one literal, in world_def.hpp).
+inline const Acceleration g_srs = srs_gravity * metre / (second * second);
 
 /// SRS GD2 writes g = [-g_x, -g_y] with g_x, g_y the magnitudes pulling along -x and -y.
 inline Vec2<Acceleration> gravity_vector(Acceleration g_x, Acceleration g_y) {

@@ -17,13 +17,24 @@ struct TranslationalState {
     Vec2<Velocity> v;
 };
 
-/// \srs{IM1} One step of the semi-implicit (symplectic) Euler scheme for IM1, first order:
-/// v(t + dt) = v(t) + a(t) dt (DD4), then p(t + dt) = p(t) + v(t + dt) dt (DD3).
-/// The velocity is updated first so the scheme conserves a discrete energy for conservative
-/// forces (no drift in orbits or springs), which explicit Euler does not.
+/// \srs{IM1} The velocity half of the step: v(t + dt) = v(t) + a(t) dt (DD4).
+inline Vec2<Velocity> velocity_half(Vec2<Velocity> v, Vec2<Acceleration> a, Time dt) {
+    return v + dd04::velocity_change_over(a, dt);
+}
+
+/// \srs{IM1} The position half, with the velocity at the step's end: p + v(t + dt) dt (DD3).
+/// The engine runs the two halves with its contact and joint iterations between them.
+inline Vec2<Length> position_half(Vec2<Length> p, Vec2<Velocity> v_end, Time dt) {
+    return p + dd03::displacement_over(v_end, dt);
+}
+
+/// \srs{IM1} One step of the semi-implicit (symplectic) Euler scheme for IM1, first order: the
+/// velocity half, then the position half with the new velocity. The velocity is updated first
+/// so the scheme conserves a discrete energy for conservative forces (no drift in orbits or
+/// springs), which explicit Euler does not.
 inline TranslationalState step(TranslationalState s, Vec2<Acceleration> a, Time dt) {
-    const Vec2<Velocity> v = s.v + dd04::velocity_change_over(a, dt);
-    return {s.p + dd03::displacement_over(v, dt), v};
+    const Vec2<Velocity> v = velocity_half(s.v, a, dt);
+    return {position_half(s.p, v, dt), v};
 }
 
 } // namespace tamias2d::model::im1

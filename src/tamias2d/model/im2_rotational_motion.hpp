@@ -16,11 +16,21 @@ struct RotationalState {
     AngularVelocity omega;
 };
 
-/// \srs{IM2} One semi-implicit Euler step, the rotational twin of im1::step:
-/// omega(t + dt) = omega(t) + alpha dt (DD7), phi(t + dt) = phi(t) + omega(t + dt) dt (DD6).
+/// \srs{IM2} The velocity half: omega(t + dt) = omega(t) + alpha dt (DD7).
+inline AngularVelocity velocity_half(AngularVelocity omega, AngularAcceleration alpha, Time dt) {
+    return omega + dd07::angular_velocity_change_over(alpha, dt);
+}
+
+/// \srs{IM2} The position half: phi(t + dt) = phi(t) + omega(t + dt) dt (DD6).
+inline Angle position_half(Angle phi, AngularVelocity omega_end, Time dt) {
+    return phi + dd06::angle_over(omega_end, dt);
+}
+
+/// \srs{IM2} One semi-implicit Euler step, the rotational twin of im1::step: the velocity
+/// half, then the position half with the new angular velocity.
 inline RotationalState step(RotationalState s, AngularAcceleration alpha, Time dt) {
-    const AngularVelocity omega = s.omega + dd07::angular_velocity_change_over(alpha, dt);
-    return {s.phi + dd06::angle_over(omega, dt), omega};
+    const AngularVelocity omega = velocity_half(s.omega, alpha, dt);
+    return {position_half(s.phi, omega, dt), omega};
 }
 
 } // namespace tamias2d::model::im2

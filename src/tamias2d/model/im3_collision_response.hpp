@@ -1,7 +1,9 @@
 #pragma once
 #include "tamias2d/model/dd08_collision_impulse.hpp"
 #include "tamias2d/model/dd09_chasles_theorem.hpp"
+#include "tamias2d/model/dd10_impulse.hpp"
 #include "tamias2d/model/dd11_relative_velocity.hpp"
+#include "tamias2d/model/t2_newtons_third_law.hpp"
 
 namespace tamias2d::model::im3 {
 using namespace tamias2d::units;
@@ -19,16 +21,18 @@ using Velocities = VelocitiesOver<double>;
 /// \srs{IM3} Applies a normal impulse j n at P to A and -j n to B (T2):
 /// v_A' = v_A + j n / m_A, v_B' = v_B - j n / m_B,
 /// omega_A' = omega_A + (r_AP x j n) / I_A, omega_B' = omega_B - (r_BP x j n) / I_B,
-/// with r x (j n) = j (r x n) from the moment arms arm_A = r_AP x n, arm_B = r_BP x n (DD8).
+/// with r x (j n) = j (r x n) from the moment arms arm_A = r_AP x n, arm_B = r_BP x n (DD8);
+/// the velocity jumps are DD10's J / m, B's those of T2's reaction to A's impulse (negated
+/// last, so that the optimiser folds it into a subtraction: no extra instruction).
 template <class V>
 void apply_impulse(VelocitiesOver<V>& A, VelocitiesOver<V>& B, InverseInertiaOver<V> a,
                    InverseInertiaOver<V> b, Over<Length, V> arm_A, Over<Length, V> arm_B, Vec2<V> n,
                    Over<Impulse, V> j) {
     const Vec2<Over<Impulse, V>> J = j * n;
-    A.v += a.inv_m * J;
-    B.v -= b.inv_m * J;
+    A.v += dd10::velocity_change(J, a.inv_m);
+    B.v += t2::reaction(dd10::velocity_change(J, b.inv_m));
     A.omega += a.inv_I * per_radian(j * arm_A);
-    B.omega -= b.inv_I * per_radian(j * arm_B);
+    B.omega += t2::reaction(b.inv_I * per_radian(j * arm_B));
 }
 
 /// \srs{IM3} The same from the anchors r_AP, r_BP.

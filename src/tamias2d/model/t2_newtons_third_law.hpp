@@ -6,7 +6,8 @@ using namespace tamias2d::units;
 
 /// \srs{T2} Newton's third law: the force on body 1 from body 2 is F1 = -F2, where F2 is the
 /// force on body 2 from body 1. Also holds for impulses (integrated over the same interval).
-template <class Q> constexpr Vec2<Q> reaction(Vec2<Q> action) {
+/// (Q: a vector, or a scalar such as the moment of an impulse about z.)
+template <class Q> constexpr Q reaction(Q action) {
     return -action;
 }
 
