@@ -47,6 +47,8 @@ def parse_args(argv):
     p.add_argument("--junit-level", default="message",
                    help="Boost.Test JUnit log level (default 'message': every case, failures, messages; "
                         "'all' also logs each passing assertion and can reach tens of MB)")
+    p.add_argument("--commit", default=None,
+                   help="commit the verification results must be of (default: the source's git HEAD)")
     p.add_argument("--date", default=None, help="timestamp to print (default: now, or SOURCE_DATE_EPOCH)")
     p.add_argument("--quiet", action="store_true")
     return p.parse_args(argv)
@@ -110,7 +112,17 @@ def build(args, log=print):
         run_manifest = tinfo.get("manifest")
 
     programs, cov = vvdata.load_data_dir(data_dir, warnings)
-    tests += vvdata.checks_as_tests(programs)
+    source_info = git_info(source)
+    source_commit = args.commit or source_info["git_commit"]
+    build_prov = vvdata.load_build_provenance(build_dir)
+    if build_prov is None:
+        warnings.append(f"no {os.path.join(build_dir, 'provenance.json')}: the results' build ids "
+                        "were not compared with the build's")
+    if not source_commit:
+        warnings.append("the checkout's commit is unknown: the results' commits were not compared")
+    expected = [str(x) for x in config.get("expected_programs") or []]
+    missing = vvdata.judge_provenance(programs, expected, build_prov, source_commit)
+    tests += vvdata.checks_as_tests(programs, missing)
     seen = {}
     for t in tests:  # ids must be unique (anchors, item -> test references)
         n = seen.get(t["id"], 0) + 1
@@ -120,7 +132,7 @@ def build(args, log=print):
             t["id"] = f"{t['id']}#{n}"
     for p in programs:
         for c in p["checks"]:
-            c["status"] = ("passed" if c.get("passed") is True
+            c["status"] = ("error" if p.get("refused") else "passed" if c.get("passed") is True
                            else "target-missed" if c.get("target") else "failed")
     vvdata.render_plots(programs, out, warnings)
 
@@ -138,7 +150,7 @@ def build(args, log=print):
         "schema": "tamias2d-traceability",
         "schema_version": SCHEMA_VERSION,
         "generated": timestamp(args.date),
-        "source": git_info(source),
+        "source": source_info,
         "inputs": {"srs_dir": srs_dir, "srs_files": srs.files, "build_dir": build_dir,
                    "results_dir": results_dir, "data_dir": data_dir, "out_dir": out,
                    "ran_tests": not args.no_run, "seed_tables": os.path.abspath(args.seed_tables)},
@@ -170,6 +182,10 @@ def build(args, log=print):
         "checker": checker,
         "graphs": gr,
         "verification": programs,
+        "provenance": {"build": build_prov, "source_commit": source_commit,
+                       "expected_programs": expected, "missing_programs": missing,
+                       "refused": [{"program": p["program"], "file": p["file"],
+                                    "reason": p["refused"]} for p in programs if p.get("refused")]},
         "coverage": vvdata.coverage_summary(cov),
         "run": run_manifest,
         "warnings": warnings,

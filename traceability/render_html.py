@@ -567,6 +567,15 @@ are labelled with are judged by their other checks:""", g.get("targets_missed"))
         r = self.r
         self.w('<section id="vv"><h2>7. Verification and validation evidence</h2>')
         progs = r["verification"]
+        prov = r.get("provenance") or {}
+        b = prov.get("build") or {}
+        self.w('<p class="small">Results are accepted only from the checkout\'s commit '
+               f'(<code>{E(str(prov.get("source_commit") or "unknown")[:12])}</code>) and, for built '
+               f'programs, the build directory\'s build id (<code>{E(str(b.get("build_id") or "unknown"))}</code>); '
+               f'expected programs: {E(", ".join(prov.get("expected_programs") or []) or "none")}'
+               + (f'; <b>missing: {E(", ".join(prov["missing_programs"]))}</b>' if prov.get("missing_programs") else "")
+               + (f'; <b>refused: {E(", ".join(x["program"] for x in prov["refused"]))}</b>' if prov.get("refused") else "")
+               + '.</p>')
         if not progs:
             self.w('<p class="note">No verification results in <code>reports/data/*.json</code>.</p>')
         else:
@@ -578,6 +587,13 @@ are labelled with are judged by their other checks:""", g.get("targets_missed"))
                    f'<span class="small mute">(data/{E(p["file"])})</span></p>')
             if p["invalid"]:
                 self.w('<p class="note">Schema problems: ' + E("; ".join(p["invalid"])) + '</p>')
+            if p.get("refused"):
+                self.w('<p class="note">Refused as evidence: ' + E(p["refused"]) + '</p>')
+            pv = p.get("provenance") or {}
+            if pv:
+                self.w(f'<p class="small mute">Commit {E(str(pv.get("commit"))[:12])}'
+                       f'{" (dirty)" if pv.get("dirty") else ""}, build {E(str(pv.get("build_id")))}, '
+                       f'run {E(str(pv.get("generated")))}</p>')
             if p["checks"]:
                 self.w('<table class="data sortable"><thead><tr><th>Check</th><th>Labels</th><th>Status</th>'
                        '<th>Oracle</th><th>Details</th></tr></thead><tbody>')

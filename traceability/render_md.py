@@ -131,6 +131,12 @@ def render(r):
     w(f"srs/check_srs.py cross-check: {r['checker']['message']}" +
       (f"; {'agrees' if ag['agrees'] else 'DIFFERS'}: {ag['summary']}" if ag else "") + "\n")
     w("## 7. V&V evidence\n")
+    prov = r.get("provenance") or {}
+    w(f"Accepted only from commit {str(prov.get('source_commit') or 'unknown')[:12]} and build "
+      f"{(prov.get('build') or {}).get('build_id') or 'unknown'}; expected programs: "
+      f"{', '.join(prov.get('expected_programs') or []) or 'none'}; missing: "
+      f"{', '.join(prov.get('missing_programs') or []) or 'none'}; refused: "
+      f"{', '.join(x['program'] + ' (' + x['reason'] + ')' for x in prov.get('refused') or []) or 'none'}.\n")
     if not r["verification"]:
         w("No verification results in reports/data/.\n")
     for p in r["verification"]:

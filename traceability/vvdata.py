@@ -68,17 +68,65 @@ def load_data_dir(data_dir, warnings):
             warnings.append(f"data/{fn}: does not follow the verification schema: " + "; ".join(errs[:5]))
         if not isinstance(doc, dict):
             doc = {}
+        prov = doc.get("provenance")
         programs.append({"file": fn, "program": str(doc.get("program") or fn),
                          "description": doc.get("description", ""), "invalid": errs,
+                         "provenance": prov if isinstance(prov, dict) else None, "refused": None,
                          "checks": [c for c in doc.get("checks") or [] if isinstance(c, dict)],
                          "tables": [t for t in doc.get("tables") or [] if isinstance(t, dict)],
                          "series": [s for s in doc.get("series") or [] if isinstance(s, dict)]})
     return programs, coverage
 
 
-def checks_as_tests(programs):
-    tests = []
+def load_build_provenance(build_dir):
+    """<build>/provenance.json (cmake/TamiasProvenance.cmake), or None."""
+    path = os.path.join(build_dir, "provenance.json")
+    try:
+        with open(path, encoding="utf-8") as fh:
+            doc = json.load(fh)
+    except (OSError, ValueError):
+        return None
+    return doc if isinstance(doc, dict) else None
+
+
+def judge_provenance(programs, expected, build_prov, source_commit):
+    """Refuses results that are not of this checkout and build; returns the expected programs
+    that left no results. Sets p["refused"] (a reason) on each refused program.
+
+    A program's results are refused when they carry no provenance, when their commit is not
+    the checkout's (source_commit, when known), or when their build id (null for a script) is
+    not the build directory's (build_prov, when known)."""
     for p in programs:
+        prov = p.get("provenance")
+        if p.get("invalid") and not p["checks"]:
+            continue  # already an error: unreadable
+        if not prov or not prov.get("commit") or "build_id" not in prov or not prov.get("generated"):
+            p["refused"] = "no provenance (commit, build id, time): results of unknown origin"
+        elif source_commit and prov["commit"] != source_commit:
+            p["refused"] = (f"stale: results of commit {str(prov['commit'])[:12]}, the checkout is "
+                            f"{source_commit[:12]}")
+        elif build_prov and prov.get("build_id") is not None and \
+                prov["build_id"] != build_prov.get("build_id"):
+            p["refused"] = (f"stale: results of build {prov['build_id']}, the build directory is "
+                            f"build {build_prov.get('build_id')}")
+    present = {p["program"] for p in programs}
+    return [name for name in expected if name not in present]
+
+
+def checks_as_tests(programs, missing=()):
+    tests = []
+    for name in missing:
+        tests.append({"id": f"{name}:<results file>", "name": "<results file>",
+                      "origin": "verification", "binary": name, "status": "error", "labels": [],
+                      "oracle": None, "file": None, "line": None,
+                      "details": f"expected results missing: no data/*.json of program {name}",
+                      "samples": None, "enabled": True})
+    for p in programs:
+        if p.get("refused"):
+            tests.append({"id": f"{p['program']}:<provenance>", "name": "<provenance>",
+                          "origin": "verification", "binary": p["program"], "status": "error",
+                          "labels": [], "oracle": None, "file": f"data/{p['file']}", "line": None,
+                          "details": "refused: " + p["refused"], "samples": None, "enabled": True})
         if p["invalid"] and not p["checks"]:
             # An unreadable result file is evidence of a broken verification run.
             tests.append({"id": f"{p['program']}:<results file>", "name": "<results file>",
@@ -91,12 +139,15 @@ def checks_as_tests(programs):
             # missed it is listed as such, apart from the failures that gate the exit status.
             target = c.get("target")
             status = "passed" if passed is True else ("target-missed" if target else "failed")
+            details = str(c.get("details") or "")
+            if p.get("refused"):  # no evidence, whatever it says
+                status, details = "error", f"refused ({p['refused']}): {details}"
             tests.append({"id": f"{p['program']}:{c.get('name')}", "name": str(c.get("name")),
                           "origin": "verification", "binary": p["program"],
                           "status": status, "target": str(target) if target else None,
                           "labels": [str(x) for x in c.get("labels") or []],
                           "oracle": c.get("oracle"), "file": f"data/{p['file']}", "line": None,
-                          "details": str(c.get("details") or ""), "samples": None, "enabled": True})
+                          "details": details, "samples": None, "enabled": True})
     return tests
 
 

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdio>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -14,7 +15,23 @@
 
 #include <nlohmann/json.hpp>
 
+#include "provenance.hpp"
+
 namespace tamias2d::evidence {
+
+/// The "provenance" object of a results file: the build's commit and id, and the time now
+/// (UTC), so that the report can refuse results left over from another commit or build.
+inline nlohmann::json provenance() {
+    const BuildProvenance b = build_provenance();
+    char now[32];
+    const std::time_t t = std::time(nullptr);
+    std::strftime(now, sizeof now, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&t));
+    return {{"commit", b.commit},
+            {"dirty", b.dirty},
+            {"build_id", b.build_id},
+            {"built", b.built},
+            {"generated", now}};
+}
 
 /// A number for a details text: `prec` significant digits.
 inline std::string fmt(double v, int prec = 3) {
@@ -57,11 +74,9 @@ struct Report {
     /// Writes <out_dir>/<program>.json; the exit status: 0 when every check passed.
     int write(const std::filesystem::path& out_dir, const std::string& program,
               const std::string& description) const {
-        const json doc = {{"program", program},
-                          {"description", description},
-                          {"checks", checks},
-                          {"tables", tables},
-                          {"series", series}};
+        const json doc = {{"program", program},         {"description", description},
+                          {"provenance", provenance()}, {"checks", checks},
+                          {"tables", tables},           {"series", series}};
         std::filesystem::create_directories(out_dir);
         const std::filesystem::path file = out_dir / (program + ".json");
         std::ofstream(file) << doc.dump(2) << "\n";

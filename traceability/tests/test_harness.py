@@ -18,6 +18,9 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 FIX = os.path.join(HERE, "fixtures")
 REPO = os.path.join(FIX, "repo")
 SCRIPT = os.path.join(os.path.dirname(HERE), "build_report.py")
+FIX_CONFIG = os.path.join(FIX, "config.yaml")
+# The commit the fixture's verification results carry (data/peer_compare.json).
+FIX_COMMIT = "f1x7f1x7f1x7f1x7f1x7f1x7f1x7f1x7f1x7f1x7"
 HAVE_DOT = shutil.which("dot") is not None
 
 
@@ -25,7 +28,8 @@ def run_harness(repo, out, extra=()):
     argv = ["--source", repo, "--build", os.path.join(repo, "no-build"), "--out", out,
             "--results", os.path.join(repo, "results"), "--data", os.path.join(repo, "data"),
             "--no-run", "--no-checker", "--seed-tables", os.path.join(FIX, "seed_tables.yaml"),
-            "--date", "2000-01-01 00:00 UTC", "--quiet", *extra]
+            "--date", "2000-01-01 00:00 UTC", "--quiet", "--config", FIX_CONFIG,
+            "--commit", FIX_COMMIT, *extra]
     return build_report.main(argv)
 
 
@@ -224,6 +228,82 @@ class GreenFixture(unittest.TestCase):
             shutil.rmtree(tmp, ignore_errors=True)
 
 
+class Provenance(unittest.TestCase):
+    """Results of another commit or build, without provenance, or missing are refused."""
+
+    def _run(self, edit_doc=None, build_prov=None, config_extra=""):
+        tmp = tempfile.mkdtemp(prefix="trace-prov-")
+        self.addCleanup(shutil.rmtree, tmp, True)
+        repo = os.path.join(tmp, "repo")
+        shutil.copytree(REPO, repo)
+        path = os.path.join(repo, "data", "peer_compare.json")
+        with open(path, encoding="utf-8") as fh:
+            doc = json.load(fh)
+        if edit_doc:
+            edit_doc(doc)
+        with open(path, "w", encoding="utf-8") as fh:
+            json.dump(doc, fh)
+        extra = []
+        if build_prov is not None:
+            os.makedirs(os.path.join(repo, "no-build"))
+            with open(os.path.join(repo, "no-build", "provenance.json"), "w", encoding="utf-8") as fh:
+                json.dump(build_prov, fh)
+        if config_extra:
+            cfg = os.path.join(tmp, "config.yaml")
+            with open(FIX_CONFIG, encoding="utf-8") as fh:
+                text = fh.read()
+            with open(cfg, "w", encoding="utf-8") as fh:
+                fh.write(text.replace("  - peer_compare\n", "  - peer_compare\n" + config_extra))
+            extra = ["--config", cfg]
+        out = os.path.join(tmp, "reports")
+        code = run_harness(repo, out, extra)
+        with open(os.path.join(out, "traceability.json"), encoding="utf-8") as fh:
+            rep = json.load(fh)
+        return code, rep, {t["id"]: t for t in rep["tests"]}, {i["label"]: i for i in rep["items"]}
+
+    def test_matching_results_are_accepted(self):
+        _, rep, tests, items = self._run(build_prov={"build_id": "fixturebuild0001"})
+        self.assertEqual(tests["peer_compare:step_time_within_2x_of_peer"]["status"], "passed")
+        self.assertNotIn("peer_compare:<provenance>", tests)
+        self.assertEqual(rep["provenance"]["refused"], [])
+        self.assertEqual(items["NFR1"]["status"], "verified")
+
+    def test_another_commit_is_stale(self):
+        def other_commit(doc):
+            doc["provenance"]["commit"] = "0" * 40
+        _, rep, tests, items = self._run(other_commit)
+        t = tests["peer_compare:<provenance>"]
+        self.assertEqual(t["status"], "error")
+        self.assertIn("stale: results of commit 000000000000", t["details"])
+        self.assertEqual(tests["peer_compare:step_time_within_2x_of_peer"]["status"], "error")
+        self.assertEqual(items["NFR1"]["status"], "failing")
+        self.assertIn("peer_compare:<provenance>", rep["gate"]["failing_tests"])
+
+    def test_another_build_is_stale(self):
+        _, _, tests, _ = self._run(build_prov={"build_id": "a-later-build"})
+        self.assertIn("stale: results of build fixturebuild0001", tests["peer_compare:<provenance>"]["details"])
+
+    def test_a_script_without_build_id_is_judged_by_its_commit(self):
+        def no_build(doc):
+            doc["provenance"]["build_id"] = None
+        _, _, tests, _ = self._run(no_build, build_prov={"build_id": "a-later-build"})
+        self.assertNotIn("peer_compare:<provenance>", tests)
+
+    def test_results_without_provenance_are_refused(self):
+        def strip(doc):
+            del doc["provenance"]
+        _, _, tests, _ = self._run(strip)
+        self.assertIn("no provenance", tests["peer_compare:<provenance>"]["details"])
+
+    def test_missing_expected_program_is_an_error(self):
+        code, rep, tests, _ = self._run(config_extra="  - gsl_reference\n")
+        t = tests["gsl_reference:<results file>"]
+        self.assertEqual(t["status"], "error")
+        self.assertIn("expected results missing", t["details"])
+        self.assertEqual(rep["provenance"]["missing_programs"], ["gsl_reference"])
+        self.assertEqual(code, 1)
+
+
 class ProcessExit(unittest.TestCase):
     def test_nonzero_exit_without_failing_case_is_an_error(self):
         tmp = tempfile.mkdtemp(prefix="trace-exit-")
@@ -288,7 +368,8 @@ class LiveRun(unittest.TestCase):
                          % os.path.join(build, "ghost"))
             out = os.path.join(tmp, "reports")
             code = build_report.main(["--source", REPO, "--build", build, "--out", out,
-                                      "--data", os.path.join(REPO, "data"), "--no-checker", "--quiet"])
+                                      "--data", os.path.join(REPO, "data"), "--no-checker", "--quiet",
+                                      "--config", FIX_CONFIG, "--commit", FIX_COMMIT])
             self.assertEqual(code, 1)
             with open(os.path.join(out, "traceability.json"), encoding="utf-8") as fh:
                 rep = json.load(fh)

@@ -1190,6 +1190,7 @@ int main(int argc, char** argv) {
                  "engine (R7, R8), the cost "
                  "of unit typing, the scaling of a rain of boxes, and joint scenes (time and "
                  "drift, no check). Method and results: docs/performance.md."},
+                {"provenance", tamias2d::evidence::provenance()},
                 {"checks", checks},
                 {"tables", tables},
                 {"series", series},

@@ -77,6 +77,18 @@ def measure(repo, label, trailer="Likely-change"):
             "base": code_lines(repo, base)}
 
 
+def provenance(repo):
+    """The commit this run read (a script: no build, so no build id) and the time now (UTC)."""
+    import datetime
+    try:
+        commit = git(repo, "rev-parse", "HEAD").strip()
+        dirty = bool(git(repo, "status", "--porcelain", "--untracked-files=no").strip())
+    except (subprocess.CalledProcessError, FileNotFoundError):
+        commit, dirty = "unknown", False
+    now = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ")
+    return {"commit": commit, "dirty": dirty, "build_id": None, "generated": now}
+
+
 def main(argv):
     if len(argv) < 2:
         print(__doc__.strip().splitlines()[2], file=sys.stderr)
@@ -128,7 +140,7 @@ def main(argv):
             print(("ok   " if share <= LIMIT else "FAIL ") + details)
     for n in notes:
         print("note " + n)
-    doc = {"program": "likely_change_cost",
+    doc = {"program": "likely_change_cost", "provenance": provenance(repo),
            "description": "NFR5: the existing code each likely change (LC1-LC3) touched, from "
                           "the commits that make it. " + " ".join(notes),
            "checks": checks, "tables": tables, "series": []}
