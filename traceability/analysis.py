@@ -2,12 +2,41 @@
 from __future__ import annotations
 
 import os
+import re
 
 import yaml
 
 from .srsdata import KIND_NAMES, KIND_ORDER, natural_key
 
-STATUSES = ["verified", "failing", "untested", "not implemented"]
+STATUSES = ["verified", "failing", "untested", "assumed", "not testable", "not implemented"]
+# Statuses an item without labelled tests may be given by config.yaml's `without_tests`, each
+# with its reason: what the item is, instead of "untested" where no test could verify it.
+DECLARED_STATUSES = ("assumed", "not testable")
+
+# The kinds of oracle a test's evidence rests on, recognised in its oracle statement (first
+# match of each kind; a test may rest on several). Order is the display order.
+ORACLE_KINDS = [
+    ("closed form", r"closed[- ]form|hand derivation|derived (?:by hand|here)|by hand|analytic|"
+                    r"exact(?:ly)?\b|elliptic|written (?:here|in the test) from|hand-made|"
+                    r"hand-written|the srs text|formula"),
+    ("GSL reference", r"\bgsl\b|rk8pd|reference solution"),
+    ("conservation law", r"conserv|\bgd1\b"),
+    ("property", r"propert|\bbound\b|bounded|never|invariant|brute[- ]force|promise|monoton"),
+    ("peer", r"chipmunk|box2d|\bpeer\b|pymunk"),
+    ("regression", r"golden|committed (?:value|hash|file)|previous run"),
+]
+# Evidence that cannot on its own show Tamias2D right: agreement with another engine, with its
+# own earlier output, or an oracle the harness cannot place.
+WEAK_ORACLE_KINDS = {"peer", "regression", "other", "unstated"}
+
+
+def oracle_kinds(text):
+    """The kinds of oracle an oracle statement names ("unstated" when there is none)."""
+    if not text:
+        return ["unstated"]
+    low = str(text).lower()
+    kinds = [k for k, pat in ORACLE_KINDS if re.search(pat, low)]
+    return kinds or ["other"]
 # Kinds that must be verified for the gate (exit status) to pass.
 GATED_KINDS = ["TM", "GD", "DD", "IM", "R"]
 # Kinds with nothing to implement: evidence can only come from tests labelled with them.
@@ -35,21 +64,41 @@ def load_config(path):
     return cfg
 
 
-def item_status(code_sites, tests, kind=None):
+def item_status(code_sites, tests, kind=None, declared=None):
     passed = [t for t in tests if t["status"] == "passed"]
     failing = [t for t in tests if t["status"] in FAILING]
     if failing:
         return "failing"
     if passed:
         return "verified"
+    # Declared only for items no test can verify, and only while no labelled test exists.
+    if declared and not tests:
+        return declared
     # An assumption, goal or change is never "implemented": without a test it is untested.
     if code_sites or tests or kind in LABEL_ONLY_KINDS:
         return "untested"
     return "not implemented"
 
 
-def analyse(srs, code_sites, tests, config):
+def declared_statuses(config, labels, warnings=None):
+    """config.yaml's without_tests: {label: {status, reason}} (checked)."""
+    out = {}
+    for lab, d in (config.get("without_tests") or {}).items():
+        ok = isinstance(d, dict) and d.get("status") in DECLARED_STATUSES and d.get("reason")
+        if not ok or lab not in labels:
+            if warnings is not None:
+                warnings.append(f"config.yaml without_tests: {lab!r} ignored (needs an SRS label, "
+                                f"status one of {', '.join(DECLARED_STATUSES)} and a reason)")
+            continue
+        out[lab] = {"status": d["status"], "reason": str(d["reason"])}
+    return out
+
+
+def analyse(srs, code_sites, tests, config, warnings=None):
     labels = set(srs.items)
+    declared = declared_statuses(config, labels, warnings)
+    for t in tests:
+        t["oracle_kinds"] = oracle_kinds(t.get("oracle"))
     category = set(config.get("category_labels") or [])
     sites_by = {}
     for s in code_sites:
@@ -65,8 +114,21 @@ def analyse(srs, code_sites, tests, config):
         it = srs.items[lab]
         sites = sites_by.get(lab, [])
         its_tests = sorted(tests_by.get(lab, []), key=lambda t: (t["status"] not in FAILING, t["id"]))
-        status = item_status(sites, its_tests, it["kind"])
+        decl = declared.get(lab)
+        status = item_status(sites, its_tests, it["kind"], decl["status"] if decl else None)
         notes = []
+        if decl and status == decl["status"]:
+            notes.append(f'{decl["status"]}: {decl["reason"]}')
+        elif decl:
+            notes.append(f'Declared {decl["status"]} in config.yaml, but labelled tests exist: '
+                         f'their results decide.')
+        kinds = sorted({k for t in its_tests if t["status"] == "passed" for k in t["oracle_kinds"]},
+                       key=_kind_order)
+        weak = status == "verified" and all(k in WEAK_ORACLE_KINDS for k in kinds)
+        if weak:
+            notes.append("Weak evidence: every passing test rests on " + ", ".join(kinds) +
+                         " only (no closed form, reference solution, conservation law or "
+                         "property).")
         if it["kind"] in LABEL_ONLY_KINDS:
             notes.append(LABEL_ONLY_KINDS[it["kind"]])
         lib_sites = [s for s in sites if s["area"] in ("library", "application")]
@@ -81,6 +143,8 @@ def analyse(srs, code_sites, tests, config):
         items.append({
             "label": lab, "kind": it["kind"], "alias": it.get("alias"), "title": it.get("title"),
             "status": status, "gated": it["kind"] in GATED_KINDS,
+            "status_reason": decl["reason"] if decl and status == decl["status"] else None,
+            "oracle_kinds": kinds, "weak_evidence": weak,
             "code_sites": sites, "tests": [t["id"] for t in its_tests],
             "tests_passed": sum(t["status"] == "passed" for t in its_tests),
             "tests_failing": sum(t["status"] in FAILING for t in its_tests),
@@ -112,6 +176,7 @@ def analyse(srs, code_sites, tests, config):
 
     # Gaps (SRS -> evidence) and orphans (evidence -> SRS).
     gaps = {
+        "weak_evidence": [i["label"] for i in items if i["weak_evidence"]],
         "no_code": [i["label"] for i in items if not i["code_sites"]],
         "no_test": [i["label"] for i in items if not i["tests"]],
         "no_passing_test": [i["label"] for i in items if i["tests_passed"] == 0],
@@ -172,6 +237,11 @@ def analyse(srs, code_sites, tests, config):
     return {"items": items, "by_kind": by_kind, "by_status": by_status, "gaps": gaps,
             "orphans": orphans, "category_labels": category_labels, "test_totals": test_totals,
             "missing_oracle": missing_oracle, "gate": gate}
+
+
+def _kind_order(k):
+    names = [n for n, _ in ORACLE_KINDS] + ["other", "unstated"]
+    return names.index(k) if k in names else len(names)
 
 
 # --------------------------------------------------------------------------- matrices

@@ -136,7 +136,7 @@ def build(args, log=print):
                            else "target-missed" if c.get("target") else "failed")
     vvdata.render_plots(programs, out, warnings)
 
-    res = analysis.analyse(srs, code_sites, tests, config)
+    res = analysis.analyse(srs, code_sites, tests, config, warnings)
     matrices = analysis.build_matrices(srs)
     seed_cmp = analysis.compare_seed(srs, matrices, analysis.load_seed_tables(args.seed_tables))
     status_of = {i["label"]: i["status"] for i in res["items"]}

@@ -20,7 +20,7 @@ KIND_HEX = {  # the same colours as hex, for the HTML legend
     "DC": "#e0ffff",
 }
 STATUS_BORDER = {"verified": "#2e7d32", "failing": "#c62828", "untested": "#ef6c00",
-                 "not implemented": "#757575"}
+                 "assumed": "#5b6474", "not testable": "#5b6474", "not implemented": "#757575"}
 
 VIEWS = [
     {"id": "graph_table3", "title": "Goals and requirements vs instance models, requirements and data constraints (Table 3 view)",

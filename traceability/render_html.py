@@ -13,13 +13,15 @@ from .srsdata import KIND_NAMES
 E = html.escape
 
 STATUS_CLASS = {"verified": "st-ok", "failing": "st-fail", "untested": "st-warn",
-                "not implemented": "st-none", "passed": "st-ok", "known-failure": "st-warn",
+                "assumed": "st-none", "not testable": "st-none", "not implemented": "st-none", "passed": "st-ok", "known-failure": "st-warn",
                 "target-missed": "st-warn", "failed": "st-fail",
                 "error": "st-fail", "skipped": "st-none", "notrun": "st-none"}
 STATUS_HELP = {
     "verified": "at least one passing test or check labelled with the item, and none failing",
     "failing": "at least one labelled test or check fails",
     "untested": "code carries the item's \\srs tag (or labelled tests exist but did not run), but nothing passing verifies it",
+    "assumed": "no test can verify it: an assumption the code is built on (the reason is on the item); no labelled test exists",
+    "not testable": "no test can verify it (the reason is on the item): a statement about the project, not the code; no labelled test exists",
     "not implemented": "neither a code tag nor a labelled test",
     "known-failure": "a test declared with Boost's expected_failures(N): exactly N known, documented findings fail (docs/verification.md); any other failure fails the test",
     "target-missed": "a verification check stating a goal beyond the SRS (e.g. one of the project's speed floors) that this run did not reach; reported, not gating",
@@ -245,7 +247,7 @@ are labelled with are judged by their other checks:""", g.get("targets_missed"))
         n_items = len(r["items"])
         self.w('<div class="cards">')
         self.w(f'<div class="card info"><div class="n">{n_items}</div><div class="l">SRS items in srs/</div></div>')
-        for st in ("verified", "failing", "untested", "not implemented"):
+        for st in ("verified", "failing", "untested", "assumed", "not testable", "not implemented"):
             self.w(f'<div class="card {STATUS_CLASS[st]}"><div class="n">{s["by_status"].get(st, 0)}</div>'
                    f'<div class="l">{E(st)}</div></div>')
         self.w('</div>')
@@ -254,7 +256,8 @@ are labelled with are judged by their other checks:""", g.get("targets_missed"))
                'inferred from the items it uses.</p>')
         self.w('<h3>Coverage of the SRS per kind</h3><table class="data sortable"><thead><tr>'
                '<th>Kind</th><th>Name</th><th class="num">Items</th><th class="num">Verified</th>'
-               '<th class="num">Failing</th><th class="num">Untested</th><th class="num">Not impl.</th>'
+               '<th class="num">Failing</th><th class="num">Untested</th><th class="num">Assumed</th>'
+               '<th class="num">Not testable</th><th class="num">Not impl.</th>'
                '<th class="num">With code tag</th><th class="num">With tests</th><th>Verified share</th>'
                '<th>Gate</th></tr></thead><tbody>')
         for row in s["by_kind"]:
@@ -263,6 +266,7 @@ are labelled with are judged by their other checks:""", g.get("targets_missed"))
             self.w(f'<tr><td data-sort="{E(row["kind"])}">{self.kind(row["kind"])}</td><td>{E(row["name"])}</td>'
                    f'<td class="num">{row["total"]}</td><td class="num">{row["verified"]}</td>'
                    f'<td class="num">{row["failing"]}</td><td class="num">{row["untested"]}</td>'
+                   f'<td class="num">{row["assumed"]}</td><td class="num">{row["not testable"]}</td>'
                    f'<td class="num">{row["not implemented"]}</td><td class="num">{row["with_code"]}</td>'
                    f'<td class="num">{row["with_tests"]}</td>'
                    f'<td data-sort="{pct}"><span class="bar"><span style="width:{pct}%"></span></span>{pct}%</td>'
@@ -291,7 +295,9 @@ are labelled with are judged by their other checks:""", g.get("targets_missed"))
                f'<a href="#orphan-labels">orphan test labels</a>: {c["orphan_test_labels"]}</li>'
                f'<li><a href="#errata">SRS errata</a> recorded in srs/errata.yaml: {c["errata"]}; '
                f'<a href="#refby">Ref.By disagreements</a> between the seed and the data: {c["refby_disagreements"]}</li>'
-               f'<li><a href="#missing-oracle">Tests without an oracle statement</a>: {len(r["missing_oracle"])}</li>'
+               f'<li><a href="#missing-oracle">Tests without an oracle statement</a>: {len(r["missing_oracle"])}; '
+               f'<a href="#gaps">items whose only evidence is weak</a> (peer, regression or unplaced oracles): '
+               f'{len(r["gaps"]["weak_evidence"])}</li>'
                f'<li><a href="#warnings">Harness warnings</a>: {c["warnings"]}</li></ul>')
         self.w('</section>')
 
@@ -301,13 +307,15 @@ are labelled with are judged by their other checks:""", g.get("targets_missed"))
         self.w('<p class="small">One row per item of srs/*.yaml; click a label for its evidence. Columns sort on click.</p>')
         self.w('<table class="data sortable"><thead><tr><th>Label</th><th>Kind</th><th>Drasil alias</th>'
                '<th>Title</th><th>Status</th><th class="num">Code sites</th><th class="num">Tests pass</th>'
-               '<th class="num">fail</th><th class="num">other</th><th>Errata</th></tr></thead><tbody>')
+               '<th class="num">fail</th><th class="num">other</th><th>Oracle kinds</th><th>Errata</th>'
+               '</tr></thead><tbody>')
         for it in r["items"]:
             self.w(f'<tr><td data-sort="{E(natural_sort_value(it["label"]))}"><a href="#item-{E(it["label"])}">{E(it["label"])}</a></td>'
                    f'<td>{self.kind(it["kind"])}</td><td>{E(it.get("alias") or "")}</td>'
                    f'<td>{E(it.get("title") or "")}</td><td data-sort="{E(it["status"])}">{badge(it["status"])}</td>'
                    f'<td class="num">{len(it["code_sites"])}</td><td class="num">{it["tests_passed"]}</td>'
                    f'<td class="num">{it["tests_failing"]}</td><td class="num">{it["tests_other"]}</td>'
+                   f'<td>{self._oracle_kinds(it)}</td>'
                    f'<td>{self._errata_links(it["errata"])}</td></tr>')
         self.w('</tbody></table>')
         current = None
@@ -318,14 +326,25 @@ are labelled with are judged by their other checks:""", g.get("targets_missed"))
             self.item_card(it)
         self.w('</section>')
 
+    def _oracle_kinds(self, it):
+        kinds = E(", ".join(it.get("oracle_kinds") or []))
+        if it.get("weak_evidence"):
+            return f'<span class="orphan" title="every passing test rests on these only">{kinds} (weak)</span>'
+        return kinds
+
     def _errata_links(self, ids):
         return ", ".join(f'<a href="#erratum-{E(e)}">{E(e)}</a>' for e in ids)
+
+    def _reason(self, it):
+        if not it.get("status_reason"):
+            return ""
+        return f' <span class="small mute">{E(it["status"])}: {E(it["status_reason"])}</span>'
 
     def item_card(self, it):
         cls = STATUS_CLASS[it["status"]]
         alias = f' · Drasil: <code>{E(it["alias"])}</code>' if it.get("alias") else ""
         self.w(f'<div class="item {cls}" id="item-{E(it["label"])}"><h4>{E(it["label"])} · {E(it.get("title") or "")} '
-               f'{badge(it["status"])}</h4><div class="small mute">{E(KIND_NAMES.get(it["kind"], it["kind"]))}{alias}'
+               f'{badge(it["status"])}{self._reason(it)}</h4><div class="small mute">{E(KIND_NAMES.get(it["kind"], it["kind"]))}{alias}'
                f' · {E(it.get("file") or "")}</div><dl>')
         src = it.get("source") or {}
         if src:
@@ -334,6 +353,8 @@ are labelled with are judged by their other checks:""", g.get("targets_missed"))
             self.w(f'<dt>Equation</dt><dd><code>{E(str(it["equation"]))}</code></dd>')
         if it.get("seed_equation"):
             self.w(f'<dt>Seed equation</dt><dd><code>{E(str(it["seed_equation"]))}</code></dd>')
+        if it.get("oracle_kinds"):
+            self.w(f'<dt>Oracle kinds of the passing evidence</dt><dd>{self._oracle_kinds(it)}</dd>')
         self.w(f'<dt>Uses</dt><dd>{self.links(it["uses"])}</dd>')
         self.w(f'<dt>Ref. by (computed)</dt><dd>{self.links(it["ref_by"])}</dd>')
         if it.get("seed_ref_by") is not None:
@@ -357,12 +378,14 @@ are labelled with are judged by their other checks:""", g.get("targets_missed"))
                    '}</code> tag in src/, apps/ or verification/</span></dd>')
         self.w('</dl>')
         if it["tests"]:
-            self.w('<table class="data"><thead><tr><th>Test / check</th><th>Status</th><th>Oracle</th></tr></thead><tbody>')
+            self.w('<table class="data"><thead><tr><th>Test / check</th><th>Status</th><th>Oracle kind</th>'
+                   '<th>Oracle</th></tr></thead><tbody>')
             for tid in it["tests"]:
                 t = self.tests[tid]
                 oracle = E(t["oracle"]) if t.get("oracle") else '<span class="mute">no oracle stated</span>'
                 extra = f'<div class="small mute">{E(t["samples"])}</div>' if t.get("samples") else ""
-                self.w(f'<tr><td>{self.tlink(tid)}{extra}</td><td>{badge(t["status"])}</td><td>{oracle}</td></tr>')
+                self.w(f'<tr><td>{self.tlink(tid)}{extra}</td><td>{badge(t["status"])}</td>'
+                       f'<td class="small">{E(", ".join(t.get("oracle_kinds") or []))}</td><td>{oracle}</td></tr>')
             self.w('</tbody></table>')
         else:
             self.w('<p class="small mute">No test or verification check carries this label.</p>')
@@ -375,7 +398,9 @@ are labelled with are judged by their other checks:""", g.get("targets_missed"))
         self.w('<h3>SRS → evidence</h3><table class="data"><thead><tr><th>Gap</th><th class="num">Count</th>'
                '<th>Items</th></tr></thead><tbody>')
         for key, title in (("no_code", "No code tag"), ("no_test", "No labelled test or check"),
-                           ("no_passing_test", "No passing test or check")):
+                           ("no_passing_test", "No passing test or check"),
+                           ("weak_evidence", "Verified only by weak evidence (peer, regression or "
+                                             "unplaced oracles)")):
             self.w(f'<tr><td>{E(title)}</td><td class="num">{len(g[key])}</td><td>{self.links(g[key])}</td></tr>')
         self.w('</tbody></table>')
         self.w('<h3 id="orphan-tags">Evidence → SRS: orphan code tags</h3>')

@@ -43,9 +43,11 @@ def render(r):
     w("## 1. Summary\n")
     w("Items by status: " + ", ".join(f"{k}: {v}" for k, v in s["by_status"].items()) +
       f" (of {len(r['items'])}).\n")
-    w(_table(["Kind", "Name", "Items", "Verified", "Failing", "Untested", "Not impl.", "With code", "With tests", "Verified %"],
+    w(_table(["Kind", "Name", "Items", "Verified", "Failing", "Untested", "Assumed", "Not testable",
+              "Not impl.", "With code", "With tests", "Verified %"],
              [[k["kind"], k["name"], k["total"], k["verified"], k["failing"], k["untested"],
-               k["not implemented"], k["with_code"], k["with_tests"], k["verified_percent"]] for k in s["by_kind"]]))
+               k["assumed"], k["not testable"], k["not implemented"], k["with_code"], k["with_tests"],
+               k["verified_percent"]] for k in s["by_kind"]]))
     w(_table(["Origin", "Total", "Passed", "Failed", "Error", "Skipped", "Not run", "Known failure",
               "Target missed"],
              [[o, t.get("total", 0), t.get("passed", 0), t.get("failed", 0), t.get("error", 0),
@@ -53,8 +55,11 @@ def render(r):
                t.get("target-missed", 0)] for o, t in sorted(s["tests"].items())]))
     tests = {t["id"]: t for t in r["tests"]}
     w("## 2. Items\n")
-    w(_table(["Label", "Kind", "Alias", "Title", "Status", "Code sites", "Tests (status)", "Errata"],
-             [[i["label"], i["kind"], i.get("alias") or "", i.get("title") or "", i["status"],
+    w(_table(["Label", "Kind", "Alias", "Title", "Status", "Oracle kinds", "Code sites", "Tests (status)",
+              "Errata"],
+             [[i["label"], i["kind"], i.get("alias") or "", i.get("title") or "",
+               i["status"] + (f": {i['status_reason']}" if i.get("status_reason") else ""),
+               ", ".join(i.get("oracle_kinds") or []) + (" (weak)" if i.get("weak_evidence") else ""),
                "; ".join(f"{c['file']}:{c['line']}" for c in i["code_sites"]) or "—",
                "; ".join(f"{t} ({tests[t]['status']})" for t in i["tests"]) or "—",
                ", ".join(i["errata"])] for i in r["items"]]))
@@ -68,13 +73,15 @@ def render(r):
     rows = []
     for i in r["items"]:
         for t in i["tests"]:
-            rows.append([i["label"], t, tests[t]["status"], tests[t].get("oracle") or "(none stated)"])
-    w(_table(["Item", "Test / check", "Status", "Oracle"], rows) if rows else "None.\n")
+            rows.append([i["label"], t, tests[t]["status"], ", ".join(tests[t].get("oracle_kinds") or []),
+                         tests[t].get("oracle") or "(none stated)"])
+    w(_table(["Item", "Test / check", "Status", "Oracle kind", "Oracle"], rows) if rows else "None.\n")
     w("## 3. Gaps and orphans\n")
     gp = r["gaps"]
     w(f"- No code tag ({len(gp['no_code'])}): {', '.join(gp['no_code']) or 'none'}")
     w(f"- No labelled test or check ({len(gp['no_test'])}): {', '.join(gp['no_test']) or 'none'}")
     w(f"- No passing test or check ({len(gp['no_passing_test'])}): {', '.join(gp['no_passing_test']) or 'none'}")
+    w(f"- Verified only by weak evidence ({len(gp['weak_evidence'])}): {', '.join(gp['weak_evidence']) or 'none'}")
     o = r["orphans"]
     w(f"- Orphan code tags ({len(o['code_tags'])}): " +
       (", ".join(f"`\\srs{{{x['label']}}}` at {x['file']}:{x['line']}" for x in o["code_tags"]) or "none"))

@@ -71,8 +71,9 @@ class FixtureReport(unittest.TestCase):
             "IM1": "verified", "DD1": "verified", "R1": "verified", "NFR1": "verified",
             "IM2": "failing",
             "T1": "untested", "R2": "untested", "LC1": "untested",
-            # Kinds only tests verify are "untested" without one, never "not implemented".
-            "GS1": "untested", "A1": "untested", "DD2": "not implemented",
+            # Kinds only tests verify are "untested" without one, never "not implemented";
+            # A1 is declared "assumed" in the fixture's config.yaml (no test can verify it).
+            "GS1": "untested", "A1": "assumed", "DD2": "not implemented",
             "DC1": "untested",
         }
         self.assertEqual({k: v["status"] for k, v in self.items.items()}, expected)
@@ -84,7 +85,8 @@ class FixtureReport(unittest.TestCase):
         self.assertEqual(by_kind["IM"]["failing"], 1)
         self.assertEqual(by_kind["IM"]["verified_percent"], 50.0)
         self.assertEqual(self.report["summary"]["by_status"],
-                         {"verified": 4, "failing": 1, "untested": 6, "not implemented": 1})
+                         {"verified": 4, "failing": 1, "untested": 5, "assumed": 1,
+                          "not testable": 0, "not implemented": 1})
         self.assertNotIn("GD", by_kind)  # general_definitions.yaml is an empty list
 
     def test_orphans_both_directions(self):
@@ -133,6 +135,26 @@ class FixtureReport(unittest.TestCase):
         self.assertNotIn("model_tests:model/im1_free_fall", self.report["missing_oracle"])
         self.assertTrue(any("@LC1" in x for x in self.report["registration"]))
 
+    def test_oracle_kinds_and_weak_evidence(self):
+        im1 = self.items["IM1"]
+        self.assertIn("closed form", im1["oracle_kinds"])
+        self.assertFalse(im1["weak_evidence"])
+        # NFR1's only passing check compares with a peer engine: weak, and said so.
+        nfr1 = self.items["NFR1"]
+        self.assertEqual(nfr1["oracle_kinds"], ["peer"])
+        self.assertTrue(nfr1["weak_evidence"])
+        self.assertTrue(any(n.startswith("Weak evidence") for n in nfr1["notes"]))
+        self.assertIn("NFR1", self.report["gaps"]["weak_evidence"])
+        self.assertEqual(self.tests["model_tests:model/mystery"]["oracle_kinds"], ["unstated"])
+
+    def test_declared_status_has_its_reason(self):
+        a1 = self.items["A1"]
+        self.assertEqual(a1["status"], "assumed")
+        self.assertEqual(a1["status_reason"], "fixture: built into the types")
+        self.assertIn("assumed: fixture: built into the types", a1["notes"])
+        by_kind = {row["kind"]: row for row in self.report["summary"]["by_kind"]}
+        self.assertEqual(by_kind["A"]["assumed"], 1)
+
     def test_item_evidence_lists(self):
         im1 = self.items["IM1"]
         self.assertEqual(im1["tests_passed"], 3)
@@ -174,7 +196,7 @@ class FixtureReport(unittest.TestCase):
             self.assertIn(needle, page)
         self.assertNotIn("<link ", page)  # self-contained: no external stylesheet
         self.assertTrue(os.path.exists(os.path.join(self.out, "traceability.md")))
-        self.assertEqual(self.report["schema_version"], "1.0")
+        self.assertEqual(self.report["schema_version"], "1.1")
         self.assertTrue(os.path.exists(os.path.join(self.out, "plots", "peer_compare__Error_vs_step_size.svg")))
         self.assertEqual(self.report["coverage"]["totals"]["line_percent"], 80.0)
         if HAVE_DOT:
@@ -398,6 +420,36 @@ class Units(unittest.TestCase):
         self.assertEqual(analysis.item_status([], [s]), "untested")
         self.assertEqual(analysis.item_status([], []), "not implemented")
         self.assertEqual(analysis.item_status([], [], "A"), "untested")
+
+    def test_declared_statuses(self):
+        # Oracle: the rule stated in docs/traceability.md: a declared status stands only while
+        # no labelled test exists; tests decide otherwise.
+        p = {"status": "passed"}
+        self.assertEqual(analysis.item_status([], [], "A", "assumed"), "assumed")
+        self.assertEqual(analysis.item_status([], [], "UC", "not testable"), "not testable")
+        self.assertEqual(analysis.item_status([], [p], "A", "assumed"), "verified")
+        warnings = []
+        got = analysis.declared_statuses(
+            {"without_tests": {"A1": {"status": "assumed", "reason": "r"},
+                               "A9": {"status": "assumed", "reason": "r"},
+                               "UC1": {"status": "untested", "reason": "r"},
+                               "UC2": {"status": "not testable"}}}, {"A1", "UC1", "UC2"}, warnings)
+        self.assertEqual(got, {"A1": {"status": "assumed", "reason": "r"}})
+        self.assertEqual(len(warnings), 3)
+
+    def test_oracle_kinds(self):
+        # Oracle: hand-classified oracle statements of this repository's tests.
+        k = analysis.oracle_kinds
+        self.assertEqual(k("IM3's closed form, evaluated here from the SRS text"), ["closed form"])
+        self.assertEqual(k("GSL rk8pd at tolerance 1e-12"), ["GSL reference"])
+        self.assertEqual(k("GD1 (conservation of momentum, from T2)"), ["conservation law"])
+        self.assertEqual(k("energy never rising beyond the soft contact's bound"), ["property"])
+        self.assertEqual(k("Chipmunk 7.0.3 on the same scene"), ["peer"])
+        self.assertEqual(k("the committed value, produced by another build (golden hashes)"),
+                         ["regression"])
+        self.assertEqual(k("the CLI exits 0"), ["other"])
+        self.assertEqual(k(None), ["unstated"])
+        self.assertEqual(k("closed form; momentum conserved"), ["closed form", "conservation law"])
 
     def test_a_case_without_assertions_is_no_evidence(self):
         # Oracle: Boost.Test's JUnit count: a case that passed after zero assertions is an
