@@ -6,8 +6,8 @@ Each mutant changes one spot of src/tamias2d/model/ or src/tamias2d/dynamics/: a
 operator swapped (+ -, * /), a comparison turned (< <=, > >=, == !=), a numeric constant
 changed (c -> 2c, 0 -> 1), or an assignment statement removed. The mutant is built in a
 scratch copy of the repository with its own build directory (never the caller's), and the
-CTest entries labelled with the SRS items that the mutated file names in its \\srs tags are
-run. A mutant is killed when they fail (or time out), survives when they pass, and is
+CTest entries labelled with the SRS items that the mutated file, or a library header it includes,
+names in its \\srs tags are run. A mutant is killed when they fail (or time out), survives when they pass, and is
 stillborn when it does not compile (not counted in the score).
 
     /usr/bin/python3 verification/mutation/mutate.py OUT_DIR [--sample N] [--seed S]
@@ -125,11 +125,26 @@ def all_mutants(root):
     return muts
 
 
+INCLUDE = re.compile(r'^\s*#\s*include\s+"(tamias2d/[^"]+)"', re.M)
+
+
 def labels_of(root, relpath):
-    with open(os.path.join(root, relpath), encoding="utf-8") as fh:
-        found = set()
-        for m in TAG.finditer(fh.read()):
+    """The SRS labels of the file's \\srs tags and of every library header it includes,
+    directly or not: the items whose formulas the file realises or calls."""
+    found, seen, todo = set(), set(), [relpath]
+    while todo:
+        rel = todo.pop()
+        if rel in seen:
+            continue
+        seen.add(rel)
+        try:
+            with open(os.path.join(root, rel), encoding="utf-8") as fh:
+                text = fh.read()
+        except OSError:
+            continue
+        for m in TAG.finditer(text):
             found |= {x.strip() for x in m.group(1).split(",") if x.strip()}
+        todo += ["src/" + inc for inc in INCLUDE.findall(text)]
     return sorted(found)
 
 
@@ -193,7 +208,7 @@ def judge(m, src, build, labels, test_timeout):
         if rc != 0:
             return "stillborn", out[-600:], sorted(entries)
         regex = "^(" + "|".join(re.escape(n) for n in sorted(entries)) + ")$"
-        rc, out = run(["ctest", "--test-dir", build, "-R", regex, "--stop-on-failure",
+        rc, out = run(["ctest", "--test-dir", build, "-R", regex, "--stop-on-failure", "-j2",
                        "--timeout", str(test_timeout)], timeout=test_timeout * len(entries) + 60)
         if rc is None or rc != 0:
             return "killed", out[-600:], sorted(entries)
@@ -267,7 +282,7 @@ def main(argv=None):
         "description": "Mutation testing of src/tamias2d/model/ and dynamics/: mutants (operator "
                        "swaps, constants, comparisons, removed assignments) built in a scratch "
                        "copy, judged by the CTest entries labelled with the SRS items the mutated "
-                       "file's \\srs tags name. Survivors are listed in full; the score counts "
+                       "file's \\srs tags, or those of the library headers it includes, name. Survivors are listed in full; the score counts "
                        "compiled mutants only. This run: " + details + ".",
         "provenance": {"commit": commit, "dirty": dirty, "build_id": None, "built": started,
                        "generated": finished},

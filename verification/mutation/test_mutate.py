@@ -42,9 +42,13 @@ class Mutants(unittest.TestCase):
             with open(os.path.join(d, "x.hpp"), "w") as fh:
                 fh.write("/// \\\\srs{DD8, IM3} j\ninline double j(double a) { return -a * 2.0; }\n")
             self.assertEqual(mutate.labels_of(root, "src/tamias2d/model/x.hpp"), ["DD8", "IM3"])
+            # A file without tags takes those of the headers it includes.
+            with open(os.path.join(root, "src/tamias2d/dynamics/y.cpp"), "w") as fh:
+                fh.write('#include "tamias2d/model/x.hpp"\nint y;\n')
+            self.assertEqual(mutate.labels_of(root, "src/tamias2d/dynamics/y.cpp"), ["DD8", "IM3"])
             muts = mutate.all_mutants(root)
             self.assertEqual([m["op"] for m in muts], ["arith * to /", "constant 2.0 to 4.0"])
-            self.assertEqual([m["id"] for m in muts], [0, 1])
+            self.assertEqual([m["id"] for m in muts], [0, 1])  # y.cpp has nothing to mutate
 
 
 if __name__ == "__main__":
