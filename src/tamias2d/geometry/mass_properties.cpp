@@ -40,10 +40,6 @@ void require_density(double density) {
         throw ValidationError("shape.density", density, "must be finite and >= 0", "DCX_density");
 }
 
-double cross(Vec2d a, Vec2d b) {
-    return a.x * b.y - a.y * b.x;
-}
-
 } // namespace
 
 double area(const Circle& c) {

@@ -28,10 +28,6 @@ void require_positive(double v, const std::string& field) {
         throw ValidationError(field, v, "must be > 0", "DCX_shape");
 }
 
-double cross(Vec2d a, Vec2d b) {
-    return a.x * b.y - a.y * b.x;
-}
-
 /// Distance from p to the line through a and b (a != b).
 double distance_to_line(Vec2d a, Vec2d b, Vec2d p) {
     return std::abs(cross(b - a, p - a)) / length(b - a);

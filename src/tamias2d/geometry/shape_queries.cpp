@@ -23,9 +23,9 @@ Vec2d nearest_on_segment(Vec2d a, Vec2d b, Vec2d p) {
     return a + t * e;
 }
 
+/// T5's disc containment about the core's nearest point.
 bool contains(const Capsule& c, Vec2d local) {
-    const Vec2d d = local - nearest_on_segment(c.center1, c.center2, local);
-    return dot(d, d) <= c.radius * c.radius;
+    return model::t5::contains(nearest_on_segment(c.center1, c.center2, local), c.radius, local);
 }
 
 /// Ray in the shape's body frame.
