@@ -18,10 +18,12 @@ DECLARED_STATUSES = ("assumed", "not testable")
 ORACLE_KINDS = [
     ("closed form", r"closed[- ]form|hand derivation|derived (?:by hand|here)|by hand|analytic|"
                     r"exact(?:ly)?\b|elliptic|written (?:here|in the test) from|hand-made|"
-                    r"hand-written|the srs text|formula"),
+                    r"hand-written|hand count|the srs text|formula|statics|oscillator"),
+    ("stated rule", r"srs table|\btable [12]\b|\bdc[iox]_\w+|data_constraints|scene-format\.md"),
     ("GSL reference", r"\bgsl\b|rk8pd|reference solution"),
     ("conservation law", r"conserv|\bgd1\b"),
-    ("property", r"propert|\bbound\b|bounded|never|invariant|brute[- ]force|promise|monoton"),
+    ("property", r"propert|\bbound\b|bounded|never|invariant|brute[- ]force|promise|monoton|"
+                 r"rigidity|keeps its shape|the derivation's corners"),
     ("peer", r"chipmunk|box2d|\bpeer\b|pymunk"),
     ("regression", r"golden|committed (?:value|hash|file)|previous run"),
 ]

@@ -447,6 +447,10 @@ class Units(unittest.TestCase):
         self.assertEqual(k("Chipmunk 7.0.3 on the same scene"), ["peer"])
         self.assertEqual(k("the committed value, produced by another build (golden hashes)"),
                          ["regression"])
+        self.assertEqual(k("SRS Table 1, row C_R: 0 <= C_R <= 1"), ["stated rule"])
+        self.assertEqual(k("DCX_dt (srs/data_constraints.yaml): the time step is > 0"),
+                         ["stated rule"])
+        self.assertEqual(k("statics: the joint must balance its weight"), ["closed form"])
         self.assertEqual(k("the CLI exits 0"), ["other"])
         self.assertEqual(k(None), ["unstated"])
         self.assertEqual(k("closed form; momentum conserved"), ["closed form", "conservation law"])
