@@ -2,10 +2,10 @@
 add_library(tamias_warnings INTERFACE)
 target_compile_options(tamias_warnings INTERFACE -Wall -Wextra -Wpedantic -Wshadow -Wconversion
                                                  -Wno-sign-conversion)
-# The solver's 4-lane packs (src/tamias2d/math/wide.hpp) are 32-byte vectors; GCC notes that
-# passing them by value would use another ABI with AVX enabled. They never cross a library
+# The solver's 4-lane packs (src/tamias2d/math/wide.hpp) are 32-byte vectors; GCC and Clang note
+# that passing them by value would use another ABI with AVX enabled. They never cross a library
 # boundary (everything taking them is inline), so the note says nothing here.
-if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
+if(CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
   target_compile_options(tamias_warnings INTERFACE -Wno-psabi)
 endif()
 if(TAMIAS_WERROR)

@@ -260,7 +260,9 @@ BOOST_AUTO_TEST_CASE(batched_moves_equal_single_moves, *utf::label("IM4") * utf:
         for (std::size_t i = 0; i < ids.size(); ++i) {
             if (one.is_static(ids[i]))
                 continue;
-            tight[i] = shifted(tight[i], 0.6 * d(rng), 0.6 * d(rng));
+            // dy drawn first, as GCC evaluates the arguments (their order is unspecified).
+            const double dy = 0.6 * d(rng);
+            tight[i] = shifted(tight[i], 0.6 * d(rng), dy);
             one.move_proxy(ids[i], tight[i]);
             if (!contains(many.fat_aabb(ids[i]), tight[i]))
                 moves.push_back({ids[i], many.fattened(tight[i])});
@@ -296,7 +298,8 @@ BOOST_AUTO_TEST_CASE(steady_state_allocation_free) {
     std::uniform_real_distribution<double> d(-0.5, 0.5);
     auto round = [&](double scale) {
         for (std::size_t i = 0; i < ids.size(); ++i) {
-            tight[i] = shifted(tight[i], scale * d(rng), scale * d(rng));
+            const double dy = scale * d(rng); // (as above)
+            tight[i] = shifted(tight[i], scale * d(rng), dy);
             bp.move_proxy(ids[i], tight[i]);
         }
         out.clear();

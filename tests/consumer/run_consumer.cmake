@@ -1,6 +1,8 @@
 cmake_minimum_required(VERSION 3.25)
 # cmake -DBUILD_DIR=... -DSOURCE_DIR=... -DWORK_DIR=... -DEXAMPLE_EXE=... -DRUNNER_EXE=...
-#       -DSCENE=... -DMODES="install;pkgconfig;fetchcontent" -P run_consumer.cmake
+#       -DSCENE=... -DMODES="install;pkgconfig;fetchcontent" [-DCXX=...] -P run_consumer.cmake
+# CXX: the compiler of the build tree (default c++), for the consumers too: a FetchContent
+# build compiles the library again, and its build line (the solver's code path) must match.
 # Installs the build tree into WORK_DIR/prefix and builds a separate project against it (the
 # CMake package, then the pkg-config file), and against the source tree through FetchContent.
 # Oracle: each consumer's programs print exactly what the same programs built inside the
@@ -10,6 +12,9 @@ foreach(v BUILD_DIR SOURCE_DIR WORK_DIR EXAMPLE_EXE RUNNER_EXE SCENE MODES)
     message(FATAL_ERROR "run_consumer.cmake: -D${v}=... is required")
   endif()
 endforeach()
+if(NOT DEFINED CXX)
+  find_program(CXX NAMES c++ g++ clang++ REQUIRED)
+endif()
 set(example_src ${SOURCE_DIR}/apps/examples/two_bodies.cpp)
 set(runner_src ${SOURCE_DIR}/tests/consumer/project/scene_runner.cpp)
 file(REMOVE_RECURSE ${WORK_DIR})
@@ -55,7 +60,8 @@ endif()
 if("install" IN_LIST MODES)
   set(b ${WORK_DIR}/package)
   run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/tests/consumer/project -B ${b} -G Ninja
-      -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${prefix} -DTAMIAS_CONSUMER_MODE=package
+      -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=${CXX} -DCMAKE_PREFIX_PATH=${prefix}
+      -DTAMIAS_CONSUMER_MODE=package
       -DTAMIAS_EXAMPLE=${example_src})
   run(${CMAKE_COMMAND} --build ${b})
   expect_same(example ${b}/two_bodies)
@@ -72,7 +78,6 @@ if("pkgconfig" IN_LIST MODES)
   run(pkg-config --cflags --libs tamias2d-io)
   string(STRIP "${out}" io_flags)
   separate_arguments(io_flags UNIX_COMMAND "${io_flags}")
-  find_program(CXX NAMES c++ g++ clang++ REQUIRED)
   run(${CXX} -std=c++20 -O2 ${example_src} ${core_flags} -o ${WORK_DIR}/two_bodies_pc)
   expect_same(example ${WORK_DIR}/two_bodies_pc)
   run(${CXX} -std=c++20 -O2 ${runner_src} ${io_flags} -o ${WORK_DIR}/scene_runner_pc)
@@ -82,7 +87,7 @@ endif()
 if("fetchcontent" IN_LIST MODES)
   set(b ${WORK_DIR}/fetchcontent)
   run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/tests/consumer/project -B ${b} -G Ninja
-      -DCMAKE_BUILD_TYPE=Release -DTAMIAS_CONSUMER_MODE=fetchcontent
+      -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=${CXX} -DTAMIAS_CONSUMER_MODE=fetchcontent
       -DTAMIAS_SOURCE_DIR=${SOURCE_DIR} -DTAMIAS_EXAMPLE=${example_src})
   run(${CMAKE_COMMAND} --build ${b} -j2)
   expect_same(example ${b}/two_bodies)

@@ -75,7 +75,7 @@ BOOST_AUTO_TEST_CASE(stale_and_unknown_body_handles_are_rejected, *utf::label("R
             BOOST_TEST(!m.world.is_valid(id));
             for (const auto& [call, f] : body_calls()) {
                 BOOST_TEST_CONTEXT("World::" << call) {
-                    expect_invalid_handle(m.world, [&, &f = f] { f(m.world, id); });
+                    expect_invalid_handle(m.world, [&, &f = f, &id = id] { f(m.world, id); });
                 }
             }
         }

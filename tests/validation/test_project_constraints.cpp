@@ -245,7 +245,8 @@ BOOST_AUTO_TEST_CASE(degenerate_polygons_are_rejected,
     clouds.emplace_back("12-gon", twelve);
     for (const auto& [what, pts] : clouds) {
         BOOST_TEST_CONTEXT(what) {
-            expect_validation_error([&] { (void)polygon_shape(pts); }, "polygon", "DCX_shape");
+            expect_validation_error([&pts = pts] { (void)polygon_shape(pts); }, "polygon",
+                                    "DCX_shape");
         }
     }
 
@@ -283,7 +284,8 @@ BOOST_AUTO_TEST_CASE(degenerate_polygons_are_rejected,
     for (const auto& [what, def] : hand_made) {
         BOOST_TEST_CONTEXT(what) {
             expect_rejected(
-                m.world, [&] { m.world.create_shape(m.box, def); }, "polygon", "DCX_shape");
+                m.world, [&, &def = def] { m.world.create_shape(m.box, def); }, "polygon",
+                "DCX_shape");
         }
     }
     // Positive control: a valid triangle through both paths.

@@ -79,8 +79,8 @@ void* grow_fresh(void* p, std::size_t /*used: the pages move whole*/, std::size_
 void* map_fresh(std::size_t size) {
     return ::operator new(size, std::align_val_t(huge_page));
 }
-void unmap_fresh(void* p, std::size_t size) noexcept {
-    ::operator delete(p, size, std::align_val_t(huge_page));
+void unmap_fresh(void* p, std::size_t /*size*/) noexcept {
+    ::operator delete(p, std::align_val_t(huge_page)); // unsized, as in release_block
 }
 void* grow_fresh(void* p, std::size_t used, std::size_t old_size, std::size_t new_size) {
     void* q = map_fresh(new_size);
@@ -157,8 +157,8 @@ void* grow_block(void* p, std::size_t used, std::size_t old_bytes, std::size_t n
 void release_block(void* p, std::size_t bytes, std::size_t align) noexcept {
     if (is_large(bytes))
         unmap_large(p, bytes);
-    else
-        ::operator delete(p, bytes, small_alignment(align));
+    else // unsized: the sized form needs -fsized-deallocation, off by default in Clang 14
+        ::operator delete(p, small_alignment(align));
 }
 
 } // namespace detail
