@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <string>
+#include <utility>
 
 #include "tamias2d/dynamics/body_store.hpp"
 #include "tamias2d/dynamics/contact_manager.hpp"
@@ -169,8 +170,13 @@ std::vector<ShapeId> World::create_chain(BodyId body_id, std::span<const ShapeDe
 void World::set_filter(ShapeId id, const Filter& filter) {
     Impl& w = *impl_;
     const Shape& sh = w.shapes.get(id);
-    w.shapes.defs[id.index].filter = filter;
-    w.contacts.refilter(id.index, w.bodies, w.shapes, w.joints);
+    const Filter old = std::exchange(w.shapes.defs[id.index].filter, filter);
+    try {
+        w.contacts.refilter(id.index, w.bodies, w.shapes, w.joints);
+    } catch (...) { // the user's filter threw (refilter changed nothing): as before the call
+        w.shapes.defs[id.index].filter = old;
+        throw;
+    }
     w.shapes.broad_phase.touch_proxy(sh.proxy); // the pairs it now admits, at the next step
 }
 
@@ -479,6 +485,7 @@ void World::step(double dt) {
     Impl& w = *impl_;
     w.check_state();
     w.evaluate_loads();
+    w.contacts.forget_filter_error(); // (one a step cut short by bad_alloc left)
     w.broken.clear();
     w.contacts.begin_events.clear();
     w.contacts.end_events.clear();
@@ -518,6 +525,8 @@ void World::step(double dt) {
     w.time_error = (t - w.time) - y;
     w.time = t;
     w.contacts.report_stale();
+    // The user's filter threw: the step is whole, with the pairs it threw on refused.
+    w.contacts.rethrow_filter_error();
 }
 
 double World::time() const {

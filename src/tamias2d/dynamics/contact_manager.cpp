@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "tamias2d/collision/narrow_phase.hpp"
 #include "tamias2d/dynamics/body_store.hpp"
@@ -100,18 +101,42 @@ bool ContactManager::should_collide(const BodyStore& bodies, const ShapeStore& s
     const ShapeDef& db = shapes.defs[sb];
     if (da.is_sensor || db.is_sensor)
         return false;
-    return admits(da.filter, db.filter) &&
-           (!custom_filter || custom_filter(shapes.id(sa), shapes.id(sb)));
+    return admits(da.filter, db.filter) && custom_admits(shapes.id(sa), shapes.id(sb));
+}
+
+bool ContactManager::custom_admits(ShapeId a, ShapeId b) const {
+    if (!custom_filter)
+        return true;
+    try {
+        return custom_filter(a, b);
+    } catch (...) {
+        // Unwinding from here would leave the step half done (bodies moved, pairs the broad
+        // phase has reported and forgotten never made contacts): refuse the pair, finish.
+        if (!filter_error_)
+            filter_error_ = std::current_exception();
+        return false;
+    }
+}
+
+void ContactManager::rethrow_filter_error() {
+    if (filter_error_)
+        std::rethrow_exception(std::exchange(filter_error_, nullptr));
 }
 
 void ContactManager::refilter(std::uint32_t s, BodyStore& bodies, const ShapeStore& shapes,
                               const JointStore& joints) {
+    // Every answer first, then the destructions: a filter that throws changes nothing.
+    forget_filter_error();
+    doomed_.clear();
     for (std::uint32_t i = std::uint32_t(contacts.size()); i-- > 0;) {
         const Contact& c = contacts[i];
         if ((c.shape_a == s || c.shape_b == s) &&
             !should_collide(bodies, shapes, joints, c.shape_a, c.shape_b))
-            destroy(i, bodies, shapes);
+            doomed_.push_back(i);
     }
+    rethrow_filter_error();
+    for (const std::uint32_t i : doomed_) // descending: each swap-removal moves a kept one
+        destroy(i, bodies, shapes);
 }
 
 void ContactManager::find_new(const BodyStore& bodies, ShapeStore& shapes,

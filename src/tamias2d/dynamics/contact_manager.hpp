@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <exception>
 #include <functional>
 #include <utility>
 #include <vector>
@@ -46,6 +47,14 @@ class ContactManager {
     std::vector<ContactEvent> begin_events, end_events;
     /// The user's filter, asked for each new pair the rules admit (empty: none).
     std::function<bool(ShapeId, ShapeId)> custom_filter;
+    /// The user's filter's answer for shapes a and b (true when there is none). An exception
+    /// it throws counts as a refusal and the first is kept, so that a step asking it is still
+    /// a whole step; the step then rethrows it (rethrow_filter_error).
+    bool custom_admits(ShapeId a, ShapeId b) const;
+    /// Rethrows, and forgets, the first exception the user's filter threw since the last call
+    /// or forget_filter_error; nothing when it threw none.
+    void rethrow_filter_error();
+    void forget_filter_error() { filter_error_ = nullptr; }
     /// Whether the rules and the filters let shapes sa and sb collide (DD27): not two shapes of
     /// one body, two immovable bodies or bodies a joint keeps apart, no sensor (sensors have
     /// no contacts: SensorOverlaps), and admitted by the filters and the user's filter.
@@ -91,6 +100,9 @@ class ContactManager {
 
   private:
     void destroy(std::uint32_t i, BodyStore& bodies, const ShapeStore& shapes);
+
+    /// The first exception of the user's filter (custom_admits), for the step to rethrow.
+    mutable std::exception_ptr filter_error_;
 
     PairMap index_; ///< contact by Contact::key of its shapes
     // Per-step scratch, kept to avoid allocation in steady state.

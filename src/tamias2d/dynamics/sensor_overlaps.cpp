@@ -69,8 +69,7 @@ void SensorOverlaps::update(const BodyStore& bodies, const ShapeStore& shapes,
                 (sb.type == BodyType::static_body &&
                  bodies.bodies[vs.body].type == BodyType::static_body) ||
                 !admits(shapes.defs[sensor.shape].filter, vd.filter) ||
-                (rules.custom_filter &&
-                 !rules.custom_filter(shapes.id(sensor.shape), shapes.id(v))))
+                !rules.custom_admits(shapes.id(sensor.shape), shapes.id(v)))
                 return true;
             if (overlap(ss, vs))
                 now_.push_back(v);

@@ -17,8 +17,10 @@
 // multiply-add, so both give the same bits. flatten inlines the whole iteration into each clone:
 // it must, because a helper left out of line is compiled for the baseline, where a pack travels
 // in memory, while the AVX2 clone passes it in a ymm register. Unoptimised builds (-O0: the
-// coverage build) do not inline, so they run the baseline loops only.
-#if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__) && defined(__OPTIMIZE__)
+// coverage build) do not inline, so they run the baseline loops only. Nor does a ThreadSanitizer
+// build: the loader runs the clones' resolver, which TSan instruments, before TSan has started.
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__) && defined(__OPTIMIZE__) &&    \
+    !defined(__SANITIZE_THREAD__)
 #define TAMIAS_WIDE_CLONES 1
 #define TAMIAS_WIDE_KERNEL __attribute__((target_clones("avx2", "default"), flatten))
 #else
