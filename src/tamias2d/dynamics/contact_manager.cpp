@@ -141,8 +141,26 @@ void ContactManager::refilter(std::uint32_t s, BodyStore& bodies, const ShapeSto
 
 void ContactManager::find_new(const BodyStore& bodies, ShapeStore& shapes,
                               const JointStore& joints) {
-    new_pairs_.clear();
+    // Pairs a bad_alloc left unexamined in the last call first (the broad phase has forgotten
+    // their moves and would not report them again): those whose shapes still exist and whose
+    // fat boxes still overlap, merged with the new ones in the broad phase's sorted order.
+    std::size_t kept = 0;
+    for (std::size_t i = pending_begin_; i < pending_end_; ++i) {
+        const Shape& a = shapes.shapes[new_pairs_[i].first];
+        const Shape& b = shapes.shapes[new_pairs_[i].second];
+        if (a.alive() && b.alive() && overlaps(a.fat_box, b.fat_box))
+            new_pairs_[kept++] = new_pairs_[i];
+    }
+    new_pairs_.resize(kept);
+    pending_begin_ = 0;
+    pending_end_ = kept;
     shapes.broad_phase.update_pairs(new_pairs_);
+    if (kept > 0) {
+        const auto middle = new_pairs_.begin() + static_cast<std::ptrdiff_t>(kept);
+        std::inplace_merge(new_pairs_.begin(), middle, new_pairs_.end());
+        new_pairs_.erase(std::unique(new_pairs_.begin(), new_pairs_.end()), new_pairs_.end());
+    }
+    pending_end_ = new_pairs_.size();
     // Most pairs the broad phase reports are contacts already (rain_16k: 78 %), so the index
     // is asked first, its slots eight pairs ahead: one line per pair, where the filter's shapes
     // and bodies are four scattered lines.
@@ -151,6 +169,7 @@ void ContactManager::find_new(const BodyStore& bodies, ShapeStore& shapes,
         if (i + ahead < new_pairs_.size())
             index_.prefetch(
                 Contact::key(new_pairs_[i + ahead].first, new_pairs_[i + ahead].second));
+        pending_begin_ = i; // until this pair is done: a bad_alloc below leaves it pending
         const auto [ua, ub] = new_pairs_[i];
         const std::uint32_t sa = std::min(ua, ub), sb = std::max(ua, ub);
         const std::uint64_t key = Contact::key(sa, sb);
@@ -166,11 +185,17 @@ void ContactManager::find_new(const BodyStore& bodies, ShapeStore& shapes,
         const Material& mb = shapes.defs[sb].material;
         c.friction = std::sqrt(ma.friction * mb.friction);
         c.restitution = std::max(ma.restitution, mb.restitution);
+        // All the memory first, so that a bad_alloc leaves the parallel arrays and the index
+        // agreeing.
+        contacts.reserve_more(1);
+        warm_impulses.reserve_more(1);
+        total_impulses.reserve_more(1);
         index_.insert(key, std::uint32_t(contacts.size()));
         contacts.push_back(c);
         warm_impulses.emplace_back();
         total_impulses.emplace_back();
     }
+    pending_begin_ = pending_end_ = 0;
 }
 
 void ContactManager::update(BodyStore& bodies, const ShapeStore& shapes, bool sleeping,

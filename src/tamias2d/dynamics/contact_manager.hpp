@@ -107,6 +107,8 @@ class ContactManager {
     PairMap index_; ///< contact by Contact::key of its shapes
     // Per-step scratch, kept to avoid allocation in steady state.
     std::vector<std::pair<std::uint32_t, std::uint32_t>> new_pairs_;
+    /// new_pairs_[pending_begin_, pending_end_): pairs a bad_alloc in find_new left unexamined.
+    std::size_t pending_begin_ = 0, pending_end_ = 0;
     std::vector<std::uint32_t> doomed_;
     std::vector<ContactInfo> infos_;
     bool infos_stale_ = true;

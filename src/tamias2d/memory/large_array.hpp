@@ -101,6 +101,12 @@ template <class T> class LargeArray {
                                                                       n * sizeof(T), alignof(T)));
         capacity_ = n;
     }
+    /// Capacity for `extra` more elements, grown as push_back grows it: the pushes that follow
+    /// cannot fail, so that arrays kept parallel grow all or none (bad_alloc).
+    void reserve_more(std::size_t extra) {
+        if (size_ + extra > capacity_)
+            reserve(grown(size_ + extra));
+    }
     void resize(std::size_t n) {
         if (n > capacity_)
             reserve(grown(n));

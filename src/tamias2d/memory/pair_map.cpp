@@ -53,10 +53,11 @@ void PairMap::erase(std::uint64_t key) {
 }
 
 void PairMap::grow() {
-    LargeArray<Slot> old = std::move(slots_);
-    const std::size_t capacity = old.empty() ? 64 : 2 * old.size();
-    slots_.assign(capacity, Slot{});
-    shift_ = 64 - std::countr_zero(capacity);
+    // The new array first: if it cannot be had (bad_alloc), the map is as it was.
+    LargeArray<Slot> old;
+    old.assign(slots_.empty() ? 64 : 2 * slots_.size(), Slot{});
+    std::swap(old, slots_);
+    shift_ = 64 - std::countr_zero(slots_.size());
     for (const Slot& s : old) {
         if (s.key != empty_key)
             slots_[probe(s.key)] = s;

@@ -1,0 +1,107 @@
+// std::bad_alloc during a step leaves a valid world. The guarantee (docs/user-guide.md,
+// "Threads, exceptions and handles"): step() lets the bad_alloc through, and the world stays
+// valid: every handle it had stays valid, every state is finite, every call works, it can be
+// stepped again once memory is available, and destroying it frees everything. The step that
+// failed may have been partly done (basic guarantee, not strong).
+// Oracle: the library's own invariants as the public API shows them, checked after every
+// failure point of a step (the Nth allocation, N = 0, 1, ... until a step completes), with
+// the failure once or for good; the ASan/UBSan build runs the same sweep, where a dangling
+// index or a leak left by the unwinding fails it.
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <new>
+#include <vector>
+
+#include "reliability/failing_new.hpp"
+#include "reliability/reliability_support.hpp"
+#include "tamias2d/world.hpp"
+
+using namespace tamias2d;
+
+namespace {
+
+bool finite_world(const World& w) {
+    for (const BodyId b : w.bodies()) {
+        const BodyState s = w.state(b);
+        if (!std::isfinite(s.position.x + s.position.y + s.velocity.x + s.velocity.y +
+                           s.orientation + s.angular_velocity))
+            return false;
+    }
+    return std::isfinite(w.kinetic_energy());
+}
+
+/// Fails the Nth allocation (N = 0, 1, ...) of the step after `before` steps, for every N
+/// until the step needs fewer; after each failure the world must be valid (see above).
+void sweep(int before, bool once) {
+    int failures = 0, unchanged = 0;
+    for (long n = 0;; ++n) {
+        World w = reliability::busy_world();
+        for (int s = 0; s < before; ++s)
+            w.step(1.0 / 60.0);
+        const std::vector<BodyId> bodies = w.bodies();
+        const std::uint64_t hash = w.state_hash();
+        bool threw = false;
+        reliability::fail_allocation_after(n, once);
+        try {
+            w.step(1.0 / 60.0);
+        } catch (const std::bad_alloc&) {
+            threw = true;
+        }
+        reliability::stop_failing();
+        if (!threw) {
+            BOOST_TEST_MESSAGE("step " << before + 1 << (once ? ", one failure: " : ": ")
+                                       << failures << " failure points, " << unchanged
+                                       << " left the world as before the step");
+            break;
+        }
+        ++failures;
+        unchanged += w.state_hash() == hash;
+        BOOST_TEST_CONTEXT("step " << before + 1 << ", allocation " << n << (once ? " once" : "")) {
+            BOOST_TEST_REQUIRE(w.bodies() == bodies);
+            BOOST_TEST_REQUIRE(finite_world(w));
+            (void)w.contacts();
+            for (int s = 0; s < 60; ++s)
+                w.step(1.0 / 60.0);
+            BOOST_TEST_REQUIRE(finite_world(w));
+            BOOST_TEST_REQUIRE(w.bodies() == bodies);
+            for (const BodyId b : bodies)
+                w.destroy_body(b);
+            w.step(1.0 / 60.0);
+            BOOST_TEST_REQUIRE(w.body_count() == 0u);
+        }
+    }
+    BOOST_TEST(failures > 0);
+}
+
+/// The steps (0-based: how many steps come before) among the first 240 that allocate: the
+/// first, when everything is sized, and those where the striker's impact makes new contacts and
+/// the arrays grow. (A settled world allocates nothing: tests/bench/test_no_allocation.cpp.)
+std::vector<int> allocating_steps() {
+    std::vector<int> out;
+    World w = reliability::busy_world();
+    for (int s = 0; s < 240; ++s) {
+        const long before = reliability::allocation_count();
+        w.step(1.0 / 60.0);
+        if (reliability::allocation_count() != before)
+            out.push_back(s);
+    }
+    BOOST_TEST_MESSAGE("steps that allocate (0-based): " << out.size());
+    return out;
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(out_of_memory)
+
+BOOST_AUTO_TEST_CASE(bad_alloc_in_any_allocation_of_a_step_leaves_a_valid_world) {
+    const std::vector<int> steps = allocating_steps();
+    BOOST_TEST_REQUIRE(steps.size() >= 2u);
+    for (const int before : steps) {
+        sweep(before, false);
+        sweep(before, true);
+    }
+}
+
+BOOST_AUTO_TEST_SUITE_END()
