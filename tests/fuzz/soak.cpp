@@ -1,12 +1,21 @@
-// Soak (on request, not in the CTest run): the rain scene stepped for TAMIAS_SOAK_STEPS steps
-// (default 10 000) while a seeded churn destroys a random box and drops a new one every 10
-// steps. Fails (exit 1) when a state turns non-finite or memory keeps growing.
+// Soak (on request, not in the CTest run). Two scenes:
+//   tamias_soak          the rain scene stepped for TAMIAS_SOAK_STEPS steps
+//   (default 10 000)
+//                        while a seeded churn destroys a random box and drops a
+//                        new one every 10 steps. Fails (exit 1) when a state
+//                        turns non-finite or memory grows.
+//   tamias_soak --busy   rain with restitution and friction beside a pyramid
+//   struck again and
+//                        again by a heavy box, TAMIAS_SOAK_STEPS steps (default
+//                        1 000 000), with bounds on speed and energy too
+//                        (soak_busy.cpp).
 //
-// Oracle: the library's promises that every state after an accepted step is finite (DCO_p,
-// DCO_v) and that a world of constant size holds constant memory: the resident set and the
-// world's large blocks (tamias2d::large_array_stats) at the end may exceed their values after
-// the first tenth of the run (the warm-up, when every array has reached its working size) by
-// at most 10 % + 4 MiB.
+// Oracle of the rain soak: the library's promises that every state after an
+// accepted step is finite (DCO_p, DCO_v) and that a world of constant size
+// holds constant memory: the resident set and the world's large blocks
+// (tamias2d::large_array_stats) at the end may exceed their values after the
+// first tenth of the run (the warm-up, when every array has reached its working
+// size) by at most 10 % + 4 MiB.
 //
 //   TAMIAS_SOAK_STEPS=100000 build/tests/fuzz/tamias_soak
 #include <algorithm>
@@ -14,11 +23,12 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <string>
 #include <vector>
 
 #include "fuzz/fuzz_support.hpp"
+#include "fuzz/soak_busy.hpp"
+#include "reliability/reliability_support.hpp"
 #include "tamias2d/io/scene.hpp"
 #include "tamias2d/memory.hpp"
 #include "tamias2d/world.hpp"
@@ -27,14 +37,7 @@ using namespace tamias2d;
 
 namespace {
 
-/// Resident set size in bytes (Linux /proc), 0 where unavailable.
-std::size_t resident_bytes() {
-    std::ifstream statm("/proc/self/statm");
-    std::size_t pages = 0, resident = 0;
-    if (!(statm >> pages >> resident))
-        return 0;
-    return resident * 4096;
-}
+using reliability::resident_bytes;
 
 constexpr double max_speed = 100.0; // m/s
 
@@ -42,15 +45,13 @@ bool grew(std::size_t start, std::size_t end) {
     return end > start + start / 10 + (std::size_t{4} << 20);
 }
 
-} // namespace
-
-int main() {
-    long steps = fuzz::iterations("TAMIAS_SOAK_STEPS", 10000);
+int run_rain(long steps) {
     const io::Scene scene = io::load_scene(TAMIAS_EXAMPLE_SCENES "/rain.json");
     World world(scene.world);
     io::build_world(scene, world);
     std::vector<BodyId> boxes;
-    // New boxes fall in where the scene's boxes start: inside the container, above it.
+    // New boxes fall in where the scene's boxes start: inside the container,
+    // above it.
     double x_min = 1e300, x_max = -1e300, y_max = -1e300;
     for (const BodyId b : world.bodies())
         if (world.type(b) == BodyType::dynamic) {
@@ -61,7 +62,8 @@ int main() {
         }
     const ShapeDef box = box_shape(0.5, 0.5, Material{1.0, 0.0, 0.6});
     const std::size_t count = world.body_count();
-    std::printf("soak: rain, %zu bodies, %ld steps, a box replaced every 10 steps (x in [%g, %g] "
+    std::printf("soak: rain, %zu bodies, %ld steps, a box replaced every 10 "
+                "steps (x in [%g, %g] "
                 "m, %g m up)\n",
                 count, steps, x_min, x_max, y_max);
 
@@ -72,8 +74,9 @@ int main() {
     for (long s = 1; s <= steps; ++s) {
         world.step(scene.dt);
         if (s % 10 == 0) {
-            // Churn: a box leaves (one splashed out over the walls first: outside the open-top
-            // container nothing stops it), a new one falls in from above the container.
+            // Churn: a box leaves (one splashed out over the walls first: outside the
+            // open-top container nothing stops it), a new one falls in from above the
+            // container.
             std::size_t i = r.below(boxes.size());
             for (std::size_t k = 0; k < boxes.size(); ++k)
                 if (world.position(boxes[k]).y < -1.0) {
@@ -110,26 +113,43 @@ int main() {
             }
             std::printf("step %ld: lowest box y %.3g m, fastest %.3g m/s, %ld splashed out\n", s,
                         y_low, speed, escaped);
-            // A box falling from the drop height lands at ~33 m/s; far faster is an explosion.
+            // A box falling from the drop height lands at ~33 m/s; far faster is an
+            // explosion.
             if (speed > max_speed) {
                 std::printf("FAIL step %ld: a box at %g m/s (bound %g)\n", s, speed, max_speed);
                 return 1;
             }
-            std::printf("step %ld: resident %.1f MiB, large blocks %.1f MiB, kinetic %.6g J\n", s,
-                        static_cast<double>(resident_bytes()) / (1 << 20),
+            std::printf("step %ld: resident %.1f MiB, large blocks %.1f MiB, kinetic "
+                        "%.6g J\n",
+                        s, static_cast<double>(resident_bytes()) / (1 << 20),
                         static_cast<double>(large_array_stats().mapped_bytes) / (1 << 20),
                         world.kinetic_energy());
         }
     }
     const std::size_t rss_end = resident_bytes(), blocks_end = large_array_stats().mapped_bytes;
     if (grew(rss_warm, rss_end) || grew(blocks_warm, blocks_end)) {
-        std::printf("FAIL memory grew: resident %zu -> %zu bytes, large blocks %zu -> %zu bytes "
+        std::printf("FAIL memory grew: resident %zu -> %zu bytes, large blocks %zu "
+                    "-> %zu bytes "
                     "(from step %ld to the end)\n",
                     rss_warm, rss_end, blocks_warm, blocks_end, warm);
         return 1;
     }
-    std::printf("soak passed: finite states, memory bounded (resident %zu -> %zu bytes, large "
+    std::printf("soak passed: finite states, memory bounded (resident %zu -> %zu "
+                "bytes, large "
                 "blocks %zu -> %zu bytes from step %ld)\n",
                 rss_warm, rss_end, blocks_warm, blocks_end, warm);
     return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    const bool busy = argc > 1 && std::string(argv[1]) == "--busy";
+    if (argc > 2 || (argc == 2 && !busy)) {
+        std::fprintf(stderr, "usage: tamias_soak [--busy]   (steps: TAMIAS_SOAK_STEPS)\n");
+        return 2;
+    }
+    if (busy)
+        return soak::run_busy(fuzz::iterations("TAMIAS_SOAK_STEPS", 1000000));
+    return run_rain(fuzz::iterations("TAMIAS_SOAK_STEPS", 10000));
 }
