@@ -314,6 +314,34 @@ void circle_polygon_into(const Collider& a, const Collider& b, const CollideInpu
     swap_roles(m);
 }
 
+/// An incident edge v21 -> v22 clipped to the side planes of the reference face v11 -> v12
+/// (outward normal n), and its ends' and the face's coordinates along the face's tangent.
+struct Clipped {
+    Vec2d lower, upper; ///< the clipped ends (from v22 and v21)
+    double lower_t, upper_t, face_t;
+};
+
+[[gnu::always_inline]] inline Clipped clip_to_face(Vec2d v11, Vec2d v12, Vec2d n, Vec2d v21,
+                                                   Vec2d v22) {
+    // The tangent runs along the reference edge (CCW); the incident edge runs against it.
+    const Vec2d t = left_perp(n);
+    Clipped c;
+    c.face_t = dot(v12 - v11, t);
+    c.upper_t = dot(v21 - v11, t);
+    c.lower_t = dot(v22 - v11, t);
+    const double span = c.upper_t - c.lower_t;
+    // Endpoints inside the slab are kept bit-exact (symmetric head-on contacts stay symmetric).
+    c.lower = v22;
+    c.upper = v21;
+    if (span > 0.0) {
+        if (c.lower_t < 0.0)
+            c.lower = v22 + ((0.0 - c.lower_t) / span) * (v21 - v22);
+        if (c.upper_t > c.face_t)
+            c.upper = v22 + ((c.face_t - c.lower_t) / span) * (v21 - v22);
+    }
+    return c;
+}
+
 /// \srs{T5} polygons by the separating axis test; \srs{A5} vertex-edge gives one point,
 /// \srs{LC1} edge-edge two. NA and NB are the vertex counts when known at compile time (0: read
 /// from the colliders): boxes against boxes get straight-line code.
@@ -453,22 +481,8 @@ void polygons_into(const Collider& a, const Collider& b, const CollideInput& in,
         }
     }
 
-    // Clip the incident edge to the side planes of the reference face. The tangent runs
-    // along the reference edge (CCW); the incident edge runs against it.
-    const Vec2d t = left_perp(n);
-    const double upper1 = dot(v12 - v11, t);
-    const double upper2 = dot(v21 - v11, t);
-    const double lower2 = dot(v22 - v11, t);
-    const double span = upper2 - lower2;
-    // Endpoints inside the slab are kept bit-exact (symmetric head-on contacts stay symmetric).
-    Vec2d lower = v22;
-    Vec2d upper = v21;
-    if (span > 0.0) {
-        if (lower2 < 0.0)
-            lower = v22 + ((0.0 - lower2) / span) * (v21 - v22);
-        if (upper2 > upper1)
-            upper = v22 + ((upper1 - lower2) / span) * (v21 - v22);
-    }
+    const Clipped clip = clip_to_face(v11, v12, n, v21, v22);
+    const Vec2d lower = clip.lower, upper = clip.upper;
     const double sep_lower = dot(lower - v11, n);
     const double sep_upper = dot(upper - v11, n);
 
@@ -673,21 +687,11 @@ void rounded_into(const Collider& a, const Collider& b, const CollideInput& in, 
     const double r_inc = inc.radius;
 
     // Clip the incident edge (or point) to the reference face's side planes.
-    const Vec2d t = left_perp(n);
-    const double upper1 = dot(v12 - v11, t);
-    const double upper2 = dot(v21 - v11, t);
-    const double lower2 = dot(v22 - v11, t);
-    if (forced_face >= 0 && (std::max(upper2, lower2) < 0.0 || std::min(upper2, lower2) > upper1))
+    const Clipped clip = clip_to_face(v11, v12, n, v21, v22);
+    if (forced_face >= 0 && (std::max(clip.upper_t, clip.lower_t) < 0.0 ||
+                             std::min(clip.upper_t, clip.lower_t) > clip.face_t))
         return set_empty(m); // wholly beside the forced face: another feature's contact
-    const double span = upper2 - lower2;
-    Vec2d lower = v22;
-    Vec2d upper = v21;
-    if (span > 0.0) {
-        if (lower2 < 0.0)
-            lower = v22 + ((0.0 - lower2) / span) * (v21 - v22);
-        if (upper2 > upper1)
-            upper = v22 + ((upper1 - lower2) / span) * (v21 - v22);
-    }
+    const Vec2d lower = clip.lower, upper = clip.upper;
     const double sep_lower = dot(lower - v11, n) - rsum;
     const double sep_upper = dot(upper - v11, n) - rsum;
     m.normal = rotate(frame.q, flip ? -n : n);
