@@ -55,6 +55,24 @@ def find_chromium(explicit):
     return None
 
 
+def page_errors(browser):
+    """What the page did wrong, from the events seen so far: script errors, console errors and
+    any request that leaves the page (it must load nothing)."""
+    errors = []
+    for e in browser.events:
+        m, p = e.get("method"), e.get("params", {})
+        if m == "Runtime.exceptionThrown":
+            d = p.get("exceptionDetails", {})
+            errors.append("script error: " + (d.get("exception", {}).get("description") or d.get("text", "")))
+        elif m == "Runtime.consoleAPICalled" and p.get("type") == "error":
+            errors.append("console error: " + " ".join(str(a.get("value")) for a in p.get("args", [])))
+        elif m == "Network.requestWillBeSent":
+            url = p.get("request", {}).get("url", "")
+            if not url.startswith(("file:", "data:", "blob:", "about:")):
+                errors.append(f"network request: {url}")
+    return errors
+
+
 class CdpError(RuntimeError):
     pass
 
@@ -339,18 +357,7 @@ def check_page(browser, page, csv_path, shot_path, label):
     if shot_path:
         shot_path.write_bytes(png)
 
-    errors = []
-    for e in browser.events:
-        m, p = e.get("method"), e.get("params", {})
-        if m == "Runtime.exceptionThrown":
-            d = p.get("exceptionDetails", {})
-            errors.append("script error: " + (d.get("exception", {}).get("description") or d.get("text", "")))
-        elif m == "Runtime.consoleAPICalled" and p.get("type") == "error":
-            errors.append("console error: " + " ".join(str(a.get("value")) for a in p.get("args", [])))
-        elif m == "Network.requestWillBeSent":
-            url = p.get("request", {}).get("url", "")
-            if not url.startswith(("file:", "data:", "blob:", "about:")):
-                errors.append(f"network request: {url}")
+    errors = page_errors(browser)
     if errors:
         raise AssertionError(f"{label}: " + "; ".join(errors[:5]))
     return (f"{count} frames, {compared} states within half a quantum (worst {worst:.2f} of it), "

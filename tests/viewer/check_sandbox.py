@@ -39,7 +39,7 @@ import time
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from check_player import HEIGHT, SKIP, WIDTH, Browser, CdpError, find_chromium, hex_rgb  # noqa: E402
+from check_player import HEIGHT, SKIP, WIDTH, Browser, CdpError, find_chromium, hex_rgb, page_errors  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[2]
 KEYS = ("x", "y", "phi", "vx", "vy", "omega")
@@ -306,18 +306,7 @@ def main():
                     print(f"FAILED: {e}")
                     failures += 1
             print("OK: " + check_interaction(browser, args.shot))
-            errors = []
-            for e in browser.events:
-                m, p = e.get("method"), e.get("params", {})
-                if m == "Runtime.exceptionThrown":
-                    d = p.get("exceptionDetails", {})
-                    errors.append("script error: " + (d.get("exception", {}).get("description") or d.get("text", "")))
-                elif m == "Runtime.consoleAPICalled" and p.get("type") == "error":
-                    errors.append("console error: " + " ".join(str(a.get("value")) for a in p.get("args", [])))
-                elif m == "Network.requestWillBeSent":
-                    url = p.get("request", {}).get("url", "")
-                    if not url.startswith(("file:", "data:", "blob:", "about:")):
-                        errors.append(f"network request: {url}")
+            errors = page_errors(browser)
             if errors:
                 raise AssertionError("sandbox: " + "; ".join(errors[:5]))
         except (AssertionError, CdpError) as e:
