@@ -242,12 +242,7 @@
     canvas.addEventListener('wheel', (e) => {
       e.preventDefault();
       const r = canvas.getBoundingClientRect();
-      const px = (e.clientX - r.left) * dpr, py = (e.clientY - r.top) * dpr;
-      const x = wx(px), y = wy(py);
-      const delta = e.deltaY * (e.deltaMode === 1 ? 16 : e.deltaMode === 2 ? 400 : 1);
-      view.scale = Math.min(1e7, Math.max(1e-4, view.scale * Math.exp(-delta * 0.0015)));
-      view.cx = x - (px - canvas.width / 2) / view.scale;
-      view.cy = y - (canvas.height / 2 - py) / view.scale;
+      drawing.zoomAt((e.clientX - r.left) * dpr, (e.clientY - r.top) * dpr, e);
       dirty = true;
     }, { passive: false });
 

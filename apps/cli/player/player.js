@@ -355,7 +355,17 @@ window.TamiasDraw = (function () {
       return -1;
     }
 
+    // A wheel event's zoom about the device pixel (px, py): the point under it stays where it is.
+    function zoomAt(px, py, e) {
+      const x = wx(px), y = wy(py);
+      const delta = e.deltaY * (e.deltaMode === 1 ? 16 : e.deltaMode === 2 ? 400 : 1);
+      view.scale = Math.min(1e7, Math.max(1e-4, view.scale * Math.exp(-delta * 0.0015)));
+      view.cx = x - (px - canvas.width / 2) / view.scale;
+      view.cy = y - (canvas.height / 2 - py) / view.scale;
+    }
+
     return {
+      zoomAt,
       ctx, view, sx, sy, wx, wy, fitBox, clear, addBodyPath, visible, drawGrid, drawBodies, drawJoints,
       drawAabbs, drawContacts, drawHighlight, bodyAt,
       setBodies: (list) => { bodies = list; },
@@ -771,13 +781,7 @@ window.TamiasDraw = (function () {
     canvas.addEventListener('wheel', (e) => {
       e.preventDefault();
       const r = canvas.getBoundingClientRect();
-      const px = (e.clientX - r.left) * dpr, py = (e.clientY - r.top) * dpr;
-      const x = wx(px), y = wy(py);
-      const delta = e.deltaY * (e.deltaMode === 1 ? 16 : e.deltaMode === 2 ? 400 : 1);
-      view.scale = Math.min(1e7, Math.max(1e-4, view.scale * Math.exp(-delta * 0.0015)));
-      // Keep the point under the cursor where it is.
-      view.cx = x - (px - canvas.width / 2) / view.scale;
-      view.cy = y - (canvas.height / 2 - py) / view.scale;
+      drawing.zoomAt((e.clientX - r.left) * dpr, (e.clientY - r.top) * dpr, e);
       dirty = true;
     }, { passive: false });
 
