@@ -131,6 +131,12 @@ def analyse(srs, code_sites, tests, config, warnings=None):
             notes.append("Weak evidence: every passing test rests on " + ", ".join(kinds) +
                          " only (no closed form, reference solution, conservation law or "
                          "property).")
+        # A trace link must say why it verifies the item: a labelled test that names no oracle
+        # is weak evidence whatever the others show.
+        unstated = [t["id"] for t in its_tests if not t.get("oracle")]
+        if unstated:
+            notes.append(f"Weak evidence: {len(unstated)} labelled test(s) state no oracle: " +
+                         ", ".join(unstated) + ".")
         if it["kind"] in LABEL_ONLY_KINDS:
             notes.append(LABEL_ONLY_KINDS[it["kind"]])
         lib_sites = [s for s in sites if s["area"] in ("library", "application")]
@@ -146,7 +152,7 @@ def analyse(srs, code_sites, tests, config, warnings=None):
             "label": lab, "kind": it["kind"], "alias": it.get("alias"), "title": it.get("title"),
             "status": status, "gated": it["kind"] in GATED_KINDS,
             "status_reason": decl["reason"] if decl and status == decl["status"] else None,
-            "oracle_kinds": kinds, "weak_evidence": weak,
+            "oracle_kinds": kinds, "weak_evidence": weak, "tests_without_oracle": unstated,
             "code_sites": sites, "tests": [t["id"] for t in its_tests],
             "tests_passed": sum(t["status"] == "passed" for t in its_tests),
             "tests_failing": sum(t["status"] in FAILING for t in its_tests),
@@ -179,6 +185,7 @@ def analyse(srs, code_sites, tests, config, warnings=None):
     # Gaps (SRS -> evidence) and orphans (evidence -> SRS).
     gaps = {
         "weak_evidence": [i["label"] for i in items if i["weak_evidence"]],
+        "unstated_oracle": [i["label"] for i in items if i["tests_without_oracle"]],
         "no_code": [i["label"] for i in items if not i["code_sites"]],
         "no_test": [i["label"] for i in items if not i["tests"]],
         "no_passing_test": [i["label"] for i in items if i["tests_passed"] == 0],
@@ -209,6 +216,8 @@ def analyse(srs, code_sites, tests, config, warnings=None):
         o["total"] += 1
         o[t["status"]] = o.get(t["status"], 0) + 1
     missing_oracle = [t["id"] for t in tests if not t.get("oracle")]
+    # The ones that matter most: tests that claim an SRS item without saying how they know.
+    missing_oracle_srs = [t["id"] for t in tests if not t.get("oracle") and t["srs_labels"]]
 
     # Gate.
     reasons = []
@@ -238,7 +247,8 @@ def analyse(srs, code_sites, tests, config, warnings=None):
             "targets_missed": [t["id"] for t in tests if t["status"] == "target-missed"]}
     return {"items": items, "by_kind": by_kind, "by_status": by_status, "gaps": gaps,
             "orphans": orphans, "category_labels": category_labels, "test_totals": test_totals,
-            "missing_oracle": missing_oracle, "gate": gate}
+            "missing_oracle": missing_oracle, "missing_oracle_srs": missing_oracle_srs,
+            "gate": gate}
 
 
 def _kind_order(k):

@@ -142,6 +142,10 @@ def build(args, log=print):
     status_of = {i["label"]: i["status"] for i in res["items"]}
     gr = graphs.render_graphs(srs, status_of, out, warnings)
     missing_oracle = res["missing_oracle"]
+    if res["missing_oracle_srs"]:
+        warnings.append(f"{len(res['missing_oracle_srs'])} SRS-labelled test(s)/check(s) state no "
+                        "oracle (weak evidence for their items): " +
+                        ", ".join(res["missing_oracle_srs"]))
     if missing_oracle:
         warnings.append(f"{len(missing_oracle)} test(s)/check(s) state no oracle: " +
                         ", ".join(missing_oracle[:10]) + (" ..." if len(missing_oracle) > 10 else ""))
@@ -172,6 +176,7 @@ def build(args, log=print):
         "orphans": res["orphans"],
         "category_labels": res["category_labels"],
         "missing_oracle": missing_oracle,
+        "missing_oracle_srs": res["missing_oracle_srs"],
         "registration": tinfo["registration"],
         "boost_binaries": tinfo["boost_binaries"],
         "matrices": [{k: m[k] for k in ("id", "number", "caption", "rows", "cols", "row_labels", "col_labels",

@@ -295,7 +295,8 @@ are labelled with are judged by their other checks:""", g.get("targets_missed"))
                f'<a href="#orphan-labels">orphan test labels</a>: {c["orphan_test_labels"]}</li>'
                f'<li><a href="#errata">SRS errata</a> recorded in srs/errata.yaml: {c["errata"]}; '
                f'<a href="#refby">Ref.By disagreements</a> between the seed and the data: {c["refby_disagreements"]}</li>'
-               f'<li><a href="#missing-oracle">Tests without an oracle statement</a>: {len(r["missing_oracle"])}; '
+               f'<li><a href="#missing-oracle">Tests without an oracle statement</a>: {len(r["missing_oracle"])} '
+               f'({len(r.get("missing_oracle_srs", []))} of them SRS-labelled: weak evidence for their items); '
                f'<a href="#gaps">items whose only evidence is weak</a> (peer, regression or unplaced oracles): '
                f'{len(r["gaps"]["weak_evidence"])}</li>'
                f'<li><a href="#warnings">Harness warnings</a>: {c["warnings"]}</li></ul>')
@@ -330,6 +331,10 @@ are labelled with are judged by their other checks:""", g.get("targets_missed"))
         kinds = E(", ".join(it.get("oracle_kinds") or []))
         if it.get("weak_evidence"):
             return f'<span class="orphan" title="every passing test rests on these only">{kinds} (weak)</span>'
+        if it.get("tests_without_oracle"):
+            n = len(it["tests_without_oracle"])
+            return (f'{kinds} <span class="orphan" title="labelled tests that state no oracle">'
+                    f'(weak: {n} without oracle)</span>')
         return kinds
 
     def _errata_links(self, ids):
@@ -400,8 +405,9 @@ are labelled with are judged by their other checks:""", g.get("targets_missed"))
         for key, title in (("no_code", "No code tag"), ("no_test", "No labelled test or check"),
                            ("no_passing_test", "No passing test or check"),
                            ("weak_evidence", "Verified only by weak evidence (peer, regression or "
-                                             "unplaced oracles)")):
-            self.w(f'<tr><td>{E(title)}</td><td class="num">{len(g[key])}</td><td>{self.links(g[key])}</td></tr>')
+                                             "unplaced oracles)"),
+                           ("unstated_oracle", "Weak evidence: a labelled test states no oracle")):
+            self.w(f'<tr><td>{E(title)}</td><td class="num">{len(g.get(key, []))}</td><td>{self.links(g.get(key, []))}</td></tr>')
         self.w('</tbody></table>')
         self.w('<h3 id="orphan-tags">Evidence → SRS: orphan code tags</h3>')
         if o["code_tags"]:
@@ -432,7 +438,12 @@ are labelled with are judged by their other checks:""", g.get("targets_missed"))
         if r["missing_oracle"]:
             self.w('<p class="small">Boost.Test cases need a <code>// Oracle: ...</code> line in the comment block '
                    'directly above the test-case macro; other CTest entries a <code># Oracle: ...</code> line above '
-                   'their <code>add_test()</code> or the helper call that registers them; checks an <code>oracle</code> field.</p><p class="small">' +
+                   'their <code>add_test()</code> or the helper call that registers them; checks an <code>oracle</code> field.</p>' +
+                   (f'<p class="small"><strong>SRS-labelled ({len(r.get("missing_oracle_srs", []))})</strong>, '
+                    'weak evidence for their items: ' +
+                    (", ".join(self.tlink(t) for t in r.get("missing_oracle_srs", [])) or "none") +
+                    '</p>') +
+                   '<p class="small">All: ' +
                    ", ".join(self.tlink(t) for t in r["missing_oracle"]) + '</p>')
         else:
             self.w('<p class="ok-note">Every test states its oracle.</p>')

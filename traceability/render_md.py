@@ -59,7 +59,8 @@ def render(r):
               "Errata"],
              [[i["label"], i["kind"], i.get("alias") or "", i.get("title") or "",
                i["status"] + (f": {i['status_reason']}" if i.get("status_reason") else ""),
-               ", ".join(i.get("oracle_kinds") or []) + (" (weak)" if i.get("weak_evidence") else ""),
+               ", ".join(i.get("oracle_kinds") or []) + (" (weak)" if i.get("weak_evidence") else "") +
+               (f" ({len(i['tests_without_oracle'])} without oracle)" if i.get("tests_without_oracle") else ""),
                "; ".join(f"{c['file']}:{c['line']}" for c in i["code_sites"]) or "—",
                "; ".join(f"{t} ({tests[t]['status']})" for t in i["tests"]) or "—",
                ", ".join(i["errata"])] for i in r["items"]]))
@@ -82,12 +83,16 @@ def render(r):
     w(f"- No labelled test or check ({len(gp['no_test'])}): {', '.join(gp['no_test']) or 'none'}")
     w(f"- No passing test or check ({len(gp['no_passing_test'])}): {', '.join(gp['no_passing_test']) or 'none'}")
     w(f"- Verified only by weak evidence ({len(gp['weak_evidence'])}): {', '.join(gp['weak_evidence']) or 'none'}")
+    w(f"- Weak evidence: a labelled test states no oracle ({len(gp.get('unstated_oracle', []))}): "
+      f"{', '.join(gp.get('unstated_oracle', [])) or 'none'}")
     o = r["orphans"]
     w(f"- Orphan code tags ({len(o['code_tags'])}): " +
       (", ".join(f"`\\srs{{{x['label']}}}` at {x['file']}:{x['line']}" for x in o["code_tags"]) or "none"))
     w(f"- Orphan test labels ({len(o['test_labels'])}): " +
       (", ".join(f"{x['label']} ({', '.join(x['tests'])})" for x in o["test_labels"]) or "none"))
-    w(f"- Tests without an oracle ({len(r['missing_oracle'])}): {', '.join(r['missing_oracle']) or 'none'}")
+    srs_missing = r.get("missing_oracle_srs", [])
+    w(f"- SRS-labelled tests without an oracle ({len(srs_missing)}): {', '.join(srs_missing) or 'none'}")
+    w(f"- Tests without an oracle, labelled or not ({len(r['missing_oracle'])}): {', '.join(r['missing_oracle']) or 'none'}")
     for x in r["registration"]:
         w(f"- Registration: {x}")
     w("")

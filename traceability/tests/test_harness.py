@@ -437,6 +437,25 @@ class Units(unittest.TestCase):
         self.assertEqual(got, {"A1": {"status": "assumed", "reason": "r"}})
         self.assertEqual(len(warnings), 3)
 
+    def test_labelled_test_without_oracle_is_weak_evidence(self):
+        # Oracle: the rule stated in docs/traceability.md: an SRS-labelled test that states no
+        # oracle is listed, and flagged on its item, even beside strong evidence.
+        from traceability import srsdata
+        srs = srsdata.load_srs(os.path.join(REPO, "srs"))
+        tests = [{"id": "a", "labels": ["IM1"], "status": "passed", "origin": "boost",
+                  "oracle": "closed form x(t) = x0 + v0 t"},
+                 {"id": "b", "labels": ["IM1"], "status": "passed", "origin": "boost", "oracle": None},
+                 {"id": "c", "labels": ["R99"], "status": "passed", "origin": "boost", "oracle": None}]
+        res = analysis.analyse(srs, [], tests, {"category_labels": []})
+        im1 = next(i for i in res["items"] if i["label"] == "IM1")
+        self.assertEqual(im1["tests_without_oracle"], ["b"])
+        self.assertFalse(im1["weak_evidence"])  # not verified by weak evidence only
+        self.assertTrue(any(n.startswith("Weak evidence: 1 labelled test(s) state no oracle")
+                            for n in im1["notes"]))
+        self.assertEqual(res["gaps"]["unstated_oracle"], ["IM1"])
+        self.assertEqual(res["missing_oracle_srs"], ["b"])  # c names no SRS item
+        self.assertEqual(res["missing_oracle"], ["b", "c"])
+
     def test_oracle_kinds(self):
         # Oracle: hand-classified oracle statements of this repository's tests.
         k = analysis.oracle_kinds
