@@ -335,9 +335,6 @@ BOOST_AUTO_TEST_CASE(a_self_crossing_outline_is_rejected,
     }
 }
 
-// Oracle: the round trip promised in scene.hpp, parse_scene(scene_to_json(s)) ~ s: a box loads
-// exactly when its written form (a polygon) does, over aspect ratios across the sliver rule's
-// 1e-6 and several angles. The 1e-7 x 1 box loaded and its written form was rejected.
 // Oracle: docs/scene-format.md, Limits: the chains of a scene have at most max_chain_points
 // points in all, counted across entries and bodies; one more is refused at the entry that
 // exceeds the limit, before its points are read. A hand-made Scene beyond the limit is
@@ -382,6 +379,9 @@ BOOST_AUTO_TEST_CASE(chain_points_beyond_the_limit_are_refused, *utf::label("R4"
     BOOST_TEST(a.state_hash() == b.state_hash());
 }
 
+// Oracle: the round trip promised in scene.hpp, parse_scene(scene_to_json(s)) ~ s: a box loads
+// exactly when its written form (a polygon) does, over aspect ratios across the sliver rule's
+// 1e-6 and several angles. The 1e-7 x 1 box loaded and its written form was rejected.
 BOOST_AUTO_TEST_CASE(every_box_that_loads_loads_again_from_its_written_form,
                      *utf::label("R4") * utf::label("DCX_shape")) {
     int loaded = 0, rejected = 0;
