@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""NFR1, "unit typing is free", checked in the code rather than the clock.
+"""Unit typing is free (a performance design rule, not NFR1), checked in the code rather than the clock.
 
 The typing kernel (verification/bench/typing_kernel.hpp) is one template compiled twice with
 identical flags: run_bridge through the unit-typed model layer (bridge::Model, Boost.Units) and

@@ -13,7 +13,7 @@ BOOST_AUTO_TEST_SUITE(memory_probe)
 
 // Oracle: the definition of a single cycle (a walk from 0 returns to 0 after exactly n steps,
 // having seen every line once).
-BOOST_AUTO_TEST_CASE(random_cycle_visits_every_line_once, *boost::unit_test::label("NFR1")) {
+BOOST_AUTO_TEST_CASE(random_cycle_visits_every_line_once, *boost::unit_test::label("performance")) {
     for (const std::size_t n : {2u, 3u, 64u, 1000u, 16384u}) {
         const std::vector<std::uint32_t> next = tamias_bench::random_cycle(n, 2);
         BOOST_REQUIRE_EQUAL(next.size(), n);
@@ -34,7 +34,7 @@ BOOST_AUTO_TEST_CASE(random_cycle_visits_every_line_once, *boost::unit_test::lab
 // Oracle: a uniformly random successor is the next line with probability 1/n; a chase in
 // ascending order (or mostly so) would measure a prefetched stream. Also: the same seed gives the
 // same cycle (the benchmark is deterministic), another seed another one.
-BOOST_AUTO_TEST_CASE(random_cycle_is_not_a_stream, *boost::unit_test::label("NFR1")) {
+BOOST_AUTO_TEST_CASE(random_cycle_is_not_a_stream, *boost::unit_test::label("performance")) {
     const std::size_t n = 16384;
     const std::vector<std::uint32_t> next = tamias_bench::random_cycle(n, 2);
     std::size_t sequential = 0;

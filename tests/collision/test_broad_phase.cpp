@@ -1,6 +1,6 @@
 // Broad phase: new pairs equal a brute-force IM4 scan over fattened boxes (IM4), collision
 // determination of whole scenes equals a brute-force T5 check (R7), and the per-step calls
-// allocate nothing (NFR1).
+// allocate nothing.
 #include <boost/test/unit_test.hpp>
 
 #include <algorithm>

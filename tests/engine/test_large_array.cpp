@@ -16,7 +16,7 @@ using namespace tamias2d;
 BOOST_AUTO_TEST_SUITE(large_array)
 
 // Oracle: std::vector fed the same values (the allocator must not change what a vector holds).
-BOOST_AUTO_TEST_CASE(holds_what_a_vector_holds, *utf::label("NFR1")) {
+BOOST_AUTO_TEST_CASE(holds_what_a_vector_holds, *utf::label("performance")) {
     LargeArray<std::uint64_t> a;
     std::vector<std::uint64_t> want;
     for (std::uint64_t i = 0; i < 400000; ++i) { // grows through small and large blocks
@@ -31,7 +31,7 @@ BOOST_AUTO_TEST_CASE(holds_what_a_vector_holds, *utf::label("NFR1")) {
 }
 
 // Oracle: the address arithmetic (a huge page is 2 MiB on x86-64 and arm64 Linux).
-BOOST_AUTO_TEST_CASE(large_blocks_start_on_a_huge_page, *utf::label("NFR1")) {
+BOOST_AUTO_TEST_CASE(large_blocks_start_on_a_huge_page, *utf::label("performance")) {
     const LargeArray<double> big(std::size_t(3) << 17); // 3 MiB
     BOOST_TEST(reinterpret_cast<std::uintptr_t>(big.data()) % (std::uintptr_t(2) << 20) == 0u);
     struct alignas(64) Line {
@@ -43,7 +43,7 @@ BOOST_AUTO_TEST_CASE(large_blocks_start_on_a_huge_page, *utf::label("NFR1")) {
 
 // Oracle: the block's own first bytes, written before the growth, and the mapping counters
 // (a growth past the block's huge pages remaps it; within them it needs nothing).
-BOOST_AUTO_TEST_CASE(large_blocks_grow_without_a_new_mapping, *utf::label("NFR1")) {
+BOOST_AUTO_TEST_CASE(large_blocks_grow_without_a_new_mapping, *utf::label("performance")) {
     LargeArray<std::uint64_t> a;
     a.reserve(std::size_t(3) << 17); // 3 MiB: mapped as 4
     for (std::uint64_t i = 0; i < (std::uint64_t(3) << 17); ++i)
@@ -64,7 +64,7 @@ BOOST_AUTO_TEST_CASE(large_blocks_grow_without_a_new_mapping, *utf::label("NFR1"
 
 // Oracle: std::vector's semantics (a copy is equal and independent; a move leaves the source
 // empty; an argument that is an element survives the growth it causes).
-BOOST_AUTO_TEST_CASE(copies_moves_and_self_references, *utf::label("NFR1")) {
+BOOST_AUTO_TEST_CASE(copies_moves_and_self_references, *utf::label("performance")) {
     LargeArray<std::uint64_t> a(std::size_t(3) << 17);
     for (std::size_t i = 0; i < a.size(); ++i)
         a[i] = i;
@@ -91,7 +91,7 @@ BOOST_AUTO_TEST_CASE(copies_moves_and_self_references, *utf::label("NFR1")) {
 // Oracle: the block's address (a released block is retained and handed out again whole, as
 // malloc hands out a freed chunk) and the retention limit, 64 MiB (glibc's largest trim
 // threshold). Blocks are only reserved here: their pages are never touched.
-BOOST_AUTO_TEST_CASE(released_blocks_are_retained_for_the_next, *utf::label("NFR1")) {
+BOOST_AUTO_TEST_CASE(released_blocks_are_retained_for_the_next, *utf::label("performance")) {
     release_retained_memory();
     BOOST_TEST(large_array_stats().retained_bytes == 0u);
     const void* first = nullptr;
@@ -122,7 +122,7 @@ BOOST_AUTO_TEST_CASE(released_blocks_are_retained_for_the_next, *utf::label("NFR
 
 // Oracle: each thread's own pattern, read back after the other thread has had the chance to
 // write: a block handed to both (the retained table is shared by the process) would mix them.
-BOOST_AUTO_TEST_CASE(threads_share_the_retained_blocks_safely, *utf::label("NFR1")) {
+BOOST_AUTO_TEST_CASE(threads_share_the_retained_blocks_safely, *utf::label("performance")) {
     std::atomic<int> wrong{0};
     auto work = [&wrong](std::uint64_t tag) {
         for (int round = 0; round < 40; ++round) {
