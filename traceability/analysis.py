@@ -99,6 +99,10 @@ def declared_statuses(config, labels, warnings=None):
 def analyse(srs, code_sites, tests, config, warnings=None):
     labels = set(srs.items)
     declared = declared_statuses(config, labels, warnings)
+    # Items whose requirement is itself a comparison with a peer (NFR1's time ratio): there the
+    # peer's figure is the reference the item names, not a stand-in for the model.
+    peer_reference = {k: str(v) for k, v in (config.get("peer_is_the_reference") or {}).items()
+                      if k in labels and v}
     for t in tests:
         t["oracle_kinds"] = oracle_kinds(t.get("oracle"))
     category = set(config.get("category_labels") or [])
@@ -126,7 +130,11 @@ def analyse(srs, code_sites, tests, config, warnings=None):
                          f'their results decide.')
         kinds = sorted({k for t in its_tests if t["status"] == "passed" for k in t["oracle_kinds"]},
                        key=_kind_order)
-        weak = status == "verified" and all(k in WEAK_ORACLE_KINDS for k in kinds)
+        weak_kinds = WEAK_ORACLE_KINDS - ({"peer"} if lab in peer_reference else set())
+        weak = status == "verified" and all(k in weak_kinds for k in kinds)
+        if lab in peer_reference and "peer" in kinds:
+            notes.append("A peer's figure is this item's own reference, not weak evidence: " +
+                         peer_reference[lab])
         if weak:
             notes.append("Weak evidence: every passing test rests on " + ", ".join(kinds) +
                          " only (no closed form, reference solution, conservation law or "

@@ -456,6 +456,21 @@ class Units(unittest.TestCase):
         self.assertEqual(res["missing_oracle_srs"], ["b"])  # c names no SRS item
         self.assertEqual(res["missing_oracle"], ["b", "c"])
 
+    def test_peer_as_the_items_own_reference(self):
+        # Oracle: the rule stated in docs/traceability.md: a peer oracle is weak evidence except
+        # for an item declared in peer_is_the_reference.
+        from traceability import srsdata
+        srs = srsdata.load_srs(os.path.join(REPO, "srs"))
+        tests = [{"id": "p", "labels": ["NFR1"], "status": "passed", "origin": "verification",
+                  "oracle": "Chipmunk 7 on the identical scene, thread CPU time"}]
+        plain = analysis.analyse(srs, [], [dict(t) for t in tests], {"category_labels": []})
+        self.assertTrue(next(i for i in plain["items"] if i["label"] == "NFR1")["weak_evidence"])
+        cfg = {"category_labels": [], "peer_is_the_reference": {"NFR1": "a time ratio"}}
+        res = analysis.analyse(srs, [], [dict(t) for t in tests], cfg)
+        nfr1 = next(i for i in res["items"] if i["label"] == "NFR1")
+        self.assertFalse(nfr1["weak_evidence"])
+        self.assertIn("own reference, not weak evidence: a time ratio", " ".join(nfr1["notes"]))
+
     def test_oracle_kinds(self):
         # Oracle: hand-classified oracle statements of this repository's tests.
         k = analysis.oracle_kinds
