@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages Tamias2D needs; silent and fast when all are present.
 set -euo pipefail
-pkgs=(build-essential clang cmake ninja-build pkg-config clang-format
+pkgs=(build-essential clang clang-14 libclang-rt-14-dev cmake ninja-build pkg-config clang-format
       libboost-dev libboost-test-dev nlohmann-json3-dev
       libgsl-dev libeigen3-dev libchipmunk-dev libbox2d-dev libbenchmark-dev
       graphviz gcovr doxygen python3-yaml python3-matplotlib python3-jsonschema)
