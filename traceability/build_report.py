@@ -123,6 +123,9 @@ def build(args, log=print):
     expected = [str(x) for x in config.get("expected_programs") or []]
     missing = vvdata.judge_provenance(programs, expected, build_prov, source_commit)
     tests += vvdata.checks_as_tests(programs, missing)
+    optional = {str(k): str(v) for k, v in (config.get("optional_programs") or {}).items()}
+    present = {p["program"] for p in programs}
+    not_run = [{"program": k, "how": v} for k, v in optional.items() if k not in present]
     seen = {}
     for t in tests:  # ids must be unique (anchors, item -> test references)
         n = seen.get(t["id"], 0) + 1
@@ -189,6 +192,7 @@ def build(args, log=print):
         "verification": programs,
         "provenance": {"build": build_prov, "source_commit": source_commit,
                        "expected_programs": expected, "missing_programs": missing,
+                       "optional_programs": list(optional), "not_run_programs": not_run,
                        "refused": [{"program": p["program"], "file": p["file"],
                                     "reason": p["refused"]} for p in programs if p.get("refused")]},
         "coverage": vvdata.coverage_summary(cov),

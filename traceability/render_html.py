@@ -611,6 +611,8 @@ are labelled with are judged by their other checks:""", g.get("targets_missed"))
                f'expected programs: {E(", ".join(prov.get("expected_programs") or []) or "none")}'
                + (f'; <b>missing: {E(", ".join(prov["missing_programs"]))}</b>' if prov.get("missing_programs") else "")
                + (f'; <b>refused: {E(", ".join(x["program"] for x in prov["refused"]))}</b>' if prov.get("refused") else "")
+               + (f'; not run: {E("; ".join(x["program"] + " (" + x["how"] + ")" for x in prov["not_run_programs"]))}'
+                  if prov.get("not_run_programs") else "")
                + '.</p>')
         if not progs:
             self.w('<p class="note">No verification results in <code>reports/data/*.json</code>.</p>')

@@ -148,7 +148,8 @@ def render(r):
       f"{(prov.get('build') or {}).get('build_id') or 'unknown'}; expected programs: "
       f"{', '.join(prov.get('expected_programs') or []) or 'none'}; missing: "
       f"{', '.join(prov.get('missing_programs') or []) or 'none'}; refused: "
-      f"{', '.join(x['program'] + ' (' + x['reason'] + ')' for x in prov.get('refused') or []) or 'none'}.\n")
+      f"{', '.join(x['program'] + ' (' + x['reason'] + ')' for x in prov.get('refused') or []) or 'none'}; "
+      f"not run: {'; '.join(x['program'] + ' (' + x['how'] + ')' for x in prov.get('not_run_programs') or []) or 'none'}.\n")
     if not r["verification"]:
         w("No verification results in reports/data/.\n")
     for p in r["verification"]:

@@ -325,6 +325,14 @@ class Provenance(unittest.TestCase):
         self.assertEqual(rep["provenance"]["missing_programs"], ["gsl_reference"])
         self.assertEqual(code, 1)
 
+    def test_absent_optional_program_is_named_not_run(self):
+        extra = 'optional_programs:\n  fuzz: "scripts/fuzz.sh"\n  peer_compare: "its program"\n'
+        code, rep, tests, _ = self._run(config_extra=extra)
+        self.assertEqual(rep["provenance"]["not_run_programs"],
+                         [{"program": "fuzz", "how": "scripts/fuzz.sh"}])
+        self.assertNotIn("fuzz:<results file>", tests)
+        self.assertEqual(rep["provenance"]["missing_programs"], [])
+
 
 class ProcessExit(unittest.TestCase):
     def test_nonzero_exit_without_failing_case_is_an_error(self):
