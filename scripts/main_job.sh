@@ -49,6 +49,12 @@ while read -r prog; do
     echo "   $(basename "$prog"): $(( $(date +%s) - p0 )) s"
 done < build/verification_programs.txt
 
+phase "fuzzing: the libFuzzer targets, 60 s each (reports/data/fuzz.json)"
+# Reliability evidence beside the programs above, not an expected program: without Clang 14 and
+# its fuzzer runtime nothing is written and the report says "not run". A finding is a failed
+# check of the report; its input is in build-fuzz/findings/.
+./scripts/fuzz.sh --seconds 60 --report reports/data | sed "s/^/   /"
+
 if [ $quick -eq 0 ]; then
     phase "coverage build and run (gcovr)"
     cmake -S . -B build-coverage -G Ninja -DCMAKE_BUILD_TYPE=Debug -DTAMIAS_COVERAGE=ON \
