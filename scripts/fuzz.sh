@@ -46,8 +46,9 @@ for t in scene api; do
         # Scene files: the example scenes are seeds too; the largest is about 5 kB.
         opts=(-dict="$dir/scene.dict" -max_len=8192 examples/scenes)
     else
-        # About 250 calls of a few bytes each (api_target.cpp's max_calls).
-        opts=(-max_len=1024)
+        # Up to 256 calls of a few bytes each (api_target.cpp's max_calls), long sequences from
+        # the start (-len_control=0): a 60 s run reaches more code than 5 min growing slowly.
+        opts=(-max_len=1024 -len_control=0)
     fi
     # Sanitizer reports are fatal (cmake/TamiasFuzz.cmake); a unit slower than 10 s is a
     # timeout; leaks are reported at exit.
