@@ -12,6 +12,8 @@
 // (known_findings.hpp) ends the input instead.
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <string>
 #include <vector>
@@ -45,6 +47,7 @@ struct Session {
     std::vector<JointId> joints;
     known::Joints jointed;
     int steps = 0;
+    int op = -1; ///< the last call's number in call()'s switch, for the trace
 
     Session(ByteSource& source, const WorldDef& def) : in(source), world(def), foreign(def) {
         for (int i = 0; i < 2; ++i) {
@@ -363,7 +366,7 @@ struct Session {
     /// One call, chosen by the next byte; throws what the library throws. Returns the time
     /// step when the call was a step, else 0.
     double call() {
-        const std::uint8_t op = in.byte() % 32;
+        op = in.byte() % 32;
         switch (op) {
         case 0:
         case 1:
@@ -518,9 +521,26 @@ void check_refusal(const std::exception_ptr& error, std::uint64_t before, const 
         broken_promise("a refused call changed the world");
 }
 
+void print_trace(const Session& s, bool refused, double stepped) {
+    std::fprintf(stderr, "call %d%s", s.op, refused ? " refused" : "");
+    if (stepped != 0.0)
+        std::fprintf(stderr, " step(%.17g)", stepped);
+    const Vec2d g = s.world.gravity();
+    std::fprintf(stderr, ", gravity (%g, %g), joints %zu\n", g.x, g.y, s.world.joint_count());
+    for (const BodyId b : s.world.bodies())
+        std::fprintf(stderr,
+                     "  body %u: type %d mass %.17g inertia %.17g at (%.17g, %.17g) v (%.17g, "
+                     "%.17g) w %.17g\n",
+                     b.index, static_cast<int>(s.world.type(b)), s.world.mass(b),
+                     s.world.inertia(b), s.world.position(b).x, s.world.position(b).y,
+                     s.world.velocity(b).x, s.world.velocity(b).y, s.world.angular_velocity(b));
+}
+
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    // TAMIAS_FUZZ_TRACE=1: each call's number (call()'s switch), outcome and the bodies' states.
+    static const bool trace = std::getenv("TAMIAS_FUZZ_TRACE") != nullptr;
     ByteSource in(data, size);
     Session s(in, world_def(in));
     for (int c = 0; c < max_calls && !in.empty(); ++c) {
@@ -537,6 +557,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         } catch (...) {
             error = std::current_exception();
         }
+        if (trace)
+            print_trace(s, error != nullptr, stepped);
         if (error) {
             check_refusal(error, before, w);
             continue;
