@@ -16,6 +16,7 @@
 #include <cstdlib>
 #include <exception>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "fuzz/fuzz_support.hpp"
@@ -46,6 +47,8 @@ struct Session {
     std::vector<ShapeId> shapes, foreign_shapes;
     std::vector<JointId> joints;
     known::Joints jointed;
+    /// The motor joints and their records in `jointed`, whose anchor moves with the offset.
+    std::vector<std::pair<JointId, std::size_t>> motors;
     int steps = 0;
     int op = -1; ///< the last call's number in call()'s switch, for the trace
 
@@ -314,16 +317,31 @@ struct Session {
                 d.correction_factor = in.real();
             }
             joints.push_back(world.create_joint(d));
-            // The offset is where body_b's origin is pulled to, in body_a's frame: a lever as
-            // long as the offset.
-            std::vector<Vec2d> anchors;
-            if (world.is_valid(a)) {
-                const Vec2d o = world.origin(a);
-                anchors.push_back({o.x + d.linear_offset.x, o.y + d.linear_offset.y});
-            }
-            note_joint(a, b, std::move(anchors));
+            note_joint(a, b, {});
+            motors.push_back({joints.back(), jointed.made.size() - 1});
+            note_motor_offset(joints.back(), d.linear_offset);
             break;
         }
+        }
+    }
+
+    /// A motor joint's offset is where body_b's origin is pulled to, in body_a's frame: for
+    /// F1 its anchor, far when the offset is long (an offset of 1e12 m, set at creation or
+    /// later by set_motor_joint_offsets, gives NaN within two steps).
+    void note_motor_offset(JointId j, Vec2d offset) {
+        for (const auto& [id, record] : motors) {
+            if (!(id == j))
+                continue;
+            known::JointRecord& r = jointed.made[record];
+            r.anchors.clear();
+            if (world.is_valid(r.a)) {
+                const Vec2d o = world.origin(r.a);
+                const Vec2d p{o.x + offset.x, o.y + offset.y};
+                r.anchors.push_back(p);
+                jointed.far_at_creation = jointed.far_at_creation ||
+                                          known::far_from_body(world, r.a, p) ||
+                                          known::far_from_body(world, r.b, p);
+            }
         }
     }
 
@@ -470,6 +488,7 @@ struct Session {
             } else {
                 const Vec2d o = in.vec();
                 world.set_motor_joint_offsets(j, o, in.real());
+                note_motor_offset(j, o);
             }
             return 0.0;
         }

@@ -19,7 +19,8 @@ struct JointRecord {
 };
 
 /// Every joint made so far (destroyed ones kept: the finding is judged conservatively), and
-/// whether one was far at creation (anchors, rest length or bodies 1e5 m apart).
+/// whether one was far when made or when its anchor was set (anchors, rest length or bodies
+/// 1e5 m apart).
 struct Joints {
     std::vector<JointRecord> made;
     bool far_at_creation = false;
