@@ -37,6 +37,23 @@ BOOST_AUTO_TEST_CASE(rigid_impulse_stops_the_turn, *utf::label("DD22")) {
     BOOST_TEST(2.0 * A.omega.value() + 0.5 * B.omega.value() == L, tt::tolerance(1e-15));
 }
 
+// Oracle: T4 (omega changes by Lambda / I): when neither body can turn (1/I_A = 1/I_B = 0: a
+// fixed-rotation body jointed to a kinematic one), no angular impulse changes the joint speed,
+// so the row's impulse is 0 and finite, whatever the speed error (-rhs / 0 was inf and turned
+// both bodies NaN through 0 * inf).
+BOOST_AUTO_TEST_CASE(no_turning_body_gives_no_impulse, *utf::label("DD22")) {
+    const dd22::InverseInertia fixed{InverseMass::from_value(1.0),
+                                     InverseMomentOfInertia::from_value(0.0)};
+    const dd22::InverseInertia kinematic{InverseMass::from_value(0.0),
+                                         InverseMomentOfInertia::from_value(0.0)};
+    for (const double rhs : {-81.3, 0.0, 5.0}) {
+        const auto lambda = dd22::impulse(
+            fixed, kinematic, AngularVelocity::from_value(rhs), Dimensionless::from_value(0.9),
+            Dimensionless::from_value(0.1), dd22::AngularImpulse::from_value(0.0));
+        BOOST_TEST(lambda.value() == 0.0);
+    }
+}
+
 // Oracle: hand values of the clamp to [-max, max].
 BOOST_AUTO_TEST_CASE(motor_clamp_hand_values, *utf::label("DD22")) {
     const auto m = dd22::AngularImpulse::from_value(0.5);

@@ -55,6 +55,30 @@ BOOST_AUTO_TEST_CASE(rigid_block_stops_line_and_angle, *utf::label("DD23")) {
     BOOST_TEST(std::abs(dd22::joint_speed(A, B).value()) <= 1e-14);
 }
 
+// Oracle: the line row's defining property with no body able to turn (1/I_A = 1/I_B = 0, so
+// k22 = 0 and the block is singular): the impulse along a_perp alone stops the line's velocity
+// error, and there is no angular impulse (T4: none could change the joint speed).
+BOOST_AUTO_TEST_CASE(no_turning_body_solves_the_line_alone, *utf::label("DD23")) {
+    const dd23::InverseInertia a{InverseMass::from_value(0.5),
+                                 InverseMomentOfInertia::from_value(0.0)};
+    const dd23::InverseInertia b{InverseMass::from_value(0.0),
+                                 InverseMomentOfInertia::from_value(0.0)};
+    const auto arm_A = Length::from_value(0.8), arm_B = Length::from_value(-0.3);
+    const Vec2<double> n{0.6, 0.8};
+    dd20::Velocities A{vec_from_values<Velocity>(1.0, -2.0), AngularVelocity::from_value(0.0)};
+    dd20::Velocities B{vec_from_values<Velocity>(-0.5, 3.0), AngularVelocity::from_value(2.0)};
+    const auto P = dd23::block_impulse(
+        a, b, arm_A, arm_B, dd20::velocity_error(A, arm_A, B, arm_B, n), dd22::joint_speed(A, B),
+        Dimensionless::from_value(1.0), Dimensionless::from_value(0.0),
+        {Impulse::from_value(0.0), dd22::AngularImpulse::from_value(0.0)});
+    BOOST_TEST(std::isfinite(P.linear.value()));
+    BOOST_TEST(P.angular.value() == 0.0);
+    dd20::apply(A, B, a, b, arm_A, arm_B, n, P.linear);
+    BOOST_TEST(std::abs(dd20::velocity_error(A, arm_A, B, arm_B, n).value()) <= 1e-14);
+    BOOST_TEST(A.omega.value() == 0.0);
+    BOOST_TEST(B.omega.value() == 2.0);
+}
+
 // Oracle: hand values of the motor clamp to [-max, max].
 BOOST_AUTO_TEST_CASE(motor_clamp_hand_values, *utf::label("DD23")) {
     const auto m = Impulse::from_value(0.5);

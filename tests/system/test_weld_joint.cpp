@@ -86,4 +86,41 @@ BOOST_AUTO_TEST_CASE(soft_angle_is_a_damped_oscillator,
     BOOST_TEST(e240 / e480 >= 1.8);
 }
 
+// Oracle: rigid-body kinematics (a weld's anchor moves with both bodies) and T4 (a body of
+// infinite moment of inertia never turns). A fixed-rotation box welded to a kinematic carrier
+// moving at (2, 0) m/s: neither can turn, so the weld's angle holds nothing (DD22's k = 0) and
+// only its point acts. The carrier keeps its closed-form motion p0 + v t exactly (no joint
+// moves a kinematic body), the box rides along at the carrier's velocity, holding up its own
+// weight, and never turns. Found by the API fuzz target: the angle's -rhs / 0 made both
+// bodies NaN (tests/fuzz/libfuzzer/regressions/api/weld_fixed_rotation_to_kinematic_body_nan).
+BOOST_AUTO_TEST_CASE(fixed_rotation_body_welded_to_a_kinematic_carrier,
+                     *utf::label("DD22") * utf::label("DD24") * utf::label("LC3")) {
+    World world(WorldDef{.gravity = {0.0, -10.0}, .enable_sleep = false});
+    BodyDef carrier_def;
+    carrier_def.type = BodyType::kinematic;
+    carrier_def.linear_velocity = {2.0, 0.0};
+    const BodyId carrier = world.create_body(carrier_def);
+    world.create_shape(carrier, box_shape(1.0, 1.0));
+    BodyDef box_def;
+    box_def.position = {1.5, 0.5};
+    box_def.fixed_rotation = true;
+    const BodyId box = world.create_body(box_def);
+    world.create_shape(box, box_shape(0.5, 0.5));
+    world.create_joint(WeldJointDef{.body_a = carrier, .body_b = box, .anchor = {1.0, 0.5}});
+    const int steps = 120;
+    for (int k = 0; k < steps; ++k)
+        world.step(1.0 / 60.0);
+    const double t = steps / 60.0;
+    BOOST_TEST(world.position(carrier).x == 2.0 * t, boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(world.position(carrier).y == 0.0);
+    BOOST_TEST(world.angular_velocity(carrier) == 0.0);
+    BOOST_TEST(world.orientation(box) == 0.0);
+    BOOST_TEST(world.angular_velocity(box) == 0.0);
+    BOOST_TEST(std::abs(world.velocity(box).x - 2.0) <= 1e-6);
+    BOOST_TEST(std::abs(world.velocity(box).y) <= 1e-6);
+    // The anchor, 0.5 m left of the box's centre, stays on the carrier's point (1 + 2 t, 0.5).
+    BOOST_TEST(std::abs(world.position(box).x - (1.5 + 2.0 * t)) <= 1e-3);
+    BOOST_TEST(std::abs(world.position(box).y - 0.5) <= 1e-3);
+}
+
 BOOST_AUTO_TEST_SUITE_END()

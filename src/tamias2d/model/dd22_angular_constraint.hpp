@@ -24,11 +24,16 @@ inline AngularVelocity joint_speed(const Velocities& A, const Velocities& B) {
 }
 
 /// \srs{DD22} The angular impulse that changes the joint speed by -(rhs): -rhs / k, with
-/// k = 1/I_A + 1/I_B (IM6's soft form with mass_scale and impulse_scale as for DD19).
+/// k = 1/I_A + 1/I_B (IM6's soft form with mass_scale and impulse_scale as for DD19). With
+/// k = 0 neither body turns under an impulse (fixed rotation, kinematic or static), so no
+/// impulse changes the joint speed: the row holds nothing and its impulse is 0, not -rhs / 0.
 inline AngularImpulse impulse(InverseInertia A, InverseInertia B, AngularVelocity rhs,
                               Dimensionless mass_scale, Dimensionless impulse_scale,
                               AngularImpulse accumulated) {
-    return -(mass_scale * (rhs / (A.inv_I + B.inv_I))) - impulse_scale * accumulated;
+    const auto k = A.inv_I + B.inv_I;
+    if (!(k > decltype(k){}))
+        return AngularImpulse{};
+    return -(mass_scale * (rhs / k)) - impulse_scale * accumulated;
 }
 
 /// \srs{DD22} The motor's accumulation bounded by tau_max h: [-max, max].

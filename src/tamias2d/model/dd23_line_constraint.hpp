@@ -33,7 +33,9 @@ inline Line line(Vec2<Length> d, Vec2<Length> r_A, Vec2<Length> r_B, Vec2<double
 /// velocity errors together: [k11 k12; k12 k22] (lambda, Lambda) = -(rhs_perp, rhs_angle), with
 /// k11 DD8's denominator for the perpendicular arms, k12 = a_A / I_A + a_B / I_B and
 /// k22 = 1 / I_A + 1 / I_B; in IM6's soft form (mass_scale, impulse_scale as for DD19). Solved
-/// by Cramer's rule: K is positive definite when a body moves (DCX_joint).
+/// by Cramer's rule: K is positive definite when a body moves (DCX_joint) and can turn. When
+/// neither can turn (k22 = 0: fixed rotation, kinematic or static) the angle row holds nothing
+/// and K is singular: the line row is solved alone, -rhs_perp / k11, with no angular impulse.
 struct BlockImpulse {
     Impulse linear;
     AngularImpulse angular;
@@ -45,6 +47,9 @@ inline BlockImpulse block_impulse(InverseInertia A, InverseInertia B, Length per
     const auto k11 = dd08::effective_mass_inverse(A, B, perp_arm_A, perp_arm_B);
     const auto k12 = A.inv_I * per_radian(perp_arm_A) + B.inv_I * per_radian(perp_arm_B);
     const auto k22 = A.inv_I + B.inv_I;
+    if (!(k22 > decltype(k22){}))
+        return {-(mass_scale * (rhs_perp / k11)) - impulse_scale * accumulated.linear,
+                AngularImpulse{}};
     const auto det = k11 * k22 - k12 * k12;
     const Impulse linear = (k22 * rhs_perp - k12 * rhs_angle) / det;
     const AngularImpulse angular = (k11 * rhs_angle - k12 * rhs_perp) / det;
