@@ -335,6 +335,20 @@ BOOST_AUTO_TEST_CASE(a_self_crossing_outline_is_rejected,
     }
 }
 
+// Oracle: docs/scene-format.md, Limits: a scene holds at most max_scene_bodies bodies, written
+// and generated; the generator that passes the limit is refused, before a World is built. Two
+// pyramids of base 500 hold 2 (500 * 501 / 2 + 1) = 250 502 bodies (boxes and a ground each),
+// the count the message names; the first alone (125 251) is within the limit.
+BOOST_AUTO_TEST_CASE(bodies_beyond_the_scene_limit_are_refused, *utf::label("R4")) {
+    const std::string pyramid = R"({"generator": "pyramid", "base": 500})";
+    const std::string second = R"({"generator": "pyramid", "base": 500, "name": "other"})";
+    const std::size_t one = 500 * 501 / 2 + 1;
+    static_assert(max_scene_bodies >= 125251 && max_scene_bodies < 2 * 125251);
+    expect_rejected(with_bodies(pyramid + ", " + second), "/bodies/1", "",
+                    "the scene's bodies number " + std::to_string(2 * one) +
+                        " with this entry: at most " + std::to_string(max_scene_bodies));
+}
+
 // Oracle: docs/scene-format.md, Limits: the chains of a scene have at most max_chain_points
 // points in all, counted across entries and bodies; one more is refused at the entry that
 // exceeds the limit, before its points are read. A hand-made Scene beyond the limit is

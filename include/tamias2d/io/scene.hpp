@@ -135,6 +135,12 @@ inline constexpr std::size_t max_scene_bytes = std::size_t{64} << 20;
 /// linear in its points: World::create_chain).
 inline constexpr std::size_t max_chain_points = 100000;
 
+/// The most bodies a scene may hold in all, written out and generated (docs/scene-format.md,
+/// "Limits"): the largest generator (rain of 200 000 boxes, 1.1 GB to validate) with room for
+/// the rest. Six pyramids of base 500 in one scene (751 500 bodies, 1.9 GB) are refused at the
+/// generator that passes the limit, before a World is built.
+inline constexpr std::size_t max_scene_bodies = 250000;
+
 /// Reads and parses a scene file (origin in messages: the path as given). The file is read in
 /// chunks and refused as soon as it exceeds `max_bytes`, so that an endless source (/dev/zero,
 /// a pipe) is refused promptly and with bounded memory.

@@ -1539,6 +1539,11 @@ Scene parse_scene(std::string_view json, std::string_view origin_view, std::size
         } else {
             scene.bodies.push_back(parse_body(ctx, b, bp));
         }
+        if (scene.bodies.size() > max_scene_bodies)
+            fail(ctx, bp, "bodies",
+                 "the scene's bodies number " + std::to_string(scene.bodies.size()) +
+                     " with this entry: at most " + std::to_string(max_scene_bodies) +
+                     " bodies, written and generated, in one scene");
     }
     if (const ojson* joints = find(root, "joints")) {
         if (!joints->is_array())
