@@ -352,6 +352,25 @@ void validate(const TargetJointDef& def, bool dynamic) {
         throw ValidationError("joint.max_force", def.max_force, "must be > 0", "DCX_joint");
 }
 
+bool joint_lever_fits(Vec2d r, double inv_mass, double inv_inertia) {
+    // (|r| / k)^2 = |r|^2 m / I, from the inverses the solver holds (0: does not move or turn).
+    constexpr double max = supported::joint_lever_ratio_max;
+    return !(inv_mass > 0.0) || !(inv_inertia > 0.0) ||
+           dot(r, r) * inv_inertia / inv_mass <= max * max;
+}
+
+void validate_joint_lever(std::string_view field, Vec2d r, double inv_mass, double inv_inertia) {
+    if (joint_lever_fits(r, inv_mass, inv_inertia))
+        return;
+    const double ratio = std::sqrt(dot(r, r) * inv_inertia / inv_mass);
+    constexpr double max = supported::joint_lever_ratio_max;
+    throw ValidationError(std::string(field), ratio,
+                          "the anchor's distance from its body's centre of mass, in radii of "
+                          "gyration sqrt(I / m), must be <= " +
+                              detail::format_value(max) + " (a joint cannot hold it)",
+                          "DCX_joint");
+}
+
 void validate(const RevoluteJointDef& def, bool movable) {
     validate_joint_bodies(def.body_a, def.body_b, movable, def.break_force);
     point("joint.anchor", def.anchor);

@@ -27,6 +27,42 @@ namespace tamias2d {
 
 namespace u = tamias2d::units;
 
+namespace {
+
+/// The input field that placed each anchor of a joint of this type (for DCX_joint's lever).
+std::pair<const char*, const char*> anchor_fields(JointType type) {
+    switch (type) {
+    case JointType::distance:
+        return {"anchor_a", "anchor_b"};
+    case JointType::target:
+        return {"target", "target"};
+    case JointType::motor:
+        return {"linear_offset", "body_b (its origin)"};
+    default:
+        return {"anchor", "anchor"};
+    }
+}
+
+/// \srs{DCX_joint} Each anchor of `j` lies within supported::joint_lever_ratio_max radii of
+/// gyration of its body's centre of mass. `at` begins the field's name ("joint." or
+/// "joint[3].").
+void validate_levers(const BodyStore& bodies, const Joint& j, const std::string& at) {
+    const auto [field_a, field_b] = anchor_fields(j.type);
+    for (const bool side_a : {true, false}) {
+        const std::uint32_t i = side_a ? j.body_a : j.body_b;
+        const Body& b = bodies.bodies[i];
+        const Vec2d r = (side_a ? j.local_anchor_a : j.local_anchor_b) - b.local_center;
+        if (joint_lever_fits(r, b.inv_mass, b.inv_inertia))
+            continue; // the field's name is made only for the message
+        const std::string& name = bodies.settings[i].name;
+        validate_joint_lever(at + (side_a ? field_a : field_b) + " (on body[" + std::to_string(i) +
+                                 (name.empty() ? "" : " '" + name + "'") + "])",
+                             r, b.inv_mass, b.inv_inertia);
+    }
+}
+
+} // namespace
+
 /// The engine's state and the step's pipeline over its stages (dynamics/): the bodies, the
 /// shapes with the broad phase, the contacts, the joints, the solver, sleeping.
 struct World::Impl {
@@ -98,6 +134,12 @@ struct World::Impl {
             require_within(at + "velocity", b.v, m, "m s^-1");
             require_within(at + "angular_velocity", b.w, m, "rad s^-1");
             require_within(at + "angle", b.angle, m, "rad");
+        }
+        // A shape added or removed since a joint was made moves the centre of mass and
+        // changes the inertia its anchors are judged by (the joints are few: one pass).
+        for (std::uint32_t k = 0; k < joints.joints.size(); ++k) {
+            if (joints.joints[k].alive)
+                validate_levers(bodies, joints.joints[k], "joint[" + std::to_string(k) + "].");
         }
     }
 };
@@ -226,6 +268,7 @@ namespace {
 
 /// Stores a joint whose fields are set, removes the contacts it filters, wakes its bodies.
 JointId add_joint(World::Impl& w, const Joint& j) {
+    validate_levers(w.bodies, j, "joint.");
     const std::uint32_t i = w.joints.create(j);
     if (!j.collide_connected)
         w.contacts.destroy_between(j.body_a, j.body_b, w.bodies, w.shapes);
@@ -387,6 +430,7 @@ JointId World::create_joint(const TargetJointDef& def) {
     j.damping_ratio = def.damping_ratio;
     j.max_force = def.max_force;
     j.collide_connected = true; // one body: nothing to filter
+    validate_levers(w.bodies, j, "joint.");
     const std::uint32_t i = w.joints.create(j);
     w.bodies.wake(j.body_b);
     return w.joints.id(i);
