@@ -46,66 +46,6 @@ struct Driver {
     std::vector<ShapeId> shapes; // likewise
     std::vector<JointId> joints; // likewise
     long accepted = 0, rejected = 0;
-    // Finding F1 (docs/verification.md, "Fuzzing"): a joint whose anchor lies far (~1e6 m and
-    // more, within the supported 1e12 m) from a body's centre of mass makes the next step give
-    // that body a NaN state, accepted silently. The anchor may be far from the start or become
-    // so when a shape placed far off moves the centre of mass. Until the library refuses such
-    // a joint or step, a sequence that reaches one ends at its first non-finite state and is
-    // counted, not failed.
-    static constexpr double far_lever = 1e5;
-    struct Jointed {
-        BodyId a, b;
-        std::vector<Vec2d> anchors; // world frame, at creation
-    };
-    std::vector<Jointed> jointed;
-    bool far_at_creation = false;
-
-    bool far(BodyId b, Vec2d p) const {
-        if (!world.is_valid(b))
-            return false;
-        const Vec2d c = world.position(b);
-        return std::hypot(p.x - c.x, p.y - c.y) >= far_lever;
-    }
-    void note_joint(BodyId a, BodyId b, std::vector<Vec2d> anchors) {
-        for (const Vec2d p : anchors)
-            far_at_creation = far_at_creation || far(a, p) || far(b, p);
-        jointed.push_back({a, b, std::move(anchors)});
-    }
-    bool far_joint() const {
-        if (far_at_creation)
-            return true;
-        for (const Jointed& j : jointed)
-            for (const Vec2d p : j.anchors)
-                if (far(j.a, p) || far(j.b, p))
-                    return true;
-        return false;
-    }
-    // Finding F2 (docs/verification.md, "Fuzzing"): a jointed dynamic body whose moment of
-    // inertia is tiny for its mass (an accepted override: radius of gyration sqrt(I / m) far
-    // below 1 mm) makes the joint solver diverge within a few steps, to inf and NaN when the
-    // body carries two joints. Counted as F1 is.
-    static constexpr double tiny_gyration_squared = 1e-6; // m^2
-    bool tiny_inertia_joint() const {
-        for (const Jointed& j : jointed)
-            for (const BodyId x : {j.a, j.b})
-                if (world.is_valid(x) && world.mass(x) > 0.0 &&
-                    world.inertia(x) < tiny_gyration_squared * world.mass(x))
-                    return true;
-        return false;
-    }
-    // Finding F3 (docs/verification.md, "Fuzzing"): under an accepted but huge gravity
-    // (|g| >= ~1e7 m s^-2, within the supported 1e12) or a long step (|g| dt^2 of hundreds of
-    // metres) a joint does not hold (its body ends hundreds of metres from the pin after one
-    // step) and can turn NaN.
-    static constexpr double huge_gravity = 1e6; // m s^-2
-    static constexpr double huge_fall = 1e2;    // m, |g| dt^2
-    double last_dt = 0.0;
-    bool huge_load_joint() const {
-        const Vec2d g = world.gravity();
-        const double a = std::hypot(g.x, g.y);
-        return !jointed.empty() && (a >= huge_gravity || a * last_dt * last_dt >= huge_fall);
-    }
-
     explicit Driver(std::uint64_t seed)
         : r(seed), kinds(seed ^ 0x9e3779b97f4a7c15u), world(make_def(r)) {}
 
@@ -371,7 +311,6 @@ struct Driver {
             last << "create_joint(revolute " << str(d.body_a) << ", " << str(d.body_b)
                  << ", anchor " << str(d.anchor) << ", break_force " << d.break_force << ")";
             joints.push_back(world.create_joint(d));
-            note_joint(d.body_a, d.body_b, {d.anchor});
             break;
         }
         case 16: {
@@ -386,10 +325,6 @@ struct Driver {
                  << str(d.anchor_a) << ", " << str(d.anchor_b) << ", length "
                  << d.length.value_or(-1) << ")";
             joints.push_back(world.create_joint(d));
-            note_joint(d.body_a, d.body_b, {d.anchor_a, d.anchor_b});
-            if (std::hypot(d.anchor_a.x - d.anchor_b.x, d.anchor_a.y - d.anchor_b.y) >= far_lever ||
-                d.length.value_or(0.0) >= far_lever)
-                far_at_creation = true;
             break;
         }
         case 17:
@@ -413,7 +348,6 @@ struct Driver {
         default: {
             const double h = dt();
             last << "step(" << h << ")";
-            last_dt = h;
             world.step(h);
             break;
         }
@@ -436,7 +370,7 @@ std::string check_after_accepted(Driver& d) {
 }
 
 struct Tally {
-    long accepted = 0, rejected = 0, known_f1 = 0, known_f2 = 0, known_f3 = 0;
+    long accepted = 0, rejected = 0;
 };
 
 void run_sequence(std::uint64_t seed, Tally& tally) {
@@ -444,8 +378,6 @@ void run_sequence(std::uint64_t seed, Tally& tally) {
     const bool trace = std::getenv("TAMIAS_FUZZ_TRACE") != nullptr;
     for (int c = 0; c < calls_per_sequence; ++c) {
         const std::uint64_t before = d.world.state_hash();
-        // Before the call: a step that fails turns the positions F1 is judged by into NaN.
-        const bool far_joint = d.far_joint();
         std::string problem;
         bool refused = true;
         try {
@@ -467,20 +399,6 @@ void run_sequence(std::uint64_t seed, Tally& tally) {
         } else {
             ++tally.accepted;
             problem = check_after_accepted(d);
-            if (!problem.empty() && problem.rfind("non-finite state", 0) == 0) {
-                if (far_joint) {
-                    ++tally.known_f1; // finding F1, see Driver::far_lever
-                    return;
-                }
-                if (d.tiny_inertia_joint()) {
-                    ++tally.known_f2; // finding F2, see Driver::tiny_inertia_joint
-                    return;
-                }
-                if (d.huge_load_joint()) {
-                    ++tally.known_f3; // finding F3, see Driver::huge_load_joint
-                    return;
-                }
-            }
         }
         if (trace)
             BOOST_TEST_MESSAGE("call " << c << ": " << d.last.str() << (refused ? " refused" : ""));
@@ -509,11 +427,7 @@ BOOST_AUTO_TEST_CASE(random_api_sequences_keep_the_promises, *utf::label("R4")) 
         run_sequence(seed, tally);
     }
     BOOST_TEST_MESSAGE("API fuzz: " << tally.accepted << " calls accepted, " << tally.rejected
-                                    << " rejected; sequences ended by known findings: F1 (far "
-                                       "joint anchor) "
-                                    << tally.known_f1 << ", F2 (tiny inertia, jointed) "
-                                    << tally.known_f2 << ", F3 (huge load, jointed) "
-                                    << tally.known_f3);
+                                    << " rejected");
     // Both paths must be exercised, or the driver proves little.
     BOOST_TEST(tally.accepted > n * calls_per_sequence / 5);
     BOOST_TEST(tally.rejected > n);
