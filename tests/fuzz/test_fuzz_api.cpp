@@ -380,14 +380,17 @@ void run_sequence(std::uint64_t seed, Tally& tally) {
         const std::uint64_t before = d.world.state_hash();
         std::string problem;
         bool refused = true;
+        std::string why; // the refusal's message, for the trace
         try {
             d.call();
             refused = false;
         } catch (const ValidationError& e) {
+            why = e.what();
             if (e.field.empty() || std::string(e.what()).empty())
                 problem = "ValidationError with an empty field or message";
         } catch (const InvalidHandle& e) {
-            if (std::string(e.what()).empty())
+            why = e.what();
+            if (why.empty())
                 problem = "InvalidHandle with an empty message";
         } catch (const std::exception& e) {
             problem = std::string("an exception of another kind: ") + e.what();
@@ -401,7 +404,8 @@ void run_sequence(std::uint64_t seed, Tally& tally) {
             problem = check_after_accepted(d);
         }
         if (trace)
-            BOOST_TEST_MESSAGE("call " << c << ": " << d.last.str() << (refused ? " refused" : ""));
+            BOOST_TEST_MESSAGE("call " << c << ": " << d.last.str()
+                                       << (refused ? " refused: " + why : std::string()));
         if (!problem.empty()) {
             BOOST_ERROR("seed " << seed << ", call " << c << " " << d.last.str() << ": "
                                 << problem);
