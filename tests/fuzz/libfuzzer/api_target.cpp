@@ -8,8 +8,7 @@
 // and no sanitizer report; a refusal is a ValidationError (non-empty field and message) or an
 // InvalidHandle (non-empty message) and leaves World::state_hash() unchanged; after every
 // accepted call every body state, energy and momentum is finite, and a ray cast's result is
-// well formed. A non-finite state that one of the open findings F1-F3 explains
-// (known_findings.hpp) ends the input instead.
+// well formed. No finding is excused (docs/verification.md, "Findings (fixed)").
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -21,7 +20,6 @@
 
 #include "fuzz/fuzz_support.hpp"
 #include "fuzz/libfuzzer/byte_source.hpp"
-#include "fuzz/libfuzzer/known_findings.hpp"
 #include "fuzz/libfuzzer/promise.hpp"
 #include "tamias2d/errors.hpp"
 #include "tamias2d/world.hpp"
@@ -46,9 +44,6 @@ struct Session {
     std::vector<BodyId> bodies, foreign_bodies;
     std::vector<ShapeId> shapes, foreign_shapes;
     std::vector<JointId> joints;
-    known::Joints jointed;
-    /// The motor joints and their records in `jointed`, whose anchor moves with the offset.
-    std::vector<std::pair<JointId, std::size_t>> motors;
     int steps = 0;
     int op = -1; ///< the last call's number in call()'s switch, for the trace
 
@@ -171,14 +166,6 @@ struct Session {
         }
     }
 
-    void note_joint(BodyId a, BodyId b, std::vector<Vec2d> anchors) {
-        for (const Vec2d p : anchors)
-            jointed.far_at_creation = jointed.far_at_creation ||
-                                      known::far_from_body(world, a, p) ||
-                                      known::far_from_body(world, b, p);
-        jointed.made.push_back({a, b, std::move(anchors)});
-    }
-
     void make_joint() {
         const BodyId a = body();
         const BodyId b = in.below(8) == 0 ? a : body();
@@ -208,7 +195,6 @@ struct Session {
             }
             d.collide_connected = (extras & 0x10u) != 0;
             joints.push_back(world.create_joint(d));
-            note_joint(a, b, {d.anchor});
             break;
         }
         case 1: {
@@ -232,11 +218,6 @@ struct Session {
             if (extras & 0x08u)
                 d.break_force = in.real();
             joints.push_back(world.create_joint(d));
-            note_joint(a, b, {d.anchor_a, d.anchor_b});
-            const Vec2d s{d.anchor_a.x - d.anchor_b.x, d.anchor_a.y - d.anchor_b.y};
-            if (std::hypot(s.x, s.y) >= known::far_lever ||
-                d.length.value_or(0.0) >= known::far_lever)
-                jointed.far_at_creation = true; // F1: a rest length as long as a far anchor
             break;
         }
         case 2: {
@@ -262,7 +243,6 @@ struct Session {
                 d.damping_ratio = in.real();
             }
             joints.push_back(world.create_joint(d));
-            note_joint(a, b, {d.anchor});
             break;
         }
         case 3: {
@@ -277,7 +257,6 @@ struct Session {
                 d.angular_damping_ratio = in.real();
             }
             joints.push_back(world.create_joint(d));
-            note_joint(a, b, {d.anchor});
             break;
         }
         case 4: {
@@ -302,7 +281,6 @@ struct Session {
                 d.max_motor_torque = in.real();
             }
             joints.push_back(world.create_joint(d));
-            note_joint(a, b, {d.anchor});
             break;
         }
         default: {
@@ -317,31 +295,8 @@ struct Session {
                 d.correction_factor = in.real();
             }
             joints.push_back(world.create_joint(d));
-            note_joint(a, b, {});
-            motors.push_back({joints.back(), jointed.made.size() - 1});
-            note_motor_offset(joints.back(), d.linear_offset);
             break;
         }
-        }
-    }
-
-    /// A motor joint's offset is where body_b's origin is pulled to, in body_a's frame: for
-    /// F1 its anchor, far when the offset is long (an offset of 1e12 m, set at creation or
-    /// later by set_motor_joint_offsets, gives NaN within two steps).
-    void note_motor_offset(JointId j, Vec2d offset) {
-        for (const auto& [id, record] : motors) {
-            if (!(id == j))
-                continue;
-            known::JointRecord& r = jointed.made[record];
-            r.anchors.clear();
-            if (world.is_valid(r.a)) {
-                const Vec2d o = world.origin(r.a);
-                const Vec2d p{o.x + offset.x, o.y + offset.y};
-                r.anchors.push_back(p);
-                jointed.far_at_creation = jointed.far_at_creation ||
-                                          known::far_from_body(world, r.a, p) ||
-                                          known::far_from_body(world, r.b, p);
-            }
         }
     }
 
@@ -488,7 +443,6 @@ struct Session {
             } else {
                 const Vec2d o = in.vec();
                 world.set_motor_joint_offsets(j, o, in.real());
-                note_motor_offset(j, o);
             }
             return 0.0;
         }
@@ -564,11 +518,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     Session s(in, world_def(in));
     for (int c = 0; c < max_calls && !in.empty(); ++c) {
         const std::uint64_t before = s.world.state_hash();
-        // Judged before the call: a step that fails turns the positions F1 is judged by to NaN.
-        const known::Joints& j = s.jointed;
         const World& w = s.world;
-        const bool f1 = known::f1_far_joint_anchor(w, j);
-        const bool f2 = known::f2_tiny_inertia_on_jointed_body(w, j);
         std::exception_ptr error;
         double stepped = 0.0;
         try {
@@ -582,12 +532,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             check_refusal(error, before, w);
             continue;
         }
-        if (const std::string bad = non_finite_state(w); !bad.empty()) {
-            // The open findings (known_findings.hpp): the input ends here, counted as theirs.
-            if (f1 || f2 || (stepped != 0.0 && known::f3_huge_load_on_joint(w, j, stepped)))
-                return 0;
+        if (const std::string bad = non_finite_state(w); !bad.empty())
             broken_promise("non-finite state after an accepted call: " + bad);
-        }
     }
     return 0;
 }

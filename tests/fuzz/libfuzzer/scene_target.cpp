@@ -7,20 +7,16 @@
 // message and nothing else; what parse_scene accepts builds; its written form (scene_to_json)
 // loads again and builds the same world (state_hash); a step that refuses is a ValidationError
 // and leaves state_hash() unchanged; after every accepted step every body state, energy and
-// momentum is finite. A non-finite state that one of the open findings F1-F3 explains
-// (known_findings.hpp) ends the input instead.
+// momentum is finite. No finding is excused (docs/verification.md, "Findings (fixed)").
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <exception>
-#include <map>
 #include <string>
 #include <string_view>
-#include <variant>
 #include <vector>
 
 #include "fuzz/fuzz_support.hpp"
-#include "fuzz/libfuzzer/known_findings.hpp"
 #include "fuzz/libfuzzer/promise.hpp"
 #include "tamias2d/errors.hpp"
 #include "tamias2d/io/scene.hpp"
@@ -35,47 +31,6 @@ namespace {
 // thousands of bodies) are parsed and validated only.
 constexpr std::size_t max_bodies_stepped = 200;
 constexpr int max_steps = 6;
-
-/// The scene's joints as the open findings are judged (known_findings.hpp): bodies by the ids
-/// build_world gave them, anchors in the world frame; bodies of one joint 1e5 m apart count
-/// as a far anchor (F1), as the seeded scene driver counts them.
-known::Joints joints_of(const io::Scene& scene, const std::vector<BodyId>& ids,
-                        const World& world) {
-    std::map<std::string, BodyId> by_name;
-    for (std::size_t i = 0; i < scene.bodies.size() && i < ids.size(); ++i)
-        by_name[scene.bodies[i].def.name] = ids[i];
-    known::Joints j;
-    for (const io::SceneJoint& sj : scene.joints) {
-        known::JointRecord r;
-        if (const auto it = by_name.find(sj.body_a); it != by_name.end())
-            r.a = it->second;
-        if (const auto it = by_name.find(sj.body_b); it != by_name.end())
-            r.b = it->second;
-        std::visit(
-            [&](const auto& def) {
-                if constexpr (requires { def.anchor; })
-                    r.anchors.push_back(def.anchor);
-                if constexpr (requires { def.anchor_a; }) {
-                    r.anchors.push_back(def.anchor_a);
-                    r.anchors.push_back(def.anchor_b);
-                }
-                if constexpr (requires { def.linear_offset; }) {
-                    if (world.is_valid(r.a)) {
-                        const Vec2d o = world.origin(r.a);
-                        r.anchors.push_back({o.x + def.linear_offset.x, o.y + def.linear_offset.y});
-                    }
-                }
-            },
-            sj.def);
-        if (world.is_valid(r.a) && known::far_from_body(world, r.b, world.position(r.a)))
-            j.far_at_creation = true;
-        for (const Vec2d p : r.anchors)
-            j.far_at_creation = j.far_at_creation || known::far_from_body(world, r.a, p) ||
-                                known::far_from_body(world, r.b, p);
-        j.made.push_back(std::move(r));
-    }
-    return j;
-}
 
 io::Scene load(std::string_view text) {
     try {
@@ -115,18 +70,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         return 0;
 
     World world(scene.world);
-    std::vector<BodyId> ids;
     try {
-        ids = io::build_world(scene, world);
+        (void)io::build_world(scene, world);
     } catch (const std::exception& e) {
         broken_promise(std::string("a scene parse_scene accepted failed to build: ") + e.what());
     }
     check_round_trip(scene, world);
 
-    const known::Joints joints = joints_of(scene, ids, world);
     for (int s = 0; s < max_steps; ++s) {
         const std::uint64_t before = world.state_hash();
-        const char* finding = known::excusing_finding(world, joints, scene.dt);
         try {
             world.step(scene.dt);
         } catch (const ValidationError& e) {
@@ -139,11 +91,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         } catch (const std::exception& e) {
             broken_promise(std::string("step refused with a non-ValidationError: ") + e.what());
         }
-        if (const std::string bad = non_finite_state(world); !bad.empty()) {
-            if (finding != nullptr)
-                return 0; // an open finding (known_findings.hpp)
+        if (const std::string bad = non_finite_state(world); !bad.empty())
             broken_promise("non-finite state after step " + std::to_string(s + 1) + ": " + bad);
-        }
     }
     for (const Vec2d dir : {Vec2d{0.0, -100.0}, Vec2d{100.0, 1.0}})
         if (const std::string bad = bad_ray_cast(world, {-50.0, 50.0}, dir); !bad.empty())
