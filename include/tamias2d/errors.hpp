@@ -48,4 +48,16 @@ struct InvalidHandle : std::invalid_argument {
     using std::invalid_argument::invalid_argument;
 };
 
+/// World::step could not solve the joints: a velocity or displacement turned non-finite
+/// (conflicting joints on light bodies, beyond what the input rules foresee). The step is
+/// refused: every body's state, every joint, the sleep states and the clock are as they were
+/// before the call; the contacts were brought up to date with those unchanged poses (the next
+/// step would compute the same), and the step reports no events.
+struct SolverDivergence : std::runtime_error {
+    std::string field; ///< the first body found diverged, e.g. "body[3 'slider'].velocity"
+    /// what(): "body[3 'slider'].velocity: turned non-finite in the joints' solve; ...".
+    SolverDivergence(std::string field_, const std::string& what)
+        : std::runtime_error(what), field(std::move(field_)) {}
+};
+
 } // namespace tamias2d

@@ -79,6 +79,30 @@ struct World::Impl {
     std::vector<Load> loads;     ///< this step's load-function values (empty when none has one)
     double inv_h = 0.0;          ///< s^-1, the last step's substep rate (reaction forces)
     std::vector<JointId> broken; ///< joints the last step broke
+    /// With joints, what a step changes before its solve is known to be bounded: the joints
+    /// (their impulses, their bodies' rotations) and the sleep states the islands woke.
+    std::vector<Joint> joints_before;
+    std::vector<SleepState> sleep_before;
+    double inv_h_before = 0.0;
+
+    /// The solve diverged (StepSolver::diverged): the joints and sleep states as they were,
+    /// no event of this step, and the step refused naming the body (SolverDivergence). Nothing was
+    /// finalized, so the bodies are as they were; the contacts hold the manifolds of those same
+    /// poses.
+    [[noreturn]] void refuse_diverged(std::uint32_t i) {
+        std::copy(joints_before.begin(), joints_before.end(), joints.joints.begin());
+        inv_h = inv_h_before;
+        if (def.enable_sleep)
+            std::copy(sleep_before.begin(), sleep_before.end(), bodies.sleep_states.begin());
+        contacts.begin_events.clear();
+        contacts.end_events.clear();
+        const std::string& name = bodies.settings[i].name;
+        std::string field =
+            "body[" + std::to_string(i) + (name.empty() ? "" : " '" + name + "'") + "].velocity";
+        throw SolverDivergence(
+            field, field + ": turned non-finite in the joints' solve; the step is refused, "
+                           "bodies, joints and clock as they were");
+    }
 
     /// After the step: a joint whose reaction force exceeded its break force is destroyed.
     void break_joints() {
@@ -535,6 +559,13 @@ void World::step(double dt) {
     w.contacts.end_events.clear();
     w.sensors.begin_events.clear();
     w.sensors.end_events.clear();
+    const bool guarded = w.joints.live() > 0;
+    if (guarded) { // (assign reuses the vectors: no allocation in a steady state)
+        w.inv_h_before = w.inv_h;
+        w.joints_before.assign(w.joints.joints.begin(), w.joints.joints.end());
+        if (w.def.enable_sleep)
+            w.sleep_before.assign(w.bodies.sleep_states.begin(), w.bodies.sleep_states.end());
+    }
     w.contacts.find_new(w.bodies, w.shapes, w.joints);
     const double h = dt / w.def.substeps;
     w.inv_h = w.def.substeps / dt;
@@ -549,6 +580,8 @@ void World::step(double dt) {
         w.solver.prepare_bodies(w.bodies, w.loads, w.def, h);
         w.solver.prepare_joints(w.joints, w.bodies);
         w.solver.solve(w.contacts, w.joints, w.def, dt);
+        if (guarded && w.solver.diverged() != null_index)
+            w.refuse_diverged(w.solver.diverged());
         w.solver.finalize(w.bodies, w.shapes, w.contacts, w.joints, w.def);
         w.break_joints();
         w.sleep.update_sleep(w.bodies, w.def, dt);
@@ -557,6 +590,8 @@ void World::step(double dt) {
         w.solver.prepare_joints(w.joints, w.bodies);
         w.contacts.update(w.bodies, w.shapes, false, w.def.speculative_distance);
         w.solver.solve(w.contacts, w.joints, w.def, dt);
+        if (guarded && w.solver.diverged() != null_index)
+            w.refuse_diverged(w.solver.diverged());
         w.solver.finalize(w.bodies, w.shapes, w.contacts, w.joints, w.def);
         w.break_joints();
     }

@@ -11,6 +11,7 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "tamias2d/world.hpp"
 
@@ -92,6 +93,18 @@ inline std::uint64_t base_seed(std::uint64_t fallback) {
 
 inline bool finite(Vec2d v) {
     return std::isfinite(v.x) && std::isfinite(v.y);
+}
+
+/// The bodies' states and the clock, bit for bit: what a SolverDivergence promises to leave
+/// as it was (the contacts, also in state_hash(), are brought up to date with those poses).
+inline std::vector<double> body_states(const World& w) {
+    std::vector<double> out{w.time()};
+    for (const BodyId id : w.bodies()) {
+        const BodyState s = w.state(id);
+        out.insert(out.end(), {s.position.x, s.position.y, s.velocity.x, s.velocity.y,
+                               s.orientation, s.angular_velocity});
+    }
+    return out;
 }
 
 /// "" when every body's position, origin, orientation, velocities, and the world's energies

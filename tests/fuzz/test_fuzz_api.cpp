@@ -378,12 +378,19 @@ void run_sequence(std::uint64_t seed, Tally& tally) {
     const bool trace = std::getenv("TAMIAS_FUZZ_TRACE") != nullptr;
     for (int c = 0; c < calls_per_sequence; ++c) {
         const std::uint64_t before = d.world.state_hash();
+        const std::vector<double> states_before = body_states(d.world);
         std::string problem;
         bool refused = true;
-        std::string why; // the refusal's message, for the trace
+        bool diverged = false; // SolverDivergence: its own promise (errors.hpp)
+        std::string why;       // the refusal's message, for the trace
         try {
             d.call();
             refused = false;
+        } catch (const SolverDivergence& e) {
+            why = e.what();
+            diverged = true;
+            if (e.field.empty() || why.empty())
+                problem = "SolverDivergence with an empty field or message";
         } catch (const ValidationError& e) {
             why = e.what();
             if (e.field.empty() || std::string(e.what()).empty())
@@ -397,7 +404,9 @@ void run_sequence(std::uint64_t seed, Tally& tally) {
         }
         if (refused) {
             ++tally.rejected;
-            if (problem.empty() && d.world.state_hash() != before)
+            if (problem.empty() && diverged && body_states(d.world) != states_before)
+                problem = "a diverged step changed the bodies";
+            if (problem.empty() && !diverged && d.world.state_hash() != before)
                 problem = "a rejected call changed the world";
         } else {
             ++tally.accepted;

@@ -245,8 +245,15 @@ void run_one(std::uint64_t seed, const std::vector<std::string>& corpus, Tally& 
 
     for (int s = 0; s < steps_per_scene; ++s) {
         const std::uint64_t before = world.state_hash();
+        const std::vector<double> states_before = body_states(world);
         try {
             world.step(scene.dt);
+        } catch (const SolverDivergence& e) {
+            // Its own promise (errors.hpp): bodies and clock as they were, contacts updated.
+            ++tally.step_refused;
+            if (body_states(world) != states_before)
+                fail(seed, text, std::string("a diverged step changed the bodies: ") + e.what());
+            return;
         } catch (const ValidationError& e) {
             // Refusing a state beyond the supported range is allowed; changing the world is not.
             ++tally.step_refused;

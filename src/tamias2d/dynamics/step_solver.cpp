@@ -258,6 +258,22 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
         }
         wide_solver_.solve(solver_bodies_, st, false);
     }
+    // A joint's solve can diverge where no input rule foresaw it (conflicting joints on light
+    // bodies): checked before any impulse is stored, so that the world can refuse the step.
+    // Contacts alone have not been seen to diverge, and worlds without joints skip the pass.
+    diverged_ = 0xffffffffu;
+    if (!jointed_.empty()) {
+        for (std::size_t k = 1; k < nb; ++k) {
+            const SolverBody& sb = solver_bodies_[k];
+            // (A finite state beyond the supported one is the next step's DCX_range refusal.)
+            if (std::isfinite(sb.v.x) && std::isfinite(sb.v.y) && std::isfinite(sb.w) &&
+                std::isfinite(sb.dp.x) && std::isfinite(sb.dp.y) && std::isfinite(sb.dq))
+                continue;
+            const auto at = std::find(solver_index_.begin(), solver_index_.end(), k);
+            diverged_ = std::uint32_t(at - solver_index_.begin());
+            return;
+        }
+    }
     const std::span<ContactConstraint> bouncers(bouncing_.data(), bounce_count);
     wide_solver_.store(contacts.warm_impulses, contacts.total_impulses, bouncers);
     // \srs{R8} Post-collision velocities (and, integrated, positions) of colliding bodies.

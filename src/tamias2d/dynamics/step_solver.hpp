@@ -36,7 +36,12 @@ class StepSolver {
     void prepare_joints(JointStore& joints, const BodyStore& bodies);
     /// The substeps of the soft step over dt and the restitution pass; the contacts' impulses
     /// are stored back for the warm start and the report, the joints keep theirs.
+    /// With joints, a solve whose velocities or displacements turn non-finite (the joints'
+    /// solve diverged) stops before anything is stored: diverged() names the body.
     void solve(ContactManager& contacts, JointStore& joints, const WorldDef& def, double dt);
+    /// The body (index in the body store) of the first solver body the last solve left
+    /// non-finite, or null_index: the step must then be refused, nothing finalized.
+    std::uint32_t diverged() const { return diverged_; }
     /// The new velocities and poses into the bodies, and the shapes' copies and fat boxes
     /// after them (the broad phase's proxies moved); then, with def.enable_continuous, the
     /// continuous pass (DD29) over the dynamic bodies that moved far.
@@ -56,6 +61,7 @@ class StepSolver {
     std::vector<double> linear_decay_, angular_decay_; ///< IM5's factors per solver body
     bool any_damped_ = false; ///< this step: some solver body is damped (else no factors)
     std::vector<std::uint32_t> solver_index_; ///< per body: its SolverBody (0: immovable)
+    std::uint32_t diverged_ = 0xffffffffu;    ///< see diverged()
     std::vector<GraphEdge> edges_;            ///< the touching manifolds, creation order
     std::vector<std::uint32_t> edge_contact_; ///< per edge: its contact
     std::vector<std::uint32_t> edge_slot_;    ///< per edge: its copy in `bouncing_`, or no_slot
