@@ -16,6 +16,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdlib>
 #include <cstring>
 #include <new>
 #include <type_traits>
@@ -83,8 +84,14 @@ template <class T> class LargeArray {
     T* end() { return data_ + size_; }
     const T* begin() const { return data_; }
     const T* end() const { return data_ + size_; }
-    T& operator[](std::size_t i) { return data_[i]; }
-    const T& operator[](std::size_t i) const { return data_[i]; }
+    T& operator[](std::size_t i) {
+        check_index(i);
+        return data_[i];
+    }
+    const T& operator[](std::size_t i) const {
+        check_index(i);
+        return data_[i];
+    }
     T& front() { return data_[0]; }
     const T& front() const { return data_[0]; }
     T& back() { return data_[size_ - 1]; }
@@ -157,6 +164,15 @@ template <class T> class LargeArray {
     }
 
   private:
+    /// With the standard library's checked mode (_GLIBCXX_ASSERTIONS, as std::vector's []
+    /// checks there) an index past the end stops the program; otherwise no check, no cost.
+    void check_index([[maybe_unused]] std::size_t i) const {
+#if defined(_GLIBCXX_ASSERTIONS)
+        if (i >= size_)
+            std::abort();
+#endif
+    }
+
     /// Geometric growth, as std::vector's (libstdc++ doubles).
     std::size_t grown(std::size_t needed) const {
         return needed > 2 * capacity_ ? needed : 2 * capacity_;
