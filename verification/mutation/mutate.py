@@ -128,9 +128,9 @@ def all_mutants(root):
 INCLUDE = re.compile(r'^\s*#\s*include\s+"(tamias2d/[^"]+)"', re.M)
 
 
-def labels_of(root, relpath):
-    """The SRS labels of the file's \\srs tags and of every library header it includes,
-    directly or not: the items whose formulas the file realises or calls."""
+def _tags_reached(root, relpath):
+    """The labels of the file's \\srs tags and of every library header it includes, directly
+    or not."""
     found, seen, todo = set(), set(), [relpath]
     while todo:
         rel = todo.pop()
@@ -145,6 +145,45 @@ def labels_of(root, relpath):
         for m in TAG.finditer(text):
             found |= {x.strip() for x in m.group(1).split(",") if x.strip()}
         todo += ["src/" + inc for inc in INCLUDE.findall(text)]
+    return found
+
+
+def _users(root, relpath):
+    """The library files that include relpath (for x.cpp: that include x.hpp, x.cpp aside)."""
+    stem, ext = os.path.splitext(relpath)
+    header = (stem + ".hpp") if ext == ".cpp" else relpath
+    wanted = header[len("src/"):]
+    out = []
+    for dirpath, _, files in os.walk(os.path.join(root, "src", "tamias2d")):
+        for f in sorted(files):
+            if not f.endswith((".hpp", ".cpp")):
+                continue
+            rel = os.path.relpath(os.path.join(dirpath, f), root)
+            if rel in (relpath, header):
+                continue
+            with open(os.path.join(root, rel), encoding="utf-8") as fh:
+                if wanted in INCLUDE.findall(fh.read()):
+                    out.append(rel)
+    return sorted(out)
+
+
+def labels_of(root, relpath):
+    """The SRS labels of the file's \\srs tags and of every library header it includes,
+    directly or not: the items whose formulas the file realises or calls. A file that reaches
+    no tag (a store, a data layout, a solver's inner step) serves the code that uses it: it
+    takes the labels of the library files that include it (or its header), nearest first."""
+    found = _tags_reached(root, relpath)
+    seen, frontier = {relpath}, [relpath]
+    while not found and frontier:
+        nxt = []
+        for rel in frontier:
+            for u in _users(root, rel):
+                if u not in seen:
+                    seen.add(u)
+                    nxt.append(u)
+        for u in nxt:
+            found |= _tags_reached(root, u)
+        frontier = nxt
     return sorted(found)
 
 
@@ -157,30 +196,56 @@ def run(cmd, cwd=None, timeout=None):
 
 
 def prepare_scratch(root, scratch):
-    """A copy of the sources (no .git, builds or reports) and a configured Release build."""
+    """A copy of the sources (no .git, builds or reports) and a built Release build.
+
+    The library is built shared and the test executables do not relink when only it changed
+    (LINK_DEPENDS_NO_SHARED): a mutant of a .cpp then recompiles one object and relinks one
+    .so instead of every test executable. The copy keeps the sources' times, so a scratch that
+    outlives a run rebuilds only what changed since; a mutant left in place by an interrupted
+    run (the marker file names it) is touched so that it is rebuilt from the restored source."""
     src = os.path.join(scratch, "src")
     build = os.path.join(scratch, "build")
+    marker = os.path.join(scratch, "mutant-in-place")
+    leftover = None
+    if os.path.exists(marker):
+        with open(marker, encoding="utf-8") as fh:
+            leftover = fh.read().strip()
     ignore = shutil.ignore_patterns(".git", "build*", "reports", "__pycache__")
     if os.path.isdir(src):
         shutil.rmtree(src)
     shutil.copytree(root, src, ignore=ignore)
-    # -O1: mutants compile faster; the tests judge behaviour, not speed.
+    if leftover and os.path.exists(os.path.join(src, leftover)):
+        os.utime(os.path.join(src, leftover))
+    if os.path.exists(marker):
+        os.remove(marker)
+    # -O1: mutants compile faster; the tests judge behaviour, not speed. _GLIBCXX_ASSERTIONS:
+    # an index past an array's end (std::vector, LargeArray) stops the test, so a loop bound
+    # turned by one is noticed even where the stray element is never used.
     rc, out = run(["cmake", "-S", src, "-B", build, "-G", "Ninja", "-DCMAKE_BUILD_TYPE=Release",
-                   "-DCMAKE_CXX_FLAGS_RELEASE=-O1 -DNDEBUG",
+                   "-DCMAKE_CXX_FLAGS_RELEASE=-O1 -DNDEBUG -D_GLIBCXX_ASSERTIONS", "-DBUILD_SHARED_LIBS=ON",
+                   "-DCMAKE_LINK_DEPENDS_NO_SHARED=ON", "-DTAMIAS_BUILD_TESTS=ON",
                    "-DTAMIAS_BUILD_VERIFICATION=OFF", "-DTAMIAS_BUILD_APPS=OFF",
                    "-DTAMIAS_INSTALL=OFF"])
     if rc != 0:
         raise SystemExit("scratch configure failed:\n" + out[-3000:])
-    return src, build
-
-
-def ctest_entries(build, labels):
-    """{test name: executable target} of the CTest entries carrying any of labels."""
+    # Every labelled test executable once, before any mutant: a mutant's time is then its own
+    # rebuild and tests.
     rc, out = run(["ctest", "--test-dir", build, "--show-only=json-v1"])
     if rc != 0:
-        return {}
+        raise SystemExit("ctest cannot list the scratch build's tests:\n" + out[-3000:])
+    catalogue = json.loads(out).get("tests", [])
+    targets = sorted({t["name"].split("@", 1)[0] for t in catalogue if "@" in t["name"]})
+    rc, out = run(["nice", "-n", "5", "cmake", "--build", build, "-j2", "--target", *targets])
+    if rc != 0:
+        raise SystemExit("scratch build of the unmutated sources failed:\n" + out[-3000:])
+    return src, build, marker, catalogue
+
+
+def ctest_entries(catalogue, labels):
+    """{test name: executable target} of the CTest entries (ctest --show-only=json-v1's
+    "tests") carrying any of labels."""
     entries = {}
-    for t in json.loads(out).get("tests", []):
+    for t in catalogue:
         props = {p["name"]: p["value"] for p in t.get("properties", [])}
         tl = props.get("LABELS", [])
         if isinstance(tl, str):
@@ -190,7 +255,11 @@ def ctest_entries(build, labels):
     return entries
 
 
-def judge(m, src, build, labels, test_timeout):
+def judge(m, src, build, entries, test_timeout, marker):
+    """(verdict, log, build seconds, test seconds) of one mutant, run against entries
+    ({CTest name: target}); the scratch source is restored afterwards."""
+    if not entries:
+        return "no tests", "", 0.0, 0.0
     path = os.path.join(src, m["file"])
     with open(path, encoding="utf-8") as fh:
         original = fh.read()
@@ -198,24 +267,102 @@ def judge(m, src, build, labels, test_timeout):
     assert lines[m["line"] - 1] == m["before"]
     lines[m["line"] - 1] = m["after"]
     try:
+        with open(marker, "w", encoding="utf-8") as fh:
+            fh.write(m["file"])
         with open(path, "w", encoding="utf-8") as fh:
             fh.write("\n".join(lines))
-        entries = ctest_entries(build, labels)
-        if not entries:
-            return "no tests", "", []
         targets = sorted(set(entries.values()))
+        t0 = time.monotonic()
         rc, out = run(["nice", "-n", "5", "cmake", "--build", build, "-j2", "--target", *targets])
+        t1 = time.monotonic()
         if rc != 0:
-            return "stillborn", out[-600:], sorted(entries)
+            return "stillborn", out[-600:], t1 - t0, 0.0
         regex = "^(" + "|".join(re.escape(n) for n in sorted(entries)) + ")$"
         rc, out = run(["ctest", "--test-dir", build, "-R", regex, "--stop-on-failure", "-j2",
                        "--timeout", str(test_timeout)], timeout=test_timeout * len(entries) + 60)
+        t2 = time.monotonic()
         if rc is None or rc != 0:
-            return "killed", out[-600:], sorted(entries)
-        return "survived", "", sorted(entries)
+            return "killed", out[-600:], t1 - t0, t2 - t1
+        return "survived", "", t1 - t0, t2 - t1
     finally:
         with open(path, "w", encoding="utf-8") as fh:
             fh.write(original)
+        os.remove(marker)
+
+
+FAILED = re.compile(r"^\s*\d+ - (\S+) \(", re.M)
+
+
+def failed_entries(log):
+    """The CTest entries a ctest log lists as failed (killed by a time-out included)."""
+    tail = log.split("The following tests FAILED:", 1)
+    return sorted(set(FAILED.findall(tail[1]))) if len(tail) == 2 else []
+
+
+def passes_unmutated(names, build, entries, baseline, test_timeout):
+    """Whether every entry of names passes on the unmutated sources (the scratch restored),
+    remembered in baseline: a kill by a test that fails anyway is no kill."""
+    todo = [n for n in names if n not in baseline]
+    if todo:
+        targets = sorted({entries[n] for n in todo})
+        rc, out = run(["nice", "-n", "5", "cmake", "--build", build, "-j2", "--target", *targets])
+        if rc != 0:
+            raise SystemExit("the unmutated scratch does not build:\n" + out[-3000:])
+        regex = "^(" + "|".join(re.escape(n) for n in todo) + ")$"
+        rc, out = run(["ctest", "--test-dir", build, "-R", regex, "-j2", "--timeout",
+                       str(test_timeout)], timeout=test_timeout * len(todo) + 60)
+        bad = set(failed_entries(out)) if rc not in (None, 0) else set()
+        if rc is None:
+            bad = set(todo)
+        for n in todo:
+            baseline[n] = n not in bad
+    return all(baseline[n] for n in names)
+
+
+SURVIVORS = os.path.join(HERE, "survivors.json")
+WINDOW = 8
+
+
+def survivor_key(m):
+    """A survivor's key: file, the mutated line's text (stripped) and operator, not the id
+    (ids shift whenever a target file changes; the line's text and place in its file rarely
+    do together)."""
+    return (m["file"], m["before"].strip(), m["op"])
+
+
+def load_judgements(path=SURVIVORS):
+    """{key: judgement} from survivors.json: a list of {file, line, op, verdict, reason}, the
+    verdict "equivalent" (reason: why no input the code receives tells the mutant apart) or
+    "gap" (reason: what the tests lack). A malformed entry is an error, not ignored."""
+    if not os.path.exists(path):
+        return {}
+    with open(path, encoding="utf-8") as fh:
+        doc = json.load(fh)
+    out = {}
+    for i, j in enumerate(doc.get("survivors", [])):
+        for field in ("file", "line", "op", "verdict", "reason"):
+            if not isinstance(j.get(field), str) or not j[field].strip():
+                raise SystemExit(f"{path}: survivors[{i}].{field} must be a non-empty string")
+        if j["verdict"] not in ("equivalent", "gap"):
+            raise SystemExit(f"{path}: survivors[{i}].verdict must be \"equivalent\" or "
+                             f"\"gap\", not {j['verdict']!r}")
+        key = (j["file"], j["line"].strip(), j["op"])
+        if key in out:
+            raise SystemExit(f"{path}: survivors[{i}] repeats {key}")
+        out[key] = j
+    return out
+
+
+def score_of(results, judgements):
+    """(score, killed, equivalent, counted): killed / (killed + survivors not judged
+    equivalent). A survivor judged "gap" or not judged at all counts against the score;
+    stillborn mutants and those without a labelled test are not in it."""
+    killed = sum(r["verdict"] == "killed" for r in results)
+    survived = [r for r in results if r["verdict"] == "survived"]
+    equivalent = sum(judgements.get(survivor_key(r), {}).get("verdict") == "equivalent"
+                     for r in survived)
+    counted = killed + len(survived) - equivalent
+    return (killed / counted if counted else 0.0), killed, equivalent, counted
 
 
 def commit_of(root):
@@ -235,6 +382,7 @@ def main(argv=None):
     ap.add_argument("--root", default=ROOT)
     ap.add_argument("--test-timeout", type=int, default=300)
     ap.add_argument("--list", action="store_true", help="print the mutants and stop")
+    ap.add_argument("--survivors", default=SURVIVORS, help="the judged survivors (JSON)")
     a = ap.parse_args(argv)
 
     muts = all_mutants(a.root)
@@ -246,56 +394,102 @@ def main(argv=None):
         except BrokenPipeError:  # piped into head
             pass
         return 0
+    judgements = load_judgements(a.survivors)
     chosen = muts if a.all else random.Random(a.seed).sample(muts, min(a.sample, len(muts)))
-    deadline = None if a.all else time.monotonic() + 60.0 * a.minutes
+    # Within each run of WINDOW sampled mutants, those of one file one after another: restoring
+    # the file and building its next mutant are then one rebuild, not two, while a time box
+    # still cuts the sample at a window's end, not after a few whole files.
+    chosen = [m for k in range(0, len(chosen), WINDOW)
+              for m in sorted(chosen[k:k + WINDOW], key=lambda m: (m["file"], m["line"], m["id"]))]
     commit, dirty = commit_of(a.root)
     started = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ")
-    src, build = prepare_scratch(a.root, a.scratch)
-    rows, results = [], []
+    t_prep = time.monotonic()
+    src, build, marker, catalogue = prepare_scratch(a.root, a.scratch)
+    prep_secs = time.monotonic() - t_prep
+    # The box is for judging mutants; the scratch build before it is reported apart (minutes
+    # when the scratch is new, seconds when it outlives a run).
+    deadline = None if a.all else time.monotonic() + 60.0 * a.minutes
+    results = []
+    baseline = {}  # CTest entry -> passes on the unmutated sources (asked when it kills)
     for m in chosen:
         if deadline is not None and time.monotonic() > deadline:
             break
         labels = labels_of(a.root, m["file"])
+        entries = ctest_entries(catalogue, labels)
         t0 = time.monotonic()
-        verdict, log, entries = judge(m, src, build, labels, a.test_timeout)
+        entries = {n: t for n, t in entries.items() if baseline.get(n, True)}
+        verdict, log, b_secs, t_secs = judge(m, src, build, entries, a.test_timeout, marker)
+        if verdict == "killed" and not passes_unmutated(failed_entries(log), build, entries,
+                                                        baseline, a.test_timeout):
+            # Killed by a test that fails without the mutant too: judged again without it.
+            broken = sorted(n for n in entries if baseline.get(n) is False)
+            print(f"   (fails unmutated, left out from now on: {', '.join(broken)})")
+            entries = {n: t for n, t in entries.items() if baseline.get(n, True)}
+            verdict, log, b_secs, t_secs = judge(m, src, build, entries, a.test_timeout, marker)
         secs = time.monotonic() - t0
-        r = dict(m, verdict=verdict, labels=labels, tests=entries, seconds=round(secs, 1),
+        r = dict(m, verdict=verdict, labels=labels, tests=sorted(entries), seconds=round(secs, 1),
+                 build_seconds=round(b_secs, 1), test_seconds=round(t_secs, 1),
                  log=log if verdict in ("survived", "stillborn") else "")
+        if verdict == "survived":
+            j = judgements.get(survivor_key(m))
+            r["judged"] = j["verdict"] if j else "not yet judged"
+            r["reason"] = j["reason"] if j else ""
         results.append(r)
-        rows.append([m["id"], f"{m['file']}:{m['line']}", m["op"], ", ".join(labels), verdict,
-                     round(secs)])
-        print(f"{verdict:10s} #{m['id']} {m['file']}:{m['line']} {m['op']} ({secs:.0f} s)",
-              flush=True)
-    killed = sum(r["verdict"] == "killed" for r in results)
+        print(f"{verdict:10s} #{m['id']} {m['file']}:{m['line']} {m['op']} ({secs:.0f} s: "
+              f"build {b_secs:.0f}, tests {t_secs:.0f})", flush=True)
+    score, killed, equivalent, counted = score_of(results, judgements)
     survived = [r for r in results if r["verdict"] == "survived"]
-    counted = killed + len(survived)
-    score = killed / counted if counted else 0.0
+    gaps = [r for r in survived if r["judged"] == "gap"]
+    unjudged = [r for r in survived if r["judged"] == "not yet judged"]
+    judged_runs = [r for r in results if r["verdict"] in ("killed", "survived", "stillborn")]
+    mean = (sum(r["seconds"] for r in judged_runs) / len(judged_runs)) if judged_runs else 0.0
     finished = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ")
-    details = (f"{killed} of {counted} compiled mutants killed ({100 * score:.0f} %), "
-               f"{len(survived)} survived, "
+    details = (f"{killed} of {counted} non-equivalent compiled mutants killed "
+               f"({100 * score:.0f} %); {len(survived)} survived ({equivalent} judged equivalent, "
+               f"{len(gaps)} judged gaps, {len(unjudged)} not yet judged), "
                f"{sum(r['verdict'] == 'stillborn' for r in results)} did not compile, "
                f"{sum(r['verdict'] == 'no tests' for r in results)} had no labelled test; "
                f"{len(results)} of {len(chosen)} chosen from {len(muts)} "
-               f"({'all' if a.all else f'seed {a.seed}, sample {a.sample}, {a.minutes:g} min box'})")
+               f"({'all' if a.all else f'seed {a.seed}, sample {a.sample}, {a.minutes:g} min box'}); "
+               f"{mean:.0f} s per built mutant, scratch build {prep_secs:.0f} s")
+    broken = sorted(n for n, ok in baseline.items() if not ok)
+    if broken:
+        details += (f"; {len(broken)} CTest entries fail without any mutant and were left out: "
+                    + ", ".join(broken))
     doc = {
         "program": "mutation",
         "description": "Mutation testing of src/tamias2d/model/ and dynamics/: mutants (operator "
                        "swaps, constants, comparisons, removed assignments) built in a scratch "
                        "copy, judged by the CTest entries labelled with the SRS items the mutated "
-                       "file's \\srs tags, or those of the library headers it includes, name. Survivors are listed in full; the score counts "
-                       "compiled mutants only. This run: " + details + ".",
+                       "file's \\srs tags, or those of the library headers it includes, name (a "
+                       "file that reaches no tag: those of the files that include it). Score: "
+                       "killed / (killed + survivors not judged equivalent in "
+                       "verification/mutation/survivors.json). This run: " + details + ".",
         "provenance": {"commit": commit, "dirty": dirty, "build_id": None, "built": started,
                        "generated": finished},
-        "checks": [],
+        "checks": [{"name": "at least 90 % of the non-equivalent mutants killed",
+                    "labels": [], "passed": bool(counted) and score >= 0.9 - 1e-12,
+                    "target": ">= 90 % killed",
+                    "oracle": "the SRS-labelled tests fail on each mutant; survivors judged "
+                              "equivalent are argued in verification/mutation/survivors.json",
+                    "details": details}],
         "tables": [{"name": "Mutants", "columns": ["id", "where", "mutation", "labels (tests run)",
-                                                   "verdict", "seconds"], "rows": rows},
+                                                   "verdict", "seconds (build + tests)"],
+                    "rows": [[r["id"], f"{r['file']}:{r['line']}", r["op"],
+                              ", ".join(r["labels"]), r["verdict"],
+                              f"{r['seconds']:.0f} ({r['build_seconds']:.0f} + "
+                              f"{r['test_seconds']:.0f})"] for r in results]},
                    {"name": "Survivors",
-                    "columns": ["id", "where", "before", "after"],
-                    "rows": [[r["id"], f"{r['file']}:{r['line']}", r["before"].strip(),
-                              r["after"].strip() or "(removed)"] for r in survived]}],
+                    "columns": ["id", "where", "mutation", "before", "after", "judged", "reason"],
+                    "rows": [[r["id"], f"{r['file']}:{r['line']}", r["op"], r["before"].strip(),
+                              r["after"].strip() or "(removed)", r["judged"], r["reason"]]
+                             for r in survived]}],
         "series": [],
         "score": score,
         "summary": details,
+        "seconds_per_mutant": round(mean, 1),
+        "failing_unmutated": broken,
+        "scratch_build_seconds": round(prep_secs, 1),
         "mutants": results,
     }
     os.makedirs(a.out_dir, exist_ok=True)

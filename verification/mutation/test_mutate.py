@@ -1,5 +1,6 @@
 """The mutation tool's own test: which mutants a fragment of C++ yields (no build).
 Oracle: the mutants of each hand-written line, listed by hand."""
+import json
 import os
 import sys
 import tempfile
@@ -49,6 +50,76 @@ class Mutants(unittest.TestCase):
             muts = mutate.all_mutants(root)
             self.assertEqual([m["op"] for m in muts], ["arith * to /", "constant 2.0 to 4.0"])
             self.assertEqual([m["id"] for m in muts], [0, 1])  # y.cpp has nothing to mutate
+
+    def test_untagged_file_takes_its_users_labels(self):
+        with tempfile.TemporaryDirectory() as root:
+            d = os.path.join(root, "src/tamias2d/dynamics")
+            os.makedirs(d)
+            os.makedirs(os.path.join(root, "src/tamias2d/model"))
+            with open(os.path.join(d, "store.hpp"), "w") as fh:
+                fh.write("struct Store { int n = 0; };\n")
+            with open(os.path.join(d, "store.cpp"), "w") as fh:
+                fh.write('#include "tamias2d/dynamics/store.hpp"\nint f() { return 1 + 2; }\n')
+            with open(os.path.join(d, "solver.cpp"), "w") as fh:
+                fh.write('/// \\srs{IM7} soft\n#include "tamias2d/dynamics/store.hpp"\n')
+            # Neither reaches a tag; solver.cpp includes the header: its labels are theirs.
+            self.assertEqual(mutate.labels_of(root, "src/tamias2d/dynamics/store.hpp"), ["IM7"])
+            self.assertEqual(mutate.labels_of(root, "src/tamias2d/dynamics/store.cpp"), ["IM7"])
+            self.assertEqual(mutate.labels_of(root, "src/tamias2d/dynamics/solver.cpp"), ["IM7"])
+
+
+class Scoring(unittest.TestCase):
+    """Oracle: the scoring rule counted by hand on a made-up run."""
+
+    def judgements(self, entries):
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "survivors.json")
+            with open(path, "w") as fh:
+                json.dump({"survivors": entries}, fh)
+            return mutate.load_judgements(path)
+
+    def test_score_counts_only_survivors_not_judged_equivalent(self):
+        def mut(line, verdict):
+            return {"file": "f.cpp", "before": f"  x = {line};", "op": "statement removed",
+                    "verdict": verdict}
+        results = [mut(1, "killed"), mut(2, "killed"), mut(3, "killed"), mut(4, "survived"),
+                   mut(5, "survived"), mut(6, "survived"), mut(7, "stillborn"),
+                   mut(8, "no tests")]
+        j = self.judgements([
+            {"file": "f.cpp", "line": "x = 4;", "op": "statement removed",
+             "verdict": "equivalent", "reason": "x is never read"},
+            {"file": "f.cpp", "line": "x = 5;", "op": "statement removed", "verdict": "gap",
+             "reason": "no test reads x"}])
+        # 3 killed; survivors 4 (equivalent, out), 5 (gap, in), 6 (not judged, in): 3 / 5.
+        self.assertEqual(mutate.score_of(results, j), (3 / 5, 3, 1, 5))
+        self.assertEqual(mutate.score_of(results, {}), (3 / 6, 3, 0, 6))
+        # Keyed by the line's text, not its number or id: the judgement follows the line.
+        self.assertIn(mutate.survivor_key(mut(4, "survived")), j)
+
+    def test_malformed_judgement_is_an_error(self):
+        for bad in ({"file": "f", "line": "x", "op": "o", "verdict": "maybe", "reason": "r"},
+                    {"file": "f", "line": "x", "op": "o", "verdict": "gap", "reason": " "},
+                    {"file": "f", "line": "x", "op": "o", "verdict": "equivalent"}):
+            with self.subTest(bad=bad), self.assertRaises(SystemExit):
+                self.judgements([bad])
+        with self.assertRaises(SystemExit):  # the same key twice
+            same = {"file": "f", "line": "x", "op": "o", "verdict": "gap", "reason": "r"}
+            self.judgements([same, same])
+
+    def test_the_repository_record_is_well_formed(self):
+        # Every judged survivor names a line that exists in its file with a mutant of that
+        # operator: a record that no mutant reaches any more is stale.
+        keys = {mutate.survivor_key(m) for m in mutate.all_mutants(mutate.ROOT)}
+        for key in mutate.load_judgements():
+            with self.subTest(key=key):
+                self.assertIn(key, keys)
+
+    def test_failed_entries_from_a_ctest_log(self):
+        log = ("50% tests passed, 1 tests failed out of 2\n\nThe following tests FAILED:\n"
+               "\t  7 - engine_tests@IM3 (Failed)\n\t  9 - model_tests@DD8 (Timeout)\n"
+               "Errors while running CTest\n")
+        self.assertEqual(mutate.failed_entries(log), ["engine_tests@IM3", "model_tests@DD8"])
+        self.assertEqual(mutate.failed_entries("100% tests passed"), [])
 
 
 if __name__ == "__main__":
