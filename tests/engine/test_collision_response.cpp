@@ -165,4 +165,44 @@ BOOST_AUTO_TEST_CASE(unequal_masses_conserve_momentum_and_energy,
     BOOST_TEST(std::abs(world.kinetic_energy() - e0) < 1e-9 * e0);
 }
 
+// Oracle: DD10, J = m dv (impulse-momentum), and Coulomb's law for a sliding contact: a unit box
+// sliding on static ground is pushed sideways by friction alone (gravity is vertical), so the
+// friction impulses the step reports, summed over the manifold's points, are its horizontal
+// momentum change, and, as it slides the whole step, mu times the reported normal impulses.
+BOOST_AUTO_TEST_CASE(reported_friction_impulse_is_the_momentum_change, *utf::label("DD10")) {
+    const double mu = 0.5, dt = 1.0 / 60.0;
+    World world(WorldDef{.gravity = {0.0, -10.0}});
+    BodyDef gd;
+    gd.type = BodyType::static_body;
+    const BodyId ground = world.create_body(gd);
+    world.create_shape(ground, box_shape(40.0, 1.0, Material{1.0, 0.0, mu}));
+    BodyDef bd;
+    bd.position = {0.0, 1.0}; // resting on the ground's top face, y = 0.5
+    const BodyId box = world.create_body(bd);
+    world.create_shape(box, box_shape(1.0, 1.0, Material{1.0, 0.0, mu}));
+    const double m = world.mass(box);
+    BOOST_TEST_REQUIRE(m == 1.0);
+    for (int i = 0; i < 30; ++i) // settle: the contact and its impulses established
+        world.step(dt);
+    world.set_velocity(box, {3.0, world.velocity(box).y});
+    for (int i = 0; i < 5; ++i) {
+        const Vec2d v0 = world.velocity(box);
+        world.step(dt);
+        const Vec2d v1 = world.velocity(box);
+        BOOST_TEST_REQUIRE(world.contacts().size() == 1u);
+        const ContactInfo& c = world.contacts()[0];
+        BOOST_TEST_REQUIRE(c.point_count == 2); // face on face
+        BOOST_TEST_REQUIRE(std::abs(c.normal.x) < 1e-12);
+        double jt = 0.0, jn = 0.0;
+        for (int k = 0; k < c.point_count; ++k) {
+            jt += c.points[k].tangent_impulse;
+            jn += c.points[k].normal_impulse;
+        }
+        BOOST_TEST(v1.x > 0.0); // still sliding: the friction bound holds all step
+        BOOST_TEST(rel(std::abs(jt), m * std::abs(v1.x - v0.x)) < 1e-9);
+        BOOST_TEST(rel(std::abs(jn), m * (v1.y - v0.y) + m * 10.0 * dt) < 1e-9);
+        BOOST_TEST(rel(std::abs(jt), mu * jn) < 1e-9);
+    }
+}
+
 BOOST_AUTO_TEST_SUITE_END()
