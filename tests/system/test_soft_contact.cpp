@@ -152,4 +152,34 @@ BOOST_AUTO_TEST_CASE(TC12_soft_contact_reduces_to_im3_for_an_isolated_vertex_edg
     BOOST_TEST(t.speculative > 0);
 }
 
+// Oracle: the rigid two-point contact written out here. A unit box (m = 1, I = 1/6) lands flat
+// on static ground with v = (0, -1), omega = 0.3, C_R = 0, no friction, no gravity: its lower
+// corners, at x = -0.5 and +0.5 from the centre, approach at -1 -+ 0.15 m/s. Both keep
+// approaching while one alone is stopped, so both push: j1 + j2 = m * 1 and
+// 0.5 (j2 - j1) = I (0 - 0.3) give j1 = 0.55, j2 = 0.45 > 0, and afterwards both corners are
+// at rest on the ground: v = (0, 0), omega = 0 (IM7's relax with rigid targets, the IM3 limit
+// C_R = 0 at two points). Point-by-point iterations only approach this; the step must reach it.
+BOOST_AUTO_TEST_CASE(flat_landing_stops_both_corners_exactly, *utf::label("IM7")) {
+    for (const int substeps : {1, 4}) {
+        World world(WorldDef{.gravity = {0.0, 0.0}, .substeps = substeps});
+        BodyDef gd;
+        gd.type = BodyType::static_body;
+        const BodyId ground = world.create_body(gd);
+        world.create_shape(ground, box_shape(10.0, 1.0, Material{1.0, 0.0, 0.0}));
+        BodyDef bd;
+        bd.position = {0.3, 1.0}; // touching: bottom face on the ground's top face, y = 0.5
+        bd.linear_velocity = {0.0, -1.0};
+        bd.angular_velocity = 0.3;
+        const BodyId box = world.create_body(bd);
+        world.create_shape(box, box_shape(1.0, 1.0, Material{1.0, 0.0, 0.0}));
+        BOOST_TEST_REQUIRE(world.mass(box) == 1.0);
+        world.step(1.0 / 60.0);
+        BOOST_TEST_REQUIRE(world.contacts().size() == 1u);
+        BOOST_TEST(world.contacts()[0].point_count == 2);
+        BOOST_TEST(std::abs(world.velocity(box).x) < 1e-12, "substeps " << substeps);
+        BOOST_TEST(std::abs(world.velocity(box).y) < 1e-9, "substeps " << substeps);
+        BOOST_TEST(std::abs(world.angular_velocity(box)) < 1e-9, "substeps " << substeps);
+    }
+}
+
 BOOST_AUTO_TEST_SUITE_END()
