@@ -4,6 +4,8 @@
 #     --quick       skips the coverage build
 #     --full-bench  runs the peer benchmark at full length (about 20 min on 2 cores) instead of
 #                   its --quick form, which keeps the main job near 10 minutes
+#   TAMIAS_MUTATION_MINUTES=M  judges mutants for M minutes (default 8; docs/verification.md)
+#   TAMIAS_MUTATION=all        judges every mutant instead (hours); TAMIAS_MUTATION=0 skips it
 set -uo pipefail
 cd "$(dirname "$0")/.."
 t0=$(date +%s)
@@ -54,6 +56,34 @@ phase "fuzzing: the libFuzzer targets, 60 s each (reports/data/fuzz.json)"
 # its fuzzer runtime nothing is written and the report says "not run". A finding is a failed
 # check of the report; its input is in build-fuzz/findings/.
 ./scripts/fuzz.sh --seconds 60 --report reports/data | sed "s/^/   /"
+
+phase "mutation testing (verification/mutation/mutate.py)"
+# A seeded sample judged for TAMIAS_MUTATION_MINUTES (default 8) after the scratch build (in
+# /tmp, outside the checkout; minutes when new, seconds when it outlives the last run);
+# TAMIAS_MUTATION=all judges every mutant (hours), TAMIAS_MUTATION=0 skips it (the report then
+# says "not run").
+mutation=${TAMIAS_MUTATION:-sample}
+if [ "$mutation" = 0 ]; then
+    echo "   skipped (TAMIAS_MUTATION=0)"
+else
+    if [ "$mutation" = all ]; then
+        margs=(--all)
+    else
+        margs=(--sample 1000 --seed "${TAMIAS_MUTATION_SEED:-1}"
+               --minutes "${TAMIAS_MUTATION_MINUTES:-8}")
+    fi
+    p0=$(date +%s)
+    /usr/bin/python3 verification/mutation/mutate.py reports/data "${margs[@]}" \
+        >build/mutation.log 2>&1
+    rc=$?
+    tail -n 1 build/mutation.log | sed "s/^/   /"
+    if [ ! -f reports/data/mutation.json ]; then
+        # Asked for and not done (the scratch did not build): an error, not "not run".
+        printf '{"program": "mutation", "description": "wrote no results (build/mutation.log)", "checks": [{"name": "mutation wrote its results", "labels": [], "passed": false, "oracle": "mutate.py writes reports/data/mutation.json", "details": "exit status %s, no JSON written"}], "tables": [], "series": []}\n' \
+            "$rc" > reports/data/mutation.missing.json
+    fi
+    echo "   mutation: $(( $(date +%s) - p0 )) s (log: build/mutation.log)"
+fi
 
 if [ $quick -eq 0 ]; then
     phase "coverage build and run (gcovr)"
