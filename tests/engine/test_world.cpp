@@ -335,4 +335,24 @@ BOOST_AUTO_TEST_CASE(query_aabb_follows_moving_bodies, *utf::label("IM4")) {
     BOOST_TEST(hits > 100); // not vacuous: the boxes do meet the circles
 }
 
+// Oracle: the handle contract (index + generation) for shapes: a live shape's handle is valid,
+// a destroyed shape's is not and is rejected with InvalidHandle, and a shape created in the
+// recycled slot gets a handle of its own while the old one stays invalid.
+BOOST_AUTO_TEST_CASE(stale_shape_handles_are_errors, *utf::label("R1")) {
+    World world;
+    const BodyId b = world.create_body({});
+    const ShapeId s = world.create_shape(b, circle_shape(1.0));
+    BOOST_TEST(world.is_valid(s));
+    world.destroy_shape(s);
+    BOOST_TEST(!world.is_valid(s));
+    BOOST_CHECK_THROW(world.destroy_shape(s), InvalidHandle);
+    const ShapeId t = world.create_shape(b, circle_shape(0.5));
+    BOOST_TEST(t.index == s.index); // the slot is recycled...
+    BOOST_TEST(t.generation != s.generation);
+    BOOST_TEST(world.is_valid(t)); // ...under a new generation
+    BOOST_TEST(!world.is_valid(s));
+    BOOST_CHECK_THROW(world.destroy_shape(s), InvalidHandle);
+    BOOST_TEST(!world.is_valid(ShapeId{42, 1}));
+}
+
 BOOST_AUTO_TEST_SUITE_END()

@@ -7,6 +7,9 @@
 
 namespace tamias2d {
 
+/// \srs{R1} A shape handle names one shape of the world's space, and only while that shape
+/// lives: a destroyed shape's handle, or one of a recycled slot's earlier generation, is not
+/// valid.
 Shape& ShapeStore::get(ShapeId id) {
     if (id.index >= shapes.size() || !shapes[id.index].alive() ||
         shapes[id.index].generation != id.generation) {
