@@ -128,6 +128,24 @@ BOOST_AUTO_TEST_CASE(limits_hold_the_translation,
     }
 }
 
+// Oracle: T1 at rest. A box resting on its joint's lower limit under gravity, vertical axis:
+// once settled, only the limit holds it up, so the joint's reaction on it is its weight,
+// (0, m g), the limit pushing up. Its sign says which way the limit pushes.
+BOOST_AUTO_TEST_CASE(resting_on_the_lower_limit_the_reaction_is_the_weight,
+                     *utf::label("DD23") * utf::label("IM6")) {
+    Slider s({0.0, -g}, PrismaticJointDef{.axis = {0.0, 1.0},
+                                          .enable_limit = true,
+                                          .lower_translation = -0.2,
+                                          .upper_translation = 0.5});
+    const double m = s.world.mass(s.box);
+    for (int k = 0; k < 240; ++k)
+        s.world.step(1.0 / 60.0);
+    BOOST_TEST_REQUIRE(std::abs(s.world.velocity(s.box).y) < 1e-9); // settled
+    const Vec2d F = s.world.joint_reaction_force(s.joint);
+    BOOST_TEST(F.y == m * g, boost::test_tools::tolerance(1e-6));
+    BOOST_TEST(std::abs(F.x) < 1e-9 * m * g);
+}
+
 /// The spring slider's largest deviation over 2 s from the oscillator, at the given rate.
 double spring_error(int steps_per_second, const DampedOscillator& osc, double v0) {
     Slider s({0.0, 0.0},
