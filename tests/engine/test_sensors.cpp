@@ -150,4 +150,42 @@ BOOST_AUTO_TEST_CASE(events_are_deterministic, *utf::label("DD28") * utf::label(
     BOOST_TEST((record() == record()));
 }
 
+// Oracle: the analytic schedule, sensor and visitor swapped: a sensor disc on a moving body
+// crossing a static box overlaps it from the first step its centre is past -(w + r) to the
+// first step past w + r, and the box, being static, is seen like any other shape.
+BOOST_AUTO_TEST_CASE(a_moving_sensor_sees_a_static_shape, *utf::label("DD28")) {
+    World world{WorldDef{.gravity = {0.0, 0.0}, .enable_sleep = false}};
+    BodyDef wd;
+    wd.type = BodyType::static_body;
+    const BodyId wall = world.create_body(wd);
+    const ShapeId box = world.create_shape(wall, box_shape(2.0 * half_width, 2.0 * half_width));
+    const double x0 = -3.13, speed = 4.3;
+    BodyDef bd;
+    bd.position = {x0, 0.2};
+    bd.linear_velocity = {speed, 0.0};
+    const BodyId probe = world.create_body(bd);
+    ShapeDef s = circle_shape(radius);
+    s.is_sensor = true;
+    const ShapeId sensor = world.create_shape(probe, s);
+    int begin = -1, end = -1;
+    for (int k = 1; k <= 200; ++k) {
+        world.step(dt);
+        for (const SensorEvent& e : world.sensor_begin_events()) {
+            BOOST_TEST_REQUIRE(((e.sensor == sensor) && (e.visitor == box) && begin == -1));
+            begin = k;
+        }
+        for (const SensorEvent& e : world.sensor_end_events()) {
+            BOOST_TEST_REQUIRE(((e.sensor == sensor) && (e.visitor == box) && end == -1));
+            end = k;
+        }
+    }
+    for (const double edge : {-(half_width + radius), half_width + radius}) {
+        const double steps = (edge - x0) / (speed * dt); // unambiguous: not near a step's end
+        BOOST_TEST_REQUIRE(std::abs(steps - std::round(steps)) >= 0.05);
+    }
+    BOOST_TEST(begin == first_step_beyond(x0, speed, -(half_width + radius)));
+    BOOST_TEST(end == first_step_beyond(x0, speed, half_width + radius));
+    BOOST_TEST(world.contacts().empty());
+}
+
 BOOST_AUTO_TEST_SUITE_END()
