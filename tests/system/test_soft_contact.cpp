@@ -182,4 +182,38 @@ BOOST_AUTO_TEST_CASE(flat_landing_stops_both_corners_exactly, *utf::label("IM7")
     }
 }
 
+// Oracle: GD1 and T2. Thirty discs of different masses thrown together in empty space, with
+// friction and restitution: every contact impulse acts equally and oppositely on its two
+// bodies, so the total linear momentum stays what it was, to rounding, through a crowd of
+// simultaneous contacts (the solver's packs of manifolds that share no body).
+BOOST_AUTO_TEST_CASE(a_crowd_of_contacts_conserves_linear_momentum,
+                     *utf::label("IM7") * utf::label("GD1")) {
+    World world(WorldDef{.gravity = {0.0, 0.0}, .enable_sleep = false});
+    double scale = 0.0;
+    for (int i = 0; i < 30; ++i) {
+        BodyDef bd;
+        const double phi = 2.0 * std::numbers::pi * i / 30.0, r = 2.0 + 0.15 * (i % 4);
+        bd.position = {r * std::cos(phi), r * std::sin(phi)};
+        bd.linear_velocity = {-1.5 * std::cos(phi) + 0.1 * (i % 3), -1.5 * std::sin(phi)};
+        bd.angular_velocity = 0.2 * (i % 5) - 0.4;
+        const BodyId b = world.create_body(bd);
+        const Material mat{1.0 + 0.5 * (i % 3), 0.3, 0.4};
+        if (i % 2 == 0)
+            world.create_shape(b, circle_shape(0.3, mat));
+        else
+            world.create_shape(b, box_shape(0.5, 0.4, mat));
+        scale += world.mass(b) * 1.5;
+    }
+    const Vec2d p0 = world.linear_momentum();
+    std::size_t most_contacts = 0;
+    for (int k = 0; k < 120; ++k) {
+        world.step(1.0 / 60.0);
+        most_contacts = std::max(most_contacts, world.contacts().size());
+        const Vec2d p = world.linear_momentum();
+        BOOST_TEST_REQUIRE(std::abs(p.x - p0.x) < 1e-12 * scale, "step " << k);
+        BOOST_TEST_REQUIRE(std::abs(p.y - p0.y) < 1e-12 * scale, "step " << k);
+    }
+    BOOST_TEST(most_contacts >= 20u); // a crowd, not a few pairs
+}
+
 BOOST_AUTO_TEST_SUITE_END()
