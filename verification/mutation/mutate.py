@@ -6,17 +6,21 @@ Each mutant changes one spot of src/tamias2d/model/ or src/tamias2d/dynamics/: a
 operator swapped (+ -, * /), a comparison turned (< <=, > >=, == !=), a numeric constant
 changed (c -> 2c, 0 -> 1), or an assignment statement removed. The mutant is built in a
 scratch copy of the repository with its own build directory (never the caller's), and the
-CTest entries labelled with the SRS items that the mutated file, or a library header it includes,
-names in its \\srs tags are run. A mutant is killed when they fail (or time out), survives when they pass, and is
-stillborn when it does not compile (not counted in the score).
+CTest entries labelled with the SRS items that the mutated file, or a library header it
+includes, names in its \\srs tags are run (a file that reaches no tag: those of the files that
+include it). A mutant is killed when they fail (or time out), survives when they pass, and is
+stillborn when it does not compile (not counted in the score). A survivor is judged in
+survivors.json ("equivalent", argued, or "gap"); score = killed / (killed + survivors not
+judged equivalent).
 
     /usr/bin/python3 verification/mutation/mutate.py OUT_DIR [--sample N] [--seed S]
-        [--minutes M] [--all] [--scratch DIR] [--list]
+        [--minutes M] [--all] [--ids I,J,...] [--scratch DIR] [--list]
 
-By default a seeded sample of N = 20 mutants within M = 30 minutes; --all takes every mutant
-(hours on two cores). Writes OUT_DIR/mutation.json in the verification schema
-(docs/traceability.md): the score, one row per mutant, the survivors in full. The report
-shows it; it is not one of the expected programs (a run on request).
+By default a seeded sample of N = 20 mutants judged within M = 30 minutes (after the scratch
+build); --all takes every mutant (hours on two cores). Writes OUT_DIR/mutation.json in the
+verification schema (docs/traceability.md): the score, one row per mutant, every survivor with
+its judgement. The report shows it; the main job runs a time-boxed sample (it is an optional
+program of traceability/config.yaml: absent, the report says "not run").
 """
 import argparse
 import datetime
@@ -383,6 +387,7 @@ def main(argv=None):
     ap.add_argument("--test-timeout", type=int, default=300)
     ap.add_argument("--list", action="store_true", help="print the mutants and stop")
     ap.add_argument("--survivors", default=SURVIVORS, help="the judged survivors (JSON)")
+    ap.add_argument("--ids", help="judge these mutants (ids of --list, comma-separated) only")
     a = ap.parse_args(argv)
 
     muts = all_mutants(a.root)
@@ -395,7 +400,11 @@ def main(argv=None):
             pass
         return 0
     judgements = load_judgements(a.survivors)
-    chosen = muts if a.all else random.Random(a.seed).sample(muts, min(a.sample, len(muts)))
+    if a.ids:
+        by_id = {m["id"]: m for m in muts}
+        chosen = [by_id[int(x)] for x in a.ids.split(",") if x.strip()]
+    else:
+        chosen = muts if a.all else random.Random(a.seed).sample(muts, min(a.sample, len(muts)))
     # Within each run of WINDOW sampled mutants, those of one file one after another: restoring
     # the file and building its next mutant are then one rebuild, not two, while a time box
     # still cuts the sample at a window's end, not after a few whole files.
@@ -450,7 +459,7 @@ def main(argv=None):
                f"{sum(r['verdict'] == 'stillborn' for r in results)} did not compile, "
                f"{sum(r['verdict'] == 'no tests' for r in results)} had no labelled test; "
                f"{len(results)} of {len(chosen)} chosen from {len(muts)} "
-               f"({'all' if a.all else f'seed {a.seed}, sample {a.sample}, {a.minutes:g} min box'}); "
+               f"({'all' if a.all else f'ids {a.ids}' if a.ids else f'seed {a.seed}, sample {a.sample}, {a.minutes:g} min box'}); "
                f"{mean:.0f} s per built mutant, scratch build {prep_secs:.0f} s")
     broken = sorted(n for n, ok in baseline.items() if not ok)
     if broken:
