@@ -399,7 +399,7 @@ def main(argv=None):
         except BrokenPipeError:  # piped into head
             pass
         return 0
-    judgements = load_judgements(a.survivors)
+    load_judgements(a.survivors)  # a malformed record stops the run before any build
     if a.ids:
         by_id = {m["id"]: m for m in muts}
         chosen = [by_id[int(x)] for x in a.ids.split(",") if x.strip()]
@@ -439,13 +439,16 @@ def main(argv=None):
         r = dict(m, verdict=verdict, labels=labels, tests=sorted(entries), seconds=round(secs, 1),
                  build_seconds=round(b_secs, 1), test_seconds=round(t_secs, 1),
                  log=log if verdict in ("survived", "stillborn") else "")
-        if verdict == "survived":
-            j = judgements.get(survivor_key(m))
-            r["judged"] = j["verdict"] if j else "not yet judged"
-            r["reason"] = j["reason"] if j else ""
         results.append(r)
         print(f"{verdict:10s} #{m['id']} {m['file']}:{m['line']} {m['op']} ({secs:.0f} s: "
               f"build {b_secs:.0f}, tests {t_secs:.0f})", flush=True)
+    # The record as it stands when the run ends (survivors may be judged while it runs).
+    judgements = load_judgements(a.survivors)
+    for r in results:
+        if r["verdict"] == "survived":
+            j = judgements.get(survivor_key(r))
+            r["judged"] = j["verdict"] if j else "not yet judged"
+            r["reason"] = j["reason"] if j else ""
     score, killed, equivalent, counted = score_of(results, judgements)
     survived = [r for r in results if r["verdict"] == "survived"]
     gaps = [r for r in survived if r["judged"] == "gap"]
