@@ -146,6 +146,27 @@ BOOST_AUTO_TEST_CASE(resting_on_the_lower_limit_the_reaction_is_the_weight,
     BOOST_TEST(std::abs(F.x) < 1e-9 * m * g);
 }
 
+// Oracle: T1 at rest, and Hooke's law for the spring's stiffness. A box hanging on a vertical
+// axis from a spring of frequency f (stiffness k = m (2 pi f)^2 for its mass), critically
+// damped: once settled, the spring alone holds it, so the joint's reaction is its weight,
+// (0, m g), and it hangs at x = -m g / k = -g / (2 pi f)^2.
+BOOST_AUTO_TEST_CASE(hanging_on_the_spring_the_reaction_is_the_weight,
+                     *utf::label("DD23") * utf::label("IM6")) {
+    const double f = 2.0;
+    Slider s({0.0, -g},
+             PrismaticJointDef{
+                 .axis = {0.0, 1.0}, .enable_spring = true, .hertz = f, .damping_ratio = 1.0});
+    const double m = s.world.mass(s.box), omega = 2.0 * std::numbers::pi * f;
+    for (int k = 0; k < 300; ++k)
+        s.world.step(1.0 / 60.0);
+    BOOST_TEST_REQUIRE(std::abs(s.world.velocity(s.box).y) < 1e-9); // settled
+    BOOST_TEST(s.world.joint_translation(s.joint) == -g / (omega * omega),
+               boost::test_tools::tolerance(1e-6));
+    const Vec2d F = s.world.joint_reaction_force(s.joint);
+    BOOST_TEST(F.y == m * g, boost::test_tools::tolerance(1e-6));
+    BOOST_TEST(std::abs(F.x) < 1e-9 * m * g);
+}
+
 /// The spring slider's largest deviation over 2 s from the oscillator, at the given rate.
 double spring_error(int steps_per_second, const DampedOscillator& osc, double v0) {
     Slider s({0.0, 0.0},
