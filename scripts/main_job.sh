@@ -6,6 +6,7 @@
 #                   its --quick form, which keeps the main job near 10 minutes
 #   TAMIAS_MUTATION_MINUTES=M  judges mutants for M minutes (default 8; docs/verification.md)
 #   TAMIAS_MUTATION=all        judges every mutant instead (hours); TAMIAS_MUTATION=0 skips it
+#   TAMIAS_MUTATION_SEED=S     picks the sample (default 1)
 set -uo pipefail
 cd "$(dirname "$0")/.."
 t0=$(date +%s)
@@ -60,11 +61,11 @@ phase "fuzzing: the libFuzzer targets, 60 s each (reports/data/fuzz.json)"
 phase "mutation testing (verification/mutation/mutate.py)"
 # A seeded sample judged for TAMIAS_MUTATION_MINUTES (default 8) after the scratch build (in
 # /tmp, outside the checkout; minutes when new, seconds when it outlives the last run);
-# TAMIAS_MUTATION=all judges every mutant (hours), TAMIAS_MUTATION=0 skips it (the report then
-# says "not run").
+# TAMIAS_MUTATION=all judges every mutant (hours), TAMIAS_MUTATION=0 (or minutes 0) skips it
+# (the report then says "not run").
 mutation=${TAMIAS_MUTATION:-sample}
-if [ "$mutation" = 0 ]; then
-    echo "   skipped (TAMIAS_MUTATION=0)"
+if [ "$mutation" = 0 ] || { [ "$mutation" != all ] && [ "${TAMIAS_MUTATION_MINUTES:-8}" = 0 ]; }; then
+    echo "   skipped (TAMIAS_MUTATION=0 or TAMIAS_MUTATION_MINUTES=0)"
 else
     if [ "$mutation" = all ]; then
         margs=(--all)
