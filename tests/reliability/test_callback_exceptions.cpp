@@ -21,6 +21,7 @@
 #include "reliability/reliability_support.hpp"
 #include "tamias2d/world.hpp"
 
+namespace utf = boost::unit_test;
 using namespace tamias2d;
 
 namespace {
@@ -86,17 +87,19 @@ void compare_with_twin(long first, long last) {
 
 BOOST_AUTO_TEST_SUITE(callback_exceptions)
 
-BOOST_AUTO_TEST_CASE(a_throwing_filter_refuses_its_pair_and_the_step_completes) {
+BOOST_AUTO_TEST_CASE(a_throwing_filter_refuses_its_pair_and_the_step_completes,
+                     *utf::label("reliability")) {
     compare_with_twin(3, 3);   // one question, in the first step's new pairs
     compare_with_twin(40, 40); // one question later on
 }
 
-BOOST_AUTO_TEST_CASE(a_filter_throwing_on_every_question_for_a_while_still_gives_whole_steps) {
+BOOST_AUTO_TEST_CASE(a_filter_throwing_on_every_question_for_a_while_still_gives_whole_steps,
+                     *utf::label("reliability")) {
     compare_with_twin(1, 200); // the first steps, sensor questions included
     compare_with_twin(30, 1000000);
 }
 
-BOOST_AUTO_TEST_CASE(a_world_after_a_filter_exception_stays_usable) {
+BOOST_AUTO_TEST_CASE(a_world_after_a_filter_exception_stays_usable, *utf::label("reliability")) {
     World w = world_with_sensor();
     w.set_custom_filter(Faulty{true, 1, 5});
     BOOST_CHECK_THROW(w.step(1.0 / 60.0), std::runtime_error);
@@ -114,7 +117,8 @@ BOOST_AUTO_TEST_CASE(a_world_after_a_filter_exception_stays_usable) {
                                          w.velocity(id).y));
 }
 
-BOOST_AUTO_TEST_CASE(set_filter_with_a_throwing_filter_changes_nothing) {
+BOOST_AUTO_TEST_CASE(set_filter_with_a_throwing_filter_changes_nothing,
+                     *utf::label("reliability")) {
     World w = reliability::busy_world(), twin = reliability::busy_world();
     for (int s = 0; s < 60; ++s) {
         w.step(1.0 / 60.0);
@@ -138,7 +142,8 @@ BOOST_AUTO_TEST_CASE(set_filter_with_a_throwing_filter_changes_nothing) {
     }
 }
 
-BOOST_AUTO_TEST_CASE(a_throwing_load_function_leaves_the_world_as_before_the_step) {
+BOOST_AUTO_TEST_CASE(a_throwing_load_function_leaves_the_world_as_before_the_step,
+                     *utf::label("reliability")) {
     World w = reliability::busy_world(), twin = reliability::busy_world();
     const BodyId pushed = w.bodies().back();
     auto calls = std::make_shared<int>(0);

@@ -8,6 +8,7 @@
 
 #include "tamias2d/world.hpp"
 
+namespace utf = boost::unit_test;
 using namespace tamias2d;
 
 namespace {
@@ -24,7 +25,8 @@ BodyId add_ball(World& w, Vec2d at) {
 
 BOOST_AUTO_TEST_SUITE(handle_rules)
 
-BOOST_AUTO_TEST_CASE(a_destroyed_body_s_handle_stays_invalid_when_its_slot_is_reused) {
+BOOST_AUTO_TEST_CASE(a_destroyed_body_s_handle_stays_invalid_when_its_slot_is_reused,
+                     *utf::label("reliability")) {
     World w;
     const BodyId old = add_ball(w, {0.0, 0.0});
     const ShapeId old_shape = w.shapes(old).front();
@@ -39,7 +41,8 @@ BOOST_AUTO_TEST_CASE(a_destroyed_body_s_handle_stays_invalid_when_its_slot_is_re
     BOOST_TEST(w.position(reuse).x == 5.0);
 }
 
-BOOST_AUTO_TEST_CASE(a_destroyed_body_takes_its_joints_handles_with_it) {
+BOOST_AUTO_TEST_CASE(a_destroyed_body_takes_its_joints_handles_with_it,
+                     *utf::label("reliability")) {
     World w;
     const BodyId a = add_ball(w, {0.0, 0.0}), b = add_ball(w, {2.0, 0.0});
     RevoluteJointDef pin;
@@ -54,7 +57,8 @@ BOOST_AUTO_TEST_CASE(a_destroyed_body_takes_its_joints_handles_with_it) {
     BOOST_TEST(w.joint_count() == 0u);
 }
 
-BOOST_AUTO_TEST_CASE(handles_follow_a_moved_world_and_the_moved_from_world_can_be_reused) {
+BOOST_AUTO_TEST_CASE(handles_follow_a_moved_world_and_the_moved_from_world_can_be_reused,
+                     *utf::label("reliability")) {
     World w;
     const BodyId b = add_ball(w, {1.0, 2.0});
     World moved = std::move(w);
@@ -65,7 +69,8 @@ BOOST_AUTO_TEST_CASE(handles_follow_a_moved_world_and_the_moved_from_world_can_b
     BOOST_CHECK_THROW(w.position(b), InvalidHandle);
 }
 
-BOOST_AUTO_TEST_CASE(a_foreign_handle_is_not_detected_it_names_the_same_slot) {
+BOOST_AUTO_TEST_CASE(a_foreign_handle_is_not_detected_it_names_the_same_slot,
+                     *utf::label("reliability")) {
     // Handles carry no world: the first body of every world is the same handle.
     World w1, w2;
     const BodyId in_w1 = add_ball(w1, {1.0, 0.0});

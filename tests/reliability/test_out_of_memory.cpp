@@ -18,6 +18,7 @@
 #include "reliability/reliability_support.hpp"
 #include "tamias2d/world.hpp"
 
+namespace utf = boost::unit_test;
 using namespace tamias2d;
 
 namespace {
@@ -95,7 +96,8 @@ std::vector<int> allocating_steps() {
 
 BOOST_AUTO_TEST_SUITE(out_of_memory)
 
-BOOST_AUTO_TEST_CASE(bad_alloc_in_any_allocation_of_a_step_leaves_a_valid_world) {
+BOOST_AUTO_TEST_CASE(bad_alloc_in_any_allocation_of_a_step_leaves_a_valid_world,
+                     *utf::label("reliability")) {
     const std::vector<int> steps = allocating_steps();
     BOOST_TEST_REQUIRE(steps.size() >= 2u);
     for (const int before : steps) {

@@ -18,6 +18,7 @@
 #include "tamias2d/memory.hpp"
 #include "tamias2d/world.hpp"
 
+namespace utf = boost::unit_test;
 using namespace tamias2d;
 
 namespace {
@@ -47,7 +48,8 @@ std::vector<std::uint64_t> run(const Scene& s) {
 
 BOOST_AUTO_TEST_SUITE(threads)
 
-BOOST_AUTO_TEST_CASE(two_worlds_in_two_threads_give_the_bits_they_give_alone) {
+BOOST_AUTO_TEST_CASE(two_worlds_in_two_threads_give_the_bits_they_give_alone,
+                     *utf::label("reliability")) {
     const std::vector<std::uint64_t> alone[2] = {run(scenes[0]), run(scenes[1])};
     std::vector<std::uint64_t> together[2];
     std::atomic<bool> done{false};
@@ -74,7 +76,8 @@ BOOST_AUTO_TEST_CASE(two_worlds_in_two_threads_give_the_bits_they_give_alone) {
     }
 }
 
-BOOST_AUTO_TEST_CASE(a_world_handed_to_another_thread_goes_on_as_before) {
+BOOST_AUTO_TEST_CASE(a_world_handed_to_another_thread_goes_on_as_before,
+                     *utf::label("reliability")) {
     World here = reliability::busy_world(), twin = reliability::busy_world();
     for (int i = 0; i < 30; ++i) {
         here.step(1.0 / 60.0);

@@ -19,6 +19,7 @@
 #include "tamias2d/memory.hpp"
 #include "tamias2d/world.hpp"
 
+namespace utf = boost::unit_test;
 using namespace tamias2d;
 
 namespace {
@@ -48,7 +49,7 @@ void live_and_die() {
 
 BOOST_AUTO_TEST_SUITE(churn)
 
-BOOST_AUTO_TEST_CASE(hundred_thousand_worlds_leave_memory_flat) {
+BOOST_AUTO_TEST_CASE(hundred_thousand_worlds_leave_memory_flat, *utf::label("reliability")) {
     constexpr int warm_up = 1000;
     const int worlds = reliability::memory_sanitizer_build ? 10000 : 100000;
     const std::size_t blocks_before = large_array_stats().mapped_bytes;
