@@ -29,6 +29,12 @@ namespace u = tamias2d::units;
 
 namespace {
 
+/// How messages name body i: "body[3]", or "body[3 'slider']" when it has a name.
+std::string body_label(const BodyStore& bodies, std::uint32_t i) {
+    const std::string& name = bodies.settings[i].name;
+    return "body[" + std::to_string(i) + (name.empty() ? "" : " '" + name + "'") + "]";
+}
+
 /// The input field that placed each anchor of a joint of this type (for DCX_joint's lever).
 std::pair<const char*, const char*> anchor_fields(JointType type) {
     switch (type) {
@@ -54,9 +60,8 @@ void validate_levers(const BodyStore& bodies, const Joint& j, const std::string&
         const Vec2d r = (side_a ? j.local_anchor_a : j.local_anchor_b) - b.local_center;
         if (joint_lever_fits(r, b.inv_mass, b.inv_inertia))
             continue; // the field's name is made only for the message
-        const std::string& name = bodies.settings[i].name;
-        validate_joint_lever(at + (side_a ? field_a : field_b) + " (on body[" + std::to_string(i) +
-                                 (name.empty() ? "" : " '" + name + "'") + "])",
+        validate_joint_lever(at + (side_a ? field_a : field_b) + " (on " + body_label(bodies, i) +
+                                 ")",
                              r, b.inv_mass, b.inv_inertia);
     }
 }
@@ -79,8 +84,9 @@ struct World::Impl {
     std::vector<Load> loads;     ///< this step's load-function values (empty when none has one)
     double inv_h = 0.0;          ///< s^-1, the last step's substep rate (reaction forces)
     std::vector<JointId> broken; ///< joints the last step broke
-    /// With joints, what a step changes before its solve is known to be bounded: the joints
-    /// (their impulses, their bodies' rotations) and the sleep states the islands woke.
+    /// With joints, what a step changes before its solve and a refused step must give back:
+    /// the joints (their impulses, their bodies' rotations), the sleep states the islands woke
+    /// and the substep rate the reaction forces are read with.
     std::vector<Joint> joints_before;
     std::vector<SleepState> sleep_before;
     double inv_h_before = 0.0;
@@ -96,9 +102,7 @@ struct World::Impl {
             std::copy(sleep_before.begin(), sleep_before.end(), bodies.sleep_states.begin());
         contacts.begin_events.clear();
         contacts.end_events.clear();
-        const std::string& name = bodies.settings[i].name;
-        std::string field =
-            "body[" + std::to_string(i) + (name.empty() ? "" : " '" + name + "'") + "].velocity";
+        const std::string field = body_label(bodies, i) + ".velocity";
         throw SolverDivergence(
             field, field + ": turned non-finite in the joints' solve; the step is refused, "
                            "bodies, joints and clock as they were");
@@ -151,9 +155,7 @@ struct World::Impl {
             if (std::abs(b.center.x) <= m && std::abs(b.center.y) <= m && std::abs(b.v.x) <= m &&
                 std::abs(b.v.y) <= m && std::abs(b.w) <= m && std::abs(b.angle) <= m)
                 continue;
-            const std::string& name = bodies.settings[i].name;
-            const std::string at =
-                "body[" + std::to_string(i) + (name.empty() ? "" : " '" + name + "'") + "].";
+            const std::string at = body_label(bodies, i) + ".";
             require_within(at + "position", b.center, m, "m");
             require_within(at + "velocity", b.v, m, "m s^-1");
             require_within(at + "angular_velocity", b.w, m, "rad s^-1");

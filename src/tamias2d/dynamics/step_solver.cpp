@@ -261,7 +261,7 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
     // A joint's solve can diverge where no input rule foresaw it (conflicting joints on light
     // bodies): checked before any impulse is stored, so that the world can refuse the step.
     // Contacts alone have not been seen to diverge, and worlds without joints skip the pass.
-    diverged_ = 0xffffffffu;
+    diverged_ = null_index;
     if (!jointed_.empty()) {
         for (std::size_t k = 1; k < nb; ++k) {
             const SolverBody& sb = solver_bodies_[k];

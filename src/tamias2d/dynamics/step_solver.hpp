@@ -15,6 +15,7 @@
 #include "tamias2d/dynamics/joint.hpp"
 #include "tamias2d/dynamics/solver_body.hpp"
 #include "tamias2d/dynamics/wide_contact_solver.hpp"
+#include "tamias2d/handles.hpp"
 #include "tamias2d/memory/large_array.hpp"
 #include "tamias2d/world_def.hpp"
 
@@ -61,7 +62,7 @@ class StepSolver {
     std::vector<double> linear_decay_, angular_decay_; ///< IM5's factors per solver body
     bool any_damped_ = false; ///< this step: some solver body is damped (else no factors)
     std::vector<std::uint32_t> solver_index_; ///< per body: its SolverBody (0: immovable)
-    std::uint32_t diverged_ = 0xffffffffu;    ///< see diverged()
+    std::uint32_t diverged_ = null_index;     ///< see diverged()
     std::vector<GraphEdge> edges_;            ///< the touching manifolds, creation order
     std::vector<std::uint32_t> edge_contact_; ///< per edge: its contact
     std::vector<std::uint32_t> edge_slot_;    ///< per edge: its copy in `bouncing_`, or no_slot
