@@ -9,7 +9,10 @@ scratch copy of the repository with its own build directory (never the caller's)
 CTest entries labelled with the SRS items that the mutated file, or a library header it
 includes, names in its \\srs tags are run (a file that reaches no tag: those of the files that
 include it). A mutant is killed when they fail (or time out), survives when they pass, and is
-stillborn when it does not compile (not counted in the score). A survivor is judged in
+stillborn when it does not compile, not built when its objects come out bit for bit as the
+unmutated ones (a line of a #if branch this build skips): neither is counted in the score.
+The sample is ranked by a seeded hash of each mutant's file, line text and operator, so an
+edit elsewhere leaves it, and the judgements of its survivors, in place. A survivor is judged in
 survivors.json ("equivalent", argued, or "gap"); score = killed / (killed + survivors not
 judged equivalent).
 
@@ -24,9 +27,9 @@ program of traceability/config.yaml: absent, the report says "not run").
 """
 import argparse
 import datetime
+import hashlib
 import json
 import os
-import random
 import re
 import shutil
 import subprocess
@@ -127,6 +130,21 @@ def all_mutants(root):
     for i, m in enumerate(muts):
         m["id"] = i
     return muts
+
+
+def sample_of(muts, n, seed):
+    """n mutants chosen by seed, stable under edits elsewhere: each mutant is ranked by a hash
+    of the seed, its survivor key and which repeat of that key in its file it is (not its id,
+    which shifts whenever a target file changes), so a change to one line moves only that
+    line's mutants in or out of the sample; the rest keep their ranks and judgements."""
+    seen, ranked = {}, []
+    for m in muts:
+        key = survivor_key(m)
+        nth = seen.get(key, 0)
+        seen[key] = nth + 1
+        text = "\x1f".join((str(seed), *key, str(nth)))
+        ranked.append((hashlib.sha256(text.encode("utf-8")).hexdigest(), m["id"], m))
+    return [m for _, _, m in sorted(ranked, key=lambda r: r[:2])[:n]]
 
 
 INCLUDE = re.compile(r'^\s*#\s*include\s+"(tamias2d/[^"]+)"', re.M)
@@ -242,7 +260,22 @@ def prepare_scratch(root, scratch):
     rc, out = run(["nice", "-n", "5", "cmake", "--build", build, "-j2", "--target", *targets])
     if rc != 0:
         raise SystemExit("scratch build of the unmutated sources failed:\n" + out[-3000:])
-    return src, build, marker, catalogue
+    return src, build, marker, catalogue, object_digests(build)
+
+
+def object_digests(build, since_ns=None):
+    """{object file: SHA-256} of the build's objects (those written at or after since_ns only,
+    when given)."""
+    out = {}
+    for dirpath, _, files in os.walk(build):
+        for f in files:
+            if f.endswith(".o"):
+                path = os.path.join(dirpath, f)
+                if since_ns is not None and os.stat(path).st_mtime_ns < since_ns:
+                    continue
+                with open(path, "rb") as fh:
+                    out[path] = hashlib.sha256(fh.read()).hexdigest()
+    return out
 
 
 def ctest_entries(catalogue, labels):
@@ -259,9 +292,12 @@ def ctest_entries(catalogue, labels):
     return entries
 
 
-def judge(m, src, build, entries, test_timeout, marker):
+def judge(m, src, build, entries, test_timeout, marker, objects):
     """(verdict, log, build seconds, test seconds) of one mutant, run against entries
-    ({CTest name: target}); the scratch source is restored afterwards."""
+    ({CTest name: target}); the scratch source is restored afterwards. "not built": every
+    object the mutant's build rewrote is bit for bit the unmutated one (objects: their
+    digests), so the mutated line is not compiled here (a branch of #if this build does not
+    take); no test can tell it apart and it is not counted."""
     if not entries:
         return "no tests", "", 0.0, 0.0
     path = os.path.join(src, m["file"])
@@ -277,10 +313,14 @@ def judge(m, src, build, entries, test_timeout, marker):
             fh.write("\n".join(lines))
         targets = sorted(set(entries.values()))
         t0 = time.monotonic()
+        since = time.time_ns()
         rc, out = run(["nice", "-n", "5", "cmake", "--build", build, "-j2", "--target", *targets])
         t1 = time.monotonic()
         if rc != 0:
             return "stillborn", out[-600:], t1 - t0, 0.0
+        rebuilt = object_digests(build, since)
+        if all(objects.get(path) == digest for path, digest in rebuilt.items()):
+            return "not built", f"{len(rebuilt)} objects rebuilt, each as unmutated", t1 - t0, 0.0
         regex = "^(" + "|".join(re.escape(n) for n in sorted(entries)) + ")$"
         rc, out = run(["ctest", "--test-dir", build, "-R", regex, "--stop-on-failure", "-j2",
                        "--timeout", str(test_timeout)], timeout=test_timeout * len(entries) + 60)
@@ -404,7 +444,7 @@ def main(argv=None):
         by_id = {m["id"]: m for m in muts}
         chosen = [by_id[int(x)] for x in a.ids.split(",") if x.strip()]
     else:
-        chosen = muts if a.all else random.Random(a.seed).sample(muts, min(a.sample, len(muts)))
+        chosen = muts if a.all else sample_of(muts, a.sample, a.seed)
     # Within each run of WINDOW sampled mutants, those of one file one after another: restoring
     # the file and building its next mutant are then one rebuild, not two, while a time box
     # still cuts the sample at a window's end, not after a few whole files.
@@ -413,7 +453,7 @@ def main(argv=None):
     commit, dirty = commit_of(a.root)
     started = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ")
     t_prep = time.monotonic()
-    src, build, marker, catalogue = prepare_scratch(a.root, a.scratch)
+    src, build, marker, catalogue, objects = prepare_scratch(a.root, a.scratch)
     prep_secs = time.monotonic() - t_prep
     # The box is for judging mutants; the scratch build before it is reported apart (minutes
     # when the scratch is new, seconds when it outlives a run).
@@ -427,18 +467,20 @@ def main(argv=None):
         entries = ctest_entries(catalogue, labels)
         t0 = time.monotonic()
         entries = {n: t for n, t in entries.items() if baseline.get(n, True)}
-        verdict, log, b_secs, t_secs = judge(m, src, build, entries, a.test_timeout, marker)
+        verdict, log, b_secs, t_secs = judge(m, src, build, entries, a.test_timeout, marker,
+                                                   objects)
         if verdict == "killed" and not passes_unmutated(failed_entries(log), build, entries,
                                                         baseline, a.test_timeout):
             # Killed by a test that fails without the mutant too: judged again without it.
             broken = sorted(n for n in entries if baseline.get(n) is False)
             print(f"   (fails unmutated, left out from now on: {', '.join(broken)})")
             entries = {n: t for n, t in entries.items() if baseline.get(n, True)}
-            verdict, log, b_secs, t_secs = judge(m, src, build, entries, a.test_timeout, marker)
+            verdict, log, b_secs, t_secs = judge(m, src, build, entries, a.test_timeout, marker,
+                                                   objects)
         secs = time.monotonic() - t0
         r = dict(m, verdict=verdict, labels=labels, tests=sorted(entries), seconds=round(secs, 1),
                  build_seconds=round(b_secs, 1), test_seconds=round(t_secs, 1),
-                 log=log if verdict in ("survived", "stillborn") else "")
+                 log=log if verdict in ("survived", "stillborn", "not built") else "")
         results.append(r)
         print(f"{verdict:10s} #{m['id']} {m['file']}:{m['line']} {m['op']} ({secs:.0f} s: "
               f"build {b_secs:.0f}, tests {t_secs:.0f})", flush=True)
@@ -453,13 +495,16 @@ def main(argv=None):
     survived = [r for r in results if r["verdict"] == "survived"]
     gaps = [r for r in survived if r["judged"] == "gap"]
     unjudged = [r for r in survived if r["judged"] == "not yet judged"]
-    judged_runs = [r for r in results if r["verdict"] in ("killed", "survived", "stillborn")]
+    judged_runs = [r for r in results
+                   if r["verdict"] in ("killed", "survived", "stillborn", "not built")]
     mean = (sum(r["seconds"] for r in judged_runs) / len(judged_runs)) if judged_runs else 0.0
     finished = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ")
     details = (f"{killed} of {counted} non-equivalent compiled mutants killed "
                f"({100 * score:.0f} %); {len(survived)} survived ({equivalent} judged equivalent, "
                f"{len(gaps)} judged gaps, {len(unjudged)} not yet judged), "
                f"{sum(r['verdict'] == 'stillborn' for r in results)} did not compile, "
+               f"{sum(r['verdict'] == 'not built' for r in results)} compiled to unchanged "
+               f"objects, "
                f"{sum(r['verdict'] == 'no tests' for r in results)} had no labelled test; "
                f"{len(results)} of {len(chosen)} chosen from {len(muts)} "
                f"({'all' if a.all else f'ids {a.ids}' if a.ids else f'seed {a.seed}, sample {a.sample}, {a.minutes:g} min box'}); "

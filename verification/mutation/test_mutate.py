@@ -68,6 +68,33 @@ class Mutants(unittest.TestCase):
             self.assertEqual(mutate.labels_of(root, "src/tamias2d/dynamics/solver.cpp"), ["IM7"])
 
 
+class Sampling(unittest.TestCase):
+    """Oracle: the sampling rule's promise, checked on made-up files: an edit to one line
+    changes the sample only by that line's mutants."""
+
+    def test_an_edit_elsewhere_leaves_the_sample(self):
+        lines = [f"    x{k} = a{k} + b{k} * c{k};" for k in range(40)]
+        before = mutate.mutants_of("f.cpp", "\n".join(lines))
+        lines[7] = "    y = p - q;"
+        after = mutate.mutants_of("f.cpp", "\n".join(["    // a new first line"] + lines))
+        for muts in (before, after):
+            for i, m in enumerate(muts):
+                m["id"] = i
+        key = lambda m: (m["before"].strip(), m["op"])
+        edited = {key(m) for m in before if "x7 " in m["before"]}
+        edited |= {key(m) for m in after if "y = " in m["before"]}
+        for n in (5, 20, 60):
+            a = {key(m) for m in mutate.sample_of(before, n, 3)} - edited
+            b = {key(m) for m in mutate.sample_of(after, n, 3)} - edited
+            with self.subTest(n=n):
+                # The unedited lines' mutants rank as before: one sample holds the other's
+                # up to the places the edited line's mutants take or free.
+                self.assertLessEqual(len(a ^ b), 2 * 3)
+        self.assertNotEqual({key(m) for m in mutate.sample_of(before, 20, 3)},
+                            {key(m) for m in mutate.sample_of(before, 20, 4)})
+        self.assertEqual(mutate.sample_of(before, 20, 3), mutate.sample_of(before, 20, 3))
+
+
 class Scoring(unittest.TestCase):
     """Oracle: the scoring rule counted by hand on a made-up run."""
 
