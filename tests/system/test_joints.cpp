@@ -486,17 +486,98 @@ BOOST_AUTO_TEST_CASE(revolute_limits_hold_the_angle,
     }
 }
 
-// Not an SRS check: a jointed pair's shapes do not collide unless asked (collide_connected).
-BOOST_AUTO_TEST_CASE(connected_bodies_collide_only_when_asked) {
+// Oracle: DD27's rule, "bodies a joint keeps apart never collide": two overlapping boxes touch
+// until a joint without collide_connected joins them, then never; with collide_connected they
+// still do. A second overlapping pair, joined by nothing, keeps its contact throughout (the
+// joint removes its own pair's contacts only, wherever they sit in the contact list).
+BOOST_AUTO_TEST_CASE(connected_bodies_collide_only_when_asked, *utf::label("DD27")) {
     for (const bool collide : {false, true}) {
-        World world(WorldDef{.gravity = {0.0, 0.0}});
+        for (const bool pair_first : {false, true}) {
+            World world(WorldDef{.gravity = {0.0, 0.0}});
+            BodyId a{}, b{}, c{}, d{};
+            const auto add_pair = [&] {
+                a = add_box(world, {0.0, 0.0}, {}, 1.0, 1.0, 1.0);
+                b = add_box(world, {0.5, 0.0}, {}, 1.0, 1.0, 1.0); // overlapping a
+            };
+            if (pair_first)
+                add_pair();
+            c = add_box(world, {10.0, 0.0}, {}, 1.0, 1.0, 1.0);
+            d = add_box(world, {10.5, 0.0}, {}, 1.0, 1.0, 1.0); // overlapping c
+            if (!pair_first)
+                add_pair();
+            world.step(1.0 / 60.0);
+            BOOST_TEST_REQUIRE(world.contacts().size() == 2u);
+            world.create_joint(RevoluteJointDef{
+                .body_a = a, .body_b = b, .anchor = {0.25, 0.0}, .collide_connected = collide});
+            for (int k = 0; k < 3; ++k) {
+                world.step(1.0 / 60.0);
+                bool ab = false, cd = false;
+                for (const ContactInfo& info : world.contacts()) {
+                    const auto joins = [&](BodyId x, BodyId y) {
+                        return (info.body_a == x && info.body_b == y) ||
+                               (info.body_a == y && info.body_b == x);
+                    };
+                    ab = ab || joins(a, b);
+                    cd = cd || joins(c, d);
+                }
+                BOOST_TEST(ab == collide);
+                BOOST_TEST(cd);
+                BOOST_TEST(world.contacts().size() == (collide ? 2u : 1u));
+            }
+        }
+    }
+}
+
+// Oracle: Newton's first law (TM1 with no force) and IM6's rows at zero error: two bodies at
+// rest, joined where they are, with no gravity or load, have no joint error and no relative
+// speed, so every row's impulse is 0 and nothing moves, bit for bit: velocities stay exactly 0,
+// poses exactly as created, and the reported reaction exactly 0. A joint's rows start from no
+// impulse (a new joint has nothing to warm-start).
+BOOST_AUTO_TEST_CASE(joints_at_rest_without_load_stay_exactly_at_rest, *utf::label("IM6")) {
+    for (int kind = 0; kind < 5; ++kind) {
+        World world(WorldDef{.gravity = {0.0, 0.0}, .enable_sleep = false});
         const BodyId a = add_box(world, {0.0, 0.0}, {}, 1.0, 1.0, 1.0);
-        const BodyId b = add_box(world, {0.5, 0.0}, {}, 1.0, 1.0, 1.0); // overlapping
-        world.step(1.0 / 60.0);
-        world.create_joint(RevoluteJointDef{
-            .body_a = a, .body_b = b, .anchor = {0.25, 0.0}, .collide_connected = collide});
-        world.step(1.0 / 60.0);
-        BOOST_TEST(world.contacts().size() == (collide ? 1u : 0u));
+        const BodyId b = add_box(world, {2.0, 0.0}, {}, 0.5, 0.5, 3.0);
+        const Vec2d mid{1.0, 0.0};
+        JointId j{};
+        switch (kind) {
+        case 0:
+            j = world.create_joint(WeldJointDef{.body_a = a, .body_b = b, .anchor = mid});
+            break;
+        case 1:
+            j = world.create_joint(WeldJointDef{.body_a = a,
+                                                .body_b = b,
+                                                .anchor = mid,
+                                                .angular_hertz = 4.0,
+                                                .angular_damping_ratio = 0.5});
+            break;
+        case 2:
+            j = world.create_joint(PrismaticJointDef{.body_a = a, .body_b = b, .anchor = mid});
+            break;
+        case 3:
+            j = world.create_joint(MotorJointDef{.body_a = a,
+                                                 .body_b = b,
+                                                 .linear_offset = {2.0, 0.0},
+                                                 .max_force = 50.0,
+                                                 .max_torque = 50.0});
+            break;
+        default:
+            j = world.create_joint(RevoluteJointDef{.body_a = a, .body_b = b, .anchor = mid});
+        }
+        for (int k = 0; k < 30; ++k) {
+            world.step(1.0 / 60.0);
+            for (const BodyId body : {a, b}) {
+                BOOST_TEST(world.velocity(body).x == 0.0);
+                BOOST_TEST(world.velocity(body).y == 0.0);
+                BOOST_TEST(world.angular_velocity(body) == 0.0);
+                BOOST_TEST(world.orientation(body) == 0.0);
+            }
+            BOOST_TEST(world.position(a).x == 0.0);
+            BOOST_TEST(world.position(b).x == 2.0);
+            BOOST_TEST(world.position(b).y == 0.0);
+            BOOST_TEST(world.joint_reaction_torque(j) == 0.0);
+            BOOST_TEST(world.joint_reaction_force(j).x == 0.0);
+        }
     }
 }
 
