@@ -427,6 +427,9 @@ void run_sequence(std::uint64_t seed, Tally& tally) {
 
 BOOST_AUTO_TEST_SUITE(fuzz)
 
+// Oracle: R4's promise as the user guide states it (this file's head): a call outside the data
+// constraints is refused with a named error and leaves state_hash() unchanged; an accepted one
+// leaves every state finite.
 BOOST_AUTO_TEST_CASE(random_api_sequences_keep_the_promises, *utf::label("R4")) {
     const long n = iterations("TAMIAS_FUZZ_API_ITERATIONS", default_iterations);
     const std::uint64_t first = base_seed(20261000);

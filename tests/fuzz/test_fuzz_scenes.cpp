@@ -283,6 +283,9 @@ void run_one(std::uint64_t seed, const std::vector<std::string>& corpus, Tally& 
 
 BOOST_AUTO_TEST_SUITE(fuzz)
 
+// Oracle: R4's promise as the user guide states it (this file's head): a scene outside the
+// data constraints or the schema is refused with a named error; an accepted one steps to finite
+// states and loads again from its written form.
 BOOST_AUTO_TEST_CASE(mutated_scenes_keep_the_promises, *utf::label("R4")) {
     const std::vector<std::string> corpus = example_texts();
     BOOST_TEST_REQUIRE(!corpus.empty());
