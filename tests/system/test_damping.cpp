@@ -68,6 +68,44 @@ BOOST_AUTO_TEST_CASE(free_body_follows_the_stated_decay_law,
     }
 }
 
+// Oracle: IM5 with c = 0 is IM1/IM2: an undamped body keeps its velocity exactly (no load) and
+// its position moves by v0 t, whichever bodies around it are damped. Undamped bodies created
+// before and after a damped one, in one world, each checked against v0 and p0 + v0 t; the damped
+// one against the decay law (as above).
+BOOST_AUTO_TEST_CASE(undamped_bodies_beside_damped_ones_keep_their_velocity,
+                     *utf::label("IM5") * utf::label("LC2")) {
+    World world(WorldDef{.gravity = {0.0, 0.0}});
+    const auto add = [&](Vec2d p, Vec2d v, double w, double c) {
+        BodyDef def;
+        def.position = p;
+        def.linear_velocity = v;
+        def.angular_velocity = w;
+        def.linear_damping = c;
+        def.angular_damping = c;
+        const BodyId id = world.create_body(def);
+        world.create_shape(id, box_shape(0.5, 0.25, Material{2.0, 0.0, 0.0}));
+        return id;
+    };
+    const Vec2d v0{3.0, -2.0};
+    const BodyId before = add({0.0, 0.0}, v0, 1.5, 0.0);
+    const BodyId damped = add({0.0, 10.0}, v0, 1.5, 0.7);
+    const BodyId after = add({0.0, 20.0}, v0, 1.5, 0.0);
+    const int substeps = world.settings().substeps;
+    const double fv = 1.0 / (1.0 + dt / substeps * 0.7);
+    for (int step = 1; step <= 60; ++step) {
+        world.step(dt);
+        for (const BodyId id : {before, after}) {
+            BOOST_TEST(world.velocity(id).x == v0.x);
+            BOOST_TEST(world.velocity(id).y == v0.y);
+            BOOST_TEST(world.angular_velocity(id) == 1.5);
+            BOOST_TEST(world.position(id).x == v0.x * step * dt,
+                       boost::test_tools::tolerance(1e-12));
+        }
+        BOOST_TEST(world.velocity(damped).x == v0.x * std::pow(fv, step * substeps),
+                   boost::test_tools::tolerance(1e-12));
+    }
+}
+
 // Oracle: the ODE dv/dt = -c v has v(t) = v_0 e^(-c t). The scheme is first order in h: the
 // error at t = 2 s is below t h c^2 |v_0| / 2 (backward Euler's global error for a linear
 // decay), and halves when the time step halves.

@@ -9,6 +9,8 @@
 
 namespace tamias2d {
 
+/// \srs{R1} A body handle names one body of the world's space, and only while that body lives:
+/// a destroyed body's handle, or one of a recycled slot's earlier generation, is not valid.
 Body& BodyStore::get(BodyId id) {
     if (id.index >= bodies.size() || !bodies[id.index].alive ||
         generation[id.index] != id.generation) {
@@ -23,6 +25,8 @@ bool BodyStore::is_valid(BodyId id) const {
            generation[id.index] == id.generation;
 }
 
+/// \srs{R2} A new body starts from the state its input gives: position, orientation,
+/// velocities, applied force and torque (a static body never moves, whatever it is given).
 std::uint32_t BodyStore::create(const BodyDef& def, bool sleeping) {
     std::uint32_t i;
     if (!free_slots.empty()) {
@@ -69,6 +73,8 @@ void BodyStore::destroy(std::uint32_t i) {
     free_slots.push_back(i);
 }
 
+/// \srs{R2} The body's mass and moment of inertia: its shapes' (or the input's, where given;
+/// an overridden mass scales the shapes' inertia with it).
 void BodyStore::update_mass(std::uint32_t i, ShapeStore& shapes) {
     Body& b = bodies[i];
     const BodySettings& set = settings[i];
