@@ -108,6 +108,24 @@ struct World::Impl {
                            "bodies, joints and clock as they were");
     }
 
+    /// Destroys joint i and wakes its bodies. A joint that kept its bodies from colliding
+    /// (DD27) no longer does: the shapes of one of its bodies (B, or A when B is static) are
+    /// touched, so that the broad phase reports their pairs again at the next step (at rest,
+    /// they would not be looked for again).
+    void unjoin(std::uint32_t i) {
+        const Joint& j = joints.joints[i];
+        bodies.wake(j.body_a);
+        bodies.wake(j.body_b);
+        if (!j.collide_connected) {
+            const std::uint32_t body =
+                bodies.bodies[j.body_b].type == BodyType::static_body ? j.body_a : j.body_b;
+            for (std::uint32_t s = bodies.bodies[body].first_shape; s != null_index;
+                 s = shapes.shapes[s].next)
+                shapes.broad_phase.touch_proxy(shapes.shapes[s].proxy);
+        }
+        joints.destroy(i);
+    }
+
     /// After the step: a joint whose reaction force exceeded its break force is destroyed.
     void break_joints() {
         for (std::uint32_t i = 0; i < joints.joints.size(); ++i) {
@@ -115,9 +133,7 @@ struct World::Impl {
             if (!j.alive || !(length(reaction_impulse(j)) * inv_h > j.break_force))
                 continue;
             broken.push_back(joints.id(i));
-            bodies.wake(j.body_a);
-            bodies.wake(j.body_b);
-            joints.destroy(i);
+            unjoin(i);
         }
     }
 
@@ -473,10 +489,8 @@ void World::set_joint_target(JointId id, Vec2d target) {
 
 void World::destroy_joint(JointId id) {
     Impl& w = *impl_;
-    const Joint& j = w.joints.get(id);
-    w.bodies.wake(j.body_a);
-    w.bodies.wake(j.body_b);
-    w.joints.destroy(id.index);
+    w.joints.get(id); // throws for a stale handle, before anything changes
+    w.unjoin(id.index);
 }
 
 bool World::is_valid(JointId id) const {

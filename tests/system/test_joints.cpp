@@ -530,6 +530,41 @@ BOOST_AUTO_TEST_CASE(connected_bodies_collide_only_when_asked, *utf::label("DD27
     }
 }
 
+// Oracle: DD27's rule read the other way: once no joint keeps two bodies apart, their shapes
+// collide. Two overlapping boxes at rest (no gravity), pinned without collide_connected, touch
+// again at the first step after the joint is destroyed; a box pinned to an overlapping static
+// box by a joint that breaks under its weight touches that box at the first step after.
+BOOST_AUTO_TEST_CASE(bodies_collide_again_once_their_joint_is_gone, *utf::label("DD27")) {
+    {
+        World world(WorldDef{.gravity = {0.0, 0.0}});
+        const BodyId a = add_box(world, {0.0, 0.0}, {}, 1.0, 1.0, 1.0);
+        const BodyId b = add_box(world, {0.5, 0.0}, {}, 1.0, 1.0, 1.0); // overlapping a
+        const JointId j =
+            world.create_joint(RevoluteJointDef{.body_a = a, .body_b = b, .anchor = {0.25, 0.0}});
+        for (int k = 0; k < 10; ++k)
+            world.step(1.0 / 60.0);
+        BOOST_TEST(world.contacts().empty());
+        world.destroy_joint(j);
+        world.step(1.0 / 60.0);
+        BOOST_TEST(world.contacts().size() == 1u);
+    }
+    {
+        World world(WorldDef{.gravity = {0.0, -9.81}});
+        BodyDef ground_def;
+        ground_def.type = BodyType::static_body;
+        const BodyId ground = world.create_body(ground_def);
+        world.create_shape(ground, box_shape(1.0, 1.0));
+        const BodyId b = add_box(world, {0.5, 0.0}, {}, 1.0, 1.0, 1.0); // overlapping it
+        world.create_joint(RevoluteJointDef{
+            .body_a = ground, .body_b = b, .anchor = {0.25, 0.0}, .break_force = 1.0});
+        world.step(1.0 / 60.0); // the pin carries m g = 9.81 N > 1 N: it breaks
+        BOOST_TEST_REQUIRE(world.broken_joints().size() == 1u);
+        BOOST_TEST(world.contacts().empty());
+        world.step(1.0 / 60.0);
+        BOOST_TEST(world.contacts().size() == 1u);
+    }
+}
+
 // Oracle: Newton's first law (TM1 with no force) and IM6's rows at zero error: two bodies at
 // rest, joined where they are, with no gravity or load, have no joint error and no relative
 // speed, so every row's impulse is 0 and nothing moves, bit for bit: velocities stay exactly 0,
