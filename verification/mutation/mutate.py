@@ -27,6 +27,7 @@ program of traceability/config.yaml: absent, the report says "not run").
 """
 import argparse
 import datetime
+import fnmatch
 import hashlib
 import json
 import os
@@ -217,29 +218,59 @@ def run(cmd, cwd=None, timeout=None):
         return None, "timeout"
 
 
+IGNORED = (".git", "build*", "reports", "__pycache__")
+
+
+def sync_tree(root, dest):
+    """Makes dest hold root's files (IGNORED names left out) and nothing else. A file whose
+    bytes already match is left alone, time included; any other is written anew, with the
+    current time. So a file that a mutant once changed, restored since, keeps the time of its
+    restoring, which is later than any object built from the mutant: a build never takes a
+    mutant's object for the restored source's (keeping root's older times would), and a
+    mutant left in place by an interrupted run differs from root and is rewritten."""
+    def ignored(name):
+        return any(fnmatch.fnmatch(name, pat) for pat in IGNORED)
+
+    os.makedirs(dest, exist_ok=True)
+    names = {n for n in os.listdir(root) if not ignored(n)}
+    for n in os.listdir(dest):
+        if n not in names:
+            path = os.path.join(dest, n)
+            if os.path.isdir(path) and not os.path.islink(path):
+                shutil.rmtree(path)
+            else:
+                os.remove(path)
+    for n in sorted(names):
+        s, d = os.path.join(root, n), os.path.join(dest, n)
+        if os.path.isdir(s) and not os.path.islink(s):
+            if os.path.exists(d) and not os.path.isdir(d):
+                os.remove(d)
+            sync_tree(s, d)
+            continue
+        if os.path.isdir(d):
+            shutil.rmtree(d)
+        with open(s, "rb") as fh:
+            data = fh.read()
+        if os.path.isfile(d):
+            with open(d, "rb") as fh:
+                if fh.read() == data:
+                    continue
+        with open(d, "wb") as fh:
+            fh.write(data)
+        shutil.copymode(s, d)
+
+
 def prepare_scratch(root, scratch):
     """A copy of the sources (no .git, builds or reports) and a built Release build.
 
     The library is built shared and the test executables do not relink when only it changed
     (LINK_DEPENDS_NO_SHARED): a mutant of a .cpp then recompiles one object and relinks one
-    .so instead of every test executable. The copy keeps the sources' times, so a scratch that
-    outlives a run rebuilds only what changed since; a mutant left in place by an interrupted
-    run (the marker file names it) is touched so that it is rebuilt from the restored source."""
+    .so instead of every test executable. The copy is synchronised file by file (sync_tree),
+    so a scratch that outlives a run rebuilds only what changed since, and never keeps an
+    object built from a mutant."""
     src = os.path.join(scratch, "src")
     build = os.path.join(scratch, "build")
-    marker = os.path.join(scratch, "mutant-in-place")
-    leftover = None
-    if os.path.exists(marker):
-        with open(marker, encoding="utf-8") as fh:
-            leftover = fh.read().strip()
-    ignore = shutil.ignore_patterns(".git", "build*", "reports", "__pycache__")
-    if os.path.isdir(src):
-        shutil.rmtree(src)
-    shutil.copytree(root, src, ignore=ignore)
-    if leftover and os.path.exists(os.path.join(src, leftover)):
-        os.utime(os.path.join(src, leftover))
-    if os.path.exists(marker):
-        os.remove(marker)
+    sync_tree(root, src)
     # -O1: mutants compile faster; the tests judge behaviour, not speed. _GLIBCXX_ASSERTIONS:
     # an index past an array's end (std::vector, LargeArray) stops the test, so a loop bound
     # turned by one is noticed even where the stray element is never used.
@@ -260,7 +291,7 @@ def prepare_scratch(root, scratch):
     rc, out = run(["nice", "-n", "5", "cmake", "--build", build, "-j2", "--target", *targets])
     if rc != 0:
         raise SystemExit("scratch build of the unmutated sources failed:\n" + out[-3000:])
-    return src, build, marker, catalogue, object_digests(build)
+    return src, build, catalogue, object_digests(build)
 
 
 def object_digests(build, since_ns=None):
@@ -292,7 +323,7 @@ def ctest_entries(catalogue, labels):
     return entries
 
 
-def judge(m, src, build, entries, test_timeout, marker, objects):
+def judge(m, src, build, entries, test_timeout, objects):
     """(verdict, log, build seconds, test seconds) of one mutant, run against entries
     ({CTest name: target}); the scratch source is restored afterwards. "not built": every
     object the mutant's build rewrote is bit for bit the unmutated one (objects: their
@@ -307,8 +338,6 @@ def judge(m, src, build, entries, test_timeout, marker, objects):
     assert lines[m["line"] - 1] == m["before"]
     lines[m["line"] - 1] = m["after"]
     try:
-        with open(marker, "w", encoding="utf-8") as fh:
-            fh.write(m["file"])
         with open(path, "w", encoding="utf-8") as fh:
             fh.write("\n".join(lines))
         targets = sorted(set(entries.values()))
@@ -331,7 +360,6 @@ def judge(m, src, build, entries, test_timeout, marker, objects):
     finally:
         with open(path, "w", encoding="utf-8") as fh:
             fh.write(original)
-        os.remove(marker)
 
 
 FAILED = re.compile(r"^\s*\d+ - (\S+) \(", re.M)
@@ -453,7 +481,7 @@ def main(argv=None):
     commit, dirty = commit_of(a.root)
     started = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ")
     t_prep = time.monotonic()
-    src, build, marker, catalogue, objects = prepare_scratch(a.root, a.scratch)
+    src, build, catalogue, objects = prepare_scratch(a.root, a.scratch)
     prep_secs = time.monotonic() - t_prep
     # The box is for judging mutants; the scratch build before it is reported apart (minutes
     # when the scratch is new, seconds when it outlives a run).
@@ -467,16 +495,14 @@ def main(argv=None):
         entries = ctest_entries(catalogue, labels)
         t0 = time.monotonic()
         entries = {n: t for n, t in entries.items() if baseline.get(n, True)}
-        verdict, log, b_secs, t_secs = judge(m, src, build, entries, a.test_timeout, marker,
-                                                   objects)
+        verdict, log, b_secs, t_secs = judge(m, src, build, entries, a.test_timeout, objects)
         if verdict == "killed" and not passes_unmutated(failed_entries(log), build, entries,
                                                         baseline, a.test_timeout):
             # Killed by a test that fails without the mutant too: judged again without it.
             broken = sorted(n for n in entries if baseline.get(n) is False)
             print(f"   (fails unmutated, left out from now on: {', '.join(broken)})")
             entries = {n: t for n, t in entries.items() if baseline.get(n, True)}
-            verdict, log, b_secs, t_secs = judge(m, src, build, entries, a.test_timeout, marker,
-                                                   objects)
+            verdict, log, b_secs, t_secs = judge(m, src, build, entries, a.test_timeout, objects)
         secs = time.monotonic() - t0
         r = dict(m, verdict=verdict, labels=labels, tests=sorted(entries), seconds=round(secs, 1),
                  build_seconds=round(b_secs, 1), test_seconds=round(t_secs, 1),

@@ -68,6 +68,34 @@ class Mutants(unittest.TestCase):
             self.assertEqual(mutate.labels_of(root, "src/tamias2d/dynamics/solver.cpp"), ["IM7"])
 
 
+class Scratch(unittest.TestCase):
+    """Oracle: sync_tree's promise, checked file by file on a made-up tree."""
+
+    def test_sync_keeps_matching_files_and_rewrites_the_rest(self):
+        with tempfile.TemporaryDirectory() as root, tempfile.TemporaryDirectory() as dest:
+            os.makedirs(os.path.join(root, "src"))
+            os.makedirs(os.path.join(root, "build"))
+            for rel, text in (("src/a.hpp", "a"), ("src/b.cpp", "b"), ("build/x.o", "x")):
+                with open(os.path.join(root, rel), "w") as fh:
+                    fh.write(text)
+            mutate.sync_tree(root, dest)
+            self.assertFalse(os.path.exists(os.path.join(dest, "build")))  # ignored
+            # a.hpp restored after a mutant (same bytes, a later time); b.cpp left mutated;
+            # a file root no longer has.
+            os.utime(os.path.join(dest, "src/a.hpp"), ns=(4 * 10**18, 4 * 10**18))
+            with open(os.path.join(dest, "src/b.cpp"), "w") as fh:
+                fh.write("mutant")
+            os.utime(os.path.join(dest, "src/b.cpp"), ns=(10**18, 10**18))
+            with open(os.path.join(dest, "src/gone.cpp"), "w") as fh:
+                fh.write("g")
+            mutate.sync_tree(root, dest)
+            self.assertEqual(os.stat(os.path.join(dest, "src/a.hpp")).st_mtime_ns, 4 * 10**18)
+            with open(os.path.join(dest, "src/b.cpp")) as fh:
+                self.assertEqual(fh.read(), "b")
+            self.assertGreater(os.stat(os.path.join(dest, "src/b.cpp")).st_mtime_ns, 10**18)
+            self.assertFalse(os.path.exists(os.path.join(dest, "src/gone.cpp")))
+
+
 class Sampling(unittest.TestCase):
     """Oracle: the sampling rule's promise, checked on made-up files: an edit to one line
     changes the sample only by that line's mutants."""
