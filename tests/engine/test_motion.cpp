@@ -28,27 +28,36 @@ double rel_err(double got, double want) {
 BOOST_AUTO_TEST_SUITE(motion)
 
 // Oracle: closed form p(t) = p0 + v0 t, phi(t) = phi0 + omega0 t (no force: IM1, IM2 with
-// a = alpha = 0 are solved exactly by any consistent scheme).
+// a = alpha = 0 are solved exactly by any consistent scheme). Also with sleeping on and a slow
+// glide (0.3 m/s, 0.02 rad/s: above the linear sleep tolerance, below the angular one): a body
+// that moves is never put to sleep, so it follows the same closed form.
 BOOST_AUTO_TEST_CASE(free_flight_is_exact,
                      *utf::label("R5") * utf::label("R6") * utf::label("IM1") * utf::label("IM2")) {
-    World world(WorldDef{.gravity = {0.0, 0.0}});
-    BodyDef def;
-    def.position = {1.0, -2.0};
-    def.linear_velocity = {3.0, -0.5};
-    def.angular_velocity = -0.7;
-    def.angle = 0.3;
-    const BodyId b = make_box_body(world, def);
-    const double dt = 1.0 / 60.0;
-    for (int n = 1; n <= 600; ++n) {
-        world.step(dt);
-        const double t = n * dt;
-        const BodyState s = world.state(b);
-        BOOST_TEST(rel_err(s.position.x, 1.0 + 3.0 * t) < 1e-12);
-        BOOST_TEST(rel_err(s.position.y, -2.0 - 0.5 * t) < 1e-12);
-        BOOST_TEST(s.velocity.x == 3.0);
-        BOOST_TEST(s.velocity.y == -0.5);
-        BOOST_TEST(rel_err(s.orientation, units::wrap_orientation(0.3 - 0.7 * t)) < 1e-12);
-        BOOST_TEST(s.angular_velocity == -0.7);
+    struct Case {
+        bool sleep;
+        Vec2d v;
+        double w;
+    };
+    for (const Case c : {Case{false, {3.0, -0.5}, -0.7}, Case{true, {0.3, -0.2}, 0.02}}) {
+        World world(WorldDef{.gravity = {0.0, 0.0}, .enable_sleep = c.sleep});
+        BodyDef def;
+        def.position = {1.0, -2.0};
+        def.linear_velocity = c.v;
+        def.angular_velocity = c.w;
+        def.angle = 0.3;
+        const BodyId b = make_box_body(world, def);
+        const double dt = 1.0 / 60.0;
+        for (int n = 1; n <= 600; ++n) {
+            world.step(dt);
+            const double t = n * dt;
+            const BodyState s = world.state(b);
+            BOOST_TEST(rel_err(s.position.x, 1.0 + c.v.x * t) < 1e-12);
+            BOOST_TEST(rel_err(s.position.y, -2.0 + c.v.y * t) < 1e-12);
+            BOOST_TEST(s.velocity.x == c.v.x);
+            BOOST_TEST(s.velocity.y == c.v.y);
+            BOOST_TEST(rel_err(s.orientation, units::wrap_orientation(0.3 + c.w * t)) < 1e-12);
+            BOOST_TEST(s.angular_velocity == c.w);
+        }
     }
 }
 
