@@ -48,6 +48,8 @@ BOOST_AUTO_TEST_CASE(stale_handles_are_errors, *utf::label("R1")) {
     BOOST_CHECK_THROW(world.destroy_body(a), InvalidHandle);
     BOOST_CHECK_THROW(world.create_shape(a, circle_shape(1.0)), InvalidHandle);
     BOOST_CHECK_THROW(world.position(BodyId{42, 1}), InvalidHandle);
+    BOOST_CHECK_THROW(world.position(BodyId{a.index + 1, 1}), InvalidHandle); // one past the end
+    BOOST_TEST(!world.is_valid(BodyId{a.index + 1, 1}));
     const BodyId b = world.create_body({});
     BOOST_TEST(b.index == a.index);
     BOOST_TEST(b.generation != a.generation);

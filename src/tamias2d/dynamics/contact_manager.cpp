@@ -242,7 +242,8 @@ void ContactManager::update(BodyStore& bodies, const ShapeStore& shapes, bool sl
             old_t[k] = warm.tangent[k];
         }
         collide(sa.collider, sb.collider, in, c.manifold, &c.hint);
-        // Warm starting: a point keeps its impulses when the same features touch again.
+        // \srs{IM7} Warm starting: a point keeps its impulses when the same features touch
+        // again, and starts from none otherwise.
         // (Chosen in registers, then stored: zeroing first made GCC call memset twice.)
         for (int j = 0; j < c.manifold.count; ++j) {
             double normal = 0.0, tangent = 0.0;
