@@ -9,10 +9,12 @@ namespace tamias2d {
 
 /// One point of a contact manifold.
 struct ContactPointInfo {
-    Vec2d point{};                ///< m, world frame
-    double separation = 0.0;      ///< m, negative when overlapping (measured before the step)
-    double normal_impulse = 0.0;  ///< N s, total over the step (DD8's j when A5-A7 hold)
-    double tangent_impulse = 0.0; ///< N s, friction (LC2)
+    Vec2d point{};               ///< m, world frame
+    double separation = 0.0;     ///< m, negative when overlapping (measured before the step)
+    double normal_impulse = 0.0; ///< N s, total over the step (DD8's j when A5-A7 hold)
+    /// N s, friction (LC2), along t = (n.y, -n.x) (n: ContactInfo::normal); like the normal
+    /// impulse, it acts on body_b as given and on body_a with the opposite sign.
+    double tangent_impulse = 0.0;
 };
 
 /// A touching pair. `normal` is a unit vector from shape_a into shape_b.
