@@ -2,6 +2,7 @@
 /// World settings. Defaults suit games in metres, kilograms and seconds.
 #pragma once
 
+#include "tamias2d/task_system.hpp"
 #include "tamias2d/vec2.hpp"
 
 namespace tamias2d {
@@ -55,6 +56,16 @@ struct WorldDef {
     double time_to_sleep = 0.5;             ///< s
     double linear_sleep_tolerance = 0.05;   ///< m s^-1
     double angular_sleep_tolerance = 0.035; ///< rad s^-1 (2 degrees per second)
+    /// Threads that share a step's parallel parts (the narrow phase, the bodies' integration and
+    /// write-back, the contacts' preparation), in [1, 256]. The results are bitwise identical
+    /// for every count (task_system.hpp). 1, the default: the step runs on the calling thread
+    /// alone, as without this setting. Above 1, without task_system's callbacks, the World
+    /// starts a pool of workers - 1 threads of its own, kept until it is destroyed.
+    int workers = 1;
+    /// A game's job system to run those parts on instead of the World's pool (task_system.hpp):
+    /// both callbacks or neither; used only when workers > 1, which must then be the number of
+    /// worker numbers it hands out.
+    TaskSystem task_system{};
 };
 
 } // namespace tamias2d

@@ -455,6 +455,12 @@ void validate(const WorldDef& def) {
     non_negative("world.time_to_sleep", def.time_to_sleep, "s");
     non_negative("world.linear_sleep_tolerance", def.linear_sleep_tolerance, "m s^-1");
     non_negative("world.angular_sleep_tolerance", def.angular_sleep_tolerance, "rad s^-1");
+    // Threads are the library's own setting, not the SRS's: "threads" names the rule.
+    if (def.workers < 1 || def.workers > 256)
+        throw ValidationError("world.workers", def.workers, "must be in [1, 256]", "threads");
+    if ((def.task_system.enqueue == nullptr) != (def.task_system.finish == nullptr))
+        throw ValidationError("world.task_system", std::nan(""),
+                              "needs both enqueue and finish, or neither", "threads");
 }
 
 void validate_time_step(double dt) {

@@ -20,6 +20,7 @@
 #include "tamias2d/model/dd15_kinetic_energy.hpp"
 #include "tamias2d/model/dd16_potential_energy.hpp"
 #include "tamias2d/model/gd1_conservation_of_momentum.hpp"
+#include "tamias2d/parallel/step_tasks.hpp"
 #include "tamias2d/units/angle.hpp"
 #include "tamias2d/validation.hpp"
 
@@ -81,6 +82,7 @@ struct World::Impl {
     SensorOverlaps sensors;
     StepSolver solver;
     IslandSleep sleep;
+    StepTasks tasks;             ///< the step's parallel loops (WorldDef::workers, task_system)
     std::vector<Load> loads;     ///< this step's load-function values (empty when none has one)
     double inv_h = 0.0;          ///< s^-1, the last step's substep rate (reaction forces)
     std::vector<JointId> broken; ///< joints the last step broke
@@ -189,6 +191,7 @@ struct World::Impl {
 World::World(const WorldDef& def) {
     validate(def);
     impl_ = std::make_unique<Impl>(def);
+    impl_->tasks = StepTasks(def.workers, def.task_system);
 }
 World::~World() = default;
 World::World(World&&) noexcept = default;
@@ -591,24 +594,24 @@ void World::step(double dt) {
         w.contacts.keep_all();
     } else if (w.def.enable_sleep) {
         // The islands need this step's touching contacts, and the solver bodies the islands.
-        w.contacts.update(w.bodies, w.shapes, true, w.def.speculative_distance);
+        w.contacts.update(w.bodies, w.shapes, true, w.def.speculative_distance, w.tasks);
         w.sleep.wake_islands(w.bodies, w.contacts, w.joints);
         w.solver.prepare_bodies(w.bodies, w.loads, w.def, h);
         w.solver.prepare_joints(w.joints, w.bodies);
-        w.solver.solve(w.contacts, w.joints, w.def, dt);
+        w.solver.solve(w.contacts, w.joints, w.def, dt, w.tasks);
         if (guarded && w.solver.diverged() != null_index)
             w.refuse_diverged(w.solver.diverged());
-        w.solver.finalize(w.bodies, w.shapes, w.contacts, w.joints, w.def);
+        w.solver.finalize(w.bodies, w.shapes, w.contacts, w.joints, w.def, w.tasks);
         w.break_joints();
         w.sleep.update_sleep(w.bodies, w.def, dt);
     } else {
         w.solver.prepare_bodies(w.bodies, w.loads, w.def, h);
         w.solver.prepare_joints(w.joints, w.bodies);
-        w.contacts.update(w.bodies, w.shapes, false, w.def.speculative_distance);
-        w.solver.solve(w.contacts, w.joints, w.def, dt);
+        w.contacts.update(w.bodies, w.shapes, false, w.def.speculative_distance, w.tasks);
+        w.solver.solve(w.contacts, w.joints, w.def, dt, w.tasks);
         if (guarded && w.solver.diverged() != null_index)
             w.refuse_diverged(w.solver.diverged());
-        w.solver.finalize(w.bodies, w.shapes, w.contacts, w.joints, w.def);
+        w.solver.finalize(w.bodies, w.shapes, w.contacts, w.joints, w.def, w.tasks);
         w.break_joints();
     }
     // DD28: the sensors see the poses this step made.

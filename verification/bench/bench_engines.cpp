@@ -50,7 +50,8 @@ void corners(const BoxPart& p, V2 out[4]) {
 // ---------------------------------------------------------------------------------- Tamias2D
 class TamiasEngine final : public Engine {
   public:
-    explicit TamiasEngine(const SceneDesc& s) : dt_(s.dt), world_(world_def(s)) {
+    explicit TamiasEngine(const SceneDesc& s, int workers = 1)
+        : dt_(s.dt), world_(world_def(s, workers)) {
         ids_.reserve(s.bodies.size());
         for (const BodyDesc& d : s.bodies) {
             tamias2d::BodyDef bd;
@@ -84,10 +85,12 @@ class TamiasEngine final : public Engine {
         const tamias2d::Vec2d p = world_.origin(id), v = world_.velocity(id);
         return {{p.x, p.y}, {v.x, v.y}, world_.angular_velocity(id), world_.orientation(id)};
     }
+    std::uint64_t state_hash() const override { return world_.state_hash(); }
 
   private:
-    static tamias2d::WorldDef world_def(const SceneDesc& s) {
+    static tamias2d::WorldDef world_def(const SceneDesc& s, int workers) {
         tamias2d::WorldDef def;
+        def.workers = workers; // 1 in the peer benchmark: every engine on one thread
         def.gravity = {s.gravity.x, s.gravity.y};
         def.enable_sleep = s.sleep; // time_to_sleep 0.5 s by default
         return def;
@@ -244,6 +247,10 @@ class Box2DEngine final : public Engine {
 };
 
 } // namespace
+
+std::unique_ptr<Engine> make_tamias_engine(const SceneDesc& scene, int workers) {
+    return std::make_unique<TamiasEngine>(scene, workers);
+}
 
 std::unique_ptr<Engine> make_engine(EngineId id, const SceneDesc& scene) {
     switch (id) {

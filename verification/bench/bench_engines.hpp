@@ -12,6 +12,7 @@
 #pragma once
 
 #include <chrono>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -58,6 +59,8 @@ class Engine {
     virtual void step() = 0;
     /// State of the scene's body `index` (index into SceneDesc::bodies).
     virtual Probe probe(int index) const = 0;
+    /// World::state_hash() for Tamias2D (equal hashes: bitwise-equal worlds); 0 for the peers.
+    virtual std::uint64_t state_hash() const { return 0; }
     /// Steps `n` times, timed by the thread that steps: an engine in another process times its
     /// steps there, so the pipe to it is never in the time.
     virtual StepTimes timed_steps(int n) {
@@ -80,5 +83,7 @@ class Engine {
 
 /// Builds the scene; throws (std::exception) if the engine rejects it or is not available.
 std::unique_ptr<Engine> make_engine(EngineId id, const SceneDesc& scene);
+/// Tamias2D with WorldDef::workers = `workers` (the thread benchmark, thread_bench.cpp).
+std::unique_ptr<Engine> make_tamias_engine(const SceneDesc& scene, int workers);
 
 } // namespace tamias_bench

@@ -10,6 +10,7 @@
 #include "tamias2d/dynamics/shape_store.hpp"
 #include "tamias2d/math/prefetch.hpp"
 #include "tamias2d/model/dd27_collision_filter.hpp"
+#include "tamias2d/parallel/step_tasks.hpp"
 
 namespace tamias2d {
 
@@ -198,80 +199,161 @@ void ContactManager::find_new(const BodyStore& bodies, ShapeStore& shapes,
     pending_begin_ = pending_end_ = 0;
 }
 
+namespace {
+
+/// What the narrow phase found for one contact.
+enum class Narrowed : std::uint8_t {
+    kept,      ///< not updated: both bodies asleep or static (sleeping on)
+    separated, ///< the fat boxes no longer overlap: the contact is to be destroyed
+    same,      ///< updated; touching as before
+    changed    ///< updated; began or stopped touching (an event, and with sleeping a wake)
+};
+
+/// \srs{R7} One contact's narrow phase: its manifold, its warm-start impulses and its edge
+/// input, all its own (so contacts may be updated on different threads).
+inline Narrowed narrow_contact(Contact& c, ContactImpulses& warm, ContactManager::EdgeInput& edge,
+                               const Shape& sa, const Shape& sb, double speculative_distance) {
+    if (!overlaps(sa.fat_box, sb.fat_box))
+        return Narrowed::separated;
+    const CollideInput in{sa.body_xf, sa.body_center, sb.body_xf, sb.body_center,
+                          speculative_distance};
+    // Warm starting needs only the old points' ids and impulses: the manifold itself is
+    // rewritten in place (building a new one and copying it in cost a fifth of this loop).
+    // Only the points in use are read: a pair that stays apart reads the first line only.
+    const int old_count = c.manifold.count;
+    std::uint32_t old_id[2] = {};
+    double old_n[2] = {}, old_t[2] = {};
+    for (int k = 0; k < old_count; ++k) {
+        old_id[k] = c.manifold.points[k].id.key();
+        old_n[k] = warm.normal[k];
+        old_t[k] = warm.tangent[k];
+    }
+    collide(sa.collider, sb.collider, in, c.manifold, &c.hint);
+    // \srs{IM7} Warm starting: a point keeps its impulses when the same features touch
+    // again, and starts from none otherwise.
+    // (Chosen in registers, then stored: zeroing first made GCC call memset twice.)
+    for (int j = 0; j < c.manifold.count; ++j) {
+        double normal = 0.0, tangent = 0.0;
+        for (int k = 0; k < old_count; ++k) {
+            if (old_id[k] == c.manifold.points[j].id.key()) {
+                normal = old_n[k];
+                tangent = old_t[k];
+            }
+        }
+        warm.normal[j] = normal;
+        warm.tangent[j] = tangent;
+    }
+    const bool was = c.touching;
+    c.touching = c.manifold.count > 0;
+    edge = edge_input(c);
+    return c.touching != was ? Narrowed::changed : Narrowed::same;
+}
+
+/// Asks for the lines of a contact's shapes that its narrow phase reads first.
+inline void prefetch_shapes(const Contact& c, const LargeArray<Shape>& shape) {
+    for (const Shape* s : {&shape[c.shape_a], &shape[c.shape_b]}) {
+        prefetch(&s->fat_box);
+        prefetch(&s->body_xf);
+        prefetch(&s->collider.pairs[0]);
+        prefetch(&s->collider.pairs[1]);
+    }
+}
+
+} // namespace
+
 void ContactManager::update(BodyStore& bodies, const ShapeStore& shapes, bool sleeping,
-                            double speculative_distance) {
+                            double speculative_distance, const StepTasks& tasks) {
     doomed_.clear();
-    const auto& shape = shapes.shapes;
-    constexpr std::uint32_t ahead = 6; // contacts: the shapes' lines arrive before use
     const auto count = std::uint32_t(contacts.size()); // the loop adds and removes none
     edge_inputs.resize(count);
-    for (std::uint32_t i = 0; i < count; ++i) {
-        if (i + ahead < count) {
-            const Contact& next = contacts[i + ahead];
-            // (A contact kept as it is, below, reads no shape.)
-            if (!sleeping || bodies.active(next.body_a) || bodies.active(next.body_b)) {
-                for (const Shape* s : {&shape[next.shape_a], &shape[next.shape_b]}) {
-                    prefetch(&s->fat_box);
-                    prefetch(&s->body_xf);
-                    prefetch(&s->collider.pairs[0]);
-                    prefetch(&s->collider.pairs[1]);
-                }
+    constexpr std::uint32_t block = 128; // contacts: ~5 us of work
+    if (tasks.parallel() && count > block) {
+        update_in_blocks(bodies, shapes, sleeping, speculative_distance, tasks, block);
+    } else {
+        const auto& shape = shapes.shapes;
+        constexpr std::uint32_t ahead = 6; // contacts: the shapes' lines arrive before use
+        for (std::uint32_t i = 0; i < count; ++i) {
+            if (i + ahead < count) {
+                const Contact& next = contacts[i + ahead];
+                // (A contact kept as it is, below, reads no shape.)
+                if (!sleeping || bodies.active(next.body_a) || bodies.active(next.body_b))
+                    prefetch_shapes(next, shape);
             }
-        }
-        Contact& c = contacts[i];
-        if (sleeping && !bodies.active(c.body_a) && !bodies.active(c.body_b))
-            continue; // its edge input stands too, from its last update
-        const Shape& sa = shape[c.shape_a];
-        const Shape& sb = shape[c.shape_b];
-        if (!overlaps(sa.fat_box, sb.fat_box)) {
-            doomed_.push_back(i);
-            continue;
-        }
-        const CollideInput in{sa.body_xf, sa.body_center, sb.body_xf, sb.body_center,
-                              speculative_distance};
-        // Warm starting needs only the old points' ids and impulses: the manifold itself is
-        // rewritten in place (building a new one and copying it in cost a fifth of this loop).
-        // Only the points in use are read: a pair that stays apart reads the first line only.
-        const int old_count = c.manifold.count;
-        ContactImpulses& warm = warm_impulses[i];
-        std::uint32_t old_id[2] = {};
-        double old_n[2] = {}, old_t[2] = {};
-        for (int k = 0; k < old_count; ++k) {
-            old_id[k] = c.manifold.points[k].id.key();
-            old_n[k] = warm.normal[k];
-            old_t[k] = warm.tangent[k];
-        }
-        collide(sa.collider, sb.collider, in, c.manifold, &c.hint);
-        // \srs{IM7} Warm starting: a point keeps its impulses when the same features touch
-        // again, and starts from none otherwise.
-        // (Chosen in registers, then stored: zeroing first made GCC call memset twice.)
-        for (int j = 0; j < c.manifold.count; ++j) {
-            double normal = 0.0, tangent = 0.0;
-            for (int k = 0; k < old_count; ++k) {
-                if (old_id[k] == c.manifold.points[j].id.key()) {
-                    normal = old_n[k];
-                    tangent = old_t[k];
-                }
-            }
-            warm.normal[j] = normal;
-            warm.tangent[j] = tangent;
-        }
-        const bool was = c.touching;
-        c.touching = c.manifold.count > 0;
-        edge_inputs[i] = edge_input(c);
-        if (c.touching != was) {
-            if (sleeping) { // a body met, or left, another: both islands wake
-                bodies.wake(c.body_a);
-                bodies.wake(c.body_b);
-            }
-            (c.touching ? begin_events : end_events)
-                .push_back({shapes.id(c.shape_a), shapes.id(c.shape_b), bodies.id(sa.body),
-                            bodies.id(sb.body)});
+            Contact& c = contacts[i];
+            if (sleeping && !bodies.active(c.body_a) && !bodies.active(c.body_b))
+                continue; // its edge input stands too, from its last update
+            const Narrowed r = narrow_contact(c, warm_impulses[i], edge_inputs[i], shape[c.shape_a],
+                                              shape[c.shape_b], speculative_distance);
+            if (r == Narrowed::separated)
+                doomed_.push_back(i);
+            else if (r == Narrowed::changed)
+                touch_changed(c, bodies, shapes, sleeping);
         }
     }
     // Descending, so swap-removal never moves a contact that is still to be removed.
     for (auto it = doomed_.rbegin(); it != doomed_.rend(); ++it)
         destroy(*it, bodies, shapes); // moves the last contact into the gap
+}
+
+void ContactManager::touch_changed(const Contact& c, BodyStore& bodies, const ShapeStore& shapes,
+                                   bool sleeping) {
+    if (sleeping) { // a body met, or left, another: both islands wake
+        bodies.wake(c.body_a);
+        bodies.wake(c.body_b);
+    }
+    (c.touching ? begin_events : end_events)
+        .push_back({shapes.id(c.shape_a), shapes.id(c.shape_b),
+                    bodies.id(shapes.shapes[c.shape_a].body),
+                    bodies.id(shapes.shapes[c.shape_b].body)});
+}
+
+// The serial loop's results and order, in two passes: the contacts' own updates in parallel
+// blocks, then in contact order what depends on order (the doomed list, the events, the wakes).
+// A wake in the serial loop can make a later contact of a sleeping body due for update: the
+// second pass updates such a contact then, from the same inputs (the shapes do not change in
+// between), so the same contacts are updated, to the same bits, as by the serial loop.
+void ContactManager::update_in_blocks(BodyStore& bodies, const ShapeStore& shapes, bool sleeping,
+                                      double speculative_distance, const StepTasks& tasks,
+                                      std::uint32_t block) {
+    const auto& shape = shapes.shapes;
+    const auto count = std::uint32_t(contacts.size());
+    if (outcomes_.size() < count)
+        outcomes_.resize(count); // only while the scene grows
+    auto run = [&](int first, int last) {
+        const std::uint32_t begin = std::uint32_t(first) * block;
+        const std::uint32_t end = std::min(count, std::uint32_t(last) * block);
+        constexpr std::uint32_t ahead = 6;
+        for (std::uint32_t i = begin; i < end; ++i) {
+            if (i + ahead < end) {
+                const Contact& next = contacts[i + ahead];
+                if (!sleeping || bodies.active(next.body_a) || bodies.active(next.body_b))
+                    prefetch_shapes(next, shape);
+            }
+            Contact& c = contacts[i];
+            if (sleeping && !bodies.active(c.body_a) && !bodies.active(c.body_b)) {
+                outcomes_[i] = std::uint8_t(Narrowed::kept);
+                continue;
+            }
+            outcomes_[i] =
+                std::uint8_t(narrow_contact(c, warm_impulses[i], edge_inputs[i], shape[c.shape_a],
+                                            shape[c.shape_b], speculative_distance));
+        }
+    };
+    tasks.for_each_block(blocks_of(count, block), run);
+    for (std::uint32_t i = 0; i < count; ++i) {
+        auto r = Narrowed(outcomes_[i]);
+        Contact& c = contacts[i];
+        if (r == Narrowed::kept) {
+            if (!bodies.active(c.body_a) && !bodies.active(c.body_b))
+                continue;
+            r = narrow_contact(c, warm_impulses[i], edge_inputs[i], shape[c.shape_a],
+                               shape[c.shape_b], speculative_distance);
+        }
+        if (r == Narrowed::separated)
+            doomed_.push_back(i);
+        else if (r == Narrowed::changed)
+            touch_changed(c, bodies, shapes, sleeping);
+    }
 }
 
 void ContactManager::unprepared_constraint(ContactConstraint& cc, const GraphEdge& edge,

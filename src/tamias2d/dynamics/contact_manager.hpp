@@ -24,6 +24,7 @@ namespace tamias2d {
 struct BodyStore;
 class ShapeStore;
 class JointStore;
+class StepTasks;
 
 /// DD27's rule: whether two shapes' filters let them collide (or a sensor detect a shape).
 bool admits(const Filter& a, const Filter& b);
@@ -69,9 +70,11 @@ class ContactManager {
     void find_new(const BodyStore& bodies, ShapeStore& shapes, const JointStore& joints);
     /// \srs{R7} Narrow phase for every contact; contacts whose fat boxes separated are
     /// destroyed. With sleeping on, a contact between bodies that do not move this step (asleep
-    /// or static) is kept as it is: neither has moved since it was last updated.
+    /// or static) is kept as it is: neither has moved since it was last updated. With more
+    /// than one worker the contacts are updated in parallel blocks; the results, the events and
+    /// their order are those of one thread, bit for bit.
     void update(BodyStore& bodies, const ShapeStore& shapes, bool sleeping,
-                double speculative_distance);
+                double speculative_distance, const StepTasks& tasks);
     /// Every body asleep: every contact stands as it is, its edge input included.
     void keep_all() { edge_inputs.resize(contacts.size()); }
     /// Destroys every contact of shape s (its end events and wakes included).
@@ -100,6 +103,13 @@ class ContactManager {
 
   private:
     void destroy(std::uint32_t i, BodyStore& bodies, const ShapeStore& shapes);
+    /// update's parallel form: the contacts' own work in blocks of `block`, then the rest in
+    /// contact order.
+    void update_in_blocks(BodyStore& bodies, const ShapeStore& shapes, bool sleeping,
+                          double speculative_distance, const StepTasks& tasks, std::uint32_t block);
+    /// A contact began or stopped touching: its event, and with sleeping its bodies woken.
+    void touch_changed(const Contact& c, BodyStore& bodies, const ShapeStore& shapes,
+                       bool sleeping);
 
     /// The first exception of the user's filter (custom_admits), for the step to rethrow.
     mutable std::exception_ptr filter_error_;
@@ -110,6 +120,7 @@ class ContactManager {
     /// new_pairs_[pending_begin_, pending_end_): pairs a bad_alloc in find_new left unexamined.
     std::size_t pending_begin_ = 0, pending_end_ = 0;
     std::vector<std::uint32_t> doomed_;
+    std::vector<std::uint8_t> outcomes_; ///< per contact: update_in_blocks's first pass
     std::vector<ContactInfo> infos_;
     bool infos_stale_ = true;
 };

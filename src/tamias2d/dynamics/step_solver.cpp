@@ -12,6 +12,7 @@
 #include "tamias2d/dynamics/restitution.hpp"
 #include "tamias2d/dynamics/shape_store.hpp"
 #include "tamias2d/math/prefetch.hpp"
+#include "tamias2d/parallel/step_tasks.hpp"
 
 namespace tamias2d {
 
@@ -71,11 +72,40 @@ void StepSolver::prepare_bodies(const BodyStore& store, const std::vector<Load>&
     }
 }
 
+namespace {
+
+// Blocks of the parallel loops, in solver bodies: ~2 us of work for the integration.
+constexpr std::size_t body_block = 512;
+// A loop over fewer bodies runs on the calling thread: waking the others costs more.
+constexpr std::size_t parallel_bodies = 2 * body_block;
+
+/// Runs range(begin, end) over solver bodies [1, count), in parallel blocks when worth it.
+template <class Range>
+void over_solver_bodies(std::size_t count, const StepTasks& tasks, Range&& range) {
+    if (!tasks.parallel() || count < parallel_bodies) {
+        range(std::size_t{1}, count);
+        return;
+    }
+    auto run = [&](int first, int last) {
+        range(1 + std::size_t(first) * body_block,
+              std::min(count, 1 + std::size_t(last) * body_block));
+    };
+    tasks.for_each_block(blocks_of(count - 1, body_block), run);
+}
+
+} // namespace
+
+void StepSolver::integrate_velocities(double h, const StepTasks& tasks) {
+    over_solver_bodies(solver_bodies_.size(), tasks, [&](std::size_t begin, std::size_t end) {
+        integrate_velocities(h, begin, end);
+    });
+}
+
 // IM5's factor 1 gives IM1/IM2's bits, so the undamped loop is only the cheaper form of the
 // same step (no factors to stream).
-void StepSolver::integrate_velocities(double h) {
+void StepSolver::integrate_velocities(double h, std::size_t begin, std::size_t end) {
     if (any_damped_) {
-        for (std::size_t k = 1; k < solver_bodies_.size(); ++k) {
+        for (std::size_t k = begin; k < end; ++k) {
             SolverBody& sb = solver_bodies_[k];
             sb.v = bridge::velocity_step(sb.v, accelerations_[k], h, linear_decay_[k]);
             sb.w = bridge::angular_velocity_step(sb.w, angular_accelerations_[k], h,
@@ -83,10 +113,24 @@ void StepSolver::integrate_velocities(double h) {
         }
         return;
     }
-    for (std::size_t k = 1; k < solver_bodies_.size(); ++k) {
+    for (std::size_t k = begin; k < end; ++k) {
         SolverBody& sb = solver_bodies_[k];
         sb.v = bridge::velocity_half(sb.v, accelerations_[k], h);
         sb.w = bridge::angular_velocity_half(sb.w, angular_accelerations_[k], h);
+    }
+}
+
+void StepSolver::integrate_positions(double h, const StepTasks& tasks) {
+    over_solver_bodies(solver_bodies_.size(), tasks, [&](std::size_t begin, std::size_t end) {
+        integrate_positions(h, begin, end);
+    });
+}
+
+void StepSolver::integrate_positions(double h, std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) {
+        SolverBody& sb = solver_bodies_[k];
+        sb.dp = bridge::position_half(sb.dp, sb.v, h);
+        sb.dq = bridge::angle_half(sb.dq, sb.w, h);
     }
 }
 
@@ -142,8 +186,50 @@ void StepSolver::turn_joints(std::vector<Joint>& joints) {
     }
 }
 
+// The manifolds are prepared straight into their packs, four lanes at once, in solve order (a
+// per-step array of prepared constraints cost a pass over ~300 bytes each). Over all the packs
+// (on the calling thread) each pack is warm started as soon as it is prepared (`warm_start`); a
+// block of a parallel preparation leaves the warm start to a pass after all of them.
+void StepSolver::prepare_packs(const ContactManager& contacts, std::size_t begin, std::size_t end,
+                               bool warm_start) {
+    const auto order = wide_solver_.order();
+    ContactConstraint cc; // reused: what set_input_lane reads is set anew
+    // Reused too: every lane is set or cleared each pack (clearing the whole input per pack,
+    // 600 bytes, was a tenth of this loop's time).
+    WideManifoldInput in;
+    // The packs read the contacts level by level, a sparse sweep the hardware prefetcher
+    // does not follow once the contacts outgrow the caches: ask for them four packs ahead.
+    constexpr std::size_t ahead = 4;
+    for (std::size_t p = begin; p < end; ++p) {
+        if (p + ahead < end) {
+            for (int l = 0; l < wide_lanes; ++l) {
+                const std::uint32_t k = order[p + ahead][l];
+                if (k == ConstraintGraph::no_constraint)
+                    continue;
+                const char* c = reinterpret_cast<const char*>(&contacts.contacts[edge_contact_[k]]);
+                for (std::size_t line = 0; line < sizeof(Contact); line += 64)
+                    prefetch(c + line);
+                prefetch(&contacts.warm_impulses[edge_contact_[k]]);
+            }
+        }
+        for (int l = 0; l < wide_lanes; ++l) {
+            const std::uint32_t k = order[p][l];
+            if (k == ConstraintGraph::no_constraint) {
+                clear_input_lane(in, l);
+                continue;
+            }
+            contacts.unprepared_constraint(cc, edges_[k], edge_contact_[k]);
+            set_input_lane(in, l, cc, edge_slot_[k]);
+        }
+        if (warm_start)
+            wide_solver_.prepare_pack_and_warm_start(p, in, solver_bodies_);
+        else
+            wide_solver_.prepare_pack(p, in, solver_bodies_);
+    }
+}
+
 void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const WorldDef& def,
-                       double dt) {
+                       double dt, const StepTasks& tasks) {
     const int n = def.substeps;
     const double h = dt / n;
     std::vector<Joint>& joints = joint_store.joints;
@@ -182,43 +268,25 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
     // The first substep's velocity half comes before the preparation, so that each pack can
     // be warm started as soon as it is prepared (below), as warm_start would after it. The
     // joints come before the contacts in every stage, as the later substeps have them.
-    integrate_velocities(h);
+    integrate_velocities(h, tasks);
     for (const Joint& j : joints) {
         if (solved(j))
             warm_start_joint(j, solver_bodies_);
     }
-    // The manifolds are prepared straight into their packs, four lanes at once, in solve
-    // order (a per-step array of prepared constraints cost a pass over ~300 bytes each).
-    const auto order = wide_solver_.order();
-    ContactConstraint cc; // reused: what set_input_lane reads is set anew
-    // Reused too: every lane is set or cleared each pack (clearing the whole input per pack,
-    // 600 bytes, was a tenth of this loop's time).
-    WideManifoldInput in;
-    // The packs read the contacts level by level, a sparse sweep the hardware prefetcher
-    // does not follow once the contacts outgrow the caches: ask for them four packs ahead.
-    constexpr std::size_t ahead = 4;
-    for (std::size_t p = 0; p < order.size(); ++p) {
-        if (p + ahead < order.size()) {
-            for (int l = 0; l < wide_lanes; ++l) {
-                const std::uint32_t k = order[p + ahead][l];
-                if (k == ConstraintGraph::no_constraint)
-                    continue;
-                const char* c = reinterpret_cast<const char*>(&contacts.contacts[edge_contact_[k]]);
-                for (std::size_t line = 0; line < sizeof(Contact); line += 64)
-                    prefetch(c + line);
-                prefetch(&contacts.warm_impulses[edge_contact_[k]]);
-            }
-        }
-        for (int l = 0; l < wide_lanes; ++l) {
-            const std::uint32_t k = order[p][l];
-            if (k == ConstraintGraph::no_constraint) {
-                clear_input_lane(in, l);
-                continue;
-            }
-            contacts.unprepared_constraint(cc, edges_[k], edge_contact_[k]);
-            set_input_lane(in, l, cc, edge_slot_[k]);
-        }
-        wide_solver_.prepare_pack_and_warm_start(p, in, solver_bodies_);
+    const std::size_t pack_count = wide_solver_.order().size();
+    constexpr std::size_t pack_block = 32; // ~10 us of lane filling and preparation
+    if (tasks.parallel() && pack_count > pack_block) {
+        // Preparation reads only the bodies' inverse masses, which the warm start leaves alone,
+        // so the packs may be prepared in any order, and warm started after them in solve
+        // order: the fused loop's bits.
+        auto run = [&](int first, int last) {
+            prepare_packs(contacts, std::size_t(first) * pack_block,
+                          std::min(pack_count, std::size_t(last) * pack_block), false);
+        };
+        tasks.for_each_block(blocks_of(pack_count, pack_block), run);
+        wide_solver_.warm_start(solver_bodies_);
+    } else {
+        prepare_packs(contacts, 0, pack_count, true);
     }
 
     ContactSolverSettings st;
@@ -233,7 +301,7 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
     const std::size_t nb = solver_bodies_.size();
     for (int sub = 0; sub < n; ++sub) {
         if (sub > 0) { // the first substep's were done with the preparation
-            integrate_velocities(h);
+            integrate_velocities(h, tasks);
             for (const Joint& j : joints) {
                 if (solved(j))
                     warm_start_joint(j, solver_bodies_);
@@ -245,12 +313,7 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
                 solve_joint(j, solver_bodies_, joint_softness, h, true);
         }
         wide_solver_.solve(solver_bodies_, st, true);
-        // IM1/IM2, position half with the new velocities (DD3, DD6).
-        for (std::size_t k = 1; k < nb; ++k) {
-            SolverBody& sb = solver_bodies_[k];
-            sb.dp = bridge::position_half(sb.dp, sb.v, h);
-            sb.dq = bridge::angle_half(sb.dq, sb.w, h);
-        }
+        integrate_positions(h, tasks);
         turn_joints(joints);
         for (Joint& j : joints) {
             if (solved(j))
@@ -285,7 +348,51 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
 }
 
 void StepSolver::finalize(BodyStore& store, ShapeStore& shape_store, const ContactManager& contacts,
-                          const JointStore& joints, const WorldDef& def) {
+                          const JointStore& joints, const WorldDef& def, const StepTasks& tasks) {
+    const auto body_count = std::uint32_t(store.bodies.size());
+    shape_store.reserve_undecided(); // allocates only after shapes were added
+    continuous_.clear();
+    if (!tasks.parallel() || solver_bodies_.size() < parallel_bodies) {
+        write_back<false>(store, shape_store, def, 0, body_count);
+    } else {
+        if (written_back_.size() < body_count) { // only while the scene grows
+            written_back_.resize(body_count);
+            starts_.resize(body_count);
+        }
+        if (undecided_.size() < shape_store.shapes.size())
+            undecided_.resize(shape_store.shapes.size());
+        constexpr std::uint32_t block = 256;
+        auto run = [&](int first, int last) {
+            write_back<true>(store, shape_store, def, std::uint32_t(first) * block,
+                             std::min(body_count, std::uint32_t(last) * block));
+        };
+        tasks.for_each_block(blocks_of(body_count, block), run);
+        // The lists in body order, as the serial sweep makes them.
+        auto& shapes = shape_store.shapes;
+        for (std::uint32_t i = 0; i < body_count; ++i) {
+            const std::uint8_t done = written_back_[i];
+            if (done == 0)
+                continue;
+            if (done & 1u) {
+                const Start& st = starts_[i];
+                continuous_.add(i, st.center, st.angle, st.v, st.w);
+            }
+            if (done & 2u) {
+                for (std::uint32_t s = store.bodies[i].first_shape; s != null_index;
+                     s = shapes[s].next) {
+                    if (undecided_[s])
+                        shape_store.mark_undecided(s);
+                }
+            }
+        }
+    }
+    shape_store.refit_undecided();
+    continuous_.run(store, shape_store, contacts, joints, def);
+}
+
+template <bool deferred>
+void StepSolver::write_back(BodyStore& store, ShapeStore& shape_store, const WorldDef& def,
+                            std::uint32_t begin, std::uint32_t end) {
     auto& bodies = store.bodies;
     auto& shapes = shape_store.shapes;
     // Bodies and shapes are swept in order, but the sweep reads two lines of each shape
@@ -293,22 +400,19 @@ void StepSolver::finalize(BodyStore& store, ShapeStore& shape_store, const Conta
     // ahead of at 16k boxes: ask for the bodies 16 ahead and their first shapes 8 ahead.
     // (The vertex lines are read only by a shape the header's bound cannot decide.)
     constexpr std::uint32_t body_ahead = 16, shape_ahead = 8;
-    const auto body_count = std::uint32_t(bodies.size());
-    shape_store.reserve_undecided(); // allocates only after shapes were added
-    continuous_.clear();
     // A body whose every point moved less than the speculative distance cannot reach a shape
     // it had no contact with at the step's start: only the others are swept (DD29).
     const double seen = def.speculative_distance;
     // Solver body 0 stands for the bodies that did not move: static, asleep or destroyed
     // (their lines are neither asked for nor read).
-    for (std::uint32_t i = 0; i < body_count; ++i) {
-        if (i + body_ahead < body_count && solver_index_[i + body_ahead] != 0) {
+    for (std::uint32_t i = begin; i < end; ++i) {
+        if (i + body_ahead < end && solver_index_[i + body_ahead] != 0) {
             // Its first two lines: the third only if it is loaded (rare).
             const char* p = reinterpret_cast<const char*>(&bodies[i + body_ahead]);
             for (std::size_t line = 0; line < offsetof(Body, force); line += 64)
                 prefetch(p + line);
         }
-        if (i + shape_ahead < body_count && solver_index_[i + shape_ahead] != 0) {
+        if (i + shape_ahead < end && solver_index_[i + shape_ahead] != 0) {
             const std::uint32_t s = bodies[i + shape_ahead].first_shape;
             if (s != null_index) {
                 const Shape& sh = shapes[s];
@@ -316,8 +420,11 @@ void StepSolver::finalize(BodyStore& store, ShapeStore& shape_store, const Conta
                 prefetch(&sh.body_xf);
             }
         }
-        if (solver_index_[i] == 0)
+        if (solver_index_[i] == 0) {
+            if constexpr (deferred)
+                written_back_[i] = 0;
             continue;
+        }
         Body& b = bodies[i];
         const SolverBody& sb = solver_bodies_[solver_index_[i]];
         const Vec2d v0 = b.v;
@@ -336,8 +443,15 @@ void StepSolver::finalize(BodyStore& store, ShapeStore& shape_store, const Conta
             }
             fast = std::sqrt(dp2) + std::abs(sb.dq) * reach > seen;
         }
-        if (fast)
-            continuous_.add(i, b.center, b.angle, v0, w0);
+        std::uint8_t done = 0;
+        if (fast) {
+            if constexpr (deferred) {
+                starts_[i] = {b.center, b.angle, v0, w0};
+                done = 1;
+            } else {
+                continuous_.add(i, b.center, b.angle, v0, w0);
+            }
+        }
         b.center += sb.dp;
         b.angle += sb.dq;
         b.xf.q = Rot::from_angle(b.angle);
@@ -349,12 +463,17 @@ void StepSolver::finalize(BodyStore& store, ShapeStore& shape_store, const Conta
         }
         // The shapes' copies, in the same pass.
         for (std::uint32_t s = b.first_shape; s != null_index; s = shapes[s].next) {
-            if (!shape_store.follow_pose(shapes[s], b))
+            const bool inside = shape_store.follow_pose(shapes[s], b);
+            if constexpr (deferred) {
+                undecided_[s] = !inside;
+                done |= inside ? 0 : 2;
+            } else if (!inside) {
                 shape_store.mark_undecided(s);
+            }
         }
+        if constexpr (deferred)
+            written_back_[i] = done;
     }
-    shape_store.refit_undecided();
-    continuous_.run(store, shape_store, contacts, joints, def);
 }
 
 } // namespace tamias2d

@@ -25,6 +25,7 @@ struct BodyStore;
 class ShapeStore;
 class ContactManager;
 class JointStore;
+class StepTasks;
 
 class StepSolver {
   public:
@@ -39,20 +40,40 @@ class StepSolver {
     /// are stored back for the warm start and the report, the joints keep theirs.
     /// With joints, a solve whose velocities or displacements turn non-finite (the joints'
     /// solve diverged) stops before anything is stored: diverged() names the body.
-    void solve(ContactManager& contacts, JointStore& joints, const WorldDef& def, double dt);
+    /// With more than one worker, the bodies' integration and the contacts' preparation run in
+    /// parallel blocks (each body, each pack its own), with the results of one thread.
+    void solve(ContactManager& contacts, JointStore& joints, const WorldDef& def, double dt,
+               const StepTasks& tasks);
     /// The body (index in the body store) of the first solver body the last solve left
     /// non-finite, or null_index: the step must then be refused, nothing finalized.
     std::uint32_t diverged() const { return diverged_; }
     /// The new velocities and poses into the bodies, and the shapes' copies and fat boxes
     /// after them (the broad phase's proxies moved); then, with def.enable_continuous, the
     /// continuous pass (DD29) over the dynamic bodies that moved far.
+    /// With more than one worker the bodies are written back in parallel blocks, and the lists
+    /// that follow body order (continuous pass, undecided shapes) are gathered after them.
     void finalize(BodyStore& bodies, ShapeStore& shapes, const ContactManager& contacts,
-                  const JointStore& joints, const WorldDef& def);
+                  const JointStore& joints, const WorldDef& def, const StepTasks& tasks);
 
   private:
     /// \srs{R5} \srs{R6} IM1/IM2, the velocity half of the semi-implicit Euler step (DD4, DD7);
     /// \srs{IM5} with damping when some body is damped.
-    void integrate_velocities(double h);
+    void integrate_velocities(double h, const StepTasks& tasks);
+    /// integrate_velocities on solver bodies [begin, end).
+    void integrate_velocities(double h, std::size_t begin, std::size_t end);
+    /// \srs{R5} \srs{R6} IM1/IM2, the position half with the new velocities (DD3, DD6).
+    void integrate_positions(double h, const StepTasks& tasks);
+    void integrate_positions(double h, std::size_t begin, std::size_t end);
+    /// The manifolds' lane filling and preparation into packs [begin, end) of the solve order,
+    /// each pack warm started right after it with `warm_start` (then begin must be 0).
+    void prepare_packs(const ContactManager& contacts, std::size_t begin, std::size_t end,
+                       bool warm_start);
+    /// finalize's sweep over bodies [begin, end). `deferred`: the continuous pass's bodies and
+    /// the undecided shapes are recorded per body and per shape (written_back_, starts_,
+    /// undecided_) for a gather in body order, instead of being listed at once.
+    template <bool deferred>
+    void write_back(BodyStore& store, ShapeStore& shape_store, const WorldDef& def,
+                    std::uint32_t begin, std::uint32_t end);
     /// The joints' body rotations after a position half (Joint::q_a, q_b).
     void turn_joints(std::vector<Joint>& joints);
 
@@ -77,6 +98,17 @@ class StepSolver {
     std::vector<Rot> joint_rotations_; ///< per solver body, for the jointed ones
     std::vector<std::uint8_t> listed_; ///< per solver body: in jointed_ (all 0 between steps)
     ContinuousPass continuous_;
+    /// finalize's parallel form, per body: bit 0 swept by the continuous pass (from starts_),
+    /// bit 1 some shape undecided (undecided_, per shape).
+    std::vector<std::uint8_t> written_back_;
+    struct Start {
+        Vec2d center;
+        double angle;
+        Vec2d v;
+        double w;
+    };
+    std::vector<Start> starts_;
+    std::vector<std::uint8_t> undecided_;
 };
 
 } // namespace tamias2d

@@ -1,0 +1,266 @@
+// A step on several threads (WorldDef::workers, WorldDef::task_system) gives the bits of one
+// thread: the parallel loops run blocks fixed by the scene, each writing only its own data, and
+// what depends on order (events, wakes, destructions, the lists the write-back makes) is done in
+// contact or body order after them. The scenes are large enough (over 1000 moving bodies, over
+// 128 contacts, over 32 packs) for every parallel loop of the step to run in blocks. CI also
+// runs this suite built with -fsanitize=thread (.ci/tsan_check.sh), where a data race fails it.
+#include <boost/test/unit_test.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <thread>
+#include <vector>
+
+#include "reliability/reliability_support.hpp"
+#include "tamias2d/errors.hpp"
+#include "tamias2d/world.hpp"
+
+namespace utf = boost::unit_test;
+using namespace tamias2d;
+
+namespace {
+
+// ThreadSanitizer runs the same code 5-15 times slower: fewer steps there.
+constexpr int step_scale = reliability::memory_sanitizer_build ? 1 : 3;
+
+/// A game's job system as a test double: each loop is cut into `pieces` ranges of items, which
+/// `threads` std::threads run, each taking its ranges from the last to the first (reverse) or
+/// every threads-th one (interleaved), with worker numbers 0 ... threads - 1. The loop runs
+/// between enqueue and finish, which joins the threads.
+struct ScramblingTasks {
+    int threads = 3;
+    int pieces = 7;
+    bool reverse = true;
+    std::vector<std::thread> running;
+    std::atomic<int> loops{0};
+
+    static void* enqueue(TaskCallback task, int count, void* task_context, void* user) {
+        auto& self = *static_cast<ScramblingTasks*>(user);
+        self.loops.fetch_add(1);
+        const int pieces = std::min(self.pieces, count);
+        auto piece_begin = [=](int p) { return int(std::int64_t(count) * p / pieces); };
+        for (int t = 0; t < self.threads; ++t) {
+            self.running.emplace_back([=, reverse = self.reverse, threads = self.threads] {
+                for (int k = 0; k < pieces; ++k) {
+                    const int p = reverse ? pieces - 1 - k : k;
+                    if (p % threads != t)
+                        continue;
+                    task(piece_begin(p), piece_begin(p + 1), t, task_context);
+                }
+            });
+        }
+        return &self;
+    }
+    static void finish(void* handle, void* user) {
+        BOOST_TEST_REQUIRE(handle == user);
+        auto& self = *static_cast<ScramblingTasks*>(user);
+        for (std::thread& t : self.running)
+            t.join();
+        self.running.clear();
+    }
+    TaskSystem system() { return {&ScramblingTasks::enqueue, &ScramblingTasks::finish, this}; }
+};
+
+/// How a scene's world is stepped.
+struct Threading {
+    int workers = 1;
+    ScramblingTasks* tasks = nullptr; ///< the game's task system, or the World's own pool
+};
+
+using Build = std::function<void(World&)>;
+
+/// The state hash after every step, with the begin and end events folded in (in order).
+std::vector<std::uint64_t> run(WorldDef def, const Build& build, int steps, Threading t) {
+    def.workers = t.workers;
+    if (t.tasks)
+        def.task_system = t.tasks->system();
+    World world(def);
+    build(world);
+    std::vector<std::uint64_t> hashes;
+    for (int i = 0; i < steps; ++i) {
+        world.step(1.0 / 60.0);
+        std::uint64_t h = world.state_hash();
+        for (const ContactEvent& e : world.contact_begin_events())
+            h = h * 1000003u + e.shape_a.index * 31u + e.shape_b.index;
+        h = h * 7u + 1u;
+        for (const ContactEvent& e : world.contact_end_events())
+            h = h * 1000003u + e.shape_a.index * 31u + e.shape_b.index;
+        hashes.push_back(h);
+    }
+    return hashes;
+}
+
+/// The scene stepped with 2, 3 and 4 workers of the World's pool and with the two scrambling
+/// task systems must give the hashes of one worker, step by step.
+void check_every_threading(const WorldDef& def, const Build& build, int steps) {
+    const std::vector<std::uint64_t> one = run(def, build, steps, {});
+    for (int workers = 2; workers <= 4; ++workers) {
+        BOOST_TEST_CONTEXT("workers = " << workers) {
+            BOOST_TEST(run(def, build, steps, {workers, nullptr}) == one,
+                       boost::test_tools::per_element());
+        }
+    }
+    for (const bool reverse : {true, false}) {
+        ScramblingTasks tasks;
+        tasks.reverse = reverse;
+        BOOST_TEST_CONTEXT("task system, " << (reverse ? "reverse" : "interleaved")) {
+            BOOST_TEST(run(def, build, steps, {tasks.threads, &tasks}) == one,
+                       boost::test_tools::per_element());
+            BOOST_TEST(tasks.loops.load() > steps); // it ran the step's loops
+        }
+    }
+}
+
+const Material wood{1.0, 0.0, 0.6};
+
+void ground(World& world, double width, double y = -0.5) {
+    BodyDef g;
+    g.type = BodyType::static_body;
+    g.position = {0.0, y};
+    world.create_shape(world.create_body(g), box_shape(width, 1.0, wood));
+}
+
+/// A pyramid of `base` rows of touching 1 m boxes on the ground.
+void pyramid(World& world, int base) {
+    ground(world, 2.0 * base + 10.0);
+    for (int row = 0; row < base; ++row) {
+        const int n = base - row;
+        for (int col = 0; col < n; ++col) {
+            BodyDef d;
+            d.position = {col - 0.5 * (n - 1), 0.5 + row};
+            world.create_shape(world.create_body(d), box_shape(1.0, 1.0, wood));
+        }
+    }
+}
+
+/// 1200 boxes of 0.5 m in 10 jittered rows falling into an open box, and a heavy block dropped
+/// from high up that lands on the pile once much of it sleeps (wakes in the narrow phase).
+void rain(World& world) {
+    ground(world, 100.0);
+    for (const double x : {-50.5, 50.5}) {
+        BodyDef wall;
+        wall.type = BodyType::static_body;
+        wall.position = {x, 5.0};
+        world.create_shape(world.create_body(wall), box_shape(1.0, 12.0, wood));
+    }
+    std::uint64_t state = 1;
+    auto jitter = [&state] { // splitmix64, scaled to [-0.05, 0.05)
+        state += 0x9e3779b97f4a7c15ull;
+        std::uint64_t z = state;
+        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+        z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+        z ^= z >> 31;
+        return (double(z >> 11) / 9007199254740992.0 - 0.5) * 0.1;
+    };
+    for (int row = 0; row < 10; ++row) {
+        for (int col = 0; col < 120; ++col) {
+            BodyDef d;
+            d.position = {-49.0 + col * 0.82 + jitter(), 1.0 + row * 0.8 + jitter()};
+            d.angle = 3.0 * jitter();
+            world.create_shape(world.create_body(d), box_shape(0.5, 0.5, wood));
+        }
+    }
+    BodyDef block;
+    block.position = {3.0, 14.0}; // lands after about 1.3 s
+    world.create_shape(world.create_body(block), box_shape(2.0, 1.0, Material{5.0, 0.0, 0.6}));
+}
+
+/// A falling box placed first (its contact with the box below it is among the first), then a
+/// row of 200 touching boxes built asleep on the ground: when the falling box touches, the box
+/// below wakes within the narrow phase, and its later contacts (with the ground and its
+/// neighbours), kept so far, are updated in that same pass.
+void sleeping_row(World& world) {
+    ground(world, 300.0);
+    BodyDef falling;
+    falling.position = {0.3, 1.56}; // 0.06 m above the row: within the fat boxes' margin
+    world.create_shape(world.create_body(falling), box_shape(1.0, 1.0, wood));
+    for (int k = 0; k < 200; ++k) {
+        BodyDef d;
+        d.position = {k - 100.0, 0.5};
+        d.awake = false;
+        world.create_shape(world.create_body(d), box_shape(1.0, 1.0, wood));
+    }
+}
+
+/// 40 chains of 28 links hanging from static pins, swinging into each other and onto the
+/// ground, with a revolute joint between neighbours.
+void chains(World& world) {
+    ground(world, 200.0, -30.0);
+    for (int c = 0; c < 40; ++c) {
+        BodyDef pin_def;
+        pin_def.type = BodyType::static_body;
+        pin_def.position = {-60.0 + 3.0 * c, 0.0};
+        BodyId previous = world.create_body(pin_def);
+        for (int k = 0; k < 28; ++k) {
+            BodyDef link;
+            link.position = {-60.0 + 3.0 * c + 0.5 + k, 0.0};
+            const BodyId b = world.create_body(link);
+            world.create_shape(b, box_shape(1.0, 0.25, wood));
+            world.create_joint(RevoluteJointDef{
+                .body_a = previous, .body_b = b, .anchor = {-60.0 + 3.0 * c + k, 0.0}});
+            previous = b;
+        }
+    }
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(parallel_step)
+
+// Oracle: the same scene stepped by one worker, the serial step (state hashes and the order of
+// the begin and end events, step by step).
+BOOST_AUTO_TEST_CASE(pyramid_is_bitwise_identical_on_every_thread_count,
+                     *utf::label("determinism")) {
+    WorldDef def;
+    def.gravity = {0.0, -10.0};
+    check_every_threading(
+        def, [](World& w) { pyramid(w, 48); }, 10 * step_scale);
+}
+
+// Oracle: as above, with sleeping on: islands fall asleep, and the block dropped on the pile
+// wakes bodies in the narrow phase, where the serial loop's wakes make later contacts due for
+// update within the same pass.
+BOOST_AUTO_TEST_CASE(sleeping_rain_is_bitwise_identical_on_every_thread_count,
+                     *utf::label("determinism")) {
+    WorldDef def;
+    def.gravity = {0.0, -10.0};
+    def.enable_sleep = true;
+    def.time_to_sleep = 0.1;
+    check_every_threading(def, rain, 60 * step_scale);
+}
+
+// Oracle: as above, with sleeping on, where the serial loop's order matters most: a wake in the
+// narrow phase makes later contacts of the woken body due for update within the same pass.
+BOOST_AUTO_TEST_CASE(wakes_within_the_narrow_phase_are_bitwise_identical_on_every_thread_count,
+                     *utf::label("determinism")) {
+    WorldDef def;
+    def.gravity = {0.0, -10.0};
+    def.enable_sleep = true;
+    check_every_threading(def, sleeping_row, 20);
+}
+
+// Oracle: as above, with 1120 revolute joints (solved serially between the parallel loops).
+BOOST_AUTO_TEST_CASE(jointed_chains_are_bitwise_identical_on_every_thread_count,
+                     *utf::label("determinism")) {
+    WorldDef def;
+    def.gravity = {0.0, -10.0};
+    check_every_threading(def, chains, 10 * step_scale);
+}
+
+// Oracle: the rules stated in world_def.hpp (workers in [1, 256]; both callbacks or neither).
+BOOST_AUTO_TEST_CASE(bad_thread_settings_are_refused, *utf::label("reliability")) {
+    WorldDef def;
+    def.workers = 0;
+    BOOST_CHECK_THROW(World{def}, ValidationError);
+    def.workers = 257;
+    BOOST_CHECK_THROW(World{def}, ValidationError);
+    def.workers = 2;
+    def.task_system.enqueue = &ScramblingTasks::enqueue;
+    BOOST_CHECK_THROW(World{def}, ValidationError);
+    def.task_system.finish = &ScramblingTasks::finish;
+    BOOST_CHECK_NO_THROW(World{def});
+}
+
+BOOST_AUTO_TEST_SUITE_END()
