@@ -116,7 +116,8 @@ namespace {
 using namespace tamias2d;
 namespace utf = boost::unit_test;
 
-/// Base 10 (55 unit boxes, density 1, friction 0.6) on a static ground, rows touching.
+/// A pyramid of `base` rows of unit boxes (density 1, friction 0.6) on a static ground, rows
+/// touching.
 void build_pyramid(World& world, int base) {
     const Material m{1.0, 0.0, 0.6};
     BodyDef ground;
@@ -199,6 +200,27 @@ BOOST_AUTO_TEST_CASE(jointed_world_steps_without_allocating, *utf::label("perfor
         world.step(dt);
     const Counted steady = count_heap([&] {
         for (int i = 0; i < 100; ++i)
+            world.step(dt);
+    });
+    BOOST_TEST(steady.allocations == 0u);
+    BOOST_TEST(steady.deallocations == 0u);
+}
+
+// Oracle: the same counting operator new, on a world stepped on two workers (the World's own
+// pool) and large enough (a base-48 pyramid: 1176 boxes, ~3400 contacts) that every parallel
+// loop of the step runs in blocks: once settled, no allocation either (the pool's threads are
+// started when the world is made; a loop hands them items through atomics).
+BOOST_AUTO_TEST_CASE(settled_world_steps_on_two_workers_without_allocating,
+                     *utf::label("performance")) {
+    WorldDef def{.gravity = {0.0, -10.0}};
+    def.workers = 2;
+    World world(def);
+    build_pyramid(world, 48);
+    const double dt = 1.0 / 60.0;
+    for (int i = 0; i < 120; ++i)
+        world.step(dt);
+    const Counted steady = count_heap([&] {
+        for (int i = 0; i < 50; ++i)
             world.step(dt);
     });
     BOOST_TEST(steady.allocations == 0u);
