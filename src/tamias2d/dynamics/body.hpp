@@ -47,6 +47,8 @@ struct alignas(64) Body {
     double torque_once = 0.0;
     double mass = 0.0, inertia = 0.0;
 
+    /// \srs{R2, IM1, IM2} Whether no force or torque is applied (R2's applied loads, the F
+    /// and tau of IM1 and IM2): a step skips the loads of a body whose `loaded` is false.
     bool unloaded() const {
         return force.x == 0.0 && force.y == 0.0 && torque == 0.0 && force_once.x == 0.0 &&
                force_once.y == 0.0 && torque_once == 0.0;
