@@ -200,6 +200,34 @@ BOOST_AUTO_TEST_CASE(time_varying_load_is_sampled_per_step, *utf::label("R2") * 
     }
 }
 
+// Oracle: BodyType's rule (body_def.hpp): a static body never moves, whatever velocities its
+// input gives; it reports zero velocities and keeps its pose, while a kinematic body given the
+// same input moves with it exactly (p = p0 + v t, phi = phi0 + omega t).
+BOOST_AUTO_TEST_CASE(a_static_body_ignores_its_input_velocities, *utf::label("R2")) {
+    World world(WorldDef{.gravity = {0.0, -9.81}});
+    BodyDef def;
+    def.position = {1.0, 2.0};
+    def.angle = 0.25;
+    def.linear_velocity = {3.0, -1.0};
+    def.angular_velocity = 0.5;
+    def.type = BodyType::static_body;
+    const BodyId still = make_box_body(world, def);
+    def.type = BodyType::kinematic;
+    const BodyId moving = make_box_body(world, def);
+    for (int n = 1; n <= 30; ++n) {
+        world.step(1.0 / 60.0);
+        const double t = n / 60.0;
+        BOOST_TEST(world.velocity(still).x == 0.0);
+        BOOST_TEST(world.velocity(still).y == 0.0);
+        BOOST_TEST(world.angular_velocity(still) == 0.0);
+        BOOST_TEST(world.position(still).x == 1.0);
+        BOOST_TEST(world.position(still).y == 2.0);
+        BOOST_TEST(world.orientation(still) == 0.25);
+        BOOST_TEST(rel_err(world.position(moving).x, 1.0 + 3.0 * t) < 1e-12);
+        BOOST_TEST(rel_err(world.orientation(moving), 0.25 + 0.5 * t) < 1e-12);
+    }
+}
+
 // Oracle: DD1 and the parallel-axis theorem (DD14) by hand: two unit squares of density 1 at
 // x = -1 and x = +2 (masses 1, 1): centre x = 0.5, I = 2 (1/6) + 1 (1.5^2) + 1 (1.5^2) = 4.8333.
 BOOST_AUTO_TEST_CASE(compound_body_mass_properties,

@@ -71,7 +71,7 @@ BOOST_AUTO_TEST_CASE(free_body_follows_the_stated_decay_law,
 // Oracle: IM5 with c = 0 is IM1/IM2: an undamped body keeps its velocity exactly (no load) and
 // its position moves by v0 t, whichever bodies around it are damped. Undamped bodies created
 // before and after a damped one, in one world, each checked against v0 and p0 + v0 t; the damped
-// one against the decay law (as above).
+// one against the decay law (as above), as are two damped along one motion only (c = 1 s^-1).
 BOOST_AUTO_TEST_CASE(undamped_bodies_beside_damped_ones_keep_their_velocity,
                      *utf::label("IM5") * utf::label("LC2")) {
     World world(WorldDef{.gravity = {0.0, 0.0}});
@@ -90,6 +90,19 @@ BOOST_AUTO_TEST_CASE(undamped_bodies_beside_damped_ones_keep_their_velocity,
     const BodyId before = add({0.0, 0.0}, v0, 1.5, 0.0);
     const BodyId damped = add({0.0, 10.0}, v0, 1.5, 0.7);
     const BodyId after = add({0.0, 20.0}, v0, 1.5, 0.0);
+    // Damped along one motion only, with a coefficient of exactly 1 s^-1.
+    BodyDef def;
+    def.position = {0.0, 30.0};
+    def.linear_velocity = v0;
+    def.angular_velocity = 1.5;
+    def.linear_damping = 1.0;
+    const BodyId linear_only = world.create_body(def);
+    world.create_shape(linear_only, box_shape(0.5, 0.25, Material{2.0, 0.0, 0.0}));
+    def.position = {0.0, 40.0};
+    def.linear_damping = 0.0;
+    def.angular_damping = 1.0;
+    const BodyId angular_only = world.create_body(def);
+    world.create_shape(angular_only, box_shape(0.5, 0.25, Material{2.0, 0.0, 0.0}));
     const int substeps = world.settings().substeps;
     const double fv = 1.0 / (1.0 + dt / substeps * 0.7);
     for (int step = 1; step <= 60; ++step) {
@@ -102,6 +115,12 @@ BOOST_AUTO_TEST_CASE(undamped_bodies_beside_damped_ones_keep_their_velocity,
                        boost::test_tools::tolerance(1e-12));
         }
         BOOST_TEST(world.velocity(damped).x == v0.x * std::pow(fv, step * substeps),
+                   boost::test_tools::tolerance(1e-12));
+        const double f1 = std::pow(1.0 / (1.0 + dt / substeps * 1.0), step * substeps);
+        BOOST_TEST(world.velocity(linear_only).x == v0.x * f1, boost::test_tools::tolerance(1e-12));
+        BOOST_TEST(world.angular_velocity(linear_only) == 1.5);
+        BOOST_TEST(world.velocity(angular_only).x == v0.x);
+        BOOST_TEST(world.angular_velocity(angular_only) == 1.5 * f1,
                    boost::test_tools::tolerance(1e-12));
     }
 }
