@@ -99,18 +99,19 @@ BOOST_AUTO_TEST_CASE(events_follow_the_crossing_schedule, *utf::label("DD28") * 
 }
 
 // Oracle: the stated rules. Two overlapping sensors report nothing; a ray through a sensor
-// hits what lies behind it; destroying a disc inside the sensor ends its overlap at once.
+// hits what lies behind it; destroying a disc inside the sensor ends its overlap at once, and
+// destroying a sensor ends its own overlaps only.
 BOOST_AUTO_TEST_CASE(sensors_are_blind_to_sensors_and_rays,
                      *utf::label("DD28") * utf::label("R7")) {
     World world(WorldDef{.gravity = {0.0, 0.0}, .enable_sleep = false});
     ShapeDef sensor = box_shape(2.0, 2.0);
     sensor.is_sensor = true;
     const BodyId a = world.create_body(BodyDef{});
-    world.create_shape(a, sensor);
+    const ShapeId sensor_a = world.create_shape(a, sensor);
     BodyDef bd;
     bd.position = {0.5, 0.0};
     const BodyId b = world.create_body(bd);
-    world.create_shape(b, sensor);
+    const ShapeId sensor_b = world.create_shape(b, sensor);
     BodyDef wall_def;
     wall_def.type = BodyType::static_body;
     wall_def.position = {3.0, 0.0};
@@ -130,6 +131,23 @@ BOOST_AUTO_TEST_CASE(sensors_are_blind_to_sensors_and_rays,
     BOOST_TEST(world.sensor_begin_events().size() == 2u); // inside both sensors
     world.destroy_body(disc);
     BOOST_TEST(world.sensor_end_events().size() == 2u);
+    // Another disc inside both; destroying the second sensor ends its overlap alone, and the
+    // first keeps reporting: no event while the disc stays, one when it leaves.
+    const BodyId other = world.create_body(dd);
+    const ShapeId other_shape = world.create_shape(other, circle_shape(0.2));
+    world.step(dt);
+    BOOST_TEST(world.sensor_begin_events().size() == 2u);
+    world.destroy_shape(sensor_b);
+    BOOST_TEST_REQUIRE(world.sensor_end_events().size() == 1u);
+    BOOST_TEST((world.sensor_end_events()[0].sensor == sensor_b));
+    world.step(dt);
+    BOOST_TEST(world.sensor_begin_events().empty());
+    BOOST_TEST(world.sensor_end_events().empty());
+    world.set_transform(other, {-5.0, 0.0}, 0.0);
+    world.step(dt);
+    BOOST_TEST_REQUIRE(world.sensor_end_events().size() == 1u);
+    BOOST_TEST((world.sensor_end_events()[0].sensor == sensor_a));
+    BOOST_TEST((world.sensor_end_events()[0].visitor == other_shape));
 }
 
 // Oracle: determinism (the same inputs give the same events in the same order), the stated

@@ -355,6 +355,7 @@ BOOST_AUTO_TEST_CASE(stale_shape_handles_are_errors, *utf::label("R1")) {
     BOOST_TEST(!world.is_valid(s));
     BOOST_CHECK_THROW(world.destroy_shape(s), InvalidHandle);
     BOOST_TEST(!world.is_valid(ShapeId{42, 1}));
+    BOOST_TEST(!world.is_valid(ShapeId{t.index + 1, 1})); // one past the last slot
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -55,6 +55,33 @@ BOOST_AUTO_TEST_CASE(rigid_block_stops_line_and_angle, *utf::label("DD23")) {
     BOOST_TEST(std::abs(dd22::joint_speed(A, B).value()) <= 1e-14);
 }
 
+// Oracle: IM6's soft form as IM7 states it, P <- mu P_rigid - gamma P_accumulated, row by row:
+// the soft block impulse is the rigid one (whose defining property the case above checks)
+// scaled by mu, less gamma times what each row has accumulated (here of opposite signs).
+BOOST_AUTO_TEST_CASE(soft_block_scales_the_rigid_one_and_relaxes_each_row, *utf::label("DD23")) {
+    const dd23::InverseInertia a{InverseMass::from_value(0.5),
+                                 InverseMomentOfInertia::from_value(1.5)};
+    const dd23::InverseInertia b{InverseMass::from_value(2.0),
+                                 InverseMomentOfInertia::from_value(0.7)};
+    const auto arm_A = Length::from_value(0.8), arm_B = Length::from_value(-0.3);
+    const auto rhs_perp = Velocity::from_value(1.3);
+    const auto rhs_angle = AngularVelocity::from_value(-0.9);
+    const dd23::BlockImpulse none{Impulse::from_value(0.0), dd22::AngularImpulse::from_value(0.0)};
+    const dd23::BlockImpulse held{Impulse::from_value(0.4),
+                                  dd22::AngularImpulse::from_value(-0.25)};
+    const double mu = 0.7, gamma = 0.2;
+    const auto rigid =
+        dd23::block_impulse(a, b, arm_A, arm_B, rhs_perp, rhs_angle, Dimensionless::from_value(1.0),
+                            Dimensionless::from_value(0.0), none);
+    const auto soft =
+        dd23::block_impulse(a, b, arm_A, arm_B, rhs_perp, rhs_angle, Dimensionless::from_value(mu),
+                            Dimensionless::from_value(gamma), held);
+    BOOST_TEST(soft.linear.value() == mu * rigid.linear.value() - gamma * 0.4,
+               tt::tolerance(1e-14));
+    BOOST_TEST(soft.angular.value() == mu * rigid.angular.value() + gamma * 0.25,
+               tt::tolerance(1e-14));
+}
+
 // Oracle: the line row's defining property with no body able to turn (1/I_A = 1/I_B = 0, so
 // k22 = 0 and the block is singular): the impulse along a_perp alone stops the line's velocity
 // error, and there is no angular impulse (T4: none could change the joint speed).

@@ -34,6 +34,20 @@ BOOST_AUTO_TEST_CASE(square_contains_hand_points, *utf::label("T5")) {
     BOOST_TEST(!t5::contains(unit_square, L2(-1e-9, 0.5)));
 }
 
+// Oracle: the same hand points for the form the engine stores (vertices with outward unit edge
+// normals): the closed boundary, edge midpoints and vertices, belongs to the square.
+BOOST_AUTO_TEST_CASE(square_with_normals_contains_its_boundary, *utf::label("T5")) {
+    const tamias2d::Vec2d v[] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    const tamias2d::Vec2d n[] = {{0, -1}, {1, 0}, {0, 1}, {-1, 0}};
+    for (const tamias2d::Vec2d p :
+         {tamias2d::Vec2d{0.5, 0.5}, tamias2d::Vec2d{1.0, 0.5}, tamias2d::Vec2d{0.5, 0.0},
+          tamias2d::Vec2d{0.0, 0.0}, tamias2d::Vec2d{1.0, 1.0}})
+        BOOST_TEST(t5::contains(v, n, 4, p), "(" << p.x << ", " << p.y << ")");
+    for (const tamias2d::Vec2d p :
+         {tamias2d::Vec2d{1.5, 0.5}, tamias2d::Vec2d{0.5, -0.25}, tamias2d::Vec2d{-1e-9, 0.5}})
+        BOOST_TEST(!t5::contains(v, n, 4, p), "(" << p.x << ", " << p.y << ")");
+}
+
 // Oracle: analytic predicate |x| + |y| <= 1 for the diamond, on a grid of step 1/8 over
 // [-1.5, 1.5]^2. Every coordinate is a multiple of 1/8, so both the analytic sum and the
 // polygon's cross products are exact in binary and boundary points agree exactly.

@@ -56,7 +56,7 @@ class ShapeStore {
     /// must follow).
     bool follow_pose(Shape& sh, const Body& b) {
         sh.body_xf = b.xf;
-        sh.body_center = b.center;
+        sh.body_center = b.center; // \srs{DD8} the centre of mass the contact arms start from
         return surely_inside(sh.collider, b.xf, sh.fat_box);
     }
     /// follow_body's second half: the tight box from the vertex lines, and a new fat box if the
