@@ -3,6 +3,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
+#include <vector>
 
 #include "tamias2d/units/angle.hpp"
 #include "tamias2d/world.hpp"
@@ -197,6 +198,28 @@ BOOST_AUTO_TEST_CASE(time_varying_load_is_sampled_per_step, *utf::label("R2") * 
         v += 4.0 * std::sin(3.0 * (n * dt)) / 3.0 * dt;
         world.step(dt);
         BOOST_TEST(std::abs(world.velocity(b).x - v) < 1e-13);
+    }
+}
+
+// Oracle: closed form p(t) = p0 + v0 t (IM1 with a = 0) for every body of a world where some
+// bodies have no shape (mass 1 kg by default): twelve bodies, every third shapeless, each
+// gliding at its own velocity, all exact.
+BOOST_AUTO_TEST_CASE(shapeless_bodies_among_others_fly_freely, *utf::label("IM1")) {
+    World world(WorldDef{.gravity = {0.0, 0.0}});
+    std::vector<BodyId> ids;
+    for (int k = 0; k < 12; ++k) {
+        BodyDef def;
+        def.position = {10.0 * k, 0.0};
+        def.linear_velocity = {0.5 + 0.25 * k, -0.1 * k};
+        ids.push_back(k % 3 == 2 ? world.create_body(def) : make_box_body(world, def));
+    }
+    for (int n = 1; n <= 60; ++n) {
+        world.step(1.0 / 60.0);
+        const double t = n / 60.0;
+        for (int k = 0; k < 12; ++k) {
+            BOOST_TEST(rel_err(world.position(ids[k]).x, 10.0 * k + (0.5 + 0.25 * k) * t) < 1e-12);
+            BOOST_TEST(rel_err(world.position(ids[k]).y, -0.1 * k * t) < 1e-12);
+        }
     }
 }
 
