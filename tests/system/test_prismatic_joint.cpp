@@ -44,6 +44,21 @@ struct Slider {
 
 BOOST_AUTO_TEST_SUITE(prismatic_joint)
 
+// Oracle: IM6's rigid relax ends each substep with no velocity error (mu = 1, gamma = 0: the
+// rows' impulses exactly cancel the relative velocity across the axis and in angle). A box on
+// a horizontal slider under gravity, at rest: after every step its vertical velocity and its
+// spin are 0 to round-off, and it does not slide (no force along the axis).
+BOOST_AUTO_TEST_CASE(the_relax_leaves_no_velocity_across_the_axis,
+                     *utf::label("DD23") * utf::label("IM6") * utf::label("LC3")) {
+    Slider s({0.0, -g}, PrismaticJointDef{.anchor = {0.0, 0.0}, .axis = {1.0, 0.0}});
+    for (int k = 0; k < 60; ++k) {
+        s.world.step(1.0 / 60.0);
+        BOOST_TEST(std::abs(s.world.velocity(s.box).y) < 1e-12);
+        BOOST_TEST(std::abs(s.world.angular_velocity(s.box)) < 1e-12);
+        BOOST_TEST(std::abs(s.world.velocity(s.box).x) < 1e-12);
+    }
+}
+
 // Oracle: IM6's soft bias: a joint error decays (the rows ask a correction velocity
 // proportional to it), while without the bias a rigid row only holds the relative velocity and
 // the error would stay. The box is moved 5 cm off the axis and turned by 0.1 rad after the joint
