@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <utility>
 #include <vector>
 
 #include "tamias2d/errors.hpp"
@@ -356,6 +358,57 @@ BOOST_AUTO_TEST_CASE(stale_shape_handles_are_errors, *utf::label("R1")) {
     BOOST_CHECK_THROW(world.destroy_shape(s), InvalidHandle);
     BOOST_TEST(!world.is_valid(ShapeId{42, 1}));
     BOOST_TEST(!world.is_valid(ShapeId{t.index + 1, 1})); // one past the last slot
+}
+
+// Oracle: the events' stated meaning (world.hpp): the begin events of a step are exactly the
+// pairs touching after it that did not touch after the step before, the end events exactly
+// those that touched before and no longer do; each once, none while a pair stays as it was.
+// Bouncy boxes and discs dropped on the ground in a row, so that pairs begin, rest, bounce
+// off and begin again over 3 s.
+BOOST_AUTO_TEST_CASE(contact_events_are_the_changes_of_the_touching_pairs, *utf::label("R7")) {
+    World world(WorldDef{.gravity = {0.0, -9.81}});
+    BodyDef gd;
+    gd.type = BodyType::static_body;
+    world.create_shape(world.create_body(gd), box_shape(40.0, 1.0, Material{1.0, 0.5, 0.6}));
+    for (int k = 0; k < 12; ++k) {
+        BodyDef bd;
+        bd.position = {-6.0 + 1.1 * k, 1.0 + 0.3 * k};
+        const BodyId b = world.create_body(bd);
+        world.create_shape(b, k % 2 == 0 ? box_shape(0.8, 0.8, Material{1.0, 0.5, 0.6})
+                                         : circle_shape(0.4, Material{1.0, 0.5, 0.6}));
+    }
+    using Pair = std::pair<std::uint64_t, std::uint64_t>;
+    const auto key = [](ShapeId a, ShapeId b) {
+        const std::uint64_t x = std::uint64_t(a.index) << 32 | a.generation;
+        const std::uint64_t y = std::uint64_t(b.index) << 32 | b.generation;
+        return Pair{std::min(x, y), std::max(x, y)};
+    };
+    std::vector<Pair> before;
+    int begins = 0, ends = 0;
+    for (int step = 0; step < 180; ++step) {
+        world.step(1.0 / 60.0);
+        std::vector<Pair> now, begun, ended;
+        for (const ContactInfo& c : world.contacts())
+            now.push_back(key(c.shape_a, c.shape_b));
+        for (const ContactEvent& e : world.contact_begin_events())
+            begun.push_back(key(e.shape_a, e.shape_b));
+        for (const ContactEvent& e : world.contact_end_events())
+            ended.push_back(key(e.shape_a, e.shape_b));
+        for (std::vector<Pair>* v : {&now, &begun, &ended})
+            std::sort(v->begin(), v->end());
+        std::vector<Pair> expect_begun, expect_ended;
+        std::set_difference(now.begin(), now.end(), before.begin(), before.end(),
+                            std::back_inserter(expect_begun));
+        std::set_difference(before.begin(), before.end(), now.begin(), now.end(),
+                            std::back_inserter(expect_ended));
+        BOOST_TEST(begun == expect_begun, "step " << step);
+        BOOST_TEST(ended == expect_ended, "step " << step);
+        begins += int(begun.size());
+        ends += int(ended.size());
+        before = now;
+    }
+    BOOST_TEST_MESSAGE("contact events: " << begins << " begins, " << ends << " ends");
+    BOOST_TEST(ends > 0); // some pairs did part again: the test sees both kinds
 }
 
 BOOST_AUTO_TEST_SUITE_END()
