@@ -56,6 +56,21 @@ struct Pendulum {
     }
 };
 
+/// A disc on a rigid distance joint (a massless rod of length l) from a static pivot at the
+/// origin, held out horizontally at rest: its bob.
+BodyId add_rod_pendulum(World& world) {
+    BodyDef pivot_def;
+    pivot_def.type = BodyType::static_body;
+    const BodyId pivot = world.create_body(pivot_def);
+    BodyDef bob_def;
+    bob_def.position = {l, 0.0};
+    const BodyId bob = world.create_body(bob_def);
+    world.create_shape(bob, circle_shape(bob_radius));
+    world.create_joint(DistanceJointDef{
+        .body_a = pivot, .body_b = bob, .anchor_a = {0.0, 0.0}, .anchor_b = {l, 0.0}});
+    return bob;
+}
+
 /// T = 4 sqrt(I_pivot / (m g l)) K(sin(theta0 / 2)): the exact period of the physical pendulum
 /// (GSL's K takes the modulus k).
 double exact_period(const Pendulum& p, double theta0) {
@@ -304,15 +319,7 @@ BOOST_AUTO_TEST_CASE(distance_spring_is_a_damped_oscillator,
 BOOST_AUTO_TEST_CASE(a_rigid_rod_ends_each_step_with_no_speed_along_it,
                      *utf::label("DD20") * utf::label("IM6") * utf::label("LC3")) {
     World world(WorldDef{.gravity = {0.0, -g}});
-    BodyDef pivot_def;
-    pivot_def.type = BodyType::static_body;
-    const BodyId pivot = world.create_body(pivot_def);
-    BodyDef bob_def;
-    bob_def.position = {l, 0.0};
-    const BodyId bob = world.create_body(bob_def);
-    world.create_shape(bob, circle_shape(bob_radius));
-    world.create_joint(DistanceJointDef{
-        .body_a = pivot, .body_b = bob, .anchor_a = {0.0, 0.0}, .anchor_b = {l, 0.0}});
+    const BodyId bob = add_rod_pendulum(world);
     double fastest = 0.0;
     for (int k = 0; k < 120; ++k) {
         world.step(1.0 / 60.0);
@@ -336,15 +343,7 @@ BOOST_AUTO_TEST_CASE(distance_rod_pendulum_period,
     std::vector<double> errors;
     for (const int steps_per_second : {480, 960}) {
         World world(WorldDef{.gravity = {0.0, -g}, .joint_hertz = 1e9});
-        BodyDef pivot_def;
-        pivot_def.type = BodyType::static_body;
-        const BodyId pivot = world.create_body(pivot_def);
-        BodyDef bob_def;
-        bob_def.position = {l, 0.0};
-        const BodyId bob = world.create_body(bob_def);
-        world.create_shape(bob, circle_shape(bob_radius));
-        world.create_joint(DistanceJointDef{
-            .body_a = pivot, .body_b = bob, .anchor_a = {0.0, 0.0}, .anchor_b = {l, 0.0}});
+        const BodyId bob = add_rod_pendulum(world);
         const double dt = 1.0 / steps_per_second;
         double previous = theta0, first = 0.0, last = 0.0;
         int crossings = 0;
