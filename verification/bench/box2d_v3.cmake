@@ -52,6 +52,7 @@ foreach(variant IN LISTS box2d_v3_variants)
   add_executable(tamias_bench_v3_${variant} engine_worker.cpp box2d_v3_engine.cpp)
   target_link_libraries(tamias_bench_v3_${variant} PRIVATE ${lib} tamias_warnings)
   add_dependencies(tamias_bench tamias_bench_v3_${variant})
+  add_dependencies(tamias_thread_bench tamias_bench_v3_${variant})
   string(TOUPPER ${variant} VARIANT)
   set_property(SOURCE remote_engine.cpp APPEND PROPERTY COMPILE_DEFINITIONS
                "TAMIAS_BENCH_V3_${VARIANT}_WORKER=\"$<TARGET_FILE:tamias_bench_v3_${variant}>\"")

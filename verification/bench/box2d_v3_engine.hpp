@@ -9,7 +9,8 @@
 
 namespace tamias_bench {
 
-/// Builds the scene in Box2D v3; throws (std::exception) if v3 rejects it.
-std::unique_ptr<Engine> make_box2d_v3_engine(const SceneDesc& scene);
+/// Builds the scene in Box2D v3 with `workers` worker threads (b2WorldDef::workerCount; above 1,
+/// v3's own scheduler runs them); throws (std::exception) if v3 rejects it.
+std::unique_ptr<Engine> make_box2d_v3_engine(const SceneDesc& scene, int workers = 1);
 
 } // namespace tamias_bench

@@ -5,11 +5,18 @@
 //
 // The worker times its own steps with its thread's CPU clock (Engine::timed_steps, the same code
 // as for the engines inside tamias_bench) and reports its live heap after every command.
+//
+//   tamias_bench_v3_<build> [--workers N]
+//
+// N (default 1) is v3's worker count (b2WorldDef::workerCount); tamias_thread_bench starts a
+// worker per count it measures, and reads the wall time of Engine::timed_steps.
 #include <malloc.h>
 #include <unistd.h>
 
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <exception>
 #include <memory>
 
@@ -28,7 +35,7 @@ double live_heap_bytes() {
 
 /// Runs one command and writes its results after the status byte.
 void run(wire::Op op, wire::Reader& in, wire::Writer& results, std::unique_ptr<Engine>& engine,
-         SceneDesc& scene) {
+         SceneDesc& scene, int workers) {
     const auto engine_ref = [&]() -> Engine& {
         if (!engine)
             throw std::runtime_error("no engine built");
@@ -38,7 +45,7 @@ void run(wire::Op op, wire::Reader& in, wire::Writer& results, std::unique_ptr<E
     case wire::Op::build:
         engine.reset();
         scene = wire::get_scene(in);
-        engine = make_box2d_v3_engine(scene);
+        engine = make_box2d_v3_engine(scene, workers);
         return;
     case wire::Op::timed: {
         const int n = in.get<std::int32_t>();
@@ -68,7 +75,20 @@ void run(wire::Op op, wire::Reader& in, wire::Writer& results, std::unique_ptr<E
 
 } // namespace
 
-int main() {
+int main(int argc, char** argv) {
+    int workers = 1;
+    for (int i = 1; i < argc; ++i) {
+        if (std::strcmp(argv[i], "--workers") == 0 && i + 1 < argc) {
+            workers = std::atoi(argv[++i]);
+        } else {
+            std::fprintf(stderr, "usage: %s [--workers N]\n", argv[0]);
+            return 2;
+        }
+    }
+    if (workers < 1) {
+        std::fprintf(stderr, "engine worker: --workers must be at least 1\n");
+        return 2;
+    }
     // Replies go to the pipe that was stdout; stdout itself goes to stderr, so that nothing the
     // engine prints (v3 logs with printf) can fall into a reply.
     const int reply_fd = ::dup(STDOUT_FILENO);
@@ -86,7 +106,7 @@ int main() {
             std::uint8_t status = 0;
             std::string error;
             try {
-                run(op, in, results, engine, scene);
+                run(op, in, results, engine, scene, workers);
             } catch (const std::exception& ex) {
                 status = 1;
                 error = ex.what();

@@ -5,10 +5,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <array>
 #include <csignal>
 #include <cstdint>
+#include <map>
 #include <stdexcept>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "worker_wire.hpp"
@@ -39,7 +41,7 @@ std::string worker_path(EngineId id) {
 /// One worker process and the two pipes to it.
 class Worker {
   public:
-    explicit Worker(const std::string& path) : in_(-1) {
+    Worker(const std::string& path, int threads) : in_(-1) {
         int to_child[2], from_child[2];
         if (::pipe2(to_child, O_CLOEXEC) != 0)
             throw std::runtime_error("pipe failed");
@@ -52,8 +54,8 @@ class Worker {
         posix_spawn_file_actions_init(&actions);
         posix_spawn_file_actions_adddup2(&actions, to_child[0], STDIN_FILENO);
         posix_spawn_file_actions_adddup2(&actions, from_child[1], STDOUT_FILENO);
-        std::string arg0 = path;
-        char* argv[] = {arg0.data(), nullptr};
+        std::string arg0 = path, arg1 = "--workers", arg2 = std::to_string(threads);
+        char* argv[] = {arg0.data(), arg1.data(), arg2.data(), nullptr};
         const int rc = ::posix_spawn(&pid_, path.c_str(), &actions, nullptr, argv, environ);
         posix_spawn_file_actions_destroy(&actions);
         ::close(to_child[0]);
@@ -109,7 +111,8 @@ class Worker {
     std::string gone_;
 };
 
-std::array<std::unique_ptr<Worker>, engine_count> workers;
+/// The running workers by engine and v3 worker count (tamias_bench: 1 each).
+std::map<std::pair<EngineId, int>, std::unique_ptr<Worker>> workers;
 
 wire::Writer command(wire::Op op) {
     wire::Writer w;
@@ -178,9 +181,9 @@ bool is_remote(EngineId id) {
     return id == EngineId::box2d_v3_sse2 || id == EngineId::box2d_v3_avx2;
 }
 
-std::string start_remote_engine(EngineId id) {
-    const auto k = std::size_t(id);
-    if (workers[k])
+std::string start_remote_engine(EngineId id, int threads) {
+    const auto k = std::make_pair(id, threads);
+    if (workers.count(k) != 0)
         return {};
     const std::string path = worker_path(id);
     if (path.empty())
@@ -190,7 +193,7 @@ std::string start_remote_engine(EngineId id) {
     // A worker that has gone must not take tamias_bench with it when a command is written.
     std::signal(SIGPIPE, SIG_IGN);
     try {
-        auto w = std::make_unique<Worker>(path);
+        auto w = std::make_unique<Worker>(path, threads);
         wire::Writer c = command(wire::Op::release); // answers once the worker runs
         w->call(c);
         workers[k] = std::move(w);
@@ -201,15 +204,15 @@ std::string start_remote_engine(EngineId id) {
 }
 
 double remote_heap_bytes(EngineId id) {
-    const auto& w = workers[std::size_t(id)];
-    return w ? w->heap() : 0.0;
+    const auto w = workers.find({id, 1});
+    return w == workers.end() ? 0.0 : w->second->heap();
 }
 
-std::unique_ptr<Engine> make_remote_engine(EngineId id, const SceneDesc& scene) {
-    const auto& w = workers[std::size_t(id)];
-    if (!w)
+std::unique_ptr<Engine> make_remote_engine(EngineId id, const SceneDesc& scene, int threads) {
+    const auto w = workers.find({id, threads});
+    if (w == workers.end())
         throw std::runtime_error("its worker is not running");
-    return std::make_unique<RemoteEngine>(*w, scene);
+    return std::make_unique<RemoteEngine>(*w->second, scene);
 }
 
 std::string remote_engines_description() {
@@ -227,8 +230,7 @@ std::string remote_engines_description() {
 }
 
 void stop_remote_engines() {
-    for (auto& w : workers)
-        w.reset();
+    workers.clear();
 }
 
 } // namespace tamias_bench

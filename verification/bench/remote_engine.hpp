@@ -19,16 +19,18 @@ namespace tamias_bench {
 /// Whether the engine runs in a worker process.
 bool is_remote(EngineId id);
 
-/// Starts the engine's worker. Returns an empty string when it runs, otherwise why the engine is
-/// not measured (not built, no AVX2 on this machine, the worker failed to start).
-std::string start_remote_engine(EngineId id);
+/// Starts the engine's worker, whose engine runs on `threads` threads (v3's workerCount;
+/// tamias_bench measures 1, tamias_thread_bench more). Returns an empty string when it runs,
+/// otherwise why the engine is not measured (not built, no AVX2 on this machine, the worker failed
+/// to start).
+std::string start_remote_engine(EngineId id, int threads = 1);
 
-/// The worker's live heap (bytes) after its last command; 0 when it is not running.
+/// The one-thread worker's live heap (bytes) after its last command; 0 when it is not running.
 double remote_heap_bytes(EngineId id);
 
-/// Builds the scene in the engine's worker (which holds one engine at a time); throws
+/// Builds the scene in the engine's worker for `threads` (which holds one engine at a time); throws
 /// (std::exception) when the worker fails or rejects the scene.
-std::unique_ptr<Engine> make_remote_engine(EngineId id, const SceneDesc& scene);
+std::unique_ptr<Engine> make_remote_engine(EngineId id, const SceneDesc& scene, int threads = 1);
 
 /// What the workers' engines are and how they were built (the report's set-up table).
 std::string remote_engines_description();

@@ -1,17 +1,21 @@
-// Tamias2D's step on 1, 2, ... workers (WorldDef::workers, the World's own pool): wall-clock
-// ms/step on the benchmark's scenes (bench_scenes.hpp), and the final state hash of each worker
-// count, which must be one and the same. The peer benchmark times one thread's CPU time; a step
-// shared by threads is timed by the wall clock (std::chrono::steady_clock), beside the process's
-// CPU time per step (all threads: what the workers' waiting and spinning cost).
+// Tamias2D's step on 1, 2, ... workers (WorldDef::workers, the World's own pool) beside Box2D v3's
+// on as many (b2WorldDef::workerCount, v3's own scheduler): wall-clock ms/step on the benchmark's
+// scenes (bench_scenes.hpp), and Tamias2D's final state hash for each worker count, which must be
+// one and the same. The peer benchmark times one thread's CPU time; a step shared by threads is
+// timed by the wall clock (std::chrono::steady_clock), beside Tamias2D's process CPU time per step
+// (all threads: what the workers' waiting and spinning cost).
 //
 //   tamias_thread_bench [--scenes pyramid40,large_pyramid,rain] [--threads 1,2] [--reps 7]
+//                       [--engines tamias,v3_sse2,v3_avx2]
 //
-// Steady scenes (the pyramids) are built once per worker count, stepped 10 times untimed, then
-// timed in blocks that alternate between the worker counts, repetition by repetition; the rain is
-// rebuilt for every repetition and timed over its whole run (1000 steps), the worker counts
-// alternating. The figure is the median over the repetitions.
+// Box2D v3 runs in its engine workers (remote_engine.hpp), one process per build and worker
+// count, which time their steps themselves; `v3` names both builds, and a build that was not made
+// (TAMIAS_BOX2D_V3_DIR unset, no AVX2) is reported and left out. Steady scenes (the pyramids) are
+// built once per engine and worker count, stepped 10 times untimed, then timed in blocks that
+// alternate between all of them, repetition by repetition; the rain is rebuilt for every
+// repetition and timed over its whole run (1000 steps), alternating the same way. The figure is
+// the median over the repetitions.
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
@@ -24,6 +28,7 @@
 
 #include "bench/bench_engines.hpp"
 #include "bench/bench_scenes.hpp"
+#include "bench/remote_engine.hpp"
 
 using namespace tamias_bench;
 
@@ -43,12 +48,6 @@ const std::vector<Scene> scenes = {
     {"rain", [] { return make_rain("rain", 2000); }, false, 1000},
 };
 
-double wall_ms() {
-    return std::chrono::duration<double, std::milli>(
-               std::chrono::steady_clock::now().time_since_epoch())
-        .count();
-}
-
 double process_cpu_ms() {
     timespec t{};
     clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
@@ -59,14 +58,24 @@ struct Times {
     std::vector<double> wall, cpu; ///< ms/step per repetition
 };
 
-/// Steps n times; returns {wall, process CPU} ms per step.
+/// Steps n times; returns {wall, process CPU} ms per step. The engine times the wall itself
+/// (in its worker for v3); the process's CPU time is this process's, so only Tamias2D's counts.
 std::pair<double, double> timed(Engine& e, int n) {
-    const double c0 = process_cpu_ms(), w0 = wall_ms();
-    for (int i = 0; i < n; ++i)
-        e.step();
-    const double w1 = wall_ms(), c1 = process_cpu_ms();
-    return {(w1 - w0) / n, (c1 - c0) / n};
+    const double c0 = process_cpu_ms();
+    const StepTimes t = e.timed_steps(n);
+    const double c1 = process_cpu_ms();
+    return {t.wall / n, (c1 - c0) / n};
 }
+
+/// One engine on one worker count.
+struct Run {
+    EngineId engine;
+    int threads;
+    std::unique_ptr<Engine> make(const SceneDesc& d) const {
+        return engine == EngineId::tamias ? make_tamias_engine(d, threads)
+                                          : make_remote_engine(engine, d, threads);
+    }
+};
 
 double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
@@ -84,7 +93,8 @@ std::vector<std::string> split(const std::string& s) {
 }
 
 [[noreturn]] void usage() {
-    std::fprintf(stderr, "usage: tamias_thread_bench [--scenes a,b] [--threads 1,2] [--reps N]\n");
+    std::fprintf(stderr, "usage: tamias_thread_bench [--scenes a,b] [--threads 1,2] [--reps N] "
+                         "[--engines tamias,v3_sse2,v3_avx2]\n");
     std::exit(2);
 }
 
@@ -93,6 +103,7 @@ std::vector<std::string> split(const std::string& s) {
 int main(int argc, char** argv) {
     std::vector<std::string> names = {"pyramid40", "large_pyramid", "rain"};
     std::vector<int> threads = {1, 2};
+    std::vector<std::string> engine_names = {"tamias"};
     int reps = 7;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
@@ -107,14 +118,42 @@ int main(int argc, char** argv) {
                 threads.push_back(std::atoi(t.c_str()));
         } else if (a == "--reps") {
             reps = std::atoi(v.c_str());
+        } else if (a == "--engines") {
+            engine_names = split(v);
         } else {
             usage();
         }
     }
-    if (reps < 1 || threads.empty())
+    if (reps < 1 || threads.empty() ||
+        std::any_of(threads.begin(), threads.end(), [](int t) { return t < 1; }))
         usage();
-    std::printf("%-14s %7s %12s %12s %9s %18s\n", "scene", "workers", "wall ms/step", "cpu ms/step",
-                "speed-up", "state hash");
+    std::vector<EngineId> engines;
+    for (const std::string& e : engine_names) {
+        if (e == "tamias") {
+            engines.push_back(EngineId::tamias);
+        } else if (e == "v3" || e == "v3_sse2" || e == "v3_avx2") {
+            for (const EngineId id : {EngineId::box2d_v3_sse2, EngineId::box2d_v3_avx2}) {
+                if (e != "v3" && e != (id == EngineId::box2d_v3_sse2 ? "v3_sse2" : "v3_avx2"))
+                    continue;
+                std::string why;
+                for (const int t : threads)
+                    if (why.empty())
+                        why = start_remote_engine(id, t);
+                if (why.empty())
+                    engines.push_back(id);
+                else
+                    std::printf("%s: %s\n", std::string(engine_name(id)).c_str(), why.c_str());
+            }
+        } else {
+            usage();
+        }
+    }
+    std::vector<Run> runs;
+    for (const EngineId e : engines)
+        for (const int t : threads)
+            runs.push_back({e, t});
+    std::printf("%-14s %-14s %7s %12s %12s %9s %12s %18s\n", "scene", "engine", "workers",
+                "wall ms/step", "cpu ms/step", "speed-up", "Tamias2D/it", "state hash");
     for (const std::string& name : names) {
         const auto it = std::find_if(scenes.begin(), scenes.end(),
                                      [&](const Scene& s) { return s.name == name; });
@@ -123,37 +162,60 @@ int main(int argc, char** argv) {
             return 2;
         }
         const SceneDesc desc = it->make();
-        const std::size_t n = threads.size();
+        const std::size_t n = runs.size();
         std::vector<Times> times(n);
         std::vector<std::uint64_t> hashes(n);
-        std::vector<std::unique_ptr<Engine>> engines(n);
+        std::vector<std::unique_ptr<Engine>> live(n);
         if (it->steady) {
             for (std::size_t k = 0; k < n; ++k) {
-                engines[k] = make_tamias_engine(desc, threads[k]);
+                live[k] = runs[k].make(desc);
                 for (int i = 0; i < 10; ++i)
-                    engines[k]->step();
+                    live[k]->step();
             }
         }
         for (int r = 0; r < reps; ++r) {
             for (std::size_t j = 0; j < n; ++j) {
                 const std::size_t k = (j + std::size_t(r)) % n; // the order rotates
                 if (!it->steady)
-                    engines[k] = make_tamias_engine(desc, threads[k]);
-                const auto [wall, cpu] = timed(*engines[k], it->steps);
+                    live[k] = runs[k].make(desc);
+                const auto [wall, cpu] = timed(*live[k], it->steps);
                 times[k].wall.push_back(wall);
                 times[k].cpu.push_back(cpu);
-                hashes[k] = engines[k]->state_hash();
+                hashes[k] = live[k]->state_hash();
                 if (!it->steady)
-                    engines[k].reset();
+                    live[k].reset();
             }
         }
-        const double base = median(times[0].wall);
+        live.clear();
+        // Speed-up: against the same engine on the first worker count; Tamias2D/it: Tamias2D's
+        // time over this engine's on the same worker count (above 1: Tamias2D is slower).
+        const auto wall_of = [&](EngineId e, int t) {
+            for (std::size_t k = 0; k < n; ++k)
+                if (runs[k].engine == e && runs[k].threads == t)
+                    return median(times[k].wall);
+            return 0.0;
+        };
+        std::uint64_t first_hash = 0;
         for (std::size_t k = 0; k < n; ++k) {
+            const Run& run = runs[k];
+            const bool own = run.engine == EngineId::tamias;
+            if (own && run.threads == threads[0])
+                first_hash = hashes[k];
             const double w = median(times[k].wall);
-            std::printf("%-14s %7d %12.4f %12.4f %8.3fx %018llx%s\n", name.c_str(), threads[k], w,
-                        median(times[k].cpu), base / w, (unsigned long long)hashes[k],
-                        hashes[k] == hashes[0] ? "" : "  DIFFERS");
+            const double ours = wall_of(EngineId::tamias, run.threads);
+            char cpu[32] = "-", ratio[32] = "-", hash[40] = "-";
+            if (own) {
+                std::snprintf(cpu, sizeof cpu, "%.4f", median(times[k].cpu));
+                std::snprintf(hash, sizeof hash, "%018llx%s", (unsigned long long)hashes[k],
+                              hashes[k] == first_hash ? "" : "  DIFFERS");
+            } else if (ours > 0.0) {
+                std::snprintf(ratio, sizeof ratio, "%.3f", ours / w);
+            }
+            std::printf("%-14s %-14s %7d %12.4f %12s %8.3fx %12s %18s\n", name.c_str(),
+                        std::string(engine_name(run.engine)).c_str(), run.threads, w, cpu,
+                        wall_of(run.engine, threads[0]) / w, ratio, hash);
         }
         std::fflush(stdout);
     }
+    stop_remote_engines();
 }
