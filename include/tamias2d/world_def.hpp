@@ -34,6 +34,14 @@ struct WorldDef {
     double linear_slop = 0.0;
     /// Contacts are created this far (m) before the shapes touch (speculative contacts).
     double speculative_distance = 0.02;
+    /// Manifold reuse: a touching contact whose two bodies have moved less than this (m)
+    /// against each other since its manifold was computed keeps that manifold's points, each
+    /// point's separation recomputed exactly from the bodies' poses, instead of running the
+    /// separating axis test and clipping again (a resting pile's contacts mostly qualify). Its
+    /// points then lie within this distance of where a fresh manifold would put them, and its
+    /// normal and moment arms within this distance's turn (docs/collision.md). 0: every touching
+    /// manifold is computed afresh each step. >= 0.
+    double manifold_reuse_distance = 0.005;
     /// Continuous collision (DD29): after each step, a dynamic body that moved farther than
     /// the speculative distance is swept from its start pose to its end pose against the
     /// static shapes; if the core of one of its shapes (a disc about its centroid) would reach

@@ -451,6 +451,7 @@ void validate(const WorldDef& def) {
     };
     non_negative("world.linear_slop", def.linear_slop, "m");
     non_negative("world.speculative_distance", def.speculative_distance, "m");
+    non_negative("world.manifold_reuse_distance", def.manifold_reuse_distance, "m");
     non_negative("world.restitution_threshold", def.restitution_threshold, "m s^-1");
     non_negative("world.time_to_sleep", def.time_to_sleep, "s");
     non_negative("world.linear_sleep_tolerance", def.linear_sleep_tolerance, "m s^-1");

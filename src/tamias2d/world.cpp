@@ -594,7 +594,8 @@ void World::step(double dt) {
         w.contacts.keep_all();
     } else if (w.def.enable_sleep) {
         // The islands need this step's touching contacts, and the solver bodies the islands.
-        w.contacts.update(w.bodies, w.shapes, true, w.def.speculative_distance, w.tasks);
+        w.contacts.update(w.bodies, w.shapes, true, w.def.speculative_distance,
+                          w.def.manifold_reuse_distance, w.tasks);
         w.sleep.wake_islands(w.bodies, w.contacts, w.joints);
         w.solver.prepare_bodies(w.bodies, w.loads, w.def, h);
         w.solver.prepare_joints(w.joints, w.bodies);
@@ -607,7 +608,8 @@ void World::step(double dt) {
     } else {
         w.solver.prepare_bodies(w.bodies, w.loads, w.def, h);
         w.solver.prepare_joints(w.joints, w.bodies);
-        w.contacts.update(w.bodies, w.shapes, false, w.def.speculative_distance, w.tasks);
+        w.contacts.update(w.bodies, w.shapes, false, w.def.speculative_distance,
+                          w.def.manifold_reuse_distance, w.tasks);
         w.solver.solve(w.contacts, w.joints, w.def, dt, w.tasks);
         if (guarded && w.solver.diverged() != null_index)
             w.refuse_diverged(w.solver.diverged());
@@ -1073,6 +1075,17 @@ std::uint64_t World::state_hash() const {
             hs(c.manifold.points[j].separation);
             hs(w.contacts.warm_impulses[i].normal[j]);
             hs(w.contacts.warm_impulses[i].tangent[j]);
+        }
+        if (w.def.manifold_reuse_distance > 0.0 && c.manifold.count > 0) {
+            // What a reused manifold is computed from (manifold_reuse.hpp).
+            const ManifoldBasis& b = w.contacts.bases[i];
+            for (const double x : {b.q_a.c, b.q_a.s, b.q_b.c, b.q_b.s})
+                hs(x);
+            hs(b.b_in_a);
+            for (int j = 0; j < c.manifold.count; ++j) {
+                hs(b.separation[j]);
+                hs(b.on_a[j]);
+            }
         }
     }
     return hs.h;

@@ -185,6 +185,7 @@ BOOST_AUTO_TEST_CASE(world_settings_must_be_finite, *utf::label("R4") * utf::lab
         {&WorldDef::contact_push_max_velocity, "contact_push_max_velocity"},
         {&WorldDef::linear_slop, "linear_slop"},
         {&WorldDef::speculative_distance, "speculative_distance"},
+        {&WorldDef::manifold_reuse_distance, "manifold_reuse_distance"},
         {&WorldDef::restitution_threshold, "restitution_threshold"},
     };
     for (const double bad : non_finite) {
@@ -196,6 +197,23 @@ BOOST_AUTO_TEST_CASE(world_settings_must_be_finite, *utf::label("R4") * utf::lab
             }
         }
     }
+}
+
+// Oracle: WorldDef::manifold_reuse_distance's stated range, >= 0 (0 turns reuse off); the
+// world's settings that are lengths are checked as DCX_finite's finite, non-negative values.
+BOOST_AUTO_TEST_CASE(manifold_reuse_distance_must_not_be_negative,
+                     *utf::label("R4") * utf::label("DCX_finite")) {
+    for (const double bad : {-1e-9, -0.005, -1.0}) {
+        BOOST_TEST_CONTEXT("manifold_reuse_distance = " << bad) {
+            WorldDef def;
+            def.manifold_reuse_distance = bad;
+            expect_validation_error([&] { World w(def); }, "manifold_reuse_distance", "DCX_finite");
+        }
+    }
+    WorldDef off;
+    off.manifold_reuse_distance = 0.0;
+    World w(off); // 0 is valid
+    BOOST_TEST(w.settings().manifold_reuse_distance == 0.0);
 }
 
 // Oracle: DCX_dt (srs/data_constraints.yaml): the time step is finite and > 0; substeps

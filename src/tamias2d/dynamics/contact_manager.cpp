@@ -51,12 +51,14 @@ void ContactManager::destroy(std::uint32_t i, BodyStore& bodies, const ShapeStor
         contacts[i] = contacts[last];
         warm_impulses[i] = warm_impulses[last];
         total_impulses[i] = total_impulses[last];
+        bases[i] = bases[last];
         edge_inputs[i] = edge_inputs[last];
         index_.assign(Contact::key(contacts[i].shape_a, contacts[i].shape_b), i);
     }
     contacts.pop_back();
     warm_impulses.pop_back();
     total_impulses.pop_back();
+    bases.pop_back();
     edge_inputs.pop_back();
 }
 
@@ -191,10 +193,12 @@ void ContactManager::find_new(const BodyStore& bodies, ShapeStore& shapes,
         contacts.reserve_more(1);
         warm_impulses.reserve_more(1);
         total_impulses.reserve_more(1);
+        bases.reserve_more(1);
         index_.insert(key, std::uint32_t(contacts.size()));
         contacts.push_back(c);
         warm_impulses.emplace_back();
         total_impulses.emplace_back();
+        bases.emplace_back();
     }
     pending_begin_ = pending_end_ = 0;
 }
@@ -209,12 +213,21 @@ enum class Narrowed : std::uint8_t {
     changed    ///< updated; began or stopped touching (an event, and with sleeping a wake)
 };
 
-/// \srs{R7} One contact's narrow phase: its manifold, its warm-start impulses and its edge
-/// input, all its own (so contacts may be updated on different threads).
-inline Narrowed narrow_contact(Contact& c, ContactImpulses& warm, ContactManager::EdgeInput& edge,
-                               const Shape& sa, const Shape& sb, double speculative_distance) {
+/// \srs{R7} One contact's narrow phase: its manifold, its warm-start impulses, its basis and
+/// its edge input, all its own (so contacts may be updated on different threads).
+inline Narrowed narrow_contact(Contact& c, ContactImpulses& warm, ManifoldBasis& basis,
+                               ContactManager::EdgeInput& edge, const Shape& sa, const Shape& sb,
+                               double speculative_distance, double reuse_distance) {
     if (!overlaps(sa.fat_box, sb.fat_box))
         return Narrowed::separated;
+    // A touching manifold whose bodies have barely moved against each other is kept, with the
+    // same points and so the same warm start (manifold_reuse.hpp).
+    if (reuse_distance > 0.0 && c.manifold.count > 0 &&
+        reuse_manifold(c.manifold, basis, sa.body_xf.q, sb.body_xf.q, sa.body_center,
+                       sb.body_center, reuse_distance)) {
+        edge = edge_input(c);
+        return Narrowed::same;
+    }
     const CollideInput in{sa.body_xf, sa.body_center, sb.body_xf, sb.body_center,
                           speculative_distance};
     // Warm starting needs only the old points' ids and impulses: the manifold itself is
@@ -243,6 +256,8 @@ inline Narrowed narrow_contact(Contact& c, ContactImpulses& warm, ContactManager
         warm.normal[j] = normal;
         warm.tangent[j] = tangent;
     }
+    if (reuse_distance > 0.0)
+        record_basis(basis, c.manifold, sa.body_xf.q, sb.body_xf.q, sa.body_center, sb.body_center);
     const bool was = c.touching;
     c.touching = c.manifold.count > 0;
     edge = edge_input(c);
@@ -262,13 +277,15 @@ inline void prefetch_shapes(const Contact& c, const LargeArray<Shape>& shape) {
 } // namespace
 
 void ContactManager::update(BodyStore& bodies, const ShapeStore& shapes, bool sleeping,
-                            double speculative_distance, const StepTasks& tasks) {
+                            double speculative_distance, double reuse_distance,
+                            const StepTasks& tasks) {
     doomed_.clear();
     const auto count = std::uint32_t(contacts.size()); // the loop adds and removes none
     edge_inputs.resize(count);
     constexpr std::uint32_t block = 128; // contacts: ~5 us of work
     if (tasks.parallel() && count > block) {
-        update_in_blocks(bodies, shapes, sleeping, speculative_distance, tasks, block);
+        update_in_blocks(bodies, shapes, sleeping, speculative_distance, reuse_distance, tasks,
+                         block);
     } else {
         const auto& shape = shapes.shapes;
         constexpr std::uint32_t ahead = 6; // contacts: the shapes' lines arrive before use
@@ -282,8 +299,9 @@ void ContactManager::update(BodyStore& bodies, const ShapeStore& shapes, bool sl
             Contact& c = contacts[i];
             if (sleeping && !bodies.active(c.body_a) && !bodies.active(c.body_b))
                 continue; // its edge input stands too, from its last update
-            const Narrowed r = narrow_contact(c, warm_impulses[i], edge_inputs[i], shape[c.shape_a],
-                                              shape[c.shape_b], speculative_distance);
+            const Narrowed r =
+                narrow_contact(c, warm_impulses[i], bases[i], edge_inputs[i], shape[c.shape_a],
+                               shape[c.shape_b], speculative_distance, reuse_distance);
             if (r == Narrowed::separated)
                 doomed_.push_back(i);
             else if (r == Narrowed::changed)
@@ -313,8 +331,8 @@ void ContactManager::touch_changed(const Contact& c, BodyStore& bodies, const Sh
 // second pass updates such a contact then, from the same inputs (the shapes do not change in
 // between), so the same contacts are updated, to the same bits, as by the serial loop.
 void ContactManager::update_in_blocks(BodyStore& bodies, const ShapeStore& shapes, bool sleeping,
-                                      double speculative_distance, const StepTasks& tasks,
-                                      std::uint32_t block) {
+                                      double speculative_distance, double reuse_distance,
+                                      const StepTasks& tasks, std::uint32_t block) {
     const auto& shape = shapes.shapes;
     const auto count = std::uint32_t(contacts.size());
     if (outcomes_.size() < count)
@@ -334,9 +352,9 @@ void ContactManager::update_in_blocks(BodyStore& bodies, const ShapeStore& shape
                 outcomes_[i] = std::uint8_t(Narrowed::kept);
                 continue;
             }
-            outcomes_[i] =
-                std::uint8_t(narrow_contact(c, warm_impulses[i], edge_inputs[i], shape[c.shape_a],
-                                            shape[c.shape_b], speculative_distance));
+            outcomes_[i] = std::uint8_t(
+                narrow_contact(c, warm_impulses[i], bases[i], edge_inputs[i], shape[c.shape_a],
+                               shape[c.shape_b], speculative_distance, reuse_distance));
         }
     };
     tasks.for_each_block(blocks_of(count, block), run);
@@ -346,8 +364,8 @@ void ContactManager::update_in_blocks(BodyStore& bodies, const ShapeStore& shape
         if (r == Narrowed::kept) {
             if (!bodies.active(c.body_a) && !bodies.active(c.body_b))
                 continue;
-            r = narrow_contact(c, warm_impulses[i], edge_inputs[i], shape[c.shape_a],
-                               shape[c.shape_b], speculative_distance);
+            r = narrow_contact(c, warm_impulses[i], bases[i], edge_inputs[i], shape[c.shape_a],
+                               shape[c.shape_b], speculative_distance, reuse_distance);
         }
         if (r == Narrowed::separated)
             doomed_.push_back(i);

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "tamias2d/collision/manifold_reuse.hpp"
 #include "tamias2d/contact_info.hpp"
 #include "tamias2d/dynamics/constraint_graph.hpp"
 #include "tamias2d/dynamics/contact.hpp"
@@ -45,6 +46,8 @@ class ContactManager {
     /// Per contact, indexed alike: the accumulated impulses (warm start) and the last step's
     /// totals (contact report).
     LargeArray<ContactImpulses> warm_impulses, total_impulses;
+    /// Per contact, indexed alike: the poses its manifold was computed at (manifold reuse).
+    LargeArray<ManifoldBasis> bases;
     std::vector<ContactEvent> begin_events, end_events;
     /// The user's filter, asked for each new pair the rules admit (empty: none).
     std::function<bool(ShapeId, ShapeId)> custom_filter;
@@ -72,9 +75,11 @@ class ContactManager {
     /// destroyed. With sleeping on, a contact between bodies that do not move this step (asleep
     /// or static) is kept as it is: neither has moved since it was last updated. With more
     /// than one worker the contacts are updated in parallel blocks; the results, the events and
-    /// their order are those of one thread, bit for bit.
+    /// their order are those of one thread, bit for bit. A touching contact whose bodies have
+    /// moved less than `reuse_distance` (m) against each other since its manifold was computed
+    /// keeps that manifold, its separations brought up to date (manifold_reuse.hpp; 0: never).
     void update(BodyStore& bodies, const ShapeStore& shapes, bool sleeping,
-                double speculative_distance, const StepTasks& tasks);
+                double speculative_distance, double reuse_distance, const StepTasks& tasks);
     /// Every body asleep: every contact stands as it is, its edge input included.
     void keep_all() { edge_inputs.resize(contacts.size()); }
     /// Destroys every contact of shape s (its end events and wakes included).
@@ -106,7 +111,8 @@ class ContactManager {
     /// update's parallel form: the contacts' own work in blocks of `block`, then the rest in
     /// contact order.
     void update_in_blocks(BodyStore& bodies, const ShapeStore& shapes, bool sleeping,
-                          double speculative_distance, const StepTasks& tasks, std::uint32_t block);
+                          double speculative_distance, double reuse_distance,
+                          const StepTasks& tasks, std::uint32_t block);
     /// A contact began or stopped touching: its event, and with sleeping its bodies woken.
     void touch_changed(const Contact& c, BodyStore& bodies, const ShapeStore& shapes,
                        bool sleeping);

@@ -1243,8 +1243,8 @@ WorldDef parse_world(const Ctx& ctx, const ojson& v, const std::string& ptr) {
     check_keys(ctx, v, ptr,
                {"gravity", "substeps", "contact_hertz", "contact_damping_ratio",
                 "contact_push_max_velocity", "linear_slop", "speculative_distance",
-                "restitution_threshold", "enable_sleep", "time_to_sleep", "linear_sleep_tolerance",
-                "angular_sleep_tolerance", "enable_continuous"},
+                "manifold_reuse_distance", "restitution_threshold", "enable_sleep", "time_to_sleep",
+                "linear_sleep_tolerance", "angular_sleep_tolerance", "enable_continuous"},
                "world settings");
     WorldDef w;
     opt_vec2(ctx, v, ptr, "gravity", w.gravity); // DCI_g
@@ -1258,6 +1258,7 @@ WorldDef parse_world(const Ctx& ctx, const ojson& v, const std::string& ptr) {
     opt_number(ctx, v, ptr, "contact_push_max_velocity", w.contact_push_max_velocity);
     opt_number(ctx, v, ptr, "linear_slop", w.linear_slop);
     opt_number(ctx, v, ptr, "speculative_distance", w.speculative_distance);
+    opt_number(ctx, v, ptr, "manifold_reuse_distance", w.manifold_reuse_distance);
     opt_number(ctx, v, ptr, "restitution_threshold", w.restitution_threshold);
     if (const ojson* e = find(v, "enable_sleep"))
         w.enable_sleep = as_bool(ctx, *e, child(ptr, "enable_sleep"), "enable_sleep");
@@ -1781,6 +1782,7 @@ std::string scene_to_json(const Scene& scene, int indent) {
                   {"contact_push_max_velocity", w.contact_push_max_velocity},
                   {"linear_slop", w.linear_slop},
                   {"speculative_distance", w.speculative_distance},
+                  {"manifold_reuse_distance", w.manifold_reuse_distance},
                   {"restitution_threshold", w.restitution_threshold},
                   {"enable_sleep", w.enable_sleep},
                   {"time_to_sleep", w.time_to_sleep},
