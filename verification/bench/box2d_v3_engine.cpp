@@ -27,13 +27,15 @@ b2Rot rotation(double angle) {
 
 class Box2DV3Engine final : public Engine {
   public:
-    Box2DV3Engine(const SceneDesc& s, int workers) : dt_(f32(s.dt)) {
+    Box2DV3Engine(const SceneDesc& s, int workers, double recycle_distance) : dt_(f32(s.dt)) {
         b2WorldDef wd = b2DefaultWorldDef(); // contact 30 Hz, continuous collision on
         wd.gravity = vec(s.gravity);
         wd.enableSleep = s.sleep; // a body falls asleep after b2_timeToSleep, 0.5 s
         wd.workerCount = workers; // 1 in tamias_bench, as the other engines; above 1, v3's
                                   // own scheduler (no task callbacks given)
         world_ = b2CreateWorld(&wd);
+        if (recycle_distance >= 0.0)
+            b2World_SetContactRecycleDistance(world_, f32(recycle_distance));
         bodies_.reserve(s.bodies.size());
         for (const BodyDesc& d : s.bodies) {
             b2BodyDef bd = b2DefaultBodyDef();
@@ -88,8 +90,9 @@ class Box2DV3Engine final : public Engine {
 
 } // namespace
 
-std::unique_ptr<Engine> make_box2d_v3_engine(const SceneDesc& scene, int workers) {
-    return std::make_unique<Box2DV3Engine>(scene, workers);
+std::unique_ptr<Engine> make_box2d_v3_engine(const SceneDesc& scene, int workers,
+                                             double recycle_distance) {
+    return std::make_unique<Box2DV3Engine>(scene, workers, recycle_distance);
 }
 
 } // namespace tamias_bench

@@ -6,10 +6,11 @@
 // The worker times its own steps with its thread's CPU clock (Engine::timed_steps, the same code
 // as for the engines inside tamias_bench) and reports its live heap after every command.
 //
-//   tamias_bench_v3_<build> [--workers N]
+//   tamias_bench_v3_<build> [--workers N] [--recycle-distance D]
 //
 // N (default 1) is v3's worker count (b2WorldDef::workerCount); tamias_thread_bench starts a
-// worker per count it measures, and reads the wall time of Engine::timed_steps.
+// worker per count it measures, and reads the wall time of Engine::timed_steps. D (m) replaces
+// v3's contact recycling distance (0: off), to measure what recycling gives it.
 #include <malloc.h>
 #include <unistd.h>
 
@@ -35,7 +36,7 @@ double live_heap_bytes() {
 
 /// Runs one command and writes its results after the status byte.
 void run(wire::Op op, wire::Reader& in, wire::Writer& results, std::unique_ptr<Engine>& engine,
-         SceneDesc& scene, int workers) {
+         SceneDesc& scene, int workers, double recycle_distance) {
     const auto engine_ref = [&]() -> Engine& {
         if (!engine)
             throw std::runtime_error("no engine built");
@@ -45,7 +46,7 @@ void run(wire::Op op, wire::Reader& in, wire::Writer& results, std::unique_ptr<E
     case wire::Op::build:
         engine.reset();
         scene = wire::get_scene(in);
-        engine = make_box2d_v3_engine(scene, workers);
+        engine = make_box2d_v3_engine(scene, workers, recycle_distance);
         return;
     case wire::Op::timed: {
         const int n = in.get<std::int32_t>();
@@ -77,11 +78,14 @@ void run(wire::Op op, wire::Reader& in, wire::Writer& results, std::unique_ptr<E
 
 int main(int argc, char** argv) {
     int workers = 1;
+    double recycle_distance = -1.0; // v3's default
     for (int i = 1; i < argc; ++i) {
         if (std::strcmp(argv[i], "--workers") == 0 && i + 1 < argc) {
             workers = std::atoi(argv[++i]);
+        } else if (std::strcmp(argv[i], "--recycle-distance") == 0 && i + 1 < argc) {
+            recycle_distance = std::atof(argv[++i]);
         } else {
-            std::fprintf(stderr, "usage: %s [--workers N]\n", argv[0]);
+            std::fprintf(stderr, "usage: %s [--workers N] [--recycle-distance D]\n", argv[0]);
             return 2;
         }
     }
@@ -106,7 +110,7 @@ int main(int argc, char** argv) {
             std::uint8_t status = 0;
             std::string error;
             try {
-                run(op, in, results, engine, scene, workers);
+                run(op, in, results, engine, scene, workers, recycle_distance);
             } catch (const std::exception& ex) {
                 status = 1;
                 error = ex.what();

@@ -41,7 +41,7 @@ std::string worker_path(EngineId id) {
 /// One worker process and the two pipes to it.
 class Worker {
   public:
-    Worker(const std::string& path, int threads) : in_(-1) {
+    Worker(const std::string& path, int threads, const std::vector<std::string>& extra) : in_(-1) {
         int to_child[2], from_child[2];
         if (::pipe2(to_child, O_CLOEXEC) != 0)
             throw std::runtime_error("pipe failed");
@@ -54,9 +54,13 @@ class Worker {
         posix_spawn_file_actions_init(&actions);
         posix_spawn_file_actions_adddup2(&actions, to_child[0], STDIN_FILENO);
         posix_spawn_file_actions_adddup2(&actions, from_child[1], STDOUT_FILENO);
-        std::string arg0 = path, arg1 = "--workers", arg2 = std::to_string(threads);
-        char* argv[] = {arg0.data(), arg1.data(), arg2.data(), nullptr};
-        const int rc = ::posix_spawn(&pid_, path.c_str(), &actions, nullptr, argv, environ);
+        std::vector<std::string> args = {path, "--workers", std::to_string(threads)};
+        args.insert(args.end(), extra.begin(), extra.end());
+        std::vector<char*> argv;
+        for (std::string& a : args)
+            argv.push_back(a.data());
+        argv.push_back(nullptr);
+        const int rc = ::posix_spawn(&pid_, path.c_str(), &actions, nullptr, argv.data(), environ);
         posix_spawn_file_actions_destroy(&actions);
         ::close(to_child[0]);
         ::close(from_child[1]);
@@ -110,6 +114,8 @@ class Worker {
     double heap_ = 0.0;
     std::string gone_;
 };
+
+std::vector<std::string> worker_arguments; ///< set_remote_engine_arguments
 
 /// The running workers by engine and v3 worker count (tamias_bench: 1 each).
 std::map<std::pair<EngineId, int>, std::unique_ptr<Worker>> workers;
@@ -193,7 +199,7 @@ std::string start_remote_engine(EngineId id, int threads) {
     // A worker that has gone must not take tamias_bench with it when a command is written.
     std::signal(SIGPIPE, SIG_IGN);
     try {
-        auto w = std::make_unique<Worker>(path, threads);
+        auto w = std::make_unique<Worker>(path, threads, worker_arguments);
         wire::Writer c = command(wire::Op::release); // answers once the worker runs
         w->call(c);
         workers[k] = std::move(w);
@@ -201,6 +207,10 @@ std::string start_remote_engine(EngineId id, int threads) {
         return std::string("not measured: ") + ex.what();
     }
     return {};
+}
+
+void set_remote_engine_arguments(std::vector<std::string> arguments) {
+    worker_arguments = std::move(arguments);
 }
 
 double remote_heap_bytes(EngineId id) {

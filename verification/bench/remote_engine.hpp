@@ -11,6 +11,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "bench_engines.hpp"
 
@@ -24,6 +25,10 @@ bool is_remote(EngineId id);
 /// otherwise why the engine is not measured (not built, no AVX2 on this machine, the worker failed
 /// to start).
 std::string start_remote_engine(EngineId id, int threads = 1);
+
+/// Arguments added to every worker started from now on (tamias_thread_bench's
+/// --v3-recycle-distance: "--recycle-distance D").
+void set_remote_engine_arguments(std::vector<std::string> arguments);
 
 /// The one-thread worker's live heap (bytes) after its last command; 0 when it is not running.
 double remote_heap_bytes(EngineId id);

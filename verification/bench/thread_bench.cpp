@@ -6,7 +6,7 @@
 // (all threads: what the workers' waiting and spinning cost).
 //
 //   tamias_thread_bench [--scenes pyramid40,large_pyramid,rain] [--threads 1,2] [--reps 7]
-//                       [--engines tamias,v3_sse2,v3_avx2]
+//                       [--engines tamias,v3_sse2,v3_avx2] [--v3-recycle-distance D]
 //
 // Box2D v3 runs in its engine workers (remote_engine.hpp), one process per build and worker
 // count, which time their steps themselves; `v3` names both builds, and a build that was not made
@@ -14,7 +14,9 @@
 // built once per engine and worker count, stepped 10 times untimed, then timed in blocks that
 // alternate between all of them, repetition by repetition; the rain is rebuilt for every
 // repetition and timed over its whole run (1000 steps), alternating the same way. The figure is
-// the median over the repetitions.
+// the median over the repetitions. --v3-recycle-distance sets v3's contact recycling distance
+// (m; 0: off; b2World_SetContactRecycleDistance) in place of its default (0.05 m), to measure
+// what that reuse of manifolds gives it (docs/performance.md, "Against Box2D v3").
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -94,7 +96,7 @@ std::vector<std::string> split(const std::string& s) {
 
 [[noreturn]] void usage() {
     std::fprintf(stderr, "usage: tamias_thread_bench [--scenes a,b] [--threads 1,2] [--reps N] "
-                         "[--engines tamias,v3_sse2,v3_avx2]\n");
+                         "[--engines tamias,v3_sse2,v3_avx2] [--v3-recycle-distance D]\n");
     std::exit(2);
 }
 
@@ -120,6 +122,8 @@ int main(int argc, char** argv) {
             reps = std::atoi(v.c_str());
         } else if (a == "--engines") {
             engine_names = split(v);
+        } else if (a == "--v3-recycle-distance") {
+            set_remote_engine_arguments({"--recycle-distance", v});
         } else {
             usage();
         }
