@@ -65,6 +65,7 @@ struct SceneDesc {
     // Quality probes.
     std::vector<int> tops;     ///< pyramid: the top box of each pyramid
     double inner_half_w = 0.0; ///< rain: container inner half width (m), floor at y = 0
+    double wall_top = 0.0;     ///< rain: height of the container's walls (m), open above
     double box = 1.0;          ///< box side (m)
     double speed = 0.0;        ///< elastic: initial speed of each box (m s^-1)
     /// Sleeping on in every engine, each with a 0.5 s time to sleep (off in the floors' scenes).
@@ -170,6 +171,7 @@ inline SceneDesc make_rain(const std::string& name, int count, double width, dou
     const double box = 0.5, spacing = 1.5 * box, jitter = 0.2 * box, wall = 1.0;
     s.box = box;
     s.inner_half_w = 0.5 * width;
+    s.wall_top = height;
     BodyDesc c;
     c.dynamic = false;
     c.boxes.push_back({{0.0, -0.5 * wall}, 0.5 * (width + 2.0 * wall), 0.5 * wall, 0.0});
