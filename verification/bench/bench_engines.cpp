@@ -50,8 +50,8 @@ void corners(const BoxPart& p, V2 out[4]) {
 // ---------------------------------------------------------------------------------- Tamias2D
 class TamiasEngine final : public Engine {
   public:
-    explicit TamiasEngine(const SceneDesc& s, int workers = 1)
-        : dt_(s.dt), world_(world_def(s, workers)) {
+    explicit TamiasEngine(const SceneDesc& s, int workers = 1, double manifold_reuse = -1.0)
+        : dt_(s.dt), world_(world_def(s, workers, manifold_reuse)) {
         ids_.reserve(s.bodies.size());
         for (const BodyDesc& d : s.bodies) {
             tamias2d::BodyDef bd;
@@ -88,9 +88,11 @@ class TamiasEngine final : public Engine {
     std::uint64_t state_hash() const override { return world_.state_hash(); }
 
   private:
-    static tamias2d::WorldDef world_def(const SceneDesc& s, int workers) {
+    static tamias2d::WorldDef world_def(const SceneDesc& s, int workers, double manifold_reuse) {
         tamias2d::WorldDef def;
-        def.workers = workers; // 1 in the peer benchmark: every engine on one thread
+        def.workers = workers;     // 1 in the peer benchmark: every engine on one thread
+        if (manifold_reuse >= 0.0) // tamias_thread_bench's A/B; otherwise the default
+            def.manifold_reuse_distance = manifold_reuse;
         def.gravity = {s.gravity.x, s.gravity.y};
         def.enable_sleep = s.sleep; // time_to_sleep 0.5 s by default
         return def;
@@ -248,8 +250,9 @@ class Box2DEngine final : public Engine {
 
 } // namespace
 
-std::unique_ptr<Engine> make_tamias_engine(const SceneDesc& scene, int workers) {
-    return std::make_unique<TamiasEngine>(scene, workers);
+std::unique_ptr<Engine> make_tamias_engine(const SceneDesc& scene, int workers,
+                                           double manifold_reuse) {
+    return std::make_unique<TamiasEngine>(scene, workers, manifold_reuse);
 }
 
 std::unique_ptr<Engine> make_engine(EngineId id, const SceneDesc& scene) {

@@ -7,6 +7,7 @@
 //
 //   tamias_thread_bench [--scenes pyramid40,large_pyramid,rain] [--threads 1,2] [--reps 7]
 //                       [--engines tamias,v3_sse2,v3_avx2] [--v3-recycle-distance D]
+//                       [--manifold-reuse D]
 //
 // Box2D v3 runs in its engine workers (remote_engine.hpp), one process per build and worker
 // count, which time their steps themselves; `v3` names both builds, and a build that was not made
@@ -16,7 +17,8 @@
 // repetition and timed over its whole run (1000 steps), alternating the same way. The figure is
 // the median over the repetitions. --v3-recycle-distance sets v3's contact recycling distance
 // (m; 0: off; b2World_SetContactRecycleDistance) in place of its default (0.05 m), to measure
-// what that reuse of manifolds gives it (docs/performance.md, "Against Box2D v3").
+// what that reuse of manifolds gives it (docs/performance.md, "Against Box2D v3");
+// --manifold-reuse sets Tamias2D's WorldDef::manifold_reuse_distance (m; 0: off) likewise.
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -73,8 +75,9 @@ std::pair<double, double> timed(Engine& e, int n) {
 struct Run {
     EngineId engine;
     int threads;
+    double manifold_reuse; ///< Tamias2D's, -1: the default
     std::unique_ptr<Engine> make(const SceneDesc& d) const {
-        return engine == EngineId::tamias ? make_tamias_engine(d, threads)
+        return engine == EngineId::tamias ? make_tamias_engine(d, threads, manifold_reuse)
                                           : make_remote_engine(engine, d, threads);
     }
 };
@@ -96,7 +99,8 @@ std::vector<std::string> split(const std::string& s) {
 
 [[noreturn]] void usage() {
     std::fprintf(stderr, "usage: tamias_thread_bench [--scenes a,b] [--threads 1,2] [--reps N] "
-                         "[--engines tamias,v3_sse2,v3_avx2] [--v3-recycle-distance D]\n");
+                         "[--engines tamias,v3_sse2,v3_avx2] [--v3-recycle-distance D] "
+                         "[--manifold-reuse D]\n");
     std::exit(2);
 }
 
@@ -107,6 +111,7 @@ int main(int argc, char** argv) {
     std::vector<int> threads = {1, 2};
     std::vector<std::string> engine_names = {"tamias"};
     int reps = 7;
+    double manifold_reuse = -1.0; // the default
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         if (i + 1 >= argc)
@@ -122,6 +127,8 @@ int main(int argc, char** argv) {
             reps = std::atoi(v.c_str());
         } else if (a == "--engines") {
             engine_names = split(v);
+        } else if (a == "--manifold-reuse") {
+            manifold_reuse = std::atof(v.c_str());
         } else if (a == "--v3-recycle-distance") {
             set_remote_engine_arguments({"--recycle-distance", v});
         } else {
@@ -155,7 +162,7 @@ int main(int argc, char** argv) {
     std::vector<Run> runs;
     for (const EngineId e : engines)
         for (const int t : threads)
-            runs.push_back({e, t});
+            runs.push_back({e, t, manifold_reuse});
     std::printf("%-14s %-14s %7s %12s %12s %9s %12s %18s\n", "scene", "engine", "workers",
                 "wall ms/step", "cpu ms/step", "speed-up", "Tamias2D/it", "state hash");
     for (const std::string& name : names) {
