@@ -36,8 +36,13 @@ constexpr int spins_before_sleep = 4000;
 
 ThreadPool::ThreadPool(int workers) {
     threads_.reserve(std::size_t(workers - 1));
+    // Each thread starts from the bell as it is now, not as it finds it once running: a loop or
+    // the destructor may ring before a new thread first reads it, and a thread that took that
+    // ring for its starting point would sleep through it (the destructor's join then waits
+    // forever).
+    const std::uint32_t start = bell_.load();
     for (int k = 1; k < workers; ++k)
-        threads_.emplace_back([this, k] { serve(k); });
+        threads_.emplace_back([this, k, start] { serve(k, start); });
 }
 
 ThreadPool::~ThreadPool() {
@@ -85,8 +90,7 @@ void ThreadPool::take_items(int worker) {
     }
 }
 
-void ThreadPool::serve(int worker) {
-    std::uint32_t heard = bell_.load(std::memory_order_acquire);
+void ThreadPool::serve(int worker, std::uint32_t heard) {
     for (;;) {
         int spin = 0;
         while (bell_.load(std::memory_order_acquire) == heard && spin++ < spins_before_sleep)

@@ -29,8 +29,9 @@ class ThreadPool {
     void run(TaskCallback task, int item_count, void* context);
 
   private:
-    /// The pool thread numbered `worker` (1 ...): sleeps until a loop starts, takes items.
-    void serve(int worker);
+    /// The pool thread numbered `worker` (1 ...): sleeps until the bell differs from `heard`
+    /// (a loop starts, or the pool stops), takes items.
+    void serve(int worker, std::uint32_t heard);
     /// Takes and runs the current loop's items until none is left.
     void take_items(int worker);
 
