@@ -446,32 +446,26 @@ SceneResult run_transient(const SceneSpec& spec, const Options& opt) {
                                    " s CPU budget from the smaller sizes";
         }
     }
-    if (spec.joints) {
-        // Drift from a run of its own, so that sampling every joint after every step never
-        // falls inside a timed interval; the engines are deterministic, so the timed runs
-        // take the same path.
+    // Figures sampled after every step (the joints' drift, how rain boxes left) come from a run
+    // of their own, so that the sampling never falls inside a timed interval; the engines are
+    // deterministic, so the timed runs take the same path.
+    const auto sampled_run = [&](auto&& measure) {
         for (EngineId id : opt.engines) {
             EngineResult& r = res.engines[std::size_t(id)];
             try {
                 const std::unique_ptr<Engine> e = build_engine(id, scene);
-                r.drift = measure_drift(scene, *e, res.steps);
+                measure(r, *e);
             } catch (const std::exception& ex) {
                 r.error = std::string("failed: ") + ex.what();
             }
         }
-    }
-    if (scene.kind == SceneKind::rain && !spec.scaling) {
-        // How boxes left, from a run of its own sampled after every step (as the drift).
-        for (EngineId id : opt.engines) {
-            EngineResult& r = res.engines[std::size_t(id)];
-            try {
-                const std::unique_ptr<Engine> e = build_engine(id, scene);
-                r.exits = measure_exits(scene, *e, res.steps);
-            } catch (const std::exception& ex) {
-                r.error = std::string("failed: ") + ex.what();
-            }
-        }
-    }
+    };
+    if (spec.joints)
+        sampled_run(
+            [&](EngineResult& r, Engine& e) { r.drift = measure_drift(scene, e, res.steps); });
+    if (scene.kind == SceneKind::rain && !spec.scaling)
+        sampled_run(
+            [&](EngineResult& r, Engine& e) { r.exits = measure_exits(scene, e, res.steps); });
     constexpr int chunk = 10; // heap sampled and budget checked between chunks, untimed
     for (int rep = 0; rep < opt.reps; ++rep) {
         for (EngineId id : rotated(opt.engines, rep)) {
