@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "reliability/reliability_support.hpp"
+#include "support/pyramid.hpp"
 #include "tamias2d/errors.hpp"
 #include "tamias2d/world.hpp"
 
@@ -122,19 +123,6 @@ void ground(World& world, double width, double y = -0.5) {
     world.create_shape(world.create_body(g), box_shape(width, 1.0, wood));
 }
 
-/// A pyramid of `base` rows of touching 1 m boxes on the ground.
-void pyramid(World& world, int base) {
-    ground(world, 2.0 * base + 10.0);
-    for (int row = 0; row < base; ++row) {
-        const int n = base - row;
-        for (int col = 0; col < n; ++col) {
-            BodyDef d;
-            d.position = {col - 0.5 * (n - 1), 0.5 + row};
-            world.create_shape(world.create_body(d), box_shape(1.0, 1.0, wood));
-        }
-    }
-}
-
 /// 1200 boxes of 0.5 m in 10 jittered rows falling into an open box, and a heavy block dropped
 /// from high up that lands on the pile once much of it sleeps (wakes in the narrow phase).
 void rain(World& world) {
@@ -216,7 +204,7 @@ BOOST_AUTO_TEST_CASE(pyramid_is_bitwise_identical_on_every_thread_count,
     WorldDef def;
     def.gravity = {0.0, -10.0};
     check_every_threading(
-        def, [](World& w) { pyramid(w, 48); }, 10 * step_scale);
+        def, [](World& w) { test::build_pyramid(w, 48); }, 10 * step_scale);
 }
 
 // Oracle: as above, with sleeping on: islands fall asleep, and the block dropped on the pile
