@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <new>
 
+#include "support/pyramid.hpp"
 #include "tamias2d/memory/large_array.hpp"
 #include "tamias2d/world.hpp"
 
@@ -116,23 +117,7 @@ namespace {
 using namespace tamias2d;
 namespace utf = boost::unit_test;
 
-/// A pyramid of `base` rows of unit boxes (density 1, friction 0.6) on a static ground, rows
-/// touching.
-void build_pyramid(World& world, int base) {
-    const Material m{1.0, 0.0, 0.6};
-    BodyDef ground;
-    ground.type = BodyType::static_body;
-    ground.position = {0.0, -0.5};
-    world.create_shape(world.create_body(ground), box_shape(2.0 * base + 10.0, 1.0, m));
-    for (int row = 0; row < base; ++row) {
-        const int n = base - row;
-        for (int col = 0; col < n; ++col) {
-            BodyDef d;
-            d.position = {col - 0.5 * (n - 1), 0.5 + row};
-            world.create_shape(world.create_body(d), box_shape(1.0, 1.0, m));
-        }
-    }
-}
+using test::build_pyramid;
 
 struct Counted {
     std::size_t allocations, deallocations;
@@ -147,6 +132,17 @@ template <class F> Counted count_heap(F&& f) {
     return {allocations.load(), deallocations.load()};
 }
 
+/// `steps` steps of `world` at 60 Hz.
+void run_steps(World& world, int steps) {
+    for (int i = 0; i < steps; ++i)
+        world.step(1.0 / 60.0);
+}
+
+/// The heap calls of `steps` steps of `world`.
+Counted count_steps(World& world, int steps) {
+    return count_heap([&] { run_steps(world, steps); });
+}
+
 } // namespace
 
 BOOST_AUTO_TEST_SUITE(allocation)
@@ -157,9 +153,7 @@ BOOST_AUTO_TEST_SUITE(allocation)
 BOOST_AUTO_TEST_CASE(settled_world_steps_without_allocating, *utf::label("performance")) {
     World world(WorldDef{.gravity = {0.0, -10.0}});
     build_pyramid(world, 10);
-    const double dt = 1.0 / 60.0;
-    for (int i = 0; i < 300; ++i)
-        world.step(dt);
+    run_steps(world, 300);
 
     // Positive control, on a world of its own: the counting operator new is the one the
     // library calls.
@@ -167,10 +161,7 @@ BOOST_AUTO_TEST_CASE(settled_world_steps_without_allocating, *utf::label("perfor
     const Counted control = count_heap([&] { scratch.create_body(BodyDef{}); });
     BOOST_TEST_REQUIRE(control.allocations > 0u);
 
-    const Counted steady = count_heap([&] {
-        for (int i = 0; i < 100; ++i)
-            world.step(dt);
-    });
+    const Counted steady = count_steps(world, 100);
     BOOST_TEST(steady.allocations == 0u);
     BOOST_TEST(steady.deallocations == 0u);
     BOOST_TEST_MESSAGE("100 settled steps: " << steady.allocations << " allocations, "
@@ -195,13 +186,8 @@ BOOST_AUTO_TEST_CASE(jointed_world_steps_without_allocating, *utf::label("perfor
             RevoluteJointDef{.body_a = previous, .body_b = b, .anchor = {double(k), 0.0}});
         previous = b;
     }
-    const double dt = 1.0 / 60.0;
-    for (int i = 0; i < 600; ++i)
-        world.step(dt);
-    const Counted steady = count_heap([&] {
-        for (int i = 0; i < 100; ++i)
-            world.step(dt);
-    });
+    run_steps(world, 600);
+    const Counted steady = count_steps(world, 100);
     BOOST_TEST(steady.allocations == 0u);
     BOOST_TEST(steady.deallocations == 0u);
 }
@@ -216,13 +202,8 @@ BOOST_AUTO_TEST_CASE(settled_world_steps_on_two_workers_without_allocating,
     def.workers = 2;
     World world(def);
     build_pyramid(world, 48);
-    const double dt = 1.0 / 60.0;
-    for (int i = 0; i < 120; ++i)
-        world.step(dt);
-    const Counted steady = count_heap([&] {
-        for (int i = 0; i < 50; ++i)
-            world.step(dt);
-    });
+    run_steps(world, 120);
+    const Counted steady = count_steps(world, 50);
     BOOST_TEST(steady.allocations == 0u);
     BOOST_TEST(steady.deallocations == 0u);
 }
@@ -248,16 +229,11 @@ BOOST_AUTO_TEST_CASE(large_world_steps_without_mapping, *utf::label("performance
             world.create_shape(world.create_body(d), box_shape(1.0, 1.0, m));
         }
     }
-    const double dt = 1.0 / 60.0;
-    for (int i = 0; i < 30; ++i)
-        world.step(dt);
+    run_steps(world, 30);
     const LargeArrayStats settled = large_array_stats();
     BOOST_TEST_REQUIRE(settled.maps > before.maps);
 
-    const Counted steady = count_heap([&] {
-        for (int i = 0; i < 20; ++i)
-            world.step(dt);
-    });
+    const Counted steady = count_steps(world, 20);
     const LargeArrayStats after = large_array_stats();
     BOOST_TEST(steady.allocations == 0u);
     BOOST_TEST(steady.deallocations == 0u);
