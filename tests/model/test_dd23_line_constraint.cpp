@@ -15,6 +15,23 @@ namespace dd20 = tamias2d::model::dd20;
 namespace dd22 = tamias2d::model::dd22;
 namespace dd23 = tamias2d::model::dd23;
 
+namespace {
+
+/// Two movable bodies with non-zero arms, so that the line and the angle are coupled (k12 != 0).
+struct CoupledPair {
+    dd23::InverseInertia a, b;
+    Length arm_A, arm_B;
+};
+
+CoupledPair coupled_pair() {
+    return {{InverseMass::from_value(0.5), InverseMomentOfInertia::from_value(1.5)},
+            {InverseMass::from_value(2.0), InverseMomentOfInertia::from_value(0.7)},
+            Length::from_value(0.8),
+            Length::from_value(-0.3)};
+}
+
+} // namespace
+
 BOOST_AUTO_TEST_SUITE(dd23_line_constraint)
 
 // Oracle: hand derivation. d = (3, 4), r_A = (1, 0), r_B = (0, 2), a = (1, 0), a_perp = (0, 1):
@@ -37,11 +54,7 @@ BOOST_AUTO_TEST_CASE(line_hand_values, *utf::label("DD23")) {
 // (lambda along a_perp as DD20 applies an axial impulse, Lambda about z as DD22), the line's
 // velocity error and the joint speed are both zero.
 BOOST_AUTO_TEST_CASE(rigid_block_stops_line_and_angle, *utf::label("DD23")) {
-    const dd23::InverseInertia a{InverseMass::from_value(0.5),
-                                 InverseMomentOfInertia::from_value(1.5)};
-    const dd23::InverseInertia b{InverseMass::from_value(2.0),
-                                 InverseMomentOfInertia::from_value(0.7)};
-    const auto arm_A = Length::from_value(0.8), arm_B = Length::from_value(-0.3);
+    const auto [a, b, arm_A, arm_B] = coupled_pair();
     const Vec2<double> n{0.6, 0.8};
     dd20::Velocities A{vec_from_values<Velocity>(1.0, -2.0), AngularVelocity::from_value(0.4)};
     dd20::Velocities B{vec_from_values<Velocity>(-0.5, 3.0), AngularVelocity::from_value(-1.2)};
@@ -59,11 +72,7 @@ BOOST_AUTO_TEST_CASE(rigid_block_stops_line_and_angle, *utf::label("DD23")) {
 // the soft block impulse is the rigid one (whose defining property the case above checks)
 // scaled by mu, less gamma times what each row has accumulated (here of opposite signs).
 BOOST_AUTO_TEST_CASE(soft_block_scales_the_rigid_one_and_relaxes_each_row, *utf::label("DD23")) {
-    const dd23::InverseInertia a{InverseMass::from_value(0.5),
-                                 InverseMomentOfInertia::from_value(1.5)};
-    const dd23::InverseInertia b{InverseMass::from_value(2.0),
-                                 InverseMomentOfInertia::from_value(0.7)};
-    const auto arm_A = Length::from_value(0.8), arm_B = Length::from_value(-0.3);
+    const auto [a, b, arm_A, arm_B] = coupled_pair();
     const auto rhs_perp = Velocity::from_value(1.3);
     const auto rhs_angle = AngularVelocity::from_value(-0.9);
     const dd23::BlockImpulse none{Impulse::from_value(0.0), dd22::AngularImpulse::from_value(0.0)};
