@@ -7,6 +7,12 @@
 /// never from the worker count or from timing), and each block writes only its own data. So a
 /// task system may split the range as it likes, run the pieces in any order on any threads, and
 /// the step's results are bitwise identical to those of one thread.
+///
+/// The contact passes with WorldDef::contact_regions > 1 are loops whose items share the work
+/// of all the regions' streams: a piece runs whatever stream packs are ready, and may spin for
+/// a while on a pack another running piece is solving, but never waits for a piece that has not
+/// started. So they too finish whether the pieces run at once, one after another, or some
+/// never get a thread before the others are done.
 #pragma once
 
 namespace tamias2d {

@@ -42,6 +42,17 @@ struct WorldDef {
     /// normal and moment arms within this distance's turn (docs/collision.md). 0: every touching
     /// manifold is computed afresh each step. >= 0.
     double manifold_reuse_distance = 0.005;
+    /// The contact solve's regions, in [1, 8]. 1, the default: each contact pass is the
+    /// sequential Gauss-Seidel pass over the touching manifolds in creation order. n > 1: the
+    /// bodies are cut, across gravity, into n slabs holding about equal numbers of manifolds;
+    /// each pass solves the manifolds within slab 0, then within slab 1, ..., each in creation
+    /// order, then those between slabs. The slabs share no moving body, so with workers > 1
+    /// they are solved on several threads at once. The order, and with it the result, depends
+    /// on this setting and on the scene, never on workers: a world gives the same bits on any
+    /// number of threads. Set it to the number of workers a game steps on; on one thread it
+    /// costs the packs that the manifolds between slabs fill only part way (docs/performance.md,
+    /// "Threads").
+    int contact_regions = 1;
     /// Continuous collision (DD29): after each step, a dynamic body that moved farther than
     /// the speculative distance is swept from its start pose to its end pose against the
     /// static shapes; if the core of one of its shapes (a disc about its centroid) would reach
@@ -65,7 +76,8 @@ struct WorldDef {
     double linear_sleep_tolerance = 0.05;   ///< m s^-1
     double angular_sleep_tolerance = 0.035; ///< rad s^-1 (2 degrees per second)
     /// Threads that share a step's parallel parts (the narrow phase, the bodies' integration and
-    /// write-back, the contacts' preparation), in [1, 256]. The results are bitwise identical
+    /// write-back, the contacts' preparation, and with contact_regions > 1 the contact passes),
+    /// in [1, 256]. The results are bitwise identical
     /// for every count (task_system.hpp). 1, the default: the step runs on the calling thread
     /// alone, as without this setting. Above 1, without task_system's callbacks, the World
     /// starts a pool of workers - 1 threads of its own, kept until it is destroyed.

@@ -459,6 +459,9 @@ void validate(const WorldDef& def) {
     // Threads are the library's own setting, not the SRS's: "threads" names the rule.
     if (def.workers < 1 || def.workers > 256)
         throw ValidationError("world.workers", def.workers, "must be in [1, 256]", "threads");
+    if (def.contact_regions < 1 || def.contact_regions > 8)
+        throw ValidationError("world.contact_regions", def.contact_regions, "must be in [1, 8]",
+                              "threads");
     if ((def.task_system.enqueue == nullptr) != (def.task_system.finish == nullptr))
         throw ValidationError("world.task_system", std::nan(""),
                               "needs both enqueue and finish, or neither", "threads");

@@ -46,6 +46,29 @@ BOOST_AUTO_TEST_CASE(pyramid20_stands, *utf::label("R8") * utf::label("LC1")) {
     BOOST_TEST(world.kinetic_energy() < 1e-6);
 }
 
+// Oracle: as pyramid20_stands, with the contact passes in regions (WorldDef::contact_regions):
+// the order changes only where manifolds between two slabs wait for the slabs' own, and the
+// stack must stand and come to rest as well.
+BOOST_AUTO_TEST_CASE(pyramid20_stands_in_regions, *utf::label("R8")) {
+    for (const int regions : {2, 4}) {
+        BOOST_TEST_CONTEXT("contact_regions = " << regions) {
+            World world(WorldDef{.gravity = {0.0, -10.0}, .contact_regions = regions});
+            PyramidParams p;
+            p.base = 20;
+            const std::vector<BodyId> ids = add(world, generate_pyramid(p));
+            const BodyId top = ids.back();
+            const Vec2d start = world.position(top);
+            for (int i = 0; i < 1000; ++i)
+                world.step(1.0 / 60.0);
+            const double moved = length(world.position(top) - start);
+            BOOST_TEST_MESSAGE("pyramid20 in " << regions << " regions, top displacement: "
+                                               << moved << " m");
+            BOOST_TEST(moved < 0.05);
+            BOOST_TEST(world.kinetic_energy() < 1e-6);
+        }
+    }
+}
+
 // Oracle: the container's walls: 400 boxes rained into a static open-top container with
 // friction must all end inside it (between the walls, above the floor), finite, and at rest.
 BOOST_AUTO_TEST_CASE(rain_stays_in_container, *utf::label("R7") * utf::label("R8")) {

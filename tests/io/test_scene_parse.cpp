@@ -24,7 +24,7 @@ const char* const full_scene = R"({
   "description": "every field",
   "world": { "gravity": [0.5, -10], "substeps": 8, "contact_hertz": 40,
              "contact_damping_ratio": 5, "contact_push_max_velocity": 2, "linear_slop": 0.004,
-             "speculative_distance": 0.03, "manifold_reuse_distance": 0.01,
+             "speculative_distance": 0.03, "manifold_reuse_distance": 0.01, "contact_regions": 3,
              "restitution_threshold": 0.5, "enable_sleep": true,
              "time_to_sleep": 0.75, "linear_sleep_tolerance": 0.02, "angular_sleep_tolerance": 0.01 },
   "dt": "1/120",
@@ -132,6 +132,7 @@ void check_same(const Scene& a, const Scene& b) {
     BOOST_TEST(a.world.contact_hertz == b.world.contact_hertz);
     BOOST_TEST(a.world.linear_slop == b.world.linear_slop);
     BOOST_TEST(a.world.manifold_reuse_distance == b.world.manifold_reuse_distance);
+    BOOST_TEST(a.world.contact_regions == b.world.contact_regions);
     BOOST_TEST(a.world.enable_sleep == b.world.enable_sleep);
     BOOST_TEST(a.world.time_to_sleep == b.world.time_to_sleep);
     BOOST_TEST(a.world.linear_sleep_tolerance == b.world.linear_sleep_tolerance);
@@ -215,6 +216,7 @@ BOOST_AUTO_TEST_CASE(every_field_reaches_the_scene,
     BOOST_TEST(s.world.linear_slop == 0.004);
     BOOST_TEST(s.world.speculative_distance == 0.03);
     BOOST_TEST(s.world.manifold_reuse_distance == 0.01);
+    BOOST_TEST(s.world.contact_regions == 3);
     BOOST_TEST(s.world.restitution_threshold == 0.5);
     BOOST_TEST(s.world.enable_sleep);
     BOOST_TEST(s.world.time_to_sleep == 0.75);

@@ -198,13 +198,19 @@ void chains(World& world) {
 BOOST_AUTO_TEST_SUITE(parallel_step)
 
 // Oracle: the same scene stepped by one worker, the serial step (state hashes and the order of
-// the begin and end events, step by step).
+// the begin and end events, step by step). With contact regions, the regions' contact streams
+// run on several threads at once (PackStreams), each pack after the packs it waits for.
 BOOST_AUTO_TEST_CASE(pyramid_is_bitwise_identical_on_every_thread_count,
                      *utf::label("determinism")) {
-    WorldDef def;
-    def.gravity = {0.0, -10.0};
-    check_every_threading(
-        def, [](World& w) { test::build_pyramid(w, 48); }, 10 * step_scale);
+    for (const int regions : {1, 2, 3}) {
+        BOOST_TEST_CONTEXT("contact_regions = " << regions) {
+            WorldDef def;
+            def.gravity = {0.0, -10.0};
+            def.contact_regions = regions;
+            check_every_threading(
+                def, [](World& w) { test::build_pyramid(w, 48); }, 10 * step_scale);
+        }
+    }
 }
 
 // Oracle: as above, with sleeping on: islands fall asleep, and the block dropped on the pile
@@ -212,11 +218,16 @@ BOOST_AUTO_TEST_CASE(pyramid_is_bitwise_identical_on_every_thread_count,
 // update within the same pass.
 BOOST_AUTO_TEST_CASE(sleeping_rain_is_bitwise_identical_on_every_thread_count,
                      *utf::label("determinism")) {
-    WorldDef def;
-    def.gravity = {0.0, -10.0};
-    def.enable_sleep = true;
-    def.time_to_sleep = 0.1;
-    check_every_threading(def, rain, 60 * step_scale);
+    for (const int regions : {1, 2}) {
+        BOOST_TEST_CONTEXT("contact_regions = " << regions) {
+            WorldDef def;
+            def.gravity = {0.0, -10.0};
+            def.enable_sleep = true;
+            def.time_to_sleep = 0.1;
+            def.contact_regions = regions;
+            check_every_threading(def, rain, 60 * step_scale);
+        }
+    }
 }
 
 // Oracle: as above, with sleeping on, where the serial loop's order matters most: a wake in the
@@ -232,12 +243,16 @@ BOOST_AUTO_TEST_CASE(wakes_within_the_narrow_phase_are_bitwise_identical_on_ever
 // Oracle: as above, with 1120 revolute joints (solved serially between the parallel loops).
 BOOST_AUTO_TEST_CASE(jointed_chains_are_bitwise_identical_on_every_thread_count,
                      *utf::label("determinism")) {
-    WorldDef def;
-    def.gravity = {0.0, -10.0};
-    check_every_threading(def, chains, 10 * step_scale);
+    for (const int regions : {1, 4}) {
+        BOOST_TEST_CONTEXT("contact_regions = " << regions) {
+            WorldDef def;
+            def.gravity = {0.0, -10.0};
+            def.contact_regions = regions;
+            check_every_threading(def, chains, 10 * step_scale);
+        }
+    }
 }
 
-// Oracle: the rules stated in world_def.hpp (workers in [1, 256]; both callbacks or neither).
 // Oracle: the pool's contract: destroying a World joins its threads and returns, however soon
 // after they were started. (A thread that first read the bell after the destructor rang it
 // slept through the ring, and the join waited forever: a hang this loop met within a few
@@ -253,6 +268,7 @@ BOOST_AUTO_TEST_CASE(a_pool_destroyed_as_soon_as_made_stops, *utf::label("reliab
     BOOST_TEST(true); // reaching here is the test; CTest's timeout catches a hang
 }
 
+// Oracle: the rules stated in world_def.hpp (workers in [1, 256]; both callbacks or neither).
 BOOST_AUTO_TEST_CASE(bad_thread_settings_are_refused, *utf::label("reliability")) {
     WorldDef def;
     def.workers = 0;

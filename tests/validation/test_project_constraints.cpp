@@ -216,6 +216,24 @@ BOOST_AUTO_TEST_CASE(manifold_reuse_distance_must_not_be_negative,
     BOOST_TEST(w.settings().manifold_reuse_distance == 0.0);
 }
 
+// Oracle: WorldDef::contact_regions's stated range, an integer in [1, 8]; the refusal names the
+// field and the rule, and leaves no world behind.
+BOOST_AUTO_TEST_CASE(contact_regions_must_be_in_one_to_eight, *utf::label("reliability")) {
+    for (const int bad : {0, -1, 9, 1 << 30}) {
+        BOOST_TEST_CONTEXT("contact_regions = " << bad) {
+            WorldDef def;
+            def.contact_regions = bad;
+            expect_validation_error([&] { World w(def); }, "contact_regions", "threads");
+        }
+    }
+    for (const int good : {1, 8}) {
+        WorldDef def;
+        def.contact_regions = good;
+        World w(def);
+        BOOST_TEST(w.settings().contact_regions == good);
+    }
+}
+
 // Oracle: DCX_dt (srs/data_constraints.yaml): the time step is finite and > 0; substeps
 // (h = dt / substeps) are a positive count.
 BOOST_AUTO_TEST_CASE(time_step_must_be_positive_and_finite,

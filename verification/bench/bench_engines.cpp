@@ -50,8 +50,9 @@ void corners(const BoxPart& p, V2 out[4]) {
 // ---------------------------------------------------------------------------------- Tamias2D
 class TamiasEngine final : public Engine {
   public:
-    explicit TamiasEngine(const SceneDesc& s, int workers = 1, double manifold_reuse = -1.0)
-        : dt_(s.dt), world_(world_def(s, workers, manifold_reuse)) {
+    explicit TamiasEngine(const SceneDesc& s, int workers = 1, double manifold_reuse = -1.0,
+                          int regions = 1)
+        : dt_(s.dt), world_(world_def(s, workers, manifold_reuse, regions)) {
         ids_.reserve(s.bodies.size());
         for (const BodyDesc& d : s.bodies) {
             tamias2d::BodyDef bd;
@@ -88,11 +89,13 @@ class TamiasEngine final : public Engine {
     std::uint64_t state_hash() const override { return world_.state_hash(); }
 
   private:
-    static tamias2d::WorldDef world_def(const SceneDesc& s, int workers, double manifold_reuse) {
+    static tamias2d::WorldDef world_def(const SceneDesc& s, int workers, double manifold_reuse,
+                                        int regions) {
         tamias2d::WorldDef def;
         def.workers = workers;     // 1 in the peer benchmark: every engine on one thread
         if (manifold_reuse >= 0.0) // tamias_thread_bench's A/B; otherwise the default
             def.manifold_reuse_distance = manifold_reuse;
+        def.contact_regions = regions;
         def.gravity = {s.gravity.x, s.gravity.y};
         def.enable_sleep = s.sleep; // time_to_sleep 0.5 s by default
         return def;
@@ -251,8 +254,8 @@ class Box2DEngine final : public Engine {
 } // namespace
 
 std::unique_ptr<Engine> make_tamias_engine(const SceneDesc& scene, int workers,
-                                           double manifold_reuse) {
-    return std::make_unique<TamiasEngine>(scene, workers, manifold_reuse);
+                                           double manifold_reuse, int regions) {
+    return std::make_unique<TamiasEngine>(scene, workers, manifold_reuse, regions);
 }
 
 std::unique_ptr<Engine> make_engine(EngineId id, const SceneDesc& scene) {

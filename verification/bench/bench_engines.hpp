@@ -84,8 +84,9 @@ class Engine {
 /// Builds the scene; throws (std::exception) if the engine rejects it or is not available.
 std::unique_ptr<Engine> make_engine(EngineId id, const SceneDesc& scene);
 /// Tamias2D with WorldDef::workers = `workers` (the thread benchmark, thread_bench.cpp) and,
-/// when `manifold_reuse` >= 0, that WorldDef::manifold_reuse_distance instead of the default.
+/// when `manifold_reuse` >= 0, that WorldDef::manifold_reuse_distance instead of the default,
+/// with WorldDef::contact_regions = `regions`.
 std::unique_ptr<Engine> make_tamias_engine(const SceneDesc& scene, int workers,
-                                           double manifold_reuse = -1.0);
+                                           double manifold_reuse = -1.0, int regions = 1);
 
 } // namespace tamias_bench

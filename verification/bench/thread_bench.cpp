@@ -7,7 +7,7 @@
 //
 //   tamias_thread_bench [--scenes pyramid40,large_pyramid,rain] [--threads 1,2] [--reps 7]
 //                       [--engines tamias,v3_sse2,v3_avx2] [--v3-recycle-distance D]
-//                       [--manifold-reuse D]
+//                       [--manifold-reuse D] [--contact-regions 1,2]
 //
 // Box2D v3 runs in its engine workers (remote_engine.hpp), one process per build and worker
 // count, which time their steps themselves; `v3` names both builds, and a build that was not made
@@ -19,6 +19,11 @@
 // (m; 0: off; b2World_SetContactRecycleDistance) in place of its default (0.05 m), to measure
 // what that reuse of manifolds gives it (docs/performance.md, "Against Box2D v3");
 // --manifold-reuse sets Tamias2D's WorldDef::manifold_reuse_distance (m; 0: off) likewise.
+// --contact-regions lists the WorldDef::contact_regions Tamias2D runs with (default 1,2), each on
+// every worker count: its hashes must agree across worker counts for one setting, its speed-up is
+// against the same setting on the first worker count, and its time over v3's on n workers is
+// taken with n regions where that setting is listed (the user guide's advice), else with the
+// first listed.
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -76,8 +81,9 @@ struct Run {
     EngineId engine;
     int threads;
     double manifold_reuse; ///< Tamias2D's, -1: the default
+    int regions;           ///< Tamias2D's WorldDef::contact_regions (0 for v3)
     std::unique_ptr<Engine> make(const SceneDesc& d) const {
-        return engine == EngineId::tamias ? make_tamias_engine(d, threads, manifold_reuse)
+        return engine == EngineId::tamias ? make_tamias_engine(d, threads, manifold_reuse, regions)
                                           : make_remote_engine(engine, d, threads);
     }
 };
@@ -100,7 +106,7 @@ std::vector<std::string> split(const std::string& s) {
 [[noreturn]] void usage() {
     std::fprintf(stderr, "usage: tamias_thread_bench [--scenes a,b] [--threads 1,2] [--reps N] "
                          "[--engines tamias,v3_sse2,v3_avx2] [--v3-recycle-distance D] "
-                         "[--manifold-reuse D]\n");
+                         "[--manifold-reuse D] [--contact-regions 1,2]\n");
     std::exit(2);
 }
 
@@ -112,6 +118,7 @@ int main(int argc, char** argv) {
     std::vector<std::string> engine_names = {"tamias"};
     int reps = 7;
     double manifold_reuse = -1.0; // the default
+    std::vector<int> regions = {1, 2};
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         if (i + 1 >= argc)
@@ -129,14 +136,19 @@ int main(int argc, char** argv) {
             engine_names = split(v);
         } else if (a == "--manifold-reuse") {
             manifold_reuse = std::atof(v.c_str());
+        } else if (a == "--contact-regions") {
+            regions.clear();
+            for (const std::string& r : split(v))
+                regions.push_back(std::atoi(r.c_str()));
         } else if (a == "--v3-recycle-distance") {
             set_remote_engine_arguments({"--recycle-distance", v});
         } else {
             usage();
         }
     }
-    if (reps < 1 || threads.empty() ||
-        std::any_of(threads.begin(), threads.end(), [](int t) { return t < 1; }))
+    if (reps < 1 || threads.empty() || regions.empty() ||
+        std::any_of(threads.begin(), threads.end(), [](int t) { return t < 1; }) ||
+        std::any_of(regions.begin(), regions.end(), [](int r) { return r < 1 || r > 8; }))
         usage();
     std::vector<EngineId> engines;
     for (const std::string& e : engine_names) {
@@ -160,11 +172,13 @@ int main(int argc, char** argv) {
         }
     }
     std::vector<Run> runs;
-    for (const EngineId e : engines)
-        for (const int t : threads)
-            runs.push_back({e, t, manifold_reuse});
-    std::printf("%-14s %-14s %7s %12s %12s %9s %12s %18s\n", "scene", "engine", "workers",
-                "wall ms/step", "cpu ms/step", "speed-up", "Tamias2D/it", "state hash");
+    for (const EngineId e : engines) {
+        for (const int r : e == EngineId::tamias ? regions : std::vector<int>{0})
+            for (const int t : threads)
+                runs.push_back({e, t, manifold_reuse, r});
+    }
+    std::printf("%-14s %-14s %7s %7s %12s %12s %9s %12s %18s\n", "scene", "engine", "regions",
+                "workers", "wall ms/step", "cpu ms/step", "speed-up", "Tamias2D/it", "state hash");
     for (const std::string& name : names) {
         const auto it = std::find_if(scenes.begin(), scenes.end(),
                                      [&](const Scene& s) { return s.name == name; });
@@ -198,13 +212,18 @@ int main(int argc, char** argv) {
             }
         }
         live.clear();
-        // Speed-up: against the same engine on the first worker count; Tamias2D/it: Tamias2D's
-        // time over this engine's on the same worker count (above 1: Tamias2D is slower).
-        const auto wall_of = [&](EngineId e, int t) {
+        // Speed-up: against the same engine and regions on the first worker count; Tamias2D/it:
+        // Tamias2D's time over this engine's on the same worker count (above 1: Tamias2D is
+        // slower), with as many regions as workers where that setting ran, else the first.
+        const auto wall_of = [&](EngineId e, int r, int t) {
             for (std::size_t k = 0; k < n; ++k)
-                if (runs[k].engine == e && runs[k].threads == t)
+                if (runs[k].engine == e && runs[k].regions == r && runs[k].threads == t)
                     return median(times[k].wall);
             return 0.0;
+        };
+        const auto ours_on = [&](int t) {
+            const bool listed = std::find(regions.begin(), regions.end(), t) != regions.end();
+            return wall_of(EngineId::tamias, listed ? t : regions[0], t);
         };
         std::uint64_t first_hash = 0;
         for (std::size_t k = 0; k < n; ++k) {
@@ -213,7 +232,7 @@ int main(int argc, char** argv) {
             if (own && run.threads == threads[0])
                 first_hash = hashes[k];
             const double w = median(times[k].wall);
-            const double ours = wall_of(EngineId::tamias, run.threads);
+            const double ours = ours_on(run.threads);
             char cpu[32] = "-", ratio[32] = "-", hash[40] = "-";
             if (own) {
                 std::snprintf(cpu, sizeof cpu, "%.4f", median(times[k].cpu));
@@ -222,9 +241,12 @@ int main(int argc, char** argv) {
             } else if (ours > 0.0) {
                 std::snprintf(ratio, sizeof ratio, "%.3f", ours / w);
             }
-            std::printf("%-14s %-14s %7d %12.4f %12s %8.3fx %12s %18s\n", name.c_str(),
-                        std::string(engine_name(run.engine)).c_str(), run.threads, w, cpu,
-                        wall_of(run.engine, threads[0]) / w, ratio, hash);
+            char regions_text[16] = "-";
+            if (own)
+                std::snprintf(regions_text, sizeof regions_text, "%d", run.regions);
+            std::printf("%-14s %-14s %7s %7d %12.4f %12s %8.3fx %12s %18s\n", name.c_str(),
+                        std::string(engine_name(run.engine)).c_str(), regions_text, run.threads, w,
+                        cpu, wall_of(run.engine, run.regions, threads[0]) / w, ratio, hash);
         }
         std::fflush(stdout);
     }

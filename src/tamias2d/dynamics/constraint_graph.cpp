@@ -4,18 +4,77 @@
 
 namespace tamias2d {
 
-void ConstraintGraph::colour(std::span<const GraphEdge> edges, std::size_t body_count) {
-    // Constraints of one level share no body, and constraints that share one keep their
-    // creation order, so solving level by level is the sequential pass in creation order.
+void ConstraintGraph::sequence(std::span<const GraphEdge> edges, std::uint32_t R,
+                               std::span<const double> cut) {
+    const auto n = std::uint32_t(edges.size());
+    const std::uint32_t S = streams_;
+    // Each manifold's stream, and the pass's order: stream by stream, creation order within.
+    stream_of_.assign(n, 0);
+    sequence_.resize(n);
+    if (R > 1) {
+        // The regions' bounds: the manifolds' places (midway between their moving bodies) at
+        // ranks n/R, 2n/R, ...; a body lies in the region of the bounds at or below it.
+        const auto place = [&](const GraphEdge& e) {
+            return e.body_a == 0   ? cut[e.body_b]
+                   : e.body_b == 0 ? cut[e.body_a]
+                                   : 0.5 * (cut[e.body_a] + cut[e.body_b]);
+        };
+        cuts_.resize(n);
+        for (std::uint32_t i = 0; i < n; ++i)
+            cuts_[i] = place(edges[i]);
+        std::array<double, max_regions> bound{};
+        for (std::uint32_t r = 1; r < R; ++r) {
+            const auto rank = std::ptrdiff_t(std::uint64_t(n) * r / R);
+            std::nth_element(cuts_.begin(), cuts_.begin() + rank, cuts_.end());
+            bound[r] = cuts_[std::size_t(rank)];
+        }
+        const auto region = [&](std::uint32_t body) {
+            std::uint32_t r = 0;
+            while (r + 1 < R && cut[body] >= bound[r + 1])
+                ++r;
+            return r;
+        };
+        std::array<std::uint32_t, max_streams + 1> start{};
+        for (std::uint32_t i = 0; i < n; ++i) {
+            const GraphEdge& e = edges[i];
+            const std::uint32_t ra = region(e.body_a != 0 ? e.body_a : e.body_b);
+            const std::uint32_t rb = region(e.body_b != 0 ? e.body_b : e.body_a);
+            stream_of_[i] = ra == rb ? ra : R;
+            ++start[stream_of_[i] + 1];
+        }
+        for (std::uint32_t s = 0; s < S; ++s)
+            start[s + 1] += start[s];
+        for (std::uint32_t i = 0; i < n; ++i)
+            sequence_[start[stream_of_[i]]++] = i;
+    } else {
+        for (std::uint32_t i = 0; i < n; ++i)
+            sequence_[i] = i;
+    }
+}
+
+void ConstraintGraph::colour(std::span<const GraphEdge> edges, std::size_t body_count,
+                             std::uint32_t regions, std::span<const double> cut) {
+    const std::uint32_t R = edges.empty() ? 1 : std::clamp<std::uint32_t>(regions, 1, max_regions);
+    const std::uint32_t S = streams_ = R > 1 ? R + 1 : 1;
+    const auto n = std::uint32_t(edges.size());
+    sequence(edges, R, cut);
+    // Constraints of one level share no body, and constraints that share one keep their order
+    // in the sequence, so solving level by level is the sequential pass in that order. Each
+    // stream's levels come after the streams' before it: a stream's constraints are ordered by
+    // the constraints of their own stream only (the earlier streams' are all solved before).
     body_mark_.assign(body_count, 0);
-    level_of_.resize(edges.size());
-    std::uint32_t levels = 0;
-    for (std::uint32_t i = 0; i < edges.size(); ++i) {
+    level_of_.resize(n);
+    std::uint32_t levels = 0, base = 0, stream = 0;
+    for (const std::uint32_t i : sequence_) {
         const GraphEdge& c = edges[i];
+        if (stream_of_[i] != stream) {
+            stream = stream_of_[i];
+            base = levels;
+        }
         // Body 0 stands for every static body: never written, so it orders nothing.
         const std::uint32_t la = c.body_a != 0 ? body_mark_[c.body_a] : 0;
         const std::uint32_t lb = c.body_b != 0 ? body_mark_[c.body_b] : 0;
-        const std::uint32_t level = std::max(la, lb) + 1;
+        const std::uint32_t level = std::max({base, la, lb}) + 1;
         if (c.body_a != 0)
             body_mark_[c.body_a] = level;
         if (c.body_b != 0)
@@ -32,32 +91,74 @@ void ConstraintGraph::colour(std::span<const GraphEdge> edges, std::size_t body_
         ++level_start_[l + 1];
     for (std::uint32_t l = 0; l < buckets; ++l)
         level_start_[l + 1] += level_start_[l];
-    sorted_.resize(edges.size());
+    sorted_.resize(n);
     level_fill_.assign(level_start_.begin(), level_start_.end() - 1);
-    for (std::uint32_t i = 0; i < edges.size(); ++i)
-        sorted_[level_fill_[level_of_[i]]++] = {i, edges[i].body_a, edges[i].body_b};
+    for (const std::uint32_t i : sequence_)
+        sorted_[level_fill_[level_of_[i]]++] = {i, edges[i].body_a, edges[i].body_b, stream_of_[i]};
     // The packs, in that order. Placed level by level, a constraint's predecessors on its
     // bodies are the bodies' last placed constraints; it joins the open pack unless one of them
-    // is in it (the only way it could also share a moving body with a lane there).
+    // is in it (the only way it could also share a moving body with a lane there), or unless
+    // it begins a stream. A predecessor in another stream is in a pack of an earlier stream:
+    // the pack waits for that stream to get past it.
     body_mark_.assign(body_count, no_constraint);
     packs_.clear();
+    pack_stream_.clear();
+    stream_begin_.assign(S + 1, 0);
+    wait_begin_.assign(1, 0);
+    waits_.clear();
     Pack empty;
     empty.fill(no_constraint);
     std::uint32_t open = no_constraint; // the open pack's index (none yet)
     int lanes = wide_lanes;             // so the first constraint opens one
+    std::array<std::uint32_t, max_streams> need{}, waited{};
+    // Closes the open pack: its waits, each only where an earlier pack of its stream did not
+    // already wait as long.
+    const auto close = [&] {
+        if (open == no_constraint)
+            return;
+        for (std::uint32_t t = 0; t < S; ++t) {
+            if (need[t] > waited[t]) {
+                waits_.push_back({t, need[t]});
+                waited[t] = need[t];
+            }
+        }
+        need.fill(0);
+        wait_begin_.push_back(std::uint32_t(waits_.size()));
+    };
     for (const Placement& c : sorted_) {
+        const bool begins = open == no_constraint || c.stream != pack_stream_[open];
         // Body 0 stands for every static body: it is marked too, but never blocks.
         const bool follows = (c.body_a != 0 && body_mark_[c.body_a] == open) ||
                              (c.body_b != 0 && body_mark_[c.body_b] == open);
-        if (follows || lanes == wide_lanes) {
+        if (begins || follows || lanes == wide_lanes) {
+            close();
+            if (begins) {
+                for (std::uint32_t s = open == no_constraint ? 0 : pack_stream_[open] + 1;
+                     s <= c.stream; ++s)
+                    stream_begin_[s] = std::uint32_t(packs_.size());
+                waited.fill(0);
+            }
             open = std::uint32_t(packs_.size());
             packs_.push_back(empty);
+            pack_stream_.push_back(c.stream);
             lanes = 0;
         }
         packs_[open][lanes++] = c.index;
-        body_mark_[c.body_a] = open;
-        body_mark_[c.body_b] = open;
+        for (const std::uint32_t body : {c.body_a, c.body_b}) {
+            const std::uint32_t before = body_mark_[body];
+            if (body != 0 && before != no_constraint && pack_stream_[before] != c.stream) {
+                const std::uint32_t t = pack_stream_[before];
+                need[t] = std::max(need[t], before - stream_begin_[t] + 1);
+            }
+            body_mark_[body] = open;
+        }
     }
+    close();
+    for (std::uint32_t s = open == no_constraint ? 0 : pack_stream_[open] + 1; s <= S; ++s)
+        stream_begin_[s] = std::uint32_t(packs_.size());
+    awaited_.assign(packs_.size(), 0);
+    for (const StreamWait& w : waits_)
+        awaited_[stream_begin_[w.stream] + w.packs - 1] = 1;
 }
 
 } // namespace tamias2d

@@ -14,6 +14,15 @@
 // follows on a body. A pyramid has hundreds of small levels (pyramid40: 231 for 2380
 // manifolds): starting a new pack at each level would leave 23 % of pyramid20's lanes empty
 // and 13 % of pyramid40's, against 11 % and 3 % when packs run across levels.
+//
+// Contact regions (WorldDef::contact_regions) split the pass among threads without reordering
+// manifolds that share a body within a region: the bodies are cut into slabs, the manifolds
+// within each slab form a stream of their own, and those between slabs a last stream. The
+// regions' streams share no moving body, so they run at once with no waiting; the last stream
+// waits, pack by pack, only for the packs it follows. Why not split each level among threads:
+// a pile's levels are small (pyramid40: 2.6 packs a level), and the manifolds on either side
+// of any split wait for each other at nearly every level; measured, two threads were slower
+// than one (docs/performance.md, "Rejected designs").
 #pragma once
 
 #include <array>
@@ -51,34 +60,85 @@ struct GraphEdge {
     PathGroup group = PathGroup::point_by_point;
 };
 
+/// What a stream's pack waits for before it runs: stream `stream` has finished its first
+/// `packs` packs of the pass.
+struct StreamWait {
+    std::uint32_t stream = 0, packs = 0;
+};
+
 class ConstraintGraph {
   public:
     static constexpr std::uint32_t no_constraint = 0xffffffffu;
     /// Up to four constraint indices solved together (unused lanes: no_constraint).
     using Pack = std::array<std::uint32_t, wide_lanes>;
+    /// At most this many regions, and streams (each pack keeps one wait count per stream
+    /// while packing).
+    static constexpr std::uint32_t max_regions = 8;
+    static constexpr std::uint32_t max_streams = max_regions + 1;
 
     /// Each manifold goes one level after the last earlier manifold sharing a moving body with
     /// it; the levels, in order, fill the packs, a pack closing early only where the next
     /// manifold follows one of its lanes on a body. Allocates only while the scene grows.
-    void colour(std::span<const GraphEdge> edges, std::size_t body_count);
+    ///
+    /// With `regions` > 1 (at most max_regions) the pass is the sequential one in another
+    /// order: the manifolds whose moving bodies all lie in region 0, in creation order, then
+    /// those of region 1, ..., then those between regions 0 and 1, between 1 and 2, ... The
+    /// regions are slabs across `cut` (per solver body, its place along the cut axis, m),
+    /// bounded where they hold about equal numbers of manifolds. Each of those runs is a
+    /// stream (2 regions - 1 of them) with packs of its own: the regions' streams share no
+    /// moving body and run at once on different threads, and each stream between two regions
+    /// waits only for packs of the streams before it. A manifold joins its stream's open pack
+    /// only if every earlier manifold on its bodies sits in a pack opened before that one, so
+    /// that a thread that runs the packs of any stream whose waits are met can always go on;
+    /// any such schedule, and the packs in their stored order, give the same bits.
+    void colour(std::span<const GraphEdge> edges, std::size_t body_count, std::uint32_t regions = 1,
+                std::span<const double> cut = {});
 
     /// The solve order: the manifolds of level 0, of level 1, ..., four to a pack (by path
-    /// group, then creation order, within a level).
+    /// group, then creation order, within a level); with regions, stream 0's packs in that
+    /// order, then stream 1's, and so on (streams depend only on streams before them).
     std::span<const Pack> packs() const { return packs_; }
+    std::uint32_t streams() const { return streams_; }
+    /// Stream s's packs are [stream_begin(s), stream_begin(s + 1)) of packs().
+    std::uint32_t stream_begin(std::uint32_t s) const { return stream_begin_[s]; }
+    /// The other streams' progress pack i (of packs()) needs before it may run: a wait is
+    /// listed only where it asks more than the stream's earlier packs already waited for.
+    std::span<const StreamWait> waits(std::size_t i) const {
+        return std::span<const StreamWait>(waits_).subspan(wait_begin_[i],
+                                                           wait_begin_[i + 1] - wait_begin_[i]);
+    }
+
+    /// Whether some other stream waits for pack i (of packs()) to be finished: its stream
+    /// reports its progress right after it.
+    bool awaited(std::size_t i) const { return awaited_[i] != 0; }
 
   private:
+    /// Each manifold's stream (stream_of_), and the pass's order (sequence_): stream by stream,
+    /// creation order within; R regions across `cut`, streams_ already set.
+    void sequence(std::span<const GraphEdge> edges, std::uint32_t R, std::span<const double> cut);
+
     /// Per body: one past the level of its last constraint so far, while levelling; then the
     /// pack of its last constraint placed so far, while packing (no_constraint: none yet).
     std::vector<std::uint32_t> body_mark_;
     std::vector<std::uint32_t> level_of_;
     std::vector<std::uint32_t> level_start_, level_fill_;
-    /// A constraint and its bodies, in solve order (what placing it in a pack reads).
+    std::vector<double> cuts_;             ///< scratch for the regions' bounds
+    std::vector<std::uint32_t> stream_of_; ///< per manifold: its stream
+    std::vector<std::uint32_t> sequence_;  ///< the manifolds in the pass's order
+    /// A constraint, its bodies and its stream, in solve order (what placing it reads).
     struct Placement {
         std::uint32_t index = 0;
         std::uint32_t body_a = 0, body_b = 0;
+        std::uint32_t stream = 0;
     };
     std::vector<Placement> sorted_;
+    std::uint32_t streams_ = 1;
     std::vector<Pack> packs_;
+    std::vector<std::uint32_t> pack_stream_;
+    std::vector<std::uint32_t> stream_begin_;
+    std::vector<std::uint32_t> wait_begin_;
+    std::vector<StreamWait> waits_;
+    std::vector<std::uint8_t> awaited_;
 };
 
 } // namespace tamias2d

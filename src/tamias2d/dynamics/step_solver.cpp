@@ -30,6 +30,12 @@ void StepSolver::prepare_bodies(const BodyStore& store, const std::vector<Load>&
     any_damped_ = false;
     linear_decay_.assign(1, 1.0);
     angular_decay_.assign(1, 1.0);
+    // The contact regions (WorldDef::contact_regions) are slabs along gravity, cut across it:
+    // each holds whole columns of a stack, whose load runs down them, and only the rows that
+    // cross a cut give manifolds between regions (without gravity, the cuts are across x).
+    const double g = length(def.gravity);
+    const Vec2d across = g > 0.0 ? Vec2d{-def.gravity.y / g, def.gravity.x / g} : Vec2d{1.0, 0.0};
+    cut_.assign(1, 0.0);
     for (std::uint32_t i = 0; i < bodies.size(); ++i) {
         const Body& b = bodies[i];
         // A sleeping body is immovable this step, as a static one is.
@@ -40,6 +46,7 @@ void StepSolver::prepare_bodies(const BodyStore& store, const std::vector<Load>&
         }
         solver_index_[i] = std::uint32_t(solver_bodies_.size());
         solver_bodies_.push_back({b.v, b.w, b.inv_mass, b.inv_inertia, {}, 0.0});
+        cut_.push_back(b.center.x * across.x + b.center.y * across.y);
         Vec2d a{};
         double alpha = 0.0;
         if (b.type == BodyType::dynamic) {
@@ -255,7 +262,10 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
     }
     if (bouncing_.size() < bounce_count)
         bouncing_.resize(bounce_count); // only while the scene grows: never shrunk
-    wide_solver_.colour(edges_, solver_bodies_.size());
+    // With WorldDef::contact_regions > 1 the manifolds are solved region by region, on any
+    // number of workers; with more than one worker the regions' streams run on several threads.
+    wide_solver_.colour(edges_, solver_bodies_.size(), std::uint32_t(def.contact_regions), cut_);
+    const std::uint32_t streams = tasks.parallel() ? wide_solver_.graph().streams() : 1;
     // Those that can bounce get a scalar copy for the restitution pass, prepared from the
     // velocities before the step (DD11's relative velocity before the impact).
     for (std::uint32_t k = 0; k < edges_.size(); ++k) {
@@ -275,7 +285,7 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
     }
     const std::size_t pack_count = wide_solver_.order().size();
     constexpr std::size_t pack_block = 32; // ~10 us of lane filling and preparation
-    if (tasks.parallel() && pack_count > pack_block) {
+    if (streams > 1 || (tasks.parallel() && pack_count > pack_block)) {
         // Preparation reads only the bodies' inverse masses, which the warm start leaves alone,
         // so the packs may be prepared in any order, and warm started after them in solve
         // order: the fused loop's bits.
@@ -284,7 +294,10 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
                           std::min(pack_count, std::size_t(last) * pack_block), false);
         };
         tasks.for_each_block(blocks_of(pack_count, pack_block), run);
-        wide_solver_.warm_start(solver_bodies_);
+        if (streams > 1)
+            stream_pass(tasks, nullptr, false);
+        else
+            wide_solver_.warm_start(solver_bodies_);
     } else {
         prepare_packs(contacts, 0, pack_count, true);
     }
@@ -306,20 +319,29 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
                 if (solved(j))
                     warm_start_joint(j, solver_bodies_);
             }
-            wide_solver_.warm_start(solver_bodies_);
+            if (streams > 1)
+                stream_pass(tasks, nullptr, false);
+            else
+                wide_solver_.warm_start(solver_bodies_);
         }
         for (Joint& j : joints) {
             if (solved(j))
                 solve_joint(j, solver_bodies_, joint_softness, h, true);
         }
-        wide_solver_.solve(solver_bodies_, st, true);
+        if (streams > 1)
+            stream_pass(tasks, &st, true);
+        else
+            wide_solver_.solve(solver_bodies_, st, true);
         integrate_positions(h, tasks);
         turn_joints(joints);
         for (Joint& j : joints) {
             if (solved(j))
                 solve_joint(j, solver_bodies_, joint_softness, h, false);
         }
-        wide_solver_.solve(solver_bodies_, st, false);
+        if (streams > 1)
+            stream_pass(tasks, &st, false);
+        else
+            wide_solver_.solve(solver_bodies_, st, false);
     }
     // A joint's solve can diverge where no input rule foresaw it (conflicting joints on light
     // bodies): checked before any impulse is stored, so that the world can refuse the step.
@@ -345,6 +367,32 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
         for (int j = 0; j < b.count; ++j)
             contacts.total_impulses[b.contact].normal[j] = b.points[j].total_normal_impulse;
     }
+}
+
+void StepSolver::stream_pass(const StepTasks& tasks, const ContactSolverSettings* settings,
+                             bool use_bias) {
+    struct Pass {
+        StepSolver* solver;
+        const ContactSolverSettings* settings;
+        bool use_bias;
+    } pass{this, settings, use_bias};
+    const PackStreams::RunPacks run_packs = [](void* context, std::size_t first, std::size_t count,
+                                               std::uint32_t stream) {
+        const Pass& p = *static_cast<const Pass*>(context);
+        StepSolver& s = *p.solver;
+        if (p.settings == nullptr)
+            s.wide_solver_.warm_start_run(first, count, stream, s.solver_bodies_);
+        else
+            s.wide_solver_.solve_run(first, count, stream, s.solver_bodies_, *p.settings,
+                                     p.use_bias);
+    };
+    pack_streams_.reset();
+    const ConstraintGraph& graph = wide_solver_.graph();
+    // One item per stream, each preferring its own; a piece of several items runs them all.
+    auto run = [&](int first, int) {
+        pack_streams_.run(graph, std::uint32_t(first), run_packs, &pass);
+    };
+    tasks.for_each_block(int(graph.streams()), run);
 }
 
 void StepSolver::finalize(BodyStore& store, ShapeStore& shape_store, const ContactManager& contacts,

@@ -13,6 +13,7 @@
 #include "tamias2d/dynamics/contact_constraint.hpp"
 #include "tamias2d/dynamics/continuous.hpp"
 #include "tamias2d/dynamics/joint.hpp"
+#include "tamias2d/dynamics/pack_streams.hpp"
 #include "tamias2d/dynamics/solver_body.hpp"
 #include "tamias2d/dynamics/wide_contact_solver.hpp"
 #include "tamias2d/handles.hpp"
@@ -74,6 +75,9 @@ class StepSolver {
     template <bool deferred>
     void write_back(BodyStore& store, ShapeStore& shape_store, const WorldDef& def,
                     std::uint32_t begin, std::uint32_t end);
+    /// One contact pass on the colouring's streams, on the tasks' threads: the warm start
+    /// (settings null) or an iteration (soft with use_bias, else the relax).
+    void stream_pass(const StepTasks& tasks, const ContactSolverSettings* settings, bool use_bias);
     /// The joints' body rotations after a position half (Joint::q_a, q_b).
     void turn_joints(std::vector<Joint>& joints);
 
@@ -83,12 +87,15 @@ class StepSolver {
     std::vector<double> linear_decay_, angular_decay_; ///< IM5's factors per solver body
     bool any_damped_ = false; ///< this step: some solver body is damped (else no factors)
     std::vector<std::uint32_t> solver_index_; ///< per body: its SolverBody (0: immovable)
+    /// Per solver body: its centre along the axis the contact streams are cut across (m).
+    std::vector<double> cut_;
     std::uint32_t diverged_ = null_index;     ///< see diverged()
     std::vector<GraphEdge> edges_;            ///< the touching manifolds, creation order
     std::vector<std::uint32_t> edge_contact_; ///< per edge: its contact
     std::vector<std::uint32_t> edge_slot_;    ///< per edge: its copy in `bouncing_`, or no_slot
     std::vector<ContactConstraint> bouncing_; ///< manifolds with restitution, creation order
     WideContactSolver wide_solver_;
+    PackStreams pack_streams_;
     /// The moving bodies some joint holds: solver body and angle at the step's start.
     struct JointedBody {
         std::uint32_t solver;

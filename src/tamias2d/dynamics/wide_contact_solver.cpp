@@ -19,6 +19,17 @@ TAMIAS_WIDE_KERNEL void solve_packs(WideContactConstraint* packs, std::size_t co
     wide::solve_packs<bridge::Model>(packs, count, bodies, settings, use_bias);
 }
 
+TAMIAS_WIDE_KERNEL void warm_start_packs_apart(WideContactConstraint* packs, std::size_t count,
+                                               SolverBody* bodies, SolverBody* sink) {
+    wide::warm_start_packs<bridge::Model, true>(packs, count, bodies, sink);
+}
+
+TAMIAS_WIDE_KERNEL void solve_packs_apart(WideContactConstraint* packs, std::size_t count,
+                                          SolverBody* bodies, const ContactSolverSettings& settings,
+                                          bool use_bias, SolverBody* sink) {
+    wide::solve_packs<bridge::Model, true>(packs, count, bodies, settings, use_bias, sink);
+}
+
 /// Prepares the pack from its lanes' bodies (gathered by the caller). Inlined into the kernels
 /// below (flatten), so that each clone has its own copy.
 inline void prepare_from(WideContactConstraint& w, const WideManifoldInput& in, const WideBody& a,
@@ -127,8 +138,9 @@ void clear_input_lane(WideManifoldInput& in, int l) {
     set_input_lane(in, l, none, 0);
 }
 
-void WideContactSolver::colour(std::span<const GraphEdge> edges, std::size_t body_count) {
-    graph_.colour(edges, body_count);
+void WideContactSolver::colour(std::span<const GraphEdge> edges, std::size_t body_count,
+                               std::uint32_t regions, std::span<const double> cut) {
+    graph_.colour(edges, body_count, regions, cut);
     packs_.resize(graph_.packs().size()); // never shrinks its capacity: no allocation per step
 }
 
@@ -154,14 +166,15 @@ void WideContactSolver::prefetch_pack_after(std::size_t i) const {
 }
 
 void WideContactSolver::load(std::span<const ContactConstraint> constraints,
-                             std::span<const SolverBody> bodies) {
+                             std::span<const SolverBody> bodies, std::uint32_t regions,
+                             std::span<const double> cut) {
     edges_.clear();
     for (const ContactConstraint& c : constraints) {
         edges_.push_back(
             {c.body_a, c.body_b,
              path_group(c.count, c.points[0].base_separation, c.points[1].base_separation)});
     }
-    colour(edges_, bodies.size());
+    colour(edges_, bodies.size(), regions, cut);
     const auto lanes = order();
     WideManifoldInput in; // one for all packs, as the world's lane filling uses it
     for (std::size_t i = 0; i < lanes.size(); ++i) {
@@ -183,6 +196,18 @@ void WideContactSolver::warm_start(std::span<SolverBody> bodies) {
 void WideContactSolver::solve(std::span<SolverBody> bodies, const ContactSolverSettings& settings,
                               bool use_bias) {
     solve_packs(packs_.data(), packs_.size(), bodies.data(), settings, use_bias);
+}
+
+void WideContactSolver::warm_start_run(std::size_t first, std::size_t count, std::uint32_t stream,
+                                       std::span<SolverBody> bodies) {
+    warm_start_packs_apart(packs_.data() + first, count, bodies.data(), &sinks_[stream].body);
+}
+
+void WideContactSolver::solve_run(std::size_t first, std::size_t count, std::uint32_t stream,
+                                  std::span<SolverBody> bodies,
+                                  const ContactSolverSettings& settings, bool use_bias) {
+    solve_packs_apart(packs_.data() + first, count, bodies.data(), settings, use_bias,
+                      &sinks_[stream].body);
 }
 
 namespace {

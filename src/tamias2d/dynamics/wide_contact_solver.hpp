@@ -3,6 +3,7 @@
 // manifolds in creation order, bit for bit (tests/dynamics/test_wide_contact_solver.cpp).
 #pragma once
 
+#include <array>
 #include <span>
 #include <vector>
 
@@ -29,9 +30,13 @@ class WideContactSolver {
     /// A lane's manifold cannot bounce (restitution 0): the restitution pass has no copy of it.
     static constexpr std::uint32_t no_slot = 0xffffffffu;
 
-    /// Orders the manifolds (ConstraintGraph's levels, four to a pack) and sizes the packs;
-    /// prepare_pack then fills each pack of order().
-    void colour(std::span<const GraphEdge> edges, std::size_t body_count);
+    /// Orders the manifolds (ConstraintGraph's levels, four to a pack, in `regions` regions
+    /// across `cut`) and sizes the packs; prepare_pack then fills each pack of order().
+    void colour(std::span<const GraphEdge> edges, std::size_t body_count, std::uint32_t regions = 1,
+                std::span<const double> cut = {});
+    /// The colouring: its streams run either in their stored order (warm_start, solve) or on
+    /// several threads through PackStreams and the *_run functions below.
+    const ConstraintGraph& graph() const { return graph_; }
     /// The solve order: the manifold (index into colour's edges) each lane of each pack holds.
     std::span<const ConstraintGraph::Pack> order() const { return graph_.packs(); }
     /// Prepares pack i's four lanes at once (contact_preparation.hpp) into the pack. A lane's
@@ -46,12 +51,20 @@ class WideContactSolver {
                                      std::span<SolverBody> bodies);
     /// colour and prepare_pack for constraints given as an array (tests, benchmarks): their
     /// bodies, normals, friction, anchors, separations and warm-start impulses are read.
-    void load(std::span<const ContactConstraint> constraints, std::span<const SolverBody> bodies);
+    void load(std::span<const ContactConstraint> constraints, std::span<const SolverBody> bodies,
+              std::uint32_t regions = 1, std::span<const double> cut = {});
 
     /// Re-applies the accumulated impulses (they carry the previous substep's solution forward).
     void warm_start(std::span<SolverBody> bodies);
     /// One iteration: with use_bias the soft, overlap-removing solve; without it the rigid relax.
     void solve(std::span<SolverBody> bodies, const ContactSolverSettings& settings, bool use_bias);
+    /// warm_start and solve on packs [first, first + count), all of stream `stream`, whose
+    /// waits are met; lanes naming the static body write into the stream's own zero body.
+    void warm_start_run(std::size_t first, std::size_t count, std::uint32_t stream,
+                        std::span<SolverBody> bodies);
+    void solve_run(std::size_t first, std::size_t count, std::uint32_t stream,
+                   std::span<SolverBody> bodies, const ContactSolverSettings& settings,
+                   bool use_bias);
     /// Copies the impulses back into the constraints given to load.
     void store(std::span<ContactConstraint> constraints) const;
     /// Copies the impulses into the persistent contacts' records, indexed like the contacts: the
@@ -76,6 +89,11 @@ class WideContactSolver {
 
     ConstraintGraph graph_;
     std::vector<GraphEdge> edges_; ///< load's scratch
+    /// Per stream: where its lanes naming the static body write (never read), a line each.
+    struct alignas(64) Sink {
+        SolverBody body;
+    };
+    std::array<Sink, ConstraintGraph::max_streams> sinks_;
     LargeArray<WideContactConstraint> packs_;
 };
 

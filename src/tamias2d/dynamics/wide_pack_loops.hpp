@@ -79,49 +79,60 @@ inline WideBody gather(const SolverBody* bodies, Lanes index) {
 }
 
 /// Writes the velocity row back. Lanes naming the static body 0 write back its unchanged zeros
-/// (its inverse mass is 0); no other body appears twice in a pack.
-inline void scatter(SolverBody* bodies, Lanes index, const WideBody& w) {
+/// (its inverse mass is 0); no other body appears twice in a pack. With `apart`, those lanes
+/// write into `sink` instead, a zero body of the stream's own: packs of different streams run
+/// at once on different threads, and body 0 is then only read.
+template <bool apart = false>
+inline void scatter(SolverBody* bodies, Lanes index, const WideBody& w,
+                    SolverBody* sink = nullptr) {
     Wide r0, r1, r2, r3;
     transpose(w.v.x, w.v.y, w.w, w.inv_m, r0, r1, r2, r3);
-    store_row(bodies[index[0]], r0);
-    store_row(bodies[index[1]], r1);
-    store_row(bodies[index[2]], r2);
-    store_row(bodies[index[3]], r3);
+    const auto row = [&](std::uint32_t k) -> SolverBody& {
+        if constexpr (apart)
+            return k != 0 ? bodies[k] : *sink;
+        else
+            return bodies[k];
+    };
+    store_row(row(index[0]), r0);
+    store_row(row(index[1]), r1);
+    store_row(row(index[2]), r2);
+    store_row(row(index[3]), r3);
 }
 
-template <class Model>
-void warm_start_packs(WideContactConstraint* packs, std::size_t count, SolverBody* bodies) {
+template <class Model, bool apart = false>
+void warm_start_packs(WideContactConstraint* packs, std::size_t count, SolverBody* bodies,
+                      SolverBody* sink = nullptr) {
     for (std::size_t i = 0; i < count; ++i) {
         WideContactConstraint& c = packs[i];
         WideBody a = gather(bodies, c.body_a);
         WideBody b = gather(bodies, c.body_b);
         iteration::warm_start<Model>(c, a, b);
-        scatter(bodies, c.body_a, a);
-        scatter(bodies, c.body_b, b);
+        scatter<apart>(bodies, c.body_a, a, sink);
+        scatter<apart>(bodies, c.body_b, b, sink);
     }
 }
 
-template <bool use_bias, class Model>
+template <bool use_bias, class Model, bool apart = false>
 void solve_packs(WideContactConstraint* packs, std::size_t count, SolverBody* bodies,
-                 const ContactSolverSettings& settings) {
+                 const ContactSolverSettings& settings, SolverBody* sink = nullptr) {
     const ContactSolverSettings st = settings; // a local copy: the body stores cannot touch it
     for (std::size_t i = 0; i < count; ++i) {
         WideContactConstraint& c = packs[i];
         WideBody a = gather(bodies, c.body_a);
         WideBody b = gather(bodies, c.body_b);
         iteration::solve<use_bias, Model>(c, a, b, st);
-        scatter(bodies, c.body_a, a);
-        scatter(bodies, c.body_b, b);
+        scatter<apart>(bodies, c.body_a, a, sink);
+        scatter<apart>(bodies, c.body_b, b, sink);
     }
 }
 
-template <class Model>
+template <class Model, bool apart = false>
 void solve_packs(WideContactConstraint* packs, std::size_t count, SolverBody* bodies,
-                 const ContactSolverSettings& settings, bool use_bias) {
+                 const ContactSolverSettings& settings, bool use_bias, SolverBody* sink = nullptr) {
     if (use_bias)
-        solve_packs<true, Model>(packs, count, bodies, settings);
+        solve_packs<true, Model, apart>(packs, count, bodies, settings, sink);
     else
-        solve_packs<false, Model>(packs, count, bodies, settings);
+        solve_packs<false, Model, apart>(packs, count, bodies, settings, sink);
 }
 
 } // namespace tamias2d::wide

@@ -1243,8 +1243,9 @@ WorldDef parse_world(const Ctx& ctx, const ojson& v, const std::string& ptr) {
     check_keys(ctx, v, ptr,
                {"gravity", "substeps", "contact_hertz", "contact_damping_ratio",
                 "contact_push_max_velocity", "linear_slop", "speculative_distance",
-                "manifold_reuse_distance", "restitution_threshold", "enable_sleep", "time_to_sleep",
-                "linear_sleep_tolerance", "angular_sleep_tolerance", "enable_continuous"},
+                "manifold_reuse_distance", "contact_regions", "restitution_threshold",
+                "enable_sleep", "time_to_sleep", "linear_sleep_tolerance",
+                "angular_sleep_tolerance", "enable_continuous"},
                "world settings");
     WorldDef w;
     opt_vec2(ctx, v, ptr, "gravity", w.gravity); // DCI_g
@@ -1259,6 +1260,11 @@ WorldDef parse_world(const Ctx& ctx, const ojson& v, const std::string& ptr) {
     opt_number(ctx, v, ptr, "linear_slop", w.linear_slop);
     opt_number(ctx, v, ptr, "speculative_distance", w.speculative_distance);
     opt_number(ctx, v, ptr, "manifold_reuse_distance", w.manifold_reuse_distance);
+    // Its range is the World's to check, in validate_scene.
+    if (const ojson* r = find(v, "contact_regions"))
+        w.contact_regions = static_cast<int>(
+            as_integer(ctx, *r, child(ptr, "contact_regions"), "contact_regions",
+                       std::numeric_limits<int>::min(), std::numeric_limits<int>::max()));
     opt_number(ctx, v, ptr, "restitution_threshold", w.restitution_threshold);
     if (const ojson* e = find(v, "enable_sleep"))
         w.enable_sleep = as_bool(ctx, *e, child(ptr, "enable_sleep"), "enable_sleep");
@@ -1783,6 +1789,7 @@ std::string scene_to_json(const Scene& scene, int indent) {
                   {"linear_slop", w.linear_slop},
                   {"speculative_distance", w.speculative_distance},
                   {"manifold_reuse_distance", w.manifold_reuse_distance},
+                  {"contact_regions", w.contact_regions},
                   {"restitution_threshold", w.restitution_threshold},
                   {"enable_sleep", w.enable_sleep},
                   {"time_to_sleep", w.time_to_sleep},

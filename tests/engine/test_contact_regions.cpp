@@ -1,0 +1,312 @@
+// Contact regions (WorldDef::contact_regions): the colouring's streams, and the threads that run
+// them, against the sequential Gauss-Seidel pass in the order the regions define (world_def.hpp):
+// the manifolds within region 0, ..., within region R - 1, then those between regions, each run
+// in creation order; the regions are slabs of the bodies' places, bounded at the manifolds'
+// places of rank n r / R.
+#include <boost/test/unit_test.hpp>
+
+#include <algorithm>
+#include <cstdint>
+#include <random>
+#include <set>
+#include <thread>
+#include <vector>
+
+#include "support/random_contacts.hpp"
+#include "tamias2d/dynamics/constraint_graph.hpp"
+#include "tamias2d/dynamics/contact_iteration.hpp"
+#include "tamias2d/dynamics/pack_streams.hpp"
+#include "tamias2d/dynamics/wide_contact_solver.hpp"
+
+namespace utf = boost::unit_test;
+using namespace tamias2d;
+
+namespace {
+
+using test::random_scene;
+using test::Scene;
+
+/// Random places along the cut axis for the bodies (body 0, the static one, has none).
+std::vector<double> random_places(std::uint32_t seed, std::size_t body_count) {
+    std::mt19937_64 rng(seed * 7919u);
+    std::uniform_real_distribution<double> u(-10.0, 10.0);
+    std::vector<double> cut(body_count, 0.0);
+    for (std::size_t i = 1; i < body_count; ++i)
+        cut[i] = u(rng);
+    return cut;
+}
+
+/// The order by its definition, written independently of ConstraintGraph (a full sort where it
+/// selects): each manifold's stream (its region, or R for one between regions) and the pass's
+/// sequence of manifolds.
+struct RegionOrder {
+    std::vector<std::uint32_t> stream;
+    std::vector<std::uint32_t> sequence;
+};
+RegionOrder region_order(const Scene& s, const std::vector<double>& cut, std::uint32_t regions) {
+    const auto place = [&](const ContactConstraint& c) {
+        if (c.body_a == 0)
+            return cut[c.body_b];
+        if (c.body_b == 0)
+            return cut[c.body_a];
+        return 0.5 * (cut[c.body_a] + cut[c.body_b]);
+    };
+    std::vector<double> sorted;
+    for (const ContactConstraint& c : s.constraints)
+        sorted.push_back(place(c));
+    std::sort(sorted.begin(), sorted.end());
+    std::vector<double> bounds;
+    for (std::uint32_t r = 1; r < regions; ++r)
+        bounds.push_back(sorted[sorted.size() * r / regions]);
+    const auto region = [&](std::uint32_t body) {
+        return std::uint32_t(
+            std::count_if(bounds.begin(), bounds.end(), [&](double b) { return b <= cut[body]; }));
+    };
+    RegionOrder o;
+    for (const ContactConstraint& c : s.constraints) {
+        const std::uint32_t ra = region(c.body_a != 0 ? c.body_a : c.body_b);
+        const std::uint32_t rb = region(c.body_b != 0 ? c.body_b : c.body_a);
+        o.stream.push_back(ra == rb ? ra : regions);
+    }
+    for (std::uint32_t st = 0; st <= regions; ++st) {
+        for (std::uint32_t i = 0; i < s.constraints.size(); ++i)
+            if (o.stream[i] == st)
+                o.sequence.push_back(i);
+    }
+    return o;
+}
+
+ContactSolverSettings settings() {
+    ContactSolverSettings st;
+    st.inv_h = 240.0;
+    st.softness = make_softness(30.0, 10.0, 1.0 / 240.0);
+    st.linear_slop = 0.005;
+    st.push_max_velocity = 3.0;
+    st.restitution_threshold = 1.0;
+    return st;
+}
+
+/// Three rounds of warm start, soft iteration and relax, one manifold after another in
+/// `sequence` (contact_iteration.hpp for one manifold at a time).
+void sequential_passes(Scene& s, const std::vector<std::uint32_t>& sequence) {
+    const ContactSolverSettings st = settings();
+    for (int round = 0; round < 3; ++round) {
+        for (std::uint32_t i : sequence) {
+            ContactConstraint& c = s.constraints[i];
+            iteration::warm_start(c, s.bodies[c.body_a], s.bodies[c.body_b]);
+        }
+        for (const bool bias : {true, false}) {
+            for (std::uint32_t i : sequence) {
+                ContactConstraint& c = s.constraints[i];
+                iteration::solve(c, s.bodies[c.body_a], s.bodies[c.body_b], st, bias);
+            }
+        }
+    }
+}
+
+/// The same rounds on the wide solver's streams, run by `threads` std::threads at once through
+/// PackStreams (each preferring its own stream), as the World's pool runs them.
+void threaded_passes(WideContactSolver& solver, std::vector<SolverBody>& bodies, int threads) {
+    const ContactSolverSettings st = settings();
+    struct Pass {
+        WideContactSolver* solver;
+        std::vector<SolverBody>* bodies;
+        const ContactSolverSettings* settings; // null: the warm start
+        bool use_bias;
+    };
+    const PackStreams::RunPacks run_packs = [](void* context, std::size_t first, std::size_t count,
+                                               std::uint32_t stream) {
+        const Pass& p = *static_cast<const Pass*>(context);
+        if (p.settings == nullptr)
+            p.solver->warm_start_run(first, count, stream, *p.bodies);
+        else
+            p.solver->solve_run(first, count, stream, *p.bodies, *p.settings, p.use_bias);
+    };
+    PackStreams streams;
+    const auto pass = [&](Pass p) {
+        streams.reset();
+        std::vector<std::thread> running;
+        for (int t = 0; t < threads; ++t) {
+            running.emplace_back(
+                [&, t] { streams.run(solver.graph(), std::uint32_t(t), run_packs, &p); });
+        }
+        for (std::thread& t : running)
+            t.join();
+    };
+    for (int round = 0; round < 3; ++round) {
+        pass({&solver, &bodies, nullptr, false});
+        pass({&solver, &bodies, &st, true});
+        pass({&solver, &bodies, &st, false});
+    }
+}
+
+void check_equal(const Scene& a, const Scene& b) {
+    for (std::size_t i = 0; i < a.bodies.size(); ++i) {
+        BOOST_TEST(a.bodies[i].v.x == b.bodies[i].v.x);
+        BOOST_TEST(a.bodies[i].v.y == b.bodies[i].v.y);
+        BOOST_TEST(a.bodies[i].w == b.bodies[i].w);
+    }
+    for (std::size_t i = 0; i < a.constraints.size(); ++i) {
+        for (int j = 0; j < a.constraints[i].count; ++j) {
+            BOOST_TEST(a.constraints[i].points[j].normal_impulse ==
+                       b.constraints[i].points[j].normal_impulse);
+            BOOST_TEST(a.constraints[i].points[j].tangent_impulse ==
+                       b.constraints[i].points[j].tangent_impulse);
+            BOOST_TEST(a.constraints[i].points[j].total_normal_impulse ==
+                       b.constraints[i].points[j].total_normal_impulse);
+        }
+    }
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(contact_regions)
+
+// Oracle: IM7's iteration as a sequential Gauss-Seidel pass over the manifolds, one after
+// another, in the order the regions define (region_order above, a separate implementation of
+// the rule). The packs in their stored order, and the streams run by one, two or three threads
+// at once, must give its numbers exactly: a missing wait, a lane mix-up or a pack run before a
+// manifold it follows on a body shows up as a difference.
+BOOST_AUTO_TEST_CASE(regions_reproduce_the_sequential_pass_in_their_order, *utf::label("IM7")) {
+    int compared = 0;
+    for (std::uint32_t seed = 1; seed <= 24; ++seed) {
+        const Scene scene = random_scene(seed, 6 + int(seed % 23), 40 + int(seed * 13 % 160));
+        const std::vector<double> cut = random_places(seed, scene.bodies.size());
+        for (std::uint32_t regions = 2; regions <= 4; ++regions) {
+            BOOST_TEST_CONTEXT("seed " << seed << ", " << regions << " regions") {
+                Scene seq = scene;
+                sequential_passes(seq, region_order(scene, cut, regions).sequence);
+
+                Scene stored = scene;
+                WideContactSolver solver;
+                solver.load(stored.constraints, stored.bodies, regions, cut);
+                BOOST_TEST_REQUIRE(solver.graph().streams() == regions + 1);
+                const ContactSolverSettings st = settings();
+                for (int round = 0; round < 3; ++round) {
+                    solver.warm_start(stored.bodies);
+                    solver.solve(stored.bodies, st, true);
+                    solver.solve(stored.bodies, st, false);
+                }
+                solver.store(stored.constraints);
+                check_equal(stored, seq);
+
+                for (int threads = 1; threads <= 3; ++threads) {
+                    BOOST_TEST_CONTEXT(threads << " threads") {
+                        Scene run = scene;
+                        WideContactSolver streamed;
+                        streamed.load(run.constraints, run.bodies, regions, cut);
+                        threaded_passes(streamed, run.bodies, threads);
+                        streamed.store(run.constraints);
+                        check_equal(run, seq);
+                    }
+                }
+                ++compared;
+            }
+        }
+    }
+    BOOST_TEST(compared == 72);
+}
+
+// Oracle: the rules of the region order and of the streams' waits, checked pack by pack
+// against region_order: each stream's packs hold its manifolds only; every manifold is in one
+// lane; no moving body appears twice in a pack; two manifolds on one moving body are solved in
+// the order's sequence; the regions' streams share no moving body; and a manifold whose
+// predecessor on a body is in another stream waits (by its pack's or an earlier pack's waits)
+// for that stream to have finished the predecessor's pack, a stream that comes before it.
+BOOST_AUTO_TEST_CASE(streams_keep_the_order_and_wait_for_their_predecessors) {
+    for (std::uint32_t seed = 40; seed < 64; ++seed) {
+        const Scene scene = random_scene(seed, 5 + int(seed % 19), 30 + int(seed * 11 % 150));
+        const std::vector<double> cut = random_places(seed, scene.bodies.size());
+        std::vector<GraphEdge> edges;
+        for (const ContactConstraint& c : scene.constraints)
+            edges.push_back({c.body_a, c.body_b, path_group(c.count, 0.0, 0.0, c.use_block)});
+        for (std::uint32_t regions = 2; regions <= 5; ++regions) {
+            BOOST_TEST_CONTEXT("seed " << seed << ", " << regions << " regions") {
+                const RegionOrder order = region_order(scene, cut, regions);
+                ConstraintGraph graph;
+                graph.colour(edges, scene.bodies.size(), regions, cut);
+                const auto packs = graph.packs();
+                const std::size_t n = scene.constraints.size();
+                // Where each manifold was placed: pack, stream.
+                std::vector<std::size_t> pack_of(n, packs.size());
+                std::vector<std::uint32_t> stream_of(n, 0);
+                for (std::uint32_t s = 0; s < graph.streams(); ++s) {
+                    for (std::size_t p = graph.stream_begin(s); p < graph.stream_begin(s + 1);
+                         ++p) {
+                        std::set<std::uint32_t> seen;
+                        for (const std::uint32_t i : packs[p]) {
+                            if (i == ConstraintGraph::no_constraint)
+                                continue;
+                            BOOST_TEST_REQUIRE(i < n);
+                            BOOST_TEST(pack_of[i] == packs.size()); // in one lane only
+                            pack_of[i] = p;
+                            stream_of[i] = s;
+                            BOOST_TEST(order.stream[i] == s);
+                            for (const std::uint32_t body :
+                                 {scene.constraints[i].body_a, scene.constraints[i].body_b})
+                                BOOST_TEST((body == 0 || seen.insert(body).second));
+                        }
+                    }
+                }
+                BOOST_TEST(graph.stream_begin(graph.streams()) == packs.size());
+                for (std::size_t i = 0; i < n; ++i)
+                    BOOST_TEST(pack_of[i] < packs.size());
+                // Each pack's wait on each stream, counting the earlier packs' of its stream.
+                std::vector<std::vector<std::uint32_t>> waited(packs.size());
+                for (std::uint32_t s = 0; s < graph.streams(); ++s) {
+                    std::vector<std::uint32_t> so_far(graph.streams(), 0);
+                    for (std::size_t p = graph.stream_begin(s); p < graph.stream_begin(s + 1);
+                         ++p) {
+                        for (const StreamWait& w : graph.waits(p)) {
+                            BOOST_TEST(w.stream < s); // only on streams before it
+                            so_far[w.stream] = std::max(so_far[w.stream], w.packs);
+                        }
+                        waited[p] = so_far;
+                    }
+                }
+                // Walk the sequence, remembering each moving body's last manifold.
+                std::vector<std::uint32_t> last(scene.bodies.size(),
+                                                ConstraintGraph::no_constraint);
+                for (const std::uint32_t i : order.sequence) {
+                    for (const std::uint32_t body :
+                         {scene.constraints[i].body_a, scene.constraints[i].body_b}) {
+                        if (body == 0)
+                            continue;
+                        const std::uint32_t before = last[body];
+                        last[body] = i;
+                        if (before == ConstraintGraph::no_constraint)
+                            continue;
+                        BOOST_TEST(pack_of[before] < pack_of[i]); // solved before it
+                        const std::uint32_t t = stream_of[before], s = stream_of[i];
+                        // Two regions' streams never meet on a body.
+                        BOOST_TEST((t == s || t == regions || s == regions));
+                        if (t != s) {
+                            const std::size_t position = pack_of[before] - graph.stream_begin(t);
+                            BOOST_TEST(waited[pack_of[i]][t] >= position + 1);
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+
+// Oracle: the rule for regions = 1: one stream, no waits, the packs of the sequential pass in
+// creation order (the colouring without regions).
+BOOST_AUTO_TEST_CASE(one_region_is_one_stream_without_waits) {
+    const Scene scene = random_scene(7, 12, 120);
+    std::vector<GraphEdge> edges;
+    for (const ContactConstraint& c : scene.constraints)
+        edges.push_back({c.body_a, c.body_b, path_group(c.count, 0.0, 0.0, c.use_block)});
+    ConstraintGraph with_places, without;
+    with_places.colour(edges, scene.bodies.size(), 1, random_places(7, scene.bodies.size()));
+    without.colour(edges, scene.bodies.size());
+    BOOST_TEST(with_places.streams() == 1u);
+    BOOST_TEST(with_places.stream_begin(1) == with_places.packs().size());
+    BOOST_TEST(std::equal(with_places.packs().begin(), with_places.packs().end(),
+                          without.packs().begin(), without.packs().end()));
+    for (std::size_t p = 0; p < with_places.packs().size(); ++p)
+        BOOST_TEST(with_places.waits(p).empty());
+}
+
+BOOST_AUTO_TEST_SUITE_END()
