@@ -8,10 +8,11 @@ void ConstraintGraph::sequence(std::span<const GraphEdge> edges, std::uint32_t R
                                std::span<const double> cut) {
     const auto n = std::uint32_t(edges.size());
     const std::uint32_t S = streams_;
-    // Each manifold's stream, and the pass's order: stream by stream, creation order within.
-    stream_of_.assign(n, 0);
-    sequence_.resize(n);
+    // Each manifold's stream, and the pass's order: stream by stream, creation order within
+    // (one region: stream 0 and creation order, left implicit).
     if (R > 1) {
+        stream_of_.resize(n);
+        sequence_.resize(n);
         // The regions' bounds: the manifolds' places (midway between their moving bodies) at
         // ranks n/R, 2n/R, ...; a body lies in the region of the bounds at or below it.
         const auto place = [&](const GraphEdge& e) {
@@ -46,9 +47,6 @@ void ConstraintGraph::sequence(std::span<const GraphEdge> edges, std::uint32_t R
             start[s + 1] += start[s];
         for (std::uint32_t i = 0; i < n; ++i)
             sequence_[start[stream_of_[i]]++] = i;
-    } else {
-        for (std::uint32_t i = 0; i < n; ++i)
-            sequence_[i] = i;
     }
 }
 
@@ -65,9 +63,11 @@ void ConstraintGraph::colour(std::span<const GraphEdge> edges, std::size_t body_
     body_mark_.assign(body_count, 0);
     level_of_.resize(n);
     std::uint32_t levels = 0, base = 0, stream = 0;
-    for (const std::uint32_t i : sequence_) {
+    const bool streamed = S > 1;
+    for (std::uint32_t k = 0; k < n; ++k) {
+        const std::uint32_t i = streamed ? sequence_[k] : k;
         const GraphEdge& c = edges[i];
-        if (stream_of_[i] != stream) {
+        if (streamed && stream_of_[i] != stream) {
             stream = stream_of_[i];
             base = levels;
         }
@@ -93,8 +93,11 @@ void ConstraintGraph::colour(std::span<const GraphEdge> edges, std::size_t body_
         level_start_[l + 1] += level_start_[l];
     sorted_.resize(n);
     level_fill_.assign(level_start_.begin(), level_start_.end() - 1);
-    for (const std::uint32_t i : sequence_)
-        sorted_[level_fill_[level_of_[i]]++] = {i, edges[i].body_a, edges[i].body_b, stream_of_[i]};
+    for (std::uint32_t k = 0; k < n; ++k) {
+        const std::uint32_t i = streamed ? sequence_[k] : k;
+        sorted_[level_fill_[level_of_[i]]++] = {i, edges[i].body_a, edges[i].body_b,
+                                                streamed ? stream_of_[i] : 0};
+    }
     // The packs, in that order. Placed level by level, a constraint's predecessors on its
     // bodies are the bodies' last placed constraints; it joins the open pack unless one of them
     // is in it (the only way it could also share a moving body with a lane there), or unless
@@ -109,12 +112,13 @@ void ConstraintGraph::colour(std::span<const GraphEdge> edges, std::size_t body_
     Pack empty;
     empty.fill(no_constraint);
     std::uint32_t open = no_constraint; // the open pack's index (none yet)
+    std::uint32_t open_stream = 0;      // its stream
     int lanes = wide_lanes;             // so the first constraint opens one
     std::array<std::uint32_t, max_streams> need{}, waited{};
     // Closes the open pack: its waits, each only where an earlier pack of its stream did not
-    // already wait as long.
+    // already wait as long (with one stream: none, set at the end).
     const auto close = [&] {
-        if (open == no_constraint)
+        if (!streamed || open == no_constraint)
             return;
         for (std::uint32_t t = 0; t < S; ++t) {
             if (need[t] > waited[t]) {
@@ -126,37 +130,44 @@ void ConstraintGraph::colour(std::span<const GraphEdge> edges, std::size_t body_
         wait_begin_.push_back(std::uint32_t(waits_.size()));
     };
     for (const Placement& c : sorted_) {
-        const bool begins = open == no_constraint || c.stream != pack_stream_[open];
+        const bool begins = open == no_constraint || c.stream != open_stream;
         // Body 0 stands for every static body: it is marked too, but never blocks.
         const bool follows = (c.body_a != 0 && body_mark_[c.body_a] == open) ||
                              (c.body_b != 0 && body_mark_[c.body_b] == open);
         if (begins || follows || lanes == wide_lanes) {
             close();
             if (begins) {
-                for (std::uint32_t s = open == no_constraint ? 0 : pack_stream_[open] + 1;
-                     s <= c.stream; ++s)
+                for (std::uint32_t s = open == no_constraint ? 0 : open_stream + 1; s <= c.stream;
+                     ++s)
                     stream_begin_[s] = std::uint32_t(packs_.size());
                 waited.fill(0);
             }
             open = std::uint32_t(packs_.size());
+            open_stream = c.stream;
             packs_.push_back(empty);
-            pack_stream_.push_back(c.stream);
+            if (streamed)
+                pack_stream_.push_back(c.stream);
             lanes = 0;
         }
         packs_[open][lanes++] = c.index;
-        for (const std::uint32_t body : {c.body_a, c.body_b}) {
-            const std::uint32_t before = body_mark_[body];
-            if (body != 0 && before != no_constraint && pack_stream_[before] != c.stream) {
-                const std::uint32_t t = pack_stream_[before];
-                need[t] = std::max(need[t], before - stream_begin_[t] + 1);
+        if (streamed) {
+            for (const std::uint32_t body : {c.body_a, c.body_b}) {
+                const std::uint32_t before = body_mark_[body];
+                if (body != 0 && before != no_constraint && pack_stream_[before] != c.stream) {
+                    const std::uint32_t t = pack_stream_[before];
+                    need[t] = std::max(need[t], before - stream_begin_[t] + 1);
+                }
             }
-            body_mark_[body] = open;
         }
+        body_mark_[c.body_a] = open;
+        body_mark_[c.body_b] = open;
     }
     close();
-    for (std::uint32_t s = open == no_constraint ? 0 : pack_stream_[open] + 1; s <= S; ++s)
+    for (std::uint32_t s = open == no_constraint ? 0 : open_stream + 1; s <= S; ++s)
         stream_begin_[s] = std::uint32_t(packs_.size());
-    awaited_.assign(packs_.size(), 0);
+    if (!streamed)
+        wait_begin_.assign(packs_.size() + 1, 0);
+    awaited_.assign(streamed ? packs_.size() : 0, 0);
     for (const StreamWait& w : waits_)
         awaited_[stream_begin_[w.stream] + w.packs - 1] = 1;
 }

@@ -33,6 +33,7 @@ void StepSolver::prepare_bodies(const BodyStore& store, const std::vector<Load>&
     // The contact regions (WorldDef::contact_regions) are slabs along gravity, cut across it:
     // each holds whole columns of a stack, whose load runs down them, and only the rows that
     // cross a cut give manifolds between regions (without gravity, the cuts are across x).
+    const bool regions = def.contact_regions > 1;
     const double g = length(def.gravity);
     const Vec2d across = g > 0.0 ? Vec2d{-def.gravity.y / g, def.gravity.x / g} : Vec2d{1.0, 0.0};
     cut_.assign(1, 0.0);
@@ -46,7 +47,8 @@ void StepSolver::prepare_bodies(const BodyStore& store, const std::vector<Load>&
         }
         solver_index_[i] = std::uint32_t(solver_bodies_.size());
         solver_bodies_.push_back({b.v, b.w, b.inv_mass, b.inv_inertia, {}, 0.0});
-        cut_.push_back(b.center.x * across.x + b.center.y * across.y);
+        if (regions)
+            cut_.push_back(b.center.x * across.x + b.center.y * across.y);
         Vec2d a{};
         double alpha = 0.0;
         if (b.type == BodyType::dynamic) {
