@@ -23,6 +23,7 @@ using namespace tamias2d;
 
 namespace {
 
+using test::iteration_settings;
 using test::random_scene;
 using test::Scene;
 
@@ -76,20 +77,10 @@ RegionOrder region_order(const Scene& s, const std::vector<double>& cut, std::ui
     return o;
 }
 
-ContactSolverSettings settings() {
-    ContactSolverSettings st;
-    st.inv_h = 240.0;
-    st.softness = make_softness(30.0, 10.0, 1.0 / 240.0);
-    st.linear_slop = 0.005;
-    st.push_max_velocity = 3.0;
-    st.restitution_threshold = 1.0;
-    return st;
-}
-
 /// Three rounds of warm start, soft iteration and relax, one manifold after another in
 /// `sequence` (contact_iteration.hpp for one manifold at a time).
 void sequential_passes(Scene& s, const std::vector<std::uint32_t>& sequence) {
-    const ContactSolverSettings st = settings();
+    const ContactSolverSettings st = iteration_settings();
     for (int round = 0; round < 3; ++round) {
         for (std::uint32_t i : sequence) {
             ContactConstraint& c = s.constraints[i];
@@ -107,7 +98,7 @@ void sequential_passes(Scene& s, const std::vector<std::uint32_t>& sequence) {
 /// The same rounds on the wide solver's streams, run by `threads` std::threads at once through
 /// PackStreams (each preferring its own stream), as the World's pool runs them.
 void threaded_passes(WideContactSolver& solver, std::vector<SolverBody>& bodies, int threads) {
-    const ContactSolverSettings st = settings();
+    const ContactSolverSettings st = iteration_settings();
     struct Pass {
         WideContactSolver* solver;
         std::vector<SolverBody>* bodies;
@@ -181,7 +172,7 @@ BOOST_AUTO_TEST_CASE(regions_reproduce_the_sequential_pass_in_their_order, *utf:
                 WideContactSolver solver;
                 solver.load(stored.constraints, stored.bodies, regions, cut);
                 BOOST_TEST_REQUIRE(solver.graph().streams() == regions + 1);
-                const ContactSolverSettings st = settings();
+                const ContactSolverSettings st = iteration_settings();
                 for (int round = 0; round < 3; ++round) {
                     solver.warm_start(stored.bodies);
                     solver.solve(stored.bodies, st, true);

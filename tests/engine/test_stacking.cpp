@@ -61,8 +61,8 @@ BOOST_AUTO_TEST_CASE(pyramid20_stands_in_regions, *utf::label("R8")) {
             for (int i = 0; i < 1000; ++i)
                 world.step(1.0 / 60.0);
             const double moved = length(world.position(top) - start);
-            BOOST_TEST_MESSAGE("pyramid20 in " << regions << " regions, top displacement: "
-                                               << moved << " m");
+            BOOST_TEST_MESSAGE("pyramid20 in " << regions << " regions, top displacement: " << moved
+                                               << " m");
             BOOST_TEST(moved < 0.05);
             BOOST_TEST(world.kinetic_energy() < 1e-6);
         }

@@ -18,18 +18,9 @@ using namespace tamias2d;
 
 namespace {
 
+using test::iteration_settings;
 using test::random_scene;
 using test::Scene;
-
-ContactSolverSettings settings() {
-    ContactSolverSettings st;
-    st.inv_h = 240.0;
-    st.softness = make_softness(30.0, 10.0, 1.0 / 240.0);
-    st.linear_slop = 0.005;
-    st.push_max_velocity = 3.0;
-    st.restitution_threshold = 1.0;
-    return st;
-}
 
 } // namespace
 
@@ -43,7 +34,7 @@ BOOST_AUTO_TEST_SUITE(wide_contact_solver)
 // IM7's iteration, checked against IM7's order (the manifolds one after another in creation
 // order); IM7's per-point equations are checked against closed forms elsewhere.
 BOOST_AUTO_TEST_CASE(packs_reproduce_the_sequential_pass, *utf::label("IM7")) {
-    const ContactSolverSettings st = settings();
+    const ContactSolverSettings st = iteration_settings();
     int compared = 0;
     for (std::uint32_t seed = 1; seed <= 40; ++seed) {
         const Scene scene = random_scene(seed, 3 + int(seed % 17), 5 + int(seed * 7 % 90));

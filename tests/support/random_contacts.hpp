@@ -10,7 +10,9 @@
 
 #include "tamias2d/dynamics/contact_constraint.hpp"
 #include "tamias2d/dynamics/restitution.hpp"
+#include "tamias2d/dynamics/softness.hpp"
 #include "tamias2d/dynamics/solver_body.hpp"
+#include "tamias2d/dynamics/solver_settings.hpp"
 
 namespace tamias2d::test {
 
@@ -57,6 +59,18 @@ inline Scene random_scene(std::uint32_t seed, int body_count, int constraint_cou
     }
     prepare_contacts(s.constraints, s.bodies);
     return s;
+}
+
+/// The iteration's settings the tests of its orders share: substeps of 1/240 s, a 30 Hz
+/// contact spring, some slop and a restitution threshold.
+inline ContactSolverSettings iteration_settings() {
+    ContactSolverSettings st;
+    st.inv_h = 240.0;
+    st.softness = make_softness(30.0, 10.0, 1.0 / 240.0);
+    st.linear_slop = 0.005;
+    st.push_max_velocity = 3.0;
+    st.restitution_threshold = 1.0;
+    return st;
 }
 
 } // namespace tamias2d::test
