@@ -77,10 +77,10 @@ struct WorldDef {
     double angular_sleep_tolerance = 0.035; ///< rad s^-1 (2 degrees per second)
     /// Threads that share a step's parallel parts (the narrow phase, the bodies' integration and
     /// write-back, the contacts' preparation, and with contact_regions > 1 the contact passes),
-    /// in [1, 256]. The results are bitwise identical
-    /// for every count (task_system.hpp). 1, the default: the step runs on the calling thread
-    /// alone, as without this setting. Above 1, without task_system's callbacks, the World
-    /// starts a pool of workers - 1 threads of its own, kept until it is destroyed.
+    /// in [1, 256]. The results are bitwise identical for every count (task_system.hpp). 1, the
+    /// default: the step runs on the calling thread alone, as without this setting. Above 1,
+    /// without task_system's callbacks, the World starts a pool of workers - 1 threads of its
+    /// own, kept until it is destroyed.
     int workers = 1;
     /// A game's job system to run those parts on instead of the World's pool (task_system.hpp):
     /// both callbacks or neither; used only when workers > 1, which must then be the number of

@@ -82,12 +82,12 @@ class ConstraintGraph {
     ///
     /// With `regions` > 1 (at most max_regions) the pass is the sequential one in another
     /// order: the manifolds whose moving bodies all lie in region 0, in creation order, then
-    /// those of region 1, ..., then those between regions 0 and 1, between 1 and 2, ... The
-    /// regions are slabs across `cut` (per solver body, its place along the cut axis, m),
-    /// bounded where they hold about equal numbers of manifolds. Each of those runs is a
-    /// stream (2 regions - 1 of them) with packs of its own: the regions' streams share no
-    /// moving body and run at once on different threads, and each stream between two regions
-    /// waits only for packs of the streams before it. A manifold joins its stream's open pack
+    /// those of region 1, ..., then all those between regions, in creation order. The regions
+    /// are slabs across `cut` (per solver body, its place along the cut axis, m), bounded
+    /// where they hold about equal numbers of manifolds. Each of those runs is a stream
+    /// (regions + 1 of them) with packs of its own: the regions' streams share no moving body
+    /// and run at once on different threads, and the last stream waits only for the packs of
+    /// the regions' streams that it follows. A manifold joins its stream's open pack
     /// only if every earlier manifold on its bodies sits in a pack opened before that one, so
     /// that a thread that runs the packs of any stream whose waits are met can always go on;
     /// any such schedule, and the packs in their stored order, give the same bits.

@@ -1,6 +1,6 @@
 // The contact iterations of the soft step on packs of four manifolds (one per lane, grouped by
 // ConstraintGraph's levels). The result equals the sequential Gauss-Seidel pass over the
-// manifolds in creation order, bit for bit (tests/dynamics/test_wide_contact_solver.cpp).
+// manifolds in creation order, bit for bit (tests/engine/test_wide_contact_solver.cpp).
 #pragma once
 
 #include <array>
