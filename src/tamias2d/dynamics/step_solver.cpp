@@ -296,10 +296,7 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
                           std::min(pack_count, std::size_t(last) * pack_block), false);
         };
         tasks.for_each_block(blocks_of(pack_count, pack_block), run);
-        if (streams > 1)
-            stream_pass(tasks, nullptr, false);
-        else
-            wide_solver_.warm_start(solver_bodies_);
+        contact_pass(tasks, streams, nullptr, false);
     } else {
         prepare_packs(contacts, 0, pack_count, true);
     }
@@ -321,29 +318,20 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
                 if (solved(j))
                     warm_start_joint(j, solver_bodies_);
             }
-            if (streams > 1)
-                stream_pass(tasks, nullptr, false);
-            else
-                wide_solver_.warm_start(solver_bodies_);
+            contact_pass(tasks, streams, nullptr, false);
         }
         for (Joint& j : joints) {
             if (solved(j))
                 solve_joint(j, solver_bodies_, joint_softness, h, true);
         }
-        if (streams > 1)
-            stream_pass(tasks, &st, true);
-        else
-            wide_solver_.solve(solver_bodies_, st, true);
+        contact_pass(tasks, streams, &st, true);
         integrate_positions(h, tasks);
         turn_joints(joints);
         for (Joint& j : joints) {
             if (solved(j))
                 solve_joint(j, solver_bodies_, joint_softness, h, false);
         }
-        if (streams > 1)
-            stream_pass(tasks, &st, false);
-        else
-            wide_solver_.solve(solver_bodies_, st, false);
+        contact_pass(tasks, streams, &st, false);
     }
     // A joint's solve can diverge where no input rule foresaw it (conflicting joints on light
     // bodies): checked before any impulse is stored, so that the world can refuse the step.
@@ -371,8 +359,15 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
     }
 }
 
-void StepSolver::stream_pass(const StepTasks& tasks, const ContactSolverSettings* settings,
-                             bool use_bias) {
+void StepSolver::contact_pass(const StepTasks& tasks, std::uint32_t streams,
+                              const ContactSolverSettings* settings, bool use_bias) {
+    if (streams <= 1) { // the packs in their stored order, on this thread
+        if (settings == nullptr)
+            wide_solver_.warm_start(solver_bodies_);
+        else
+            wide_solver_.solve(solver_bodies_, *settings, use_bias);
+        return;
+    }
     struct Pass {
         StepSolver* solver;
         const ContactSolverSettings* settings;

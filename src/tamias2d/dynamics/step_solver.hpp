@@ -75,9 +75,11 @@ class StepSolver {
     template <bool deferred>
     void write_back(BodyStore& store, ShapeStore& shape_store, const WorldDef& def,
                     std::uint32_t begin, std::uint32_t end);
-    /// One contact pass on the colouring's streams, on the tasks' threads: the warm start
-    /// (settings null) or an iteration (soft with use_bias, else the relax).
-    void stream_pass(const StepTasks& tasks, const ContactSolverSettings* settings, bool use_bias);
+    /// One contact pass: the warm start (settings null) or an iteration (soft with use_bias,
+    /// else the relax); with more than one stream on the tasks' threads (PackStreams), else
+    /// the packs in their stored order on the calling thread.
+    void contact_pass(const StepTasks& tasks, std::uint32_t streams,
+                      const ContactSolverSettings* settings, bool use_bias);
     /// The joints' body rotations after a position half (Joint::q_a, q_b).
     void turn_joints(std::vector<Joint>& joints);
 

@@ -21,7 +21,6 @@ class StepTasks {
 
     /// Whether loops may run on more than one thread (else the step keeps its serial loops).
     bool parallel() const { return workers_ > 1; }
-    int workers() const { return workers_; }
 
     /// Runs block(begin, end) over pieces covering [0, count) exactly once, in any order and on
     /// any threads, and returns when all have run.
