@@ -30,13 +30,17 @@
 
 namespace tamias2d {
 
-/// The bodies' poses a contact's manifold was computed at, and its points then. 96 bytes, kept
+/// The bodies' poses a contact's manifold was computed at, and its points then. 112 bytes, kept
 /// beside the contact (ContactManager::bases).
 struct ManifoldBasis {
     Rot q_a{}, q_b{};          ///< the bodies' rotations
     Vec2d b_in_a{};            ///< B's centre of mass in A's frame (m)
     double separation[2] = {}; ///< m, per point
     Vec2d on_a[2] = {};        ///< m, per point: the point in A's frame, from A's centre of mass
+    /// m: the points' largest distance from A's and from B's centre of mass. Fixed while the
+    /// manifold is reused, so measured once here rather than on every check (four square
+    /// roots of the nine a check took).
+    double arm_a = 0.0, arm_b = 0.0;
 };
 
 /// The chord |q - q0| of the turn from q0 to q: 2 sin(|angle| / 2), how far a unit arm moved.
@@ -50,6 +54,17 @@ inline Rot turn_between(Rot q, Rot q0) {
     return {q.c * q0.c + q.s * q0.s, q.s * q0.c - q.c * q0.s};
 }
 
+/// The rotation that takes A's frame into B's at the basis's poses.
+inline Rot a_to_b(const ManifoldBasis& basis) {
+    const Rot rel0 = turn_between(basis.q_b, basis.q_a);
+    return {rel0.c, -rel0.s};
+}
+
+/// Basis point j in B's frame, from B's centre (it coincided with on_a[j] then).
+inline Vec2d on_b(const ManifoldBasis& basis, Rot a_to_b0, int j) {
+    return rotate(a_to_b0, basis.on_a[j] - basis.b_in_a);
+}
+
 /// Records the poses `m` was just computed at (centres of mass ca, cb; rotations qa, qb).
 inline void record_basis(ManifoldBasis& basis, const Manifold& m, Rot qa, Rot qb, Vec2d ca,
                          Vec2d cb) {
@@ -60,6 +75,12 @@ inline void record_basis(ManifoldBasis& basis, const Manifold& m, Rot qa, Rot qb
         basis.separation[j] = m.points[j].separation;
         basis.on_a[j] = inv_rotate(qa, m.points[j].anchor_a);
     }
+    const Rot a_to_b0 = a_to_b(basis);
+    basis.arm_a = basis.arm_b = 0.0;
+    for (int j = 0; j < m.count; ++j) {
+        basis.arm_a = std::max(basis.arm_a, length(basis.on_a[j]));
+        basis.arm_b = std::max(basis.arm_b, length(on_b(basis, a_to_b0, j)));
+    }
 }
 
 /// Updates touching manifold `m` for the bodies' current poses and returns true when it may be
@@ -67,31 +88,25 @@ inline void record_basis(ManifoldBasis& basis, const Manifold& m, Rot qa, Rot qb
 /// computed afresh.
 inline bool reuse_manifold(Manifold& m, const ManifoldBasis& basis, Rot qa, Rot qb, Vec2d ca,
                            Vec2d cb, double tolerance) {
-    // B's rotation relative to A's, then and now; A's frame into B's, then.
-    const Rot rel0 = turn_between(basis.q_b, basis.q_a), rel = turn_between(qb, qa);
-    const Rot a_to_b0{rel0.c, -rel0.s};
-    // The points in B's frame, from B's centre (they coincided with on_a then).
-    Vec2d on_b[2];
-    double arm_a = 0.0, arm_b = 0.0;
-    for (int j = 0; j < m.count; ++j) {
-        on_b[j] = rotate(a_to_b0, basis.on_a[j] - basis.b_in_a);
-        arm_a = std::max(arm_a, length(basis.on_a[j]));
-        arm_b = std::max(arm_b, length(on_b[j]));
-    }
+    const double arm_a = basis.arm_a, arm_b = basis.arm_b;
     if (turn_chord(qa, basis.q_a) * arm_a > tolerance ||
         turn_chord(qb, basis.q_b) * arm_b > tolerance)
         return false;
+    // B's rotation relative to A's, then and now; A's frame into B's, then.
+    const Rot rel0 = turn_between(basis.q_b, basis.q_a), rel = turn_between(qb, qa);
+    const Rot a_to_b0 = a_to_b(basis);
     const double chord_rel = turn_chord(rel, rel0);
     const Vec2d d = cb - ca;
+    // The smaller bound holds: B's frame is measured only when A's bound is over.
     const double in_a = length(inv_rotate(qa, d) - basis.b_in_a) + chord_rel * arm_b;
     // In B's frame A's centre is at -d, and was at -(B in A) turned into B's frame of then.
-    const double in_b =
-        length(inv_rotate(qb, d) - rotate(a_to_b0, basis.b_in_a)) + chord_rel * arm_a;
-    if (std::min(in_a, in_b) > tolerance)
+    if (in_a > tolerance &&
+        length(inv_rotate(qb, d) - rotate(a_to_b0, basis.b_in_a)) + chord_rel * arm_a > tolerance)
         return false;
     for (int j = 0; j < m.count; ++j) {
         ManifoldPoint& p = m.points[j];
-        const Vec2d pa = ca + rotate(qa, basis.on_a[j]), pb = cb + rotate(qb, on_b[j]);
+        const Vec2d pa = ca + rotate(qa, basis.on_a[j]);
+        const Vec2d pb = cb + rotate(qb, on_b(basis, a_to_b0, j));
         p.separation = basis.separation[j] + dot(pb - pa, m.normal);
         p.point = 0.5 * (pa + pb);
         p.anchor_a = p.point - ca;
