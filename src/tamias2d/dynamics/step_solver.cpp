@@ -286,7 +286,8 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
             warm_start_joint(j, solver_bodies_);
     }
     const std::size_t pack_count = wide_solver_.order().size();
-    constexpr std::size_t pack_block = 32; // ~10 us of lane filling and preparation
+    constexpr std::size_t pack_block = 32;   // ~10 us of lane filling and preparation
+    constexpr std::size_t store_block = 128; // ~10 us of stores
     if (streams > 1 || (tasks.parallel() && pack_count > pack_block)) {
         // Preparation reads only the bodies' inverse masses, which the warm start leaves alone,
         // so the packs may be prepared in any order, and warm started after them in solve
@@ -350,7 +351,17 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
         }
     }
     const std::span<ContactConstraint> bouncers(bouncing_.data(), bounce_count);
-    wide_solver_.store(contacts.warm_impulses, contacts.total_impulses, bouncers);
+    if (tasks.parallel() && pack_count > store_block) {
+        auto run = [&](int first, int last) {
+            wide_solver_.store(contacts.warm_impulses, contacts.total_impulses, bouncers,
+                               std::size_t(first) * store_block,
+                               std::min(pack_count, std::size_t(last) * store_block));
+        };
+        tasks.for_each_block(blocks_of(pack_count, store_block), run);
+    } else {
+        wide_solver_.store(contacts.warm_impulses, contacts.total_impulses, bouncers, 0,
+                           pack_count);
+    }
     // \srs{R8} Post-collision velocities (and, integrated, positions) of colliding bodies.
     apply_restitution(bouncers, solver_bodies_, st);
     for (const ContactConstraint& b : bouncers) {

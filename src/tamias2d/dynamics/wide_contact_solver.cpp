@@ -235,12 +235,13 @@ void WideContactSolver::store(std::span<ContactConstraint> constraints) const {
 }
 
 void WideContactSolver::store(std::span<ContactImpulses> warm, std::span<ContactImpulses> totals,
-                              std::span<ContactConstraint> bouncing) const {
+                              std::span<ContactConstraint> bouncing, std::size_t begin,
+                              std::size_t end) const {
     // The packs name their contacts level by level, scattered: ask for the records four packs
     // ahead (dense arrays, mostly in cache even at 16k boxes).
     constexpr std::size_t ahead = 4;
-    for (std::size_t i = 0; i < packs_.size(); ++i) {
-        if (i + ahead < packs_.size()) {
+    for (std::size_t i = begin; i < end; ++i) {
+        if (i + ahead < end) {
             const WideContactConstraint& next = packs_[i + ahead];
             for (int l = 0; l < wide_lanes; ++l) {
                 if (next.count[l] != 0) {
