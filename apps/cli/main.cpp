@@ -1,6 +1,7 @@
 // tamias2d: runs and checks scene files (docs/scene-format.md) from the command line.
 //
 //   tamias2d run <scene.json | -> [--steps N] [--every K] [--format csv|json] [-o FILE]
+//                [--workers N]
 //   tamias2d validate <scene.json | ->
 //   tamias2d view <scene.json | -> [--steps N] [--every K] [-o FILE]   (view_command.cpp)
 //   tamias2d info
@@ -38,6 +39,7 @@ using namespace tamias2d;
 
 constexpr const char* usage = R"(Usage:
   tamias2d run <scene.json | -> [--steps N] [--every K] [--format csv|json] [-o FILE]
+               [--workers N]
   tamias2d validate <scene.json | ->
   tamias2d view <scene.json | -> [--steps N] [--every K] [-o FILE.html]
   tamias2d info
@@ -72,6 +74,9 @@ Options:
   --format F         csv (default) or json
   -o, --output FILE  write to FILE instead of standard output ("-": standard output); no
                      partial file is left behind when the run fails
+  --workers N        step on N threads, N in [1, 256] (default 1); the states are bitwise
+                     the same for every N. The contact passes run on several threads only in
+                     a scene whose world sets "contact_regions" above 1
   -h, --help         print this text
 
 Exit status: 0 on success, 1 for an invalid scene or a failed run (a state that is not finite
@@ -120,6 +125,7 @@ struct Options {
     std::optional<int> every;
     std::string format = "csv";
     std::string output;
+    std::optional<int> workers; ///< WorldDef::workers; a scene file does not carry it
 };
 
 int parse_count(std::string_view option, std::string_view text) {
@@ -168,6 +174,10 @@ Options parse_args(const std::vector<std::string_view>& args) {
             o.format = value();
             if (o.format != "csv" && o.format != "json")
                 throw UsageError("--format expects csv or json, got '" + o.format + "'");
+        } else if (a == "--workers") {
+            o.workers = parse_count(a, value());
+            if (*o.workers == 0)
+                throw UsageError("--workers expects an integer >= 1, got '0'");
         } else if (a == "--output" || a == "-o") {
             o.output = value();
             if (o.output.empty())
@@ -327,7 +337,10 @@ int run(const Options& o) {
     const int steps = o.steps.value_or(scene.steps);
     const int every = o.every.value_or(scene.output_every);
 
-    World world(scene.world);
+    WorldDef def = scene.world;
+    // (Its upper bound is the world's rule, reported as a failed run with the field named.)
+    def.workers = o.workers.value_or(def.workers);
+    World world(def);
     const std::vector<BodyId> ids = io::build_world(scene, world);
 
     std::ofstream file;
