@@ -1,8 +1,8 @@
 // Contact regions (WorldDef::contact_regions): the colouring's streams, and the threads that run
 // them, against the sequential Gauss-Seidel pass in the order the regions define (world_def.hpp):
-// the manifolds within region 0, ..., within region R - 1, then those between regions, each run
-// in creation order; the regions are slabs of the bodies' places, bounded at the manifolds'
-// places of rank n r / R.
+// the manifolds within region 0, ..., within region R - 1, in creation order, then those
+// between regions by greedy colour; the regions are slabs of the bodies' places, bounded at the
+// manifolds' places of rank n r / R.
 #include <boost/test/unit_test.hpp>
 
 #include <algorithm>
@@ -69,11 +69,33 @@ RegionOrder region_order(const Scene& s, const std::vector<double>& cut, std::ui
         const std::uint32_t rb = region(c.body_b != 0 ? c.body_b : c.body_a);
         o.stream.push_back(ra == rb ? ra : regions);
     }
-    for (std::uint32_t st = 0; st <= regions; ++st) {
+    for (std::uint32_t st = 0; st < regions; ++st) {
         for (std::uint32_t i = 0; i < s.constraints.size(); ++i)
             if (o.stream[i] == st)
                 o.sequence.push_back(i);
     }
+    // Those between regions by greedy colour: in creation order each takes the lowest colour
+    // (of 64; with all taken, 64) none of the earlier ones on its moving bodies has; then by
+    // colour, creation order within.
+    std::vector<std::set<int>> taken(cut.size());
+    std::vector<std::pair<int, std::uint32_t>> coloured;
+    for (std::uint32_t i = 0; i < s.constraints.size(); ++i) {
+        if (o.stream[i] != regions)
+            continue;
+        const ContactConstraint& c = s.constraints[i];
+        int colour = 0;
+        while (colour < 64 && ((c.body_a != 0 && taken[c.body_a].count(colour) != 0) ||
+                               (c.body_b != 0 && taken[c.body_b].count(colour) != 0)))
+            ++colour;
+        if (colour < 64) {
+            taken[c.body_a].insert(colour);
+            taken[c.body_b].insert(colour);
+        }
+        coloured.emplace_back(colour, i);
+    }
+    std::sort(coloured.begin(), coloured.end());
+    for (const auto& [colour, i] : coloured)
+        o.sequence.push_back(i);
     return o;
 }
 

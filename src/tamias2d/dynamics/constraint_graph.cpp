@@ -1,6 +1,7 @@
 #include "tamias2d/dynamics/constraint_graph.hpp"
 
 #include <algorithm>
+#include <bit>
 
 namespace tamias2d {
 
@@ -47,6 +48,43 @@ void ConstraintGraph::sequence(std::span<const GraphEdge> edges, std::uint32_t R
             start[s + 1] += start[s];
         for (std::uint32_t i = 0; i < n; ++i)
             sequence_[start[stream_of_[i]]++] = i;
+        between_by_colour(edges, std::span(sequence_).subspan(start[R - 1]), cut.size());
+    }
+}
+
+void ConstraintGraph::between_by_colour(std::span<const GraphEdge> edges,
+                                        std::span<std::uint32_t> between, std::size_t body_count) {
+    // The manifolds between regions join the slabs along their bounds: in creation order a
+    // row's manifolds are one chain, one level per manifold, so one lane per pack. Greedy
+    // colours (at most `colours`, the rest after them) make that chain two or three levels.
+    constexpr std::uint32_t colours = 64;
+    body_colours_.resize(body_count, 0); // all zero between calls
+    colour_of_.resize(between.size());
+    std::array<std::uint32_t, colours + 2> start{};
+    for (std::size_t k = 0; k < between.size(); ++k) {
+        const GraphEdge& e = edges[between[k]];
+        // Body 0 stands for every static body: never written, so it bars no colour.
+        const std::uint64_t used = (e.body_a != 0 ? body_colours_[e.body_a] : 0) |
+                                   (e.body_b != 0 ? body_colours_[e.body_b] : 0);
+        const auto c = std::uint32_t(std::countr_zero(~used)); // 64: all taken
+        colour_of_[k] = c;
+        ++start[c + 1];
+        if (c < colours) {
+            if (e.body_a != 0)
+                body_colours_[e.body_a] |= std::uint64_t{1} << c;
+            if (e.body_b != 0)
+                body_colours_[e.body_b] |= std::uint64_t{1} << c;
+        }
+    }
+    for (std::uint32_t c = 0; c <= colours; ++c)
+        start[c + 1] += start[c];
+    between_scratch_.resize(between.size());
+    for (std::size_t k = 0; k < between.size(); ++k)
+        between_scratch_[start[colour_of_[k]]++] = between[k];
+    std::copy(between_scratch_.begin(), between_scratch_.end(), between.begin());
+    for (const std::uint32_t i : between) {
+        body_colours_[edges[i].body_a] = 0;
+        body_colours_[edges[i].body_b] = 0;
     }
 }
 

@@ -82,7 +82,8 @@ class ConstraintGraph {
     ///
     /// With `regions` > 1 (at most max_regions) the pass is the sequential one in another
     /// order: the manifolds whose moving bodies all lie in region 0, in creation order, then
-    /// those of region 1, ..., then all those between regions, in creation order. The regions
+    /// those of region 1, ..., then all those between regions, by greedy colour (see
+    /// between_by_colour), in creation order within a colour. The regions
     /// are slabs across `cut` (per solver body, its place along the cut axis, m), bounded
     /// where they hold about equal numbers of manifolds. Each of those runs is a stream
     /// (regions + 1 of them) with packs of its own: the regions' streams share no moving body
@@ -114,17 +115,25 @@ class ConstraintGraph {
 
   private:
     /// Each manifold's stream (stream_of_), and the pass's order (sequence_): stream by stream,
-    /// creation order within; R regions across `cut`, streams_ already set.
+    /// creation order within (the last stream by colour first); R regions across `cut`,
+    /// streams_ already set.
     void sequence(std::span<const GraphEdge> edges, std::uint32_t R, std::span<const double> cut);
+    /// Orders `between` (manifolds in creation order) by their greedy colours: each in turn
+    /// takes the lowest of 64 colours that no earlier one on its moving bodies took (with all
+    /// 64 taken: after them all), then creation order within a colour.
+    void between_by_colour(std::span<const GraphEdge> edges, std::span<std::uint32_t> between,
+                           std::size_t body_count);
 
     /// Per body: one past the level of its last constraint so far, while levelling; then the
     /// pack of its last constraint placed so far, while packing (no_constraint: none yet).
     std::vector<std::uint32_t> body_mark_;
     std::vector<std::uint32_t> level_of_;
     std::vector<std::uint32_t> level_start_, level_fill_;
-    std::vector<double> cuts_;             ///< scratch for the regions' bounds
-    std::vector<std::uint32_t> stream_of_; ///< per manifold: its stream
-    std::vector<std::uint32_t> sequence_;  ///< the manifolds in the pass's order
+    std::vector<double> cuts_;                ///< scratch for the regions' bounds
+    std::vector<std::uint32_t> stream_of_;    ///< per manifold: its stream
+    std::vector<std::uint32_t> sequence_;     ///< the manifolds in the pass's order
+    std::vector<std::uint64_t> body_colours_; ///< per body: the colours taken on it (scratch)
+    std::vector<std::uint32_t> colour_of_, between_scratch_; ///< scratch of between_by_colour
     /// A constraint, its bodies and its stream, in solve order (what placing it reads).
     struct Placement {
         std::uint32_t index = 0;
