@@ -96,7 +96,8 @@ place, the field and the violated constraint), 2 for a bad command line.
 constexpr const char* info_usage = R"(Usage: tamias2d info
 
 Print the library's version, the instruction set the contact solver runs with on this machine
-(avx2 or sse2 on x86-64, chosen when the program starts; both give bitwise the same results),
+(x86-64-v4, avx2 or sse2 on x86-64, chosen when the program starts; all give bitwise the same
+results),
 and the compiler that built it.
 
 Exit status: 0.

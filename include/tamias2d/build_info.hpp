@@ -10,9 +10,9 @@ namespace tamias2d {
 /// the headers and the library come from the same build.
 const char* library_version() noexcept;
 
-/// The instruction set the contact solver's packs of four run with on this machine: "avx2" or
-/// "sse2" on x86-64 (chosen when the program loads; both give bitwise the same results), and
-/// "generic" on other processors.
+/// The instruction set the contact solver's packs of four run with on this machine:
+/// "x86-64-v4" (AVX-512), "avx2" or "sse2" on x86-64 (chosen when the program loads; all give
+/// bitwise the same results), and "generic" on other processors.
 const char* solver_instruction_set() noexcept;
 
 } // namespace tamias2d

@@ -9,8 +9,8 @@ const char* library_version() noexcept {
 }
 
 const char* solver_instruction_set() noexcept {
-    if (WideContactSolver::uses_avx2())
-        return "avx2";
+    if (const char* clone = WideContactSolver::instruction_set())
+        return clone;
 #if defined(__x86_64__) || defined(_M_X64)
     return "sse2"; // the x86-64 baseline
 #else

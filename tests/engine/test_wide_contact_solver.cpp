@@ -80,7 +80,11 @@ BOOST_AUTO_TEST_CASE(packs_reproduce_the_sequential_pass, *utf::label("IM7")) {
     }
     BOOST_TEST(compared > 1000);
     BOOST_TEST_MESSAGE("wide solver: " << compared << " points equal to the sequential pass"
-                                       << (WideContactSolver::uses_avx2() ? " (AVX2)" : " (SSE2)"));
+                                       << " ("
+                                       << (WideContactSolver::instruction_set()
+                                               ? WideContactSolver::instruction_set()
+                                               : "baseline")
+                                       << ")");
 }
 
 // Oracle: the level rule itself, checked pack by pack: every constraint is in exactly one lane,

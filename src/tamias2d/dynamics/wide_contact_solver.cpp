@@ -269,12 +269,16 @@ void WideContactSolver::store(std::span<ContactImpulses> warm, std::span<Contact
     }
 }
 
-bool WideContactSolver::uses_avx2() {
+const char* WideContactSolver::instruction_set() {
 #if TAMIAS_WIDE_CLONES
-    return __builtin_cpu_supports("avx2");
-#else
-    return false;
+#if TAMIAS_WIDE_X86_64_V4
+    if (__builtin_cpu_supports("x86-64-v4"))
+        return "x86-64-v4";
 #endif
+    if (__builtin_cpu_supports("avx2"))
+        return "avx2";
+#endif
+    return nullptr;
 }
 
 } // namespace tamias2d

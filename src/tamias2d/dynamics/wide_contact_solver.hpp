@@ -77,9 +77,9 @@ class WideContactSolver {
 
     /// The packs in solve order (the benchmark runs its own instantiation of the loops on them).
     std::span<WideContactConstraint> packs() { return packs_; }
-    /// Whether the packs run with AVX2 here (otherwise SSE2, also in unoptimised builds; the
-    /// results are equal).
-    static bool uses_avx2();
+    /// The clone the packs run with here: "x86-64-v4" or "avx2", or nullptr for the baseline
+    /// (SSE2 on x86-64; also in unoptimised builds). The results are equal.
+    static const char* instruction_set();
 
   private:
     /// Asks for the lines of the pack two ahead of pack i, which preparation writes next but
