@@ -3,16 +3,7 @@
 # then the contents of SHOW if given (a file the program wrote). The CTest entry's
 # PASS_REGULAR_EXPRESSION checks the message and N (CTest ignores the exit status of a test that
 # has a pass expression, so the status is checked through the text).
-set(args "")
-set(after_separator FALSE)
-math(EXPR last "${CMAKE_ARGC} - 1")
-foreach(i RANGE ${last})
-  if(after_separator)
-    list(APPEND args "${CMAKE_ARGV${i}}")
-  elseif("${CMAKE_ARGV${i}}" STREQUAL "--")
-    set(after_separator TRUE)
-  endif()
-endforeach()
+include(${CMAKE_CURRENT_LIST_DIR}/script_args.cmake)
 set(input "")
 if(DEFINED INPUT)
   set(input INPUT_FILE "${INPUT}")

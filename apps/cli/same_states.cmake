@@ -4,16 +4,7 @@
 # prints "same states: <rows> rows" when the two outputs are equal byte for byte; otherwise
 # the first differing line of each. The scene is copied with the setting put first in its
 # "world" object.
-set(args "")
-set(after_separator FALSE)
-math(EXPR last "${CMAKE_ARGC} - 1")
-foreach(i RANGE ${last})
-  if(after_separator)
-    list(APPEND args "${CMAKE_ARGV${i}}")
-  elseif("${CMAKE_ARGV${i}}" STREQUAL "--")
-    set(after_separator TRUE)
-  endif()
-endforeach()
+include(${CMAKE_CURRENT_LIST_DIR}/script_args.cmake)
 file(READ "${SCENE}" text)
 string(REPLACE "\"world\": {" "\"world\": { \"contact_regions\": ${REGIONS}," regioned "${text}")
 if(regioned STREQUAL text)

@@ -3,16 +3,7 @@
 # "exit code: N", then what the page holds, read back from the run embedded in it:
 #   "page: B bytes, F frames, N bodies, J joints, self-contained: yes|no"
 # (self-contained: no <script src>, <link> or url() that would load anything from elsewhere).
-set(args "")
-set(after_separator FALSE)
-math(EXPR last "${CMAKE_ARGC} - 1")
-foreach(i RANGE ${last})
-  if(after_separator)
-    list(APPEND args "${CMAKE_ARGV${i}}")
-  elseif("${CMAKE_ARGV${i}}" STREQUAL "--")
-    set(after_separator TRUE)
-  endif()
-endforeach()
+include(${CMAKE_CURRENT_LIST_DIR}/script_args.cmake)
 set(input "")
 if(DEFINED INPUT)
   set(input INPUT_FILE "${INPUT}")
