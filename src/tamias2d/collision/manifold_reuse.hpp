@@ -38,8 +38,7 @@ struct ManifoldBasis {
     double separation[2] = {}; ///< m, per point
     Vec2d on_a[2] = {};        ///< m, per point: the point in A's frame, from A's centre of mass
     /// m: the points' largest distance from A's and from B's centre of mass. Fixed while the
-    /// manifold is reused, so measured once here rather than on every check (four square
-    /// roots of the nine a check took).
+    /// manifold is reused, so measured here once, not in every check.
     double arm_a = 0.0, arm_b = 0.0;
 };
 

@@ -80,18 +80,17 @@ class ConstraintGraph {
     /// it; the levels, in order, fill the packs, a pack closing early only where the next
     /// manifold follows one of its lanes on a body. Allocates only while the scene grows.
     ///
-    /// With `regions` > 1 (at most max_regions) the pass is the sequential one in another
-    /// order: the manifolds whose moving bodies all lie in region 0, in creation order, then
-    /// those of region 1, ..., then all those between regions, by greedy colour (see
-    /// between_by_colour), in creation order within a colour. The regions
-    /// are slabs across `cut` (per solver body, its place along the cut axis, m), bounded
-    /// where they hold about equal numbers of manifolds. Each of those runs is a stream
-    /// (regions + 1 of them) with packs of its own: the regions' streams share no moving body
-    /// and run at once on different threads, and the last stream waits only for the packs of
-    /// the regions' streams that it follows. A manifold joins its stream's open pack
-    /// only if every earlier manifold on its bodies sits in a pack opened before that one, so
-    /// that a thread that runs the packs of any stream whose waits are met can always go on;
-    /// any such schedule, and the packs in their stored order, give the same bits.
+    /// With `regions` > 1 (at most max_regions) the pass is the sequential one in another order:
+    /// the manifolds whose moving bodies all lie in region 0, in creation order, then those of
+    /// region 1, ..., then all those between regions, by greedy colour (see between_by_colour), in
+    /// creation order within a colour. The regions are slabs across `cut` (per solver body, its
+    /// place along the cut axis, m), bounded where they hold about equal numbers of manifolds. Each
+    /// of those runs is a stream (regions + 1 of them) with packs of its own: the regions' streams
+    /// share no moving body and run at once on different threads, and the last stream waits only
+    /// for the packs of the regions' streams that it follows. A manifold joins its stream's open
+    /// pack only if every earlier manifold on its bodies sits in a pack opened before that one, so
+    /// that a thread that runs the packs of any stream whose waits are met can always go on; any
+    /// such schedule, and the packs in their stored order, give the same bits.
     void colour(std::span<const GraphEdge> edges, std::size_t body_count, std::uint32_t regions = 1,
                 std::span<const double> cut = {});
 
