@@ -97,8 +97,7 @@ constexpr const char* info_usage = R"(Usage: tamias2d info
 
 Print the library's version, the instruction set the contact solver runs with on this machine
 (x86-64-v4, avx2 or sse2 on x86-64, chosen when the program starts; all give bitwise the same
-results),
-and the compiler that built it.
+results), and the compiler that built it.
 
 Exit status: 0.
 )";
