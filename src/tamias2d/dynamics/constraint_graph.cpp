@@ -54,9 +54,10 @@ void ConstraintGraph::sequence(std::span<const GraphEdge> edges, std::uint32_t R
 
 void ConstraintGraph::between_by_colour(std::span<const GraphEdge> edges,
                                         std::span<std::uint32_t> between, std::size_t body_count) {
-    // The manifolds between regions join the slabs along their bounds: in creation order a
-    // row's manifolds are one chain, one level per manifold, so one lane per pack. Greedy
-    // colours (at most `colours`, the rest after them) make that chain two or three levels.
+    // The manifolds between regions join the slabs along their bounds: in a pile's creation
+    // order (bottom up) those across one bound are a chain up the pile, each sharing a box with
+    // the one below it: one level per manifold, so one lane per pack. Greedy colours (at most
+    // `colours`, the rest after them) make that chain two or three levels.
     constexpr std::uint32_t colours = 64;
     body_colours_.resize(body_count, 0); // all zero between calls
     colour_of_.resize(between.size());
