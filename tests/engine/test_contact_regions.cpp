@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "support/random_contacts.hpp"
+#include "support/sequential_pass.hpp"
 #include "tamias2d/dynamics/constraint_graph.hpp"
 #include "tamias2d/dynamics/contact_iteration.hpp"
 #include "tamias2d/dynamics/pack_streams.hpp"
@@ -23,9 +24,11 @@ using namespace tamias2d;
 
 namespace {
 
+using test::check_same_pass;
 using test::iteration_settings;
 using test::random_scene;
 using test::Scene;
+using test::sequential_passes;
 
 /// Random places along the cut axis for the bodies (body 0, the static one, has none).
 std::vector<double> random_places(std::uint32_t seed, std::size_t body_count) {
@@ -99,24 +102,6 @@ RegionOrder region_order(const Scene& s, const std::vector<double>& cut, std::ui
     return o;
 }
 
-/// Three rounds of warm start, soft iteration and relax, one manifold after another in
-/// `sequence` (contact_iteration.hpp for one manifold at a time).
-void sequential_passes(Scene& s, const std::vector<std::uint32_t>& sequence) {
-    const ContactSolverSettings st = iteration_settings();
-    for (int round = 0; round < 3; ++round) {
-        for (std::uint32_t i : sequence) {
-            ContactConstraint& c = s.constraints[i];
-            iteration::warm_start(c, s.bodies[c.body_a], s.bodies[c.body_b]);
-        }
-        for (const bool bias : {true, false}) {
-            for (std::uint32_t i : sequence) {
-                ContactConstraint& c = s.constraints[i];
-                iteration::solve(c, s.bodies[c.body_a], s.bodies[c.body_b], st, bias);
-            }
-        }
-    }
-}
-
 /// The same rounds on the wide solver's streams, run by `threads` std::threads at once through
 /// PackStreams (each preferring its own stream), as the World's pool runs them.
 void threaded_passes(WideContactSolver& solver, std::vector<SolverBody>& bodies, int threads) {
@@ -153,24 +138,6 @@ void threaded_passes(WideContactSolver& solver, std::vector<SolverBody>& bodies,
     }
 }
 
-void check_equal(const Scene& a, const Scene& b) {
-    for (std::size_t i = 0; i < a.bodies.size(); ++i) {
-        BOOST_TEST(a.bodies[i].v.x == b.bodies[i].v.x);
-        BOOST_TEST(a.bodies[i].v.y == b.bodies[i].v.y);
-        BOOST_TEST(a.bodies[i].w == b.bodies[i].w);
-    }
-    for (std::size_t i = 0; i < a.constraints.size(); ++i) {
-        for (int j = 0; j < a.constraints[i].count; ++j) {
-            BOOST_TEST(a.constraints[i].points[j].normal_impulse ==
-                       b.constraints[i].points[j].normal_impulse);
-            BOOST_TEST(a.constraints[i].points[j].tangent_impulse ==
-                       b.constraints[i].points[j].tangent_impulse);
-            BOOST_TEST(a.constraints[i].points[j].total_normal_impulse ==
-                       b.constraints[i].points[j].total_normal_impulse);
-        }
-    }
-}
-
 } // namespace
 
 BOOST_AUTO_TEST_SUITE(contact_regions)
@@ -201,7 +168,7 @@ BOOST_AUTO_TEST_CASE(regions_reproduce_the_sequential_pass_in_their_order, *utf:
                     solver.solve(stored.bodies, st, false);
                 }
                 solver.store(stored.constraints);
-                check_equal(stored, seq);
+                check_same_pass(stored, seq);
 
                 for (int threads = 1; threads <= 3; ++threads) {
                     BOOST_TEST_CONTEXT(threads << " threads") {
@@ -210,7 +177,7 @@ BOOST_AUTO_TEST_CASE(regions_reproduce_the_sequential_pass_in_their_order, *utf:
                         streamed.load(run.constraints, run.bodies, regions, cut);
                         threaded_passes(streamed, run.bodies, threads);
                         streamed.store(run.constraints);
-                        check_equal(run, seq);
+                        check_same_pass(run, seq);
                     }
                 }
                 ++compared;

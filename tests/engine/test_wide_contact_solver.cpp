@@ -3,11 +3,14 @@
 // speed must not change IM3's results).
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
 #include <cstdint>
+#include <random>
 #include <set>
 #include <vector>
 
 #include "support/random_contacts.hpp"
+#include "support/sequential_pass.hpp"
 #include "tamias2d/dynamics/constraint_graph.hpp"
 #include "tamias2d/dynamics/contact_iteration.hpp"
 #include "tamias2d/dynamics/restitution.hpp"
@@ -18,9 +21,12 @@ using namespace tamias2d;
 
 namespace {
 
+using test::check_same_pass;
+using test::creation_order;
 using test::iteration_settings;
 using test::random_scene;
 using test::Scene;
+using test::sequential_passes;
 
 } // namespace
 
@@ -40,14 +46,7 @@ BOOST_AUTO_TEST_CASE(packs_reproduce_the_sequential_pass, *utf::label("IM7")) {
         const Scene scene = random_scene(seed, 3 + int(seed % 17), 5 + int(seed * 7 % 90));
 
         Scene seq = scene;
-        for (int pass = 0; pass < 3; ++pass) {
-            for (ContactConstraint& c : seq.constraints)
-                iteration::warm_start(c, seq.bodies[c.body_a], seq.bodies[c.body_b]);
-            for (bool bias : {true, false}) {
-                for (ContactConstraint& c : seq.constraints)
-                    iteration::solve(c, seq.bodies[c.body_a], seq.bodies[c.body_b], st, bias);
-            }
-        }
+        sequential_passes(seq, creation_order(scene));
 
         Scene wide = scene;
         WideContactSolver solver;
@@ -59,24 +58,9 @@ BOOST_AUTO_TEST_CASE(packs_reproduce_the_sequential_pass, *utf::label("IM7")) {
         }
         solver.store(wide.constraints);
 
-        for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
-            BOOST_TEST(wide.bodies[i].v.x == seq.bodies[i].v.x);
-            BOOST_TEST(wide.bodies[i].v.y == seq.bodies[i].v.y);
-            BOOST_TEST(wide.bodies[i].w == seq.bodies[i].w);
-        }
-        for (std::size_t i = 0; i < scene.constraints.size(); ++i) {
-            for (int j = 0; j < scene.constraints[i].count; ++j) {
-                const ContactConstraintPoint& a = wide.constraints[i].points[j];
-                const ContactConstraintPoint& b = seq.constraints[i].points[j];
-                BOOST_TEST(a.normal_impulse == b.normal_impulse);
-                BOOST_TEST(a.tangent_impulse == b.tangent_impulse);
-                BOOST_TEST(a.max_normal_impulse == b.max_normal_impulse);
-                BOOST_TEST(a.total_normal_impulse == b.total_normal_impulse);
-                BOOST_TEST(a.total_tangent_impulse == b.total_tangent_impulse);
-                ++compared;
-            }
-        }
-        BOOST_TEST(seq.bodies[0].v.x == 0.0); // the static body never moves
+        check_same_pass(wide, seq);
+        for (const ContactConstraint& c : scene.constraints)
+            compared += c.count;
     }
     BOOST_TEST(compared > 1000);
     BOOST_TEST_MESSAGE("wide solver: " << compared << " points equal to the sequential pass"
@@ -85,6 +69,54 @@ BOOST_AUTO_TEST_CASE(packs_reproduce_the_sequential_pass, *utf::label("IM7")) {
                                                ? WideContactSolver::instruction_set()
                                                : "baseline")
                                        << ")");
+}
+
+// Oracle: the same sequential pass. The packs' path groups only order manifolds within a level,
+// which commute, so packs kept from an earlier colouring whose groups differ (colour keeps them
+// while at most 1 in regroup_share manifolds changed group) must give the same numbers too:
+// the solver is first loaded with some two-point manifolds' separations negated (apart <->
+// touching), then with the scene itself.
+BOOST_AUTO_TEST_CASE(kept_packs_reproduce_the_sequential_pass, *utf::label("IM7")) {
+    const ContactSolverSettings st = iteration_settings();
+    int regrouped = 0; // seeds whose kept packs differ from the scene's own
+    for (std::uint32_t seed = 1; seed <= 40; ++seed) {
+        const Scene scene = random_scene(seed, 3 + int(seed % 17), 16 + int(seed * 7 % 90));
+
+        Scene seq = scene;
+        sequential_passes(seq, creation_order(scene), 1);
+
+        Scene earlier = scene;
+        std::size_t flipped = 0;
+        for (ContactConstraint& c : earlier.constraints) {
+            if (c.count != 2 ||
+                (flipped + 1) * ConstraintGraph::regroup_share > earlier.constraints.size())
+                continue;
+            for (ContactConstraintPoint& p : c.points)
+                p.base_separation = -p.base_separation;
+            ++flipped;
+        }
+        Scene wide = scene;
+        WideContactSolver solver;
+        solver.load(earlier.constraints, earlier.bodies);
+        const std::vector<ConstraintGraph::Pack> before(solver.graph().packs().begin(),
+                                                        solver.graph().packs().end());
+        solver.load(wide.constraints, wide.bodies);
+        const std::vector<ConstraintGraph::Pack> after(solver.graph().packs().begin(),
+                                                       solver.graph().packs().end());
+        BOOST_TEST(after == before); // kept, so this is the case under test
+        WideContactSolver afresh;
+        afresh.load(scene.constraints, scene.bodies);
+        regrouped += !std::equal(after.begin(), after.end(), afresh.graph().packs().begin(),
+                                 afresh.graph().packs().end());
+        solver.warm_start(wide.bodies);
+        solver.solve(wide.bodies, st, true);
+        solver.solve(wide.bodies, st, false);
+        solver.store(wide.constraints);
+
+        check_same_pass(wide, seq);
+    }
+    BOOST_TEST(regrouped > 20);
+    BOOST_TEST_MESSAGE("kept packs: " << regrouped << " of 40 scenes' differ from their own packs");
 }
 
 // Oracle: the level rule itself, checked pack by pack: every constraint is in exactly one lane,
@@ -149,6 +181,71 @@ BOOST_AUTO_TEST_CASE(packs_fill_across_levels) {
     b.insert(b.end(), {{5, 6}, {1, 7}});
     const std::vector<P> expected_b = {{0, 1, 2, 3}, {4, x, x, x}, {5, 6, x, x}};
     BOOST_TEST(packs_of(b) == expected_b);
+}
+
+// Oracle: the rule for keeping packs, with a fresh graph as the colouring of given inputs.
+// A graph coloured before gives the packs of the last inputs it coloured while the bodies and
+// regions stay and at most 1 in regroup_share manifolds changed group since; otherwise those
+// of the new inputs.
+BOOST_AUTO_TEST_CASE(packs_are_kept_only_while_the_bodies_and_most_groups_stay) {
+    using Packs = std::vector<ConstraintGraph::Pack>;
+    const auto fresh = [](const std::vector<GraphEdge>& edges, std::uint32_t regions,
+                          const std::vector<double>& cut) {
+        ConstraintGraph g;
+        g.colour(edges, 30, regions, cut);
+        return Packs(g.packs().begin(), g.packs().end());
+    };
+    std::mt19937 rng(7);
+    std::uniform_int_distribution<std::uint32_t> body(0, 29);
+    std::vector<GraphEdge> start;
+    while (start.size() < 160) {
+        const std::uint32_t a = body(rng), b = body(rng);
+        if (a != b)
+            start.push_back({a, b, PathGroup(rng() % path_groups)});
+    }
+    const std::size_t few = start.size() / ConstraintGraph::regroup_share;
+    const auto regrouped = [&](std::size_t count) {
+        std::vector<GraphEdge> e = start;
+        for (std::size_t i = 0; i < count; ++i)
+            e[i].group = PathGroup((std::uint32_t(e[i].group) + 1) % path_groups);
+        return e;
+    };
+    std::vector<double> cut(30);
+    for (std::size_t i = 0; i < cut.size(); ++i)
+        cut[i] = double(i % 10);
+    for (const std::uint32_t regions : {1u, 2u}) {
+        ConstraintGraph g;
+        const auto packs = [&] { return Packs(g.packs().begin(), g.packs().end()); };
+        g.colour(start, 30, regions, cut);
+        BOOST_TEST((packs() == fresh(start, regions, cut)));
+        // A few regrouped: the packs of `start`, which here differ from the new inputs' own.
+        g.colour(regrouped(few), 30, regions, cut);
+        BOOST_TEST((packs() == fresh(start, regions, cut)));
+        BOOST_TEST((packs() != fresh(regrouped(few), regions, cut)));
+        // One more: coloured afresh.
+        g.colour(regrouped(few + 1), 30, regions, cut);
+        BOOST_TEST((packs() == fresh(regrouped(few + 1), regions, cut)));
+        // A body changed.
+        std::vector<GraphEdge> moved = regrouped(few + 1);
+        moved[40].body_b = moved[40].body_a == 29 ? 28 : 29;
+        g.colour(moved, 30, regions, cut);
+        BOOST_TEST((packs() == fresh(moved, regions, cut)));
+        // One region more or less.
+        g.colour(moved, 30, 3 - regions, cut);
+        BOOST_TEST((packs() == fresh(moved, 3 - regions, cut)));
+        g.colour(moved, 30, regions, cut);
+        BOOST_TEST((packs() == fresh(moved, regions, cut)));
+    }
+    // The same edges, a body moved across a region's bound: its manifolds change stream.
+    ConstraintGraph g;
+    g.colour(start, 30, 2, cut);
+    std::vector<double> across = cut;
+    for (std::size_t i = 0; i < across.size(); ++i)
+        if (across[i] < 1.0)
+            across[i] = 9.5;
+    BOOST_TEST((fresh(start, 2, across) != fresh(start, 2, cut)));
+    g.colour(start, 30, 2, across);
+    BOOST_TEST((Packs(g.packs().begin(), g.packs().end()) == fresh(start, 2, across)));
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -5,50 +5,57 @@
 
 namespace tamias2d {
 
+void ConstraintGraph::assign_streams(std::span<const GraphEdge> edges, std::uint32_t R,
+                                     std::span<const double> cut,
+                                     std::vector<std::uint32_t>& stream_of) {
+    const auto n = std::uint32_t(edges.size());
+    stream_of.resize(n);
+    // The regions' bounds: the manifolds' places (midway between their moving bodies) at
+    // ranks n/R, 2n/R, ...; a body lies in the region of the bounds at or below it.
+    const auto place = [&](const GraphEdge& e) {
+        return e.body_a == 0   ? cut[e.body_b]
+               : e.body_b == 0 ? cut[e.body_a]
+                               : 0.5 * (cut[e.body_a] + cut[e.body_b]);
+    };
+    cuts_.resize(n);
+    for (std::uint32_t i = 0; i < n; ++i)
+        cuts_[i] = place(edges[i]);
+    std::array<double, max_regions> bound{};
+    for (std::uint32_t r = 1; r < R; ++r) {
+        const auto rank = std::ptrdiff_t(std::uint64_t(n) * r / R);
+        std::nth_element(cuts_.begin(), cuts_.begin() + rank, cuts_.end());
+        bound[r] = cuts_[std::size_t(rank)];
+    }
+    const auto region = [&](std::uint32_t body) {
+        std::uint32_t r = 0;
+        while (r + 1 < R && cut[body] >= bound[r + 1])
+            ++r;
+        return r;
+    };
+    for (std::uint32_t i = 0; i < n; ++i) {
+        const GraphEdge& e = edges[i];
+        const std::uint32_t ra = region(e.body_a != 0 ? e.body_a : e.body_b);
+        const std::uint32_t rb = region(e.body_b != 0 ? e.body_b : e.body_a);
+        stream_of[i] = ra == rb ? ra : R;
+    }
+}
+
 void ConstraintGraph::sequence(std::span<const GraphEdge> edges, std::uint32_t R,
-                               std::span<const double> cut) {
+                               std::size_t body_count) {
     const auto n = std::uint32_t(edges.size());
     const std::uint32_t S = streams_;
-    // Each manifold's stream, and the pass's order: stream by stream, creation order within
-    // (one region: stream 0 and creation order, left implicit).
+    // Stream by stream, creation order within (one region: stream 0 and creation order, left
+    // implicit).
     if (R > 1) {
-        stream_of_.resize(n);
         sequence_.resize(n);
-        // The regions' bounds: the manifolds' places (midway between their moving bodies) at
-        // ranks n/R, 2n/R, ...; a body lies in the region of the bounds at or below it.
-        const auto place = [&](const GraphEdge& e) {
-            return e.body_a == 0   ? cut[e.body_b]
-                   : e.body_b == 0 ? cut[e.body_a]
-                                   : 0.5 * (cut[e.body_a] + cut[e.body_b]);
-        };
-        cuts_.resize(n);
-        for (std::uint32_t i = 0; i < n; ++i)
-            cuts_[i] = place(edges[i]);
-        std::array<double, max_regions> bound{};
-        for (std::uint32_t r = 1; r < R; ++r) {
-            const auto rank = std::ptrdiff_t(std::uint64_t(n) * r / R);
-            std::nth_element(cuts_.begin(), cuts_.begin() + rank, cuts_.end());
-            bound[r] = cuts_[std::size_t(rank)];
-        }
-        const auto region = [&](std::uint32_t body) {
-            std::uint32_t r = 0;
-            while (r + 1 < R && cut[body] >= bound[r + 1])
-                ++r;
-            return r;
-        };
         std::array<std::uint32_t, max_streams + 1> start{};
-        for (std::uint32_t i = 0; i < n; ++i) {
-            const GraphEdge& e = edges[i];
-            const std::uint32_t ra = region(e.body_a != 0 ? e.body_a : e.body_b);
-            const std::uint32_t rb = region(e.body_b != 0 ? e.body_b : e.body_a);
-            stream_of_[i] = ra == rb ? ra : R;
+        for (std::uint32_t i = 0; i < n; ++i)
             ++start[stream_of_[i] + 1];
-        }
         for (std::uint32_t s = 0; s < S; ++s)
             start[s + 1] += start[s];
         for (std::uint32_t i = 0; i < n; ++i)
             sequence_[start[stream_of_[i]]++] = i;
-        between_by_colour(edges, std::span(sequence_).subspan(start[R - 1]), cut.size());
+        between_by_colour(edges, std::span(sequence_).subspan(start[R - 1]), body_count);
     }
 }
 
@@ -89,12 +96,38 @@ void ConstraintGraph::between_by_colour(std::span<const GraphEdge> edges,
     }
 }
 
+bool ConstraintGraph::still_coloured(std::span<const GraphEdge> edges, std::uint32_t R,
+                                     std::size_t body_count) const {
+    if (!coloured_ || R != coloured_regions_ || body_count != coloured_bodies_ ||
+        edges.size() != coloured_edges_.size())
+        return false;
+    std::size_t regrouped = 0;
+    for (std::size_t i = 0; i < edges.size(); ++i) {
+        const GraphEdge& now = edges[i];
+        const GraphEdge& then = coloured_edges_[i];
+        if (now.body_a != then.body_a || now.body_b != then.body_b)
+            return false;
+        regrouped += now.group != then.group;
+    }
+    return regrouped * regroup_share <= edges.size() && (R == 1 || next_stream_of_ == stream_of_);
+}
+
 void ConstraintGraph::colour(std::span<const GraphEdge> edges, std::size_t body_count,
                              std::uint32_t regions, std::span<const double> cut) {
     const std::uint32_t R = edges.empty() ? 1 : std::clamp<std::uint32_t>(regions, 1, max_regions);
+    if (R > 1)
+        assign_streams(edges, R, cut, next_stream_of_);
+    if (still_coloured(edges, R, body_count))
+        return;
+    coloured_edges_.assign(edges.begin(), edges.end());
+    coloured_regions_ = R;
+    coloured_bodies_ = body_count;
+    coloured_ = true;
+    if (R > 1)
+        stream_of_.swap(next_stream_of_);
     const std::uint32_t S = streams_ = R > 1 ? R + 1 : 1;
     const auto n = std::uint32_t(edges.size());
-    sequence(edges, R, cut);
+    sequence(edges, R, body_count);
     // Constraints of one level share no body, and constraints that share one keep their order
     // in the sequence, so solving level by level is the sequential pass in that order. Each
     // stream's levels come after the streams' before it: a stream's constraints are ordered by

@@ -58,6 +58,7 @@ inline PathGroup path_group(int count, double s1, double s2, bool block_capable 
 struct GraphEdge {
     std::uint32_t body_a = 0, body_b = 0;
     PathGroup group = PathGroup::point_by_point;
+    friend bool operator==(const GraphEdge&, const GraphEdge&) = default;
 };
 
 /// What a stream's pack waits for before it runs: stream `stream` has finished its first
@@ -91,8 +92,19 @@ class ConstraintGraph {
     /// pack only if every earlier manifold on its bodies sits in a pack opened before that one, so
     /// that a thread that runs the packs of any stream whose waits are met can always go on; any
     /// such schedule, and the packs in their stored order, give the same bits.
+    ///
+    /// The levels and waits depend only on the edges' bodies, the regions and each manifold's
+    /// region (or "between"); the groups only order manifolds within a level, which commute. So
+    /// a call whose bodies, regions and manifolds' regions are those of the last call that
+    /// coloured keeps that call's packs and waits (a resting pile's contacts come in the same
+    /// order step after step), unless more than 1 in regroup_share of the manifolds changed
+    /// group since: the packs' path groups are then brought up to date. The results are the same
+    /// bits either way.
     void colour(std::span<const GraphEdge> edges, std::size_t body_count, std::uint32_t regions = 1,
                 std::span<const double> cut = {});
+    /// A resting pile's contacts flip between "apart" and "touching" at preparation (about 3 %
+    /// of pyramid40's each step), so an exact match would recolour nearly every step.
+    static constexpr std::size_t regroup_share = 8;
 
     /// The solve order: the manifolds of level 0, of level 1, ..., four to a pack (by path
     /// group, then creation order, within a level); with regions, stream 0's packs in that
@@ -113,10 +125,16 @@ class ConstraintGraph {
     bool awaited(std::size_t i) const { return awaited_[i] != 0; }
 
   private:
-    /// Each manifold's stream (stream_of_), and the pass's order (sequence_): stream by stream,
-    /// creation order within (the last stream by colour first); R regions across `cut`,
-    /// streams_ already set.
-    void sequence(std::span<const GraphEdge> edges, std::uint32_t R, std::span<const double> cut);
+    /// Whether the packs of the last call that coloured serve `edges` (see colour); reads
+    /// next_stream_of_, this call's streams, with R > 1.
+    bool still_coloured(std::span<const GraphEdge> edges, std::uint32_t R,
+                        std::size_t body_count) const;
+    /// Each manifold's stream into `stream_of` (R > 1 regions across `cut`).
+    void assign_streams(std::span<const GraphEdge> edges, std::uint32_t R,
+                        std::span<const double> cut, std::vector<std::uint32_t>& stream_of);
+    /// The pass's order (sequence_) from stream_of_: stream by stream, creation order within
+    /// (the last stream by colour first); streams_ already set.
+    void sequence(std::span<const GraphEdge> edges, std::uint32_t R, std::size_t body_count);
     /// Orders `between` (manifolds in creation order) by their greedy colours: each in turn
     /// takes the lowest of 64 colours that no earlier one on its moving bodies took (with all
     /// 64 taken: after them all), then creation order within a colour.
@@ -128,8 +146,14 @@ class ConstraintGraph {
     std::vector<std::uint32_t> body_mark_;
     std::vector<std::uint32_t> level_of_;
     std::vector<std::uint32_t> level_start_, level_fill_;
-    std::vector<double> cuts_;                ///< scratch for the regions' bounds
-    std::vector<std::uint32_t> stream_of_;    ///< per manifold: its stream
+    std::vector<double> cuts_;                  ///< scratch for the regions' bounds
+    std::vector<std::uint32_t> stream_of_;      ///< per manifold: its stream
+    std::vector<std::uint32_t> next_stream_of_; ///< the same for this call, until compared
+    /// The inputs the packs were made from (coloured_: there are packs).
+    std::vector<GraphEdge> coloured_edges_;
+    std::uint32_t coloured_regions_ = 0;
+    std::size_t coloured_bodies_ = 0;
+    bool coloured_ = false;
     std::vector<std::uint32_t> sequence_;     ///< the manifolds in the pass's order
     std::vector<std::uint64_t> body_colours_; ///< per body: the colours taken on it (scratch)
     std::vector<std::uint32_t> colour_of_, between_scratch_; ///< scratch of between_by_colour
