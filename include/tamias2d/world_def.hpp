@@ -44,14 +44,16 @@ struct WorldDef {
     double manifold_reuse_distance = 0.005;
     /// The contact solve's regions, in [1, 8]. 1, the default: each contact pass is the sequential
     /// Gauss-Seidel pass over the touching manifolds in creation order. n > 1: the bodies are cut,
-    /// across gravity, into n slabs holding about equal numbers of manifolds; each pass solves the
-    /// manifolds within slab 0, then within slab 1, ..., each in creation order, then those between
-    /// slabs, by greedy colour (each takes the lowest colour no earlier one on its bodies took;
-    /// creation order within a colour). The slabs share no moving body, so with workers > 1 they
-    /// are solved on several threads at once. The order, and with it the result, depends on this
-    /// setting and on the scene, never on workers: a world gives the same bits on any number of
-    /// threads. Set it to the number of workers a game steps on; on one thread it costs a few packs
-    /// that the manifolds between slabs fill only part way (docs/performance.md, "Threads").
+    /// across gravity, into n slabs holding about equal numbers of manifolds (drawn again when the
+    /// touching manifolds or the awake bodies change; until then each keeps its slab); each pass
+    /// solves the manifolds within slab 0, then within slab 1, ..., each in creation order, then
+    /// those between slabs, by greedy colour (each takes the lowest colour no earlier one on its
+    /// bodies took; creation order within a colour). The slabs share no moving body, so with
+    /// workers > 1 they are solved on several threads at once. The order, and with it the result,
+    /// depends on this setting and on the scene, never on workers: a world gives the same bits on
+    /// any number of threads. Set it to the number of workers a game steps on; on one thread it
+    /// costs a few packs that the manifolds between slabs fill only part way (docs/performance.md,
+    /// "Threads").
     int contact_regions = 1;
     /// Continuous collision (DD29): after each step, a dynamic body that moved farther than
     /// the speculative distance is swept from its start pose to its end pose against the

@@ -183,10 +183,11 @@ BOOST_AUTO_TEST_CASE(packs_fill_across_levels) {
     BOOST_TEST(packs_of(b) == expected_b);
 }
 
-// Oracle: the rule for keeping packs, with a fresh graph as the colouring of given inputs.
-// A graph coloured before gives the packs of the last inputs it coloured while the bodies and
-// regions stay and at most 1 in regroup_share manifolds changed group since; otherwise those
-// of the new inputs.
+// Oracle: the rule for keeping packs and regions, with a fresh graph as the colouring of given
+// inputs. A graph coloured before gives the packs of the last inputs it coloured while the
+// manifolds' bodies and the number of regions stay and at most 1 in regroup_share manifolds
+// changed group since; otherwise those of the new inputs, in the regions drawn at the last
+// change of bodies.
 BOOST_AUTO_TEST_CASE(packs_are_kept_only_while_the_bodies_and_most_groups_stay) {
     using Packs = std::vector<ConstraintGraph::Pack>;
     const auto fresh = [](const std::vector<GraphEdge>& edges, std::uint32_t regions,
@@ -236,7 +237,9 @@ BOOST_AUTO_TEST_CASE(packs_are_kept_only_while_the_bodies_and_most_groups_stay) 
         g.colour(moved, 30, regions, cut);
         BOOST_TEST((packs() == fresh(moved, regions, cut)));
     }
-    // The same edges, a body moved across a region's bound: its manifolds change stream.
+    // The same edges with bodies moved across a region's bound: each manifold keeps its region
+    // (the regions are drawn when the manifolds change), and the packs are kept; a body changed,
+    // and they are drawn at the new places.
     ConstraintGraph g;
     g.colour(start, 30, 2, cut);
     std::vector<double> across = cut;
@@ -245,7 +248,13 @@ BOOST_AUTO_TEST_CASE(packs_are_kept_only_while_the_bodies_and_most_groups_stay) 
             across[i] = 9.5;
     BOOST_TEST((fresh(start, 2, across) != fresh(start, 2, cut)));
     g.colour(start, 30, 2, across);
-    BOOST_TEST((Packs(g.packs().begin(), g.packs().end()) == fresh(start, 2, across)));
+    BOOST_TEST((Packs(g.packs().begin(), g.packs().end()) == fresh(start, 2, cut)));
+    g.colour(regrouped(few + 1), 30, 2, across); // recoloured in the regions drawn at `cut`
+    BOOST_TEST((Packs(g.packs().begin(), g.packs().end()) == fresh(regrouped(few + 1), 2, cut)));
+    std::vector<GraphEdge> moved = start;
+    moved[40].body_b = moved[40].body_a == 29 ? 28 : 29;
+    g.colour(moved, 30, 2, across);
+    BOOST_TEST((Packs(g.packs().begin(), g.packs().end()) == fresh(moved, 2, across)));
 }
 
 BOOST_AUTO_TEST_SUITE_END()

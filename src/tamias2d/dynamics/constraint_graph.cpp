@@ -6,10 +6,9 @@
 namespace tamias2d {
 
 void ConstraintGraph::assign_streams(std::span<const GraphEdge> edges, std::uint32_t R,
-                                     std::span<const double> cut,
-                                     std::vector<std::uint32_t>& stream_of) {
+                                     std::span<const double> cut) {
     const auto n = std::uint32_t(edges.size());
-    stream_of.resize(n);
+    stream_of_.resize(n);
     // The regions' bounds: the manifolds' places (midway between their moving bodies) at
     // ranks n/R, 2n/R, ...; a body lies in the region of the bounds at or below it.
     const auto place = [&](const GraphEdge& e) {
@@ -36,7 +35,7 @@ void ConstraintGraph::assign_streams(std::span<const GraphEdge> edges, std::uint
         const GraphEdge& e = edges[i];
         const std::uint32_t ra = region(e.body_a != 0 ? e.body_a : e.body_b);
         const std::uint32_t rb = region(e.body_b != 0 ? e.body_b : e.body_a);
-        stream_of[i] = ra == rb ? ra : R;
+        stream_of_[i] = ra == rb ? ra : R;
     }
 }
 
@@ -96,35 +95,34 @@ void ConstraintGraph::between_by_colour(std::span<const GraphEdge> edges,
     }
 }
 
-bool ConstraintGraph::still_coloured(std::span<const GraphEdge> edges, std::uint32_t R,
-                                     std::size_t body_count) const {
+std::size_t ConstraintGraph::regrouped(std::span<const GraphEdge> edges, std::uint32_t R,
+                                       std::size_t body_count) const {
     if (!coloured_ || R != coloured_regions_ || body_count != coloured_bodies_ ||
         edges.size() != coloured_edges_.size())
-        return false;
-    std::size_t regrouped = 0;
+        return other_bodies;
+    std::size_t count = 0;
     for (std::size_t i = 0; i < edges.size(); ++i) {
         const GraphEdge& now = edges[i];
         const GraphEdge& then = coloured_edges_[i];
         if (now.body_a != then.body_a || now.body_b != then.body_b)
-            return false;
-        regrouped += now.group != then.group;
+            return other_bodies;
+        count += now.group != then.group;
     }
-    return regrouped * regroup_share <= edges.size() && (R == 1 || next_stream_of_ == stream_of_);
+    return count;
 }
 
 void ConstraintGraph::colour(std::span<const GraphEdge> edges, std::size_t body_count,
                              std::uint32_t regions, std::span<const double> cut) {
     const std::uint32_t R = edges.empty() ? 1 : std::clamp<std::uint32_t>(regions, 1, max_regions);
-    if (R > 1)
-        assign_streams(edges, R, cut, next_stream_of_);
-    if (still_coloured(edges, R, body_count))
+    const std::size_t changed = regrouped(edges, R, body_count);
+    if (changed != other_bodies && changed * regroup_share <= edges.size())
         return;
+    if (R > 1 && changed == other_bodies)
+        assign_streams(edges, R, cut);
     coloured_edges_.assign(edges.begin(), edges.end());
     coloured_regions_ = R;
     coloured_bodies_ = body_count;
     coloured_ = true;
-    if (R > 1)
-        stream_of_.swap(next_stream_of_);
     const std::uint32_t S = streams_ = R > 1 ? R + 1 : 1;
     const auto n = std::uint32_t(edges.size());
     sequence(edges, R, body_count);

@@ -93,13 +93,14 @@ class ConstraintGraph {
     /// that a thread that runs the packs of any stream whose waits are met can always go on; any
     /// such schedule, and the packs in their stored order, give the same bits.
     ///
-    /// The levels and waits depend only on the edges' bodies, the regions and each manifold's
-    /// region (or "between"); the groups only order manifolds within a level, which commute. So
-    /// a call whose bodies, regions and manifolds' regions are those of the last call that
-    /// coloured keeps that call's packs and waits (a resting pile's contacts come in the same
-    /// order step after step), unless more than 1 in regroup_share of the manifolds changed
-    /// group since: the packs' path groups are then brought up to date. The results are the same
-    /// bits either way.
+    /// While the manifolds couple the same bodies as at the last call that coloured, in the same
+    /// number of regions, each keeps its region (or "between") from then, wherever the bodies
+    /// have moved since: the regions are balanced when the manifolds change, not every step. The
+    /// levels and waits then come out the same, and the path groups only order manifolds within
+    /// a level, which commute; so such a call keeps that call's packs and waits (a resting pile's
+    /// contacts come in the same order step after step), unless more than 1 in regroup_share of
+    /// the manifolds changed group since: the packs' path groups are then brought up to date,
+    /// the regions kept.
     void colour(std::span<const GraphEdge> edges, std::size_t body_count, std::uint32_t regions = 1,
                 std::span<const double> cut = {});
     /// A resting pile's contacts flip between "apart" and "touching" at preparation (about 3 %
@@ -125,13 +126,14 @@ class ConstraintGraph {
     bool awaited(std::size_t i) const { return awaited_[i] != 0; }
 
   private:
-    /// Whether the packs of the last call that coloured serve `edges` (see colour); reads
-    /// next_stream_of_, this call's streams, with R > 1.
-    bool still_coloured(std::span<const GraphEdge> edges, std::uint32_t R,
-                        std::size_t body_count) const;
-    /// Each manifold's stream into `stream_of` (R > 1 regions across `cut`).
+    /// How many of `edges` changed path group since the last call that coloured; other_bodies
+    /// if they couple other bodies, or the regions or the body count changed.
+    static constexpr std::size_t other_bodies = ~std::size_t{0};
+    std::size_t regrouped(std::span<const GraphEdge> edges, std::uint32_t R,
+                          std::size_t body_count) const;
+    /// Each manifold's stream (stream_of_), R > 1 regions across `cut`.
     void assign_streams(std::span<const GraphEdge> edges, std::uint32_t R,
-                        std::span<const double> cut, std::vector<std::uint32_t>& stream_of);
+                        std::span<const double> cut);
     /// The pass's order (sequence_) from stream_of_: stream by stream, creation order within
     /// (the last stream by colour first); streams_ already set.
     void sequence(std::span<const GraphEdge> edges, std::uint32_t R, std::size_t body_count);
@@ -146,9 +148,8 @@ class ConstraintGraph {
     std::vector<std::uint32_t> body_mark_;
     std::vector<std::uint32_t> level_of_;
     std::vector<std::uint32_t> level_start_, level_fill_;
-    std::vector<double> cuts_;                  ///< scratch for the regions' bounds
-    std::vector<std::uint32_t> stream_of_;      ///< per manifold: its stream
-    std::vector<std::uint32_t> next_stream_of_; ///< the same for this call, until compared
+    std::vector<double> cuts_;             ///< scratch for the regions' bounds
+    std::vector<std::uint32_t> stream_of_; ///< per manifold: its stream
     /// The inputs the packs were made from (coloured_: there are packs).
     std::vector<GraphEdge> coloured_edges_;
     std::uint32_t coloured_regions_ = 0;
