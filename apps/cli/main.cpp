@@ -3,7 +3,8 @@
 //   tamias2d run <scene.json | -> [--steps N] [--every K] [--format csv|json] [-o FILE]
 //                [--workers N]
 //   tamias2d validate <scene.json | ->
-//   tamias2d view <scene.json | -> [--steps N] [--every K] [-o FILE]   (view_command.cpp)
+//   tamias2d view <scene.json | -> [--steps N] [--every K] [-o FILE] [--workers N]
+//                (view_command.cpp)
 //   tamias2d info
 //   tamias2d help [COMMAND] | --help | --version
 //
@@ -41,7 +42,7 @@ constexpr const char* usage = R"(Usage:
   tamias2d run <scene.json | -> [--steps N] [--every K] [--format csv|json] [-o FILE]
                [--workers N]
   tamias2d validate <scene.json | ->
-  tamias2d view <scene.json | -> [--steps N] [--every K] [-o FILE.html]
+  tamias2d view <scene.json | -> [--steps N] [--every K] [-o FILE.html] [--workers N]
   tamias2d info
   tamias2d help [COMMAND]
   tamias2d --help | --version

@@ -1,10 +1,13 @@
 # cmake -DEXE=<tamias2d> -DSCENE=<scene.json> -DREGIONS=<R> -DWORKERS=<N> -DOUT=<dir>
-#       -P same_states.cmake -- <run options>
-# Runs the scene with world.contact_regions = R on one worker and on N (`run --workers`), and
-# prints "same states: <rows> rows" when the two outputs are equal byte for byte; otherwise
-# the first differing line of each. The scene is copied with the setting put first in its
+#       [-DCOMMAND=view] -P same_states.cmake -- <options>
+# Runs the scene with world.contact_regions = R on one worker and on N (`run --workers`, or
+# `view --workers`), and prints "same <command> output: <lines> lines" when the two outputs are
+# equal byte for byte; otherwise the first differing line of each. The scene is copied with the setting put first in its
 # "world" object.
 include(${CMAKE_CURRENT_LIST_DIR}/script_args.cmake)
+if(NOT DEFINED COMMAND)
+  set(COMMAND run)
+endif()
 file(READ "${SCENE}" text)
 string(REPLACE "\"world\": {" "\"world\": { \"contact_regions\": ${REGIONS}," regioned "${text}")
 if(regioned STREQUAL text)
@@ -14,7 +17,7 @@ get_filename_component(name "${SCENE}" NAME_WE)
 set(scene "${OUT}/${name}_regions${REGIONS}.json")
 file(WRITE "${scene}" "${regioned}")
 foreach(n 1 ${WORKERS})
-  execute_process(COMMAND "${EXE}" run "${scene}" ${args} --workers ${n}
+  execute_process(COMMAND "${EXE}" ${COMMAND} "${scene}" ${args} --workers ${n}
                   RESULT_VARIABLE rc OUTPUT_VARIABLE out_${n} ERROR_VARIABLE err)
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "--workers ${n}: exit code ${rc}: ${err}")
@@ -23,7 +26,7 @@ endforeach()
 string(REGEX MATCHALL "\n" rows "${out_1}")
 list(LENGTH rows row_count)
 if(out_1 STREQUAL out_${WORKERS})
-  message("same states: ${row_count} rows")
+  message("same ${COMMAND} output: ${row_count} lines")
 else()
   string(REPLACE "\n" ";" lines_1 "${out_1}")
   string(REPLACE "\n" ";" lines_n "${out_${WORKERS}}")

@@ -32,6 +32,8 @@ Options:
                       with more records none; 0 records none
   -o, --output FILE   write to FILE instead of standard output ("-": standard output); no
                       partial file is left behind when the run fails
+  --workers N         step on N threads, N in [1, 256] (default 1), as 'run' does: the page
+                      is the same byte for byte for every N
   -h, --help          print this text
 
 Positions are stored to 1e-4 m, angles to 1e-4 rad, velocities to 1e-3 m/s and rad/s; the
@@ -55,6 +57,7 @@ struct ViewOptions {
     std::optional<int> every;
     std::size_t max_contacts = 1000000;
     std::string output;
+    std::optional<int> workers; ///< WorldDef::workers; a scene file does not carry it
 };
 
 int parse_int(std::string_view option, std::string_view text, int minimum) {
@@ -81,6 +84,8 @@ ViewOptions parse(std::span<const std::string_view> args) {
             o.steps = parse_int(a, value(), 0);
         } else if (a == "--every") {
             o.every = parse_int(a, value(), 1);
+        } else if (a == "--workers") {
+            o.workers = parse_int(a, value(), 1);
         } else if (a == "--max-contacts") {
             o.max_contacts = static_cast<std::size_t>(parse_int(a, value(), 0));
         } else if (a == "--output" || a == "-o") {
@@ -136,7 +141,9 @@ int view_command(std::span<const std::string_view> args, const SceneSource& sour
     }
     std::ostream& out = o.output.empty() ? std::cout : file;
     try {
-        World world(scene.world);
+        WorldDef def = scene.world;
+        def.workers = o.workers.value_or(def.workers);
+        World world(def);
         const std::vector<BodyId> ids = io::build_world(scene, world);
         const std::string title =
             std::filesystem::path(source.display_name(o.scene)).stem().string();
