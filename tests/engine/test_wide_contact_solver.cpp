@@ -4,6 +4,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <random>
 #include <set>
@@ -13,6 +14,7 @@
 #include "support/sequential_pass.hpp"
 #include "tamias2d/dynamics/constraint_graph.hpp"
 #include "tamias2d/dynamics/contact_iteration.hpp"
+#include "tamias2d/dynamics/contact_manager.hpp"
 #include "tamias2d/dynamics/restitution.hpp"
 #include "tamias2d/dynamics/wide_contact_solver.hpp"
 
@@ -255,6 +257,58 @@ BOOST_AUTO_TEST_CASE(packs_are_kept_only_while_the_bodies_and_most_groups_stay) 
     moved[40].body_b = moved[40].body_a == 29 ? 28 : 29;
     g.colour(moved, 30, 2, across);
     BOOST_TEST((Packs(g.packs().begin(), g.packs().end()) == fresh(moved, 2, across)));
+}
+
+// Oracle: the lane filled through a ContactConstraint (ContactManager::unprepared_constraint,
+// then set_input_lane from it, which load() uses and the IM7 tests above check against the
+// sequential pass). The world's path fills the lane from the contact directly; every field of
+// the lane must come out the same, over one- and two-point manifolds, filled over a lane that
+// held another manifold before.
+BOOST_AUTO_TEST_CASE(a_lane_from_the_contact_is_the_lane_from_its_constraint) {
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    ContactManager contacts;
+    for (int k = 0; k < 12; ++k) {
+        Contact c;
+        c.friction = 0.5 + 0.5 * u(rng);
+        c.manifold.normal = {std::cos(3.0 * u(rng)), std::sin(3.0 * u(rng))};
+        c.manifold.count = 1 + k % 2;
+        for (int j = 0; j < c.manifold.count; ++j) {
+            ManifoldPoint& p = c.manifold.points[j];
+            p.anchor_a = {u(rng), u(rng)};
+            p.anchor_b = {u(rng), u(rng)};
+            p.separation = 0.01 * u(rng);
+        }
+        contacts.contacts.push_back(c);
+        contacts.warm_impulses.push_back({{u(rng), u(rng)}, {u(rng), u(rng)}});
+    }
+    WideManifoldInput staged, direct;
+    for (std::uint32_t k = 0; k < 12; ++k) {
+        const int l = int(k % wide_lanes);
+        const GraphEdge edge{k + 1, k % 3 == 0 ? 0u : k + 2, PathGroup::point_by_point};
+        const std::uint32_t slot = k % 4 == 0 ? WideContactSolver::no_slot : k;
+        ContactConstraint cc;
+        contacts.unprepared_constraint(cc, edge, k);
+        set_input_lane(staged, l, cc, slot);
+        set_input_lane(direct, l, edge, k, contacts.contacts[k], contacts.warm_impulses[k], slot);
+        BOOST_TEST(direct.body_a[l] == staged.body_a[l]);
+        BOOST_TEST(direct.body_b[l] == staged.body_b[l]);
+        BOOST_TEST(direct.contact[l] == staged.contact[l]);
+        BOOST_TEST(direct.restitution_slot[l] == staged.restitution_slot[l]);
+        BOOST_TEST(direct.count[l] == staged.count[l]);
+        BOOST_TEST(direct.normal.x[l] == staged.normal.x[l]);
+        BOOST_TEST(direct.normal.y[l] == staged.normal.y[l]);
+        BOOST_TEST(direct.friction[l] == staged.friction[l]);
+        for (int j = 0; j < 2; ++j) {
+            BOOST_TEST(direct.r_a[j].x[l] == staged.r_a[j].x[l]);
+            BOOST_TEST(direct.r_a[j].y[l] == staged.r_a[j].y[l]);
+            BOOST_TEST(direct.r_b[j].x[l] == staged.r_b[j].x[l]);
+            BOOST_TEST(direct.r_b[j].y[l] == staged.r_b[j].y[l]);
+            BOOST_TEST(direct.separation[j][l] == staged.separation[j][l]);
+            BOOST_TEST(direct.normal_impulse[j][l] == staged.normal_impulse[j][l]);
+            BOOST_TEST(direct.tangent_impulse[j][l] == staged.tangent_impulse[j][l]);
+        }
+    }
 }
 
 BOOST_AUTO_TEST_SUITE_END()

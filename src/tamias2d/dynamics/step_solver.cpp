@@ -202,8 +202,7 @@ void StepSolver::turn_joints(std::vector<Joint>& joints) {
 void StepSolver::prepare_packs(const ContactManager& contacts, std::size_t begin, std::size_t end,
                                bool warm_start) {
     const auto order = wide_solver_.order();
-    ContactConstraint cc; // reused: what set_input_lane reads is set anew
-    // Reused too: every lane is set or cleared each pack (clearing the whole input per pack,
+    // Reused: every lane is set or cleared each pack (clearing the whole input per pack,
     // 600 bytes, was a tenth of this loop's time).
     WideManifoldInput in;
     // The packs read the contacts level by level, a sparse sweep the hardware prefetcher
@@ -227,8 +226,9 @@ void StepSolver::prepare_packs(const ContactManager& contacts, std::size_t begin
                 clear_input_lane(in, l);
                 continue;
             }
-            contacts.unprepared_constraint(cc, edges_[k], edge_contact_[k]);
-            set_input_lane(in, l, cc, edge_slot_[k]);
+            const std::uint32_t c = edge_contact_[k];
+            set_input_lane(in, l, edges_[k], c, contacts.contacts[c], contacts.warm_impulses[c],
+                           edge_slot_[k]);
         }
         if (warm_start)
             wide_solver_.prepare_pack_and_warm_start(p, in, solver_bodies_);

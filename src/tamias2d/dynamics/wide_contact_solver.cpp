@@ -111,17 +111,40 @@ void set_input_point(WideManifoldInput& in, int l, int j, Vec2d r_a, Vec2d r_b, 
     in.tangent_impulse[j][l] = tangent_impulse;
 }
 
+/// Lane l's manifold-wide fields.
+void set_input_manifold(WideManifoldInput& in, int l, std::uint32_t body_a, std::uint32_t body_b,
+                        std::uint32_t contact, std::uint32_t slot, int count, Vec2d normal,
+                        double friction) {
+    in.body_a[l] = body_a;
+    in.body_b[l] = body_b;
+    in.contact[l] = contact;
+    in.restitution_slot[l] = slot;
+    in.count[l] = static_cast<std::uint8_t>(count);
+    in.normal.x[l] = normal.x;
+    in.normal.y[l] = normal.y;
+    in.friction[l] = friction;
+}
+
 } // namespace
 
+void set_input_lane(WideManifoldInput& in, int l, const GraphEdge& edge, std::uint32_t contact,
+                    const Contact& c, const ContactImpulses& warm, std::uint32_t slot) {
+    const Manifold& m = c.manifold;
+    set_input_manifold(in, l, edge.body_a, edge.body_b, contact, slot, m.count, m.normal,
+                       c.friction);
+    for (int j = 0; j < 2; ++j) {
+        if (j < m.count) {
+            const ManifoldPoint& p = m.points[j];
+            set_input_point(in, l, j, p.anchor_a, p.anchor_b, p.separation, warm.normal[j],
+                            warm.tangent[j]);
+        } else {
+            set_input_point(in, l, j, {}, {}, 0.0, 0.0, 0.0); // solving it changes nothing
+        }
+    }
+}
+
 void set_input_lane(WideManifoldInput& in, int l, const ContactConstraint& c, std::uint32_t slot) {
-    in.body_a[l] = c.body_a;
-    in.body_b[l] = c.body_b;
-    in.contact[l] = c.contact;
-    in.restitution_slot[l] = slot;
-    in.count[l] = static_cast<std::uint8_t>(c.count);
-    in.normal.x[l] = c.normal.x;
-    in.normal.y[l] = c.normal.y;
-    in.friction[l] = c.friction;
+    set_input_manifold(in, l, c.body_a, c.body_b, c.contact, slot, c.count, c.normal, c.friction);
     for (int j = 0; j < 2; ++j) {
         if (j < c.count) {
             const ContactConstraintPoint& p = c.points[j];

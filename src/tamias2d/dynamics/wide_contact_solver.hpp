@@ -22,6 +22,10 @@ namespace tamias2d {
 /// Every field of the lane is written (a point past the count gets zeros), so an input may be
 /// reused pack after pack without being cleared: each lane is either set or cleared.
 void set_input_lane(WideManifoldInput& in, int l, const ContactConstraint& c, std::uint32_t slot);
+/// The same straight from a persistent contact (the world's path: no ContactConstraint between):
+/// its solver bodies `edge`, its index, manifold, friction and warm-start impulses.
+void set_input_lane(WideManifoldInput& in, int l, const GraphEdge& edge, std::uint32_t contact,
+                    const Contact& c, const ContactImpulses& warm, std::uint32_t slot);
 /// Lane l as an empty lane: all zeros, naming the static body 0.
 void clear_input_lane(WideManifoldInput& in, int l);
 
