@@ -58,7 +58,6 @@ inline PathGroup path_group(int count, double s1, double s2, bool block_capable 
 struct GraphEdge {
     std::uint32_t body_a = 0, body_b = 0;
     PathGroup group = PathGroup::point_by_point;
-    friend bool operator==(const GraphEdge&, const GraphEdge&) = default;
 };
 
 /// What a stream's pack waits for before it runs: stream `stream` has finished its first
@@ -103,8 +102,10 @@ class ConstraintGraph {
     /// the regions kept.
     void colour(std::span<const GraphEdge> edges, std::size_t body_count, std::uint32_t regions = 1,
                 std::span<const double> cut = {});
-    /// A resting pile's contacts flip between "apart" and "touching" at preparation (about 3 %
-    /// of pyramid40's each step), so an exact match would recolour nearly every step.
+    /// colour recolours once more than 1 in this many manifolds changed path group: a resting
+    /// pile's contacts flip between "apart" and "touching" at preparation (about 3 % of
+    /// pyramid40's each step), so recolouring on any change would do it nearly every step, and
+    /// 1 in 32 measured slower on large_pyramid than 1 in 8 (docs/performance.md).
     static constexpr std::size_t regroup_share = 8;
 
     /// The solve order: the manifolds of level 0, of level 1, ..., four to a pack (by path
