@@ -53,8 +53,11 @@ for t in scene api; do
     # Sanitizer reports are fatal (cmake/TamiasFuzz.cmake); leaks are reported at exit. A unit
     # slower than 30 s is a timeout: the largest scenes the format accepts take 9-13 s to load
     # in this build (a pyramid of base 500, rain of 200 000 bodies; about 1.2 s in Release).
+    # So a unit counts as slow only past that timeout too: libFuzzer's default, 10 s, lies
+    # within the load times of scenes the format accepts.
     ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
         "$build/tests/fuzz/libfuzzer/tamias_fuzz_$t" -max_total_time="$seconds" -timeout=30 \
+        -report_slow_units=30 \
         -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$build/findings/$t/" \
         "$build/corpus/$t" "${opts[@]}" "$dir/corpus/$t" "$dir/regressions/$t" \
         >"$build/fuzz-$t.log" 2>&1 &
