@@ -97,7 +97,7 @@ void ConstraintGraph::between_by_colour(std::span<const GraphEdge> edges,
 
 std::size_t ConstraintGraph::regrouped(std::span<const GraphEdge> edges, std::uint32_t R,
                                        std::size_t body_count) const {
-    if (!coloured_ || R != coloured_regions_ || body_count != coloured_bodies_ ||
+    if (R != coloured_regions_ || body_count != coloured_bodies_ ||
         edges.size() != coloured_edges_.size())
         return other_bodies;
     std::size_t count = 0;
@@ -122,7 +122,6 @@ void ConstraintGraph::colour(std::span<const GraphEdge> edges, std::size_t body_
     coloured_edges_.assign(edges.begin(), edges.end());
     coloured_regions_ = R;
     coloured_bodies_ = body_count;
-    coloured_ = true;
     const std::uint32_t S = streams_ = R > 1 ? R + 1 : 1;
     const auto n = std::uint32_t(edges.size());
     sequence(edges, R, body_count);

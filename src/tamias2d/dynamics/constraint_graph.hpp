@@ -151,11 +151,10 @@ class ConstraintGraph {
     std::vector<std::uint32_t> level_start_, level_fill_;
     std::vector<double> cuts_;             ///< scratch for the regions' bounds
     std::vector<std::uint32_t> stream_of_; ///< per manifold: its stream
-    /// The inputs the packs were made from (coloured_: there are packs).
+    /// The inputs the packs were made from (regions 0: not coloured yet; colour makes R >= 1).
     std::vector<GraphEdge> coloured_edges_;
     std::uint32_t coloured_regions_ = 0;
     std::size_t coloured_bodies_ = 0;
-    bool coloured_ = false;
     std::vector<std::uint32_t> sequence_;     ///< the manifolds in the pass's order
     std::vector<std::uint64_t> body_colours_; ///< per body: the colours taken on it (scratch)
     std::vector<std::uint32_t> colour_of_, between_scratch_; ///< scratch of between_by_colour
