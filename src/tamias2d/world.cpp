@@ -597,7 +597,7 @@ void World::step(double dt) {
         w.contacts.update(w.bodies, w.shapes, true, w.def.speculative_distance,
                           w.def.manifold_reuse_distance, w.tasks);
         w.sleep.wake_islands(w.bodies, w.contacts, w.joints);
-        w.solver.prepare_bodies(w.bodies, w.loads, w.def, h);
+        w.solver.prepare_bodies(w.bodies, w.loads, w.def, h, w.tasks);
         w.solver.prepare_joints(w.joints, w.bodies);
         w.solver.solve(w.contacts, w.joints, w.def, dt, w.tasks);
         if (guarded && w.solver.diverged() != null_index)
@@ -606,7 +606,7 @@ void World::step(double dt) {
         w.break_joints();
         w.sleep.update_sleep(w.bodies, w.def, dt);
     } else {
-        w.solver.prepare_bodies(w.bodies, w.loads, w.def, h);
+        w.solver.prepare_bodies(w.bodies, w.loads, w.def, h, w.tasks);
         w.solver.prepare_joints(w.joints, w.bodies);
         w.contacts.update(w.bodies, w.shapes, false, w.def.speculative_distance,
                           w.def.manifold_reuse_distance, w.tasks);

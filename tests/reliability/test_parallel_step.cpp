@@ -1,8 +1,9 @@
 // A step on several threads (WorldDef::workers, WorldDef::task_system) gives the bits of one
 // thread: the parallel loops run blocks fixed by the scene, each writing only its own data, and
 // what depends on order (events, wakes, destructions, the lists the write-back makes) is done in
-// contact or body order after them. The scenes are large enough (over 1000 moving bodies, over
-// 128 contacts, over 32 packs) for every parallel loop of the step to run in blocks. CI also
+// contact or body order after them, or from counts summed in block order (the solver bodies, the
+// touching manifolds). The scenes are large enough (over 1024 moving bodies, over 2048 contacts,
+// over 32 packs) for every parallel loop of the step to run in blocks. CI also
 // runs this suite built with -fsanitize=thread (.ci/tsan_check.sh), where a data race fails it.
 #include <boost/test/unit_test.hpp>
 
@@ -180,6 +181,31 @@ void sleeping_row(World& world) {
     }
 }
 
+/// A pile of 1300 boxes in 13 rows, every third damped, every fourth bouncy (restitution 0.5),
+/// every fifth pushed sideways by a force of its own, with static posts between them: the solver
+/// bodies' decay factors and loads, and the bouncing manifolds' slots, from blocks.
+void mixed_pile(World& world) {
+    ground(world, 120.0);
+    const Material bouncy{1.0, 0.5, 0.6};
+    int k = 0;
+    for (int row = 0; row < 13; ++row) {
+        for (int col = 0; col < 100; ++col, ++k) {
+            BodyDef d;
+            d.position = {-50.0 + col * 1.01 + 0.3 * (row % 2), 0.5 + row * 1.02};
+            if (k % 3 == 0) {
+                d.linear_damping = 0.4;
+                d.angular_damping = 0.7;
+            }
+            if (k % 5 == 0)
+                d.force = {row % 2 == 0 ? 3.0 : -3.0, 0.0};
+            if (k % 17 == 0)
+                d.type = BodyType::static_body;
+            world.create_shape(world.create_body(d),
+                               box_shape(1.0, 1.0, k % 4 == 0 ? bouncy : wood));
+        }
+    }
+}
+
 /// 40 chains of 28 links hanging from static pins, swinging into each other and onto the
 /// ground, with a revolute joint between neighbours.
 void chains(World& world) {
@@ -246,6 +272,24 @@ BOOST_AUTO_TEST_CASE(wakes_within_the_narrow_phase_are_bitwise_identical_on_ever
     def.gravity = {0.0, -10.0};
     def.enable_sleep = true;
     check_every_threading(def, sleeping_row, 20);
+}
+
+// Oracle: as above, with damped, bouncing and loaded bodies among static ones: the solver
+// bodies and the touching manifolds are numbered from counts summed over blocks.
+BOOST_AUTO_TEST_CASE(a_damped_bouncing_loaded_pile_is_bitwise_identical_on_every_thread_count,
+                     *utf::label("determinism")) {
+    for (const int regions : {1, 2}) {
+        BOOST_TEST_CONTEXT("contact_regions = " << regions) {
+            WorldDef def;
+            def.gravity = {0.0, -10.0};
+            def.contact_regions = regions;
+            check_every_threading(def, mixed_pile, 10 * step_scale);
+        }
+    }
+    World world(WorldDef{.gravity = {0.0, -10.0}});
+    mixed_pile(world);
+    world.step(1.0 / 60.0);
+    BOOST_TEST(world.contacts().size() > 2048u); // enough touching manifolds for blocks
 }
 
 // Oracle: as above, with 1120 revolute joints (solved serially between the parallel loops).

@@ -16,58 +16,85 @@
 
 namespace tamias2d {
 
+namespace {
+
+// Blocks of the parallel loops, in solver bodies: ~2 us of work for the integration.
+constexpr std::size_t body_block = 512;
+// A loop over fewer bodies runs on the calling thread: waking the others costs more.
+constexpr std::size_t parallel_bodies = 2 * body_block;
+
+/// Whether body i is immovable this step: static, destroyed, or asleep (sleeping on).
+bool immovable(const BodyStore& store, std::uint32_t i, const WorldDef& def) {
+    const Body& b = store.bodies[i];
+    return (def.enable_sleep && !store.sleep_states[i].awake) || !b.alive ||
+           b.type == BodyType::static_body;
+}
+
+/// A moving body's accelerations from gravity and its loads (IM1, IM2).
+struct Accelerations {
+    Vec2d a{};
+    double alpha = 0.0;
+};
+
+Accelerations accelerations_of(const Body& b, std::uint32_t i, const std::vector<Load>& loads,
+                               const WorldDef& def) {
+    if (b.type != BodyType::dynamic)
+        return {};
+    // Unloaded, F = 0 and tau = 0 give g and 0 bit for bit whatever m and I (0 / m is exactly
+    // 0), so the body's third line, loads and masses, is not read.
+    Vec2d f{};
+    double tau = 0.0, mass = 1.0, inertia = 1.0;
+    if (b.loaded || !loads.empty()) {
+        const Load l = loads.empty() ? Load{} : loads[i];
+        f = b.force + b.force_once + l.force;
+        tau = b.torque + b.torque_once + l.torque;
+        mass = b.mass;
+        inertia = b.inertia;
+    }
+    return {bridge::acceleration(b.gravity_scale * def.gravity, f, mass),
+            b.inv_inertia > 0.0 ? bridge::angular_acceleration(tau, inertia) : 0.0};
+}
+
+} // namespace
+
 // Built before the narrow phase, not after it: a pass over every body between the narrow
 // phase's sweep of the contacts and the lane filling's gather of them pushed them out of the
 // cache (rain_16k).
 void StepSolver::prepare_bodies(const BodyStore& store, const std::vector<Load>& loads,
-                                const WorldDef& def, double h) {
+                                const WorldDef& def, double h, const StepTasks& tasks) {
     const auto& bodies = store.bodies;
-    // Solver body 0 is the shared immovable body standing in for every static body.
-    solver_bodies_.assign(1, SolverBody{});
     solver_index_.resize(bodies.size());
-    accelerations_.assign(1, Vec2d{});
-    angular_accelerations_.assign(1, 0.0);
-    any_damped_ = false;
-    linear_decay_.assign(1, 1.0);
-    angular_decay_.assign(1, 1.0);
     // The contact regions (WorldDef::contact_regions) are slabs along gravity, cut across it:
     // each holds whole columns of a stack, whose load runs down them, and only the rows that
     // cross a cut give manifolds between regions (without gravity, the cuts are across x).
     const bool regions = def.contact_regions > 1;
     const double g = length(def.gravity);
     const Vec2d across = g > 0.0 ? Vec2d{-def.gravity.y / g, def.gravity.x / g} : Vec2d{1.0, 0.0};
+    if (tasks.parallel() && bodies.size() >= parallel_bodies) {
+        prepare_bodies_in_blocks(store, loads, def, h, across, tasks);
+        return;
+    }
+    // Solver body 0 is the shared immovable body standing in for every static body.
+    solver_bodies_.assign(1, SolverBody{});
+    accelerations_.assign(1, Vec2d{});
+    angular_accelerations_.assign(1, 0.0);
+    any_damped_ = false;
+    linear_decay_.assign(1, 1.0);
+    angular_decay_.assign(1, 1.0);
     cut_.assign(1, 0.0);
     for (std::uint32_t i = 0; i < bodies.size(); ++i) {
-        const Body& b = bodies[i];
-        // A sleeping body is immovable this step, as a static one is.
-        if ((def.enable_sleep && !store.sleep_states[i].awake) || !b.alive ||
-            b.type == BodyType::static_body) {
+        if (immovable(store, i, def)) {
             solver_index_[i] = 0;
             continue;
         }
+        const Body& b = bodies[i];
         solver_index_[i] = std::uint32_t(solver_bodies_.size());
         solver_bodies_.push_back({b.v, b.w, b.inv_mass, b.inv_inertia, {}, 0.0});
         if (regions)
             cut_.push_back(b.center.x * across.x + b.center.y * across.y);
-        Vec2d a{};
-        double alpha = 0.0;
-        if (b.type == BodyType::dynamic) {
-            // Unloaded, F = 0 and tau = 0 give g and 0 bit for bit whatever m and I (0 / m is
-            // exactly 0), so the body's third line, loads and masses, is not read.
-            Vec2d f{};
-            double tau = 0.0, mass = 1.0, inertia = 1.0;
-            if (b.loaded || !loads.empty()) {
-                const Load l = loads.empty() ? Load{} : loads[i];
-                f = b.force + b.force_once + l.force;
-                tau = b.torque + b.torque_once + l.torque;
-                mass = b.mass;
-                inertia = b.inertia;
-            }
-            a = bridge::acceleration(b.gravity_scale * def.gravity, f, mass);
-            alpha = b.inv_inertia > 0.0 ? bridge::angular_acceleration(tau, inertia) : 0.0;
-        }
-        accelerations_.push_back(a);
-        angular_accelerations_.push_back(alpha);
+        const Accelerations acc = accelerations_of(b, i, loads, def);
+        accelerations_.push_back(acc.a);
+        angular_accelerations_.push_back(acc.alpha);
         if (b.damped && !any_damped_) { // the first damped body: undamped ones get 1
             any_damped_ = true;
             linear_decay_.resize(solver_bodies_.size() - 1, 1.0);
@@ -81,12 +108,81 @@ void StepSolver::prepare_bodies(const BodyStore& store, const std::vector<Load>&
     }
 }
 
-namespace {
+// Two passes over the same blocks of bodies: each block numbers its moving bodies and notes
+// whether one is damped; after the blocks' counts are summed in block order, each block writes
+// its solver bodies from its first number on. The numbering and the values are the serial
+// loop's.
+void StepSolver::prepare_bodies_in_blocks(const BodyStore& store, const std::vector<Load>& loads,
+                                          const WorldDef& def, double h, Vec2d across,
+                                          const StepTasks& tasks) {
+    const auto& bodies = store.bodies;
+    const auto n = std::uint32_t(bodies.size());
+    const int blocks = blocks_of(n, body_block);
+    constexpr auto block = std::uint32_t(body_block);
+    block_first_.resize(std::size_t(blocks) + 1);
+    block_damped_.resize(std::size_t(blocks));
+    auto number = [&](int first, int last) {
+        for (int k = first; k < last; ++k) {
+            std::uint32_t moving = 0;
+            bool damped = false;
+            const std::uint32_t end = std::min(n, std::uint32_t(k + 1) * block);
+            for (std::uint32_t i = std::uint32_t(k) * block; i < end; ++i) {
+                const bool still = immovable(store, i, def);
+                solver_index_[i] = still ? 0 : ++moving; // within the block, from 1
+                damped = damped || (!still && bodies[i].damped);
+            }
+            block_first_[std::size_t(k) + 1] = moving;
+            block_damped_[std::size_t(k)] = damped;
+        }
+    };
+    tasks.for_each_block(blocks, number);
+    block_first_[0] = 1; // solver body 0 is the shared immovable body
+    any_damped_ = false;
+    for (std::size_t k = 0; k < std::size_t(blocks); ++k) {
+        block_first_[k + 1] += block_first_[k];
+        any_damped_ = any_damped_ || block_damped_[k] != 0;
+    }
+    const std::size_t count = block_first_[std::size_t(blocks)];
+    const bool regions = def.contact_regions > 1;
+    solver_bodies_.resize(count);
+    accelerations_.resize(count);
+    angular_accelerations_.resize(count);
+    linear_decay_.resize(any_damped_ ? count : 1);
+    angular_decay_.resize(any_damped_ ? count : 1);
+    cut_.resize(regions ? count : 1);
+    solver_bodies_[0] = SolverBody{};
+    accelerations_[0] = Vec2d{};
+    angular_accelerations_[0] = 0.0;
+    linear_decay_[0] = angular_decay_[0] = 1.0;
+    cut_[0] = 0.0;
+    auto fill = [&](int first, int last) {
+        for (int k = first; k < last; ++k) {
+            const std::uint32_t offset = block_first_[std::size_t(k)] - 1;
+            const std::uint32_t end = std::min(n, std::uint32_t(k + 1) * block);
+            for (std::uint32_t i = std::uint32_t(k) * block; i < end; ++i) {
+                if (solver_index_[i] == 0)
+                    continue;
+                const std::uint32_t s = solver_index_[i] += offset;
+                const Body& b = bodies[i];
+                solver_bodies_[s] = {b.v, b.w, b.inv_mass, b.inv_inertia, {}, 0.0};
+                if (regions)
+                    cut_[s] = b.center.x * across.x + b.center.y * across.y;
+                const Accelerations acc = accelerations_of(b, i, loads, def);
+                accelerations_[s] = acc.a;
+                angular_accelerations_[s] = acc.alpha;
+                if (any_damped_) {
+                    const BodySettings& set = store.settings[i];
+                    linear_decay_[s] = b.damped ? bridge::decay_factor(set.linear_damping, h) : 1.0;
+                    angular_decay_[s] =
+                        b.damped ? bridge::decay_factor(set.angular_damping, h) : 1.0;
+                }
+            }
+        }
+    };
+    tasks.for_each_block(blocks, fill);
+}
 
-// Blocks of the parallel loops, in solver bodies: ~2 us of work for the integration.
-constexpr std::size_t body_block = 512;
-// A loop over fewer bodies runs on the calling thread: waking the others costs more.
-constexpr std::size_t parallel_bodies = 2 * body_block;
+namespace {
 
 /// Runs range(begin, end) over solver bodies [1, count), in parallel blocks when worth it.
 template <class Range>
@@ -237,6 +333,88 @@ void StepSolver::prepare_packs(const ContactManager& contacts, std::size_t begin
     }
 }
 
+namespace {
+
+// Blocks of the edge listing, in contacts (~4 us each).
+constexpr std::uint32_t edge_block = 1024;
+
+} // namespace
+
+std::uint32_t StepSolver::list_edges(const ContactManager& contacts, const StepTasks& tasks) {
+    const auto& inputs = contacts.edge_inputs;
+    const auto n = std::uint32_t(inputs.size());
+    // The edge of contact i, or none: not touching, or both bodies asleep or static (only
+    // with sleeping on), nothing to solve.
+    const auto edge_of = [&](std::uint32_t i, GraphEdge& edge) {
+        const ContactManager::EdgeInput& e = inputs[i];
+        if (!e.touching)
+            return false;
+        edge = {solver_index_[e.body_a], solver_index_[e.body_b], e.group};
+        return edge.body_a != 0 || edge.body_b != 0;
+    };
+    if (!tasks.parallel() || n < 2 * edge_block) {
+        edges_.clear();
+        edge_contact_.clear();
+        edge_slot_.clear();
+        std::uint32_t bounces = 0;
+        GraphEdge edge;
+        for (std::uint32_t i = 0; i < n; ++i) {
+            if (!edge_of(i, edge))
+                continue;
+            edges_.push_back(edge);
+            edge_contact_.push_back(i);
+            edge_slot_.push_back(inputs[i].bounces ? bounces++ : WideContactSolver::no_slot);
+        }
+        return bounces;
+    }
+    // In parallel: each block counts its edges and bounces, the counts are summed in block
+    // order, and each block writes its edges from there: the serial loop's lists.
+    const int blocks = blocks_of(n, edge_block);
+    edge_block_first_.resize(std::size_t(blocks) + 1);
+    auto count = [&](int first, int last) {
+        GraphEdge edge;
+        for (int k = first; k < last; ++k) {
+            EdgeCount c;
+            const std::uint32_t end = std::min(n, std::uint32_t(k + 1) * edge_block);
+            for (std::uint32_t i = std::uint32_t(k) * edge_block; i < end; ++i) {
+                if (edge_of(i, edge)) {
+                    ++c.edges;
+                    c.bounces += inputs[i].bounces ? 1 : 0;
+                }
+            }
+            edge_block_first_[std::size_t(k) + 1] = c;
+        }
+    };
+    tasks.for_each_block(blocks, count);
+    edge_block_first_[0] = {};
+    for (std::size_t k = 0; k < std::size_t(blocks); ++k) {
+        edge_block_first_[k + 1].edges += edge_block_first_[k].edges;
+        edge_block_first_[k + 1].bounces += edge_block_first_[k].bounces;
+    }
+    const EdgeCount total = edge_block_first_[std::size_t(blocks)];
+    edges_.resize(total.edges);
+    edge_contact_.resize(total.edges);
+    edge_slot_.resize(total.edges);
+    auto fill = [&](int first, int last) {
+        GraphEdge edge;
+        for (int k = first; k < last; ++k) {
+            EdgeCount at = edge_block_first_[std::size_t(k)];
+            const std::uint32_t end = std::min(n, std::uint32_t(k + 1) * edge_block);
+            for (std::uint32_t i = std::uint32_t(k) * edge_block; i < end; ++i) {
+                if (!edge_of(i, edge))
+                    continue;
+                edges_[at.edges] = edge;
+                edge_contact_[at.edges] = i;
+                edge_slot_[at.edges] =
+                    inputs[i].bounces ? at.bounces++ : WideContactSolver::no_slot;
+                ++at.edges;
+            }
+        }
+    };
+    tasks.for_each_block(blocks, fill);
+    return total.bounces;
+}
+
 void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const WorldDef& def,
                        double dt, const StepTasks& tasks) {
     const int n = def.substeps;
@@ -247,21 +425,7 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
         make_softness(capped_frequency(def.joint_hertz, n, dt), def.joint_damping_ratio, h);
     // The touching manifolds in creation order, as the colouring sees them; those that can
     // bounce get a slot for the restitution pass's copy, also in creation order.
-    edges_.clear();
-    edge_contact_.clear();
-    edge_slot_.clear();
-    std::uint32_t bounce_count = 0;
-    for (std::uint32_t i = 0; i < contacts.edge_inputs.size(); ++i) {
-        const ContactManager::EdgeInput& e = contacts.edge_inputs[i];
-        if (!e.touching)
-            continue;
-        const std::uint32_t a = solver_index_[e.body_a], b = solver_index_[e.body_b];
-        if (a == 0 && b == 0)
-            continue; // both asleep or static (only with sleeping on): nothing to solve
-        edges_.push_back({a, b, e.group});
-        edge_contact_.push_back(i);
-        edge_slot_.push_back(e.bounces ? bounce_count++ : WideContactSolver::no_slot);
-    }
+    const std::uint32_t bounce_count = list_edges(contacts, tasks);
     if (bouncing_.size() < bounce_count)
         bouncing_.resize(bounce_count); // only while the scene grows: never shrunk
     // With WorldDef::contact_regions > 1 the manifolds are solved region by region, on any

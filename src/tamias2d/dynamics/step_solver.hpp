@@ -33,8 +33,9 @@ class StepSolver {
     /// The solver bodies and their accelerations (IM1, IM2's loads; IM5's decay factors over
     /// the substep h): one per awake non-static body, 0 standing for every immovable one.
     /// `loads` holds the load functions' values per body, or is empty when no body has one.
+    /// With more than one worker, in parallel blocks of bodies, to the serial loop's results.
     void prepare_bodies(const BodyStore& bodies, const std::vector<Load>& loads,
-                        const WorldDef& def, double h);
+                        const WorldDef& def, double h, const StepTasks& tasks);
     /// The joints' solver bodies and pins at the step's start (after prepare_bodies).
     void prepare_joints(JointStore& joints, const BodyStore& bodies);
     /// The substeps of the soft step over dt and the restitution pass; the contacts' impulses
@@ -57,6 +58,10 @@ class StepSolver {
                   const JointStore& joints, const WorldDef& def, const StepTasks& tasks);
 
   private:
+    /// prepare_bodies' parallel form; `across` is the axis the contact regions are cut across.
+    void prepare_bodies_in_blocks(const BodyStore& store, const std::vector<Load>& loads,
+                                  const WorldDef& def, double h, Vec2d across,
+                                  const StepTasks& tasks);
     /// \srs{R5} \srs{R6} IM1/IM2, the velocity half of the semi-implicit Euler step (DD4, DD7);
     /// \srs{IM5} with damping when some body is damped.
     void integrate_velocities(double h, const StepTasks& tasks);
@@ -65,6 +70,10 @@ class StepSolver {
     /// \srs{R5} \srs{R6} IM1/IM2, the position half with the new velocities (DD3, DD6).
     void integrate_positions(double h, const StepTasks& tasks);
     void integrate_positions(double h, std::size_t begin, std::size_t end);
+    /// The touching manifolds with a moving body, in creation order, into edges_, edge_contact_
+    /// and edge_slot_ (in parallel blocks with more than one worker); returns how many can
+    /// bounce.
+    std::uint32_t list_edges(const ContactManager& contacts, const StepTasks& tasks);
     /// The manifolds' lane filling and preparation into packs [begin, end) of the solve order,
     /// each pack warm started right after it with `warm_start` (then begin must be 0).
     void prepare_packs(const ContactManager& contacts, std::size_t begin, std::size_t end,
@@ -89,12 +98,19 @@ class StepSolver {
     std::vector<double> linear_decay_, angular_decay_; ///< IM5's factors per solver body
     bool any_damped_ = false; ///< this step: some solver body is damped (else no factors)
     std::vector<std::uint32_t> solver_index_; ///< per body: its SolverBody (0: immovable)
+    /// prepare_bodies_in_blocks' per block: its first solver body, whether one is damped.
+    std::vector<std::uint32_t> block_first_;
+    std::vector<std::uint8_t> block_damped_;
     /// Per solver body: its centre along the axis the contact streams are cut across (m).
     std::vector<double> cut_;
     std::uint32_t diverged_ = null_index;     ///< see diverged()
     std::vector<GraphEdge> edges_;            ///< the touching manifolds, creation order
     std::vector<std::uint32_t> edge_contact_; ///< per edge: its contact
     std::vector<std::uint32_t> edge_slot_;    ///< per edge: its copy in `bouncing_`, or no_slot
+    struct EdgeCount {
+        std::uint32_t edges = 0, bounces = 0;
+    };
+    std::vector<EdgeCount> edge_block_first_; ///< list_edges' per block: its first edge, slot
     std::vector<ContactConstraint> bouncing_; ///< manifolds with restitution, creation order
     WideContactSolver wide_solver_;
     PackStreams pack_streams_;
