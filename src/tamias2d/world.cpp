@@ -1,8 +1,10 @@
 #include "tamias2d/world.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <string>
 #include <utility>
 
@@ -87,9 +89,12 @@ struct World::Impl {
     double inv_h = 0.0;          ///< s^-1, the last step's substep rate (reaction forces)
     std::vector<JointId> broken; ///< joints the last step broke
     /// With joints, what a step changes before its solve and a refused step must give back:
-    /// the joints (their impulses, their bodies' rotations), the sleep states the islands woke
-    /// and the substep rate the reaction forces are read with.
-    std::vector<Joint> joints_before;
+    /// the part of each joint a step writes (joint_step_part on: impulses, axis, the
+    /// preparation's fields; a copy of whole joints was an eighth of a 20 000-joint grid's
+    /// step), the sleep states the islands woke and the substep rate the reaction forces are
+    /// read with.
+    using JointStepPart = std::array<unsigned char, sizeof(Joint) - joint_step_part>;
+    std::vector<JointStepPart> joints_before;
     std::vector<SleepState> sleep_before;
     double inv_h_before = 0.0;
 
@@ -98,7 +103,9 @@ struct World::Impl {
     /// finalized, so the bodies are as they were; the contacts hold the manifolds of those same
     /// poses.
     [[noreturn]] void refuse_diverged(std::uint32_t i) {
-        std::copy(joints_before.begin(), joints_before.end(), joints.joints.begin());
+        for (std::size_t k = 0; k < joints_before.size(); ++k)
+            std::memcpy(reinterpret_cast<unsigned char*>(&joints.joints[k]) + joint_step_part,
+                        joints_before[k].data(), sizeof(JointStepPart));
         inv_h = inv_h_before;
         if (def.enable_sleep)
             std::copy(sleep_before.begin(), sleep_before.end(), bodies.sleep_states.begin());
@@ -579,9 +586,14 @@ void World::step(double dt) {
     w.sensors.begin_events.clear();
     w.sensors.end_events.clear();
     const bool guarded = w.joints.live() > 0;
-    if (guarded) { // (assign reuses the vectors: no allocation in a steady state)
+    if (guarded) { // (resize and assign reuse the vectors: no allocation in a steady state)
         w.inv_h_before = w.inv_h;
-        w.joints_before.assign(w.joints.joints.begin(), w.joints.joints.end());
+        w.joints_before.resize(w.joints.joints.size());
+        for (std::size_t k = 0; k < w.joints_before.size(); ++k)
+            std::memcpy(w.joints_before[k].data(),
+                        reinterpret_cast<const unsigned char*>(&w.joints.joints[k]) +
+                            joint_step_part,
+                        sizeof(Impl::JointStepPart));
         if (w.def.enable_sleep)
             w.sleep_before.assign(w.bodies.sleep_states.begin(), w.bodies.sleep_states.end());
     }

@@ -9,6 +9,7 @@
 #include <iterator>
 #include <limits>
 #include <random>
+#include <span>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -95,14 +96,22 @@ inline bool finite(Vec2d v) {
     return std::isfinite(v.x) && std::isfinite(v.y);
 }
 
-/// The bodies' states and the clock, bit for bit: what a SolverDivergence promises to leave
-/// as it was (the contacts, also in state_hash(), are brought up to date with those poses).
-inline std::vector<double> body_states(const World& w) {
+/// The bodies' states, the clock and the reactions of `joints` (those that exist), bit for bit:
+/// what a SolverDivergence promises to leave as it was (the contacts, also in state_hash(), are
+/// brought up to date with those poses). A joint's reaction is read from the impulses and axis
+/// of its last solve, the part of it a refused step must give back.
+inline std::vector<double> body_states(const World& w, std::span<const JointId> joints = {}) {
     std::vector<double> out{w.time()};
     for (const BodyId id : w.bodies()) {
         const BodyState s = w.state(id);
         out.insert(out.end(), {s.position.x, s.position.y, s.velocity.x, s.velocity.y,
                                s.orientation, s.angular_velocity});
+    }
+    for (const JointId j : joints) {
+        if (!w.is_valid(j))
+            continue;
+        const Vec2d f = w.joint_reaction_force(j);
+        out.insert(out.end(), {f.x, f.y, w.joint_reaction_torque(j)});
     }
     return out;
 }

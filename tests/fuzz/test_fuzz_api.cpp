@@ -378,7 +378,7 @@ void run_sequence(std::uint64_t seed, Tally& tally) {
     const bool trace = std::getenv("TAMIAS_FUZZ_TRACE") != nullptr;
     for (int c = 0; c < calls_per_sequence; ++c) {
         const std::uint64_t before = d.world.state_hash();
-        const std::vector<double> states_before = body_states(d.world);
+        const std::vector<double> states_before = body_states(d.world, d.joints);
         std::string problem;
         bool refused = true;
         bool diverged = false; // SolverDivergence: its own promise (errors.hpp)
@@ -404,8 +404,8 @@ void run_sequence(std::uint64_t seed, Tally& tally) {
         }
         if (refused) {
             ++tally.rejected;
-            if (problem.empty() && diverged && body_states(d.world) != states_before)
-                problem = "a diverged step changed the bodies";
+            if (problem.empty() && diverged && body_states(d.world, d.joints) != states_before)
+                problem = "a diverged step changed the bodies or the joints";
             if (problem.empty() && !diverged && d.world.state_hash() != before)
                 problem = "a rejected call changed the world";
         } else {

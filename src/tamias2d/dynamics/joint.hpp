@@ -3,8 +3,10 @@
 // its definition (tamias2d/joint_def.hpp) sets.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 
 #include "tamias2d/math/vec2d.hpp"
 
@@ -20,30 +22,20 @@ struct Joint {
     std::uint32_t body_a = 0, body_b = 0;     ///< world body indices
     Vec2d local_anchor_a{}, local_anchor_b{}; ///< m, the pin in each body's frame (from origin)
     double break_force = std::numeric_limits<double>::infinity(); ///< N
-    /// N s: the impulse accumulated over the last substep's iterations, the warm start of the
-    /// next; over the substep length it is the reaction force (IM6).
-    Vec2d linear_impulse{};
     // A spring (distance, target, revolute, prismatic, wheel; a weld's linear part): hertz 0
     // is rigid (distance, weld) or no spring. A distance joint's rest length.
     double length = 0.0, hertz = 0.0, damping_ratio = 0.0;
     bool enable_spring = false;
-    // The impulse along the axis (N s: a distance joint's rod or spring) and the axis of the
-    // last solve (for the reaction force); prismatic and wheel joints: the axis in A's frame.
-    double axial_impulse = 0.0;
-    Vec2d axis{1.0, 0.0};
+    // Prismatic and wheel joints: the axis in A's frame.
     Vec2d local_axis{1.0, 0.0};
     // The reference angle phi_B - phi_A at creation (DD22, DD23, DD24; a motor joint's
-    // angular offset), and the angular impulses (N m s) accumulated in the last substep.
+    // angular offset).
     double reference_angle = 0.0;
     bool enable_limit = false, enable_motor = false;
     /// Limits: rad (revolute), m (prismatic and wheel translation, distance length).
     double lower_limit = 0.0, upper_limit = 0.0;
     /// Motor: rad s^-1 and N m (revolute, wheel), m s^-1 and N (prismatic).
     double motor_speed = 0.0, max_motor = 0.0;
-    double motor_impulse = 0.0, lower_impulse = 0.0, upper_impulse = 0.0;
-    double spring_impulse = 0.0;  ///< N s or N m s: a spring's along the axis or about z
-    double angular_impulse = 0.0; ///< N m s: the angle held (prismatic, weld, motor joint)
-    double perp_impulse = 0.0;    ///< N s: the line held (prismatic, wheel)
     // A weld's angular spring (hertz 0: rigid).
     double angular_hertz = 0.0, angular_damping_ratio = 0.0;
     // Target joints (DD21): one body (body_a = body_b), the target, the spring, the force limit.
@@ -51,6 +43,22 @@ struct Joint {
     Vec2d target{};
     double max_force = std::numeric_limits<double>::infinity();
     double max_torque = 0.0, correction_factor = 0.0;
+
+    // What a step writes, from linear_impulse to the end of the record (joint_step_part): the
+    // World keeps a copy of this part alone to refuse a diverged step (the fields above are the
+    // joint's definition, which only the World's setters change).
+    /// N s: the impulse accumulated over the last substep's iterations, the warm start of the
+    /// next; over the substep length it is the reaction force (IM6).
+    Vec2d linear_impulse{};
+    // The impulse along the axis (N s: a distance joint's rod or spring) and the axis of the
+    // last solve (for the reaction force).
+    double axial_impulse = 0.0;
+    Vec2d axis{1.0, 0.0};
+    // The motor's and the limits' impulses in the last substep (N m s, or N s along an axis).
+    double motor_impulse = 0.0, lower_impulse = 0.0, upper_impulse = 0.0;
+    double spring_impulse = 0.0;  ///< N s or N m s: a spring's along the axis or about z
+    double angular_impulse = 0.0; ///< N m s: the angle held (prismatic, weld, motor joint)
+    double perp_impulse = 0.0;    ///< N s: the line held (prismatic, wheel)
 
     // Set by the step's preparation (joint_solver.hpp).
     std::uint32_t solver_a = 0, solver_b = 0; ///< solver bodies (0: immovable this step)
@@ -63,6 +71,11 @@ struct Joint {
     /// cosine and sine per body rather than per joint and pass.
     Rot q_a{}, q_b{};
 };
+
+static_assert(std::is_standard_layout_v<Joint> && std::is_trivially_copyable_v<Joint>);
+
+/// Where the part of a joint that a step writes begins (bytes); it runs to the record's end.
+inline constexpr std::size_t joint_step_part = offsetof(Joint, linear_impulse);
 
 /// The angular impulse (N m s) the joint's angular parts (motor, limits, spring, held angle)
 /// applied to body B in the last substep: over the substep's length, its reaction torque.

@@ -15,6 +15,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <exception>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -480,15 +481,18 @@ bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
 }
 
 void check_refusal(const std::exception_ptr& error, std::uint64_t before,
-                   const std::vector<double>& states_before, const World& w) {
+                   const std::vector<double>& states_before, const World& w,
+                   std::span<const JointId> joints) {
     try {
         std::rethrow_exception(error);
     } catch (const SolverDivergence& e) {
-        // Its own promise (errors.hpp): bodies and clock as they were, contacts updated.
+        // Its own promise (errors.hpp): bodies, joints and clock as they were, contacts
+        // updated.
         if (e.field.empty() || std::string(e.what()).empty())
             broken_promise("SolverDivergence with an empty field or message");
-        if (!same_bits(body_states(w), states_before))
-            broken_promise(std::string("a diverged step changed the bodies: ") + e.what());
+        if (!same_bits(body_states(w, joints), states_before))
+            broken_promise(std::string("a diverged step changed the bodies or the joints: ") +
+                           e.what());
         return;
     } catch (const ValidationError& e) {
         if (e.field.empty() || std::string(e.what()).empty())
@@ -530,7 +534,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     Session s(in, world_def(in));
     for (int c = 0; c < max_calls && !in.empty(); ++c) {
         const std::uint64_t before = s.world.state_hash();
-        const std::vector<double> states_before = body_states(s.world);
+        const std::vector<double> states_before = body_states(s.world, s.joints);
         const World& w = s.world;
         std::exception_ptr error;
         double stepped = 0.0;
@@ -542,7 +546,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         if (trace)
             print_trace(s, error != nullptr, stepped);
         if (error) {
-            check_refusal(error, before, states_before, w);
+            check_refusal(error, before, states_before, w, s.joints);
             continue;
         }
         if (const std::string bad = non_finite_state(w); !bad.empty())
