@@ -251,18 +251,23 @@ bool solved(const Joint& j) {
 
 void StepSolver::prepare_joints(JointStore& joints, const BodyStore& bodies) {
     // The moving bodies the joints hold, each once, with its angle at the step's start.
+    for (const JointedBody& jb : jointed_) // the last step's marks
+        listed_[jb.solver] = 0;
     jointed_.clear();
     if (joints.live() == 0)
         return;
     joint_rotations_.resize(solver_bodies_.size());
-    listed_.resize(solver_bodies_.size()); // all false: cleared below after each use
+    listed_.resize(solver_bodies_.size()); // all false: the marks are cleared above
     for (Joint& j : joints.joints) {
         if (!j.alive)
             continue;
         prepare_joint(j, bodies, solver_index_);
-        // An immovable side keeps its rotation all step (solver body 0 never turns).
-        j.q_a = Rot::from_angle(j.angle_a + solver_bodies_[j.solver_a].dq);
-        j.q_b = Rot::from_angle(j.angle_b + solver_bodies_[j.solver_b].dq);
+        // An immovable side keeps its rotation all step (solver body 0 never turns); a moving
+        // side's is its body's, turned once per body below rather than once per joint.
+        if (j.solver_a == 0)
+            j.q_a = Rot::from_angle(j.angle_a + solver_bodies_[0].dq);
+        if (j.solver_b == 0)
+            j.q_b = Rot::from_angle(j.angle_b + solver_bodies_[0].dq);
         if (!solved(j))
             continue;
         for (const auto& [k, angle] : {std::pair{j.solver_a, j.angle_a}, {j.solver_b, j.angle_b}}) {
@@ -272,8 +277,7 @@ void StepSolver::prepare_joints(JointStore& joints, const BodyStore& bodies) {
             }
         }
     }
-    for (const JointedBody& jb : jointed_)
-        listed_[jb.solver] = 0;
+    turn_joints(joints.joints);
 }
 
 void StepSolver::turn_joints(std::vector<Joint>& joints) {
@@ -623,6 +627,7 @@ void StepSolver::write_back(BodyStore& store, ShapeStore& shape_store, const Wor
     // A body whose every point moved less than the speculative distance cannot reach a shape
     // it had no contact with at the step's start: only the others are swept (DD29).
     const double seen = def.speculative_distance;
+    const bool jointed = !jointed_.empty();
     // Solver body 0 stands for the bodies that did not move: static, asleep or destroyed
     // (their lines are neither asked for nor read).
     for (std::uint32_t i = begin; i < end; ++i) {
@@ -674,7 +679,10 @@ void StepSolver::write_back(BodyStore& store, ShapeStore& shape_store, const Wor
         }
         b.center += sb.dp;
         b.angle += sb.dq;
-        b.xf.q = Rot::from_angle(b.angle);
+        // A jointed body's rotation was turned to this angle, the same sum, after the last
+        // position half (turn_joints).
+        b.xf.q = jointed && listed_[solver_index_[i]] ? joint_rotations_[solver_index_[i]]
+                                                      : Rot::from_angle(b.angle);
         b.xf.p = b.center - rotate(b.xf.q, b.local_center);
         if (b.loaded) {
             b.force_once = {};

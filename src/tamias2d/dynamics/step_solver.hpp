@@ -121,7 +121,9 @@ class StepSolver {
     };
     std::vector<JointedBody> jointed_;
     std::vector<Rot> joint_rotations_; ///< per solver body, for the jointed ones
-    std::vector<std::uint8_t> listed_; ///< per solver body: in jointed_ (all 0 between steps)
+    /// Per solver body: in jointed_. Kept until the next preparation, so that write_back finds
+    /// the jointed bodies' last rotations.
+    std::vector<std::uint8_t> listed_;
     ContinuousPass continuous_;
     /// finalize's parallel form, per body: bit 0 swept by the continuous pass (from starts_),
     /// bit 1 some shape undecided (undecided_, per shape).
