@@ -55,13 +55,21 @@ REQUIRED_KEYS = ["label", "kind", "alias", "title", "equation", "symbols", "uses
 OPTIONAL_KEYS = {
     "seed_equation", "seed_ref_by", "seed_ref_by_unresolved", "notes", "errata",
     "seed_cites", "seed_cites_unresolved", "alias_ref_by", "inputs", "seed_inputs", "outputs",
+    "obligation",
 }
+# Requirements carry their obligation as data, from the SRS's own verb (ISO/IEC/IEEE 29148:
+# "shall" binds, "should" states a goal, "will" states a fact or intent). A statement with no
+# verb or with several must cite an erratum of kind "obligation" giving the reading.
+OBLIGATION_KINDS = {"R", "NFR"}
+OBLIGATIONS = ("shall", "should", "will")
+OBLIGATION_VERB_RE = re.compile(r"\b(shall|should|will)\b", re.IGNORECASE)
 DC_KEYS = {"variable", "constraint", "typical", "corrected_constraint"}
 DC_REQUIRED = ["variable", "constraint", "typical"]
 SYMBOL_KEYS = {"symbol", "unit", "description", "seed_unit", "tamias_unit"}
 SOURCE_SEEDS = {"000", "001", "project"}
 
-ERRATUM_KINDS = {"units", "cross-reference", "omission", "typo", "physics", "table"}
+ERRATUM_KINDS = {"units", "cross-reference", "omission", "typo", "physics", "table",
+                 "obligation"}
 ERRATUM_REQUIRED = ["id", "items", "kind", "seed_text", "problem", "correct_reading",
                     "compile_fail"]
 ERRATUM_OPTIONAL = {"section", "seeds"}
@@ -269,7 +277,22 @@ def _check_item(fname, idx, raw, res, allowed_kinds):
         res.error(f"{where}: a project constraint must cite the erratum that motivates it")
     if "notes" in raw and not _is_str(raw["notes"]):
         res.error(f"{where}: notes must be a non-empty string")
+    if kind in OBLIGATION_KINDS and raw.get("obligation") not in OBLIGATIONS:
+        res.error(f"{where}: a {kind} needs obligation, one of {', '.join(OBLIGATIONS)}")
+    if kind not in OBLIGATION_KINDS and "obligation" in raw:
+        res.error(f"{where}: only requirements ({', '.join(sorted(OBLIGATION_KINDS))}) carry an "
+                  "obligation")
     return raw
+
+
+def obligation_verbs(description):
+    """The distinct obligation verbs of a statement, in order of first use."""
+    out = []
+    for m in OBLIGATION_VERB_RE.finditer(description or ""):
+        v = m.group(1).lower()
+        if v not in out:
+            out.append(v)
+    return out
 
 
 def _find_seed_dir(explicit):
@@ -477,6 +500,22 @@ def check(srs_dir=HERE, seeds_dir=None, use_seeds=True):
                 res.error(f"{lab}: erratum {eid} is not in errata.yaml")
             elif lab not in (seen[eid].get("items") or []):
                 res.error(f"{lab} lists {eid}, but {eid}.items does not list {lab}")
+    # The obligation agrees with the statement's verb, or an erratum gives the reading.
+    for lab in res.order:
+        it = items[lab]
+        if it["kind"] not in OBLIGATION_KINDS or it.get("obligation") not in OBLIGATIONS:
+            continue
+        verbs = obligation_verbs(it.get("description"))
+        if len(verbs) == 1:
+            if verbs[0] != it["obligation"]:
+                res.error(f"{lab}: obligation {it['obligation']} but the statement says "
+                          f"'{verbs[0]}'")
+            continue
+        cited = [seen[e] for e in it.get("errata") or [] if e in seen]
+        if not any(e.get("kind") == "obligation" for e in cited):
+            found = ", ".join(verbs) if verbs else "no obligation verb"
+            res.error(f"{lab}: the statement has {found}: cite an erratum of kind obligation "
+                      "that gives the reading")
     for k, u in enumerate(meta.get("seed_unresolved_references") or []):
         if not isinstance(u, dict) or not _is_str(u.get("text")) or not _is_str(u.get("where")):
             res.error(f"meta.yaml seed_unresolved_references #{k + 1}: needs text and where")

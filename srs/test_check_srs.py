@@ -43,8 +43,10 @@ def tiny_srs():
                                         alias_ref_by=["IM1"], errata=["E01"])],
         "instance_models.yaml": [_item("IM1", "IM", equation="x = 2", symbols=sym,
                                        uses=["DD1"], seed_ref_by=["GS1", "R1"])],
-        "requirements.yaml": [_item("R1", "R", uses=["IM1", "DCI_x"])],
-        "nonfunctional.yaml": [_item("NFR1", "NFR")],
+        "requirements.yaml": [_item("R1", "R", uses=["IM1", "DCI_x"], obligation="shall",
+                                    description="The software shall do x.")],
+        "nonfunctional.yaml": [_item("NFR1", "NFR", obligation="should",
+                                     description="Its x should stay small.")],
         "changes.yaml": [_item("LC1", "LC", uses=["A1"]), _item("UC1", "UC")],
         "data_constraints.yaml": [_item("DCI_x", "DC", variable="x", constraint="x >= 0",
                                         typical="1 m", equation="x \\ge 0", symbols=sym)],
@@ -172,6 +174,32 @@ class TinySrs(unittest.TestCase):
         files = tiny_srs()
         files["errata.yaml"][0]["items"].append("GD7")
         self.assertRejected(files, "'GD7' is not an SRS label")
+
+    def test_requirement_without_obligation_rejected(self):
+        files = tiny_srs()
+        del files["requirements.yaml"][0]["obligation"]
+        self.assertRejected(files, "R1: a R needs obligation")
+
+    def test_obligation_must_match_the_verb(self):
+        files = tiny_srs()
+        files["nonfunctional.yaml"][0]["obligation"] = "shall"
+        self.assertRejected(files, "NFR1: obligation shall but the statement says 'should'")
+
+    def test_mixed_verbs_need_an_obligation_erratum(self):
+        files = tiny_srs()
+        files["requirements.yaml"][0]["description"] = "It shall do x; x should take 1 s."
+        self.assertRejected(files, "R1: the statement has shall, should")
+        files["requirements.yaml"][0]["errata"] = ["E02"]
+        files["errata.yaml"].append({"id": "E02", "items": ["R1"], "kind": "obligation",
+                                     "seed_text": "shall ... should", "problem": "mixed",
+                                     "correct_reading": "shall governs", "compile_fail": False})
+        res = self.run_check(files)
+        self.assertTrue(res.valid, res.errors)
+
+    def test_obligation_only_on_requirements(self):
+        files = tiny_srs()
+        files["goals.yaml"][0]["obligation"] = "shall"
+        self.assertRejected(files, "only requirements")
 
     def test_cycle_in_uses_rejected(self):
         files = tiny_srs()
