@@ -8,7 +8,12 @@ import yaml
 
 from .srsdata import KIND_NAMES, KIND_ORDER, natural_key
 
-STATUSES = ["verified", "failing", "untested", "assumed", "not testable", "not implemented"]
+STATUSES = ["verified", "goal met", "failing", "goal missed", "untested", "assumed",
+            "not testable", "not implemented"]
+# A requirement whose obligation is "should" (srs/: the SRS's own verb) is a goal: measured and
+# shown with its figure, judged "goal met" or "goal missed", never a gate failure. A check that
+# only such items label is "goal-missed" when it fails; "shall" items gate as before.
+GOAL_OBLIGATION = "should"
 # Statuses an item without labelled tests may be given by config.yaml's `without_tests`, each
 # with its reason: what the item is, instead of "untested" where no test could verify it.
 DECLARED_STATUSES = ("assumed", "not testable")
@@ -109,9 +114,12 @@ def analyse(srs, code_sites, tests, config, warnings=None):
     sites_by = {}
     for s in code_sites:
         sites_by.setdefault(s["label"], []).append(s)
+    goals = {lab for lab, it in srs.items.items() if it.get("obligation") == GOAL_OBLIGATION}
     tests_by = {}
     for t in tests:
         t["srs_labels"] = [x for x in t["labels"] if x in labels]
+        if t["status"] == "failed" and t["srs_labels"] and set(t["srs_labels"]) <= goals:
+            t["status"] = "goal-missed"
         for x in t["srs_labels"]:
             tests_by.setdefault(x, []).append(t)
 
@@ -122,6 +130,11 @@ def analyse(srs, code_sites, tests, config, warnings=None):
         its_tests = sorted(tests_by.get(lab, []), key=lambda t: (t["status"] not in FAILING, t["id"]))
         decl = declared.get(lab)
         status = item_status(sites, its_tests, it["kind"], decl["status"] if decl else None)
+        if lab in goals and status != "failing":
+            if any(t["status"] == "goal-missed" for t in its_tests):
+                status = "goal missed"
+            elif status == "verified":
+                status = "goal met"
         notes = []
         if decl and status == decl["status"]:
             notes.append(f'{decl["status"]}: {decl["reason"]}')
@@ -131,7 +144,7 @@ def analyse(srs, code_sites, tests, config, warnings=None):
         kinds = sorted({k for t in its_tests if t["status"] == "passed" for k in t["oracle_kinds"]},
                        key=_kind_order)
         weak_kinds = WEAK_ORACLE_KINDS - ({"peer"} if lab in peer_reference else set())
-        weak = status == "verified" and all(k in weak_kinds for k in kinds)
+        weak = status in ("verified", "goal met") and all(k in weak_kinds for k in kinds)
         if lab in peer_reference and "peer" in kinds:
             notes.append("A peer's figure is this item's own reference, not weak evidence: " +
                          peer_reference[lab])
@@ -159,12 +172,14 @@ def analyse(srs, code_sites, tests, config, warnings=None):
         items.append({
             "label": lab, "kind": it["kind"], "alias": it.get("alias"), "title": it.get("title"),
             "status": status, "gated": it["kind"] in GATED_KINDS,
+            "obligation": it.get("obligation"),
             "status_reason": decl["reason"] if decl and status == decl["status"] else None,
             "oracle_kinds": kinds, "weak_evidence": weak, "tests_without_oracle": unstated,
             "code_sites": sites, "tests": [t["id"] for t in its_tests],
             "tests_passed": sum(t["status"] == "passed" for t in its_tests),
             "tests_failing": sum(t["status"] in FAILING for t in its_tests),
             "tests_other": len(skipped),
+            "tests_goal_missed": sum(t["status"] == "goal-missed" for t in its_tests),
             "uses": it["uses"], "ref_by": srs.ref_by.get(lab, []),
             "seed_ref_by": it.get("seed_ref_by"), "errata": it.get("errata", []),
             "source": it.get("source"), "equation": it.get("equation"),
@@ -252,7 +267,13 @@ def analyse(srs, code_sites, tests, config, warnings=None):
             # documented finding (docs/verification.md).
             "known_failures": [t["id"] for t in tests if t["status"] == "known-failure"],
             # Goals beyond the SRS (verification checks with a "target"), missed: listed, not gating.
-            "targets_missed": [t["id"] for t in tests if t["status"] == "target-missed"]}
+            "targets_missed": [t["id"] for t in tests if t["status"] == "target-missed"],
+            # The SRS's own goals ("should" requirements): each with its checks, met or missed.
+            "goals": [{"label": i["label"], "status": i["status"],
+                       "checks": [t["id"] for t in tests_by.get(i["label"], [])
+                                  if t["status"] in ("passed", "goal-missed")]}
+                      for i in items if i["label"] in goals],
+            "goals_missed": [t["id"] for t in tests if t["status"] == "goal-missed"]}
     return {"items": items, "by_kind": by_kind, "by_status": by_status, "gaps": gaps,
             "orphans": orphans, "category_labels": category_labels, "test_totals": test_totals,
             "missing_oracle": missing_oracle, "missing_oracle_srs": missing_oracle_srs,

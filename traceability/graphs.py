@@ -19,7 +19,8 @@ KIND_HEX = {  # the same colours as hex, for the HTML legend
     "R": "#fffff0", "GS": "#ffb90f", "LC": "#e6e6fa", "UC": "#d8bfd8", "NFR": "#f5deb3",
     "DC": "#e0ffff",
 }
-STATUS_BORDER = {"verified": "#2e7d32", "failing": "#c62828", "untested": "#ef6c00",
+STATUS_BORDER = {"verified": "#2e7d32", "goal met": "#2e7d32", "failing": "#c62828",
+                 "goal missed": "#ef6c00", "untested": "#ef6c00",
                  "assumed": "#5b6474", "not testable": "#5b6474", "not implemented": "#757575"}
 
 VIEWS = [

@@ -12,13 +12,16 @@ from .srsdata import KIND_NAMES
 
 E = html.escape
 
-STATUS_CLASS = {"verified": "st-ok", "failing": "st-fail", "untested": "st-warn",
+STATUS_CLASS = {"verified": "st-ok", "goal met": "st-ok", "goal missed": "st-warn",
+                "goal-missed": "st-warn", "failing": "st-fail", "untested": "st-warn",
                 "assumed": "st-none", "not testable": "st-none", "not implemented": "st-none", "passed": "st-ok", "known-failure": "st-warn",
                 "target-missed": "st-warn", "failed": "st-fail",
                 "error": "st-fail", "skipped": "st-none", "notrun": "st-none"}
 STATUS_HELP = {
     "verified": "at least one passing test or check labelled with the item, and none failing",
+    "goal met": "a \"should\" requirement (a goal, srs/ obligation) whose labelled checks pass",
     "failing": "at least one labelled test or check fails",
+    "goal missed": "a \"should\" requirement (a goal) whose measured figure misses its limit; shown with the figure, never gating",
     "untested": "code carries the item's \\srs tag (or labelled tests exist but did not run), but nothing passing verifies it",
     "assumed": "no test can verify it: an assumption the code is built on (the reason is on the item); no labelled test exists",
     "not testable": "no test can verify it (the reason is on the item): a statement about the project, not the code; no labelled test exists",
@@ -214,10 +217,32 @@ any test or check fails. This report is complete nonetheless; the reasons are:<u
                             """These tests pass only because they declare their failing cases as expected (Boost
 <code>expected_failures</code>); each failing case is a finding described in
 docs/verification.md, printed with its seed so it can be replayed:""", g.get("known_failures"))
+        self.goals()
         self._test_list_box("targets-missed", "Targets not met (goals beyond the SRS)",
                             """These verification checks state project goals beyond the SRS (the project's speed
 floors); this run did not reach them. They do not gate the exit status, and the SRS items they
 are labelled with are judged by their other checks:""", g.get("targets_missed"))
+
+    def goals(self):
+        """The SRS's own goals ("should" requirements): each with its figures, met or missed."""
+        goals = self.r["gate"].get("goals") or []
+        if not goals:
+            return
+        tests = {t["id"]: t for t in self.r["tests"]}
+        rows = []
+        for g in goals:
+            checks = [tests[c] for c in g["checks"] if c in tests]
+            figs = "".join(
+                f'<li>{badge(t["status"])} {self.tlink(t["id"])}'
+                f'{": <b>" + E(t["figure"]) + "</b>" if t.get("figure") else ""}</li>'
+                for t in checks) or "<li>no measurement in this run</li>"
+            rows.append(f'<li>{self.link(g["label"])} {badge(g["status"])}<ul>{figs}</ul></li>')
+        missed = any(g["status"] == "goal missed" for g in goals)
+        cls = "fail" if missed else "pass"
+        self.w(f"""<div class="gate {cls}" id="goals"><h2>Goals of the SRS ("should" requirements)</h2>
+The SRS states these with "should": goals, measured and shown with their figures in every run,
+never a reason for a non-zero exit status ("shall" requirements gate). Each check's details
+say how the figure is measured:<ul>{"".join(rows)}</ul></div>""")
 
     def _test_list_box(self, anchor, title, intro, ids):
         """A box under the gate listing tests (linked) with a heading and an explanation."""
@@ -247,7 +272,8 @@ are labelled with are judged by their other checks:""", g.get("targets_missed"))
         n_items = len(r["items"])
         self.w('<div class="cards">')
         self.w(f'<div class="card info"><div class="n">{n_items}</div><div class="l">SRS items in srs/</div></div>')
-        for st in ("verified", "failing", "untested", "assumed", "not testable", "not implemented"):
+        for st in ("verified", "goal met", "failing", "goal missed", "untested", "assumed",
+                   "not testable", "not implemented"):
             self.w(f'<div class="card {STATUS_CLASS[st]}"><div class="n">{s["by_status"].get(st, 0)}</div>'
                    f'<div class="l">{E(st)}</div></div>')
         self.w('</div>')
@@ -256,7 +282,7 @@ are labelled with are judged by their other checks:""", g.get("targets_missed"))
                'inferred from the items it uses.</p>')
         self.w('<h3>Coverage of the SRS per kind</h3><table class="data sortable"><thead><tr>'
                '<th>Kind</th><th>Name</th><th class="num">Items</th><th class="num">Verified</th>'
-               '<th class="num">Failing</th><th class="num">Untested</th><th class="num">Assumed</th>'
+               '<th class="num">Goal met</th><th class="num">Failing</th><th class="num">Goal missed</th><th class="num">Untested</th><th class="num">Assumed</th>'
                '<th class="num">Not testable</th><th class="num">Not impl.</th>'
                '<th class="num">With code tag</th><th class="num">With tests</th><th>Verified share</th>'
                '<th>Gate</th></tr></thead><tbody>')
@@ -265,7 +291,8 @@ are labelled with are judged by their other checks:""", g.get("targets_missed"))
             gated = "yes" if row["kind"] in r["gate"]["gated_kinds"] else '<span class="mute">no</span>'
             self.w(f'<tr><td data-sort="{E(row["kind"])}">{self.kind(row["kind"])}</td><td>{E(row["name"])}</td>'
                    f'<td class="num">{row["total"]}</td><td class="num">{row["verified"]}</td>'
-                   f'<td class="num">{row["failing"]}</td><td class="num">{row["untested"]}</td>'
+                   f'<td class="num">{row["goal met"]}</td><td class="num">{row["failing"]}</td>'
+                   f'<td class="num">{row["goal missed"]}</td><td class="num">{row["untested"]}</td>'
                    f'<td class="num">{row["assumed"]}</td><td class="num">{row["not testable"]}</td>'
                    f'<td class="num">{row["not implemented"]}</td><td class="num">{row["with_code"]}</td>'
                    f'<td class="num">{row["with_tests"]}</td>'
@@ -275,7 +302,8 @@ are labelled with are judged by their other checks:""", g.get("targets_missed"))
         self.w('<h3>Tests and checks</h3><table class="data"><thead><tr><th>Origin</th>'
                '<th class="num">Total</th><th class="num">Passed</th><th class="num">Failed</th>'
                '<th class="num">Error</th><th class="num">Skipped</th><th class="num">Not run</th>'
-               '<th class="num">Known failure</th><th class="num">Target missed</th></tr></thead><tbody>')
+               '<th class="num">Known failure</th><th class="num">Target missed</th>'
+               '<th class="num">Goal missed</th></tr></thead><tbody>')
         names = {"boost": "Boost.Test cases (per test case, from JUnit)",
                  "ctest": "Other CTest entries (compile-fail, checker, CLI, examples)",
                  "verification": "Verification-program checks (reports/data/*.json)"}
@@ -285,7 +313,8 @@ are labelled with are judged by their other checks:""", g.get("targets_missed"))
                    f'<td class="num">{t.get("passed", 0)}</td><td class="num">{t.get("failed", 0)}</td>'
                    f'<td class="num">{t.get("error", 0)}</td><td class="num">{t.get("skipped", 0)}</td>'
                    f'<td class="num">{t.get("notrun", 0)}</td><td class="num">{t.get("known-failure", 0)}</td>'
-                   f'<td class="num">{t.get("target-missed", 0)}</td></tr>')
+                   f'<td class="num">{t.get("target-missed", 0)}</td>'
+                   f'<td class="num">{t.get("goal-missed", 0)}</td></tr>')
         self.w('</tbody></table>')
         c = s["counts"]
         self.w('<ul class="compact">'

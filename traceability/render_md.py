@@ -39,20 +39,31 @@ def render(r):
     if g.get("targets_missed"):
         bullets("**Targets not met (goals beyond the SRS, e.g. the project's speed "
                 "floors; reported, not gating):**", g["targets_missed"])
+    if g.get("goals"):
+        tests_by_id = {t["id"]: t for t in r["tests"]}
+        lines = []
+        for goal in g["goals"]:
+            figs = "; ".join(f'{c}: {tests_by_id[c].get("figure") or tests_by_id[c]["status"]}'
+                             for c in goal["checks"] if c in tests_by_id)
+            lines.append(f'{goal["label"]} {goal["status"]}' + (f" ({figs})" if figs else ""))
+        bullets('**Goals of the SRS ("should" requirements: measured and shown, never gating):**',
+                lines)
     s = r["summary"]
     w("## 1. Summary\n")
     w("Items by status: " + ", ".join(f"{k}: {v}" for k, v in s["by_status"].items()) +
       f" (of {len(r['items'])}).\n")
-    w(_table(["Kind", "Name", "Items", "Verified", "Failing", "Untested", "Assumed", "Not testable",
-              "Not impl.", "With code", "With tests", "Verified %"],
-             [[k["kind"], k["name"], k["total"], k["verified"], k["failing"], k["untested"],
+    w(_table(["Kind", "Name", "Items", "Verified", "Goal met", "Failing", "Goal missed", "Untested",
+              "Assumed", "Not testable", "Not impl.", "With code", "With tests", "Verified %"],
+             [[k["kind"], k["name"], k["total"], k["verified"], k["goal met"], k["failing"],
+               k["goal missed"], k["untested"],
                k["assumed"], k["not testable"], k["not implemented"], k["with_code"], k["with_tests"],
                k["verified_percent"]] for k in s["by_kind"]]))
     w(_table(["Origin", "Total", "Passed", "Failed", "Error", "Skipped", "Not run", "Known failure",
-              "Target missed"],
+              "Target missed", "Goal missed"],
              [[o, t.get("total", 0), t.get("passed", 0), t.get("failed", 0), t.get("error", 0),
                t.get("skipped", 0), t.get("notrun", 0), t.get("known-failure", 0),
-               t.get("target-missed", 0)] for o, t in sorted(s["tests"].items())]))
+               t.get("target-missed", 0), t.get("goal-missed", 0)]
+              for o, t in sorted(s["tests"].items())]))
     tests = {t["id"]: t for t in r["tests"]}
     w("## 2. Items\n")
     w(_table(["Label", "Kind", "Alias", "Title", "Status", "Oracle kinds", "Code sites", "Tests (status)",

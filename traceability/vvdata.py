@@ -145,6 +145,7 @@ def checks_as_tests(programs, missing=()):
             tests.append({"id": f"{p['program']}:{c.get('name')}", "name": str(c.get("name")),
                           "origin": "verification", "binary": p["program"],
                           "status": status, "target": str(target) if target else None,
+                          "figure": str(c["figure"]) if c.get("figure") else None,
                           "labels": [str(x) for x in c.get("labels") or []],
                           "oracle": c.get("oracle"), "file": f"data/{p['file']}", "line": None,
                           "details": details, "samples": None, "enabled": True})

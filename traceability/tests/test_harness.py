@@ -66,9 +66,27 @@ class FixtureReport(unittest.TestCase):
         self.assertNotIn("peer_compare:speed_floor_2x_peer", gate["failing_tests"])
         self.assertEqual(self.report["summary"]["tests"]["verification"].get("target-missed"), 1)
 
+    def test_a_should_requirement_is_a_goal_not_a_gate(self):
+        t = self.tests["peer_compare:change_cost_within_10_percent"]
+        self.assertEqual(t["status"], "goal-missed")
+        self.assertEqual(t["figure"], "13.6 % > 10 %")
+        gate = self.report["gate"]
+        self.assertNotIn(t["id"], gate["failing_tests"])
+        self.assertEqual(gate["goals_missed"], [t["id"]])
+        self.assertEqual(gate["goals"], [{"label": "NFR2", "status": "goal missed",
+                                          "checks": [t["id"]]}])
+        self.assertNotIn("NFR2", " ".join(gate["reasons"]))
+        self.assertEqual(self.items["NFR2"]["obligation"], "should")
+        self.assertEqual(self.report["summary"]["tests"]["verification"].get("goal-missed"), 1)
+        with open(os.path.join(self.out, "index.html"), encoding="utf-8") as fh:
+            page = fh.read()
+        self.assertIn('id="goals"', page)
+        self.assertIn("13.6 % &gt; 10 %", page)
+
     def test_item_statuses(self):
         expected = {
             "IM1": "verified", "DD1": "verified", "R1": "verified", "NFR1": "verified",
+            "NFR2": "goal missed",
             "IM2": "failing",
             "T1": "untested", "R2": "untested", "LC1": "untested",
             # Kinds only tests verify are "untested" without one, never "not implemented";
@@ -85,8 +103,8 @@ class FixtureReport(unittest.TestCase):
         self.assertEqual(by_kind["IM"]["failing"], 1)
         self.assertEqual(by_kind["IM"]["verified_percent"], 50.0)
         self.assertEqual(self.report["summary"]["by_status"],
-                         {"verified": 4, "failing": 1, "untested": 5, "assumed": 1,
-                          "not testable": 0, "not implemented": 1})
+                         {"verified": 4, "goal met": 0, "failing": 1, "goal missed": 1,
+                          "untested": 5, "assumed": 1, "not testable": 0, "not implemented": 1})
         self.assertNotIn("GD", by_kind)  # general_definitions.yaml is an empty list
 
     def test_orphans_both_directions(self):
@@ -99,7 +117,7 @@ class FixtureReport(unittest.TestCase):
         # category labels are not orphans
         self.assertEqual({c["label"] for c in self.report["category_labels"]}, {"compile_fail", "traceability"})
         gaps = self.report["gaps"]
-        self.assertEqual(gaps["no_code"], ["GS1", "A1", "DD2", "DC1", "R1", "NFR1", "LC1"])
+        self.assertEqual(gaps["no_code"], ["GS1", "A1", "DD2", "DC1", "R1", "NFR1", "NFR2", "LC1"])
         self.assertEqual(gaps["no_test"], ["GS1", "A1", "T1", "DD2", "DC1", "R2"])
 
     def test_code_sites(self):
@@ -246,6 +264,10 @@ class GreenFixture(unittest.TestCase):
             self.assertIn("Gate: PASS", page)
             self.assertNotIn("Gate: FAIL", page)
             self.assertIn('id="targets-missed"', page)
+            # A missed goal (a "should" requirement) is shown on the first screen, not gating.
+            self.assertEqual(rep["gate"]["goals_missed"],
+                             ["peer_compare:change_cost_within_10_percent"])
+            self.assertIn('id="goals"', page)
         finally:
             shutil.rmtree(tmp, ignore_errors=True)
 
