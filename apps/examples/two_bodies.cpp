@@ -1,5 +1,5 @@
 // NFR3 (usability): a complete program that simulates two bodies over time. It is the program
-// the README quotes; CTest builds and runs it, so the quoted code always compiles and works.
+// the user guide quotes; CTest builds and runs it, so the quoted code always compiles and works.
 #include <cstdio>
 
 #include "tamias2d/world.hpp"

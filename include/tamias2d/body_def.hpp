@@ -36,9 +36,9 @@ struct BodyDef {
     Vec2d force{};                     ///< N, persistent force at the centre of mass
     double torque = 0.0;               ///< N m, persistent torque
     /// kg, > 0. Overrides the mass computed from the shapes and their densities (DD1).
-    std::optional<double> mass;
+    std::optional<double> mass{};
     /// kg m^2 about the centre of mass, > 0. Overrides the computed moment of inertia (DD14).
-    std::optional<double> inertia;
+    std::optional<double> inertia{};
     double gravity_scale = 1.0; ///< multiplies the world's gravity for this body
     /// \srs{DD17} s^-1, >= 0: viscous damping of the velocity (a = -c v, IM5). A body left
     /// alone keeps e^(-c t) of its speed; 0 (the default) is the SRS's regime (A6).
@@ -53,9 +53,9 @@ struct BodyDef {
     /// With the world's sleeping on (WorldDef::enable_sleep): whether this body may sleep (a
     /// body that may not keeps every body touching it awake), and whether it starts awake.
     bool enable_sleep = true;
-    bool awake = true; ///< starts awake (false: asleep, e.g. a stack built at rest)
-    LoadFunction load; ///< optional F(t), tau(t), added to the persistent loads
-    std::string name;  ///< free text, for scene files and reports
+    bool awake = true;   ///< starts awake (false: asleep, e.g. a stack built at rest)
+    LoadFunction load{}; ///< optional F(t), tau(t), added to the persistent loads
+    std::string name{};  ///< free text, for scene files and reports
 };
 
 } // namespace tamias2d
