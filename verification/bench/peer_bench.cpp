@@ -70,7 +70,6 @@ constexpr double comparable_limit = 1.5;
 constexpr double floor_vs_chipmunk = 2.0;
 constexpr double floor_vs_box2d = 3.0;
 constexpr double scaling_limit = 20.0; ///< rain_16k ms/step over rain_1k ms/step
-constexpr double typing_limit = 0.02;  ///< bridge over plain doubles, minus 1
 const std::string performance_target = "project performance floors (beyond the SRS)";
 // Quality floors for Tamias2D (R7, R8); the peers' values are reported beside them. pyramid20
 // is the project's stable-stack target (top box within 0.05 m). Larger pyramids sag more under any
@@ -305,6 +304,17 @@ double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
     const std::size_t n = v.size();
     return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+/// The q-quantile by linear interpolation between order statistics (q in [0, 1]).
+double quantile(std::vector<double> v, double q) {
+    if (v.empty())
+        return NAN;
+    std::sort(v.begin(), v.end());
+    const double at = q * double(v.size() - 1);
+    const std::size_t lo = std::size_t(at);
+    const std::size_t hi = std::min(lo + 1, v.size() - 1);
+    return v[lo] + (at - double(lo)) * (v[hi] - v[lo]);
 }
 
 struct SceneResult {
@@ -914,18 +924,20 @@ int main(int argc, char** argv) {
                   performance_target);
     }
     if (typing_result) {
-        // Typed against untyped Tamias2D, not a peer: a design rule, no evidence for NFR1.
+        // Typed against untyped Tamias2D, not a peer: a design rule, no evidence for NFR1. The
+        // verdict on the typing's cost is the instruction count (CTest
+        // typing_kernel_same_instructions), which a loaded host cannot move; the time moves by
+        // about +-2 % between processes, the size of any sensible limit, so it is supporting
+        // data with its spread (the table below), not a check.
         const TypingResult& t = *typing_result;
-        add_check(
-            "unit typing costs <= 2% in the contact-solver hot loop", {"performance"},
-            t.identical && t.overhead() <= typing_limit,
-            "the same kernel on plain doubles, same data, alternating (ABBA), median of " +
-                std::to_string(t.ratio.size()) + " paired ratios",
-            "overhead " + fmt(100.0 * t.overhead(), 3) + " % (bridge " +
-                fmt(median(t.bridge_ms), 4) + " ms, plain " + fmt(median(t.plain_ms), 4) +
-                " ms per " + std::to_string(t.steps) + "-step run of " + std::to_string(t.bodies) +
-                " bodies, " + std::to_string(t.constraints) +
-                " manifolds); final states bitwise identical: " + (t.identical ? "yes" : "NO"));
+        add_check("unit typing: the typed and plain kernels give bitwise identical results",
+                  {"performance"}, t.identical,
+                  "the same kernel on plain doubles, same data: the typing changes no arithmetic",
+                  "final states bitwise identical: " + std::string(t.identical ? "yes" : "NO") +
+                      "; time overhead (supporting data) median " + fmt(100.0 * t.overhead(), 3) +
+                      " %, quartiles " + fmt(100.0 * (quantile(t.ratio, 0.25) - 1.0), 3) +
+                      " % to " + fmt(100.0 * (quantile(t.ratio, 0.75) - 1.0), 3) + " % of " +
+                      std::to_string(t.ratio.size()) + " ABBA pairs");
     }
     for (const SceneResult& r : results) {
         if (!have_tamias)
@@ -1067,17 +1079,20 @@ int main(int argc, char** argv) {
     }
     if (typing_result) {
         const TypingResult& t = *typing_result;
-        tables.push_back({{"name", "Unit typing in the contact-solver hot loop"},
-                          {"columns", {"build", "median ms per run", "min", "max", "runs"}},
-                          {"rows",
-                           {{"model bridge (Boost.Units)", num(median(t.bridge_ms)),
-                             num(*std::min_element(t.bridge_ms.begin(), t.bridge_ms.end())),
-                             num(*std::max_element(t.bridge_ms.begin(), t.bridge_ms.end())),
-                             int(t.bridge_ms.size())},
-                            {"plain doubles", num(median(t.plain_ms)),
-                             num(*std::min_element(t.plain_ms.begin(), t.plain_ms.end())),
-                             num(*std::max_element(t.plain_ms.begin(), t.plain_ms.end())),
-                             int(t.plain_ms.size())}}}});
+        const auto row = [](const char* what, const std::vector<double>& v) {
+            return json::array({what, num(median(v)), num(quantile(v, 0.25)),
+                                num(quantile(v, 0.75)), num(quantile(v, 0.0)),
+                                num(quantile(v, 1.0)), int(v.size())});
+        };
+        tables.push_back(
+            {{"name", "Unit typing in the contact-solver hot loop (time: supporting data; the "
+                      "verdict is the instruction count, CTest typing_kernel_same_instructions)"},
+             {"columns",
+              {"what", "median", "lower quartile", "upper quartile", "min", "max", "runs"}},
+             {"rows",
+              {row("model bridge (Boost.Units), ms per run", t.bridge_ms),
+               row("plain doubles, ms per run", t.plain_ms),
+               row("ratio bridge / plain per ABBA pair", t.ratio)}}});
     }
     if (!latency.empty()) {
         json rows = json::array();
