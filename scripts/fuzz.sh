@@ -89,8 +89,11 @@ if [ -n "$report" ]; then
     mkdir -p "$report"
     commit=$(git rev-parse HEAD 2>/dev/null || echo unknown)
     dirty=$([ -n "$(git status --porcelain 2>/dev/null)" ] && echo true || echo false)
-    ROWS="$rows" /usr/bin/python3 - "$report/fuzz.json" "$commit" "$dirty" "$built" <<'EOF'
+    ROWS="$rows" FUZZ_BUILD="$build" FUZZ_CXX="$($cxx --version | head -1)" \
+        /usr/bin/python3 - "$report/fuzz.json" "$commit" "$dirty" "$built" <<'EOF'
 import datetime, json, os, sys
+sys.path.insert(0, os.getcwd())
+from traceability.builds import tree_key
 out, commit, dirty, built = sys.argv[1], sys.argv[2], sys.argv[3] == "true", sys.argv[4]
 what = {"scene": "scene files through io::parse_scene, io::build_world and a few steps",
         "api": "sequences of World calls with any doubles and live, stale, forged and foreign handles"}
@@ -112,8 +115,13 @@ doc = {"program": "fuzz",
        "description": "libFuzzer targets with ASan and UBSan (scripts/fuzz.sh): reliability "
                       "evidence, not an SRS item. cov: the edges reached, ft: libFuzzer's "
                       "features; findings: new crash, timeout, leak or out-of-memory inputs.",
-       "provenance": {"commit": commit, "dirty": dirty, "build_id": None, "built": built,
-                      "generated": now},
+       "provenance": {"commit": commit, "dirty": dirty, "tree": tree_key("."), "build_id": None,
+                      "built": built, "generated": now,
+                      "build": {"name": "libFuzzer targets (Clang 14, ASan + UBSan)",
+                                "where": os.environ.get("FUZZ_BUILD", "build-fuzz"),
+                                "compiler": os.environ.get("FUZZ_CXX", "clang++-14"),
+                                "flags": "-O1 -g -fsanitize=fuzzer-no-link,address,undefined",
+                                "options": "CMAKE_BUILD_TYPE=Fuzz TAMIAS_FUZZ_TARGETS=ON"}},
        "checks": checks,
        "tables": [{"name": "libFuzzer runs",
                    "columns": ["target", "seconds", "executions", "exec/s", "cov", "ft",

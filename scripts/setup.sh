@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # Installs the Debian packages Tamias2D needs; silent and fast when all are present.
 set -euo pipefail
-pkgs=(build-essential clang clang-14 libclang-rt-14-dev cmake ninja-build pkg-config clang-format
-      libboost-dev libboost-test-dev nlohmann-json3-dev
-      libgsl-dev libeigen3-dev libchipmunk-dev libbox2d-dev libbenchmark-dev
-      graphviz gcovr doxygen python3-yaml python3-matplotlib python3-jsonschema)
+pkgs=()
+while read -r p; do
+    case "$p" in ''|'#'*) ;; *) pkgs+=("$p") ;; esac
+done < "$(dirname "$0")/debian-packages.txt"
 missing=()
 for p in "${pkgs[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -24,7 +24,7 @@ if __package__ in (None, ""):
     __package__ = "traceability"  # noqa: A001 - allow `python3 traceability/build_report.py`
 
 from traceability import SCHEMA_VERSION  # noqa: E402
-from traceability import analysis, evidence, graphs, render_html, render_md, srsdata, vvdata  # noqa: E402
+from traceability import analysis, builds, evidence, graphs, render_html, render_md, srsdata, vvdata  # noqa: E402
 
 
 def parse_args(argv):
@@ -101,12 +101,13 @@ def build(args, log=print):
 
     code_sites = evidence.scan_code_tags(source)
 
+    build_prov = vvdata.load_build_provenance(build_dir)
     run_manifest = None
     if not args.no_run:
         os.makedirs(results_dir, exist_ok=True)
         run_manifest = evidence.run_tests(build_dir, results_dir, timeout=args.timeout, jobs=args.jobs,
                                           log=(lambda m: None) if args.quiet else log,
-                                          junit_level=args.junit_level)
+                                          junit_level=args.junit_level, build=build_prov)
     tests, ctests, tinfo = evidence.collect_tests(source, results_dir, warnings)
     if run_manifest is None:
         run_manifest = tinfo.get("manifest")
@@ -114,15 +115,37 @@ def build(args, log=print):
     programs, cov = vvdata.load_data_dir(data_dir, warnings)
     source_info = git_info(source)
     source_commit = args.commit or source_info["git_commit"]
-    build_prov = vvdata.load_build_provenance(build_dir)
+    # The tree the report describes: the checkout's, unless --commit names a commit (the
+    # fixtures' results are of a made-up commit, with no tree to compare).
+    source_tree = None if args.commit else builds.tree_key(source)
     if build_prov is None:
         warnings.append(f"no {os.path.join(build_dir, 'provenance.json')}: the results' build ids "
                         "were not compared with the build's")
     if not source_commit:
         warnings.append("the checkout's commit is unknown: the results' commits were not compared")
+    # Verdicts are of the build they ran in: that build must be of this checkout.
+    build_problems = builds.judge_build(build_dir, source, build_prov, not args.no_run) \
+        if not args.commit else []
+    ran_build = (run_manifest or {}).get("build") or {}
+    if build_prov and ran_build.get("build_id") and ran_build["build_id"] != build_prov.get("build_id"):
+        build_problems.append(f"the test results were run from build {ran_build['build_id']}, the "
+                              f"build directory is build {build_prov.get('build_id')}: run them again")
     expected = [str(x) for x in config.get("expected_programs") or []]
-    missing = vvdata.judge_provenance(programs, expected, build_prov, source_commit)
+    missing = vvdata.judge_provenance(programs, expected, build_prov, source_commit, source_tree)
     tests += vvdata.checks_as_tests(programs, missing)
+    coverage = vvdata.coverage_summary(cov)
+    if coverage is not None and source_tree:
+        cp = coverage.get("provenance") or {}
+        if cp.get("tree") != source_tree:
+            build_problems.append(
+                "coverage (data/coverage.json) is " +
+                (f"of tree {str(cp.get('tree'))[:12]}, not the checkout's" if cp.get("tree")
+                 else "of no recorded tree (no provenance)") + ": measure it again")
+    for k, problem in enumerate(build_problems):
+        tests.append({"id": f"build:<up to date>{'#' + str(k + 1) if k else ''}",
+                      "name": "<up to date>", "origin": "verification", "binary": "build",
+                      "status": "error", "labels": [], "oracle": None, "file": None, "line": None,
+                      "details": problem, "samples": None, "enabled": True})
     optional = {str(k): str(v) for k, v in (config.get("optional_programs") or {}).items()}
     present = {p["program"] for p in programs}
     not_run = [{"program": k, "how": v} for k, v in optional.items() if k not in present]
@@ -196,12 +219,16 @@ def build(args, log=print):
         "checker": checker,
         "graphs": gr,
         "verification": programs,
-        "provenance": {"build": build_prov, "source_commit": source_commit,
+        "builds": builds.evidence_builds(build_dir, build_prov, programs +
+                                         ([{"program": "coverage", "provenance": coverage["provenance"]}]
+                                          if coverage and coverage.get("provenance") else [])),
+        "provenance": {"build": build_prov, "source_commit": source_commit, "source_tree": source_tree,
+                       "build_problems": build_problems,
                        "expected_programs": expected, "missing_programs": missing,
                        "optional_programs": list(optional), "not_run_programs": not_run,
                        "refused": [{"program": p["program"], "file": p["file"],
                                     "reason": p["refused"]} for p in programs if p.get("refused")]},
-        "coverage": vvdata.coverage_summary(cov),
+        "coverage": coverage,
         "run": run_manifest,
         "warnings": warnings,
     }

@@ -15,6 +15,7 @@ take the same path.
 """
 from __future__ import annotations
 
+import concurrent.futures
 import json
 import os
 import re
@@ -520,11 +521,13 @@ def _run(cmd, cwd, timeout, log=None, stderr_to=None):
     return rc, round(time.time() - t0, 3), out, err
 
 
-def run_tests(build_dir, results_dir, timeout=1800, jobs=1, log=print, junit_level="message"):
-    """Run everything once and write raw results into results_dir. Returns the manifest."""
+def run_tests(build_dir, results_dir, timeout=1800, jobs=1, log=print, junit_level="message",
+              build=None):
+    """Run everything once and write raw results into results_dir. Returns the manifest, which
+    records the build's provenance (build: <build>/provenance.json) the results are of."""
     os.makedirs(os.path.join(results_dir, "boost"), exist_ok=True)
     manifest = {"build_dir": os.path.abspath(build_dir), "started": time.strftime("%Y-%m-%dT%H:%M:%S"),
-                "commands": [], "binaries": {}, "ctest_junit": None, "errors": []}
+                "build": build, "commands": [], "binaries": {}, "ctest_junit": None, "errors": []}
     ctest_json = os.path.join(results_dir, "ctest.json")
     # Never let results of an earlier run pass for this one.
     stale = [ctest_json, os.path.join(results_dir, "ctest_junit.xml")]
@@ -546,30 +549,40 @@ def run_tests(build_dir, results_dir, timeout=1800, jobs=1, log=print, junit_lev
     with open(ctest_json, "w", encoding="utf-8") as fh:
         fh.write(out)
     ctests = parse_ctest_json(ctest_json)
-    for key, b in sorted(boost_binaries(ctests).items()):
+
+    def run_binary(key, b):
+        """List and run one Boost.Test binary; returns its manifest entry and commands."""
         dot = os.path.join(results_dir, "boost", key + ".dot")
         junit = os.path.join(results_dir, "boost", key + ".junit.xml")
         if os.path.exists(junit):
             os.remove(junit)
         if not os.path.exists(b["path"]):
             msg = f"{key}: test binary {b['path']} does not exist (not built?)"
-            manifest["errors"].append(msg)
-            manifest["binaries"][key] = {"path": b["path"], "cwd": b["cwd"], "missing": True}
             for f in (dot, junit):
                 if os.path.exists(f):
                     os.remove(f)
             log(f"[traceability] {msg}")
-            continue
+            return {"path": b["path"], "cwd": b["cwd"], "missing": True}, [], msg
         log(f"[traceability] {key}: listing and running")
         c1 = [b["path"], "--list_content=DOT"]
         rc1, d1, _, _ = _run(c1, b["cwd"], 300, stderr_to=dot)
         c2 = [b["path"], f"--logger=JUNIT,{junit_level},{os.path.abspath(junit)}", "--report_level=no"]
         rc2, d2, _, _ = _run(c2, b["cwd"], timeout, log=os.path.join(results_dir, "boost", key + ".log"))
-        manifest["binaries"][key] = {"path": b["path"], "cwd": b["cwd"], "list_exit": rc1,
-                                     "run_exit": rc2, "seconds": d2, "dot": f"boost/{key}.dot",
-                                     "junit": f"boost/{key}.junit.xml"}
-        manifest["commands"] += [{"cmd": c1, "exit": rc1, "seconds": d1},
-                                 {"cmd": c2, "exit": rc2, "seconds": d2}]
+        entry = {"path": b["path"], "cwd": b["cwd"], "list_exit": rc1, "run_exit": rc2,
+                 "seconds": d2, "dot": f"boost/{key}.dot", "junit": f"boost/{key}.junit.xml"}
+        return entry, [{"cmd": c1, "exit": rc1, "seconds": d1},
+                       {"cmd": c2, "exit": rc2, "seconds": d2}], None
+
+    # The binaries are independent processes: `jobs` of them at a time (the manifest keeps
+    # their sorted order whatever order they finish in).
+    binaries = sorted(boost_binaries(ctests).items())
+    with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, jobs)) as pool:
+        done = list(pool.map(lambda kb: run_binary(*kb), binaries))
+    for (key, _), (entry, commands, error) in zip(binaries, done):
+        manifest["binaries"][key] = entry
+        manifest["commands"] += commands
+        if error:
+            manifest["errors"].append(error)
     others = [t for t in ctests if t["boost_label"] is None]
     if others:
         cj = os.path.join(results_dir, "ctest_junit.xml")

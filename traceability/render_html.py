@@ -803,9 +803,16 @@ say how the figure is measured:<ul>{"".join(rows)}</ul></div>""")
                'data-driven cases are one test with their samples aggregated. Other CTest entries run through '
                '<code>ctest --output-junit</code>; their SRS items come from their LABELS.</li>')
         self.w('<li>Status of an item: ' + "; ".join(f"<b>{E(k)}</b> = {E(v)}" for k, v in STATUS_HELP.items()) + '.</li>')
-        self.w(f'<li>Gate: exit status 1 when any of {E(", ".join(r["gate"]["gated_kinds"]))} lacks a passing test or any test/check fails.</li>')
+        self.w(f'<li>Gate: exit status 1 when any of {E(", ".join(r["gate"]["gated_kinds"]))} lacks a passing test or any test/check fails; '
+               'a failed check of a "should" requirement alone is a missed goal, shown and not gating.</li>')
+        run = r.get("run") or {}
+        if run.get("started") and run.get("finished"):
+            self.w(f'<li>This report\'s test run: started {E(run["started"])}, finished '
+                   f'{E(run["finished"])} (the main job\'s earlier phases: program '
+                   '<code>main_job</code> in the V&amp;V evidence)</li>')
         self.w('</ul>')
-        cmds = (r.get("run") or {}).get("commands") or []
+        self.builds()
+        cmds = run.get("commands") or []
         if cmds:
             self.w('<details><summary>Commands run</summary><pre>' + E("\n".join(
                 f'[exit {c["exit"]}, {c["seconds"]} s] ' + " ".join(c["cmd"]) for c in cmds)) + '</pre></details>')
@@ -815,6 +822,41 @@ say how the figure is measured:<ul>{"".join(rows)}</ul></div>""")
         else:
             self.w('<p class="ok-note">None.</p>')
         self.w('</section>')
+
+    def builds(self):
+        """The builds whose results this report joins, each with what it was made of."""
+        bs = self.r.get("builds") or []
+        prov = self.r.get("provenance") or {}
+        self.w('<h3 id="builds">Builds joined</h3>')
+        tree = prov.get("source_tree")
+        self.w('<p class="small">The report describes commit <code>'
+               f'{E(str(prov.get("source_commit") or "unknown")[:12])}</code>'
+               + (f', tree <code>{E(tree[:12])}</code> (the commit and its uncommitted changes, '
+                  'hashed)' if tree else '') +
+               '. A build whose tree is another, or that <code>ninja -n</code> finds out of date, '
+               'is refused: its results fail the gate.</p>')
+        for p in prov.get("build_problems") or []:
+            self.w(f'<p class="small">{badge("error")} {E(p)}</p>')
+        if not bs:
+            self.w('<p class="small mute">No build recorded its provenance.</p>')
+            return
+        self.w('<table class="data small"><thead><tr><th>Build</th><th>Tree</th><th>Build id</th>'
+               '<th>Built</th><th>Compiler</th><th>Flags and options</th></tr></thead><tbody>')
+        for b in bs:
+            ok = tree is None or b.get("tree") == tree
+            self.w(f'<tr><td>{E(str(b.get("name")))}<br><code class="small">{E(str(b.get("where") or ""))}</code></td>'
+                   f'<td><code>{E(str(b.get("tree") or "")[:12])}</code>'
+                   f'{"" if ok else " " + badge("error")}</td>'
+                   f'<td><code>{E(str(b.get("build_id") or ""))}</code></td><td>{E(str(b.get("built") or ""))}</td>'
+                   f'<td>{E(str(b.get("compiler") or ""))}</td>'
+                   f'<td><code class="small">{E(str(b.get("flags") or ""))}</code> '
+                   f'<span class="small">{E(str(b.get("options") or ""))}</span></td></tr>')
+        self.w('</tbody></table>')
+        pk = (bs[0].get("packages") or {}) if bs else {}
+        if pk:
+            self.w('<details><summary>Debian packages of the build directory\'s build</summary>'
+                   '<p class="small">' + ", ".join(f"<code>{E(k)}</code> {E(str(v))}"
+                                                   for k, v in sorted(pk.items())) + '</p></details>')
 
     def render(self):
         self.w('<!DOCTYPE html><html lang="en"><head><meta charset="utf-8">'

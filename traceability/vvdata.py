@@ -89,13 +89,15 @@ def load_build_provenance(build_dir):
     return doc if isinstance(doc, dict) else None
 
 
-def judge_provenance(programs, expected, build_prov, source_commit):
+def judge_provenance(programs, expected, build_prov, source_commit, source_tree=None):
     """Refuses results that are not of this checkout and build; returns the expected programs
     that left no results. Sets p["refused"] (a reason) on each refused program.
 
     A program's results are refused when they carry no provenance, when their commit is not
-    the checkout's (source_commit, when known), or when their build id (null for a script) is
-    not the build directory's (build_prov, when known)."""
+    the checkout's (source_commit, when known), when their tree (commit and uncommitted
+    changes) is not the checkout's (source_tree, when both are known), or when their build id
+    (null for a script or a build of its own) is not the build directory's (build_prov, when
+    known)."""
     for p in programs:
         prov = p.get("provenance")
         if p.get("invalid") and not p["checks"]:
@@ -105,6 +107,9 @@ def judge_provenance(programs, expected, build_prov, source_commit):
         elif source_commit and prov["commit"] != source_commit:
             p["refused"] = (f"stale: results of commit {str(prov['commit'])[:12]}, the checkout is "
                             f"{source_commit[:12]}")
+        elif source_tree and prov.get("tree") and prov["tree"] != source_tree:
+            p["refused"] = (f"stale: results of tree {str(prov['tree'])[:12]} (uncommitted changes "
+                            f"since), the checkout is tree {source_tree[:12]}")
         elif build_prov and prov.get("build_id") is not None and \
                 prov["build_id"] != build_prov.get("build_id"):
             p["refused"] = (f"stale: results of build {prov['build_id']}, the build directory is "
@@ -225,4 +230,6 @@ def coverage_summary(cov):
     tot = {k: cov.get(k) for k in ("line_total", "line_covered", "line_percent", "function_total",
                                    "function_covered", "function_percent", "branch_total",
                                    "branch_covered", "branch_percent")}
-    return {"totals": tot, "files": files, "format": cov.get("gcovr/summary_format_version")}
+    prov = cov.get("provenance") if isinstance(cov.get("provenance"), dict) else None
+    return {"totals": tot, "files": files, "format": cov.get("gcovr/summary_format_version"),
+            "provenance": prov}

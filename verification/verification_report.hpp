@@ -26,11 +26,8 @@ inline nlohmann::json provenance() {
     char now[32];
     const std::time_t t = std::time(nullptr);
     std::strftime(now, sizeof now, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&t));
-    return {{"commit", b.commit},
-            {"dirty", b.dirty},
-            {"build_id", b.build_id},
-            {"built", b.built},
-            {"generated", now}};
+    return {{"commit", b.commit},     {"dirty", b.dirty}, {"tree", b.tree},
+            {"build_id", b.build_id}, {"built", b.built}, {"generated", now}};
 }
 
 /// A number for a details text: `prec` significant digits.

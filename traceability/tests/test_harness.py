@@ -214,7 +214,7 @@ class FixtureReport(unittest.TestCase):
             self.assertIn(needle, page)
         self.assertNotIn("<link ", page)  # self-contained: no external stylesheet
         self.assertTrue(os.path.exists(os.path.join(self.out, "traceability.md")))
-        self.assertEqual(self.report["schema_version"], "1.1")
+        self.assertEqual(self.report["schema_version"], "1.2")
         self.assertTrue(os.path.exists(os.path.join(self.out, "plots", "peer_compare__Error_vs_step_size.svg")))
         self.assertEqual(self.report["coverage"]["totals"]["line_percent"], 80.0)
         if HAVE_DOT:
@@ -437,6 +437,97 @@ class LiveRun(unittest.TestCase):
             self.assertTrue(os.path.exists(os.path.join(out, "raw", "runs.json")))
         finally:
             shutil.rmtree(tmp, ignore_errors=True)
+
+
+HAVE_BUILD_TOOLS = all(shutil.which(t) for t in ("cmake", "ninja", "git", "c++"))
+STAMP_SCRIPT = os.path.join(os.path.dirname(os.path.dirname(HERE)), "cmake", "TamiasProvenance.cmake")
+
+
+@unittest.skipUnless(HAVE_BUILD_TOOLS, "needs cmake, ninja, git and a C++ compiler")
+class BuildBinding(unittest.TestCase):
+    """The DD17 experiment: a sign flipped in a source after the build, not rebuilt, reported
+    from the existing results: the gate fails, naming the stale build and the changed file.
+    A one-file CMake project in a fresh git repository stands for the project's build (the
+    same stamp script, run as its last step)."""
+
+    def setUp(self):
+        self.tmp = tempfile.mkdtemp(prefix="trace-build-")
+        self.addCleanup(shutil.rmtree, self.tmp, True)
+        self.repo = os.path.join(self.tmp, "repo")
+        shutil.copytree(REPO, self.repo)
+        # The fixture's coverage names no build: measured for another tree, refused apart.
+        os.remove(os.path.join(self.repo, "data", "coverage.json"))
+        with open(os.path.join(self.repo, "damping.cpp"), "w", encoding="utf-8") as fh:
+            fh.write("double damping(double c, double v) { return -(c * v); }\n"
+                     "int main() { return damping(1.0, 1.0) < 0.0 ? 0 : 1; }\n")
+        with open(os.path.join(self.repo, "CMakeLists.txt"), "w", encoding="utf-8") as fh:
+            fh.write("cmake_minimum_required(VERSION 3.25)\nproject(mini CXX)\n"
+                     "add_executable(damping damping.cpp)\n"
+                     "add_custom_target(stamp ALL COMMAND ${CMAKE_COMMAND} "
+                     "-DSOURCE_DIR=${CMAKE_SOURCE_DIR} -DOUT_DIR=${CMAKE_BINARY_DIR} "
+                     "-DCOMPILER=c++ -DFLAGS=-O2 -DOPTIONS=none -DPACKAGES=cmake "
+                     f"-P {STAMP_SCRIPT} VERBATIM)\nadd_dependencies(stamp damping)\n")
+        git = ["git", "-C", self.repo, "-c", "user.name=t", "-c", "user.email=t@t"]
+        subprocess.run(git[:3] + ["init", "-q"], check=True)
+        subprocess.run(git + ["add", "-A"], check=True)
+        subprocess.run(git + ["commit", "-qm", "fixture"], check=True)
+        self.build = os.path.join(self.tmp, "build")
+        subprocess.run(["cmake", "-S", self.repo, "-B", self.build, "-G", "Ninja"], check=True,
+                       capture_output=True)
+        subprocess.run(["cmake", "--build", self.build], check=True, capture_output=True)
+
+    def report(self):
+        out = os.path.join(self.tmp, "reports")
+        code = build_report.main(["--source", self.repo, "--build", self.build, "--out", out,
+                                  "--results", os.path.join(self.repo, "results"),
+                                  "--data", os.path.join(self.repo, "data"), "--no-run",
+                                  "--no-checker", "--quiet", "--config", FIX_CONFIG])
+        with open(os.path.join(out, "traceability.json"), encoding="utf-8") as fh:
+            return code, json.load(fh)
+
+    def test_coverage_of_another_tree_is_refused(self):
+        with open(os.path.join(REPO, "data", "coverage.json"), encoding="utf-8") as fh:
+            cov = json.load(fh)
+        cov["provenance"] = {"commit": "x", "tree": "0" * 40}
+        with open(os.path.join(self.repo, "data", "coverage.json"), "w", encoding="utf-8") as fh:
+            json.dump(cov, fh)
+        _, rep = self.report()
+        self.assertTrue(any("coverage" in p and "000000000000" in p
+                            for p in rep["provenance"]["build_problems"]))
+
+    def test_a_build_of_the_checkout_is_accepted(self):
+        _, rep = self.report()
+        self.assertEqual(rep["provenance"]["build_problems"], [])
+        self.assertEqual(rep["builds"][0]["tree"], rep["provenance"]["source_tree"])
+
+    def test_a_flipped_sign_not_rebuilt_fails_the_gate(self):
+        path = os.path.join(self.repo, "damping.cpp")
+        with open(path, encoding="utf-8") as fh:
+            text = fh.read()
+        with open(path, "w", encoding="utf-8") as fh:
+            fh.write(text.replace("return -(c * v);", "return c * v;"))
+        code, rep = self.report()
+        self.assertEqual(code, 1)
+        problems = rep["provenance"]["build_problems"]
+        self.assertTrue(any("stale" in p and "damping.cpp" in p for p in problems), problems)
+        self.assertTrue(any("ninja -n" in p for p in problems), problems)
+        self.assertIn("build:<up to date>", rep["gate"]["failing_tests"])
+
+    def test_a_target_rebuilt_alone_and_the_source_restored_is_still_stale(self):
+        path = os.path.join(self.repo, "damping.cpp")
+        with open(path, encoding="utf-8") as fh:
+            text = fh.read()
+        with open(path, "w", encoding="utf-8") as fh:
+            fh.write(text.replace("return -(c * v);", "return c * v;"))
+        subprocess.run(["cmake", "--build", self.build, "--target", "damping"], check=True,
+                       capture_output=True)
+        with open(path, "w", encoding="utf-8") as fh:
+            fh.write(text)
+        _, rep = self.report()
+        problems = rep["provenance"]["build_problems"]
+        # The tree is the stamped one again; only the build system knows the object is not.
+        self.assertEqual(len(problems), 1, problems)
+        self.assertIn("ninja -n", problems[0])
 
 
 class Units(unittest.TestCase):

@@ -89,15 +89,19 @@ def figure(share):
 
 
 def provenance(repo):
-    """The commit this run read (a script: no build, so no build id) and the time now (UTC)."""
+    """The commit and tree this run read (a script: no build, so no build id) and the time
+    now (UTC)."""
     import datetime
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+    from traceability.builds import tree_key
     try:
         commit = git(repo, "rev-parse", "HEAD").strip()
         dirty = bool(git(repo, "status", "--porcelain", "--untracked-files=no").strip())
     except (subprocess.CalledProcessError, FileNotFoundError):
         commit, dirty = "unknown", False
     now = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ")
-    return {"commit": commit, "dirty": dirty, "build_id": None, "generated": now}
+    return {"commit": commit, "dirty": dirty, "tree": tree_key(repo), "build_id": None,
+            "generated": now}
 
 
 def main(argv):
