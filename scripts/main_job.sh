@@ -1,16 +1,31 @@
 #!/usr/bin/env bash
 # The main job: build, run the V&V suite and write the evidence into reports/.
 #   scripts/main_job.sh [--quick] [--full-bench]
-#     --quick       skips the coverage build
+#     --quick       skips coverage and mutation (their instrumented scratch build)
 #     --full-bench  runs the peer benchmark at full length (about 20 min on 2 cores) instead of
-#                   its --quick form, which keeps the main job near 10 minutes
-#   TAMIAS_MUTATION_MINUTES=M  judges mutants for M minutes (default 8; docs/verification.md)
+#                   its --quick form
+#   TAMIAS_MUTATION_MINUTES=M  judges mutants for M minutes (default 4; docs/verification.md)
 #   TAMIAS_MUTATION=all        judges every mutant instead (hours); TAMIAS_MUTATION=0 skips it
 #   TAMIAS_MUTATION_SEED=S     picks the sample (default 1)
+# It prints each phase's time at the end and writes them to reports/data/main_job.json, which the
+# report shows; the whole job is meant to take at most 20 minutes on 2 cores.
 set -uo pipefail
 cd "$(dirname "$0")/.."
 t0=$(date +%s)
-phase() { printf '\n== [%4ds] %s\n' "$(( $(date +%s) - t0 ))" "$*"; }
+phase_names=(); phase_starts=()
+phase() {
+    phase_names+=("$*"); phase_starts+=("$(date +%s)")
+    printf '\n== [%4ds] %s\n' "$(( $(date +%s) - t0 ))" "$*"
+}
+# "name<TAB>seconds" per phase so far, the last one ended now.
+phase_times() {
+    local now i end
+    now=$(date +%s)
+    for i in "${!phase_names[@]}"; do
+        end=${phase_starts[$((i + 1))]:-$now}
+        printf '%s\t%s\n' "${phase_names[$i]}" "$(( end - ${phase_starts[$i]} ))"
+    done
+}
 quick=0; full_bench=0; coverage_failed=0; api_failed=0
 for arg in "$@"; do
     case "$arg" in
@@ -58,63 +73,41 @@ phase "fuzzing: the libFuzzer targets, 60 s each (reports/data/fuzz.json)"
 # check of the report; its input is in build-fuzz/findings/.
 ./scripts/fuzz.sh --seconds 60 --report reports/data | sed "s/^/   /"
 
-phase "mutation testing (verification/mutation/mutate.py)"
-# A seeded sample judged for TAMIAS_MUTATION_MINUTES (default 8) after the scratch build (in
-# /tmp, outside the checkout; minutes when new, seconds when it outlives the last run);
-# TAMIAS_MUTATION=all judges every mutant (hours), TAMIAS_MUTATION=0 (or minutes 0) skips it
-# (the report then says "not run").
+phase "coverage and mutation: one instrumented scratch build (verification/mutation/mutate.py)"
+# One build outside the checkout (/tmp; minutes when new, seconds when it outlives the last run):
+# -O1 with the standard library's assertions and gcov's counters. Every test runs once there on
+# the unmutated sources (coverage: a test failing only there fails the job, it would lower the
+# coverage silently), then a seeded sample of mutants is judged for TAMIAS_MUTATION_MINUTES
+# (default 4). TAMIAS_MUTATION=all judges every mutant (hours), TAMIAS_MUTATION=0 (or minutes 0)
+# none (the report then says "not run"); --quick skips both.
 mutation=${TAMIAS_MUTATION:-sample}
-if [ "$mutation" = 0 ] || { [ "$mutation" != all ] && [ "${TAMIAS_MUTATION_MINUTES:-8}" = 0 ]; }; then
-    echo "   skipped (TAMIAS_MUTATION=0 or TAMIAS_MUTATION_MINUTES=0)"
+minutes=${TAMIAS_MUTATION_MINUTES:-4}
+[ "$mutation" = 0 ] && minutes=0
+if [ $quick -eq 1 ]; then
+    echo "   skipped (--quick)"
 else
     if [ "$mutation" = all ]; then
         margs=(--all)
     else
-        margs=(--sample 1000 --seed "${TAMIAS_MUTATION_SEED:-1}"
-               --minutes "${TAMIAS_MUTATION_MINUTES:-8}")
+        margs=(--sample 1000 --seed "${TAMIAS_MUTATION_SEED:-1}" --minutes "$minutes")
     fi
     p0=$(date +%s)
     /usr/bin/python3 verification/mutation/mutate.py reports/data "${margs[@]}" \
-        >build/mutation.log 2>&1
+        --coverage reports/data/coverage.json reports/coverage.html >build/mutation.log 2>&1
     rc=$?
+    grep -E '^coverage:' build/mutation.log | sed "s/^/   /"
     tail -n 1 build/mutation.log | sed "s/^/   /"
-    if [ ! -f reports/data/mutation.json ]; then
+    if [ $rc -eq 3 ]; then
+        echo "   a test FAILED in the instrumented build (build/mutation.log)"; coverage_failed=1
+    elif [ $rc -ne 0 ]; then
+        echo "   mutate.py exited $rc (build/mutation.log)"; coverage_failed=1
+    fi
+    if [ "$minutes" != 0 ] && [ ! -f reports/data/mutation.json ]; then
         # Asked for and not done (the scratch did not build): an error, not "not run".
         printf '{"program": "mutation", "description": "wrote no results (build/mutation.log)", "checks": [{"name": "mutation wrote its results", "labels": [], "passed": false, "oracle": "mutate.py writes reports/data/mutation.json", "details": "exit status %s, no JSON written"}], "tables": [], "series": []}\n' \
             "$rc" > reports/data/mutation.missing.json
     fi
-    echo "   mutation: $(( $(date +%s) - p0 )) s (log: build/mutation.log)"
-fi
-
-if [ $quick -eq 0 ]; then
-    phase "coverage build and run (gcovr)"
-    cmake -S . -B build-coverage -G Ninja -DCMAKE_BUILD_TYPE=Debug -DTAMIAS_COVERAGE=ON \
-          -DTAMIAS_BUILD_VERIFICATION=OFF >/dev/null &&
-        cmake --build build-coverage -j2 >/dev/null || echo "   coverage build failed"
-    # Each Boost.Test executable once, all its cases (CTest runs one entry per SRS label, so a
-    # case with four labels would run four times), two at a time; then the other CTest entries
-    # (CLI, examples, scripts). The report's run is the verdict, but a test that fails only in
-    # this unoptimised build is a bug too (and would silently lower the coverage): it fails the
-    # job.
-    find build-coverage/tests -name '*_tests' -type f -perm -u+x | sort |
-        xargs -P 2 -I{} sh -c '"{}" --color_output=no >/dev/null 2>&1 || echo "{}" >&2' \
-            2>build-coverage/failures.txt || true
-    ctest --test-dir build-coverage -j2 -LE 'compile_fail|consumer' -E '@' >/dev/null ||
-        echo "ctest (coverage build)" >>build-coverage/failures.txt
-    if [ -s build-coverage/failures.txt ]; then
-        echo "   FAILED in the coverage build (-O0):"; sed "s/^/     /" build-coverage/failures.txt
-        coverage_failed=1
-    fi
-    rm -f build-coverage/failures.txt
-    # gcov 12 can print a function summary with a negative percentage ("returned -1857409%") for
-    # a function left by an exception; gcovr 5.2 stops at such a line unless told to skip it
-    # (it then skips that summary line only; line and branch counts are unaffected).
-    gcovr -r . --filter 'src/' --filter 'include/' --gcov-ignore-parse-errors \
-          --json-summary reports/data/coverage.json \
-          --html-details reports/coverage.html build-coverage >/dev/null 2>&1 ||
-        echo "   gcovr failed"
-    # gcov writes its .gcov files into the working directory; gcovr leaves some of them there.
-    find . -maxdepth 1 -name '*.gcov' -delete
+    echo "   coverage and mutation: $(( $(date +%s) - p0 )) s (log: build/mutation.log)"
 fi
 
 phase "API reference (Doxygen) into reports/api"
@@ -147,10 +140,16 @@ done
     --index reports/players/index.json "${cases[@]}" | sed "s/^/   /"
 echo "   players: $(du -sh reports/players | cut -f1) in $(( $(date +%s) - p0 )) s"
 
+# The phases so far, for the report (its own phase is timed by the harness's run manifest).
+phase_times | /usr/bin/python3 scripts/phase_times.py reports/data/main_job.json
+
 phase "tests and traceability report"
-/usr/bin/python3 traceability/build_report.py --source . --build build --out reports
+/usr/bin/python3 traceability/build_report.py --source . --build build --out reports --jobs 2
 status=$?
 [ $coverage_failed -eq 0 ] || status=1
 [ $api_failed -eq 0 ] || status=1
 phase "done (exit $status): open reports/index.html"
+echo "   phase times (s):"
+phase_times | sed '$d' | awk -F'\t' '{ printf "   %6d  %s\n", $2, $1 }'
+echo "   $(( $(date +%s) - t0 )) s in all"
 exit $status

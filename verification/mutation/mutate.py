@@ -18,6 +18,11 @@ judged equivalent).
 
     /usr/bin/python3 verification/mutation/mutate.py OUT_DIR [--sample N] [--seed S]
         [--minutes M] [--all] [--ids I,J,...] [--scratch DIR] [--list]
+        [--coverage JSON HTML]
+
+With --coverage the scratch build is instrumented with gcov and, before any mutant, every test
+runs once on the unmutated sources: gcovr's summary and pages of src/ and include/ are the
+report's coverage (one build for both analyses). Exit status 3 when a test fails there.
 
 By default a seeded sample of N = 20 mutants judged within M = 30 minutes (after the scratch
 build); --all takes every mutant (hours on two cores). Writes OUT_DIR/mutation.json in the
@@ -260,8 +265,9 @@ def sync_tree(root, dest):
         shutil.copymode(s, d)
 
 
-def prepare_scratch(root, scratch):
-    """A copy of the sources (no .git, builds or reports) and a built Release build.
+def prepare_scratch(root, scratch, coverage=False):
+    """A copy of the sources (no .git, builds or reports) and a built Release build (with
+    coverage: instrumented by gcov, the command and examples built too, every target built).
 
     The library is built shared and the test executables do not relink when only it changed
     (LINK_DEPENDS_NO_SHARED): a mutant of a .cpp then recompiles one object and relinks one
@@ -274,10 +280,14 @@ def prepare_scratch(root, scratch):
     # -O1: mutants compile faster; the tests judge behaviour, not speed. _GLIBCXX_ASSERTIONS:
     # an index past an array's end (std::vector, LargeArray) stops the test, so a loop bound
     # turned by one is noticed even where the stray element is never used.
+    # With coverage the same build is instrumented (the counters change no arithmetic) and also
+    # holds the command, whose tests reach the scene library: one build serves both analyses.
     rc, out = run(["cmake", "-S", src, "-B", build, "-G", "Ninja", "-DCMAKE_BUILD_TYPE=Release",
-                   "-DCMAKE_CXX_FLAGS_RELEASE=-O1 -DNDEBUG -D_GLIBCXX_ASSERTIONS", "-DBUILD_SHARED_LIBS=ON",
+                   f"-DCMAKE_CXX_FLAGS_RELEASE={SCRATCH_FLAGS}", "-DBUILD_SHARED_LIBS=ON",
                    "-DCMAKE_LINK_DEPENDS_NO_SHARED=ON", "-DTAMIAS_BUILD_TESTS=ON",
-                   "-DTAMIAS_BUILD_VERIFICATION=OFF", "-DTAMIAS_BUILD_APPS=OFF",
+                   "-DTAMIAS_BUILD_VERIFICATION=OFF",
+                   f"-DTAMIAS_BUILD_APPS={'ON' if coverage else 'OFF'}",
+                   f"-DTAMIAS_COVERAGE={'ON' if coverage else 'OFF'}",
                    "-DTAMIAS_INSTALL=OFF"])
     if rc != 0:
         raise SystemExit("scratch configure failed:\n" + out[-3000:])
@@ -288,10 +298,75 @@ def prepare_scratch(root, scratch):
         raise SystemExit("ctest cannot list the scratch build's tests:\n" + out[-3000:])
     catalogue = json.loads(out).get("tests", [])
     targets = sorted({t["name"].split("@", 1)[0] for t in catalogue if "@" in t["name"]})
+    if coverage:
+        targets = ["all"]
     rc, out = run(["nice", "-n", "5", "cmake", "--build", build, "-j2", "--target", *targets])
     if rc != 0:
         raise SystemExit("scratch build of the unmutated sources failed:\n" + out[-3000:])
     return src, build, catalogue, object_digests(build)
+
+
+def measure_coverage(src, build, catalogue, out_json, out_html, provenance=None):
+    """Runs every test of the unmutated scratch build once and writes gcovr's summary
+    (out_json) and pages (out_html) of src/ and include/. Each Boost.Test executable runs once
+    with all its cases (CTest has one entry per SRS label, so a case with four labels would run
+    four times), two at a time; then the other CTest entries (the command, examples, scripts)
+    but the compile-fail checks and the consumer builds. Returns the tests that failed: a test
+    that fails only in this build is a finding too (and would lower the coverage silently)."""
+    for dirpath, _, files in os.walk(build):
+        for f in files:
+            if f.endswith(".gcda"):
+                os.remove(os.path.join(dirpath, f))
+    binaries = {}
+    for t in catalogue:
+        if "@" in t["name"] and t.get("command"):
+            props = {p["name"]: p["value"] for p in t.get("properties", [])}
+            binaries[t["command"][0]] = props.get("WORKING_DIRECTORY") or build
+    failed = []
+
+    def one(item):
+        path, cwd = item
+        rc, _ = run([path, "--color_output=no"], cwd=cwd, timeout=1800)
+        return path if rc != 0 else None
+
+    import concurrent.futures
+    with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
+        failed += [p for p in pool.map(one, sorted(binaries.items())) if p]
+    rc, out = run(["ctest", "--test-dir", build, "-j2", "-LE", "compile_fail|consumer", "-E", "@"],
+                  timeout=3600)
+    if rc != 0:
+        failed += [f"ctest: {n}" for n in failed_entries(out)] or ["ctest (other entries)"]
+    # gcov 12 can print a function summary with a negative percentage for a function left by
+    # an exception; gcovr 5.2 stops at such a line unless told to skip it (it then skips that
+    # summary line only; line and branch counts are unaffected).
+    os.makedirs(os.path.dirname(os.path.abspath(out_json)), exist_ok=True)
+    os.makedirs(os.path.dirname(os.path.abspath(out_html)), exist_ok=True)
+    rc, out = run(["gcovr", "-r", src, "--filter", os.path.join(src, "src") + "/",
+                   "--filter", os.path.join(src, "include") + "/", "--gcov-ignore-parse-errors",
+                   "--json-summary", os.path.abspath(out_json), "--html-details",
+                   os.path.abspath(out_html), build], cwd=build)
+    if rc != 0:
+        failed.append("gcovr: " + out[-300:])
+    elif provenance:
+        # gcovr's summary, stamped with the build it measured (the report refuses another tree's).
+        with open(out_json, encoding="utf-8") as fh:
+            doc = json.load(fh)
+        doc["provenance"] = provenance
+        with open(out_json, "w", encoding="utf-8") as fh:
+            json.dump(doc, fh, indent=1)
+    return failed
+
+
+def scratch_build(scratch, coverage):
+    """What the scratch build is, for the provenance of its results."""
+    rc, out = run(["c++", "--version"])
+    return {"name": "mutation" + (" and coverage" if coverage else "") + " scratch build",
+            "where": os.path.join(scratch, "build"),
+            "compiler": out.splitlines()[0] if rc == 0 and out else "c++",
+            "flags": SCRATCH_FLAGS + (" --coverage" if coverage else ""),
+            "options": "CMAKE_BUILD_TYPE=Release BUILD_SHARED_LIBS=ON TAMIAS_BUILD_TESTS=ON "
+                       f"TAMIAS_BUILD_APPS={'ON' if coverage else 'OFF'} "
+                       f"TAMIAS_COVERAGE={'ON' if coverage else 'OFF'}"}
 
 
 def object_digests(build, since_ns=None):
@@ -443,6 +518,17 @@ def commit_of(root):
     return (out.strip() if rc == 0 else "unknown"), bool(st.strip()) if rc2 == 0 else False
 
 
+def tree_of(root):
+    """The tree key of traceability/builds.py: the commit and its uncommitted changes."""
+    sys.path.insert(0, ROOT)
+    from traceability.builds import tree_key
+    return tree_key(root)
+
+
+# The scratch build's flags (prepare_scratch), for the report's list of builds.
+SCRATCH_FLAGS = "-O1 -DNDEBUG -D_GLIBCXX_ASSERTIONS"
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("out_dir")
@@ -456,6 +542,9 @@ def main(argv=None):
     ap.add_argument("--list", action="store_true", help="print the mutants and stop")
     ap.add_argument("--survivors", default=SURVIVORS, help="the judged survivors (JSON)")
     ap.add_argument("--ids", help="judge these mutants (ids of --list, comma-separated) only")
+    ap.add_argument("--coverage", nargs=2, metavar=("JSON", "HTML"),
+                    help="instrument the scratch build, run every test once on the unmutated "
+                         "sources and write gcovr's summary and pages before the mutants")
     a = ap.parse_args(argv)
 
     muts = all_mutants(a.root)
@@ -479,10 +568,25 @@ def main(argv=None):
     chosen = [m for k in range(0, len(chosen), WINDOW)
               for m in sorted(chosen[k:k + WINDOW], key=lambda m: (m["file"], m["line"], m["id"]))]
     commit, dirty = commit_of(a.root)
+    tree = tree_of(a.root)
     started = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ")
     t_prep = time.monotonic()
-    src, build, catalogue, objects = prepare_scratch(a.root, a.scratch)
+    src, build, catalogue, objects = prepare_scratch(a.root, a.scratch, bool(a.coverage))
     prep_secs = time.monotonic() - t_prep
+    coverage_failed = []
+    if a.coverage:
+        t_cov = time.monotonic()
+        now = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ")
+        coverage_failed = measure_coverage(
+            src, build, catalogue, *a.coverage,
+            provenance={"commit": commit, "dirty": dirty, "tree": tree, "build_id": None,
+                        "built": started, "generated": now,
+                        "build": scratch_build(a.scratch, True)})
+        print(f"coverage: every test once in {time.monotonic() - t_cov:.0f} s"
+              + (f"; FAILED: {', '.join(coverage_failed)}" if coverage_failed else ""),
+              flush=True)
+        if not a.all and not a.ids and a.minutes <= 0:
+            return 3 if coverage_failed else 0
     # The box is for judging mutants; the scratch build before it is reported apart (minutes
     # when the scratch is new, seconds when it outlives a run).
     deadline = None if a.all else time.monotonic() + 60.0 * a.minutes
@@ -548,8 +652,9 @@ def main(argv=None):
                        "file that reaches no tag: those of the files that include it). Score: "
                        "killed / (killed + survivors not judged equivalent in "
                        "verification/mutation/survivors.json). This run: " + details + ".",
-        "provenance": {"commit": commit, "dirty": dirty, "build_id": None, "built": started,
-                       "generated": finished},
+        "provenance": {"commit": commit, "dirty": dirty, "tree": tree, "build_id": None,
+                       "built": started, "generated": finished,
+                       "build": scratch_build(a.scratch, bool(a.coverage))},
         "checks": [{"name": "at least 90 % of the non-equivalent mutants killed",
                     "labels": [], "passed": bool(counted) and score >= 0.9 - 1e-12,
                     "target": ">= 90 % killed",
@@ -579,7 +684,7 @@ def main(argv=None):
     with open(os.path.join(a.out_dir, "mutation.json"), "w", encoding="utf-8") as fh:
         json.dump(doc, fh, indent=1)
     print("mutation: " + details)
-    return 0
+    return 3 if coverage_failed else 0
 
 
 if __name__ == "__main__":
