@@ -16,7 +16,8 @@ STATUSES = ["verified", "goal met", "failing", "goal missed", "untested", "assum
 GOAL_OBLIGATION = "should"
 # Statuses an item without labelled tests may be given by config.yaml's `without_tests`, each
 # with its reason: what the item is, instead of "untested" where no test could verify it.
-DECLARED_STATUSES = ("assumed", "not testable")
+# "untested" with a reason: a test exists in principle (a protocol) but has not been run.
+DECLARED_STATUSES = ("assumed", "not testable", "untested")
 
 # The kinds of oracle a test's evidence rests on, recognised in its oracle statement (first
 # match of each kind; a test may rest on several). Order is the display order.

@@ -1,7 +1,7 @@
 """Collect evidence: code tags, test inventories and results, oracles.
 
 Inputs handled here:
-  * `\\srs{LABEL}` comment tags in src/, apps/, verification/           -> code sites
+  * `\\srs{LABEL}` comment tags in src/, include/, apps/, verification/ -> code sites
   * `ctest --show-only=json-v1`                                          -> CTest inventory
   * Boost.Test `--list_content=DOT` (stderr) per binary                  -> cases + labels
   * Boost.Test `--logger=JUNIT,all,<xml>` per binary                     -> per-case status
@@ -23,7 +23,8 @@ import subprocess
 import time
 import xml.etree.ElementTree as ET
 
-CODE_DIRS = ["src", "apps", "verification"]
+# include/ is the library's public API: its \\srs tags are the library's too.
+CODE_DIRS = ["src", "include", "apps", "verification"]
 CMAKE_DIRS = ["cmake", "src", "apps", "tests", "examples", "verification"]
 CODE_EXTS = (".hpp", ".h", ".hh", ".hxx", ".cpp", ".cc", ".cxx", ".c", ".ipp", ".inl",
              ".py", ".cmake", ".txt", ".sh")
@@ -45,7 +46,8 @@ def _walk(root, exts):
 
 def area_of(relpath):
     top = relpath.split("/", 1)[0]
-    return {"src": "library", "apps": "application", "verification": "verification"}.get(top, top)
+    return {"src": "library", "include": "library", "apps": "application",
+            "verification": "verification"}.get(top, top)
 
 
 # --------------------------------------------------------------------------- code tags

@@ -795,7 +795,7 @@ say how the figure is measured:<ul>{"".join(rows)}</ul></div>""")
         i = r["inputs"]
         self.w('<section id="method"><h2>10. Method, inputs and warnings</h2><ul class="compact small">')
         self.w(f'<li>SRS: <code>{E(i["srs_dir"])}</code> ({E(", ".join(i["srs_files"]) or "no files")})</li>')
-        self.w('<li>Code sites: comments containing <code>\\srs{LABEL}</code> in src/, apps/, verification/</li>')
+        self.w('<li>Code sites: comments containing <code>\\srs{LABEL}</code> in src/, include/, apps/, verification/</li>')
         self.w(f'<li>Build directory: <code>{E(i["build_dir"])}</code>; raw results: <code>{E(i["results_dir"])}</code>; '
                f'verification data: <code>{E(i["data_dir"])}</code></li>')
         self.w('<li>Boost.Test: each binary is listed once with <code>--list_content=DOT</code> (test cases, '

@@ -554,9 +554,14 @@ class Units(unittest.TestCase):
             {"without_tests": {"A1": {"status": "assumed", "reason": "r"},
                                "A9": {"status": "assumed", "reason": "r"},
                                "UC1": {"status": "untested", "reason": "r"},
-                               "UC2": {"status": "not testable"}}}, {"A1", "UC1", "UC2"}, warnings)
-        self.assertEqual(got, {"A1": {"status": "assumed", "reason": "r"}})
+                               "UC3": {"status": "verified", "reason": "r"},
+                               "UC2": {"status": "not testable"}}}, {"A1", "UC1", "UC2", "UC3"},
+            warnings)
+        # "untested" may carry its reason (a test not yet run); a status no test gave may not.
+        self.assertEqual(got, {"A1": {"status": "assumed", "reason": "r"},
+                               "UC1": {"status": "untested", "reason": "r"}})
         self.assertEqual(len(warnings), 3)
+        self.assertEqual(analysis.item_status([], [], "NFR", "untested"), "untested")
 
     def test_labelled_test_without_oracle_is_weak_evidence(self):
         # Oracle: the rule stated in docs/traceability.md: an SRS-labelled test that states no
