@@ -6,6 +6,7 @@ import re
 
 import yaml
 
+from . import links as linkgrades
 from .srsdata import KIND_NAMES, KIND_ORDER, natural_key
 
 STATUSES = ["verified", "goal met", "failing", "goal missed", "untested", "assumed",
@@ -124,6 +125,7 @@ def analyse(srs, code_sites, tests, config, warnings=None):
         for x in t["srs_labels"]:
             tests_by.setdefault(x, []).append(t)
 
+    link_grades = linkgrades.grade_all(srs.items, tests, peer_reference)
     items = []
     for lab in srs.order:
         it = srs.items[lab]
@@ -144,15 +146,19 @@ def analyse(srs, code_sites, tests, config, warnings=None):
                          f'their results decide.')
         kinds = sorted({k for t in its_tests if t["status"] == "passed" for k in t["oracle_kinds"]},
                        key=_kind_order)
-        weak_kinds = WEAK_ORACLE_KINDS - ({"peer"} if lab in peer_reference else set())
-        weak = status in ("verified", "goal met") and all(k in weak_kinds for k in kinds)
+        # Evidence is weak when no passing link is strong (links.py grades each link).
+        grades = [link_grades[(lab, t["id"])] for t in its_tests if (lab, t["id"]) in link_grades]
+        strong = [g for g in grades if g["grade"] == "strong" and
+                  next(t for t in its_tests if t["id"] == g["test"])["status"] in
+                  ("passed", "goal-missed")]
+        weak = status in ("verified", "goal met", "goal missed") and not strong
         if lab in peer_reference and "peer" in kinds:
             notes.append("A peer's figure is this item's own reference, not weak evidence: " +
                          peer_reference[lab])
         if weak:
-            notes.append("Weak evidence: every passing test rests on " + ", ".join(kinds) +
-                         " only (no closed form, reference solution, conservation law or "
-                         "property).")
+            notes.append("Weak evidence: no passing link is strong (an independent oracle on "
+                         "the item's implementation at a level that can show it right; the "
+                         "links' grades say why each is weak).")
         # A trace link must say why it verifies the item: a labelled test that names no oracle
         # is weak evidence whatever the others show.
         unstated = [t["id"] for t in its_tests if not t.get("oracle")]
@@ -176,6 +182,9 @@ def analyse(srs, code_sites, tests, config, warnings=None):
             "obligation": it.get("obligation"),
             "status_reason": decl["reason"] if decl and status == decl["status"] else None,
             "oracle_kinds": kinds, "weak_evidence": weak, "tests_without_oracle": unstated,
+            "links": {g["test"]: {k: g[k] for k in ("grade", "reasons", "level",
+                                                     "tolerance_stated")} for g in grades},
+            "strong_links": len(strong), "weak_links": sum(g["grade"] == "weak" for g in grades),
             "code_sites": sites, "tests": [t["id"] for t in its_tests],
             "tests_passed": sum(t["status"] == "passed" for t in its_tests),
             "tests_failing": sum(t["status"] in FAILING for t in its_tests),
@@ -275,7 +284,12 @@ def analyse(srs, code_sites, tests, config, warnings=None):
                                   if t["status"] in ("passed", "goal-missed")]}
                       for i in items if i["label"] in goals],
             "goals_missed": [t["id"] for t in tests if t["status"] == "goal-missed"]}
+    all_links = sorted(link_grades.values(), key=lambda g: (natural_key(g["item"]), g["test"]))
+    link_summary = {"total": len(all_links),
+                    "strong": sum(g["grade"] == "strong" for g in all_links),
+                    "weak": sum(g["grade"] == "weak" for g in all_links)}
     return {"items": items, "by_kind": by_kind, "by_status": by_status, "gaps": gaps,
+            "links": all_links, "link_summary": link_summary,
             "orphans": orphans, "category_labels": category_labels, "test_totals": test_totals,
             "missing_oracle": missing_oracle, "missing_oracle_srs": missing_oracle_srs,
             "gate": gate}

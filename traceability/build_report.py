@@ -24,7 +24,7 @@ if __package__ in (None, ""):
     __package__ = "traceability"  # noqa: A001 - allow `python3 traceability/build_report.py`
 
 from traceability import SCHEMA_VERSION  # noqa: E402
-from traceability import analysis, builds, evidence, graphs, render_html, render_md, srsdata, vvdata  # noqa: E402
+from traceability import analysis, builds, evidence, graphs, links, render_html, render_md, srsdata, vvdata  # noqa: E402
 
 
 def parse_args(argv):
@@ -50,6 +50,10 @@ def parse_args(argv):
     p.add_argument("--commit", default=None,
                    help="commit the verification results must be of (default: the source's git HEAD)")
     p.add_argument("--date", default=None, help="timestamp to print (default: now, or SOURCE_DATE_EPOCH)")
+    p.add_argument("--link-sample", type=int, default=30,
+                   help="trace links drawn for review (default 30)")
+    p.add_argument("--link-seed", default=None,
+                   help="seed of the drawn links (default: the commit's first 8 hex digits)")
     p.add_argument("--quiet", action="store_true")
     return p.parse_args(argv)
 
@@ -169,6 +173,8 @@ def build(args, log=print):
         for c in p["checks"]:
             if f"{p['program']}:{c.get('name')}" in goal_missed:
                 c["status"] = "goal-missed"
+    # A fresh sample per commit, the same for every report of that commit.
+    link_seed = args.link_seed or (source_commit or "unknown")[:8]
     matrices = analysis.build_matrices(srs)
     seed_cmp = analysis.compare_seed(srs, matrices, analysis.load_seed_tables(args.seed_tables))
     status_of = {i["label"]: i["status"] for i in res["items"]}
@@ -205,6 +211,10 @@ def build(args, log=print):
         "tests": tests,
         "code_sites": code_sites,
         "gaps": res["gaps"],
+        "links": res["links"],
+        "link_summary": res["link_summary"],
+        "link_sample": {"seed": link_seed, "size": args.link_sample,
+                        "links": links.sample(res["links"], args.link_sample, link_seed)},
         "orphans": res["orphans"],
         "category_labels": res["category_labels"],
         "missing_oracle": missing_oracle,

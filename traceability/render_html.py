@@ -326,8 +326,10 @@ say how the figure is measured:<ul>{"".join(rows)}</ul></div>""")
                f'<a href="#refby">Ref.By disagreements</a> between the seed and the data: {c["refby_disagreements"]}</li>'
                f'<li><a href="#missing-oracle">Tests without an oracle statement</a>: {len(r["missing_oracle"])} '
                f'({len(r.get("missing_oracle_srs", []))} of them SRS-labelled: weak evidence for their items); '
-               f'<a href="#gaps">items whose only evidence is weak</a> (peer, regression or unplaced oracles): '
-               f'{len(r["gaps"]["weak_evidence"])}</li>'
+               f'<a href="#gaps">items whose only evidence is weak</a> (no strong passing link): '
+               f'{len(r["gaps"]["weak_evidence"])}; <a href="#links">trace links</a>: '
+               f'{(r.get("link_summary") or {}).get("strong", 0)} strong, '
+               f'{(r.get("link_summary") or {}).get("weak", 0)} weak</li>'
                f'<li><a href="#warnings">Harness warnings</a>: {c["warnings"]}</li></ul>')
         self.w('</section>')
 
@@ -412,18 +414,60 @@ say how the figure is measured:<ul>{"".join(rows)}</ul></div>""")
                    '}</code> tag in src/, apps/ or verification/</span></dd>')
         self.w('</dl>')
         if it["tests"]:
-            self.w('<table class="data"><thead><tr><th>Test / check</th><th>Status</th><th>Oracle kind</th>'
-                   '<th>Oracle</th></tr></thead><tbody>')
+            self.w('<table class="data"><thead><tr><th>Test / check</th><th>Status</th><th>Link</th>'
+                   '<th>Oracle kind</th><th>Oracle</th></tr></thead><tbody>')
             for tid in it["tests"]:
                 t = self.tests[tid]
                 oracle = E(t["oracle"]) if t.get("oracle") else '<span class="mute">no oracle stated</span>'
                 extra = f'<div class="small mute">{E(t["samples"])}</div>' if t.get("samples") else ""
                 self.w(f'<tr><td>{self.tlink(tid)}{extra}</td><td>{badge(t["status"])}</td>'
+                       f'<td class="small">{self._link_grade((it.get("links") or {}).get(tid))}</td>'
                        f'<td class="small">{E(", ".join(t.get("oracle_kinds") or []))}</td><td>{oracle}</td></tr>')
             self.w('</tbody></table>')
         else:
             self.w('<p class="small mute">No test or verification check carries this label.</p>')
         self.w('</div>')
+
+    def _link_grade(self, g):
+        if not g:
+            return ""
+        cls = "st-ok" if g["grade"] == "strong" else "st-warn"
+        why = "; ".join(g.get("reasons") or [])
+        return (f'<span class="badge {cls}" title="{E(why)}">{E(g["grade"])}</span> '
+                f'<span class="mute">{E(g["level"])}</span>' + (f'<br>{E(why)}' if why else ""))
+
+    def link_review(self):
+        """Every link's grade, counted, and a seeded sample of links with their facts."""
+        r = self.r
+        s = r.get("link_summary") or {}
+        smp = r.get("link_sample") or {}
+        self.w(f'<h3 id="links">Trace links graded ({s.get("total", 0)}: {s.get("strong", 0)} strong, '
+               f'{s.get("weak", 0)} weak)</h3>')
+        self.w('<p class="small">Each (item, test) link is graded from facts the harness has '
+               '(<code>traceability/links.py</code>): <b>strong</b> when the test states an oracle '
+               'independent of the code (closed form, stated rule, GSL reference, conservation law, '
+               'property; a peer only where the item is itself a comparison with it) and drives '
+               'the item\'s implementation at a level that can show it right (a requirement on the '
+               'software: the world, the command or a program, not a model function alone); '
+               '<b>weak</b> otherwise, with the reasons. An item whose passing links are all weak is '
+               'listed under "Verified only by weak evidence".</p>')
+        rows = smp.get("links") or []
+        if rows:
+            self.w(f'<h4 id="link-sample">A sample for review: {len(rows)} links drawn with seed '
+                   f'<code>{E(str(smp.get("seed")))}</code></h4><p class="small">Drawn afresh for '
+                   'every commit (the seed is its first digits), the same in every report of it. A '
+                   'reviewer judges each link against its test\'s code and the item\'s text; the '
+                   'grade is the harness\'s.</p>')
+            self.w('<table class="data small"><thead><tr><th>Item</th><th>Test / check</th>'
+                   '<th>Grade</th><th>Oracle kinds</th><th>Tolerance stated</th><th>Oracle</th>'
+                   '</tr></thead><tbody>')
+            for g in rows:
+                t = self.tests.get(g["test"], {})
+                self.w(f'<tr><td>{self.link(g["item"])}</td><td>{self.tlink(g["test"])}</td>'
+                       f'<td>{self._link_grade(g)}</td><td>{E(", ".join(g["oracle_kinds"]))}</td>'
+                       f'<td>{"yes" if g["tolerance_stated"] else "no"}</td>'
+                       f'<td>{E(str(t.get("oracle") or ""))}</td></tr>')
+            self.w('</tbody></table>')
 
     def gaps(self):
         r = self.r
@@ -433,11 +477,12 @@ say how the figure is measured:<ul>{"".join(rows)}</ul></div>""")
                '<th>Items</th></tr></thead><tbody>')
         for key, title in (("no_code", "No code tag"), ("no_test", "No labelled test or check"),
                            ("no_passing_test", "No passing test or check"),
-                           ("weak_evidence", "Verified only by weak evidence (peer, regression or "
-                                             "unplaced oracles)"),
+                           ("weak_evidence", "Verified only by weak evidence (no passing link "
+                                             "is strong)"),
                            ("unstated_oracle", "Weak evidence: a labelled test states no oracle")):
             self.w(f'<tr><td>{E(title)}</td><td class="num">{len(g.get(key, []))}</td><td>{self.links(g.get(key, []))}</td></tr>')
         self.w('</tbody></table>')
+        self.link_review()
         self.w('<h3 id="orphan-tags">Evidence → SRS: orphan code tags</h3>')
         if o["code_tags"]:
             self.w('<table class="data sortable"><thead><tr><th>Tag</th><th>Site</th><th>Text</th><th>Hint</th></tr></thead><tbody>')
