@@ -245,9 +245,13 @@ class World {
     /// \srs{DD28} Shapes that stopped overlapping a sensor during the last step (or whose
     /// shape or body, or the sensor's, was destroyed).
     std::span<const SensorEvent> sensor_end_events() const;
-    /// Shapes whose bounding boxes overlap `box` (m), by shape index.
+    /// Shapes whose bounding boxes overlap `box` (m), by shape index. Throws ValidationError
+    /// for a side that is not finite (DCX_finite) and for a box upside down, min_x > max_x or
+    /// min_y > max_y (rule "query"): such a box holds nothing, and an empty answer would hide
+    /// the mistake. A box of zero width or height (a segment, a point) is a box.
     std::vector<ShapeId> query_aabb(const Aabb& box) const;
-    /// Shapes that contain `point` (m, world frame), by shape index.
+    /// Shapes that contain `point` (m, world frame), by shape index. Throws ValidationError for
+    /// a point that is not finite (DCX_finite).
     std::vector<ShapeId> query_point(Vec2d point) const;
     /// The first shape met by the segment origin -> origin + translation (m), if any; ties go
     /// to the lower shape index so that the answer is deterministic. Both within the supported

@@ -928,6 +928,21 @@ std::span<const SensorEvent> World::sensor_end_events() const {
 }
 
 std::vector<ShapeId> World::query_aabb(const Aabb& box) const {
+    // A box upside down on an axis (min > max) or with a NaN side contains nothing: answering
+    // it with no shapes would hide the caller's mistake (corners swapped, a size for a corner).
+    require_finite("box.min_x", box.min_x);
+    require_finite("box.min_y", box.min_y);
+    require_finite("box.max_x", box.max_x);
+    require_finite("box.max_y", box.max_y);
+    // The query's own rule, not an SRS data constraint: "query" names it.
+    if (!(box.min_x <= box.max_x))
+        throw ValidationError("box.max_x", box.max_x,
+                              "must be >= box.min_x (" + detail::format_value(box.min_x) + " m)",
+                              "query");
+    if (!(box.min_y <= box.max_y))
+        throw ValidationError("box.max_y", box.max_y,
+                              "must be >= box.min_y (" + detail::format_value(box.min_y) + " m)",
+                              "query");
     std::vector<ShapeId> out;
     impl_->shapes.broad_phase.query(box, [&](int proxy) {
         const std::uint32_t s = impl_->shapes.broad_phase.user_data(proxy);
@@ -941,6 +956,7 @@ std::vector<ShapeId> World::query_aabb(const Aabb& box) const {
 }
 
 std::vector<ShapeId> World::query_point(Vec2d p) const {
+    require_finite("point", p); // a NaN point is in no shape: refused, not answered empty
     std::vector<ShapeId> out;
     const Aabb box{p.x, p.y, p.x, p.y};
     impl_->shapes.broad_phase.query(box, [&](int proxy) {
