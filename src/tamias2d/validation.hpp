@@ -2,6 +2,7 @@
 // the SRS forgot, labelled DCX_*). Each throws ValidationError naming field, value and label.
 #pragma once
 
+#include <string>
 #include <string_view>
 
 #include "tamias2d/body_def.hpp"
@@ -55,25 +56,36 @@ void validate(const BodyDef& def);
 void validate(const Material& material);
 void validate(const ShapeDef& def);
 void validate(const WorldDef& def);
-/// DCX_joint: distinct bodies, one of them dynamic (`movable`), a finite anchor, a break force
-/// > 0. The handles are checked by the caller.
-void validate(const RevoluteJointDef& def, bool movable);
+/// "static", "kinematic" or "dynamic", as messages name a body's type.
+const char* type_name(BodyType type);
+
+/// A body a joint definition names: its handle, its name in messages ("body[3 'slider']") and
+/// its type. The handle is checked by the caller.
+struct JointBody {
+    BodyId id;
+    std::string label;
+    BodyType type;
+};
+
+/// DCX_joint: distinct bodies, one of them dynamic, a finite anchor, a break force > 0. A
+/// message about the bodies names them by their labels, not by a number.
+void validate(const RevoluteJointDef& def, const JointBody& a, const JointBody& b);
 /// DCX_joint for a distance joint: as above, and a rest length > 0 (given, or the anchors'
 /// distance), hertz and damping ratio >= 0.
-void validate(const DistanceJointDef& def, bool movable);
+void validate(const DistanceJointDef& def, const JointBody& a, const JointBody& b);
 /// DCX_joint for a target joint: a dynamic body, a finite target, hertz > 0, damping ratio
 /// >= 0, max force > 0.
-void validate(const TargetJointDef& def, bool dynamic);
+void validate(const TargetJointDef& def, const JointBody& body);
 /// DCX_joint for a prismatic joint: as for a revolute one, a non-zero finite axis, limits
 /// lower <= upper, a motor force >= 0, an enabled spring's hertz > 0.
-void validate(const PrismaticJointDef& def, bool movable);
+void validate(const PrismaticJointDef& def, const JointBody& a, const JointBody& b);
 /// DCX_joint for a weld joint: as for a revolute one, frequencies and damping ratios >= 0.
-void validate(const WeldJointDef& def, bool movable);
+void validate(const WeldJointDef& def, const JointBody& a, const JointBody& b);
 /// DCX_joint for a wheel joint: as for a prismatic one, with a motor torque >= 0.
-void validate(const WheelJointDef& def, bool movable);
+void validate(const WheelJointDef& def, const JointBody& a, const JointBody& b);
 /// DCX_joint for a motor joint: finite offsets, max force and torque >= 0, correction factor
 /// in [0, 1].
-void validate(const MotorJointDef& def, bool movable);
+void validate(const MotorJointDef& def, const JointBody& a, const JointBody& b);
 /// DCX_joint: an anchor at offset `r` (m) from the centre of mass of a body of inverse mass and
 /// inverse inertia `inv_mass`, `inv_inertia` lies within supported::joint_lever_ratio_max
 /// radii of gyration of it (a body that does not move or turn has no such limit).

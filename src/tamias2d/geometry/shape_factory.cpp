@@ -66,6 +66,13 @@ Polygon make_box(double half_w, double half_h, Vec2d center, double angle) {
     return p;
 }
 
+/// \srs{DCX_shape} \srs{DCX_finite} as make_box, the sizes named as box_shape's caller gave them.
+Polygon make_box_of_size(double width, double height, Vec2d center, double angle) {
+    require_positive(width, "shape.width");
+    require_positive(height, "shape.height");
+    return make_box(0.5 * width, 0.5 * height, center, angle);
+}
+
 /// \srs{DCX_shape} convex, counter-clockwise, 3 to 8 vertices, positive area.
 Polygon make_polygon(std::span<const Vec2d> points) {
     if (points.size() < 3)
