@@ -40,6 +40,11 @@ sed -e "s/@PROJECT_VERSION_MAJOR@/$major/" -e "s/@PROJECT_VERSION_MINOR@/$minor/
 cmp -s "$out/include/tamias2d/version.hpp.new" "$out/include/tamias2d/version.hpp" ||
     mv "$out/include/tamias2d/version.hpp.new" "$out/include/tamias2d/version.hpp"
 rm -f "$out/include/tamias2d/version.hpp.new"
+# The export macros (GenerateExportHeader's tamias2d/export.hpp and tamias2d/io/export.hpp in
+# the CMake build): empty, as for a static library, since everything links into one module.
+mkdir -p "$out/include/tamias2d/io"
+printf '#pragma once\n#define TAMIAS2D_EXPORT\n' >"$out/include/tamias2d/export.hpp"
+printf '#pragma once\n#define TAMIAS2D_IO_EXPORT\n' >"$out/include/tamias2d/io/export.hpp"
 
 # The flags that decide the results' bits are the native build's (src/CMakeLists.txt): no
 # contraction into fused multiply-adds, no -ffast-math. -fexceptions: the library reports bad

@@ -10,6 +10,8 @@
 #include <string>
 #include <utility>
 
+#include "tamias2d/export.hpp"
+
 namespace tamias2d {
 
 namespace detail {
@@ -27,7 +29,7 @@ inline std::string validation_message(const std::string& field, double value,
 } // namespace detail
 
 /// An input violates a data constraint (SRS section 5.2.6 and its extensions, R4).
-struct ValidationError : std::invalid_argument {
+struct TAMIAS2D_EXPORT ValidationError : std::invalid_argument {
     std::string field;      ///< e.g. "shape.radius"
     double value;           ///< the offending value (NaN for non-numeric defects)
     std::string constraint; ///< the SRS data-constraint label, e.g. "DCX_shape"
@@ -56,7 +58,7 @@ struct ValidationError : std::invalid_argument {
 
 /// A body, shape or proxy handle that is stale or was never issued (a use-after-free turned into
 /// an error instead of a crash).
-struct InvalidHandle : std::invalid_argument {
+struct TAMIAS2D_EXPORT InvalidHandle : std::invalid_argument {
     using std::invalid_argument::invalid_argument;
 };
 
@@ -81,7 +83,7 @@ struct WrongKind : std::invalid_argument {
 /// refused: every body's state, every joint, the sleep states and the clock are as they were
 /// before the call; the contacts were brought up to date with those unchanged poses (the next
 /// step would compute the same), and the step reports no events.
-struct SolverDivergence : std::runtime_error {
+struct TAMIAS2D_EXPORT SolverDivergence : std::runtime_error {
     std::string field; ///< the first body found diverged, e.g. "body[3 'slider'].velocity"
     /// what(): "body[3 'slider'].velocity: turned non-finite in the joints' solve; ...".
     SolverDivergence(std::string field_, const std::string& what)

@@ -14,6 +14,7 @@
 #include "tamias2d/body_state.hpp"
 #include "tamias2d/contact_info.hpp"
 #include "tamias2d/errors.hpp"
+#include "tamias2d/export.hpp"
 #include "tamias2d/handles.hpp"
 #include "tamias2d/joint_def.hpp"
 #include "tamias2d/shape_def.hpp"
@@ -36,7 +37,7 @@ struct RayCastHit {
 /// as it was.
 /// Every real input must be finite (DCX_finite) and within the supported range (DCX_range:
 /// magnitudes up to 1e12 in SI units, sizes from 1e-12; docs/design.md, "Supported ranges").
-class World {
+class TAMIAS2D_EXPORT World {
   public:
     /// An empty world with the given settings; throws ValidationError if a setting breaks its
     /// constraint (e.g. substeps < 1, a non-finite gravity).
