@@ -25,12 +25,25 @@ DECLARED_STATUSES = ("assumed", "not testable", "untested")
 ORACLE_KINDS = [
     ("closed form", r"closed[- ]form|hand derivation|derived (?:by hand|here)|by hand|analytic|"
                     r"exact(?:ly)?\b|elliptic|written (?:here|in the test) from|hand-made|"
-                    r"hand-written|hand count|the srs text|formula|statics|oscillator"),
-    ("stated rule", r"srs table|\btable [12]\b|\bdc[iox]_\w+|data_constraints|scene-format\.md"),
+                    r"hand-written|\bhand (?:values?|cases?|geometry|points|truth table)|"
+                    r"the srs text|formula|statics|oscillator|textbook|\bidentit|"
+                    r"\bdefinition|dimensional analysis|\bgeometry\b|derivation|hooke's law|"
+                    r"\bt1 at rest|voronoi|arithmetic series|defining (?:relation|integral)|"
+                    r"\bode\b|parallel-axis|kinematics|symmetr|additiv|equivalence principle|"
+                    r"transcribed|written out here|\blimits?\b of|superposition"),
+    ("stated rule", r"srs table|\btable [12]\b|\bdc[iox]_\w+|data_constraints|scene-format\.md|"
+                    r"\bstated (?:rules?|timing|order|convention)|\bthe (?:documented|stated)\b|"
+                    r"\bcontract\b|\bconvention\b|\brfc \d+|srs data constraints|"
+                    r"\bspecification\b|the handle rule|user-guide\.md|world\.hpp|"
+                    r"\bprecondition\b|data constraints|the scene text|json syntax|"
+                    r"\bthe seed's range"),
     ("GSL reference", r"\bgsl\b|rk8pd|reference solution"),
     ("conservation law", r"conserv|\bgd1\b"),
-    ("property", r"propert|\bbound\b|bounded|never|invariant|brute[- ]force|promise|monoton|"
-                 r"rigidity|keeps its shape|the derivation's corners"),
+    ("independent implementation", r"brute[- ]force|written in the test|a plain [\w ]+ test|"
+                                   r"direct (?:particle )?sums|std::\w+ fed the same"),
+    ("property", r"propert|\bbound\b|bounded|never|invariant|promise|monoton|"
+                 r"rigidity|keeps its shape|the derivation's corners|determinism by construction|"
+                 r"same inputs?,? (?:give|same)"),
     ("peer", r"chipmunk|box2d|\bpeer\b|pymunk"),
     ("regression", r"golden|committed (?:value|hash|file)|previous run"),
 ]
@@ -112,6 +125,7 @@ def analyse(srs, code_sites, tests, config, warnings=None):
                       if k in labels and v}
     for t in tests:
         t["oracle_kinds"] = oracle_kinds(t.get("oracle"))
+    inherit_oracle_kinds(tests)
     category = set(config.get("category_labels") or [])
     sites_by = {}
     for s in code_sites:
@@ -293,6 +307,40 @@ def analyse(srs, code_sites, tests, config, warnings=None):
             "orphans": orphans, "category_labels": category_labels, "test_totals": test_totals,
             "missing_oracle": missing_oracle, "missing_oracle_srs": missing_oracle_srs,
             "gate": gate}
+
+
+AS_REFERENCE = re.compile(r"^as (above|[\w.@:/-]+?)[,:]?(?:\s|$)", re.I)
+
+
+def inherit_oracle_kinds(tests):
+    """An oracle stated as "as above" or "as <test>" rests on the referenced test's oracle
+    too: its kinds are added (the statement's own remain). "Above" is the test declared last
+    before it in the same file."""
+    by_file = {}
+    for t in tests:
+        if t.get("file") and t.get("line"):
+            by_file.setdefault(t["file"], []).append(t)
+    for ts in by_file.values():
+        ts.sort(key=lambda t: t["line"])
+    for t in tests:
+        m = AS_REFERENCE.match(str(t.get("oracle") or ""))
+        if not m:
+            continue
+        ref = None
+        if m.group(1).lower() == "above":
+            same = [u for u in by_file.get(t.get("file"), []) if u["line"] < (t.get("line") or 0)
+                    and AS_REFERENCE.match(str(u.get("oracle") or "")) is None]
+            ref = same[-1] if same else None
+        else:
+            name = m.group(1)
+            ref = next((u for u in tests if u is not t and u.get("file") == t.get("file") and
+                        (u["name"].rsplit("/", 1)[-1] == name or
+                         u["name"].rsplit("/", 1)[-1].startswith(name + "_"))), None)
+        if ref is not None:
+            kinds = [k for k in t["oracle_kinds"] if k != "other"]
+            kinds += [k for k in ref["oracle_kinds"] if k not in kinds]
+            t["oracle_kinds"] = kinds or ["other"]
+            t["oracle_refers_to"] = ref["id"]
 
 
 def _kind_order(k):

@@ -158,7 +158,7 @@ BOOST_AUTO_TEST_CASE(reference_face_is_a_best_separating_axis,
 // in place from whatever it held: one manifold reused across random pairs of circles and
 // polygons, poses and margins must come out bit for bit as a new one each time, including the
 // slots past its count.
-BOOST_AUTO_TEST_CASE(in_place_update_matches_a_new_manifold, *utf::label("T5")) {
+BOOST_AUTO_TEST_CASE(in_place_update_matches_a_new_manifold, *utf::label("internals")) {
     std::mt19937_64 rng(47);
     Manifold reused;
     int with_points = 0, shrunk = 0;

@@ -106,7 +106,8 @@ BOOST_AUTO_TEST_CASE(contact_report_follows_destruction, *utf::label("R1") * utf
     }
 }
 
-// Oracle: the report before the destruction. Destroying a body removes its contacts (the last
+// Oracle: the stated contract of world.hpp, checked against the report before the destruction.
+// Destroying a body removes its contacts (the last
 // contact moves into each gap, with its impulses kept beside it); every other contact must
 // still report the impulses of the last step, bit for bit, and the world must step on.
 BOOST_AUTO_TEST_CASE(surviving_contacts_keep_their_impulses, *utf::label("R1") * utf::label("R7")) {

@@ -188,9 +188,9 @@ BOOST_AUTO_TEST_CASE(reaction_force_is_the_tension_at_the_bottom,
     BOOST_ERROR("the pendulum never passed the bottom");
 }
 
-// Oracle: the tension of the previous case, m g (1 + 2 (1 - cos theta0) m l^2 / I_p). A joint
-// whose break force is below it breaks on the way down (and is listed, and gone); one above it
-// holds for a whole period.
+// Oracle: closed form: the tension of the previous case, m g (1 + 2 (1 - cos theta0) m l^2 / I_p).
+// A joint whose break force is below it breaks on the way down (and is listed, and gone); one above
+// it holds for a whole period.
 BOOST_AUTO_TEST_CASE(joint_breaks_above_its_break_force, *utf::label("IM6") * utf::label("LC3")) {
     const double theta0 = std::numbers::pi / 3.0;
     const Pendulum probe(theta0);

@@ -23,7 +23,7 @@ BOOST_AUTO_TEST_SUITE(project_constraints)
 
 // Oracle: positive control for the strong-guarantee check itself: a valid mutation of each kind
 // the other tests reject must change state_hash (else "unchanged" would prove nothing).
-BOOST_AUTO_TEST_CASE(state_hash_sees_every_kind_of_change, *utf::label("R4")) {
+BOOST_AUTO_TEST_CASE(state_hash_sees_every_kind_of_change, *utf::label("internals")) {
     const std::vector<std::function<void(MovingWorld&)>> changes = {
         [](MovingWorld& m) { m.world.create_body(BodyDef{}); },
         [](MovingWorld& m) { m.world.create_shape(m.box, circle_shape(0.1)); },

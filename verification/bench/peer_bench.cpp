@@ -845,9 +845,19 @@ int main(int argc, char** argv) {
         return nullptr;
     };
     const bool v3_ran = not_measured.size() < 2;
-    const std::string method = "thread CPU time, median of " + std::to_string(opt.reps) +
-                               " repetitions, engines alternating, one process" +
-                               (v3_ran ? " (Box2D v3: a worker process per build)" : "");
+    const std::string method =
+        "thread CPU time, median of " + std::to_string(opt.reps) +
+        " repetitions, engines alternating, one process" +
+        (v3_ran ? " (Box2D v3: a worker process per build)" : "") +
+        (opt.quick ? "; quick mode (shorter timed runs: the scene table gives the steps)"
+                   : "; full length");
+    // Which Chipmunk the verdict compares with (verification/bench/CMakeLists.txt detects it):
+    // Debian's libchipmunk7 is built without NDEBUG, so its debug checks run in every step.
+    const std::string chipmunk_build =
+        TAMIAS_CHIPMUNK_DEBUG_BUILD
+            ? "Chipmunk 7.0.3 as the system packages it, built with its debug checks (no NDEBUG: "
+              "its runtime assertions run), so slower than a release build of it"
+            : "Chipmunk 7.0.3 as the system packages it, a release build (NDEBUG)";
     const bool have_tamias =
         std::find(opt.engines.begin(), opt.engines.end(), EngineId::tamias) != opt.engines.end();
     // Every peer, for the checks' details (the verdicts compare with Chipmunk 7 and Box2D 2.4
@@ -875,7 +885,7 @@ int main(int argc, char** argv) {
                       {"NFR1"},
                       r.engines[0].complete() && r.engines[1].complete() &&
                           t <= comparable_limit * c,
-                      "Chipmunk 7 (Pymunk's engine) on the identical scene, " + method,
+                      chipmunk_build + " (Pymunk's engine) on the identical scene, " + method,
                       "Tamias2D " + fmt(t, 4) + " ms/step, Chipmunk 7 " + fmt(c, 4) +
                           " ms/step: ratio " + fmt(t / c) + " (speed-up " + fmt(c / t) + "x)");
         }
@@ -893,9 +903,11 @@ int main(int argc, char** argv) {
             const double speedup = p / t;
             const bool ok = r->engines[0].complete() && r->engines[std::size_t(peer)].complete() &&
                             speedup >= floor;
+            // A floor against Chipmunk is a goal beyond NFR1's "comparable to Pymunk"; Box2D 2.4
+            // is not Pymunk's engine, so its floor is a performance target, not NFR1's.
             add_check(std::string(n) + ": Tamias2D >= " + fmt(floor) + "x " +
                           std::string(engine_name(peer)) + " steps/s",
-                      {"NFR1"}, ok,
+                      {peer == EngineId::chipmunk ? "NFR1" : "performance"}, ok,
                       std::string(engine_name(peer)) + " on the identical scene, " + method,
                       "speed-up " + fmt(speedup) + "x (Tamias2D " + fmt(t, 4) + " ms/step, " +
                           std::string(engine_name(peer)) + " " + fmt(p, 4) + " ms/step)" +
@@ -975,7 +987,13 @@ int main(int argc, char** argv) {
             name = "elastic2: velocities exchanged and no spin (within 1e-6)";
             oracle = "equal masses, C_R = 1, head-on (GD1, DD12): v_A' = v_B, v_B' = v_A";
         }
-        add_check(name, {"R7", "R8"}, ok, oracle,
+        // R7 and R8 are judged on full-length runs; a quick run's pile has had a second or two
+        // to settle, so its check is reported without their labels.
+        if (opt.quick)
+            name += " (quick run; R7 and R8 are judged on full-length runs)";
+        add_check(name, opt.quick ? std::vector<std::string>{"performance"}
+                                  : std::vector<std::string>{"R7", "R8"},
+                  ok, oracle,
                   "Tamias2D: " + (e.quality ? e.quality->text : std::string("no result")) +
                       (e.error.empty() ? "" : " (" + e.error + ")") + peers);
     }
