@@ -183,7 +183,7 @@ BOOST_AUTO_TEST_CASE(marked_pairs_equal_brute_force, *utf::label("IM4")) {
 
 // Oracle: AVL height bound 1.44 log2(N + 2), N = 2n - 1 nodes for n leaves, for a tree built by
 // insertions alone.
-BOOST_AUTO_TEST_CASE(insertions_keep_the_tree_balanced, *utf::label("IM4")) {
+BOOST_AUTO_TEST_CASE(insertions_keep_the_tree_balanced, *utf::label("internals")) {
     std::mt19937_64 rng(3);
     DynamicTree tree;
     for (int i = 0; i < 3000; ++i)

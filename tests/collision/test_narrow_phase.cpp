@@ -265,7 +265,7 @@ BOOST_AUTO_TEST_CASE(head_on_points_symmetric, *utf::label("LC1") * utf::label("
 
 // Oracle: warm-starting contract: feature ids of a resting box do not change under small
 // motion and tilt, and the reference face does not flip (normal stays up).
-BOOST_AUTO_TEST_CASE(resting_box_ids_stable, *utf::label("LC1")) {
+BOOST_AUTO_TEST_CASE(resting_box_ids_stable, *utf::label("internals")) {
     const Geometry box = to_geometry(make_box(0.5, 0.5));
     std::mt19937_64 rng(99);
     std::uniform_real_distribution<double> jitter(-1e-4, 1e-4);

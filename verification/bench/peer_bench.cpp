@@ -991,8 +991,9 @@ int main(int argc, char** argv) {
         // to settle, so its check is reported without their labels.
         if (opt.quick)
             name += " (quick run; R7 and R8 are judged on full-length runs)";
-        add_check(name, opt.quick ? std::vector<std::string>{"performance"}
-                                  : std::vector<std::string>{"R7", "R8"},
+        add_check(name,
+                  opt.quick ? std::vector<std::string>{"performance"}
+                            : std::vector<std::string>{"R7", "R8"},
                   ok, oracle,
                   "Tamias2D: " + (e.quality ? e.quality->text : std::string("no result")) +
                       (e.error.empty() ? "" : " (" + e.error + ")") + peers);
