@@ -53,6 +53,7 @@ pre{padding:8px;overflow:auto;white-space:pre-wrap}
 .gate{border-radius:8px;padding:12px 18px;margin:18px 0;border:2px solid}
 .gate.pass{background:#e8f5e9;border-color:var(--ok)}
 .gate.fail{background:#fdecea;border-color:var(--fail)}
+.gate.warn{background:#fff4e5;border-color:var(--warn)}
 .gate h2{border:none;margin:0 0 4px;padding:0}
 .gate ul{margin:4px 0 0 0;padding-left:20px}
 .cards{display:flex;flex-wrap:wrap;gap:12px;margin:10px 0}
@@ -238,18 +239,19 @@ are labelled with are judged by their other checks:""", g.get("targets_missed"))
                 for t in checks) or "<li>no measurement in this run</li>"
             rows.append(f'<li>{self.link(g["label"])} {badge(g["status"])}<ul>{figs}</ul></li>')
         missed = any(g["status"] == "goal missed" for g in goals)
-        cls = "fail" if missed else "pass"
+        cls = "warn" if missed else "pass"
         self.w(f"""<div class="gate {cls}" id="goals"><h2>Goals of the SRS ("should" requirements)</h2>
 The SRS states these with "should": goals, measured and shown with their figures in every run,
 never a reason for a non-zero exit status ("shall" requirements gate). Each check's details
 say how the figure is measured:<ul>{"".join(rows)}</ul></div>""")
 
     def _test_list_box(self, anchor, title, intro, ids):
-        """A box under the gate listing tests (linked) with a heading and an explanation."""
+        """A box under the gate listing tests (linked) with a heading and an explanation: an
+        outcome shown but not gating, so in the warning colour."""
         if not ids:
             return
         lis = "".join(f"<li>{self._linkify_tests(E(x), ids)}</li>" for x in ids)
-        self.w(f"""<div class="gate fail" id="{anchor}"><h2>{E(title)}</h2>
+        self.w(f"""<div class="gate warn" id="{anchor}"><h2>{E(title)}</h2>
 {intro}<ul>{lis}</ul></div>""")
 
     def _linkify_tests(self, text, ids):
