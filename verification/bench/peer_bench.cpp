@@ -1275,7 +1275,7 @@ int main(int argc, char** argv) {
                  "worker processes when built with it, with a quality check per scene and "
                  "engine (R7, R8), the cost "
                  "of unit typing, the scaling of a rain of boxes, and joint scenes (time and "
-                 "drift, no check). Method and results: docs/performance.md."},
+                 "drift, no check). Method: docs/performance.md."},
                 {"provenance", tamias2d::evidence::provenance()},
                 {"checks", checks},
                 {"tables", tables},
