@@ -13,7 +13,6 @@ from __future__ import annotations
 
 import argparse
 import datetime as _dt
-import json
 import os
 import subprocess
 import sys
@@ -25,6 +24,7 @@ if __package__ in (None, ""):
 
 from traceability import SCHEMA_VERSION  # noqa: E402
 from traceability import analysis, builds, evidence, graphs, links, render_html, render_md, srsdata, vvdata  # noqa: E402
+from traceability import reproducible  # noqa: E402
 
 
 def parse_args(argv):
@@ -113,8 +113,9 @@ def build(args, log=print):
                                           log=(lambda m: None) if args.quiet else log,
                                           junit_level=args.junit_level, build=build_prov)
     tests, ctests, tinfo = evidence.collect_tests(source, results_dir, warnings)
-    if run_manifest is None:
-        run_manifest = tinfo.get("manifest")
+    # The manifest as the results directory holds it: a run and a later --no-run report of
+    # its results read the same document.
+    run_manifest = tinfo.get("manifest") or run_manifest
 
     programs, cov = vvdata.load_data_dir(data_dir, warnings)
     source_info = git_info(source)
@@ -250,16 +251,19 @@ def build(args, log=print):
     report["summary"]["counts"]["warnings"] = len(warnings) + len(tinfo["registration"])
     warnings += tinfo["registration"]
 
+    # Paths under the source root are written relative to it: the same results give the same
+    # bytes wherever the checkout lies (reproducible.py).
+    reproducible.portable(report, source)
+    js = dict(report)
+    js["graphs"] = [{k: v for k, v in g.items() if k != "inline"} for g in report["graphs"]]
+    js["items"] = [{k: v for k, v in i.items()} for i in report["items"]]
+    report["_out_path"] = out  # where render_html looks for files beside the report
     with open(os.path.join(out, "index.html"), "w", encoding="utf-8") as fh:
         fh.write(render_html.render(report))
     with open(os.path.join(out, "traceability.md"), "w", encoding="utf-8") as fh:
         fh.write(render_md.render(report))
-    js = dict(report)
-    js["graphs"] = [{k: v for k, v in g.items() if k != "inline"} for g in gr]
-    js["items"] = [{k: v for k, v in i.items()} for i in report["items"]]
     with open(os.path.join(out, "traceability.json"), "w", encoding="utf-8") as fh:
-        json.dump(js, fh, indent=1, sort_keys=False, default=str)
-        fh.write("\n")
+        fh.write(reproducible.dumps(js))
     return report
 
 
@@ -293,7 +297,7 @@ def main(argv=None):
     g = report["gate"]
     if not args.quiet:
         s = report["summary"]["by_status"]
-        out = report["inputs"]["out_dir"]
+        out = report["_out_path"]
         print(f"[traceability] {len(report['items'])} items: " + ", ".join(f"{v} {k}" for k, v in s.items()),
               file=sys.stderr)
         print(f"[traceability] gate {'PASS' if g['passed'] else 'FAIL'}; report: {os.path.join(out, 'index.html')}",

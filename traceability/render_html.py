@@ -153,6 +153,8 @@ class Html:
         self.tests = {t["id"]: t for t in report["tests"]}
         self.test_anchor = {t["id"]: f"test-{n}" for n, t in enumerate(report["tests"], 1)}
         self.categories = {c["label"] for c in report.get("category_labels", [])}
+        # The report's paths are relative to the source root; files beside it are found here.
+        self.out_dir = report.get("_out_path") or report["inputs"]["out_dir"]
         self.parts = []
 
     # helpers
@@ -196,7 +198,7 @@ commit <code>{E(commit[:12])}</code>{E(dirty)} · {E(ran)} · report schema {E(r
 <a href="#gaps">Gaps &amp; orphans</a><a href="#matrices">Matrices</a><a href="#graphs">Graphs</a>
 <a href="#errata">Errata</a><a href="#vv">V&amp;V evidence</a><a href="#coverage">Coverage</a>
 <a href="#tests">All tests</a><a href="#method">Method &amp; warnings</a>""")
-        if os.path.exists(os.path.join(r["inputs"]["out_dir"], "api", "index.html")):
+        if os.path.exists(os.path.join(self.out_dir, "api", "index.html")):
             self.w('<a href="api/index.html">API reference</a>')
         if self._players():
             self.w('<a href="#players">Recorded runs</a>')
@@ -740,7 +742,7 @@ say how the figure is measured:<ul>{"".join(rows)}</ul></div>""")
     def _players(self):
         """reports/players/index.json, written by the main job (tests/viewer/check_player.py):
         one entry per page of `tamias2d view`; [] when absent or unreadable."""
-        path = os.path.join(self.r["inputs"]["out_dir"], "players", "index.json")
+        path = os.path.join(self.out_dir, "players", "index.json")
         try:
             with open(path, encoding="utf-8") as fh:
                 entries = json.load(fh)
@@ -810,7 +812,7 @@ say how the figure is measured:<ul>{"".join(rows)}</ul></div>""")
                    f'<td class="num">{E(_fmt(f.get("line_covered")))}/{E(_fmt(f.get("line_total")))}</td>'
                    f'<td class="num">{E(_fmt(f.get("function_percent")))}</td><td class="num">{E(_fmt(f.get("branch_percent")))}</td></tr>')
         self.w('</tbody></table>')
-        if os.path.exists(os.path.join(self.r["inputs"]["out_dir"], "coverage.html")):
+        if os.path.exists(os.path.join(self.out_dir, "coverage.html")):
             self.w('<p><a href="coverage.html">Line-by-line coverage (gcovr HTML)</a></p>')
         self.w('</section>')
 
