@@ -24,7 +24,7 @@ if __package__ in (None, ""):
 
 from traceability import SCHEMA_VERSION  # noqa: E402
 from traceability import analysis, builds, evidence, graphs, links, render_html, render_md, srsdata, vvdata  # noqa: E402
-from traceability import reproducible  # noqa: E402
+from traceability import fingerprints, reproducible, review  # noqa: E402
 
 
 def parse_args(argv):
@@ -54,6 +54,10 @@ def parse_args(argv):
                    help="trace links drawn for review (default 30)")
     p.add_argument("--link-seed", default=None,
                    help="seed of the drawn links (default: the commit's first 8 hex digits)")
+    p.add_argument("--reviews", default=None,
+                   help="review records of trace links (default <source>/traceability/reviews.yaml)")
+    p.add_argument("--suspect-gates", action="store_true",
+                   help="suspect links (an end changed since its review) fail the gate")
     p.add_argument("--quiet", action="store_true")
     return p.parse_args(argv)
 
@@ -168,6 +172,11 @@ def build(args, log=print):
     vvdata.render_plots(programs, out, warnings)
 
     res = analysis.analyse(srs, code_sites, tests, config, warnings)
+    # Fingerprints of both ends of each link, compared with the review records.
+    fingerprints.annotate(srs, res["items"], tests, source)
+    reviews_file = os.path.abspath(args.reviews or os.path.join(source, review.REVIEWS_FILE))
+    reviews = dict(review.judge(res, tests, review.load(reviews_file, warnings), args.suspect_gates),
+                   file=reviews_file)
     # A failed check of a "should" requirement only is a missed goal (analysis.GOAL_OBLIGATION).
     goal_missed = {t["id"] for t in tests if t["status"] == "goal-missed"}
     for p in programs:
@@ -216,6 +225,7 @@ def build(args, log=print):
         "link_summary": res["link_summary"],
         "link_sample": {"seed": link_seed, "size": args.link_sample,
                         "links": links.sample(res["links"], args.link_sample, link_seed)},
+        "reviews": reviews,
         "orphans": res["orphans"],
         "category_labels": res["category_labels"],
         "missing_oracle": missing_oracle,
