@@ -24,7 +24,7 @@ if __package__ in (None, ""):
 
 from traceability import SCHEMA_VERSION  # noqa: E402
 from traceability import analysis, builds, evidence, graphs, links, render_html, render_md, srsdata, vvdata  # noqa: E402
-from traceability import fingerprints, reproducible, review  # noqa: E402
+from traceability import fingerprints, reproducible, reqif, review  # noqa: E402
 
 
 def parse_args(argv):
@@ -72,6 +72,7 @@ def git_info(root):
         st = subprocess.run(["git", "-C", root, "status", "--porcelain", "--untracked-files=no"],
                             capture_output=True, text=True, timeout=60)
         info["git_dirty"] = bool(st.stdout.strip()) if st.returncode == 0 else None
+        info["git_commit_date"] = reproducible.commit_date(root)
     except (OSError, subprocess.TimeoutExpired):
         pass
     return info
@@ -174,6 +175,7 @@ def build(args, log=print):
     res = analysis.analyse(srs, code_sites, tests, config, warnings)
     # Fingerprints of both ends of each link, compared with the review records.
     fingerprints.annotate(srs, res["items"], tests, source)
+    reqif.srs_extra(srs, res["items"])
     reviews_file = os.path.abspath(args.reviews or os.path.join(source, review.REVIEWS_FILE))
     reviews = dict(review.judge(res, tests, review.load(reviews_file, warnings), args.suspect_gates),
                    file=reviews_file)
@@ -262,11 +264,12 @@ def build(args, log=print):
     warnings += tinfo["registration"]
 
     # Paths under the source root are written relative to it: the same results give the same
-    # bytes wherever the checkout lies (reproducible.py).
+    # bytes wherever the checkout lies (reproducible.py); the ReqIF file is of the JSON.
     reproducible.portable(report, source)
     js = dict(report)
     js["graphs"] = [{k: v for k, v in g.items() if k != "inline"} for g in report["graphs"]]
     js["items"] = [{k: v for k, v in i.items()} for i in report["items"]]
+    reqif_text = reqif.attach(report, js)
     report["_out_path"] = out  # where render_html looks for files beside the report
     with open(os.path.join(out, "index.html"), "w", encoding="utf-8") as fh:
         fh.write(render_html.render(report))
@@ -274,6 +277,8 @@ def build(args, log=print):
         fh.write(render_md.render(report))
     with open(os.path.join(out, "traceability.json"), "w", encoding="utf-8") as fh:
         fh.write(reproducible.dumps(js))
+    with open(os.path.join(out, reqif.FILE_NAME), "w", encoding="utf-8") as fh:
+        fh.write(reqif_text)
     return report
 
 

@@ -1,5 +1,5 @@
 """The auditor's parts of index.html and traceability.md: the review state of the trace links
-(suspect links first). render_html.py and render_md.py call these."""
+(suspect links first) and the ReqIF export. render_html.py and render_md.py call these."""
 from __future__ import annotations
 
 import html
@@ -94,8 +94,25 @@ def html_reviews(page):
     return "".join(out)
 
 
+def html_reqif(page):
+    x = page.r.get("reqif")
+    if not x:
+        return ""
+    so, rel = x["spec_objects"], x["spec_relations"]
+    return (f'<h3 id="reqif">ReqIF export</h3><p class="small"><a href="{E(x["file"])}">{E(x["file"])}</a>: '
+            f'this report as ReqIF 1.2 for a requirements tool (DOORS, Polarion, Codebeamer, Jama, '
+            f'StrictDoc...): {so["items"]} SRS items, {so["tests"]} tests and checks, '
+            f'{so["code_sites"]} code sites as SPEC-OBJECTs; SPEC-RELATIONs verifies {rel["verifies"]} '
+            f'(test → item, with grade and review state), refines {rel["refines"]} and uses '
+            f'{rel["uses"]} (item → item, from <code>uses</code>), implements {rel["implements"]} '
+            f'(code site → item); specifications: {E("; ".join(x["specifications"]))}. Its '
+            f'CREATION-TIME is the report\'s <code>generated</code> time; every LAST-CHANGE is '
+            f'{E(x["last_change"])}, the reported commit\'s date. <code>traceability/reqif.py import '
+            f'FILE</code> reads such a file back and lists what it cannot map.</p>')
+
+
 def md(r):
-    """The reviews as Markdown lines."""
+    """The reviews and the ReqIF export as Markdown lines."""
     rv = r.get("reviews") or {}
     L = [f"### Reviews of the trace links ({_counts(rv)})\n",
          f"Review records: `{rv.get('file') or 'traceability/reviews.yaml'}`; suspect links "
@@ -110,6 +127,13 @@ def md(r):
         L.append("No suspect link.\n")
     for o in rv.get("orphan_records") or []:
         L.append(f"- Review record of a link the report no longer has: {o['item']} <- {o['test']}")
+    x = r.get("reqif")
+    if x:
+        so, rel = x["spec_objects"], x["spec_relations"]
+        L.append(f"\n### ReqIF export\n\n[{x['file']}]({x['file']}): {so['items']} SRS items, "
+                 f"{so['tests']} tests and checks, {so['code_sites']} code sites; relations "
+                 + ", ".join(f"{k} {n}" for k, n in rel.items()) +
+                 f"; CREATION-TIME is the report's generated time, every LAST-CHANGE {x['last_change']}.\n")
     return "\n".join(L) + "\n"
 
 

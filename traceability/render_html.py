@@ -199,7 +199,7 @@ commit <code>{E(commit[:12])}</code>{E(dirty)} · {E(ran)} · report schema {E(r
 <a href="#gaps">Gaps &amp; orphans</a><a href="#matrices">Matrices</a><a href="#graphs">Graphs</a>
 <a href="#errata">Errata</a><a href="#vv">V&amp;V evidence</a><a href="#coverage">Coverage</a>
 <a href="#tests">All tests</a><a href="#method">Method &amp; warnings</a>
-<a href="#reviews">Link reviews</a>""")
+<a href="#reviews">Link reviews</a><a href="#reqif">ReqIF</a>""")
         if os.path.exists(os.path.join(self.out_dir, "api", "index.html")):
             self.w('<a href="api/index.html">API reference</a>')
         if self._players():
@@ -865,6 +865,7 @@ say how the figure is measured:<ul>{"".join(rows)}</ul></div>""")
                    '<code>main_job</code> in the V&amp;V evidence)</li>')
         self.w('</ul>')
         self.builds()
+        self.w(render_audit.html_reqif(self))
         cmds = run.get("commands") or []
         if cmds:
             self.w('<details><summary>Commands run</summary><pre>' + E("\n".join(

@@ -10,12 +10,12 @@ import subprocess
 import tempfile
 import unittest
 
-from traceability import reproducible
+from traceability import reproducible, reqif
 from traceability.tests.test_harness import FIX, FIX_COMMIT, FIX_CONFIG, REPO
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 SCRIPT = os.path.join(os.path.dirname(HERE), "build_report.py")
-FILES = ("index.html", "traceability.md", "traceability.json")
+FILES = ("index.html", "traceability.md", "traceability.json", "tamias2d.reqif")
 
 
 def harness(repo, date, hash_seed):
@@ -67,14 +67,16 @@ class SameResultsSameBytes(unittest.TestCase):
             self.assertNotIn(self.tmp.encode(), self.runs[0][name], name)
 
     def test_the_time_is_only_in_generated(self):
-        # Another --date: only `generated` (and what prints it: the pages' headers) differs.
+        # Another --date: only `generated` (and what prints it: the pages' headers, the
+        # ReqIF's CREATION-TIME) differs.
         a, c = self.runs[0], self.runs[2]
         ja, jc = json.loads(a["traceability.json"]), json.loads(c["traceability.json"])
         self.assertEqual((ja["generated"], jc["generated"]), ("2000-01-01 00:00 UTC", "2031-07-15 12:34 UTC"))
         ja["generated"] = jc["generated"]
         self.assertEqual(ja, jc)
         for name, old, new in (("index.html", b"2000-01-01 00:00 UTC", b"2031-07-15 12:34 UTC"),
-                               ("traceability.md", b"2000-01-01 00:00 UTC", b"2031-07-15 12:34 UTC")):
+                               ("traceability.md", b"2000-01-01 00:00 UTC", b"2031-07-15 12:34 UTC"),
+                               ("tamias2d.reqif", b"2000-01-01T00:00:00Z", b"2031-07-15T12:34:00Z")):
             self.assertEqual(a[name].replace(old, new), c[name], name)
         for name in set(a) - set(FILES):  # plots and graphs carry no time
             self.assertEqual(a[name], c[name], name)
@@ -105,6 +107,8 @@ class RunThenRegenerate(unittest.TestCase):
                 subprocess.run(base + extra, capture_output=True, timeout=300)
                 with open(os.path.join(out, "traceability.json"), encoding="utf-8") as fh:
                     pages.append(json.load(fh))
+                with open(os.path.join(out, reqif.FILE_NAME), "rb") as fh:
+                    pages[-1]["_reqif"] = fh.read()
             run, again = pages
             self.assertEqual((run["inputs"]["ran_tests"], again["inputs"]["ran_tests"]), (True, False))
             self.assertEqual(run["run"]["commands"], again["run"]["commands"])  # the manifest, as recorded
