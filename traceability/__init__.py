@@ -7,4 +7,4 @@ auditor's report (reports/index.html, traceability.md, traceability.json).
 Entry point: traceability/build_report.py. Documentation: docs/traceability.md.
 """
 
-SCHEMA_VERSION = "1.2"
+SCHEMA_VERSION = "1.3"
