@@ -5,8 +5,8 @@
 
 Runs the tests once (every Boost.Test binary with --list_content=DOT and a JUnit logger, the
 other CTest entries through ctest --output-junit), joins them with srs/*.yaml, the \\srs{}
-code tags and reports/data/*.json, and writes index.html, traceability.md and
-traceability.json into the output directory. Exit status: 0 when every R/IM/TM/GD/DD item has
+code tags and reports/data/*.json, and writes index.html, traceability.md,
+traceability.json and tamias2d.reqif into the output directory. Exit status: 0 when every R/IM/TM/GD/DD item has
 a passing test and nothing fails, 1 otherwise, 2 on a usage error. See docs/traceability.md.
 """
 from __future__ import annotations

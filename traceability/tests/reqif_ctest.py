@@ -2,8 +2,9 @@
 """CTest's traceability_reqif: the harness's ReqIF export of the fixture repository, validated
 against the ReqIF 1.2 XML Schema, read back without loss, and the two samples of real tools
 imported (test_reqif.py). The schema lives outside the repository: its path is the first
-argument (CMake's TAMIAS_REQIF_SCHEMA, by default ../shared/standards/reqif/reqif.xsd beside
-the source tree); without it the test is skipped (exit 77, CTest's SKIP_RETURN_CODE)."""
+argument (CMake's TAMIAS_REQIF_SCHEMA, relative to the source tree, the test's working
+directory, or absolute; by default ../shared/standards/reqif/reqif.xsd); without it the test
+is skipped (exit 77, CTest's SKIP_RETURN_CODE)."""
 import os
 import sys
 import unittest
