@@ -7,6 +7,7 @@ import json
 import os
 import re
 
+from . import render_audit
 from .graphs import KIND_HEX, STATUS_BORDER
 from .srsdata import KIND_NAMES
 
@@ -154,6 +155,8 @@ class Html:
         self.tests = {t["id"]: t for t in report["tests"]}
         self.test_anchor = {t["id"]: f"test-{n}" for n, t in enumerate(report["tests"], 1)}
         self.categories = {c["label"] for c in report.get("category_labels", [])}
+        # The report's paths are relative to the source root; files beside it are found here.
+        self.out_dir = report.get("_out_path") or report["inputs"]["out_dir"]
         self.parts = []
 
     # helpers
@@ -196,8 +199,9 @@ commit <code>{E(commit[:12])}</code>{E(dirty)} · {E(ran)} · report schema {E(r
         self.w("""<nav class="toc"><a href="#summary">Summary</a><a href="#items">Items</a>
 <a href="#gaps">Gaps &amp; orphans</a><a href="#matrices">Matrices</a><a href="#graphs">Graphs</a>
 <a href="#errata">Errata</a><a href="#vv">V&amp;V evidence</a><a href="#coverage">Coverage</a>
-<a href="#tests">All tests</a><a href="#method">Method &amp; warnings</a>""")
-        if os.path.exists(os.path.join(r["inputs"]["out_dir"], "api", "index.html")):
+<a href="#tests">All tests</a><a href="#method">Method &amp; warnings</a>
+<a href="#reviews">Link reviews</a><a href="#reqif">ReqIF</a>""")
+        if os.path.exists(os.path.join(self.out_dir, "api", "index.html")):
             self.w('<a href="api/index.html">API reference</a>')
         if self._players():
             self.w('<a href="#players">Recorded runs</a>')
@@ -219,6 +223,7 @@ any test or check fails. This report is complete nonetheless; the reasons are:<u
 <code>expected_failures</code>); each failing case is a finding described in
 docs/verification.md, printed with its seed so it can be replayed:""", g.get("known_failures"))
         self.goals()
+        self.w(render_audit.html_gate_box(self))
         self._test_list_box("targets-missed", "Targets not met (goals beyond the SRS)",
                             """These verification checks state project goals beyond the SRS (the project's speed
 floors); this run did not reach them. They do not gate the exit status, and the SRS items they
@@ -331,7 +336,8 @@ say how the figure is measured:<ul>{"".join(rows)}</ul></div>""")
                f'<a href="#gaps">items whose only evidence is weak</a> (no strong passing link): '
                f'{len(r["gaps"]["weak_evidence"])}; <a href="#links">trace links</a>: '
                f'{(r.get("link_summary") or {}).get("strong", 0)} strong, '
-               f'{(r.get("link_summary") or {}).get("weak", 0)} weak</li>'
+               f'{(r.get("link_summary") or {}).get("weak", 0)} weak, '
+               f'<a href="#reviews">{(r.get("reviews") or {}).get("suspect", 0)} suspect</a></li>'
                f'<li><a href="#warnings">Harness warnings</a>: {c["warnings"]}</li></ul>')
         self.w('</section>')
 
@@ -435,7 +441,8 @@ say how the figure is measured:<ul>{"".join(rows)}</ul></div>""")
             return ""
         cls = "st-ok" if g["grade"] == "strong" else "st-warn"
         why = "; ".join(g.get("reasons") or [])
-        return (f'<span class="badge {cls}" title="{E(why)}">{E(g["grade"])}</span> '
+        return (f'<span class="badge {cls}" title="{E(why)}">{E(g["grade"])}</span>'
+                f'{render_audit.review_badge(g.get("review"), g.get("changed"))} '
                 f'<span class="mute">{E(g["level"])}</span>' + (f'<br>{E(why)}' if why else ""))
 
     def link_review(self):
@@ -485,6 +492,7 @@ say how the figure is measured:<ul>{"".join(rows)}</ul></div>""")
             self.w(f'<tr><td>{E(title)}</td><td class="num">{len(g.get(key, []))}</td><td>{self.links(g.get(key, []))}</td></tr>')
         self.w('</tbody></table>')
         self.link_review()
+        self.w(render_audit.html_reviews(self))
         self.w('<h3 id="orphan-tags">Evidence → SRS: orphan code tags</h3>')
         if o["code_tags"]:
             self.w('<table class="data sortable"><thead><tr><th>Tag</th><th>Site</th><th>Text</th><th>Hint</th></tr></thead><tbody>')
@@ -742,7 +750,7 @@ say how the figure is measured:<ul>{"".join(rows)}</ul></div>""")
     def _players(self):
         """reports/players/index.json, written by the main job (tests/viewer/check_player.py):
         one entry per page of `tamias2d view`; [] when absent or unreadable."""
-        path = os.path.join(self.r["inputs"]["out_dir"], "players", "index.json")
+        path = os.path.join(self.out_dir, "players", "index.json")
         try:
             with open(path, encoding="utf-8") as fh:
                 entries = json.load(fh)
@@ -812,7 +820,7 @@ say how the figure is measured:<ul>{"".join(rows)}</ul></div>""")
                    f'<td class="num">{E(_fmt(f.get("line_covered")))}/{E(_fmt(f.get("line_total")))}</td>'
                    f'<td class="num">{E(_fmt(f.get("function_percent")))}</td><td class="num">{E(_fmt(f.get("branch_percent")))}</td></tr>')
         self.w('</tbody></table>')
-        if os.path.exists(os.path.join(self.r["inputs"]["out_dir"], "coverage.html")):
+        if os.path.exists(os.path.join(self.out_dir, "coverage.html")):
             self.w('<p><a href="coverage.html">Line-by-line coverage (gcovr HTML)</a></p>')
         self.w('</section>')
 
@@ -859,6 +867,7 @@ say how the figure is measured:<ul>{"".join(rows)}</ul></div>""")
                    '<code>main_job</code> in the V&amp;V evidence)</li>')
         self.w('</ul>')
         self.builds()
+        self.w(render_audit.html_reqif(self))
         cmds = run.get("commands") or []
         if cmds:
             self.w('<details><summary>Commands run</summary><pre>' + E("\n".join(
