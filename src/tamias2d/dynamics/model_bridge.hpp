@@ -102,11 +102,18 @@ inline double angular_velocity_change(double alpha, double h) {
                                                  u::from_value<u::Time>(h))
         .value();
 }
-/// IM5's decay factor 1 / (1 + h c) of a velocity damped at rate c (s^-1) over a substep h.
-inline double decay_factor(double rate, double h) {
-    return m::im5::decay_factor(u::from_value<u::Rate>(rate), u::from_value<u::Time>(h)).value();
+/// IM5's decay factor 1 / (1 + h c) over a substep h of a velocity damped at rate c (s^-1) by
+/// DD17's law, backward Euler of DD17's acceleration.
+inline double linear_decay_factor(double rate, double h) {
+    return m::im5::linear_decay_factor(u::from_value<u::Rate>(rate), u::from_value<u::Time>(h))
+        .value();
 }
-/// IM5 over a substep: v' = (v + a h) f, with f from decay_factor (1: IM1's DD4 step).
+/// The same for an angular velocity damped by DD18's law.
+inline double angular_decay_factor(double rate, double h) {
+    return m::im5::angular_decay_factor(u::from_value<u::Rate>(rate), u::from_value<u::Time>(h))
+        .value();
+}
+/// IM5 over a substep: v' = (v + a h) f, with f from linear_decay_factor (1: IM1's DD4 step).
 inline Vec2d velocity_step(Vec2d v, Vec2d a, double h, double decay) {
     return plain(m::im5::velocity_step(typed<u::Velocity>(v), typed<u::Acceleration>(a),
                                        u::from_value<u::Time>(h),

@@ -102,8 +102,10 @@ void StepSolver::prepare_bodies(const BodyStore& store, const std::vector<Load>&
         }
         if (any_damped_) {
             const BodySettings& set = store.settings[i];
-            linear_decay_.push_back(b.damped ? bridge::decay_factor(set.linear_damping, h) : 1.0);
-            angular_decay_.push_back(b.damped ? bridge::decay_factor(set.angular_damping, h) : 1.0);
+            linear_decay_.push_back(b.damped ? bridge::linear_decay_factor(set.linear_damping, h)
+                                             : 1.0);
+            angular_decay_.push_back(b.damped ? bridge::angular_decay_factor(set.angular_damping, h)
+                                              : 1.0);
         }
     }
 }
@@ -172,9 +174,10 @@ void StepSolver::prepare_bodies_in_blocks(const BodyStore& store, const std::vec
                 angular_accelerations_[s] = acc.alpha;
                 if (any_damped_) {
                     const BodySettings& set = store.settings[i];
-                    linear_decay_[s] = b.damped ? bridge::decay_factor(set.linear_damping, h) : 1.0;
+                    linear_decay_[s] =
+                        b.damped ? bridge::linear_decay_factor(set.linear_damping, h) : 1.0;
                     angular_decay_[s] =
-                        b.damped ? bridge::decay_factor(set.angular_damping, h) : 1.0;
+                        b.damped ? bridge::angular_decay_factor(set.angular_damping, h) : 1.0;
                 }
             }
         }
