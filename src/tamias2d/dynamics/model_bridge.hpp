@@ -19,6 +19,7 @@
 #include "tamias2d/model/dd21_target_constraint.hpp"
 #include "tamias2d/model/dd22_angular_constraint.hpp"
 #include "tamias2d/model/dd23_line_constraint.hpp"
+#include "tamias2d/model/dd29_time_of_impact.hpp"
 #include "tamias2d/model/im1_translational_motion.hpp"
 #include "tamias2d/model/im2_rotational_motion.hpp"
 #include "tamias2d/model/im3_collision_response.hpp"
@@ -133,6 +134,14 @@ inline Vec2d displacement(Vec2d v, double h) {
 /// DD6 over a substep: d phi = omega h.
 inline double rotation(double w, double h) {
     return m::dd06::angle_over(u::from_value<u::AngularVelocity>(w), u::from_value<u::Time>(h))
+        .value();
+}
+
+/// DD29's bound on how far any point of a body moves when its centre moves `translation` (m)
+/// and it turns `rotation` (rad, >= 0), its points at most `reach` (m) from the centre.
+inline double motion_bound(double translation, double rotation, double reach) {
+    return m::dd29::motion_bound(u::from_value<u::Length>(translation),
+                                 u::from_value<u::Angle>(rotation), u::from_value<u::Length>(reach))
         .value();
 }
 

@@ -669,7 +669,7 @@ void StepSolver::write_back(BodyStore& store, ShapeStore& shape_store, const Wor
                 reach = std::max(reach, k.radius + std::abs(k.center.x - b.local_center.x) +
                                             std::abs(k.center.y - b.local_center.y));
             }
-            fast = std::sqrt(dp2) + std::abs(sb.dq) * reach > seen;
+            fast = bridge::motion_bound(std::sqrt(dp2), std::abs(sb.dq), reach) > seen;
         }
         std::uint8_t done = 0;
         if (fast) {
