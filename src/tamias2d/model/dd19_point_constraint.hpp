@@ -51,14 +51,11 @@ inline Vec2<Impulse> impulse(PinMass K, Vec2<Velocity> rhs, Dimensionless mass_s
     return -(mass_scale * solved) - impulse_scale * accumulated;
 }
 
-/// \srs{DD19} P at the pin: +P on B, -P on A (T2); each velocity changes by P / m (DD10) and
-/// each angular velocity by r x P / I.
+/// \srs{DD19} P at the pin: +P on B, -P on A (T2), IM3's update equations for an impulse of any
+/// direction (each velocity changes by P / m, DD10, each angular velocity by r x P / I).
 inline void apply(Velocities& A, Velocities& B, InverseInertia a, InverseInertia b,
                   Vec2<Length> r_A, Vec2<Length> r_B, Vec2<Impulse> P) {
-    A.v -= a.inv_m * P;
-    A.omega -= a.inv_I * per_radian(cross(r_A, P));
-    B.v += b.inv_m * P;
-    B.omega += b.inv_I * per_radian(cross(r_B, P));
+    im3::apply_vector_impulse(B, A, b, a, r_B, r_A, P);
 }
 
 } // namespace tamias2d::model::dd19

@@ -3,6 +3,7 @@
 
 #include "tamias2d/model/dd08_collision_impulse.hpp"
 #include "tamias2d/model/im3_collision_response.hpp"
+#include "tamias2d/model/t2_newtons_third_law.hpp"
 #include "tamias2d/units/angle.hpp"
 
 namespace tamias2d::model::dd22 {
@@ -41,11 +42,12 @@ inline AngularImpulse clamp(AngularImpulse accumulated, AngularImpulse max) {
     return std::clamp(accumulated, -max, max);
 }
 
-/// \srs{DD22} +Lambda on B, -Lambda on A (T2 for torques): omega changes by Lambda / I (T4).
+/// \srs{DD22} +Lambda on B, -Lambda on A (T2 for torques): omega changes by Lambda / I (T4),
+/// IM3's angular jump.
 inline void apply(Velocities& A, Velocities& B, InverseInertia a, InverseInertia b,
                   AngularImpulse lambda) {
-    A.omega -= a.inv_I * lambda;
-    B.omega += b.inv_I * lambda;
+    A.omega += t2::reaction(im3::angular_velocity_change(a.inv_I, lambda));
+    B.omega += im3::angular_velocity_change(b.inv_I, lambda);
 }
 
 } // namespace tamias2d::model::dd22
