@@ -7,6 +7,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "tamias2d/dynamics/softness.hpp"
 #include "tamias2d/dynamics/solver_body.hpp"
 #include "tamias2d/model/dd03_linear_velocity.hpp"
 #include "tamias2d/model/dd04_linear_acceleration.hpp"
@@ -19,11 +20,15 @@
 #include "tamias2d/model/dd21_target_constraint.hpp"
 #include "tamias2d/model/dd22_angular_constraint.hpp"
 #include "tamias2d/model/dd23_line_constraint.hpp"
+#include "tamias2d/model/dd24_weld_constraint.hpp"
+#include "tamias2d/model/dd25_wheel_constraint.hpp"
+#include "tamias2d/model/dd26_motor_constraint.hpp"
 #include "tamias2d/model/dd29_time_of_impact.hpp"
 #include "tamias2d/model/im1_translational_motion.hpp"
 #include "tamias2d/model/im2_rotational_motion.hpp"
 #include "tamias2d/model/im3_collision_response.hpp"
 #include "tamias2d/model/im5_motion_with_damping.hpp"
+#include "tamias2d/model/im6_motion_with_joints.hpp"
 #include "tamias2d/model/im7_soft_contact.hpp"
 
 namespace tamias2d::bridge {
@@ -218,6 +223,44 @@ inline void apply_impulse(Body& a, Body& b, V arm_a, V arm_b, u::Vec2<V> dir, V 
     b.w = vb.omega.value();
 }
 
+// IM6, the joints' soft form, and their bounds (DD10, DD22).
+
+/// IM6's biased velocity error Cdot + beta C of a point (m s^-1, m).
+inline Vec2d biased_error(Vec2d velocity_error, double bias_rate, Vec2d position_error) {
+    return plain(m::im6::biased_velocity_error(typed<u::Velocity>(velocity_error),
+                                               u::from_value<u::Rate>(bias_rate),
+                                               typed<u::Length>(position_error)));
+}
+/// The same along one direction (m s^-1, m).
+inline double biased_error(double velocity_error, double bias_rate, double position_error) {
+    return m::im6::biased_velocity_error(u::from_value<u::Velocity>(velocity_error),
+                                         u::from_value<u::Rate>(bias_rate),
+                                         u::from_value<u::Length>(position_error))
+        .value();
+}
+/// The same for an angle (rad s^-1, rad).
+inline double biased_angular_error(double speed, double bias_rate, double angle_error) {
+    return m::im6::biased_velocity_error(u::from_value<u::AngularVelocity>(speed),
+                                         u::from_value<u::Rate>(bias_rate),
+                                         u::from_value<u::Angle>(angle_error))
+        .value();
+}
+/// DD10's bound F_max h on a joint's impulse accumulated in a substep h (N s), as DD21 and DD23
+/// take it.
+inline double force_impulse_bound(double max_force, double h) {
+    return m::dd21::impulse_bound(u::from_value<u::Force>(max_force), u::from_value<u::Time>(h))
+        .value();
+}
+inline double axial_force_impulse_bound(double max_force, double h) {
+    return m::dd23::impulse_bound(u::from_value<u::Force>(max_force), u::from_value<u::Time>(h))
+        .value();
+}
+/// DD22's bound tau_max h on a motor's angular impulse accumulated in a substep h (N m s).
+inline double torque_impulse_bound(double max_torque, double h) {
+    return m::dd22::impulse_bound(u::from_value<u::Torque>(max_torque), u::from_value<u::Time>(h))
+        .value();
+}
+
 // DD19, the revolute joint's pin, on one pair of solver bodies (joints are solved one by one).
 
 /// DD19's position error C (m): centres' offset plus the pin's offsets r_b - r_a.
@@ -379,6 +422,59 @@ inline std::pair<double, double> block_impulse(const SolverBody& a, const Solver
 inline double clamp_axial_impulse(double accumulated, double max) {
     return m::dd23::clamp(u::from_value<u::Impulse>(accumulated), u::from_value<u::Impulse>(max))
         .value();
+}
+
+// DD24-DD26: the weld's angle, the wheel's line, the motor joint's rows.
+
+/// DD24's angular impulse (N m s) of a weld from the joint speed and the angle error, in IM6's
+/// soft form with softness s (the relax: rigid on the speed alone).
+inline double weld_angular_impulse(const SolverBody& a, const SolverBody& b, double speed,
+                                   double angle_error, const Softness& s, bool use_bias,
+                                   double accumulated) {
+    return m::dd24::angular_impulse(
+               inverse_inertia(a), inverse_inertia(b), u::from_value<u::AngularVelocity>(speed),
+               u::from_value<u::Angle>(angle_error),
+               {u::from_value<u::Rate>(s.bias_rate), s.mass_scale, s.impulse_scale}, use_bias,
+               m::dd22::AngularImpulse::from_value(accumulated))
+        .value();
+}
+/// DD25's impulse (N s) across a wheel's axis from the line's rate and error and the moment
+/// arms of a_perp, in IM6's soft form with softness s (the relax: rigid on the rate alone).
+inline double wheel_line_impulse(const SolverBody& a, const SolverBody& b, double perp_arm_a,
+                                 double perp_arm_b, double rate, double line_error,
+                                 const Softness& s, bool use_bias, double accumulated) {
+    return m::dd25::line_impulse(
+               inverse_inertia(a), inverse_inertia(b), u::from_value<u::Length>(perp_arm_a),
+               u::from_value<u::Length>(perp_arm_b), u::from_value<u::Velocity>(rate),
+               u::from_value<u::Length>(line_error),
+               {u::from_value<u::Rate>(s.bias_rate), s.mass_scale, s.impulse_scale}, use_bias,
+               u::from_value<u::Impulse>(accumulated))
+        .value();
+}
+/// DD26's correction rate c / h (s^-1).
+inline double correction_rate(double correction, double h) {
+    return m::dd26::correction_rate(correction, u::from_value<u::Time>(h)).value();
+}
+/// DD26's angular row: the accumulated angular impulse after one iteration (N m s).
+inline double motor_angular_update(const SolverBody& a, const SolverBody& b, double speed,
+                                   double angle_error, double rate, double max_torque, double h,
+                                   double accumulated) {
+    return m::dd26::angular_update(
+               inverse_inertia(a), inverse_inertia(b), u::from_value<u::AngularVelocity>(speed),
+               u::from_value<u::Angle>(angle_error), u::from_value<u::Rate>(rate),
+               u::from_value<u::Torque>(max_torque), u::from_value<u::Time>(h),
+               m::dd22::AngularImpulse::from_value(accumulated))
+        .value();
+}
+/// DD26's linear row: the accumulated impulse after one iteration (N s).
+inline Vec2d motor_linear_update(const SolverBody& a, Vec2d r_a, const SolverBody& b, Vec2d r_b,
+                                 Vec2d velocity_error, Vec2d position_error, double rate,
+                                 double max_force, double h, Vec2d accumulated) {
+    return plain(m::dd26::linear_update(
+        inverse_inertia(a), inverse_inertia(b), typed<u::Length>(r_a), typed<u::Length>(r_b),
+        typed<u::Velocity>(velocity_error), typed<u::Length>(position_error),
+        u::from_value<u::Rate>(rate), u::from_value<u::Force>(max_force), u::from_value<u::Time>(h),
+        typed<u::Impulse>(accumulated)));
 }
 
 /// The four adapters the contact iteration calls, as one type it is instantiated with

@@ -428,8 +428,8 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
     const double h = dt / n;
     std::vector<Joint>& joints = joint_store.joints;
     // IM6: the joints' soft bias, capped like the contacts' at a quarter of the substep rate.
-    const Softness joint_softness =
-        make_softness(capped_frequency(def.joint_hertz, n, dt), def.joint_damping_ratio, h);
+    const Softness joint_softness = make_joint_softness(
+        capped_joint_frequency(def.joint_hertz, n, dt), def.joint_damping_ratio, h);
     // The touching manifolds in creation order, as the colouring sees them; those that can
     // bounce get a slot for the restitution pass's copy, also in creation order.
     const std::uint32_t bounce_count = list_edges(contacts, tasks);

@@ -2,6 +2,7 @@
 #include "tamias2d/model/dd08_collision_impulse.hpp"
 #include "tamias2d/model/dd09_chasles_theorem.hpp"
 #include "tamias2d/model/im3_collision_response.hpp"
+#include "tamias2d/model/im6_motion_with_joints.hpp"
 #include "tamias2d/units/angle.hpp"
 #include "tamias2d/units/vec2.hpp"
 
@@ -48,7 +49,7 @@ inline Vec2<Impulse> impulse(PinMass K, Vec2<Velocity> rhs, Dimensionless mass_s
     const auto det = K.k11 * K.k22 - K.k12 * K.k12;
     const Vec2<Impulse> solved{(K.k22 * rhs.x - K.k12 * rhs.y) / det,
                                (K.k11 * rhs.y - K.k12 * rhs.x) / det};
-    return -(mass_scale * solved) - impulse_scale * accumulated;
+    return im6::soft_impulse(mass_scale, -solved, impulse_scale, accumulated);
 }
 
 /// \srs{DD19} P at the pin: +P on B, -P on A (T2), IM3's update equations for an impulse of any

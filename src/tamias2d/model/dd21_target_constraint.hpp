@@ -1,4 +1,5 @@
 #pragma once
+#include "tamias2d/model/dd10_impulse.hpp"
 #include "tamias2d/units/vec2.hpp"
 
 namespace tamias2d::model::dd21 {
@@ -7,6 +8,11 @@ using namespace tamias2d::units;
 /// \srs{DD21} Position error C = (p_B + r_B) - x_T: the grabbed point minus the target.
 inline Vec2<Length> position_error(Vec2<Length> center, Vec2<Length> r, Vec2<Length> target) {
     return (center + r) - target;
+}
+
+/// \srs{DD21} The bound F_max h on the impulse accumulated in a substep h (DD10).
+inline Impulse impulse_bound(Force max_force, Time h) {
+    return dd10::impulse_bound(max_force, h);
 }
 
 /// \srs{DD21} The accumulated impulse clamped to the length F_max h: the joint never pulls

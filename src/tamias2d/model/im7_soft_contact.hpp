@@ -38,11 +38,10 @@ inline Softness softness(Rate f, Dimensionless zeta, Time h) {
 
 /// \srs{IM7} The soft impulse of one iteration: the rigid impulse (DD8's impulse_to_reach
 /// towards the point's target) scaled by the mass scale, minus the relaxed share of the
-/// impulse accumulated so far. (V: double, or a pack of lanes; the scales are plain values
-/// of V, dimensionless.)
-template <class V>
-Over<Impulse, V> soft_impulse(V mass_scale, Over<Impulse, V> rigid, V impulse_scale,
-                              Over<Impulse, V> accumulated) {
+/// impulse accumulated so far. Q: an impulse (N s), a vector of them or an angular impulse (a
+/// joint's, IM6), of doubles or of packs of lanes; S: the scales, dimensionless (plain values
+/// of the packs' type, or quantities).
+template <class S, class Q> Q soft_impulse(S mass_scale, Q rigid, S impulse_scale, Q accumulated) {
     return rigid * mass_scale - accumulated * impulse_scale;
 }
 
