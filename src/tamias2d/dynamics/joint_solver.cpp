@@ -68,11 +68,11 @@ void solve_angular_limits(Joint& j, SolverBody& a, SolverBody& b, const Softness
     const double angle = current_joint_angle(j, a, b);
     for (const bool lower : {true, false}) {
         const double c = lower ? angle - j.lower_limit : j.upper_limit - angle;
-        const LimitTerms t = limit_terms(c, softness, h, use_bias);
+        const bridge::LimitTarget t = bridge::limit_target<units::Angle>(c, softness, h, use_bias);
         // The upper bound's impulse is taken positive against the turn, then applied negated.
         const double speed = lower ? bridge::joint_speed(a, b) : -bridge::joint_speed(a, b);
         double& accumulated = lower ? j.lower_impulse : j.upper_impulse;
-        const double lambda = bridge::angular_impulse(a, b, speed + t.bias, t.mass_scale,
+        const double lambda = bridge::angular_impulse(a, b, speed - t.velocity, t.mass_scale,
                                                       t.impulse_scale, accumulated);
         const double updated = std::max(accumulated + lambda, 0.0);
         const double applied = updated - accumulated;
@@ -85,11 +85,12 @@ void solve_axial_limits(Joint& j, SolverBody& a, SolverBody& b, double arm_a, do
                         double value, const Softness& softness, double h, bool use_bias) {
     for (const bool lower : {true, false}) {
         const double c = lower ? value - j.lower_limit : j.upper_limit - value;
-        const LimitTerms t = limit_terms(c, softness, h, use_bias);
+        const bridge::LimitTarget t = bridge::limit_target<units::Length>(c, softness, h, use_bias);
         const double v = bridge::axial_velocity_error(a, arm_a, b, arm_b, n);
         double& accumulated = lower ? j.lower_impulse : j.upper_impulse;
-        const double lambda = bridge::axial_impulse(a, arm_a, b, arm_b, (lower ? v : -v) + t.bias,
-                                                    t.mass_scale, t.impulse_scale, accumulated);
+        const double lambda =
+            bridge::axial_impulse(a, arm_a, b, arm_b, (lower ? v : -v) - t.velocity, t.mass_scale,
+                                  t.impulse_scale, accumulated);
         const double updated = std::max(accumulated + lambda, 0.0);
         const double applied = updated - accumulated;
         accumulated = updated;

@@ -4,11 +4,12 @@
 // (verification/bench measures it); the formulas themselves live only in model/.
 #pragma once
 
+#include <limits>
 #include <type_traits>
 #include <utility>
 
-#include "tamias2d/dynamics/softness.hpp"
 #include "tamias2d/dynamics/solver_body.hpp"
+#include "tamias2d/dynamics/solver_settings.hpp"
 #include "tamias2d/model/dd03_linear_velocity.hpp"
 #include "tamias2d/model/dd04_linear_acceleration.hpp"
 #include "tamias2d/model/dd06_angular_velocity.hpp"
@@ -261,6 +262,27 @@ inline double torque_impulse_bound(double max_torque, double h) {
         .value();
 }
 
+/// IM7's target, as a joint's one-sided limit takes it: the limit `c` (>= 0 inside) ahead of
+/// the bound closes within the substep h (speculative), a bound passed is pulled back at the
+/// softness' bias rate (soft) or held (the relax, soft false); no slop, no cap. c and the
+/// target are a length and a velocity (m, m s^-1) or an angle and an angular velocity.
+struct LimitTarget {
+    double velocity = 0.0, mass_scale = 1.0, impulse_scale = 0.0;
+};
+template <class Gap>
+inline LimitTarget limit_target(double c, const Softness& softness, double h, bool soft) {
+    using Vel = decltype(Gap{} / u::Time{});
+    const Gap gap = Gap::from_value(c), none{};
+    const Vel uncapped = Vel::from_value(std::numeric_limits<double>::infinity());
+    const u::Time step = u::from_value<u::Time>(h);
+    const u::Rate rate = u::from_value<u::Rate>(softness.bias_rate);
+    const auto t = soft ? m::im7::target_velocity<true>(gap, step, rate, softness.mass_scale,
+                                                        softness.impulse_scale, none, uncapped)
+                        : m::im7::target_velocity<false>(gap, step, rate, softness.mass_scale,
+                                                         softness.impulse_scale, none, uncapped);
+    return {t.velocity.value(), t.mass_scale, t.impulse_scale};
+}
+
 // DD19, the revolute joint's pin, on one pair of solver bodies (joints are solved one by one).
 
 /// DD19's position error C (m): centres' offset plus the pin's offsets r_b - r_a.
@@ -477,7 +499,16 @@ inline Vec2d motor_linear_update(const SolverBody& a, Vec2d r_a, const SolverBod
         typed<u::Impulse>(accumulated)));
 }
 
-/// The four adapters the contact iteration calls, as one type it is instantiated with
+/// IM7's target of a contact point (V: double or a pack) and the scales its impulse takes.
+template <class V> struct Target {
+    V target{};
+    V mass_scale{};
+    V impulse_scale{};
+};
+/// IM7's two impulses of a two-point manifold (V: double or a pack).
+template <class V> struct TwoPointSolution { V x1{}, x2{}; };
+
+/// The adapters the contact iteration calls, as one type it is instantiated with
 /// (contact_iteration.hpp's Model parameter).
 struct Model {
     template <class V> static V impulse_to_reach(V vn, V target, V effective_mass) {
@@ -494,6 +525,32 @@ struct Model {
     template <class Body, class V = value_of<Body>>
     static void apply_impulse(Body& a, Body& b, V arm_a, V arm_b, u::Vec2<V> dir, V lambda) {
         bridge::apply_impulse(a, b, arm_a, arm_b, dir, lambda);
+    }
+    /// IM7's target for separation s (m) in the soft iteration (soft) or the relax.
+    template <bool soft, class V> static Target<V> target(V s, const ContactSolverSettings& st) {
+        const auto t = m::im7::target_velocity<soft>(
+            typed_value<u::Length>(s), typed_value<u::Rate>(broadcast<V>(st.inv_h)),
+            typed_value<u::Rate>(broadcast<V>(st.softness.bias_rate)),
+            broadcast<V>(st.softness.mass_scale), broadcast<V>(st.softness.impulse_scale),
+            typed_value<u::Length>(broadcast<V>(st.linear_slop)),
+            typed_value<u::Velocity>(broadcast<V>(st.push_max_velocity)));
+        return {t.velocity.value(), t.mass_scale, t.impulse_scale};
+    }
+    /// IM7's two-point impulses from K (k11, k12, k22 in kg^-1, its inverse in kg), the points'
+    /// effective masses m1, m2, velocities vn1, vn2, targets t1, t2 and accumulated impulses.
+    template <class V>
+    static TwoPointSolution<V> two_point_impulses(V k11, V k12, V k22, V inv11, V inv12, V inv22,
+                                                  V m1, V m2, V vn1, V vn2, V t1, V t2, V x1,
+                                                  V x2) {
+        const m::im7::PairMass<V> K{
+            typed_value<u::InverseMass>(k11), typed_value<u::InverseMass>(k12),
+            typed_value<u::InverseMass>(k22), typed_value<u::Mass>(inv11),
+            typed_value<u::Mass>(inv12),      typed_value<u::Mass>(inv22)};
+        const m::im7::PairImpulses<V> x = m::im7::two_point_impulses(
+            K, typed_value<u::Mass>(m1), typed_value<u::Mass>(m2), typed_value<u::Velocity>(vn1),
+            typed_value<u::Velocity>(vn2), typed_value<u::Velocity>(t1),
+            typed_value<u::Velocity>(t2), typed_value<u::Impulse>(x1), typed_value<u::Impulse>(x2));
+        return {x.x1.value(), x.x2.value()};
     }
 };
 
