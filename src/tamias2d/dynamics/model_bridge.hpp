@@ -246,6 +246,20 @@ inline double biased_angular_error(double speed, double bias_rate, double angle_
                                          u::from_value<u::Angle>(angle_error))
         .value();
 }
+/// IM6's reaction force (N) of a joint's impulse (N s) over the substep of rate inv_h (s^-1).
+inline Vec2d reaction_force(Vec2d impulse, double inv_h) {
+    return plain(m::im6::reaction(typed<u::Impulse>(impulse), u::from_value<u::Rate>(inv_h)));
+}
+inline double reaction_force(double impulse, double inv_h) {
+    return m::im6::reaction(u::from_value<u::Impulse>(impulse), u::from_value<u::Rate>(inv_h))
+        .value();
+}
+/// IM6's reaction torque (N m) of a joint's angular impulse (N m s).
+inline double reaction_torque(double angular_impulse, double inv_h) {
+    return m::im6::reaction(m::dd22::AngularImpulse::from_value(angular_impulse),
+                            u::from_value<u::Rate>(inv_h))
+        .value();
+}
 /// DD10's bound F_max h on a joint's impulse accumulated in a substep h (N s), as DD21 and DD23
 /// take it.
 inline double force_impulse_bound(double max_force, double h) {

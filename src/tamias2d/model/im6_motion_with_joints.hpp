@@ -36,4 +36,10 @@ template <class S, class Q> Q soft_impulse(S mass_scale, Q rigid, S impulse_scal
     return im7::soft_impulse(mass_scale, rigid, impulse_scale, accumulated);
 }
 
+/// \srs{IM6} A joint's reaction: its impulse over the substep, lambda / h, from the substep rate
+/// 1/h (a force from a linear impulse, a torque from an angular one).
+template <class J> auto reaction(J impulse, Rate inv_h) {
+    return impulse * inv_h;
+}
+
 } // namespace tamias2d::model::im6
