@@ -151,6 +151,24 @@ inline double motion_bound(double translation, double rotation, double reach) {
         .value();
 }
 
+/// DD29's linear motion over the step: a centre (m), an angle (rad), a velocity (m s^-1) or an
+/// angular velocity (rad s^-1) at the fraction t, from its values at the start and the end.
+inline Vec2d center_at(Vec2d start, Vec2d end, double t) {
+    return plain(m::dd29::at_fraction(typed<u::Length>(start), typed<u::Length>(end), t));
+}
+inline double angle_at(double start, double end, double t) {
+    return m::dd29::at_fraction(u::from_value<u::Angle>(start), u::from_value<u::Angle>(end), t)
+        .value();
+}
+inline Vec2d velocity_at(Vec2d start, Vec2d end, double t) {
+    return plain(m::dd29::at_fraction(typed<u::Velocity>(start), typed<u::Velocity>(end), t));
+}
+inline double angular_velocity_at(double start, double end, double t) {
+    return m::dd29::at_fraction(u::from_value<u::AngularVelocity>(start),
+                                u::from_value<u::AngularVelocity>(end), t)
+        .value();
+}
+
 /// DD8's moment arm r x n of unit direction n at anchor r (m).
 template <class V> inline V moment_arm(u::Vec2<V> r, u::Vec2<V> n) {
     return m::dd08::moment_arm(typed_vec<u::Length>(r), n).value();
