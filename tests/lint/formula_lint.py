@@ -104,9 +104,10 @@ RULES = [
          home=(MODEL_DIR + "im7_soft_contact.hpp",)),
     Rule("dd26_correction_rate", "DD26 (the correction rate c / h)",
          r"\bcorrection\w*\s*/\s*h\b", home=(MODEL_DIR + "dd26_motor_constraint.hpp",)),
-    Rule("joint_impulse_bound", "DD10/DD22 (a joint's impulse bound F_max h, tau_max h)",
+    Rule("joint_impulse_bound", "DD21/DD22 (a joint's impulse bound F_max h, tau_max h)",
          r"\bmax_(?:force|motor|torque)\s*\*\s*h\b",
-         home=(MODEL_DIR + "dd10_impulse.hpp", MODEL_DIR + "dd22_angular_constraint.hpp")),
+         home=(MODEL_DIR + "dd21_target_constraint.hpp",
+               MODEL_DIR + "dd22_angular_constraint.hpp")),
 ]
 
 # (rule, path) -> reason, for a duplicate known and waiting; none today.

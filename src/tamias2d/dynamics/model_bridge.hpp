@@ -278,8 +278,8 @@ inline double reaction_torque(double angular_impulse, double inv_h) {
                             u::from_value<u::Rate>(inv_h))
         .value();
 }
-/// DD10's bound F_max h on a joint's impulse accumulated in a substep h (N s), as DD21 and DD23
-/// take it.
+/// DD21's bound F_max h on a joint's impulse accumulated in a substep h (N s), and DD23's (the
+/// same).
 inline double force_impulse_bound(double max_force, double h) {
     return m::dd21::impulse_bound(u::from_value<u::Force>(max_force), u::from_value<u::Time>(h))
         .value();

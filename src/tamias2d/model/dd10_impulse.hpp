@@ -17,12 +17,6 @@ Vec2<Over<Velocity, V>> velocity_change(Vec2<Over<Impulse, V>> J, Over<InverseMa
     return inv_m * J;
 }
 
-/// \srs{DD10} The largest impulse a force of at most F_max gives over h: J = integral of F dt
-/// <= F_max h (a joint's bound on its accumulated impulse, DD21, DD23, DD26).
-inline Impulse impulse_bound(Force F_max, Time h) {
-    return F_max * h;
-}
-
 /// \srs{DD10} J = integral of F dt, for F constant over dt.
 inline Vec2<Impulse> impulse_of_constant_force(Vec2<Force> F, Time dt) {
     return F * dt;

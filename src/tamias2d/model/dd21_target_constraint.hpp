@@ -1,5 +1,4 @@
 #pragma once
-#include "tamias2d/model/dd10_impulse.hpp"
 #include "tamias2d/units/vec2.hpp"
 
 namespace tamias2d::model::dd21 {
@@ -10,9 +9,10 @@ inline Vec2<Length> position_error(Vec2<Length> center, Vec2<Length> r, Vec2<Len
     return (center + r) - target;
 }
 
-/// \srs{DD21} The bound F_max h on the impulse accumulated in a substep h (DD10).
+/// \srs{DD21} The bound F_max h on the impulse accumulated in a substep h: the impulse of the
+/// largest force over h (DD10's J = F dt). DD23's motor and DD26 bound theirs so too.
 inline Impulse impulse_bound(Force max_force, Time h) {
-    return dd10::impulse_bound(max_force, h);
+    return max_force * h;
 }
 
 /// \srs{DD21} The accumulated impulse clamped to the length F_max h: the joint never pulls

@@ -2,7 +2,7 @@
 #include <algorithm>
 
 #include "tamias2d/model/dd08_collision_impulse.hpp"
-#include "tamias2d/model/dd10_impulse.hpp"
+#include "tamias2d/model/dd21_target_constraint.hpp"
 #include "tamias2d/model/dd22_angular_constraint.hpp"
 #include "tamias2d/model/im6_motion_with_joints.hpp"
 #include "tamias2d/units/angle.hpp"
@@ -60,10 +60,10 @@ inline BlockImpulse block_impulse(InverseInertia A, InverseInertia B, Length per
             im6::soft_impulse(mass_scale, -angular, impulse_scale, accumulated.angular)};
 }
 
-/// \srs{DD23} The bound F_max h on a motor's impulse along the axis accumulated in a substep h
-/// (DD10).
+/// \srs{DD23} The bound F_max h on a motor's impulse along the axis accumulated in a substep h,
+/// as DD21 bounds its.
 inline Impulse impulse_bound(Force max_force, Time h) {
-    return dd10::impulse_bound(max_force, h);
+    return dd21::impulse_bound(max_force, h);
 }
 
 /// \srs{DD23} A motor's accumulated impulse along the axis bounded by F_max h: [-max, max].
