@@ -50,18 +50,6 @@ void apply_impulse(VelocitiesOver<V>& A, VelocitiesOver<V>& B, InverseInertiaOve
     B.omega += t2::reaction(angular_velocity_change_of_moment(b.inv_I, j * arm_B));
 }
 
-/// \srs{IM3} The update equations for an impulse J of any direction (a joint's, DD19): J on A
-/// at r_AP from its centre of mass, -J on B at r_BP (T2): v_A' = v_A + J / m_A (DD10),
-/// v_B' = v_B - J / m_B, omega_A' = omega_A + (r_AP x J) / I_A, omega_B' = omega_B -
-/// (r_BP x J) / I_B.
-inline void apply_vector_impulse(Velocities& A, Velocities& B, InverseInertia a, InverseInertia b,
-                                 Vec2<Length> r_AP, Vec2<Length> r_BP, Vec2<Impulse> J) {
-    A.v += dd10::velocity_change(J, a.inv_m);
-    B.v += t2::reaction(dd10::velocity_change(J, b.inv_m));
-    A.omega += angular_velocity_change_of_moment(a.inv_I, cross(r_AP, J));
-    B.omega += t2::reaction(angular_velocity_change_of_moment(b.inv_I, cross(r_BP, J)));
-}
-
 /// \srs{IM3} The same from the anchors r_AP, r_BP.
 template <class V>
 void apply_impulse(VelocitiesOver<V>& A, VelocitiesOver<V>& B, InverseInertiaOver<V> a,
