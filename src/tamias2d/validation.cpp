@@ -8,6 +8,7 @@
 #include "tamias2d/errors.hpp"
 #include "tamias2d/geometry/shape_factory.hpp"
 #include "tamias2d/math/vec2d.hpp"
+#include "tamias2d/model/dcx_shape_non_degenerate_shapes.hpp"
 
 namespace tamias2d {
 
@@ -81,13 +82,11 @@ void validate_proportions(const Polygon& p) {
     // make_polygon's final check, term for term, on the same vertex triples and the same fan
     // (its hull order is the polygon's); the area's sign is dropped so that a clockwise
     // polygon reaches validate's orientation check instead.
-    double twice_area = 0.0;
     double min_height = extent;
-    for (int i = 0; i < n; ++i) {
-        twice_area += cross(p.vertices[i] - p.vertices[0], p.vertices[(i + 1) % n] - p.vertices[0]);
+    for (int i = 0; i < n; ++i)
         min_height = std::min(min_height, distance_to_line(p.vertices[(i + n - 1) % n],
                                                            p.vertices[(i + 1) % n], p.vertices[i]));
-    }
+    const double area = model::dcx_shape::polygon_area(p.vertices.data(), std::size_t(n)).value();
     const std::string of_extent = detail::format_value(hull_weld_tolerance) + " x the extent (" +
                                   detail::format_value(extent) + " m)";
     if (!(min_height >= tol))
@@ -95,8 +94,8 @@ void validate_proportions(const Polygon& p) {
                               "must be >= " + of_extent +
                                   ": every vertex that far from its neighbours' chord (a sliver)",
                               "DCX_shape");
-    if (!(std::abs(twice_area) > 2.0 * tol * extent))
-        throw ValidationError("polygon.area", 0.5 * twice_area,
+    if (!(std::abs(area) > tol * extent))
+        throw ValidationError("polygon.area", area,
                               "must be > " + of_extent + " x the extent (a sliver)", "DCX_shape");
 }
 

@@ -180,7 +180,8 @@ struct World::Impl {
     void break_joints() {
         for (std::uint32_t i = 0; i < joints.joints.size(); ++i) {
             const Joint& j = joints.joints[i];
-            if (!j.alive || !(length(reaction_impulse(j)) * inv_h > j.break_force))
+            if (!j.alive ||
+                !(bridge::reaction_force(length(reaction_impulse(j)), inv_h) > j.break_force))
                 continue;
             broken.push_back(joints.id(i));
             unjoin(i);
@@ -549,11 +550,11 @@ bool World::is_valid(JointId id) const {
 }
 
 Vec2d World::joint_reaction_force(JointId id) const {
-    return reaction_impulse(impl_->joints.get(id)) * impl_->inv_h;
+    return bridge::reaction_force(reaction_impulse(impl_->joints.get(id)), impl_->inv_h);
 }
 
 double World::joint_reaction_torque(JointId id) const {
-    return reaction_angular_impulse(impl_->joints.get(id)) * impl_->inv_h;
+    return bridge::reaction_torque(reaction_angular_impulse(impl_->joints.get(id)), impl_->inv_h);
 }
 
 double World::joint_angle(JointId id) const {
