@@ -1,7 +1,7 @@
 #include "tamias2d/math/quadrant_reduction.hpp"
 
-#include <bit>
 #include <cstdint>
+#include <cstring>
 
 namespace tamias2d::math {
 namespace {
@@ -48,7 +48,8 @@ QuadrantReduction cody_waite(double x) {
 /// 1983): x = m 2^e (m < 2^53) times 2/pi modulo 4, from the 192 bits of 2/pi that matter: the
 /// earlier ones make multiples of 4, the later ones less than 2^-135 of a quarter turn.
 QuadrantReduction payne_hanek(double x) {
-    const std::uint64_t bits = std::bit_cast<std::uint64_t>(x);
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &x, sizeof bits); // (no std::bit_cast in the WebAssembly build's libc++)
     const int e = static_cast<int>(bits >> 52) - 1075; // x >= 2^20: normal
     const std::uint64_t m = (bits & ((std::uint64_t{1} << 52) - 1)) | (std::uint64_t{1} << 52);
     // The window: bits e - 1 .. e + 190 of 2/pi (bit i weighs 2^-i), as six words, least

@@ -8,9 +8,10 @@
 // bits everywhere.
 #include "tamias2d/math/sincos.hpp"
 
-#include <bit>
 #include <cfloat>
+#include <cmath>
 #include <cstdint>
+#include <cstring>
 
 #include "tamias2d/math/error_free.hpp"
 #include "tamias2d/math/quadrant_reduction.hpp"
@@ -65,9 +66,10 @@ double cos_kernel(double x, double y) {
 } // namespace
 
 SinCos sincos(double x) {
-    const std::uint64_t bits = std::bit_cast<std::uint64_t>(x);
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &x, sizeof bits); // (no std::bit_cast in the WebAssembly build's libc++)
     const bool negative = (bits >> 63) != 0;
-    const double ax = std::bit_cast<double>(bits & ~(std::uint64_t{1} << 63));
+    const double ax = std::fabs(x);
     if (!(ax <= DBL_MAX)) { // infinite or NaN
         const double nan = x - x;
         return {nan, nan};
