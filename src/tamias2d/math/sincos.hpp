@@ -13,8 +13,12 @@ struct SinCos {
     double cos = 1.0;
 };
 
-/// sin x and cos x, each within 1 ulp (tests/model/test_dd32_rotation.cpp), for every finite x;
-/// NaN for an infinite or NaN x. Exported for the scene reader (tamias2d_io).
+/// sin x and cos x for a finite x, each within 1 ulp on every argument tested (random ones over
+/// the whole range and each binade's nearest to a multiple of pi/2:
+/// tests/model/test_dd32_rotation.cpp); NaN for an infinite or NaN x. Marked TAMIAS2D_EXPORT
+/// because the scene library's sinusoidal load calls it: a shared libtamias2d exports it for
+/// libtamias2d_io beside the API, as it does validation.hpp's functions; no public header
+/// declares it.
 TAMIAS2D_EXPORT SinCos sincos(double x);
 
 } // namespace tamias2d::math
