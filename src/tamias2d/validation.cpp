@@ -7,6 +7,7 @@
 
 #include "tamias2d/errors.hpp"
 #include "tamias2d/geometry/shape_factory.hpp"
+#include "tamias2d/math/hypot.hpp"
 #include "tamias2d/math/vec2d.hpp"
 #include "tamias2d/model/dcx_shape_non_degenerate_shapes.hpp"
 
@@ -324,7 +325,7 @@ void validate_motor(double speed, std::string_view speed_unit, const char* max_f
 /// nor underflows (either would normalise it to zero).
 void validate_axis(Vec2d axis) {
     require_within("joint.axis", axis, supported::input_max, "");
-    const double len = std::hypot(axis.x, axis.y);
+    const double len = math::hypot(axis.x, axis.y); // the same bits everywhere
     if (!(len > 0.0))
         throw ValidationError("joint.axis", len, "must have a non-zero length", "DCX_joint");
     require_scale("joint.axis", len, supported::input_min, 2.0 * supported::input_max, "");

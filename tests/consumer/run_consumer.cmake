@@ -153,8 +153,8 @@ if("shared" IN_LIST MODES)
   endfunction()
 
   # The names the public headers declare (comments stripped): what an exported symbol may name;
-  # and those of the validation functions the scene library calls in the physics library
-  # (src/tamias2d/validation.hpp says why they are exported).
+  # and those of the validation functions and the sine the scene library calls in the physics
+  # library (src/tamias2d/validation.hpp and math/sincos.hpp say why they are exported).
   function(declared_names result)
     set(names operator)
     foreach(h IN LISTS ARGN)
@@ -168,7 +168,8 @@ if("shared" IN_LIST MODES)
   endfunction()
   file(GLOB_RECURSE headers ${SOURCE_DIR}/include/tamias2d/*.hpp)
   declared_names(public_names ${headers})
-  declared_names(validation_names ${SOURCE_DIR}/src/tamias2d/validation.hpp)
+  declared_names(validation_names ${SOURCE_DIR}/src/tamias2d/validation.hpp
+                                  ${SOURCE_DIR}/src/tamias2d/math/sincos.hpp)
 
   foreach(lib tamias2d tamias2d_io)
     file(GLOB_RECURSE so ${sp}/lib${lib}.so.${abi})
@@ -187,7 +188,8 @@ if("shared" IN_LIST MODES)
       message(FATAL_ERROR "${so} does not need libtamias2d.so.${abi}: ${needed}")
     endif()
     # Oracle: the public headers. Every symbol the library exports names a declaration of theirs
-    # (tamias2d::World::step, typeinfo for tamias2d::ValidationError, ...) or of validation.hpp:
+    # (tamias2d::World::step, typeinfo for tamias2d::ValidationError, ...) or of validation.hpp
+    # or math/sincos.hpp:
     # nothing else private to the engine, no Boost or nlohmann-json code. The one exception is
     # the standard library's own: libstdc++ declares namespace std visible, so that an instance
     # of its templates (and a static inside one) stays one per program; those are weak or
@@ -241,7 +243,8 @@ if("shared" IN_LIST MODES)
       message(FATAL_ERROR "${so} exports ${api} symbols of the API and these others:${bad}")
     endif()
     message(STATUS "OK: ${so}: SONAME ${soname}; exports ${api} symbols of the API, "
-                   "${validation} validation functions and ${standard} weak standard-library "
+                   "${validation} validation and sine functions and ${standard} weak "
+                   "standard-library "
                    "instances, nothing else")
   endforeach()
 
