@@ -13,6 +13,7 @@
 #pragma once
 
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -41,6 +42,12 @@ struct Probe {
     double w = 0.0;
     double angle = 0.0; ///< rad
 };
+
+/// Whether the body's position and velocities are finite (a NaN or infinite state is not).
+inline bool finite(const Probe& p) {
+    return std::isfinite(p.p.x) && std::isfinite(p.p.y) && std::isfinite(p.v.x) &&
+           std::isfinite(p.v.y) && std::isfinite(p.w);
+}
 
 /// The time a block of steps took (ms): the thread's CPU time (the benchmark's measure), wall
 /// time, and the kernel's part of the CPU time.
