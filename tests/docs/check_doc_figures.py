@@ -173,6 +173,7 @@ def marked_shares(repo):
 
 
 PEER_BENCH = "verification/bench/peer_bench.cpp"
+WORK_PRECISION = "verification/bench/work_precision.cpp"
 WORLD_DEF = "include/tamias2d/world_def.hpp"
 
 
@@ -577,6 +578,18 @@ def check_citations(repo, ids):
             if name not in flat:
                 problems.append(f"docs/performance.md: \"Reading the figures\" names \"{name}\", which "
                                 f"{PEER_BENCH} does not write")
+    # So are the work-precision diagrams' tables, where that section says where its figures are
+    # ("<scene>" stands for each scene's name).
+    where = "**Where the figures are**"
+    if "## Work-precision diagrams" in perf and where in perf:
+        section = perf[perf.index(where):]
+        section = section[:section.index("\n\n")]
+        flat = re.sub(r"\"\s*\n\s*\"", "", repo.read(WORK_PRECISION))
+        for name in re.findall(r"\"([^\"]+)\"", section):
+            name = re.sub(r"\s+", " ", name)
+            if name.split("<")[0] not in flat:
+                problems.append(f"docs/performance.md: \"{where}\" names \"{name}\", which "
+                                f"{WORK_PRECISION} does not write")
     return problems
 
 
