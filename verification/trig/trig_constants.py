@@ -328,8 +328,10 @@ def write_hard_header(path):
                   "// the most bits; 0x1.6ac5b262ca1ffp+849 is the closest of all doubles, 2^-60.9 away).\n"
                   "#pragma once\n\nnamespace tamias2d::test {\n\n"
                   f"inline constexpr double trig_hard_arguments[{len(rows)}] = {{\n")
+        # The comments aligned one column after the longest literal, as clang-format does.
+        width = max(len(float(x).hex()) for _, x, _ in rows) + 2
         for e, x, r in rows:
-            out.write(f"    {float(x).hex()}, // x - n pi/2 = {r:.3e}\n")
+            out.write(f"    {(float(x).hex() + ',').ljust(width)}// x - n pi/2 = {r:.3e}\n")
         out.write("};\n\n} // namespace tamias2d::test\n")
 
 
