@@ -188,7 +188,9 @@ struct World::Impl {
         }
     }
 
-    explicit Impl(const WorldDef& d) : def(d) {}
+    explicit Impl(const WorldDef& d) : def(d) {
+        shapes.broad_phase.set_least_margin(d.speculative_distance); // (BroadPhase::fattened)
+    }
 
     /// The time-varying loads at the step's start: a user function returning NaN is rejected
     /// before anything has changed. Most worlds have none: then no setting is read and `loads`
