@@ -188,7 +188,9 @@ struct World::Impl {
         }
     }
 
-    explicit Impl(const WorldDef& d) : def(d) {}
+    explicit Impl(const WorldDef& d) : def(d) {
+        shapes.broad_phase.set_least_margin(d.speculative_distance); // (BroadPhase::fattened)
+    }
 
     /// The time-varying loads at the step's start: a user function returning NaN is rejected
     /// before anything has changed. Most worlds have none: then no setting is read and `loads`
@@ -271,10 +273,12 @@ void World::destroy_body(BodyId id) {
 
 ShapeId World::create_shape(BodyId body_id, const ShapeDef& def) {
     Impl& w = *impl_;
-    Body& b = w.bodies.get(body_id); // handle check before validation: both leave it unchanged
+    // The handle is checked before validation (both leave the world unchanged); the body's mass
+    // is left pending (attach_shape), so that N shapes on one body cost O(N).
+    Body& b = w.bodies.get_for_attach(body_id);
     validate(def);
     const std::uint32_t i = w.shapes.create(body_id.index, b, def);
-    w.bodies.update_mass(body_id.index, w.shapes); // also copies the body's pose into its shapes
+    w.bodies.attach_shape(body_id.index, w.shapes, i);
     if (def.is_sensor)
         w.sensors.add(i);
     return w.shapes.id(i);
@@ -292,9 +296,8 @@ std::vector<ShapeId> World::create_chain(BodyId body_id, std::span<const ShapeDe
     }
     std::vector<ShapeId> out;
     out.reserve(segments.size());
-    std::uint32_t last = null_index; // each segment follows the one before: a linear build
     for (const ShapeDef& def : segments) {
-        last = w.shapes.create(body_id.index, b, def, last);
+        const std::uint32_t last = w.shapes.create(body_id.index, b, def);
         if (def.is_sensor)
             w.sensors.add(last);
         out.push_back(w.shapes.id(last));
@@ -572,6 +575,7 @@ double World::joint_translation(JointId id) const {
     if (j.type != JointType::prismatic && j.type != JointType::wheel)
         wrong_joint("joint_translation", id, j,
                     "must be a prismatic or wheel joint (the kinds with an axis)");
+    impl_->bodies.settle();
     const Body& a = impl_->bodies.bodies[j.body_a];
     const Body& b = impl_->bodies.bodies[j.body_b];
     const Vec2d r_a = rotate(a.xf.q, j.local_anchor_a - a.local_center);
@@ -620,6 +624,7 @@ std::size_t World::body_count() const {
 void World::step(double dt) {
     validate_time_step(dt);
     Impl& w = *impl_;
+    w.bodies.settle(); // the masses attach_shape left pending
     w.check_state();
     w.evaluate_loads();
     w.contacts.forget_filter_error(); // (one a step cut short by bad_alloc left)
@@ -878,6 +883,7 @@ void World::set_awake(BodyId id, bool awake) {
 
 double World::kinetic_energy() const {
     double e = 0.0;
+    impl_->bodies.settle();
     for (const Body& b : impl_->bodies.bodies) {
         if (!b.alive || b.type != BodyType::dynamic)
             continue;
@@ -891,6 +897,7 @@ double World::kinetic_energy() const {
 }
 double World::potential_energy() const {
     double e = 0.0;
+    impl_->bodies.settle();
     for (const Body& b : impl_->bodies.bodies) {
         if (!b.alive || b.type != BodyType::dynamic)
             continue;
@@ -904,6 +911,7 @@ double World::potential_energy() const {
 }
 Vec2d World::linear_momentum() const {
     std::vector<model::gd1::MassVelocity> mv;
+    impl_->bodies.settle();
     for (const Body& b : impl_->bodies.bodies) {
         if (!b.alive || b.type != BodyType::dynamic)
             continue;
@@ -1017,6 +1025,7 @@ struct Hasher {
 
 std::uint64_t World::state_hash() const {
     const Impl& w = *impl_;
+    w.bodies.settle();
     Hasher hs;
     hs(w.time);
     hs(w.time_error);

@@ -6,15 +6,21 @@
 // and no sanitizer report; every rejection is a ValidationError (non-empty field and message),
 // an InvalidHandle (non-empty message) or a WrongKind (non-empty subject and message); a
 // rejected call leaves World::state_hash() unchanged; after every accepted call every state,
-// energy and ray-cast result is finite.
+// energy and ray-cast result is finite. Hand-made geometry (every field of every shape kind,
+// the other kinds' members included) must not be read out of bounds (the sanitizer build), and
+// an accepted hand-made polygon must be simple and convex (its total turning 2 pi, by atan2)
+// with the shoelace centroid (DCX_shape).
 //
 // TAMIAS_FUZZ_API_ITERATIONS=<n> runs more sequences (the default is printed); a failure
 // prints its seed, replayed alone with TAMIAS_FUZZ_SEED=<seed> TAMIAS_FUZZ_API_ITERATIONS=1.
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <functional>
+#include <iterator>
+#include <numbers>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -42,13 +48,18 @@ struct Driver {
     /// that the main stream's draws (and the calls a seed in docs/verification.md replays) are
     /// the ones the seed was found with.
     Rng kinds;
+    /// Hand-made geometry (hand_made), from a third stream for the same reason.
+    Rng hand;
+    /// What the oracle of an accepted hand-made polygon found wrong (empty: nothing).
+    std::string shape_problem;
     World world;
     std::vector<BodyId> bodies;  // every body created, destroyed ones kept (stale handles)
     std::vector<ShapeId> shapes; // likewise
     std::vector<JointId> joints; // likewise
     long accepted = 0, rejected = 0;
     explicit Driver(std::uint64_t seed)
-        : r(seed), kinds(seed ^ 0x9e3779b97f4a7c15u), world(make_def(r)) {}
+        : r(seed), kinds(seed ^ 0x9e3779b97f4a7c15u), hand(seed ^ 0xc2b2ae3d27d4eb4fu),
+          world(make_def(r)) {}
 
     static WorldDef make_def(Rng& r) {
         WorldDef d;
@@ -124,11 +135,158 @@ struct Driver {
         return v != nullptr && std::string_view(v) == "classic";
     }
 
-    /// A circle, box or polygon, replaced two times in five by a rounded shape.
+    /// A circle, box or polygon, replaced two times in five by a rounded shape; one time in
+    /// five made by hand (hand_made).
     ShapeDef shape_def() {
         const bool rounded = kinds.chance(40) && !classic_only();
         const ShapeDef classic = classic_shape_def();
-        return rounded ? rounded_shape_def() : classic;
+        ShapeDef def = rounded ? rounded_shape_def() : classic;
+        if (!classic_only() && hand.chance(20))
+            hand_made(def);
+        return def;
+    }
+
+    /// Geometry made by hand, as a user may fill a Geometry's fields: every field of every
+    /// shape kind, the other kinds' members included. One of: the other kinds' members
+    /// scribbled (a polygon.count of 9 or 1e8 on a circle); one field of the shape's own kind
+    /// replaced by an extreme value; a polygon of 3 to 8 points on a circle in their order, a
+    /// star's order (a pentagram) or any order, with exact normals and a centroid that is or
+    /// is not its own.
+    void hand_made(ShapeDef& def) {
+        Geometry& g = def.geometry;
+        const auto any = [&] { return hand.chance(50) ? hand.between(-3, 3) : any_double(hand); };
+        const auto any_vec = [&] { return Vec2d{any(), any()}; };
+        const int counts[] = {-1, 0, 2, 3, 8, 9, 100000000, 2147483647};
+        switch (hand.below(3)) {
+        case 0: // the other kinds' members
+            if (g.type != ShapeType::polygon) {
+                g.polygon.count = counts[hand.below(std::size(counts))];
+                for (Vec2d& v : g.polygon.vertices)
+                    v = any_vec();
+                for (Vec2d& n : g.polygon.normals)
+                    n = any_vec();
+                g.polygon.centroid = any_vec();
+            } else {
+                g.polygon.vertices[std::size_t(max_polygon_vertices - 1)] = any_vec();
+            }
+            if (g.type != ShapeType::circle)
+                g.circle = {any_vec(), any()};
+            if (g.type != ShapeType::capsule)
+                g.capsule = {any_vec(), any_vec(), any()};
+            if (g.type != ShapeType::segment)
+                g.segment = {any_vec(), any_vec()};
+            if (g.type != ShapeType::chain_segment)
+                g.chain_segment = {any_vec(), any_vec(), any_vec(), any_vec()};
+            return;
+        case 1: // one field of its own kind
+            switch (g.type) {
+            case ShapeType::circle:
+                (hand.chance(50) ? g.circle.radius : g.circle.center.x) = any();
+                return;
+            case ShapeType::polygon: {
+                const std::size_t i = hand.below(std::size_t(max_polygon_vertices));
+                switch (hand.below(4)) {
+                case 0:
+                    g.polygon.vertices[i].y = any();
+                    return;
+                case 1:
+                    g.polygon.normals[i].x = any();
+                    return;
+                case 2:
+                    g.polygon.centroid = any_vec();
+                    return;
+                default:
+                    g.polygon.count = counts[hand.below(std::size(counts))];
+                    return;
+                }
+            }
+            case ShapeType::capsule:
+                (hand.chance(50) ? g.capsule.radius : g.capsule.center2.y) = any();
+                return;
+            case ShapeType::segment:
+                g.segment.point2.x = any();
+                return;
+            case ShapeType::chain_segment:
+                (hand.chance(50) ? g.chain_segment.ghost1.x : g.chain_segment.point2.y) = any();
+                return;
+            }
+            return;
+        default: { // a polygon of points on a circle, in some order
+            const int n = 3 + int(hand.below(6));
+            std::vector<double> angles(std::size_t(n), 0.0);
+            for (double& a : angles)
+                a = hand.between(0.0, 2.0 * std::numbers::pi);
+            std::sort(angles.begin(), angles.end());
+            std::vector<int> order(static_cast<std::size_t>(n));
+            const int step = hand.chance(50) ? 1 : 2 + int(hand.below(std::size_t(n - 2)));
+            for (int k = 0; k < n; ++k)
+                order[std::size_t(k)] = (k * step) % n; // a star for a step prime to n
+            if (hand.chance(20)) // any order (Fisher-Yates: the same on every standard library)
+                for (std::size_t k = order.size() - 1; k > 0; --k)
+                    std::swap(order[k], order[hand.below(k + 1)]);
+            const double radius = hand.chance(80) ? hand.between(0.1, 3.0) : positive_size(hand);
+            g = Geometry{};
+            g.type = ShapeType::polygon;
+            Polygon& p = g.polygon;
+            p.count = n;
+            for (int k = 0; k < n; ++k) {
+                const double a = angles[std::size_t(order[std::size_t(k)])];
+                p.vertices[std::size_t(k)] = {radius * std::cos(a), radius * std::sin(a)};
+            }
+            for (int k = 0; k < n; ++k) {
+                const Vec2d e = p.vertices[std::size_t((k + 1) % n)] - p.vertices[std::size_t(k)];
+                const double len = std::hypot(e.x, e.y);
+                p.normals[std::size_t(k)] = {e.y / len, -e.x / len};
+            }
+            p.centroid = hand.chance(70) ? shoelace_centroid(p) : any_vec();
+            hand_made_polygon = true;
+            ++hand_polygons;
+            return;
+        }
+        }
+    }
+    bool hand_made_polygon = false; ///< the last shape_def was hand_made's polygon
+    long hand_polygons = 0, hand_polygons_accepted = 0;
+
+    /// Oracle for hand-made polygons: the area centroid by the shoelace formula (rooted at the
+    /// first vertex), independent of the library's triangle fan.
+    static Vec2d shoelace_centroid(const Polygon& p) {
+        double a2 = 0.0, cx = 0.0, cy = 0.0;
+        const Vec2d o = p.vertices[0];
+        for (int k = 0; k < p.count; ++k) {
+            const Vec2d u = p.vertices[std::size_t(k)] - o;
+            const Vec2d v = p.vertices[std::size_t((k + 1) % p.count)] - o;
+            const double c = u.x * v.y - u.y * v.x;
+            a2 += c;
+            cx += (u.x + v.x) * c;
+            cy += (u.y + v.y) * c;
+        }
+        return {o.x + cx / (3.0 * a2), o.y + cy / (3.0 * a2)};
+    }
+
+    /// What is wrong with an accepted hand-made polygon: it must turn left at every vertex and
+    /// round exactly once (total turning 2 pi, summed by atan2: a simple convex polygon), and its
+    /// centroid must be the shoelace centroid (to 1e-5 of its extent).
+    static std::string polygon_problem(const Polygon& p) {
+        double turning = 0.0, extent = 0.0;
+        for (int k = 0; k < p.count; ++k) {
+            const Vec2d a = p.vertices[std::size_t(k)];
+            const Vec2d b = p.vertices[std::size_t((k + 1) % p.count)];
+            const Vec2d c = p.vertices[std::size_t((k + 2) % p.count)];
+            const Vec2d e1 = b - a, e2 = c - b;
+            const double cr = e1.x * e2.y - e1.y * e2.x;
+            if (!(cr > 0.0))
+                return "an accepted polygon turns right or goes straight at a vertex";
+            turning += std::atan2(cr, e1.x * e2.x + e1.y * e2.y);
+            extent = std::max({extent, std::abs(e1.x), std::abs(e1.y)});
+        }
+        if (!(std::abs(turning - 2.0 * std::numbers::pi) < 1e-6))
+            return "an accepted polygon turns round " + std::to_string(turning) +
+                   " rad, not 2 pi: not simple";
+        const Vec2d c = shoelace_centroid(p);
+        if (!(std::hypot(p.centroid.x - c.x, p.centroid.y - c.y) <= 1e-5 * extent))
+            return "an accepted polygon's centroid is not its vertices' centroid";
+        return {};
     }
 
     ShapeDef classic_shape_def() {
@@ -216,6 +374,7 @@ struct Driver {
         case 2:
         case 3: {
             const BodyId b = body();
+            hand_made_polygon = false;
             const ShapeDef def = shape_def();
             last << "create_shape(" << str(b) << ", geometry kind "
                  << static_cast<int>(def.geometry.type) << ", radius " << def.geometry.circle.radius
@@ -227,6 +386,10 @@ struct Driver {
                  << str(def.geometry.chain_segment.point2) << ", vertices "
                  << def.geometry.polygon.count << ", density " << def.material.density << ")";
             shapes.push_back(world.create_shape(b, def));
+            if (std::exchange(hand_made_polygon, false)) {
+                ++hand_polygons_accepted;
+                shape_problem = polygon_problem(def.geometry.polygon);
+            }
             break;
         }
         case 4: {
@@ -357,6 +520,8 @@ struct Driver {
 };
 
 std::string check_after_accepted(Driver& d) {
+    if (std::string bad = std::exchange(d.shape_problem, {}); !bad.empty())
+        return bad;
     if (std::string bad = non_finite_state(d.world); !bad.empty())
         return "non-finite state: " + bad;
     const Vec2d origin = d.r.chance(70) ? Vec2d{d.r.between(-30, 30), 30.0} : d.vec();
@@ -372,6 +537,7 @@ std::string check_after_accepted(Driver& d) {
 
 struct Tally {
     long accepted = 0, rejected = 0;
+    long hand_polygons = 0, hand_polygons_accepted = 0; ///< hand_made's polygons
 };
 
 void run_sequence(std::uint64_t seed, Tally& tally) {
@@ -423,9 +589,11 @@ void run_sequence(std::uint64_t seed, Tally& tally) {
         if (!problem.empty()) {
             BOOST_ERROR("seed " << seed << ", call " << c << " " << d.last.str() << ": "
                                 << problem);
-            return;
+            break;
         }
     }
+    tally.hand_polygons += d.hand_polygons;
+    tally.hand_polygons_accepted += d.hand_polygons_accepted;
 }
 
 } // namespace
@@ -449,9 +617,13 @@ BOOST_AUTO_TEST_CASE(random_api_sequences_keep_the_promises, *utf::label("R4")) 
     }
     BOOST_TEST_MESSAGE("API fuzz: " << tally.accepted << " calls accepted, " << tally.rejected
                                     << " rejected");
+    BOOST_TEST_MESSAGE("API fuzz: " << tally.hand_polygons << " hand-made polygons, "
+                                    << tally.hand_polygons_accepted << " accepted");
     // Both paths must be exercised, or the driver proves little.
     BOOST_TEST(tally.accepted > n * calls_per_sequence / 5);
     BOOST_TEST(tally.rejected > n);
+    BOOST_TEST(tally.hand_polygons_accepted > 0);
+    BOOST_TEST(tally.hand_polygons_accepted < tally.hand_polygons);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -12,6 +12,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -24,6 +25,7 @@
 #include "fuzz/fuzz_support.hpp"
 #include "tamias2d/errors.hpp"
 #include "tamias2d/io/scene.hpp"
+#include "tamias2d/memory.hpp"
 #include "tamias2d/world.hpp"
 
 namespace utf = boost::unit_test;
@@ -305,6 +307,62 @@ BOOST_AUTO_TEST_CASE(mutated_scenes_keep_the_promises, *utf::label("R4")) {
                                       << tally.too_large << " too large to step)");
     // A driver whose mutations are all rejected tests only the parser's front door.
     BOOST_TEST(tally.stepped > n / 20);
+}
+
+namespace {
+/// Parses, builds and steps once a scene text; returns the seconds it took and the large blocks
+/// it added (bytes).
+std::pair<double, std::size_t> one_step_cost(const std::string& text) {
+    const std::size_t before = large_array_stats().mapped_bytes;
+    const auto t0 = std::chrono::steady_clock::now();
+    const io::Scene scene = io::parse_scene(text, "resource");
+    World world(scene.world);
+    io::build_world(scene, world);
+    world.step(scene.dt);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const std::size_t after = large_array_stats().mapped_bytes;
+    return {seconds, after > before ? after - before : 0};
+}
+} // namespace
+
+// Oracle: the resource bound an input under 1 MB must keep (docs/verification.md, "Resource
+// oracle"): it validates and steps once within 10 s and 2 GiB of the library's large blocks.
+// The families are the ones that broke it: a base-100 pyramid of boxes from 1e-12 m to 1e6 m,
+// its speculative distance scaled with them (a fixed broad-phase margin made every pair of
+// small boxes a pair even so), and many shapes on one body, static and dynamic (quadratic
+// attach).
+BOOST_AUTO_TEST_CASE(small_inputs_step_within_resource_bounds, *utf::label("reliability")) {
+    std::vector<std::pair<std::string, std::string>> inputs;
+    // The speculative distance scaled with the boxes as the default's 0.02 m is to 1 m boxes.
+    const std::pair<const char*, const char*> sizes[] = {
+        {"1e-12", "2e-14"}, {"1e-6", "2e-8"}, {"1", "0.02"}, {"1e6", "2e4"}};
+    for (const auto& [box, speculative] : sizes)
+        inputs.emplace_back(std::string("pyramid of ") + box + " m boxes",
+                            std::string(R"({"version":1,"dt":"1/60","steps":1,"world":)") +
+                                R"({"speculative_distance":)" + speculative + R"(},"bodies":[)" +
+                                R"({"generator":"pyramid","base":100,"box":)" + box + "}]}");
+    for (const char* type : {"static", "dynamic"}) {
+        std::string shapes;
+        for (int i = 0; i < 12000; ++i)
+            shapes += std::string(i == 0 ? "" : ",") +
+                      R"({"type":"circle","radius":0.4,"center":[)" + std::to_string(i % 100) +
+                      "," + std::to_string(i / 100) + "]}";
+        inputs.emplace_back(std::string("12000 circles on one ") + type + " body",
+                            std::string(R"({"version":1,"dt":"1/60","steps":1,"world":)") +
+                                R"({"gravity":[0,0]},"bodies":[{"name":"map","type":")" + type +
+                                R"(","shapes":[)" + shapes + "]}]}");
+    }
+    for (const auto& [name, text] : inputs) {
+        BOOST_TEST_CONTEXT(name) {
+            BOOST_TEST_REQUIRE(text.size() < (std::size_t(1) << 20));
+            const auto [seconds, bytes] = one_step_cost(text);
+            BOOST_TEST_MESSAGE(name << " (" << text.size() << " bytes): " << seconds << " s, "
+                                    << bytes << " bytes of large blocks");
+            BOOST_TEST(seconds < 10.0);
+            BOOST_TEST(bytes < (std::size_t(2) << 30));
+        }
+    }
 }
 
 BOOST_AUTO_TEST_SUITE_END()

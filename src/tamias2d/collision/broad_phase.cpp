@@ -22,7 +22,7 @@ void BroadPhase::mark_moved(int proxy) {
 
 int BroadPhase::create_proxy(const Aabb& tight, std::uint32_t user, bool is_static) {
     const int t = is_static ? 1 : 0;
-    const int proxy = trees_[t].create_proxy(inflated(tight, margin_), user) * 2 + t;
+    const int proxy = trees_[t].create_proxy(fattened(tight), user) * 2 + t;
     if (std::size_t(proxy) >= moved_.size())
         moved_.resize(std::size_t(proxy) + 2, 0);
     moved_[proxy] = 0; // an id freed earlier may have been left marked

@@ -4,6 +4,7 @@
 // pairs with such a ("moved") proxy are looked for: a resting scene costs nothing here.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -18,7 +19,8 @@ class BroadPhase {
   public:
     using Pair = std::pair<std::uint32_t, std::uint32_t>;
 
-    /// `margin` (m) fattens every box, so small motions need no tree update.
+    /// `margin` (m) fattens every box, so small motions need no tree update; a box smaller
+    /// than the margin is fattened less (fattened).
     explicit BroadPhase(double margin = 0.1) : margin_(margin) {}
 
     /// A proxy for a shape with tight box `tight` and user data `user` (the shape index).
@@ -34,8 +36,20 @@ class BroadPhase {
         int proxy;
         Aabb fat; ///< fattened(tight)
     };
-    /// The fat box move_proxy gives a proxy whose tight box left its old one.
-    Aabb fattened(const Aabb& tight) const { return inflated(tight, margin_); }
+    /// The fat box move_proxy gives a proxy whose tight box left its old one: the tight box
+    /// grown on each side by the margin, or, if smaller, by the larger of its own extent (its
+    /// larger side) and the least margin. A fixed margin makes every pair of small shapes
+    /// within it a pair: 5050 boxes of 1e-12 m in a pyramid 0.1 m wide made all 12.7 million
+    /// pairs candidates with 0.1 m. Scaled, a small shape pairs only with shapes within its
+    /// size or the least margin, the world's speculative distance: two shapes that close are
+    /// always a pair, as the speculative contacts and the continuous pass (which stops a body
+    /// a quarter of that distance short of a static shape) need.
+    Aabb fattened(const Aabb& tight) const {
+        const double extent = std::max(tight.max_x - tight.min_x, tight.max_y - tight.min_y);
+        return inflated(tight, std::min(margin_, std::max(extent, least_margin_)));
+    }
+    /// The least margin (m, >= 0), for the proxies created or moved from now on.
+    void set_least_margin(double least) { least_margin_ = least; }
     /// move_proxy for many proxies whose tight boxes left their fat boxes, in order, with the
     /// tree nodes asked for ahead: the world's write-back gathers its moves into one call, as
     /// each enlargement walks scattered nodes (rain_16k).
@@ -83,6 +97,7 @@ class BroadPhase {
     static constexpr double marks_per_moved_for_descent = 2.3;
 
     double margin_;
+    double least_margin_ = 0.0;
     DynamicTree trees_[2]; ///< [0] dynamic and kinematic, [1] static
     std::vector<int> move_buffer_;
     /// Per proxy id: 0 not moved, 1 moved, 2 moved and marked, 3 moved and queried (the last

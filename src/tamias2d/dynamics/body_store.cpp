@@ -11,13 +11,45 @@ namespace tamias2d {
 
 /// \srs{R1} A body handle names one body of the world's space, and only while that body lives:
 /// a destroyed body's handle, or one of a recycled slot's earlier generation, is not valid.
-Body& BodyStore::get(BodyId id) {
+Body& BodyStore::get_for_attach(BodyId id) {
     if (id.index >= bodies.size() || !bodies[id.index].alive ||
         generation[id.index] != id.generation) {
         throw InvalidHandle("stale or unknown BodyId " + std::to_string(id.index) + ":" +
                             std::to_string(id.generation));
     }
     return bodies[id.index];
+}
+
+Body& BodyStore::get(BodyId id) {
+    Body& b = get_for_attach(id);
+    settle(id.index);
+    return b;
+}
+
+void BodyStore::attach_shape(std::uint32_t i, ShapeStore& shapes, std::uint32_t s) {
+    const Body& b = bodies[i];
+    shapes.shapes[s].body_xf = b.xf;
+    shapes.shapes[s].body_center = b.center;
+    if (b.type != BodyType::dynamic)
+        return;
+    if (mass_pending_flag_.size() < bodies.size())
+        mass_pending_flag_.resize(bodies.size(), false);
+    if (!mass_pending_flag_[i]) {
+        mass_pending_flag_[i] = true;
+        mass_pending_.push_back(i);
+    }
+    pending_shapes_ = &shapes;
+}
+
+void BodyStore::settle(std::uint32_t i) const {
+    if (i < mass_pending_flag_.size() && mass_pending_flag_[i])
+        const_cast<BodyStore*>(this)->update_mass(i, *pending_shapes_); // clears the flag
+}
+
+void BodyStore::settle() const {
+    for (const std::uint32_t i : mass_pending_)
+        settle(i);
+    mass_pending_.clear();
 }
 
 bool BodyStore::is_valid(BodyId id) const {
@@ -71,12 +103,17 @@ void BodyStore::destroy(std::uint32_t i) {
     BodySettings& set = settings[i];
     loaded_bodies -= set.load ? 1 : 0;
     set = BodySettings{};
+    // No mass pending (its entry in mass_pending_, if any, is then skipped).
+    if (i < mass_pending_flag_.size())
+        mass_pending_flag_[i] = false;
     free_slots.push_back(i);
 }
 
 /// \srs{R2} The body's mass and moment of inertia: its shapes' (or the input's, where given;
 /// an overridden mass scales the shapes' inertia with it).
 void BodyStore::update_mass(std::uint32_t i, ShapeStore& shapes) {
+    if (i < mass_pending_flag_.size())
+        mass_pending_flag_[i] = false;
     Body& b = bodies[i];
     const BodySettings& set = settings[i];
     b.mass = b.inv_mass = b.inertia = b.inv_inertia = 0.0;

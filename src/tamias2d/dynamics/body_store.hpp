@@ -27,9 +27,22 @@ struct BodyStore {
     std::vector<SleepState> sleep_states;
     std::uint32_t loaded_bodies = 0; ///< live bodies with a load function
 
-    /// The body of a handle; throws InvalidHandle for a stale or unknown one.
+  private:
+    /// The bodies whose mass attach_shape left pending (settle, get), flagged per body; the
+    /// shapes they read. Mutable: a const query brings them up to date before it reads them.
+    mutable std::vector<std::uint32_t> mass_pending_;
+    mutable std::vector<bool> mass_pending_flag_;
+    mutable ShapeStore* pending_shapes_ = nullptr;
+    void settle(std::uint32_t i) const;
+
+  public:
+    /// The body of a handle, its mass brought up to date (settle); throws InvalidHandle for a
+    /// stale or unknown one.
     Body& get(BodyId id);
     const Body& get(BodyId id) const { return const_cast<BodyStore*>(this)->get(id); }
+    /// As get, but a mass left pending by attach_shape stays pending: for adding a shape, so that
+    /// N shapes added to one body cost O(N), not N mass updates of O(N) each.
+    Body& get_for_attach(BodyId id);
     bool is_valid(BodyId id) const;
     BodyId id(std::uint32_t i) const { return {i, generation[i]}; }
     std::uint32_t size() const { return std::uint32_t(bodies.size()); }
@@ -44,6 +57,14 @@ struct BodyStore {
     /// Mass, centre of mass and inertia from the shapes (DD1, DD14) or the overrides; copies
     /// the body's pose into its shapes.
     void update_mass(std::uint32_t i, ShapeStore& shapes);
+    /// After ShapeStore::create put shape `s` on body i: O(1). The shape gets the body's pose; a
+    /// static or kinematic body's mass stays zero (update_mass would change nothing else), and
+    /// a dynamic body's mass update is left pending until the body is next read: by get, or by
+    /// settle, which whatever reads the bodies by index (a step, the state hash, the energies)
+    /// calls first. The update then sums the same shapes in the same order: the same bits.
+    void attach_shape(std::uint32_t i, ShapeStore& shapes, std::uint32_t s);
+    /// Brings every pending mass up to date, in the order the bodies were first left pending.
+    void settle() const;
 
     /// Moves this step: alive, not static, and awake (every such body is, with sleeping off).
     bool active(std::uint32_t i) const { return sleep_states[i].awake; }

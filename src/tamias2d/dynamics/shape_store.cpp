@@ -3,6 +3,7 @@
 #include <string>
 
 #include "tamias2d/errors.hpp"
+#include "tamias2d/geometry/shape_factory.hpp"
 #include "tamias2d/math/prefetch.hpp"
 
 namespace tamias2d {
@@ -24,8 +25,7 @@ bool ShapeStore::is_valid(ShapeId id) const {
            shapes[id.index].generation == id.generation;
 }
 
-std::uint32_t ShapeStore::create(std::uint32_t body_index, Body& b, const ShapeDef& def,
-                                 std::uint32_t last) {
+std::uint32_t ShapeStore::create(std::uint32_t body_index, Body& b, const ShapeDef& def) {
     std::uint32_t i;
     if (!free_slots.empty()) {
         i = free_slots.back();
@@ -39,12 +39,15 @@ std::uint32_t ShapeStore::create(std::uint32_t body_index, Body& b, const ShapeD
     s.generation += 1;
     s.body = body_index;
     s.next = null_index;
-    s.collider = make_collider(def.geometry);
     defs[i] = def;
-    std::uint32_t* link = last != null_index ? &shapes[last].next : &b.first_shape;
-    while (*link != null_index)
-        link = &shapes[*link].next;
-    *link = i;
+    defs[i].geometry = canonical(def.geometry); // unused members carry nothing
+    s.collider = make_collider(defs[i].geometry);
+    if (last_of_body.size() <= body_index)
+        last_of_body.resize(std::size_t(body_index) + 1, null_index);
+    std::uint32_t& link =
+        b.first_shape != null_index ? shapes[last_of_body[body_index]].next : b.first_shape;
+    link = i;
+    last_of_body[body_index] = i;
     s.proxy = broad_phase.create_proxy(box(s, b), i, b.type == BodyType::static_body);
     s.fat_box = broad_phase.fat_aabb(s.proxy);
     return i;
@@ -53,9 +56,14 @@ std::uint32_t ShapeStore::create(std::uint32_t body_index, Body& b, const ShapeD
 void ShapeStore::destroy(std::uint32_t i, Body& b) {
     Shape& s = shapes[i];
     std::uint32_t* link = &b.first_shape;
-    while (*link != i)
+    std::uint32_t before = null_index;
+    while (*link != i) {
+        before = *link;
         link = &shapes[*link].next;
+    }
     *link = s.next;
+    if (s.next == null_index) // the last shape: the one before it is now
+        last_of_body[s.body] = before;
     release(i);
 }
 

@@ -20,6 +20,8 @@ class ShapeStore {
     LargeArray<Shape> shapes;
     std::vector<ShapeDef> defs; ///< per shape, indexed alike: what it was made from
     std::vector<std::uint32_t> free_slots;
+    /// Per body index: its last shape, valid while the body's first_shape is not null_index.
+    std::vector<std::uint32_t> last_of_body;
     BroadPhase broad_phase;
 
     /// The shape of a handle; throws InvalidHandle for a stale or unknown one.
@@ -27,13 +29,11 @@ class ShapeStore {
     bool is_valid(ShapeId id) const;
     ShapeId id(std::uint32_t i) const { return {i, shapes[i].generation}; }
 
-    /// A new shape on body `body_index` (whose Body is `b`), appended to its list so that the
-    /// body's shapes (and the mass summed over them) keep creation order. The body's mass is
-    /// not updated here (BodyStore::update_mass). `last`, when given, is the body's last shape
-    /// (a caller adding many shapes in a row passes the one it added before), so that the list
-    /// is not walked from its head each time.
-    std::uint32_t create(std::uint32_t body_index, Body& b, const ShapeDef& def,
-                         std::uint32_t last = null_index);
+    /// A new shape on body `body_index` (whose Body is `b`), appended to its list in O(1) (the
+    /// list's last shape is kept per body) so that the body's shapes (and the mass summed over
+    /// them) keep creation order. Its geometry is stored canonical (only its kind's member
+    /// set). The body's mass is not updated here (BodyStore::attach_shape, update_mass).
+    std::uint32_t create(std::uint32_t body_index, Body& b, const ShapeDef& def);
     /// Unlinks the shape from its body `b` and frees its proxy and slot (its contacts must be
     /// gone first).
     void destroy(std::uint32_t i, Body& b);

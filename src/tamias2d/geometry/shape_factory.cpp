@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,13 @@ void require_positive(double v, const std::string& field) {
 /// Distance from p to the line through a and b (a != b).
 double distance_to_line(Vec2d a, Vec2d b, Vec2d p) {
     return std::abs(cross(b - a, p - a)) / length(b - a);
+}
+
+/// Whether direction a's angle, taken in [0, 2 pi), is below b's (exact: no trigonometry).
+bool direction_before(Vec2d a, Vec2d b) {
+    const auto half = [](Vec2d v) { return v.y < 0.0 || (v.y == 0.0 && v.x < 0.0) ? 1 : 0; };
+    const int ha = half(a), hb = half(b);
+    return ha != hb ? ha < hb : cross(a, b) > 0.0;
 }
 
 /// Fills normals and centroid from CCW vertices.
@@ -277,6 +285,7 @@ void validate(const Polygon& p) {
         require_finite(p.normals[i], "polygon.normals[" + std::to_string(i) + "]");
     }
     require_finite(p.centroid, "polygon.centroid");
+    int wraps = 0; // the times the edge direction passes angle 0 going round (see below)
     for (int i = 0; i < p.count; ++i) {
         const Vec2d a = p.vertices[i];
         const Vec2d b = p.vertices[(i + 1) % p.count];
@@ -285,12 +294,66 @@ void validate(const Polygon& p) {
         const double turn = cross(b - a, c - b);
         if (!(turn > 0.0))
             throw ValidationError(at + ".turn", turn, "must be > 0 (convex, CCW)", "DCX_shape");
+        if (direction_before(c - b, b - a))
+            ++wraps;
         const Vec2d n = normalize(right_perp(b - a));
         const Vec2d dn = p.normals[i] - n;
         if (!(length(dn) < 1e-9))
             throw ValidationError("polygon.normals[" + std::to_string(i) + "].error", length(dn),
                                   "must be the unit outward edge normal", "DCX_shape");
     }
+    // Turning left at every vertex is not convexity: a pentagram does so and turns round twice
+    // (4 pi). Each turn is in (0, pi), so the edge direction passes angle 0 once per full turn,
+    // exactly where its angle in [0, 2 pi) drops: a simple polygon turns round once.
+    if (wraps != 1)
+        throw ValidationError("polygon.winding_number", double(wraps),
+                              "must be 1: the boundary turns round once (a simple polygon; a "
+                              "self-intersecting one such as a pentagram turns more)",
+                              "DCX_shape");
+    // The centroid is derived data: it must be the vertices' centroid, up to the rounding of the
+    // sums that compute it (a box's is its exact centre, within a few ulps of the vertices').
+    double extent = 0.0, magnitude = 0.0;
+    for (int i = 0; i < p.count; ++i) {
+        magnitude = std::max({magnitude, std::abs(p.vertices[i].x), std::abs(p.vertices[i].y)});
+        for (int j = 0; j < i; ++j)
+            extent = std::max({extent, std::abs(p.vertices[i].x - p.vertices[j].x),
+                               std::abs(p.vertices[i].y - p.vertices[j].y)});
+    }
+    const Vec2d derived = compute_mass(p, 1.0).center;
+    const double centroid_error = length(p.centroid - derived);
+    const double centroid_tolerance =
+        hull_weld_tolerance * extent + 16.0 * std::numeric_limits<double>::epsilon() * magnitude;
+    if (!(centroid_error <= centroid_tolerance))
+        throw ValidationError("polygon.centroid.error", centroid_error,
+                              "must be <= " + detail::format_value(centroid_tolerance) +
+                                  " m: the centroid of the vertices (" +
+                                  detail::format_value(derived.x) + ", " +
+                                  detail::format_value(derived.y) + ")",
+                              "DCX_shape");
+}
+
+Geometry canonical(const Geometry& g) {
+    switch (g.type) {
+    case ShapeType::polygon: {
+        Polygon p;
+        p.count = g.polygon.count;
+        p.centroid = g.polygon.centroid;
+        for (int i = 0; i < p.count && i < max_polygon_vertices; ++i) {
+            p.vertices[std::size_t(i)] = g.polygon.vertices[std::size_t(i)];
+            p.normals[std::size_t(i)] = g.polygon.normals[std::size_t(i)];
+        }
+        return to_geometry(p);
+    }
+    case ShapeType::capsule:
+        return to_geometry(g.capsule);
+    case ShapeType::segment:
+        return to_geometry(g.segment);
+    case ShapeType::chain_segment:
+        return to_geometry(g.chain_segment);
+    case ShapeType::circle:
+        break;
+    }
+    return to_geometry(g.circle);
 }
 
 void validate(const Geometry& g) {

@@ -1,7 +1,8 @@
 // Building valid shapes. Every shape the engine sees comes through here (or through validate),
 // so the narrow phase and the mass computation may assume: finite coordinates, positive sizes,
 // convex counter-clockwise polygons of 3..8 vertices with unit outward normals and no
-// collinear or coincident vertices. Bad input throws ValidationError naming the field (R4).
+// collinear or coincident vertices, turning round once (simple), with their vertices' centroid. Bad
+// input throws ValidationError naming the field (R4).
 #pragma once
 
 #include <span>
@@ -56,6 +57,11 @@ void validate(const Capsule& c);
 void validate(const Segment& s);
 void validate(const ChainSegment& s);
 void validate(const Geometry& g);
+
+/// The geometry with only its kind's member set (the other kinds' members, and a polygon's
+/// vertices and normals past its count, at their defaults): what the world stores, so that no
+/// unused member carries a value any reader could walk (a circle's polygon.count, say).
+Geometry canonical(const Geometry& g);
 
 /// The relative tolerance used to weld hull points and to reject slivers.
 inline constexpr double hull_weld_tolerance = 1e-6;
