@@ -13,8 +13,8 @@ stillborn when it does not compile, not built when its objects come out bit for 
 unmutated ones (a line of a #if branch this build skips): neither is counted in the score.
 The sample is ranked by a seeded hash of each mutant's file, line text and operator, so an
 edit elsewhere leaves it, and the judgements of its survivors, in place. A survivor is judged in
-survivors.json ("equivalent", argued, or "gap"); score = killed / (killed + survivors not
-judged equivalent).
+survivors.json ("equivalent", argued, or "gap"), one record per mutant (file, line text,
+operator and occurrence); score = killed / (killed + survivors not judged equivalent).
 
     /usr/bin/python3 verification/mutation/mutate.py OUT_DIR [--sample N] [--seed S]
         [--minutes M] [--all] [--ids I,J,...] [--scratch DIR] [--list]
@@ -93,7 +93,10 @@ def code_part(line):
 
 
 def mutants_of(relpath, text):
-    """Every mutant of one file: dicts {file, line, op, before, after}."""
+    """Every mutant of one file: dicts {file, line, op, before, after, occurrence}; occurrence
+    counts the mutants of the same line text and operator in the file, 1 for the first (in
+    line order, then left to right), so that file, line text, operator and occurrence name one
+    mutant."""
     out = []
     in_block = False
     for no, line in enumerate(text.split("\n"), 1):
@@ -122,6 +125,11 @@ def mutants_of(relpath, text):
                                                     code):
             out.append({"file": relpath, "line": no, "op": "statement removed",
                         "before": line, "after": ""})
+    seen = {}
+    for m in out:
+        key = line_key(m)
+        seen[key] = seen.get(key, 0) + 1
+        m["occurrence"] = seen[key]
     return out
 
 
@@ -140,12 +148,13 @@ def all_mutants(root):
 
 def sample_of(muts, n, seed):
     """n mutants chosen by seed, stable under edits elsewhere: each mutant is ranked by a hash
-    of the seed, its survivor key and which repeat of that key in its file it is (not its id,
-    which shifts whenever a target file changes), so a change to one line moves only that
-    line's mutants in or out of the sample; the rest keep their ranks and judgements."""
+    of the seed, its file, line text and operator and which repeat of those in its file it is
+    (its occurrence less one; not its id, which shifts whenever a target file changes), so a
+    change to one line moves only that line's mutants in or out of the sample; the rest keep
+    their ranks and judgements."""
     seen, ranked = {}, []
     for m in muts:
-        key = survivor_key(m)
+        key = line_key(m)
         nth = seen.get(key, 0)
         seen[key] = nth + 1
         text = "\x1f".join((str(seed), *key, str(nth)))
@@ -470,34 +479,71 @@ SURVIVORS = os.path.join(HERE, "survivors.json")
 WINDOW = 8
 
 
-def survivor_key(m):
-    """A survivor's key: file, the mutated line's text (stripped) and operator, not the id
-    (ids shift whenever a target file changes; the line's text and place in its file rarely
-    do together)."""
+def line_key(m):
+    """File, the mutated line's text (stripped) and operator: what a mutant changes, not where
+    (ids and line numbers shift whenever a target file changes; a line's text rarely does)."""
     return (m["file"], m["before"].strip(), m["op"])
 
 
+def survivor_key(m):
+    """A judgement's key: line_key and the occurrence, so that one judgement stands for exactly
+    one mutant, also where a line text repeats in its file or holds the operator twice."""
+    return (*line_key(m), m["occurrence"])
+
+
+RECORD_FIELDS = ("file", "line", "op", "occurrence", "verdict", "reason")
+
+
 def load_judgements(path=SURVIVORS):
-    """{key: judgement} from survivors.json: a list of {file, line, op, verdict, reason}, the
-    verdict "equivalent" (reason: why no input the code receives tells the mutant apart) or
-    "gap" (reason: what the tests lack). A malformed entry is an error, not ignored."""
+    """{key: judgement} from survivors.json: a list of {file, line, op, occurrence, verdict,
+    reason}, the verdict "equivalent" (reason: why no input the code receives tells the mutant
+    apart) or "gap" (reason: what the tests lack). A malformed entry is an error, not ignored;
+    so is one that repeats a key or has a field of its own (a misspelt one would go unread)."""
     if not os.path.exists(path):
         return {}
     with open(path, encoding="utf-8") as fh:
         doc = json.load(fh)
     out = {}
     for i, j in enumerate(doc.get("survivors", [])):
+        if not isinstance(j, dict):
+            raise SystemExit(f"{path}: survivors[{i}] must be an object")
         for field in ("file", "line", "op", "verdict", "reason"):
             if not isinstance(j.get(field), str) or not j[field].strip():
                 raise SystemExit(f"{path}: survivors[{i}].{field} must be a non-empty string")
+        occ = j.get("occurrence")
+        if not isinstance(occ, int) or isinstance(occ, bool) or occ < 1:
+            raise SystemExit(f"{path}: survivors[{i}].occurrence must be an integer >= 1 (which "
+                             f"mutant of that line text and operator in the file, 1 for the "
+                             f"first), not {occ!r}")
+        extra = sorted(set(j) - set(RECORD_FIELDS))
+        if extra:
+            raise SystemExit(f"{path}: survivors[{i}] has unknown fields {extra}")
         if j["verdict"] not in ("equivalent", "gap"):
             raise SystemExit(f"{path}: survivors[{i}].verdict must be \"equivalent\" or "
                              f"\"gap\", not {j['verdict']!r}")
-        key = (j["file"], j["line"].strip(), j["op"])
+        key = (j["file"], j["line"].strip(), j["op"], occ)
         if key in out:
             raise SystemExit(f"{path}: survivors[{i}] repeats {key}")
         out[key] = j
     return out
+
+
+def stale_judgements(judgements, muts):
+    """The keys of judgements that name no mutant of muts: the line changed, or the occurrence
+    is past the number of such mutants in the file. A stale record is an error."""
+    keys = {survivor_key(m) for m in muts}
+    return sorted(k for k in judgements if k not in keys)
+
+
+def check_record(path, muts):
+    """load_judgements, and a stale record an error too."""
+    judgements = load_judgements(path)
+    stale = stale_judgements(judgements, muts)
+    if stale:
+        raise SystemExit(f"{path}: {len(stale)} judgement(s) name no mutant of this tree (the "
+                         f"line changed or the occurrence is past its last): "
+                         + "; ".join(f"{f} '{t}' {o} occurrence {n}" for f, t, o, n in stale[:5]))
+    return judgements
 
 
 def score_of(results, judgements):
@@ -551,12 +597,14 @@ def main(argv=None):
     if a.list:
         try:
             for m in muts:
-                print(f"{m['id']:5d} {m['file']}:{m['line']} {m['op']}")
+                print(f"{m['id']:5d} {m['file']}:{m['line']} {m['op']}"
+                      + (f" (occurrence {m['occurrence']})" if m["occurrence"] > 1 else ""))
             print(f"{len(muts)} mutants")
         except BrokenPipeError:  # piped into head
             pass
         return 0
-    load_judgements(a.survivors)  # a malformed record stops the run before any build
+    # A malformed or stale record stops the run before any build.
+    check_record(a.survivors, muts)
     if a.ids:
         by_id = {m["id"]: m for m in muts}
         chosen = [by_id[int(x)] for x in a.ids.split(",") if x.strip()]
@@ -668,10 +716,11 @@ def main(argv=None):
                               f"{r['seconds']:.0f} ({r['build_seconds']:.0f} + "
                               f"{r['test_seconds']:.0f})"] for r in results]},
                    {"name": "Survivors",
-                    "columns": ["id", "where", "mutation", "before", "after", "judged", "reason"],
-                    "rows": [[r["id"], f"{r['file']}:{r['line']}", r["op"], r["before"].strip(),
-                              r["after"].strip() or "(removed)", r["judged"], r["reason"]]
-                             for r in survived]}],
+                    "columns": ["id", "where", "mutation", "occurrence", "before", "after",
+                                "judged", "reason"],
+                    "rows": [[r["id"], f"{r['file']}:{r['line']}", r["op"], r["occurrence"],
+                              r["before"].strip(), r["after"].strip() or "(removed)",
+                              r["judged"], r["reason"]] for r in survived]}],
         "series": [],
         "score": score,
         "summary": details,

@@ -136,38 +136,68 @@ class Scoring(unittest.TestCase):
     def test_score_counts_only_survivors_not_judged_equivalent(self):
         def mut(line, verdict):
             return {"file": "f.cpp", "before": f"  x = {line};", "op": "statement removed",
-                    "verdict": verdict}
+                    "occurrence": 1, "verdict": verdict}
         results = [mut(1, "killed"), mut(2, "killed"), mut(3, "killed"), mut(4, "survived"),
                    mut(5, "survived"), mut(6, "survived"), mut(7, "stillborn"),
                    mut(8, "no tests")]
         j = self.judgements([
-            {"file": "f.cpp", "line": "x = 4;", "op": "statement removed",
+            {"file": "f.cpp", "line": "x = 4;", "op": "statement removed", "occurrence": 1,
              "verdict": "equivalent", "reason": "x is never read"},
-            {"file": "f.cpp", "line": "x = 5;", "op": "statement removed", "verdict": "gap",
-             "reason": "no test reads x"}])
+            {"file": "f.cpp", "line": "x = 5;", "op": "statement removed", "occurrence": 1,
+             "verdict": "gap", "reason": "no test reads x"}])
         # 3 killed; survivors 4 (equivalent, out), 5 (gap, in), 6 (not judged, in): 3 / 5.
         self.assertEqual(mutate.score_of(results, j), (3 / 5, 3, 1, 5))
         self.assertEqual(mutate.score_of(results, {}), (3 / 6, 3, 0, 6))
         # Keyed by the line's text, not its number or id: the judgement follows the line.
         self.assertIn(mutate.survivor_key(mut(4, "survived")), j)
 
+    def test_one_judgement_stands_for_one_mutant(self):
+        # The same loop twice in a file, and a line with the operator twice: four mutants of
+        # one line text and operator pair or another, told apart by their occurrence.
+        code = ("    for (int l = 0; l < n; ++l) {\n    }\n    y = a + b + c;\n"
+                "    for (int l = 0; l < n; ++l) {\n    }\n")
+        muts = [m for m in mutate.mutants_of("f.cpp", code) if m["op"].startswith(("compare <",
+                                                                                  "arith +"))]
+        self.assertEqual([(m["line"], m["op"], m["occurrence"]) for m in muts],
+                         [(1, "compare < to <=", 1), (3, "arith + to -", 1),
+                          (3, "arith + to -", 2), (4, "compare < to <=", 2)])
+        self.assertEqual([m["after"].strip() for m in muts[1:3]],
+                         ["y = a - b + c;", "y = a + b - c;"])
+        j = self.judgements([{"file": "f.cpp", "line": "for (int l = 0; l < n; ++l) {",
+                              "op": "compare < to <=", "occurrence": 2, "verdict": "equivalent",
+                              "reason": "the second loop's stray pass reads nothing"}])
+        results = [dict(m, verdict="survived") for m in muts if m["op"] == "compare < to <="]
+        # The judgement covers the second loop only: the first survivor still counts.
+        self.assertEqual(mutate.score_of(results, j), (0.0, 0, 1, 1))
+        # An occurrence past the last such mutant of the file is stale.
+        stale = self.judgements([{"file": "f.cpp", "line": "y = a + b + c;",
+                                  "op": "arith + to -", "occurrence": 3, "verdict": "gap",
+                                  "reason": "r"}])
+        self.assertEqual(mutate.stale_judgements(stale, muts),
+                         [("f.cpp", "y = a + b + c;", "arith + to -", 3)])
+        self.assertEqual(mutate.stale_judgements(j, muts), [])
+
     def test_malformed_judgement_is_an_error(self):
-        for bad in ({"file": "f", "line": "x", "op": "o", "verdict": "maybe", "reason": "r"},
-                    {"file": "f", "line": "x", "op": "o", "verdict": "gap", "reason": " "},
-                    {"file": "f", "line": "x", "op": "o", "verdict": "equivalent"}):
+        good = {"file": "f", "line": "x", "op": "o", "occurrence": 1, "verdict": "gap",
+                "reason": "r"}
+        for bad in (dict(good, verdict="maybe"), dict(good, reason=" "),
+                    {k: v for k, v in good.items() if k != "reason"},
+                    {k: v for k, v in good.items() if k != "occurrence"},  # keyed by line only
+                    dict(good, occurrence=0), dict(good, occurrence="1"),
+                    dict(good, occurrence=True), dict(good, ocurrence=2)):
             with self.subTest(bad=bad), self.assertRaises(SystemExit):
                 self.judgements([bad])
         with self.assertRaises(SystemExit):  # the same key twice
-            same = {"file": "f", "line": "x", "op": "o", "verdict": "gap", "reason": "r"}
-            self.judgements([same, same])
+            self.judgements([good, good])
+        self.assertEqual(len(self.judgements([good, dict(good, occurrence=2)])), 2)
 
     def test_the_repository_record_is_well_formed(self):
-        # Every judged survivor names a line that exists in its file with a mutant of that
-        # operator: a record that no mutant reaches any more is stale.
-        keys = {mutate.survivor_key(m) for m in mutate.all_mutants(mutate.ROOT)}
-        for key in mutate.load_judgements():
-            with self.subTest(key=key):
-                self.assertIn(key, keys)
+        # Every judged survivor names a mutant of this tree: its line text in its file with a
+        # mutant of that operator, and at least as many of them as its occurrence. A record
+        # that no mutant reaches any more is stale.
+        muts = mutate.all_mutants(mutate.ROOT)
+        self.assertEqual(mutate.stale_judgements(mutate.load_judgements(), muts), [])
+        mutate.check_record(mutate.SURVIVORS, muts)
 
     def test_failed_entries_from_a_ctest_log(self):
         log = ("50% tests passed, 1 tests failed out of 2\n\nThe following tests FAILED:\n"
