@@ -78,8 +78,9 @@ phase "coverage and mutation: one instrumented scratch build (verification/mutat
 # -O1 with the standard library's assertions and gcov's counters. Every test runs once there on
 # the unmutated sources (coverage: a test failing only there fails the job, it would lower the
 # coverage silently), then a seeded sample of mutants is judged for TAMIAS_MUTATION_MINUTES
-# (default 4). TAMIAS_MUTATION=all judges every mutant (hours), TAMIAS_MUTATION=0 (or minutes 0)
-# none (the report then says "not run"); --quick skips both.
+# (default 4; a survivor is judged again in an ASan and UBSan build of the same copy, built when
+# the first survivor needs it, outside the box). TAMIAS_MUTATION=all judges every mutant (hours),
+# TAMIAS_MUTATION=0 (or minutes 0) none (the report then says "not run"); --quick skips both.
 mutation=${TAMIAS_MUTATION:-sample}
 minutes=${TAMIAS_MUTATION_MINUTES:-4}
 [ "$mutation" = 0 ] && minutes=0

@@ -1,20 +1,22 @@
 #!/usr/bin/python3
-"""Mutation testing of the model layer and the dynamics: do the SRS-labelled tests notice when
-the code that realises an item is wrong?
+"""Mutation testing of the model layer and the dynamics: do the tests notice when the code that
+realises an item is wrong?
 
 Each mutant changes one spot of src/tamias2d/model/ or src/tamias2d/dynamics/: an arithmetic
 operator swapped (+ -, * /), a comparison turned (< <=, > >=, == !=), a numeric constant
 changed (c -> 2c, 0 -> 1), or an assignment statement removed. The mutant is built in a
-scratch copy of the repository with its own build directory (never the caller's), and the
-CTest entries labelled with the SRS items that the mutated file, or a library header it
-includes, names in its \\srs tags are run (a file that reaches no tag: those of the files that
-include it). A mutant is killed when they fail (or time out), survives when they pass, and is
-stillborn when it does not compile, not built when its objects come out bit for bit as the
-unmutated ones (a line of a #if branch this build skips): neither is counted in the score.
-The sample is ranked by a seeded hash of each mutant's file, line text and operator, so an
-edit elsewhere leaves it, and the judgements of its survivors, in place. A survivor is judged in
-survivors.json ("equivalent", argued, or "gap"), one record per mutant (file, line text,
-operator and occurrence); score = killed / (killed + survivors not judged equivalent).
+scratch copy of the repository with its own build directory (never the caller's) and judged
+by the CTest entries labelled with the SRS items that the mutated file, or a library header it
+includes, names in its \\srs tags (a file that reaches no tag: those of the files that include
+it), and by the golden state hashes of tests/determinism. A mutant is killed when they fail (or
+time out); one that passes is judged again in an ASan and UBSan build of the same copy, where a
+sanitizer report kills it; it survives when it passes there too. A mutant is stillborn when it
+does not compile, not built when its objects come out bit for bit as the unmutated ones (a
+line of a #if branch this build skips): neither is counted in the score.
+The sample is ranked by a seeded hash of each mutant's file, line text, operator and
+occurrence, so an edit elsewhere leaves it, and the judgements of its survivors, in place. A
+survivor is judged in survivors.json ("equivalent", argued, or "gap"), one record per mutant;
+score = killed / (killed + survivors not judged equivalent).
 
     /usr/bin/python3 verification/mutation/mutate.py OUT_DIR [--sample N] [--seed S]
         [--minutes M] [--all] [--ids I,J,...] [--scratch DIR] [--list]
@@ -25,8 +27,9 @@ runs once on the unmutated sources: gcovr's summary and pages of src/ and includ
 report's coverage (one build for both analyses). Exit status 3 when a test fails there.
 
 By default a seeded sample of N = 20 mutants judged within M = 30 minutes (after the scratch
-build); --all takes every mutant (hours on two cores). Writes OUT_DIR/mutation.json in the
-verification schema (docs/traceability.md): the score, one row per mutant, every survivor with
+build); --all takes every mutant (hours on two cores), --ids the given ones (no box). Writes
+OUT_DIR/mutation.json in the verification schema
+(docs/traceability.md): the score and its interval, one row per mutant, every survivor with
 its judgement. The report shows it; the main job runs a time-boxed sample (it is an optional
 program of traceability/config.yaml: absent, the report says "not run").
 """
@@ -224,9 +227,10 @@ def labels_of(root, relpath):
     return sorted(found)
 
 
-def run(cmd, cwd=None, timeout=None):
+def run(cmd, cwd=None, timeout=None, env=None):
     try:
-        p = subprocess.run(cmd, cwd=cwd, capture_output=True, text=True, timeout=timeout)
+        p = subprocess.run(cmd, cwd=cwd, capture_output=True, text=True, timeout=timeout,
+                           env=None if env is None else {**os.environ, **env})
         return p.returncode, p.stdout + p.stderr
     except subprocess.TimeoutExpired:
         return None, "timeout"
@@ -378,6 +382,91 @@ def scratch_build(scratch, coverage):
                        f"TAMIAS_COVERAGE={'ON' if coverage else 'OFF'}"}
 
 
+# The second judge's build: the scratch build's flags with ASan and UBSan (TAMIAS_SANITIZE:
+# -fsanitize=address,undefined -fno-sanitize-recover=all), as scripts/test.sh --sanitize builds
+# them, a report fatal. A mutant that reads or writes out of bounds, overflows a signed integer
+# or leaks, and passes the tests in the scratch build (a stray read can return a harmless value,
+# a stray write land on a field that is overwritten anyway), is killed there.
+SANITIZER_OPTIONS = ["-DTAMIAS_SANITIZE=ON", "-DTAMIAS_WIDE_X86_64_V4=OFF"]
+SANITIZER_ENV = {"ASAN_OPTIONS": "detect_leaks=1:abort_on_error=1",
+                 "UBSAN_OPTIONS": "print_stacktrace=1:halt_on_error=1"}
+SANITIZER_REPORT = re.compile(r"(?:ERROR|SUMMARY): (?:Address|Leak|UndefinedBehavior)"
+                              r"Sanitizer[^\n]*|[^\n]*runtime error:[^\n]*")
+
+
+class SanitizerScratch:
+    """The ASan and UBSan build of the scratch's sources (<scratch>/build-asan), configured and
+    built lazily: nothing until a survivor needs it, then only the test executables that
+    survivor's entries need (from the unmutated sources, as the scratch build). It shares the
+    scratch's source copy, so a mutant written there is built in both."""
+
+    def __init__(self, scratch, src):
+        self.src, self.build = src, os.path.join(scratch, "build-asan")
+        self.configured, self.built, self.baseline = False, set(), {}
+        self.seconds = 0.0  # spent configuring and building it unmutated
+
+    def ensure(self, targets):
+        """Configures the build and builds targets from the unmutated sources, once each."""
+        t0 = time.monotonic()
+        try:
+            if not self.configured:
+                rc, out = run(["cmake", "-S", self.src, "-B", self.build, "-G", "Ninja",
+                               "-DCMAKE_BUILD_TYPE=Release",
+                               f"-DCMAKE_CXX_FLAGS_RELEASE={SCRATCH_FLAGS}",
+                               "-DBUILD_SHARED_LIBS=ON", "-DCMAKE_LINK_DEPENDS_NO_SHARED=ON",
+                               "-DTAMIAS_BUILD_TESTS=ON", "-DTAMIAS_BUILD_VERIFICATION=OFF",
+                               "-DTAMIAS_BUILD_APPS=OFF", "-DTAMIAS_COVERAGE=OFF",
+                               "-DTAMIAS_INSTALL=OFF", *SANITIZER_OPTIONS])
+                if rc != 0:
+                    raise SystemExit("sanitizer scratch configure failed:\n" + out[-3000:])
+                self.configured = True
+            todo = sorted(set(targets) - self.built)
+            if todo:
+                rc, out = run(["nice", "-n", "5", "cmake", "--build", self.build, "-j2",
+                               "--target", *todo])
+                if rc != 0:
+                    raise SystemExit("sanitizer scratch build of the unmutated sources failed:\n"
+                                     + out[-3000:])
+                self.built |= set(todo)
+        finally:
+            self.seconds += time.monotonic() - t0
+
+    def judge(self, m, entries, test_timeout):
+        """(killed, log, build seconds, test seconds, failed entries): whether the tests of
+        entries fail on the mutant in this build (a sanitizer report, or a failure of an entry
+        that passes on the unmutated sources here), and the report's lines."""
+        b = t = 0.0
+        for _ in range(2):
+            entries = {n: x for n, x in entries.items() if self.baseline.get(n, True)}
+            self.ensure(set(entries.values()))
+            verdict, log, b1, t1 = judge(m, self.src, self.build, entries, test_timeout,
+                                         env=SANITIZER_ENV, output=True)
+            b, t = b + b1, t + t1
+            if verdict == "stillborn":
+                raise SystemExit(f"mutant #{m['id']} compiles in the scratch build but not in "
+                                 f"the sanitizer build:\n{log[-3000:]}")
+            if verdict != "killed":
+                return False, "", b, t, []
+            failed = failed_entries(log)
+            if passes_unmutated(failed, self.build, entries, self.baseline, test_timeout,
+                                env=SANITIZER_ENV):
+                reports = [r.strip() for r in SANITIZER_REPORT.findall(log)]
+                summary = "; ".join(dict.fromkeys(reports)) if reports else (
+                    "failed in the sanitizer build only: " + ", ".join(failed))
+                return True, summary[:600], b, t, failed
+            # Killed by a test that fails here without the mutant too: judged again without it.
+        return False, "", b, t, []
+
+    def description(self):
+        return {"name": "mutation scratch build with ASan and UBSan (the survivors' second judge)",
+                "where": self.build, "flags": SCRATCH_FLAGS + " -fsanitize=address,undefined "
+                "-fno-sanitize-recover=all -fno-omit-frame-pointer",
+                "options": "CMAKE_BUILD_TYPE=Release BUILD_SHARED_LIBS=ON TAMIAS_BUILD_TESTS=ON "
+                           "TAMIAS_SANITIZE=ON TAMIAS_WIDE_X86_64_V4=OFF",
+                "environment": " ".join(f"{k}={v}" for k, v in SANITIZER_ENV.items()),
+                "seconds": round(self.seconds, 1), "targets": sorted(self.built)}
+
+
 def object_digests(build, since_ns=None):
     """{object file: SHA-256} of the build's objects (those written at or after since_ns only,
     when given)."""
@@ -393,26 +482,46 @@ def object_digests(build, since_ns=None):
     return out
 
 
-def ctest_entries(catalogue, labels):
+def ctest_entries(catalogue, labels, targets=()):
     """{test name: executable target} of the CTest entries (ctest --show-only=json-v1's
-    "tests") carrying any of labels."""
+    "tests") carrying any of labels, and every labelled entry of the executables targets."""
     entries = {}
     for t in catalogue:
         props = {p["name"]: p["value"] for p in t.get("properties", [])}
         tl = props.get("LABELS", [])
         if isinstance(tl, str):
             tl = [tl]
-        if set(tl) & set(labels) and "@" in t["name"]:
-            entries[t["name"]] = t["name"].split("@", 1)[0]
+        if "@" not in t["name"]:
+            continue
+        target = t["name"].split("@", 1)[0]
+        if set(tl) & set(labels) or target in targets:
+            entries[t["name"]] = target
     return entries
 
 
-def judge(m, src, build, entries, test_timeout, objects):
+# The golden state hashes of the example scenes (tests/determinism): a project rule, not an SRS
+# item, so their entries carry the category label "determinism", not an item's. Every mutant
+# of the model and the dynamics is judged by them too: a change in any step's arithmetic shows
+# in a hash, also where no labelled test looks (a joint's generation, an unread default that
+# the hash reads).
+GOLDEN_TARGETS = ("determinism_tests",)
+
+
+def entries_of(catalogue, labels, relpath):
+    """The CTest entries that judge a mutant of relpath: those of its labels, and the golden
+    hashes for a file of the model or the dynamics."""
+    golden = GOLDEN_TARGETS if relpath.startswith(tuple(d + "/" for d in TARGET_DIRS)) else ()
+    return ctest_entries(catalogue, labels, golden)
+
+
+def judge(m, src, build, entries, test_timeout, objects=None, env=None, output=False):
     """(verdict, log, build seconds, test seconds) of one mutant, run against entries
-    ({CTest name: target}); the scratch source is restored afterwards. "not built": every
-    object the mutant's build rewrote is bit for bit the unmutated one (objects: their
-    digests), so the mutated line is not compiled here (a branch of #if this build does not
-    take); no test can tell it apart and it is not counted."""
+    ({CTest name: target}) in build (env: the tests' variables; output: the failing tests'
+    output in the log); the scratch source is restored afterwards. "not built" (only when
+    objects, the unmutated objects' digests, are given): every object the mutant's build
+    rewrote is bit for bit the unmutated one, so the mutated line is not compiled here (a
+    branch of #if this build does not take); no test can tell it apart and it is not
+    counted."""
     if not entries:
         return "no tests", "", 0.0, 0.0
     path = os.path.join(src, m["file"])
@@ -431,15 +540,19 @@ def judge(m, src, build, entries, test_timeout, objects):
         t1 = time.monotonic()
         if rc != 0:
             return "stillborn", out[-600:], t1 - t0, 0.0
-        rebuilt = object_digests(build, since)
-        if all(objects.get(path) == digest for path, digest in rebuilt.items()):
-            return "not built", f"{len(rebuilt)} objects rebuilt, each as unmutated", t1 - t0, 0.0
+        if objects is not None:
+            rebuilt = object_digests(build, since)
+            if all(objects.get(path) == digest for path, digest in rebuilt.items()):
+                return ("not built", f"{len(rebuilt)} objects rebuilt, each as unmutated",
+                        t1 - t0, 0.0)
         regex = "^(" + "|".join(re.escape(n) for n in sorted(entries)) + ")$"
         rc, out = run(["ctest", "--test-dir", build, "-R", regex, "--stop-on-failure", "-j2",
-                       "--timeout", str(test_timeout)], timeout=test_timeout * len(entries) + 60)
+                       "--timeout", str(test_timeout)]
+                      + (["--output-on-failure"] if output else []),
+                      timeout=test_timeout * len(entries) + 60, env=env)
         t2 = time.monotonic()
         if rc is None or rc != 0:
-            return "killed", out[-600:], t1 - t0, t2 - t1
+            return "killed", out, t1 - t0, t2 - t1
         return "survived", "", t1 - t0, t2 - t1
     finally:
         with open(path, "w", encoding="utf-8") as fh:
@@ -455,7 +568,7 @@ def failed_entries(log):
     return sorted(set(FAILED.findall(tail[1]))) if len(tail) == 2 else []
 
 
-def passes_unmutated(names, build, entries, baseline, test_timeout):
+def passes_unmutated(names, build, entries, baseline, test_timeout, env=None):
     """Whether every entry of names passes on the unmutated sources (the scratch restored),
     remembered in baseline: a kill by a test that fails anyway is no kill."""
     todo = [n for n in names if n not in baseline]
@@ -466,7 +579,7 @@ def passes_unmutated(names, build, entries, baseline, test_timeout):
             raise SystemExit("the unmutated scratch does not build:\n" + out[-3000:])
         regex = "^(" + "|".join(re.escape(n) for n in todo) + ")$"
         rc, out = run(["ctest", "--test-dir", build, "-R", regex, "-j2", "--timeout",
-                       str(test_timeout)], timeout=test_timeout * len(todo) + 60)
+                       str(test_timeout)], timeout=test_timeout * len(todo) + 60, env=env)
         bad = set(failed_entries(out)) if rc not in (None, 0) else set()
         if rc is None:
             bad = set(todo)
@@ -558,6 +671,9 @@ def score_of(results, judgements):
     return (killed / counted if counted else 0.0), killed, equivalent, counted
 
 
+FLOOR = 0.9  # the kill rate the check asks for
+
+
 def commit_of(root):
     rc, out = run(["git", "-C", root, "rev-parse", "HEAD"])
     rc2, st = run(["git", "-C", root, "status", "--porcelain", "--untracked-files=no"])
@@ -573,6 +689,121 @@ def tree_of(root):
 
 # The scratch build's flags (prepare_scratch), for the report's list of builds.
 SCRATCH_FLAGS = "-O1 -DNDEBUG -D_GLIBCXX_ASSERTIONS"
+
+
+def now_utc():
+    return datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ")
+
+
+def selection_text(sel):
+    if sel["mode"] == "all":
+        return "all"
+    if sel["mode"] == "ids":
+        return f"ids {sel['ids']}"
+    return f"seed {sel['seed']}, sample {sel['sample']}, {sel['minutes']:g} min box"
+
+
+def make_doc(results, judgements, *, population, chosen, selection, provenance, prep_secs,
+             sanitizer, broken):
+    """The verification-schema document of judged mutants (results) with the record's
+    judgements applied."""
+    for r in results:
+        if r["verdict"] == "survived":
+            j = judgements.get(survivor_key(r))
+            r["judged"] = j["verdict"] if j else "not yet judged"
+            r["reason"] = j["reason"] if j else ""
+        else:
+            r.pop("judged", None)
+            r.pop("reason", None)
+    score, killed, equivalent, counted = score_of(results, judgements)
+    survived = [r for r in results if r["verdict"] == "survived"]
+    gaps = [r for r in survived if r["judged"] == "gap"]
+    unjudged = [r for r in survived if r["judged"] == "not yet judged"]
+    by_sanitizer = sum(r.get("killed_by") == "sanitizer" for r in results)
+    # A judgement of a mutant that the tests or the sanitizer build now kill: the record to
+    # update (it does not count; the kill does).
+    judged_killed = [f"#{r['id']} {r['file']}:{r['line']} {r['op']} (occurrence "
+                     f"{r['occurrence']})" for r in results
+                     if r["verdict"] == "killed" and survivor_key(r) in judgements]
+    judged_runs = [r for r in results
+                   if r["verdict"] in ("killed", "survived", "stillborn", "not built")]
+    mean = (sum(r["seconds"] for r in judged_runs) / len(judged_runs)) if judged_runs else 0.0
+    passed = bool(counted) and score >= FLOOR - 1e-12
+    pct = lambda x: f"{100 * x:.1f} %"  # noqa: E731
+    details = (f"{killed} of {counted} non-equivalent compiled mutants killed ({pct(score)}"
+               f"{f'; {by_sanitizer} by the sanitizer build' if by_sanitizer else ''}); "
+               f"{len(survived)} survived ({equivalent} judged equivalent, "
+               f"{len(gaps)} judged gaps, {len(unjudged)} not yet judged), "
+               f"{sum(r['verdict'] == 'stillborn' for r in results)} did not compile, "
+               f"{sum(r['verdict'] == 'not built' for r in results)} compiled to unchanged "
+               f"objects, "
+               f"{sum(r['verdict'] == 'no tests' for r in results)} had no test; "
+               f"{len(results)} of {chosen} chosen from {population} "
+               f"({selection_text(selection)}); "
+               f"{mean:.0f} s per built mutant, scratch build {prep_secs:.0f} s")
+    if sanitizer:
+        details += f", sanitizer build {sanitizer['seconds']:.0f} s"
+    if broken:
+        details += (f"; {len(broken)} CTest entries fail without any mutant and were left out: "
+                    + ", ".join(broken))
+    if judged_killed:
+        details += (f"; {len(judged_killed)} judged in survivors.json but killed now: "
+                    + ", ".join(judged_killed))
+    doc = {
+        "program": "mutation",
+        "description": "Mutation testing of src/tamias2d/model/ and dynamics/: mutants (operator "
+                       "swaps, constants, comparisons, removed assignments) built in a scratch "
+                       "copy, judged by the CTest entries labelled with the SRS items the mutated "
+                       "file's \\srs tags, or those of the library headers it includes, name (a "
+                       "file that reaches no tag: those of the files that include it), and by the "
+                       "golden state hashes (tests/determinism); a survivor is judged again in an "
+                       "ASan and UBSan build, where a sanitizer report kills it. Score: "
+                       "killed / (killed + survivors not judged equivalent in "
+                       "verification/mutation/survivors.json). This run: "
+                       + details + ".",
+        "provenance": provenance,
+        "checks": [{"name": f"at least {100 * FLOOR:.0f} % of the non-equivalent mutants killed",
+                    "labels": [], "passed": passed,
+                    "target": f">= {100 * FLOOR:.0f} % killed",
+                    "figure": f"{pct(score)} ({killed} of {counted})",
+                    "oracle": "the SRS-labelled tests and the golden state hashes fail on each "
+                              "mutant, or a survivor's tests report an error in the sanitizer "
+                              "build; survivors judged equivalent are argued in "
+                              "verification/mutation/survivors.json",
+                    "details": details}],
+        "tables": [{"name": "Mutants", "columns": ["id", "where", "mutation", "labels (tests run)",
+                                                   "verdict", "seconds (build + tests)"],
+                    "rows": [[r["id"], f"{r['file']}:{r['line']}", r["op"],
+                              ", ".join(r["labels"] + (["golden hashes"] if any(
+                                  t.split("@", 1)[0] in GOLDEN_TARGETS for t in r["tests"])
+                                  else [])),
+                              r["verdict"] + (" (sanitizer)" if r.get("killed_by") == "sanitizer"
+                                              else ""),
+                              f"{r['seconds']:.0f} ({r['build_seconds']:.0f} + "
+                              f"{r['test_seconds']:.0f})"] for r in results]},
+                   {"name": "Survivors",
+                    "columns": ["id", "where", "mutation", "occurrence", "before", "after",
+                                "judged", "reason"],
+                    "rows": [[r["id"], f"{r['file']}:{r['line']}", r["op"], r["occurrence"],
+                              r["before"].strip(), r["after"].strip() or "(removed)",
+                              r["judged"], r["reason"]] for r in survived]}],
+        "series": [],
+        "score": score,
+        "killed": killed,
+        "counted": counted,
+        "chosen": chosen,
+        "population": population,
+        "selection": selection,
+        "killed_by_sanitizer": by_sanitizer,
+        "judged_but_killed": judged_killed,
+        "summary": details,
+        "seconds_per_mutant": round(mean, 1),
+        "failing_unmutated": broken,
+        "scratch_build_seconds": round(prep_secs, 1),
+        "sanitizer_build": sanitizer,
+        "mutants": results,
+    }
+    return doc
 
 
 def main(argv=None):
@@ -608,8 +839,12 @@ def main(argv=None):
     if a.ids:
         by_id = {m["id"]: m for m in muts}
         chosen = [by_id[int(x)] for x in a.ids.split(",") if x.strip()]
+        selection = {"mode": "ids", "ids": a.ids}
+    elif a.all:
+        chosen, selection = muts, {"mode": "all"}
     else:
-        chosen = muts if a.all else sample_of(muts, a.sample, a.seed)
+        chosen = sample_of(muts, a.sample, a.seed)
+        selection = {"mode": "sample", "seed": a.seed, "sample": a.sample, "minutes": a.minutes}
     # Within each run of WINDOW sampled mutants, those of one file one after another: restoring
     # the file and building its next mutant are then one rebuild, not two, while a time box
     # still cuts the sample at a window's end, not after a few whole files.
@@ -617,34 +852,35 @@ def main(argv=None):
               for m in sorted(chosen[k:k + WINDOW], key=lambda m: (m["file"], m["line"], m["id"]))]
     commit, dirty = commit_of(a.root)
     tree = tree_of(a.root)
-    started = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ")
+    started = now_utc()
     t_prep = time.monotonic()
     src, build, catalogue, objects = prepare_scratch(a.root, a.scratch, bool(a.coverage))
     prep_secs = time.monotonic() - t_prep
     coverage_failed = []
     if a.coverage:
         t_cov = time.monotonic()
-        now = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ")
         coverage_failed = measure_coverage(
             src, build, catalogue, *a.coverage,
             provenance={"commit": commit, "dirty": dirty, "tree": tree, "build_id": None,
-                        "built": started, "generated": now,
+                        "built": started, "generated": now_utc(),
                         "build": scratch_build(a.scratch, True)})
         print(f"coverage: every test once in {time.monotonic() - t_cov:.0f} s"
               + (f"; FAILED: {', '.join(coverage_failed)}" if coverage_failed else ""),
               flush=True)
         if not a.all and not a.ids and a.minutes <= 0:
             return 3 if coverage_failed else 0
-    # The box is for judging mutants; the scratch build before it is reported apart (minutes
-    # when the scratch is new, seconds when it outlives a run).
-    deadline = None if a.all else time.monotonic() + 60.0 * a.minutes
+    # The box is for judging mutants; the scratch builds are reported apart (minutes when the
+    # scratch is new, seconds when it outlives a run): the sanitizer build's first build of a
+    # test executable moves the deadline on by its time.
+    deadline = None if (a.all or a.ids) else time.monotonic() + 60.0 * a.minutes
+    sanitizer = SanitizerScratch(a.scratch, src)
     results = []
     baseline = {}  # CTest entry -> passes on the unmutated sources (asked when it kills)
     for m in chosen:
         if deadline is not None and time.monotonic() > deadline:
             break
         labels = labels_of(a.root, m["file"])
-        entries = ctest_entries(catalogue, labels)
+        entries = entries_of(catalogue, labels, m["file"])
         t0 = time.monotonic()
         entries = {n: t for n, t in entries.items() if baseline.get(n, True)}
         verdict, log, b_secs, t_secs = judge(m, src, build, entries, a.test_timeout, objects)
@@ -655,84 +891,46 @@ def main(argv=None):
             print(f"   (fails unmutated, left out from now on: {', '.join(broken)})")
             entries = {n: t for n, t in entries.items() if baseline.get(n, True)}
             verdict, log, b_secs, t_secs = judge(m, src, build, entries, a.test_timeout, objects)
-        secs = time.monotonic() - t0
+        killed_by = "tests" if verdict == "killed" else None
+        prep_before = sanitizer.seconds
+        if verdict == "survived":
+            # The second judge: the same tests in the ASan and UBSan build.
+            killed, log, b2, t2, san_failed = sanitizer.judge(m, entries, a.test_timeout)
+            b_secs, t_secs = b_secs + b2, t_secs + t2
+            if killed:
+                verdict, killed_by = "killed", "sanitizer"
+        prep = sanitizer.seconds - prep_before
+        if deadline is not None:
+            deadline += prep
+        secs = time.monotonic() - t0 - prep
         r = dict(m, verdict=verdict, labels=labels, tests=sorted(entries), seconds=round(secs, 1),
                  build_seconds=round(b_secs, 1), test_seconds=round(t_secs, 1),
-                 log=log if verdict in ("survived", "stillborn", "not built") else "")
+                 log=log[-600:] if verdict in ("survived", "stillborn", "not built")
+                 or killed_by == "sanitizer" else "")
+        if killed_by:
+            r["killed_by"] = killed_by
+            r["failed"] = failed_entries(log) if killed_by == "tests" else san_failed
+        if verdict == "survived":
+            r["sanitizer"] = "passed"
         results.append(r)
-        print(f"{verdict:10s} #{m['id']} {m['file']}:{m['line']} {m['op']} ({secs:.0f} s: "
-              f"build {b_secs:.0f}, tests {t_secs:.0f})", flush=True)
+        print(f"{verdict:10s} #{m['id']} {m['file']}:{m['line']} {m['op']}"
+              + (" (sanitizer)" if killed_by == "sanitizer" else "")
+              + f" ({secs:.0f} s: build {b_secs:.0f}, tests {t_secs:.0f})"
+              + (f" [sanitizer build {prep:.0f} s]" if prep >= 1 else ""), flush=True)
     # The record as it stands when the run ends (survivors may be judged while it runs).
     judgements = load_judgements(a.survivors)
-    for r in results:
-        if r["verdict"] == "survived":
-            j = judgements.get(survivor_key(r))
-            r["judged"] = j["verdict"] if j else "not yet judged"
-            r["reason"] = j["reason"] if j else ""
-    score, killed, equivalent, counted = score_of(results, judgements)
-    survived = [r for r in results if r["verdict"] == "survived"]
-    gaps = [r for r in survived if r["judged"] == "gap"]
-    unjudged = [r for r in survived if r["judged"] == "not yet judged"]
-    judged_runs = [r for r in results
-                   if r["verdict"] in ("killed", "survived", "stillborn", "not built")]
-    mean = (sum(r["seconds"] for r in judged_runs) / len(judged_runs)) if judged_runs else 0.0
-    finished = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ")
-    details = (f"{killed} of {counted} non-equivalent compiled mutants killed "
-               f"({100 * score:.0f} %); {len(survived)} survived ({equivalent} judged equivalent, "
-               f"{len(gaps)} judged gaps, {len(unjudged)} not yet judged), "
-               f"{sum(r['verdict'] == 'stillborn' for r in results)} did not compile, "
-               f"{sum(r['verdict'] == 'not built' for r in results)} compiled to unchanged "
-               f"objects, "
-               f"{sum(r['verdict'] == 'no tests' for r in results)} had no labelled test; "
-               f"{len(results)} of {len(chosen)} chosen from {len(muts)} "
-               f"({'all' if a.all else f'ids {a.ids}' if a.ids else f'seed {a.seed}, sample {a.sample}, {a.minutes:g} min box'}); "
-               f"{mean:.0f} s per built mutant, scratch build {prep_secs:.0f} s")
-    broken = sorted(n for n, ok in baseline.items() if not ok)
-    if broken:
-        details += (f"; {len(broken)} CTest entries fail without any mutant and were left out: "
-                    + ", ".join(broken))
-    doc = {
-        "program": "mutation",
-        "description": "Mutation testing of src/tamias2d/model/ and dynamics/: mutants (operator "
-                       "swaps, constants, comparisons, removed assignments) built in a scratch "
-                       "copy, judged by the CTest entries labelled with the SRS items the mutated "
-                       "file's \\srs tags, or those of the library headers it includes, name (a "
-                       "file that reaches no tag: those of the files that include it). Score: "
-                       "killed / (killed + survivors not judged equivalent in "
-                       "verification/mutation/survivors.json). This run: " + details + ".",
-        "provenance": {"commit": commit, "dirty": dirty, "tree": tree, "build_id": None,
-                       "built": started, "generated": finished,
-                       "build": scratch_build(a.scratch, bool(a.coverage))},
-        "checks": [{"name": "at least 90 % of the non-equivalent mutants killed",
-                    "labels": [], "passed": bool(counted) and score >= 0.9 - 1e-12,
-                    "target": ">= 90 % killed",
-                    "oracle": "the SRS-labelled tests fail on each mutant; survivors judged "
-                              "equivalent are argued in verification/mutation/survivors.json",
-                    "details": details}],
-        "tables": [{"name": "Mutants", "columns": ["id", "where", "mutation", "labels (tests run)",
-                                                   "verdict", "seconds (build + tests)"],
-                    "rows": [[r["id"], f"{r['file']}:{r['line']}", r["op"],
-                              ", ".join(r["labels"]), r["verdict"],
-                              f"{r['seconds']:.0f} ({r['build_seconds']:.0f} + "
-                              f"{r['test_seconds']:.0f})"] for r in results]},
-                   {"name": "Survivors",
-                    "columns": ["id", "where", "mutation", "occurrence", "before", "after",
-                                "judged", "reason"],
-                    "rows": [[r["id"], f"{r['file']}:{r['line']}", r["op"], r["occurrence"],
-                              r["before"].strip(), r["after"].strip() or "(removed)",
-                              r["judged"], r["reason"]] for r in survived]}],
-        "series": [],
-        "score": score,
-        "summary": details,
-        "seconds_per_mutant": round(mean, 1),
-        "failing_unmutated": broken,
-        "scratch_build_seconds": round(prep_secs, 1),
-        "mutants": results,
-    }
+    provenance = {"commit": commit, "dirty": dirty, "tree": tree, "build_id": None,
+                  "built": started, "generated": now_utc(),
+                  "build": scratch_build(a.scratch, bool(a.coverage))}
+    doc = make_doc(results, judgements, population=len(muts), chosen=len(chosen),
+                   selection=selection, provenance=provenance,
+                   prep_secs=prep_secs,
+                   sanitizer=sanitizer.description() if sanitizer.configured else None,
+                   broken=sorted(n for n, ok in baseline.items() if not ok))
     os.makedirs(a.out_dir, exist_ok=True)
     with open(os.path.join(a.out_dir, "mutation.json"), "w", encoding="utf-8") as fh:
         json.dump(doc, fh, indent=1)
-    print("mutation: " + details)
+    print("mutation: " + doc["summary"])
     return 3 if coverage_failed else 0
 
 

@@ -1,10 +1,13 @@
 """The mutation tool's own test: which mutants a fragment of C++ yields (no build).
 Oracle: the mutants of each hand-written line, listed by hand."""
+import contextlib
+import io
 import json
 import os
 import sys
 import tempfile
 import unittest
+from unittest import mock
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import mutate  # noqa: E402
@@ -205,6 +208,150 @@ class Scoring(unittest.TestCase):
                "Errors while running CTest\n")
         self.assertEqual(mutate.failed_entries(log), ["engine_tests@IM3", "model_tests@DD8"])
         self.assertEqual(mutate.failed_entries("100% tests passed"), [])
+
+
+class Judges(unittest.TestCase):
+    """Oracle: which tests judge a mutant, and the second judge's rule, on a made-up catalogue
+    and made-up test runs (no build)."""
+
+    CATALOGUE = [{"name": n, "properties": [{"name": "LABELS", "value": [n.split("@")[1]]}]}
+                 for n in ("model_tests@DD8", "engine_tests@IM3", "engine_tests@R7",
+                           "determinism_tests@determinism", "reliability_tests@determinism")]
+
+    def test_golden_hashes_judge_every_mutant_of_the_model_and_the_dynamics(self):
+        for rel in ("src/tamias2d/dynamics/joint_store.cpp", "src/tamias2d/model/x.hpp"):
+            with self.subTest(rel=rel):
+                self.assertEqual(mutate.entries_of(self.CATALOGUE, ["IM3"], rel),
+                                 {"engine_tests@IM3": "engine_tests",
+                                  "determinism_tests@determinism": "determinism_tests"})
+        # A file with no label is judged by the golden hashes alone; a test of another target
+        # carrying the same category label (run-to-run repeatability) is not one of them.
+        self.assertEqual(mutate.entries_of(self.CATALOGUE, [], "src/tamias2d/dynamics/y.cpp"),
+                         {"determinism_tests@determinism": "determinism_tests"})
+
+    def sanitizer_run(self, asan_log, unmutated_fails=False):
+        """SanitizerScratch.judge of a mutant whose tests fail in the sanitizer build with
+        asan_log (None: they pass), every build and command mocked."""
+        calls = []
+
+        def fake_run(cmd, cwd=None, timeout=None, env=None):
+            calls.append((cmd, env))
+            if cmd[0] == "ctest":  # the unmutated sources, asked when a test kills
+                return (8, "The following tests FAILED:\n\t  3 - engine_tests@IM3 (Failed)\n") \
+                    if unmutated_fails else (0, "100% tests passed")
+            return 0, ""
+
+        def fake_judge(m, src, build, entries, test_timeout, objects=None, env=None,
+                       output=False):
+            calls.append(("judge", build, env, output))
+            return ("killed", asan_log, 1.0, 2.0) if asan_log and entries else \
+                ("survived", "", 1.0, 2.0)
+
+        with mock.patch.object(mutate, "run", fake_run), \
+                mock.patch.object(mutate, "judge", fake_judge):
+            s = mutate.SanitizerScratch("/scratch", "/scratch/src")
+            out = s.judge({"id": 7}, {"engine_tests@IM3": "engine_tests"}, 60)
+        return out, calls, s
+
+    def test_a_sanitizer_report_kills_a_survivor(self):
+        log = ("1/1 Test #3: engine_tests@IM3 ...***Failed\n==1==ERROR: AddressSanitizer: "
+               "heap-buffer-overflow on address 0x6\nThe following tests FAILED:\n"
+               "\t  3 - engine_tests@IM3 (Failed)\n")
+        (killed, summary, _, _, failed), calls, s = self.sanitizer_run(log)
+        self.assertTrue(killed)
+        self.assertEqual(failed, ["engine_tests@IM3"])
+        self.assertIn("AddressSanitizer: heap-buffer-overflow", summary)
+        judged = [c for c in calls if c[0] == "judge"]
+        self.assertEqual(judged[0][1:], ("/scratch/build-asan", mutate.SANITIZER_ENV, True))
+        # Configured lazily, once, with the sanitizers on, and built before the mutant.
+        configure = [c[0] for c in calls if c[0][0] == "cmake" and "-S" in c[0]]
+        self.assertEqual(len(configure), 1)
+        self.assertIn("-DTAMIAS_SANITIZE=ON", configure[0])
+        self.assertEqual(s.built, {"engine_tests"})
+        # The kill is confirmed on the unmutated sources, in the sanitizer build's setting.
+        self.assertIn(mutate.SANITIZER_ENV, [c[1] for c in calls if isinstance(c[0], list)
+                                             and c[0][0] == "ctest"])
+
+    def test_no_kill_by_a_test_that_fails_unmutated_or_without_failing(self):
+        log = "==1==ERROR: AddressSanitizer: x\nThe following tests FAILED:\n" \
+              "\t  3 - engine_tests@IM3 (Failed)\n"
+        (killed, _, _, _, _), _, s = self.sanitizer_run(log, unmutated_fails=True)
+        self.assertFalse(killed)
+        self.assertEqual(s.baseline, {"engine_tests@IM3": False})
+        (killed, _, _, _, _), calls, s = self.sanitizer_run(None)
+        self.assertFalse(killed)
+
+
+class Run(unittest.TestCase):
+    """Oracle: which mutants of made-up files go to which judge, with the builds and tests
+    mocked: a mutant's verdict is a function of its key, as a real build's would be."""
+
+    FILES = {"src/tamias2d/model/a.hpp": "".join(f"    x{k} = a{k} + b{k} * 2.0;\n"
+                                                   for k in range(6)),
+             "src/tamias2d/dynamics/b.cpp": "    for (int l = 0; l < n; ++l) {\n    }\n" * 3
+             + "    y = p - q;\n"}
+
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.root = os.path.join(self.tmp.name, "root")
+        for rel, text in self.FILES.items():
+            os.makedirs(os.path.dirname(os.path.join(self.root, rel)), exist_ok=True)
+            with open(os.path.join(self.root, rel), "w") as fh:
+                fh.write(text)
+        self.record = os.path.join(self.tmp.name, "survivors.json")
+        with open(self.record, "w") as fh:
+            json.dump({"survivors": [{"file": "src/tamias2d/dynamics/b.cpp",
+                                      "line": "for (int l = 0; l < n; ++l) {",
+                                      "op": "compare < to <=", "occurrence": 2,
+                                      "verdict": "equivalent", "reason": "made up"}]}, fh)
+        self.tree = "tree-1"
+        self.judged = []
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    @staticmethod
+    def verdict(m, build):
+        h = int(mutate.hashlib.sha256(repr(mutate.survivor_key(m)).encode()).hexdigest(), 16)
+        if h % 5 == 0 and build.endswith("build-asan"):
+            return "killed"  # a stray read the sanitizer build reports
+        return "survived" if h % 5 in (0, 1) else "killed"
+
+    def run_main(self, *args):
+        def fake_judge(m, src, build, entries, test_timeout, objects=None, env=None,
+                       output=False):
+            self.judged.append((m["id"], build))
+            v = self.verdict(m, build)
+            return v, ("==1==ERROR: AddressSanitizer: stray read" if v == "killed" and
+                       build.endswith("build-asan") else ""), 1.0, 1.0
+
+        catalogue = [{"name": "determinism_tests@determinism",
+                      "properties": [{"name": "LABELS", "value": ["determinism"]}]}]
+        out = os.path.join(self.tmp.name, "out")
+        with mock.patch.object(mutate, "prepare_scratch",
+                               lambda root, scratch, coverage=False:
+                               (scratch + "/src", scratch + "/build", catalogue, {})), \
+                mock.patch.object(mutate, "judge", fake_judge), \
+                mock.patch.object(mutate, "run", lambda *a, **k: (0, "")), \
+                mock.patch.object(mutate, "commit_of", lambda root: ("c0ffee", False)), \
+                mock.patch.object(mutate, "tree_of", lambda root: self.tree), \
+                mock.patch.object(mutate, "scratch_build", lambda s, c: {"name": "scratch"}), \
+                contextlib.redirect_stdout(io.StringIO()):
+            self.assertEqual(mutate.main([out, "--root", self.root, "--survivors", self.record,
+                                          "--scratch", os.path.join(self.tmp.name, "s"),
+                                          *args]), 0)
+        return out
+
+    def load(self, path):
+        with open(path) as fh:
+            return json.load(fh)
+
+    def test_a_survivor_goes_to_the_sanitizer_build_only(self):
+        doc = self.load(os.path.join(self.run_main("--all"), "mutation.json"))
+        asan = {i for i, b in self.judged if b.endswith("build-asan")}
+        self.assertEqual(asan, {r["id"] for r in doc["mutants"]
+                                if r["verdict"] == "survived" or
+                                r.get("killed_by") == "sanitizer"})
 
 
 if __name__ == "__main__":
