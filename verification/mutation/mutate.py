@@ -16,7 +16,8 @@ line of a #if branch this build skips): neither is counted in the score.
 The sample is ranked by a seeded hash of each mutant's file, line text, operator and
 occurrence, so an edit elsewhere leaves it, and the judgements of its survivors, in place. A
 survivor is judged in survivors.json ("equivalent", argued, or "gap"), one record per mutant;
-score = killed / (killed + survivors not judged equivalent).
+score = killed / (killed + survivors not judged equivalent), with its Wilson 95 % interval: the
+90 % floor applies to the interval's lower bound for a sample, to the score for every mutant.
 
     /usr/bin/python3 verification/mutation/mutate.py OUT_DIR [--sample N] [--seed S]
         [--minutes M] [--all] [--ids I,J,...] [--scratch DIR] [--list]
@@ -38,6 +39,7 @@ import datetime
 import fnmatch
 import hashlib
 import json
+import math
 import os
 import re
 import shutil
@@ -671,7 +673,24 @@ def score_of(results, judgements):
     return (killed / counted if counted else 0.0), killed, equivalent, counted
 
 
-FLOOR = 0.9  # the kill rate the check asks for
+# The floor of the kill rate, and how sure a sample must make it: the check applies the floor
+# to the lower bound of the score's 95 % interval when a sample was judged, and to the score
+# itself only when every mutant was.
+FLOOR = 0.9
+CONFIDENCE = 0.95
+Z = 1.959963984540054  # the standard normal quantile of 0.975
+
+
+def wilson(k, n, z=Z):
+    """The Wilson score interval (95 % with the default z) of a kill rate k/n: where the rate of
+    the mutants a random sample of n counted ones was drawn from lies. (0, 1) for n = 0."""
+    if n <= 0:
+        return (0.0, 1.0)
+    p = k / n
+    d = 1.0 + z * z / n
+    centre = (p + z * z / (2 * n)) / d
+    half = z * math.sqrt(p * (1.0 - p) / n + z * z / (4.0 * n * n)) / d
+    return (max(0.0, centre - half), min(1.0, centre + half))
 
 
 def commit_of(root):
@@ -703,10 +722,10 @@ def selection_text(sel):
     return f"seed {sel['seed']}, sample {sel['sample']}, {sel['minutes']:g} min box"
 
 
-def make_doc(results, judgements, *, population, chosen, selection, provenance, prep_secs,
-             sanitizer, broken):
+def make_doc(results, judgements, *, population, chosen, selection, complete, provenance,
+             prep_secs, sanitizer, broken):
     """The verification-schema document of judged mutants (results) with the record's
-    judgements applied."""
+    judgements applied: the score, its 95 % interval and which of them the floor applies to."""
     for r in results:
         if r["verdict"] == "survived":
             j = judgements.get(survivor_key(r))
@@ -716,6 +735,7 @@ def make_doc(results, judgements, *, population, chosen, selection, provenance, 
             r.pop("judged", None)
             r.pop("reason", None)
     score, killed, equivalent, counted = score_of(results, judgements)
+    lo, hi = wilson(killed, counted)
     survived = [r for r in results if r["verdict"] == "survived"]
     gaps = [r for r in survived if r["judged"] == "gap"]
     unjudged = [r for r in survived if r["judged"] == "not yet judged"]
@@ -728,10 +748,23 @@ def make_doc(results, judgements, *, population, chosen, selection, provenance, 
     judged_runs = [r for r in results
                    if r["verdict"] in ("killed", "survived", "stillborn", "not built")]
     mean = (sum(r["seconds"] for r in judged_runs) / len(judged_runs)) if judged_runs else 0.0
-    passed = bool(counted) and score >= FLOOR - 1e-12
+    floor_on = "point estimate" if complete else "lower bound"
+    value = score if complete else lo
+    passed = bool(counted) and value >= FLOOR - 1e-12
     pct = lambda x: f"{100 * x:.1f} %"  # noqa: E731
-    details = (f"{killed} of {counted} non-equivalent compiled mutants killed ({pct(score)}"
-               f"{f'; {by_sanitizer} by the sanitizer build' if by_sanitizer else ''}); "
+    figure = (f"{pct(score)} ({killed} of {counted}), 95 % interval {100 * lo:.1f}-"
+              f"{100 * hi:.1f} %")
+    if complete:
+        rule = (f"every mutant judged: the floor ({100 * FLOOR:.0f} %) applies to the score, "
+                f"{pct(score)}")
+    else:
+        rule = (f"a sample, {len(results)} of {population} mutants judged: the floor "
+                f"({100 * FLOOR:.0f} %) applies to the lower bound of the score's 95 % "
+                f"interval, {pct(lo)}")
+    details = (f"{killed} of {counted} non-equivalent compiled mutants killed ({pct(score)}, "
+               f"95 % Wilson interval {100 * lo:.1f}-{100 * hi:.1f} %"
+               f"{f'; {by_sanitizer} by the sanitizer build' if by_sanitizer else ''}); {rule} "
+               f"({'met' if passed else 'not met'}); "
                f"{len(survived)} survived ({equivalent} judged equivalent, "
                f"{len(gaps)} judged gaps, {len(unjudged)} not yet judged), "
                f"{sum(r['verdict'] == 'stillborn' for r in results)} did not compile, "
@@ -759,13 +792,17 @@ def make_doc(results, judgements, *, population, chosen, selection, provenance, 
                        "golden state hashes (tests/determinism); a survivor is judged again in an "
                        "ASan and UBSan build, where a sanitizer report kills it. Score: "
                        "killed / (killed + survivors not judged equivalent in "
-                       "verification/mutation/survivors.json). This run: "
+                       "verification/mutation/survivors.json), with its 95 % Wilson interval; the "
+                       f"{100 * FLOOR:.0f} % floor applies to the interval's lower bound for a "
+                       "sample, to the score when every mutant is judged. This run: "
                        + details + ".",
         "provenance": provenance,
         "checks": [{"name": f"at least {100 * FLOOR:.0f} % of the non-equivalent mutants killed",
                     "labels": [], "passed": passed,
-                    "target": f">= {100 * FLOOR:.0f} % killed",
-                    "figure": f"{pct(score)} ({killed} of {counted})",
+                    "target": (f">= {100 * FLOOR:.0f} % killed: "
+                               + ("the score (every mutant judged)" if complete else
+                                  "the lower bound of the score's 95 % interval (a sample)")),
+                    "figure": figure,
                     "oracle": "the SRS-labelled tests and the golden state hashes fail on each "
                               "mutant, or a survivor's tests report an error in the sanitizer "
                               "build; survivors judged equivalent are argued in "
@@ -791,8 +828,14 @@ def make_doc(results, judgements, *, population, chosen, selection, provenance, 
         "score": score,
         "killed": killed,
         "counted": counted,
+        "interval": [lo, hi],
+        "confidence": CONFIDENCE,
+        "floor": FLOOR,
+        "floor_applies_to": floor_on,
+        "sample_size": len(results),
         "chosen": chosen,
         "population": population,
+        "complete": complete,
         "selection": selection,
         "killed_by_sanitizer": by_sanitizer,
         "judged_but_killed": judged_killed,
@@ -919,11 +962,12 @@ def main(argv=None):
               + (f" [sanitizer build {prep:.0f} s]" if prep >= 1 else ""), flush=True)
     # The record as it stands when the run ends (survivors may be judged while it runs).
     judgements = load_judgements(a.survivors)
+    complete = selection["mode"] == "all" and len(results) == len(chosen)
     provenance = {"commit": commit, "dirty": dirty, "tree": tree, "build_id": None,
                   "built": started, "generated": now_utc(),
                   "build": scratch_build(a.scratch, bool(a.coverage))}
     doc = make_doc(results, judgements, population=len(muts), chosen=len(chosen),
-                   selection=selection, provenance=provenance,
+                   selection=selection, complete=complete, provenance=provenance,
                    prep_secs=prep_secs,
                    sanitizer=sanitizer.description() if sanitizer.configured else None,
                    broken=sorted(n for n, ok in baseline.items() if not ok))

@@ -210,6 +210,57 @@ class Scoring(unittest.TestCase):
         self.assertEqual(mutate.failed_entries("100% tests passed"), [])
 
 
+class Interval(unittest.TestCase):
+    """Oracle: the Wilson score intervals (no continuity correction) tabulated by Newcombe,
+    Statistics in Medicine 17 (1998) 857-872, Table II, method 3."""
+
+    def test_wilson_interval_against_the_table(self):
+        for k, n, lo, hi in ((81, 263, 0.2553, 0.3662), (15, 148, 0.0624, 0.1605),
+                             (0, 20, 0.0, 0.1611), (1, 29, 0.0061, 0.1718),
+                             (29, 29, 0.8830, 1.0)):
+            with self.subTest(k=k, n=n):
+                got = mutate.wilson(k, n)
+                self.assertAlmostEqual(got[0], lo, places=4)
+                self.assertAlmostEqual(got[1], hi, places=4)
+        self.assertEqual(mutate.wilson(0, 0), (0.0, 1.0))
+
+    def doc(self, killed, survived, complete):
+        results = ([{"id": i, "file": "f.cpp", "line": i, "before": f"x = {i};",
+                     "after": "", "op": "statement removed", "occurrence": 1,
+                     "verdict": "killed", "labels": ["IM1"], "tests": ["t@IM1"],
+                     "seconds": 1.0, "build_seconds": 0.5, "test_seconds": 0.5}
+                    for i in range(killed)]
+                   + [{"id": 100 + i, "file": "f.cpp", "line": 100 + i,
+                       "before": f"y = {i};", "after": "", "op": "statement removed",
+                       "occurrence": 1, "verdict": "survived", "labels": ["IM1"],
+                       "tests": ["t@IM1"], "seconds": 1.0, "build_seconds": 0.5,
+                       "test_seconds": 0.5} for i in range(survived)])
+        return mutate.make_doc(results, {}, population=1604, chosen=len(results),
+                               selection={"mode": "all"} if complete else
+                               {"mode": "sample", "seed": 1, "sample": 1000, "minutes": 4},
+                               complete=complete, provenance={}, prep_secs=0.0,
+                               sanitizer=None, broken=[])
+
+    def test_the_floor_applies_to_the_lower_bound_of_a_sample(self):
+        # 16 of 17 (94 %, interval 73-99 %): a sample misses the floor, every mutant meets it.
+        sample, full = self.doc(16, 1, False), self.doc(16, 1, True)
+        self.assertEqual(sample["floor_applies_to"], "lower bound")
+        self.assertFalse(sample["checks"][0]["passed"])
+        self.assertEqual(full["floor_applies_to"], "point estimate")
+        self.assertTrue(full["checks"][0]["passed"])
+        self.assertAlmostEqual(sample["interval"][0], 0.7302, places=4)
+        self.assertEqual((sample["sample_size"], sample["counted"], sample["population"]),
+                         (17, 17, 1604))
+        self.assertIn("lower bound", sample["checks"][0]["details"])
+        self.assertIn("73.0-99.0 %", sample["checks"][0]["figure"])
+        # 16 of 18 is below the floor either way; 100 of 101 (lower bound 94.6 %) above it.
+        self.assertFalse(self.doc(16, 2, True)["checks"][0]["passed"])
+        self.assertTrue(self.doc(100, 1, False)["checks"][0]["passed"])
+        sys.path.insert(0, mutate.ROOT)
+        from traceability.vvdata import validate
+        self.assertEqual(validate(sample), [])
+
+
 class Judges(unittest.TestCase):
     """Oracle: which tests judge a mutant, and the second judge's rule, on a made-up catalogue
     and made-up test runs (no build)."""
