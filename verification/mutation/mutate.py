@@ -20,22 +20,26 @@ score = killed / (killed + survivors not judged equivalent), with its Wilson 95 
 90 % floor applies to the interval's lower bound for a sample, to the score for every mutant.
 
     /usr/bin/python3 verification/mutation/mutate.py OUT_DIR [--sample N] [--seed S]
-        [--minutes M] [--all] [--ids I,J,...] [--scratch DIR] [--list]
+        [--minutes M] [--all] [--ids I,J,...] [--shard I/N] [--scratch DIR] [--list]
         [--coverage JSON HTML]
+    /usr/bin/python3 verification/mutation/mutate.py --merge OUT_DIR SHARD_FILE...
 
 With --coverage the scratch build is instrumented with gcov and, before any mutant, every test
 runs once on the unmutated sources: gcovr's summary and pages of src/ and include/ are the
 report's coverage (one build for both analyses). Exit status 3 when a test fails there.
 
 By default a seeded sample of N = 20 mutants judged within M = 30 minutes (after the scratch
-build); --all takes every mutant (hours on two cores), --ids the given ones (no box). Writes
-OUT_DIR/mutation.json in the verification schema
+build); --all takes every mutant (hours on two cores), --ids the given ones (no box). With
+--shard I/N only the I-th of N disjoint shards of those (a hash of each mutant's key) is judged
+and written to OUT_DIR/mutation-shard-I-of-N.json; --merge joins shards of one tree into
+OUT_DIR/mutation.json. Writes OUT_DIR/mutation.json in the verification schema
 (docs/traceability.md): the score and its interval, one row per mutant, every survivor with
 its judgement. The report shows it; the main job runs a time-boxed sample (it is an optional
 program of traceability/config.yaml: absent, the report says "not run").
 """
 import argparse
 import datetime
+import fcntl
 import fnmatch
 import hashlib
 import json
@@ -43,6 +47,7 @@ import math
 import os
 import re
 import shutil
+import socket
 import subprocess
 import sys
 import time
@@ -693,6 +698,15 @@ def wilson(k, n, z=Z):
     return (max(0.0, centre - half), min(1.0, centre + half))
 
 
+def shard_of(m, count):
+    """Which of count shards (0 to count - 1) a mutant belongs to: a hash of its key (file, line
+    text, operator, occurrence), so the split is the same on every machine, the shards are
+    disjoint and together hold every mutant, and neither the seed, the ids nor an edit
+    elsewhere moves a mutant to another shard. A shard is thus a random sample too."""
+    text = "\x1f".join(("shard", *map(str, survivor_key(m))))
+    return int(hashlib.sha256(text.encode("utf-8")).hexdigest(), 16) % count
+
+
 def commit_of(root):
     rc, out = run(["git", "-C", root, "rev-parse", "HEAD"])
     rc2, st = run(["git", "-C", root, "status", "--porcelain", "--untracked-files=no"])
@@ -723,7 +737,7 @@ def selection_text(sel):
 
 
 def make_doc(results, judgements, *, population, chosen, selection, complete, provenance,
-             prep_secs, sanitizer, broken):
+             prep_secs, sanitizer, broken, shard=None, shards=None):
     """The verification-schema document of judged mutants (results) with the record's
     judgements applied: the score, its 95 % interval and which of them the floor applies to."""
     for r in results:
@@ -758,7 +772,10 @@ def make_doc(results, judgements, *, population, chosen, selection, complete, pr
         rule = (f"every mutant judged: the floor ({100 * FLOOR:.0f} %) applies to the score, "
                 f"{pct(score)}")
     else:
-        rule = (f"a sample, {len(results)} of {population} mutants judged: the floor "
+        what = (f"shards {', '.join(str(i) for i in shards['merged'])} of {shards['count']}"
+                if shards else f"shard {shard['index']} of {shard['count']}" if shard else
+                "a sample")
+        rule = (f"{what}, {len(results)} of {population} mutants judged: the floor "
                 f"({100 * FLOOR:.0f} %) applies to the lower bound of the score's 95 % "
                 f"interval, {pct(lo)}")
     details = (f"{killed} of {counted} non-equivalent compiled mutants killed ({pct(score)}, "
@@ -774,6 +791,9 @@ def make_doc(results, judgements, *, population, chosen, selection, complete, pr
                f"{len(results)} of {chosen} chosen from {population} "
                f"({selection_text(selection)}); "
                f"{mean:.0f} s per built mutant, scratch build {prep_secs:.0f} s")
+    if shards and shards["missing"]:
+        details += (f"; shards missing: {', '.join(str(i) for i in shards['missing'])} of "
+                    f"{shards['count']}")
     if sanitizer:
         details += f", sanitizer build {sanitizer['seconds']:.0f} s"
     if broken:
@@ -846,12 +866,121 @@ def make_doc(results, judgements, *, population, chosen, selection, complete, pr
         "sanitizer_build": sanitizer,
         "mutants": results,
     }
+    if shard:
+        doc["shard"] = shard
+    if shards:
+        doc["shards"] = shards
     return doc
+
+
+def parse_shard(text):
+    m = re.fullmatch(r"(\d+)/(\d+)", text or "")
+    if not m or int(m.group(2)) < 1 or int(m.group(1)) >= int(m.group(2)):
+        raise SystemExit(f"--shard {text!r}: I/N with 0 <= I < N (e.g. 0/8 to 7/8)")
+    return int(m.group(1)), int(m.group(2))
+
+
+def shard_file(index, count):
+    return f"mutation-shard-{index}-of-{count}.json"
+
+
+def merge(out_dir, files, survivors=SURVIVORS):
+    """Merges the results of shards (mutate.py --shard I/N) into out_dir/mutation.json with the
+    record's judgements as they stand. Refuses shards of different trees or commits, of
+    different selections or shard counts, and overlapping shards (an index twice, or a mutant in
+    two files); a missing shard is reported, and the result is then not complete."""
+    docs = []
+    for f in files:
+        try:
+            with open(f, encoding="utf-8") as fh:
+                doc = json.load(fh)
+        except (OSError, ValueError) as exc:
+            raise SystemExit(f"--merge: {f}: unreadable ({exc})")
+        sh = doc.get("shard") if isinstance(doc, dict) else None
+        if doc.get("program") != "mutation" or not isinstance(sh, dict):
+            raise SystemExit(f"--merge: {f} is not the results of a shard (mutate.py --shard)")
+        docs.append((f, doc))
+    if not docs:
+        raise SystemExit("--merge: no shard results given")
+
+    def refuse_unless_same(what, value):
+        seen = {}
+        for f, d in docs:
+            seen.setdefault(json.dumps(value(d), sort_keys=True), []).append(f)
+        if len(seen) > 1:
+            raise SystemExit(f"--merge: the shards are of different {what}: " + "; ".join(
+                f"{v} ({', '.join(fs)})" for v, fs in seen.items()))
+
+    refuse_unless_same("commits", lambda d: d["provenance"].get("commit"))
+    refuse_unless_same("trees (commit and uncommitted changes)",
+                       lambda d: d["provenance"].get("tree"))
+    refuse_unless_same("shard counts", lambda d: d["shard"]["count"])
+    refuse_unless_same("selections", lambda d: {k: v for k, v in d["selection"].items()
+                                                if k != "minutes"})
+    refuse_unless_same("populations", lambda d: d["population"])
+    count = docs[0][1]["shard"]["count"]
+    where = {}
+    for f, d in docs:
+        where.setdefault(d["shard"]["index"], []).append(f)
+    twice = {i: fs for i, fs in where.items() if len(fs) > 1}
+    if twice:
+        raise SystemExit("--merge: overlapping shards: " + "; ".join(
+            f"shard {i} in {', '.join(fs)}" for i, fs in sorted(twice.items())))
+    owner = {}
+    for f, d in docs:
+        for r in d["mutants"]:
+            key = survivor_key(r)
+            if key in owner:
+                raise SystemExit(f"--merge: overlapping shards: mutant #{r['id']} {r['file']}:"
+                                 f"{r['line']} {r['op']} is in {owner[key]} and {f}")
+            owner[key] = f
+    missing = sorted(set(range(count)) - set(where))
+    results = sorted((r for _, d in docs for r in d["mutants"]), key=lambda r: r["id"])
+    first = docs[0][1]
+    sel = first["selection"]
+    complete = (sel["mode"] == "all" and not missing
+                and all(d["shard"].get("complete") for _, d in docs))
+    builds = [d["provenance"].get("build") or {} for _, d in docs]
+
+    def joined(key):
+        return "; ".join(dict.fromkeys(str(b.get(key)) for b in builds if b.get(key)))
+    provenance = {"commit": first["provenance"].get("commit"),
+                  "dirty": first["provenance"].get("dirty"),
+                  "tree": first["provenance"].get("tree"), "build_id": None,
+                  "built": min(d["provenance"].get("built") or "" for _, d in docs),
+                  "generated": now_utc(),
+                  "build": {"name": f"mutation scratch builds of {len(docs)} shard(s)",
+                            "where": joined("where"), "compiler": joined("compiler"),
+                            "flags": joined("flags"), "options": joined("options")}}
+    sanitizers = [d.get("sanitizer_build") for _, d in docs if d.get("sanitizer_build")]
+    sanitizer = None
+    if sanitizers:
+        sanitizer = dict(sanitizers[0],
+                         where="; ".join(dict.fromkeys(s["where"] for s in sanitizers)),
+                         seconds=round(sum(s["seconds"] for s in sanitizers), 1),
+                         targets=sorted({t for s in sanitizers for t in s.get("targets", [])}))
+    shards = {"count": count, "merged": sorted(where), "missing": missing,
+              "files": [os.path.basename(f) for f, _ in docs],
+              "hosts": sorted({str(d.get("host")) for _, d in docs if d.get("host")})}
+    doc = make_doc(results, load_judgements(survivors), population=first["population"],
+                   chosen=sum(d["chosen"] for _, d in docs), selection=sel, complete=complete,
+                   provenance=provenance,
+                   prep_secs=sum(d["scratch_build_seconds"] for _, d in docs),
+                   sanitizer=sanitizer,
+                   broken=sorted({n for _, d in docs for n in d["failing_unmutated"]}),
+                   shards=shards)
+    os.makedirs(out_dir, exist_ok=True)
+    with open(os.path.join(out_dir, "mutation.json"), "w", encoding="utf-8") as fh:
+        json.dump(doc, fh, indent=1)
+    print(f"mutation: merged {len(docs)} of {count} shards"
+          + (f" (missing: {', '.join(map(str, missing))})" if missing else "") + "; "
+          + doc["summary"])
+    return 0
 
 
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("out_dir")
+    ap.add_argument("out_dir", nargs="?")
     ap.add_argument("--sample", type=int, default=20)
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--minutes", type=float, default=30.0)
@@ -862,15 +991,29 @@ def main(argv=None):
     ap.add_argument("--list", action="store_true", help="print the mutants and stop")
     ap.add_argument("--survivors", default=SURVIVORS, help="the judged survivors (JSON)")
     ap.add_argument("--ids", help="judge these mutants (ids of --list, comma-separated) only")
+    ap.add_argument("--shard", metavar="I/N",
+                    help="judge the I-th (0 to N-1) of N disjoint shards of the chosen mutants "
+                         "and write OUT_DIR/mutation-shard-I-of-N.json")
+    ap.add_argument("--merge", nargs="+", metavar=("OUT_DIR", "FILE"),
+                    help="merge shards' results into OUT_DIR/mutation.json (no mutant is built)")
     ap.add_argument("--coverage", nargs=2, metavar=("JSON", "HTML"),
                     help="instrument the scratch build, run every test once on the unmutated "
                          "sources and write gcovr's summary and pages before the mutants")
     a = ap.parse_args(argv)
+    if a.merge:
+        if a.out_dir or len(a.merge) < 2:
+            ap.error("--merge OUT_DIR FILE...")
+        return merge(a.merge[0], a.merge[1:], a.survivors)
+    if not a.out_dir:
+        ap.error("OUT_DIR is required")
+    shard = parse_shard(a.shard) if a.shard else None
 
     muts = all_mutants(a.root)
     if a.list:
         try:
             for m in muts:
+                if shard and shard_of(m, shard[1]) != shard[0]:
+                    continue
                 print(f"{m['id']:5d} {m['file']}:{m['line']} {m['op']}"
                       + (f" (occurrence {m['occurrence']})" if m["occurrence"] > 1 else ""))
             print(f"{len(muts)} mutants")
@@ -888,11 +1031,20 @@ def main(argv=None):
     else:
         chosen = sample_of(muts, a.sample, a.seed)
         selection = {"mode": "sample", "seed": a.seed, "sample": a.sample, "minutes": a.minutes}
+    if shard:
+        chosen = [m for m in chosen if shard_of(m, shard[1]) == shard[0]]
     # Within each run of WINDOW sampled mutants, those of one file one after another: restoring
     # the file and building its next mutant are then one rebuild, not two, while a time box
     # still cuts the sample at a window's end, not after a few whole files.
     chosen = [m for k in range(0, len(chosen), WINDOW)
               for m in sorted(chosen[k:k + WINDOW], key=lambda m: (m["file"], m["line"], m["id"]))]
+    # One run per scratch: two runs in one copy would build each other's mutants.
+    os.makedirs(a.scratch, exist_ok=True)
+    lock = open(os.path.join(a.scratch, ".lock"), "w")
+    try:
+        fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
+    except OSError:
+        raise SystemExit(f"{a.scratch} is in use by another mutate.py run: pass --scratch DIR")
     commit, dirty = commit_of(a.root)
     tree = tree_of(a.root)
     started = now_utc()
@@ -962,7 +1114,7 @@ def main(argv=None):
               + (f" [sanitizer build {prep:.0f} s]" if prep >= 1 else ""), flush=True)
     # The record as it stands when the run ends (survivors may be judged while it runs).
     judgements = load_judgements(a.survivors)
-    complete = selection["mode"] == "all" and len(results) == len(chosen)
+    complete = selection["mode"] == "all" and not shard and len(results) == len(chosen)
     provenance = {"commit": commit, "dirty": dirty, "tree": tree, "build_id": None,
                   "built": started, "generated": now_utc(),
                   "build": scratch_build(a.scratch, bool(a.coverage))}
@@ -970,9 +1122,14 @@ def main(argv=None):
                    selection=selection, complete=complete, provenance=provenance,
                    prep_secs=prep_secs,
                    sanitizer=sanitizer.description() if sanitizer.configured else None,
-                   broken=sorted(n for n, ok in baseline.items() if not ok))
+                   broken=sorted(n for n, ok in baseline.items() if not ok),
+                   shard={"index": shard[0], "count": shard[1],
+                          "complete": len(results) == len(chosen)} if shard else None)
+    if shard:
+        doc["host"] = socket.gethostname()
     os.makedirs(a.out_dir, exist_ok=True)
-    with open(os.path.join(a.out_dir, "mutation.json"), "w", encoding="utf-8") as fh:
+    name = shard_file(*shard) if shard else "mutation.json"
+    with open(os.path.join(a.out_dir, name), "w", encoding="utf-8") as fh:
         json.dump(doc, fh, indent=1)
     print("mutation: " + doc["summary"])
     return 3 if coverage_failed else 0

@@ -333,8 +333,9 @@ class Judges(unittest.TestCase):
         self.assertFalse(killed)
 
 
-class Run(unittest.TestCase):
-    """Oracle: which mutants of made-up files go to which judge, with the builds and tests
+class Shards(unittest.TestCase):
+    """Oracle: a sharded run and its merge give what one run of the same mutants gives (every
+    mutant once, the same verdicts and score), on made-up files with the builds and tests
     mocked: a mutant's verdict is a function of its key, as a real build's would be."""
 
     FILES = {"src/tamias2d/model/a.hpp": "".join(f"    x{k} = a{k} + b{k} * 2.0;\n"
@@ -396,6 +397,72 @@ class Run(unittest.TestCase):
     def load(self, path):
         with open(path) as fh:
             return json.load(fh)
+
+    def test_shards_merge_into_the_whole_run(self):
+        muts = mutate.all_mutants(self.root)
+        whole = self.load(os.path.join(self.run_main("--all"), "mutation.json"))
+        self.assertTrue(whole["complete"])
+        self.assertEqual(whole["population"], len(muts))
+        self.assertGreater(whole["killed_by_sanitizer"], 0)
+        files, seen = [], []
+        for i in range(3):
+            out = self.run_main("--all", "--shard", f"{i}/3")
+            files.append(os.path.join(out, mutate.shard_file(i, 3)))
+            doc = self.load(files[-1])
+            self.assertFalse(doc["complete"])
+            self.assertEqual(doc["floor_applies_to"], "lower bound")
+            seen += [r["id"] for r in doc["mutants"]]
+        self.assertEqual(sorted(seen), [m["id"] for m in muts])  # disjoint, together all
+        merged_dir = os.path.join(self.tmp.name, "merged")
+        with contextlib.redirect_stdout(io.StringIO()):
+            mutate.main(["--merge", merged_dir, *files, "--survivors", self.record])
+        merged = self.load(os.path.join(merged_dir, "mutation.json"))
+        for key in ("score", "killed", "counted", "interval", "population", "complete",
+                    "floor_applies_to", "killed_by_sanitizer"):
+            self.assertEqual(merged[key], whole[key], key)
+        self.assertEqual([(r["id"], r["verdict"]) for r in merged["mutants"]],
+                         [(r["id"], r["verdict"]) for r in whole["mutants"]])
+        self.assertEqual(merged["shards"]["missing"], [])
+        sys.path.insert(0, mutate.ROOT)
+        from traceability.vvdata import validate
+        self.assertEqual(validate(merged), [])
+
+        # A missing shard: reported, and the rest is a sample (the floor on the lower bound).
+        with contextlib.redirect_stdout(io.StringIO()):
+            mutate.main(["--merge", merged_dir, files[0], files[2], "--survivors", self.record])
+        part = self.load(os.path.join(merged_dir, "mutation.json"))
+        self.assertEqual(part["shards"]["missing"], [1])
+        self.assertFalse(part["complete"])
+        self.assertEqual(part["floor_applies_to"], "lower bound")
+        self.assertIn("shards missing: 1 of 3", part["checks"][0]["details"])
+
+        # Refused: a shard twice, and shards of another tree.
+        for bad in ([files[0], files[0]], [files[0], self.other_tree_shard()]):
+            with self.subTest(bad=bad), self.assertRaises(SystemExit):
+                mutate.main(["--merge", merged_dir, *bad, "--survivors", self.record])
+
+    def other_tree_shard(self):
+        self.tree = "tree-2"
+        return os.path.join(self.run_main("--all", "--shard", "1/3"), mutate.shard_file(1, 3))
+
+    def test_the_split_is_stable_under_edits_elsewhere(self):
+        before = {mutate.survivor_key(m): mutate.shard_of(m, 4)
+                  for m in mutate.all_mutants(self.root)}
+        with open(os.path.join(self.root, "src/tamias2d/model/a.hpp"), "a") as fh:
+            fh.write("    z = u / v;\n")
+        after = {mutate.survivor_key(m): mutate.shard_of(m, 4)
+                 for m in mutate.all_mutants(self.root)}
+        self.assertEqual({k: v for k, v in after.items() if k in before}, before)
+        self.assertEqual(len(set(before.values())), 4)  # every shard gets some
+
+    def test_one_run_per_scratch(self):
+        scratch = os.path.join(self.tmp.name, "s")
+        os.makedirs(scratch)
+        with open(os.path.join(scratch, ".lock"), "w") as held:
+            mutate.fcntl.flock(held, mutate.fcntl.LOCK_EX)
+            with self.assertRaises(SystemExit):
+                self.run_main("--all")
+        self.run_main("--all")  # released
 
     def test_a_survivor_goes_to_the_sanitizer_build_only(self):
         doc = self.load(os.path.join(self.run_main("--all"), "mutation.json"))
