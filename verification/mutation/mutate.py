@@ -48,8 +48,10 @@ import os
 import re
 import shutil
 import socket
+import stat
 import subprocess
 import sys
+import tempfile
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -323,6 +325,11 @@ def prepare_scratch(root, scratch, coverage=False):
     rc, out = run(["nice", "-n", "5", "cmake", "--build", build, "-j2", "--target", *targets])
     if rc != 0:
         raise SystemExit("scratch build of the unmutated sources failed:\n" + out[-3000:])
+    # Listed again now that the executables exist: ctest names an entry's command only then.
+    rc, out = run(["ctest", "--test-dir", build, "--show-only=json-v1"])
+    if rc != 0:
+        raise SystemExit("ctest cannot list the scratch build's tests:\n" + out[-3000:])
+    catalogue = json.loads(out).get("tests", [])
     return src, build, catalogue, object_digests(build)
 
 
@@ -409,7 +416,8 @@ class SanitizerScratch:
 
     def __init__(self, scratch, src):
         self.src, self.build = src, os.path.join(scratch, "build-asan")
-        self.configured, self.built, self.baseline = False, set(), {}
+        self.configured, self.built, self.baseline, self.commands = False, set(), {}, {}
+        self.unmutated = None
         self.seconds = 0.0  # spent configuring and building it unmutated
 
     def ensure(self, targets):
@@ -435,28 +443,34 @@ class SanitizerScratch:
                     raise SystemExit("sanitizer scratch build of the unmutated sources failed:\n"
                                      + out[-3000:])
                 self.built |= set(todo)
+                rc, out = run(["ctest", "--test-dir", self.build, "--show-only=json-v1"])
+                if rc != 0:
+                    raise SystemExit("ctest cannot list the sanitizer build's tests:\n"
+                                     + out[-3000:])
+                self.commands = commands_of(json.loads(out).get("tests", []))
+                self.unmutated = Unmutated(self.build)
         finally:
             self.seconds += time.monotonic() - t0
 
     def judge(self, m, entries, test_timeout):
         """(killed, log, build seconds, test seconds, failed entries): whether the tests of
-        entries fail on the mutant in this build (a sanitizer report, or a failure of an entry
-        that passes on the unmutated sources here), and the report's lines."""
+        entries fail on the mutant in this build (a sanitizer report, or a failure of an
+        executable whose entries pass on the unmutated sources here), and the report's lines."""
         b = t = 0.0
         for _ in range(2):
             entries = {n: x for n, x in entries.items() if self.baseline.get(n, True)}
             self.ensure(set(entries.values()))
-            verdict, log, b1, t1 = judge(m, self.src, self.build, entries, test_timeout,
-                                         env=SANITIZER_ENV, output=True)
+            verdict, log, b1, t1, failed = judge(m, self.src, self.build, entries, test_timeout,
+                                                 env=SANITIZER_ENV, commands=self.commands,
+                                                 unmutated=self.unmutated)
             b, t = b + b1, t + t1
             if verdict == "stillborn":
                 raise SystemExit(f"mutant #{m['id']} compiles in the scratch build but not in "
                                  f"the sanitizer build:\n{log[-3000:]}")
             if verdict != "killed":
                 return False, "", b, t, []
-            failed = failed_entries(log)
             if passes_unmutated(failed, self.build, entries, self.baseline, test_timeout,
-                                env=SANITIZER_ENV):
+                                env=SANITIZER_ENV, commands=self.commands):
                 reports = [r.strip() for r in SANITIZER_REPORT.findall(log)]
                 summary = "; ".join(dict.fromkeys(reports)) if reports else (
                     "failed in the sanitizer build only: " + ", ".join(failed))
@@ -487,6 +501,60 @@ def object_digests(build, since_ns=None):
                 with open(path, "rb") as fh:
                     out[path] = hashlib.sha256(fh.read()).hexdigest()
     return out
+
+
+def is_output(name, mode):
+    """Whether a file of a build directory is a build output a mutant's build can rewrite: an
+    object, its coverage notes, a library, an executable, a precompiled header."""
+    return (name.endswith((".o", ".gcno", ".gch", ".a")) or ".so" in name
+            or bool(mode & 0o111))
+
+
+class Unmutated:
+    """The bytes of a built scratch's outputs as the unmutated sources build them (precompiled
+    headers aside: large, and no target file reaches them). After a mutant, restore() puts back
+    every output its build rewrote, each keeping the time that build gave it, and the source
+    then gets its own time back: to ninja the build is as the unmutated sources left it, so the
+    next mutant's build compiles only that mutant, not the restored file too (for a header,
+    every file that includes it, twice). Ninja keeps deciding what is out of date as always:
+    an output is rebuilt when an input is newer than it (or than the time its log records)."""
+
+    def __init__(self, build):
+        self.build, self.files = build, {}
+        for dirpath, _, files in os.walk(build):
+            for f in files:
+                path = os.path.join(dirpath, f)
+                st = os.lstat(path)
+                if stat.S_ISREG(st.st_mode) and is_output(f, st.st_mode) \
+                        and not f.endswith(".gch"):
+                    with open(path, "rb") as fh:
+                        self.files[path] = fh.read()
+
+    def written_since(self, since_ns):
+        out = []
+        for dirpath, _, files in os.walk(self.build):
+            for f in files:
+                path = os.path.join(dirpath, f)
+                st = os.lstat(path)
+                if stat.S_ISREG(st.st_mode) and st.st_mtime_ns >= since_ns \
+                        and is_output(f, st.st_mode):
+                    out.append(path)
+        return out
+
+    def restore(self, since_ns):
+        """Puts back the unmutated bytes of every output written at or after since_ns, each
+        with its current time; False, with nothing done, when one of them is not held (the
+        source must then keep a new time, so that the next build rebuilds from it)."""
+        written = self.written_since(since_ns)
+        if any(path not in self.files for path in written):
+            return False
+        for path in written:
+            st = os.stat(path)
+            with open(path, "r+b") as fh:
+                fh.write(self.files[path])
+                fh.truncate()
+            os.utime(path, ns=(st.st_atime_ns, st.st_mtime_ns))
+        return True
 
 
 def ctest_entries(catalogue, labels, targets=()):
@@ -521,22 +589,26 @@ def entries_of(catalogue, labels, relpath):
     return ctest_entries(catalogue, labels, golden)
 
 
-def judge(m, src, build, entries, test_timeout, objects=None, env=None, output=False):
-    """(verdict, log, build seconds, test seconds) of one mutant, run against entries
-    ({CTest name: target}) in build (env: the tests' variables; output: the failing tests'
-    output in the log); the scratch source is restored afterwards. "not built" (only when
-    objects, the unmutated objects' digests, are given): every object the mutant's build
-    rewrote is bit for bit the unmutated one, so the mutated line is not compiled here (a
-    branch of #if this build does not take); no test can tell it apart and it is not
-    counted."""
+def judge(m, src, build, entries, test_timeout, objects=None, env=None, commands=None,
+          unmutated=None):
+    """(verdict, log, build seconds, test seconds, failed entries) of one mutant, run against
+    entries ({CTest name: target}) in build (commands: {CTest name: (executable, directory)},
+    see run_tests; env: the tests' variables); the scratch source is restored afterwards, and
+    with unmutated (an Unmutated of build) the outputs too, so that the source keeps its time.
+    "not built" (only when objects, the unmutated objects' digests, are given): every object
+    the mutant's build rewrote is bit for bit the unmutated one, so the mutated line is not
+    compiled here (a branch of #if this build does not take); no test can tell it apart and it
+    is not counted."""
     if not entries:
-        return "no tests", "", 0.0, 0.0
+        return "no tests", "", 0.0, 0.0, []
     path = os.path.join(src, m["file"])
     with open(path, encoding="utf-8") as fh:
         original = fh.read()
+    times = os.stat(path)
     lines = original.split("\n")
     assert lines[m["line"] - 1] == m["before"]
     lines[m["line"] - 1] = m["after"]
+    since = None
     try:
         with open(path, "w", encoding="utf-8") as fh:
             fh.write("\n".join(lines))
@@ -546,24 +618,98 @@ def judge(m, src, build, entries, test_timeout, objects=None, env=None, output=F
         rc, out = run(["nice", "-n", "5", "cmake", "--build", build, "-j2", "--target", *targets])
         t1 = time.monotonic()
         if rc != 0:
-            return "stillborn", out[-600:], t1 - t0, 0.0
+            return "stillborn", out[-600:], t1 - t0, 0.0, []
         if objects is not None:
             rebuilt = object_digests(build, since)
             if all(objects.get(path) == digest for path, digest in rebuilt.items()):
                 return ("not built", f"{len(rebuilt)} objects rebuilt, each as unmutated",
-                        t1 - t0, 0.0)
-        regex = "^(" + "|".join(re.escape(n) for n in sorted(entries)) + ")$"
-        rc, out = run(["ctest", "--test-dir", build, "-R", regex, "--stop-on-failure", "-j2",
-                       "--timeout", str(test_timeout)]
-                      + (["--output-on-failure"] if output else []),
-                      timeout=test_timeout * len(entries) + 60, env=env)
+                        t1 - t0, 0.0, [])
+        failed, out = run_tests(entries, commands, test_timeout, env=env)
         t2 = time.monotonic()
-        if rc is None or rc != 0:
-            return "killed", out, t1 - t0, t2 - t1
-        return "survived", "", t1 - t0, t2 - t1
+        if failed:
+            return "killed", out, t1 - t0, t2 - t1, failed
+        return "survived", "", t1 - t0, t2 - t1, []
     finally:
+        # The source first, with a new time: whatever happens next, the build then rebuilds
+        # from it. Its own time back only once every output it reached is unmutated again.
         with open(path, "w", encoding="utf-8") as fh:
             fh.write(original)
+        if unmutated is not None and since is not None and unmutated.restore(since):
+            os.utime(path, ns=(times.st_atime_ns, times.st_mtime_ns))
+
+
+def commands_of(catalogue):
+    """{CTest name: (executable, working directory)} of the catalogue's labelled entries whose
+    executable exists (ctest --show-only names a command only then)."""
+    out = {}
+    for t in catalogue:
+        if "@" not in t["name"] or not t.get("command"):
+            continue
+        props = {p["name"]: p["value"] for p in t.get("properties", [])}
+        out[t["name"]] = (t["command"][0], props.get("WORKING_DIRECTORY"))
+    return out
+
+
+# Seconds each test executable took at its last run with its entries' labels (per label), so
+# that the longest starts first: the other process runs the short ones meanwhile.
+_COSTS = {}
+
+
+def run_tests(entries, commands, test_timeout, env=None, jobs=2):
+    """Runs the tests of entries ({CTest name: target}) and returns (failed, log): the entries
+    of the executables that failed or ran past test_timeout (none when all pass) and their
+    output. Each executable runs once, with the union of its entries' labels
+    (--run_test=@A:@B), not once per entry as CTest would: a case that carries several of the
+    labels runs once. Two run at a time; at the first failure the others are stopped."""
+    units = {}
+    for n, target in sorted(entries.items()):
+        exe, cwd = commands[n]
+        u = units.setdefault(target, {"exe": exe, "cwd": cwd, "labels": [], "names": []})
+        u["labels"].append(n.split("@", 1)[1])
+        u["names"].append(n)
+    todo = sorted(units.items(), key=lambda kv: (-_COSTS.get(kv[0], 1e9) * len(kv[1]["labels"]),
+                                                 kv[0]))
+    full_env = None if env is None else {**os.environ, **env}
+    running, failed, log = [], [], []
+    try:
+        while todo or running:
+            while todo and len(running) < jobs and not failed:
+                target, u = todo.pop(0)
+                out = tempfile.TemporaryFile(mode="w+")
+                p = subprocess.Popen([u["exe"], "--run_test=" + ":".join("@" + x for x in
+                                                                          u["labels"]),
+                                      "--color_output=no"], cwd=u["cwd"] or None, stdout=out,
+                                     stderr=subprocess.STDOUT, env=full_env)
+                running.append((p, target, u, out, time.monotonic()))
+            if failed:
+                break
+            time.sleep(0.02)
+            for item in list(running):
+                p, target, u, out, t0 = item
+                rc = p.poll()
+                late = rc is None and time.monotonic() - t0 > test_timeout
+                if rc is None and not late:
+                    continue
+                running.remove(item)
+                if late:
+                    p.kill()
+                    p.wait()
+                else:
+                    _COSTS[target] = (time.monotonic() - t0) / len(u["labels"])
+                if late or rc != 0:
+                    failed += u["names"]
+                    out.seek(0)
+                    text = out.read()
+                    log.append(f"{target} {' '.join('@' + x for x in u['labels'])}: "
+                               + (f"time-out after {test_timeout} s" if late else
+                                  f"exit status {rc}") + "\n" + text[-20000:])
+                out.close()
+    finally:
+        for p, _, _, out, _ in running:
+            p.kill()
+            p.wait()
+            out.close()
+    return sorted(failed), "\n".join(log)
 
 
 FAILED = re.compile(r"^\s*\d+ - (\S+) \(", re.M)
@@ -575,23 +721,28 @@ def failed_entries(log):
     return sorted(set(FAILED.findall(tail[1]))) if len(tail) == 2 else []
 
 
-def passes_unmutated(names, build, entries, baseline, test_timeout, env=None):
-    """Whether every entry of names passes on the unmutated sources (the scratch restored),
-    remembered in baseline: a kill by a test that fails anyway is no kill."""
-    todo = [n for n in names if n not in baseline]
+def passes_unmutated(names, build, entries, baseline, test_timeout, env=None, commands=None):
+    """Whether every entry of names (those of the executables that failed on a mutant) passes
+    on the unmutated sources (the scratch restored), remembered in baseline: a kill by a test
+    that fails anyway is no kill. They run as on the mutant (run_tests); when they fail, each
+    entry alone tells which."""
+    todo = {n: entries[n] for n in names if n not in baseline}
     if todo:
-        targets = sorted({entries[n] for n in todo})
+        targets = sorted(set(todo.values()))
         rc, out = run(["nice", "-n", "5", "cmake", "--build", build, "-j2", "--target", *targets])
         if rc != 0:
             raise SystemExit("the unmutated scratch does not build:\n" + out[-3000:])
-        regex = "^(" + "|".join(re.escape(n) for n in todo) + ")$"
-        rc, out = run(["ctest", "--test-dir", build, "-R", regex, "-j2", "--timeout",
-                       str(test_timeout)], timeout=test_timeout * len(todo) + 60, env=env)
-        bad = set(failed_entries(out)) if rc not in (None, 0) else set()
-        if rc is None:
-            bad = set(todo)
+        failed, _ = run_tests(todo, commands, test_timeout, env=env)
+        if failed:
+            alone = {n: not run_tests({n: todo[n]}, commands, test_timeout, env=env)[0]
+                     for n in failed}
+            # Failing together but each passing alone (a time-out of the union): none is
+            # trusted to kill.
+            bad = [n for n, ok in alone.items() if not ok] or failed
+            for n in bad:
+                baseline[n] = False
         for n in todo:
-            baseline[n] = n not in bad
+            baseline.setdefault(n, True)
     return all(baseline[n] for n in names)
 
 
@@ -1069,6 +1220,8 @@ def main(argv=None):
     # test executable moves the deadline on by its time.
     deadline = None if (a.all or a.ids) else time.monotonic() + 60.0 * a.minutes
     sanitizer = SanitizerScratch(a.scratch, src)
+    commands = commands_of(catalogue)
+    unmutated = Unmutated(build)
     results = []
     baseline = {}  # CTest entry -> passes on the unmutated sources (asked when it kills)
     for m in chosen:
@@ -1078,14 +1231,18 @@ def main(argv=None):
         entries = entries_of(catalogue, labels, m["file"])
         t0 = time.monotonic()
         entries = {n: t for n, t in entries.items() if baseline.get(n, True)}
-        verdict, log, b_secs, t_secs = judge(m, src, build, entries, a.test_timeout, objects)
-        if verdict == "killed" and not passes_unmutated(failed_entries(log), build, entries,
-                                                        baseline, a.test_timeout):
+        verdict, log, b_secs, t_secs, failed = judge(m, src, build, entries, a.test_timeout,
+                                                     objects, commands=commands,
+                                                     unmutated=unmutated)
+        if verdict == "killed" and not passes_unmutated(failed, build, entries, baseline,
+                                                        a.test_timeout, commands=commands):
             # Killed by a test that fails without the mutant too: judged again without it.
             broken = sorted(n for n in entries if baseline.get(n) is False)
             print(f"   (fails unmutated, left out from now on: {', '.join(broken)})")
             entries = {n: t for n, t in entries.items() if baseline.get(n, True)}
-            verdict, log, b_secs, t_secs = judge(m, src, build, entries, a.test_timeout, objects)
+            verdict, log, b_secs, t_secs, failed = judge(m, src, build, entries, a.test_timeout,
+                                                         objects, commands=commands,
+                                                         unmutated=unmutated)
         killed_by = "tests" if verdict == "killed" else None
         prep_before = sanitizer.seconds
         if verdict == "survived":
@@ -1104,7 +1261,7 @@ def main(argv=None):
                  or killed_by == "sanitizer" else "")
         if killed_by:
             r["killed_by"] = killed_by
-            r["failed"] = failed_entries(log) if killed_by == "tests" else san_failed
+            r["failed"] = failed if killed_by == "tests" else san_failed
         if verdict == "survived":
             r["sanitizer"] = "passed"
         results.append(r)

@@ -4,6 +4,8 @@ import contextlib
 import io
 import json
 import os
+import re
+import shutil
 import sys
 import tempfile
 import unittest
@@ -287,18 +289,21 @@ class Judges(unittest.TestCase):
 
         def fake_run(cmd, cwd=None, timeout=None, env=None):
             calls.append((cmd, env))
-            if cmd[0] == "ctest":  # the unmutated sources, asked when a test kills
-                return (8, "The following tests FAILED:\n\t  3 - engine_tests@IM3 (Failed)\n") \
-                    if unmutated_fails else (0, "100% tests passed")
-            return 0, ""
+            return 0, '{"tests": []}'  # configure, build, and ctest's empty listing
+
+        def fake_run_tests(entries, commands, test_timeout, env=None, jobs=2):
+            # The unmutated sources, asked when a test kills.
+            calls.append(("unmutated", sorted(entries), env))
+            return (sorted(entries), "failed") if unmutated_fails else ([], "")
 
         def fake_judge(m, src, build, entries, test_timeout, objects=None, env=None,
-                       output=False):
-            calls.append(("judge", build, env, output))
-            return ("killed", asan_log, 1.0, 2.0) if asan_log and entries else \
-                ("survived", "", 1.0, 2.0)
+                       **_):
+            calls.append(("judge", build, env))
+            return ("killed", asan_log, 1.0, 2.0, sorted(entries)) if asan_log and entries \
+                else ("survived", "", 1.0, 2.0, [])
 
         with mock.patch.object(mutate, "run", fake_run), \
+                mock.patch.object(mutate, "run_tests", fake_run_tests), \
                 mock.patch.object(mutate, "judge", fake_judge):
             s = mutate.SanitizerScratch("/scratch", "/scratch/src")
             out = s.judge({"id": 7}, {"engine_tests@IM3": "engine_tests"}, 60)
@@ -313,15 +318,14 @@ class Judges(unittest.TestCase):
         self.assertEqual(failed, ["engine_tests@IM3"])
         self.assertIn("AddressSanitizer: heap-buffer-overflow", summary)
         judged = [c for c in calls if c[0] == "judge"]
-        self.assertEqual(judged[0][1:], ("/scratch/build-asan", mutate.SANITIZER_ENV, True))
+        self.assertEqual(judged[0][1:], ("/scratch/build-asan", mutate.SANITIZER_ENV))
         # Configured lazily, once, with the sanitizers on, and built before the mutant.
         configure = [c[0] for c in calls if c[0][0] == "cmake" and "-S" in c[0]]
         self.assertEqual(len(configure), 1)
         self.assertIn("-DTAMIAS_SANITIZE=ON", configure[0])
         self.assertEqual(s.built, {"engine_tests"})
         # The kill is confirmed on the unmutated sources, in the sanitizer build's setting.
-        self.assertIn(mutate.SANITIZER_ENV, [c[1] for c in calls if isinstance(c[0], list)
-                                             and c[0][0] == "ctest"])
+        self.assertIn(("unmutated", ["engine_tests@IM3"], mutate.SANITIZER_ENV), calls)
 
     def test_no_kill_by_a_test_that_fails_unmutated_or_without_failing(self):
         log = "==1==ERROR: AddressSanitizer: x\nThe following tests FAILED:\n" \
@@ -371,11 +375,12 @@ class Shards(unittest.TestCase):
 
     def run_main(self, *args):
         def fake_judge(m, src, build, entries, test_timeout, objects=None, env=None,
-                       output=False):
+                       **_):
             self.judged.append((m["id"], build))
             v = self.verdict(m, build)
             return v, ("==1==ERROR: AddressSanitizer: stray read" if v == "killed" and
-                       build.endswith("build-asan") else ""), 1.0, 1.0
+                       build.endswith("build-asan") else ""), 1.0, 1.0, \
+                sorted(entries) if v == "killed" else []
 
         catalogue = [{"name": "determinism_tests@determinism",
                       "properties": [{"name": "LABELS", "value": ["determinism"]}]}]
@@ -384,7 +389,8 @@ class Shards(unittest.TestCase):
                                lambda root, scratch, coverage=False:
                                (scratch + "/src", scratch + "/build", catalogue, {})), \
                 mock.patch.object(mutate, "judge", fake_judge), \
-                mock.patch.object(mutate, "run", lambda *a, **k: (0, "")), \
+                mock.patch.object(mutate, "run", lambda *a, **k: (0, '{"tests": []}')), \
+                mock.patch.object(mutate, "run_tests", lambda *a, **k: ([], "")), \
                 mock.patch.object(mutate, "commit_of", lambda root: ("c0ffee", False)), \
                 mock.patch.object(mutate, "tree_of", lambda root: self.tree), \
                 mock.patch.object(mutate, "scratch_build", lambda s, c: {"name": "scratch"}), \
@@ -470,6 +476,122 @@ class Shards(unittest.TestCase):
         self.assertEqual(asan, {r["id"] for r in doc["mutants"]
                                 if r["verdict"] == "survived" or
                                 r.get("killed_by") == "sanitizer"})
+
+
+def script(path, body):
+    with open(path, "w") as fh:
+        fh.write("#!/bin/sh\n" + body + "\n")
+    os.chmod(path, 0o755)
+    return path
+
+
+class Tests(unittest.TestCase):
+    """Oracle: what made-up test executables (shell scripts that log their arguments) were
+    asked to do, and when run_tests returned."""
+
+    def test_each_executable_runs_once_with_its_entries_labels(self):
+        with tempfile.TemporaryDirectory() as d:
+            log = os.path.join(d, "log")
+            exe = script(os.path.join(d, "engine_tests"), f'echo "$@" >> {log}')
+            other = script(os.path.join(d, "model_tests"), f'echo "model $@" >> {log}')
+            commands = {"engine_tests@IM3": (exe, d), "engine_tests@R7": (exe, d),
+                        "model_tests@DD8": (other, d)}
+            entries = {n: n.split("@")[0] for n in commands}
+            self.assertEqual(mutate.run_tests(entries, commands, 30), ([], ""))
+            with open(log) as fh:
+                self.assertEqual(sorted(fh.read().split("\n")),
+                                 ["", "--run_test=@IM3:@R7 --color_output=no",
+                                  "model --run_test=@DD8 --color_output=no"])
+
+    def test_the_first_failure_stops_the_others_and_a_time_out_fails(self):
+        with tempfile.TemporaryDirectory() as d:
+            slow = script(os.path.join(d, "slow"), "sleep 30")
+            bad = script(os.path.join(d, "bad"), "echo 'check failed'; exit 201")
+            commands = {"slow@A": (slow, d), "bad@B": (bad, d), "bad@C": (bad, d)}
+            t0 = mutate.time.monotonic()
+            failed, log = mutate.run_tests({n: n.split("@")[0] for n in commands}, commands, 60)
+            self.assertLess(mutate.time.monotonic() - t0, 20)
+            self.assertEqual(failed, ["bad@B", "bad@C"])
+            self.assertIn("check failed", log)
+            failed, log = mutate.run_tests({"slow@A": "slow"}, commands, 1)
+            self.assertEqual(failed, ["slow@A"])
+            self.assertIn("time-out after 1 s", log)
+
+
+@unittest.skipUnless(all(shutil.which(t) for t in ("cmake", "ninja", "c++")),
+                     "needs cmake, ninja and a C++ compiler")
+class Restore(unittest.TestCase):
+    """Oracle: ninja's own dry run and the bytes of the outputs, on a made-up CMake project
+    built as the scratch is (a shared library, executables not relinked when only it changes):
+    after a mutant and its restoring, the build is as the unmutated sources leave it."""
+
+    def test_a_mutant_leaves_the_build_unmutated_and_the_next_builds_only_itself(self):
+        with tempfile.TemporaryDirectory() as d:
+            src, build = os.path.join(d, "src"), os.path.join(d, "build")
+            os.makedirs(src)
+            files = {"CMakeLists.txt": "cmake_minimum_required(VERSION 3.16)\nproject(t CXX)\n"
+                                       "add_library(lib SHARED a.cpp b.cpp)\n"
+                                       "add_executable(app main.cpp)\n"
+                                       "target_link_libraries(app lib)\n",
+                     "h.hpp": "inline int g() { return 2 * 3; }\n",
+                     "a.cpp": '#include "h.hpp"\nint f() {\n    return 1 + g();\n}\n',
+                     "b.cpp": "int k() {\n    return 4 - 1;\n}\n",
+                     "main.cpp": '#include "h.hpp"\nint f();\nint k();\n'
+                                 "int main() { return f() == 7 && k() == 3 && g() == 6 ? 0 : 1; }\n"}
+            for name, text in files.items():
+                with open(os.path.join(src, name), "w") as fh:
+                    fh.write(text)
+            rc, out = mutate.run(["cmake", "-S", src, "-B", build, "-G", "Ninja",
+                                  "-DCMAKE_BUILD_TYPE=Release", "-DBUILD_SHARED_LIBS=ON",
+                                  "-DCMAKE_LINK_DEPENDS_NO_SHARED=ON"])
+            self.assertEqual(rc, 0, out)
+            self.assertEqual(mutate.run(["cmake", "--build", build])[0], 0)
+            unmutated, objects = mutate.Unmutated(build), mutate.object_digests(build)
+            app = os.path.join(build, "app")
+            entries, commands = {"app@X": "app"}, {"app@X": (app, build)}
+
+            def mutant(name, no, before, after):
+                return {"file": name, "line": no, "before": before, "after": after, "id": 0}
+
+            def dry_run():
+                return mutate.run(["ninja", "-C", build, "-n"])[1]
+
+            for m in (mutant("a.cpp", 3, "    return 1 + g();", "    return 1 - g();"),
+                      mutant("h.hpp", 1, files["h.hpp"][:-1],
+                             "inline int g() { return 2 / 3; }")):
+                with self.subTest(file=m["file"]):
+                    path = os.path.join(src, m["file"])
+                    before = os.stat(path).st_mtime_ns
+                    verdict = mutate.judge(m, src, build, entries, 60, objects,
+                                           commands=commands, unmutated=unmutated)
+                    self.assertEqual(verdict[0], "killed")  # the program checks f() and g()
+                    self.assertEqual(os.stat(path).st_mtime_ns, before)
+                    self.assertIn("no work to do", dry_run())
+                    for out_path, data in unmutated.files.items():
+                        with open(out_path, "rb") as fh:
+                            self.assertEqual(fh.read(), data, out_path)
+            # The next mutant's build compiles its own file and links, nothing else.
+            m = mutant("b.cpp", 2, "    return 4 - 1;", "    return 4 + 1;")
+            with mock.patch.object(mutate, "run_tests", lambda *a, **k: (["app@X"], "")):
+                real_run = mutate.run
+                logs = []
+
+                def logging_run(cmd, **kw):
+                    rc, out = real_run(cmd, **kw)
+                    logs.append(out)
+                    return rc, out
+                with mock.patch.object(mutate, "run", logging_run):
+                    mutate.judge(m, src, build, entries, 60, objects, commands=commands,
+                                 unmutated=unmutated)
+            compiled = re.findall(r"Building CXX object (\S+)", logs[0])
+            self.assertEqual(compiled, ["CMakeFiles/lib.dir/b.cpp.o"])
+            self.assertIn("no work to do", dry_run())
+            self.assertEqual(mutate.judge(dict(m, after=m["before"]), src, build, entries, 60,
+                                          objects, commands=commands, unmutated=unmutated)[0],
+                             "not built")
+            # The control: restored without its outputs, the source is rebuilt.
+            mutate.judge(m, src, build, entries, 60, objects, commands=commands)
+            self.assertIn("b.cpp.o", dry_run())
 
 
 if __name__ == "__main__":
