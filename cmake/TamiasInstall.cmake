@@ -14,7 +14,12 @@ install(TARGETS ${targets} EXPORT tamias2dTargets
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/tamias2d DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
         COMPONENT development)
 install(FILES ${PROJECT_BINARY_DIR}/include/tamias2d/version.hpp
+              ${PROJECT_BINARY_DIR}/include/tamias2d/export.hpp
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/tamias2d COMPONENT development)
+if(TARGET tamias2d_io)
+  install(FILES ${PROJECT_BINARY_DIR}/include/tamias2d/io/export.hpp
+          DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/tamias2d/io COMPONENT development)
+endif()
 install(EXPORT tamias2dTargets NAMESPACE tamias2d:: DESTINATION ${TAMIAS_CMAKE_DIR}
         COMPONENT development)
 

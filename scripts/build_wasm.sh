@@ -2,7 +2,10 @@
 # The live sandbox (docs/viewer.md, "Live sandbox"): the library's own sources (src/tamias2d/,
 # scene reader included) and apps/wasm/sandbox_bindings.cpp compiled to WebAssembly with
 # Debian's emscripten, and one self-contained page, build-wasm/sandbox.html, that runs them.
-#   scripts/build_wasm.sh [BUILD_DIR]     (default build-wasm/)
+#   scripts/build_wasm.sh [BUILD_DIR] [--determinism-tests]     (default build-wasm/)
+# --determinism-tests: also BUILD_DIR/determinism_tests.js, the golden-hash test
+# (tests/determinism/test_golden_hashes.cpp, Boost.Test header-only) compiled from the same
+# objects for Node.js, which runs it on the real file system (.ci/wasm_check.sh).
 # Installs emscripten when em++ is missing (about 30 s on a machine that has clang 14; it is
 # not in scripts/setup.sh: nothing else needs it).
 #
@@ -13,7 +16,14 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
-out=${1:-build-wasm}
+out=build-wasm
+determinism_tests=0
+for arg in "$@"; do
+    case $arg in
+    --determinism-tests) determinism_tests=1 ;;
+    *) out=$arg ;;
+    esac
+done
 mkdir -p "$out/obj" "$out/include/tamias2d" "$out/host"
 out=$(cd "$out" && pwd)
 
@@ -40,6 +50,11 @@ sed -e "s/@PROJECT_VERSION_MAJOR@/$major/" -e "s/@PROJECT_VERSION_MINOR@/$minor/
 cmp -s "$out/include/tamias2d/version.hpp.new" "$out/include/tamias2d/version.hpp" ||
     mv "$out/include/tamias2d/version.hpp.new" "$out/include/tamias2d/version.hpp"
 rm -f "$out/include/tamias2d/version.hpp.new"
+# The export macros (GenerateExportHeader's tamias2d/export.hpp and tamias2d/io/export.hpp in
+# the CMake build): empty, as for a static library, since everything links into one module.
+mkdir -p "$out/include/tamias2d/io"
+printf '#pragma once\n#define TAMIAS2D_EXPORT\n' >"$out/include/tamias2d/export.hpp"
+printf '#pragma once\n#define TAMIAS2D_IO_EXPORT\n' >"$out/include/tamias2d/io/export.hpp"
 
 # The flags that decide the results' bits are the native build's (src/CMakeLists.txt): no
 # contraction into fused multiply-adds, no -ffast-math. -fexceptions: the library reports bad
@@ -81,5 +96,26 @@ python3 apps/wasm/assemble_sandbox.py --template apps/wasm/sandbox.html \
     --css apps/cli/player/player.css --player-js apps/cli/player/player.js \
     --sandbox-js apps/wasm/sandbox.js --module "$out/tamias_sandbox.js" \
     --scenes examples/scenes -o "$out/sandbox.html"
+if ((determinism_tests)); then
+    # Boost.Test as a header (no Boost library for WebAssembly): its implementation in one
+    # object, the test in another, both rebuilt only when older than their sources.
+    test_flags=("${flags[@]}" -I"$root/tests" -DTAMIAS_EXAMPLE_SCENES="\"$root/examples/scenes\""
+                -DTAMIAS_GOLDEN_HASHES="\"$root/tests/determinism/golden_hashes.txt\"")
+    for s in tests/determinism/test_golden_hashes.cpp .ci/cross/boost_test_main.cpp; do
+        o="$out/test_$(basename "${s%.cpp}").o"
+        if [ ! -f "$o" ] || [ -n "$(find "$s" include src -newer "$o" -name '*.[ch]pp' -print -quit)" ]; then
+            echo "em++ $s"
+            nice -n 5 em++ "${test_flags[@]}" -c "$s" -o "$o"
+        fi
+    done
+    library_objects=$(ls "$out"/obj/src_tamias2d_*.o)
+    # NODERAWFS: the module reads the scenes and the golden file where they are; EXIT_RUNTIME:
+    # node's exit status is the test's; WASM_ASYNC_COMPILATION=0: the .wasm is read from disk
+    # (emscripten 3.1.6 would fetch() it, by a path, in a node that has fetch).
+    nice -n 5 em++ "${flags[@]}" $library_objects "$out/test_test_golden_hashes.o" \
+        "$out/test_boost_test_main.o" -o "$out/determinism_tests.js" -sENVIRONMENT=node \
+        -sNODERAWFS=1 -sALLOW_MEMORY_GROWTH=1 -sEXIT_RUNTIME=1 -sWASM_ASYNC_COMPILATION=0
+    echo "build_wasm: $out/determinism_tests.js (run it with node)"
+fi
 echo "build_wasm: $out/sandbox.html ($(stat -c %s "$out/sandbox.html") bytes; wasm" \
      "$(stat -c %s "$out/tamias_sandbox.wasm") bytes) in $(( $(date +%s) - start )) s"

@@ -2,8 +2,8 @@
 # The main job: build, run the V&V suite and write the evidence into reports/.
 #   scripts/main_job.sh [--quick] [--full-bench]
 #     --quick       skips coverage and mutation (their instrumented scratch build)
-#     --full-bench  runs the peer benchmark at full length (about 20 min on 2 cores) instead of
-#                   its --quick form
+#     --full-bench  runs the peer benchmark (about 20 min on 2 cores) and the work-precision
+#                   sweep at full length instead of their --quick forms
 #   TAMIAS_MUTATION_MINUTES=M  judges mutants for M minutes (default 4; docs/verification.md)
 #   TAMIAS_MUTATION=all        judges every mutant instead (hours); TAMIAS_MUTATION=0 skips it
 #   TAMIAS_MUTATION_SEED=S     picks the sample (default 1)
@@ -52,7 +52,9 @@ while read -r prog; do
     [ -n "$prog" ] || continue
     p0=$(date +%s)
     args=()
-    [ "$(basename "$prog")" = tamias_bench ] && [ $full_bench -eq 0 ] && args=(--quick)
+    case "$(basename "$prog")" in
+        tamias_bench | tamias_work_precision) [ $full_bench -eq 0 ] && args=(--quick) ;;
+    esac
     before=$(ls reports/data | wc -l)
     "$prog" reports/data "${args[@]}"
     rc=$?

@@ -6,6 +6,7 @@ import re
 
 import yaml
 
+from . import links as linkgrades
 from .srsdata import KIND_NAMES, KIND_ORDER, natural_key
 
 STATUSES = ["verified", "goal met", "failing", "goal missed", "untested", "assumed",
@@ -16,19 +17,33 @@ STATUSES = ["verified", "goal met", "failing", "goal missed", "untested", "assum
 GOAL_OBLIGATION = "should"
 # Statuses an item without labelled tests may be given by config.yaml's `without_tests`, each
 # with its reason: what the item is, instead of "untested" where no test could verify it.
-DECLARED_STATUSES = ("assumed", "not testable")
+# "untested" with a reason: a test exists in principle (a protocol) but has not been run.
+DECLARED_STATUSES = ("assumed", "not testable", "untested")
 
 # The kinds of oracle a test's evidence rests on, recognised in its oracle statement (first
 # match of each kind; a test may rest on several). Order is the display order.
 ORACLE_KINDS = [
     ("closed form", r"closed[- ]form|hand derivation|derived (?:by hand|here)|by hand|analytic|"
                     r"exact(?:ly)?\b|elliptic|written (?:here|in the test) from|hand-made|"
-                    r"hand-written|hand count|the srs text|formula|statics|oscillator"),
-    ("stated rule", r"srs table|\btable [12]\b|\bdc[iox]_\w+|data_constraints|scene-format\.md"),
+                    r"hand-written|\bhand (?:values?|cases?|geometry|points|truth table)|"
+                    r"the srs text|formula|statics|oscillator|textbook|\bidentit|"
+                    r"\bdefinition|dimensional analysis|\bgeometry\b|derivation|hooke's law|"
+                    r"\bt1 at rest|voronoi|arithmetic series|defining (?:relation|integral)|"
+                    r"\bode\b|parallel-axis|kinematics|symmetr|additiv|equivalence principle|"
+                    r"transcribed|written out here|\blimits?\b of|superposition"),
+    ("stated rule", r"srs table|\btable [12]\b|\bdc[iox]_\w+|data_constraints|scene-format\.md|"
+                    r"\bstated (?:rules?|timing|order|convention)|\bthe (?:documented|stated)\b|"
+                    r"\bcontract\b|\bconvention\b|\brfc \d+|srs data constraints|"
+                    r"\bspecification\b|the handle rule|user-guide\.md|world\.hpp|"
+                    r"\bprecondition\b|data constraints|the scene text|json syntax|"
+                    r"\bthe seed's range"),
     ("GSL reference", r"\bgsl\b|rk8pd|reference solution"),
     ("conservation law", r"conserv|\bgd1\b"),
-    ("property", r"propert|\bbound\b|bounded|never|invariant|brute[- ]force|promise|monoton|"
-                 r"rigidity|keeps its shape|the derivation's corners"),
+    ("independent implementation", r"brute[- ]force|written in the test|a plain [\w ]+ test|"
+                                   r"direct (?:particle )?sums|std::\w+ fed the same"),
+    ("property", r"propert|\bbound\b|bounded|never|invariant|promise|monoton|"
+                 r"rigidity|keeps its shape|the derivation's corners|determinism by construction|"
+                 r"same inputs?,? (?:give|same)"),
     ("peer", r"chipmunk|box2d|\bpeer\b|pymunk"),
     ("regression", r"golden|committed (?:value|hash|file)|previous run"),
 ]
@@ -110,6 +125,7 @@ def analyse(srs, code_sites, tests, config, warnings=None):
                       if k in labels and v}
     for t in tests:
         t["oracle_kinds"] = oracle_kinds(t.get("oracle"))
+    inherit_oracle_kinds(tests)
     category = set(config.get("category_labels") or [])
     sites_by = {}
     for s in code_sites:
@@ -123,6 +139,7 @@ def analyse(srs, code_sites, tests, config, warnings=None):
         for x in t["srs_labels"]:
             tests_by.setdefault(x, []).append(t)
 
+    link_grades = linkgrades.grade_all(srs.items, tests, peer_reference)
     items = []
     for lab in srs.order:
         it = srs.items[lab]
@@ -143,15 +160,19 @@ def analyse(srs, code_sites, tests, config, warnings=None):
                          f'their results decide.')
         kinds = sorted({k for t in its_tests if t["status"] == "passed" for k in t["oracle_kinds"]},
                        key=_kind_order)
-        weak_kinds = WEAK_ORACLE_KINDS - ({"peer"} if lab in peer_reference else set())
-        weak = status in ("verified", "goal met") and all(k in weak_kinds for k in kinds)
+        # Evidence is weak when no passing link is strong (links.py grades each link).
+        grades = [link_grades[(lab, t["id"])] for t in its_tests if (lab, t["id"]) in link_grades]
+        strong = [g for g in grades if g["grade"] == "strong" and
+                  next(t for t in its_tests if t["id"] == g["test"])["status"] in
+                  ("passed", "goal-missed")]
+        weak = status in ("verified", "goal met", "goal missed") and not strong
         if lab in peer_reference and "peer" in kinds:
             notes.append("A peer's figure is this item's own reference, not weak evidence: " +
                          peer_reference[lab])
         if weak:
-            notes.append("Weak evidence: every passing test rests on " + ", ".join(kinds) +
-                         " only (no closed form, reference solution, conservation law or "
-                         "property).")
+            notes.append("Weak evidence: no passing link is strong (an independent oracle on "
+                         "the item's implementation at a level that can show it right; the "
+                         "links' grades say why each is weak).")
         # A trace link must say why it verifies the item: a labelled test that names no oracle
         # is weak evidence whatever the others show.
         unstated = [t["id"] for t in its_tests if not t.get("oracle")]
@@ -175,6 +196,9 @@ def analyse(srs, code_sites, tests, config, warnings=None):
             "obligation": it.get("obligation"),
             "status_reason": decl["reason"] if decl and status == decl["status"] else None,
             "oracle_kinds": kinds, "weak_evidence": weak, "tests_without_oracle": unstated,
+            "links": {g["test"]: {k: g[k] for k in ("grade", "reasons", "level",
+                                                     "tolerance_stated")} for g in grades},
+            "strong_links": len(strong), "weak_links": sum(g["grade"] == "weak" for g in grades),
             "code_sites": sites, "tests": [t["id"] for t in its_tests],
             "tests_passed": sum(t["status"] == "passed" for t in its_tests),
             "tests_failing": sum(t["status"] in FAILING for t in its_tests),
@@ -274,10 +298,49 @@ def analyse(srs, code_sites, tests, config, warnings=None):
                                   if t["status"] in ("passed", "goal-missed")]}
                       for i in items if i["label"] in goals],
             "goals_missed": [t["id"] for t in tests if t["status"] == "goal-missed"]}
+    all_links = sorted(link_grades.values(), key=lambda g: (natural_key(g["item"]), g["test"]))
+    link_summary = {"total": len(all_links),
+                    "strong": sum(g["grade"] == "strong" for g in all_links),
+                    "weak": sum(g["grade"] == "weak" for g in all_links)}
     return {"items": items, "by_kind": by_kind, "by_status": by_status, "gaps": gaps,
+            "links": all_links, "link_summary": link_summary,
             "orphans": orphans, "category_labels": category_labels, "test_totals": test_totals,
             "missing_oracle": missing_oracle, "missing_oracle_srs": missing_oracle_srs,
             "gate": gate}
+
+
+AS_REFERENCE = re.compile(r"^as (above|[\w.@:/-]+?)[,:]?(?:\s|$)", re.I)
+
+
+def inherit_oracle_kinds(tests):
+    """An oracle stated as "as above" or "as <test>" rests on the referenced test's oracle
+    too: its kinds are added (the statement's own remain). "Above" is the test declared last
+    before it in the same file."""
+    by_file = {}
+    for t in tests:
+        if t.get("file") and t.get("line"):
+            by_file.setdefault(t["file"], []).append(t)
+    for ts in by_file.values():
+        ts.sort(key=lambda t: t["line"])
+    for t in tests:
+        m = AS_REFERENCE.match(str(t.get("oracle") or ""))
+        if not m:
+            continue
+        ref = None
+        if m.group(1).lower() == "above":
+            same = [u for u in by_file.get(t.get("file"), []) if u["line"] < (t.get("line") or 0)
+                    and AS_REFERENCE.match(str(u.get("oracle") or "")) is None]
+            ref = same[-1] if same else None
+        else:
+            name = m.group(1)
+            ref = next((u for u in tests if u is not t and u.get("file") == t.get("file") and
+                        (u["name"].rsplit("/", 1)[-1] == name or
+                         u["name"].rsplit("/", 1)[-1].startswith(name + "_"))), None)
+        if ref is not None:
+            kinds = [k for k in t["oracle_kinds"] if k != "other"]
+            kinds += [k for k in ref["oracle_kinds"] if k not in kinds]
+            t["oracle_kinds"] = kinds or ["other"]
+            t["oracle_refers_to"] = ref["id"]
 
 
 def _kind_order(k):

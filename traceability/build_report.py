@@ -5,15 +5,14 @@
 
 Runs the tests once (every Boost.Test binary with --list_content=DOT and a JUnit logger, the
 other CTest entries through ctest --output-junit), joins them with srs/*.yaml, the \\srs{}
-code tags and reports/data/*.json, and writes index.html, traceability.md and
-traceability.json into the output directory. Exit status: 0 when every R/IM/TM/GD/DD item has
+code tags and reports/data/*.json, and writes index.html, traceability.md,
+traceability.json and tamias2d.reqif into the output directory. Exit status: 0 when every R/IM/TM/GD/DD item has
 a passing test and nothing fails, 1 otherwise, 2 on a usage error. See docs/traceability.md.
 """
 from __future__ import annotations
 
 import argparse
 import datetime as _dt
-import json
 import os
 import subprocess
 import sys
@@ -24,7 +23,8 @@ if __package__ in (None, ""):
     __package__ = "traceability"  # noqa: A001 - allow `python3 traceability/build_report.py`
 
 from traceability import SCHEMA_VERSION  # noqa: E402
-from traceability import analysis, builds, evidence, graphs, render_html, render_md, srsdata, vvdata  # noqa: E402
+from traceability import analysis, builds, evidence, graphs, links, render_html, render_md, srsdata, vvdata  # noqa: E402
+from traceability import fingerprints, reproducible, reqif, review  # noqa: E402
 
 
 def parse_args(argv):
@@ -50,6 +50,14 @@ def parse_args(argv):
     p.add_argument("--commit", default=None,
                    help="commit the verification results must be of (default: the source's git HEAD)")
     p.add_argument("--date", default=None, help="timestamp to print (default: now, or SOURCE_DATE_EPOCH)")
+    p.add_argument("--link-sample", type=int, default=30,
+                   help="trace links drawn for review (default 30)")
+    p.add_argument("--link-seed", default=None,
+                   help="seed of the drawn links (default: the commit's first 8 hex digits)")
+    p.add_argument("--reviews", default=None,
+                   help="review records of trace links (default <source>/traceability/reviews.yaml)")
+    p.add_argument("--suspect-gates", action="store_true",
+                   help="suspect links (an end changed since its review) fail the gate")
     p.add_argument("--quiet", action="store_true")
     return p.parse_args(argv)
 
@@ -64,6 +72,7 @@ def git_info(root):
         st = subprocess.run(["git", "-C", root, "status", "--porcelain", "--untracked-files=no"],
                             capture_output=True, text=True, timeout=60)
         info["git_dirty"] = bool(st.stdout.strip()) if st.returncode == 0 else None
+        info["git_commit_date"] = reproducible.commit_date(root)
     except (OSError, subprocess.TimeoutExpired):
         pass
     return info
@@ -109,8 +118,9 @@ def build(args, log=print):
                                           log=(lambda m: None) if args.quiet else log,
                                           junit_level=args.junit_level, build=build_prov)
     tests, ctests, tinfo = evidence.collect_tests(source, results_dir, warnings)
-    if run_manifest is None:
-        run_manifest = tinfo.get("manifest")
+    # The manifest as the results directory holds it: a run and a later --no-run report of
+    # its results read the same document.
+    run_manifest = tinfo.get("manifest") or run_manifest
 
     programs, cov = vvdata.load_data_dir(data_dir, warnings)
     source_info = git_info(source)
@@ -163,12 +173,20 @@ def build(args, log=print):
     vvdata.render_plots(programs, out, warnings)
 
     res = analysis.analyse(srs, code_sites, tests, config, warnings)
+    # Fingerprints of both ends of each link, compared with the review records.
+    fingerprints.annotate(srs, res["items"], tests, source)
+    reqif.srs_extra(srs, res["items"])
+    reviews_file = os.path.abspath(args.reviews or os.path.join(source, review.REVIEWS_FILE))
+    reviews = dict(review.judge(res, tests, review.load(reviews_file, warnings), args.suspect_gates),
+                   file=reviews_file)
     # A failed check of a "should" requirement only is a missed goal (analysis.GOAL_OBLIGATION).
     goal_missed = {t["id"] for t in tests if t["status"] == "goal-missed"}
     for p in programs:
         for c in p["checks"]:
             if f"{p['program']}:{c.get('name')}" in goal_missed:
                 c["status"] = "goal-missed"
+    # A fresh sample per commit, the same for every report of that commit.
+    link_seed = args.link_seed or (source_commit or "unknown")[:8]
     matrices = analysis.build_matrices(srs)
     seed_cmp = analysis.compare_seed(srs, matrices, analysis.load_seed_tables(args.seed_tables))
     status_of = {i["label"]: i["status"] for i in res["items"]}
@@ -205,6 +223,11 @@ def build(args, log=print):
         "tests": tests,
         "code_sites": code_sites,
         "gaps": res["gaps"],
+        "links": res["links"],
+        "link_summary": res["link_summary"],
+        "link_sample": {"seed": link_seed, "size": args.link_sample,
+                        "links": links.sample(res["links"], args.link_sample, link_seed)},
+        "reviews": reviews,
         "orphans": res["orphans"],
         "category_labels": res["category_labels"],
         "missing_oracle": missing_oracle,
@@ -240,16 +263,22 @@ def build(args, log=print):
     report["summary"]["counts"]["warnings"] = len(warnings) + len(tinfo["registration"])
     warnings += tinfo["registration"]
 
+    # Paths under the source root are written relative to it: the same results give the same
+    # bytes wherever the checkout lies (reproducible.py); the ReqIF file is of the JSON.
+    reproducible.portable(report, source)
+    js = dict(report)
+    js["graphs"] = [{k: v for k, v in g.items() if k != "inline"} for g in report["graphs"]]
+    js["items"] = [{k: v for k, v in i.items()} for i in report["items"]]
+    reqif_text = reqif.attach(report, js)
+    report["_out_path"] = out  # where render_html looks for files beside the report
     with open(os.path.join(out, "index.html"), "w", encoding="utf-8") as fh:
         fh.write(render_html.render(report))
     with open(os.path.join(out, "traceability.md"), "w", encoding="utf-8") as fh:
         fh.write(render_md.render(report))
-    js = dict(report)
-    js["graphs"] = [{k: v for k, v in g.items() if k != "inline"} for g in gr]
-    js["items"] = [{k: v for k, v in i.items()} for i in report["items"]]
     with open(os.path.join(out, "traceability.json"), "w", encoding="utf-8") as fh:
-        json.dump(js, fh, indent=1, sort_keys=False, default=str)
-        fh.write("\n")
+        fh.write(reproducible.dumps(js))
+    with open(os.path.join(out, reqif.FILE_NAME), "w", encoding="utf-8") as fh:
+        fh.write(reqif_text)
     return report
 
 
@@ -283,7 +312,7 @@ def main(argv=None):
     g = report["gate"]
     if not args.quiet:
         s = report["summary"]["by_status"]
-        out = report["inputs"]["out_dir"]
+        out = report["_out_path"]
         print(f"[traceability] {len(report['items'])} items: " + ", ".join(f"{v} {k}" for k, v in s.items()),
               file=sys.stderr)
         print(f"[traceability] gate {'PASS' if g['passed'] else 'FAIL'}; report: {os.path.join(out, 'index.html')}",

@@ -1,7 +1,7 @@
 """Collect evidence: code tags, test inventories and results, oracles.
 
 Inputs handled here:
-  * `\\srs{LABEL}` comment tags in src/, apps/, verification/           -> code sites
+  * `\\srs{LABEL}` comment tags in src/, include/, apps/, verification/ -> code sites
   * `ctest --show-only=json-v1`                                          -> CTest inventory
   * Boost.Test `--list_content=DOT` (stderr) per binary                  -> cases + labels
   * Boost.Test `--logger=JUNIT,all,<xml>` per binary                     -> per-case status
@@ -23,7 +23,8 @@ import subprocess
 import time
 import xml.etree.ElementTree as ET
 
-CODE_DIRS = ["src", "apps", "verification"]
+# include/ is the library's public API: its \\srs tags are the library's too.
+CODE_DIRS = ["src", "include", "apps", "verification"]
 CMAKE_DIRS = ["cmake", "src", "apps", "tests", "examples", "verification"]
 CODE_EXTS = (".hpp", ".h", ".hh", ".hxx", ".cpp", ".cc", ".cxx", ".c", ".ipp", ".inl",
              ".py", ".cmake", ".txt", ".sh")
@@ -45,7 +46,8 @@ def _walk(root, exts):
 
 def area_of(relpath):
     top = relpath.split("/", 1)[0]
-    return {"src": "library", "apps": "application", "verification": "verification"}.get(top, top)
+    return {"src": "library", "include": "library", "apps": "application",
+            "verification": "verification"}.get(top, top)
 
 
 # --------------------------------------------------------------------------- code tags
@@ -140,6 +142,8 @@ TEST_MACRO = re.compile(
     r"(?:\s*,\s*([A-Za-z_]\w*))?")
 ORACLE = re.compile(r"Oracle\s*:\s*(.*)$")
 EXPECTED_FAILURES = re.compile(r"expected_failures\s*\(\s*(\d+)\s*\)")
+# A test case whose body builds or steps a World drives the engine (traceability/links.py).
+DRIVES_WORLD = re.compile(r"\bWorld\b|\bbuild_world\s*\(|\.step\s*\(")
 
 
 def _comment_block_above(lines, idx):
@@ -202,19 +206,21 @@ def scan_test_sources(source_root):
         except OSError:
             continue
         decls = []
-        for i, line in enumerate(lines):
+        starts = [i for i, line in enumerate(lines) if TEST_MACRO.match(line)]
+        for k, i in enumerate(starts):
+            line = lines[i]
             m = TEST_MACRO.match(line)
-            if not m:
-                continue
             macro, a1, a2 = m.group(1), m.group(2), m.group(3)
             name = a2 if macro == "BOOST_DATA_TEST_CASE_F" and a2 else a1
             # Boost's expected_failures(N) decorator: the case passes in Boost's terms with N
             # known failing assertions (documented findings); the report shows them as such.
             head = " ".join(lines[i:i + 4])
             xf = EXPECTED_FAILURES.search(head[:head.find("{")] if "{" in head else head)
+            body = "\n".join(lines[i:starts[k + 1] if k + 1 < len(starts) else len(lines)])
             decls.append({"name": name, "macro": macro, "line": i + 1,
                           "oracle": _oracle_from_block(_comment_block_above(lines, i)),
-                          "expected_failures": int(xf.group(1)) if xf else 0})
+                          "expected_failures": int(xf.group(1)) if xf else 0,
+                          "drives_world": bool(DRIVES_WORLD.search(body))})
         if decls:
             out[rel] = decls
     return out
@@ -707,7 +713,8 @@ def collect_tests(source_root, results_dir, warnings):
             t = {"id": f"{key}:{name}", "name": name, "origin": "boost", "binary": key,
                  "status": status, "labels": c["labels"], "oracle": oracle,
                  "file": rel_file or c["file"], "line": decl[1]["line"] if decl else c["line"],
-                 "details": message, "samples": samples_summary, "enabled": c["enabled"]}
+                 "details": message, "samples": samples_summary, "enabled": c["enabled"],
+                 "drives_world": decl[1].get("drives_world") if decl else None}
             tests.append(t)
             if c["enabled"]:
                 case_labels.update(c["labels"])

@@ -7,6 +7,7 @@ import json
 import os
 import re
 
+from . import render_audit
 from .graphs import KIND_HEX, STATUS_BORDER
 from .srsdata import KIND_NAMES
 
@@ -53,6 +54,7 @@ pre{padding:8px;overflow:auto;white-space:pre-wrap}
 .gate{border-radius:8px;padding:12px 18px;margin:18px 0;border:2px solid}
 .gate.pass{background:#e8f5e9;border-color:var(--ok)}
 .gate.fail{background:#fdecea;border-color:var(--fail)}
+.gate.warn{background:#fff4e5;border-color:var(--warn)}
 .gate h2{border:none;margin:0 0 4px;padding:0}
 .gate ul{margin:4px 0 0 0;padding-left:20px}
 .cards{display:flex;flex-wrap:wrap;gap:12px;margin:10px 0}
@@ -153,6 +155,8 @@ class Html:
         self.tests = {t["id"]: t for t in report["tests"]}
         self.test_anchor = {t["id"]: f"test-{n}" for n, t in enumerate(report["tests"], 1)}
         self.categories = {c["label"] for c in report.get("category_labels", [])}
+        # The report's paths are relative to the source root; files beside it are found here.
+        self.out_dir = report.get("_out_path") or report["inputs"]["out_dir"]
         self.parts = []
 
     # helpers
@@ -195,8 +199,9 @@ commit <code>{E(commit[:12])}</code>{E(dirty)} · {E(ran)} · report schema {E(r
         self.w("""<nav class="toc"><a href="#summary">Summary</a><a href="#items">Items</a>
 <a href="#gaps">Gaps &amp; orphans</a><a href="#matrices">Matrices</a><a href="#graphs">Graphs</a>
 <a href="#errata">Errata</a><a href="#vv">V&amp;V evidence</a><a href="#coverage">Coverage</a>
-<a href="#tests">All tests</a><a href="#method">Method &amp; warnings</a>""")
-        if os.path.exists(os.path.join(r["inputs"]["out_dir"], "api", "index.html")):
+<a href="#tests">All tests</a><a href="#method">Method &amp; warnings</a>
+<a href="#reviews">Link reviews</a><a href="#reqif">ReqIF</a>""")
+        if os.path.exists(os.path.join(self.out_dir, "api", "index.html")):
             self.w('<a href="api/index.html">API reference</a>')
         if self._players():
             self.w('<a href="#players">Recorded runs</a>')
@@ -218,6 +223,7 @@ any test or check fails. This report is complete nonetheless; the reasons are:<u
 <code>expected_failures</code>); each failing case is a finding described in
 docs/verification.md, printed with its seed so it can be replayed:""", g.get("known_failures"))
         self.goals()
+        self.w(render_audit.html_gate_box(self))
         self._test_list_box("targets-missed", "Targets not met (goals beyond the SRS)",
                             """These verification checks state project goals beyond the SRS (the project's speed
 floors); this run did not reach them. They do not gate the exit status, and the SRS items they
@@ -238,18 +244,19 @@ are labelled with are judged by their other checks:""", g.get("targets_missed"))
                 for t in checks) or "<li>no measurement in this run</li>"
             rows.append(f'<li>{self.link(g["label"])} {badge(g["status"])}<ul>{figs}</ul></li>')
         missed = any(g["status"] == "goal missed" for g in goals)
-        cls = "fail" if missed else "pass"
+        cls = "warn" if missed else "pass"
         self.w(f"""<div class="gate {cls}" id="goals"><h2>Goals of the SRS ("should" requirements)</h2>
 The SRS states these with "should": goals, measured and shown with their figures in every run,
 never a reason for a non-zero exit status ("shall" requirements gate). Each check's details
 say how the figure is measured:<ul>{"".join(rows)}</ul></div>""")
 
     def _test_list_box(self, anchor, title, intro, ids):
-        """A box under the gate listing tests (linked) with a heading and an explanation."""
+        """A box under the gate listing tests (linked) with a heading and an explanation: an
+        outcome shown but not gating, so in the warning colour."""
         if not ids:
             return
         lis = "".join(f"<li>{self._linkify_tests(E(x), ids)}</li>" for x in ids)
-        self.w(f"""<div class="gate fail" id="{anchor}"><h2>{E(title)}</h2>
+        self.w(f"""<div class="gate warn" id="{anchor}"><h2>{E(title)}</h2>
 {intro}<ul>{lis}</ul></div>""")
 
     def _linkify_tests(self, text, ids):
@@ -326,8 +333,11 @@ say how the figure is measured:<ul>{"".join(rows)}</ul></div>""")
                f'<a href="#refby">Ref.By disagreements</a> between the seed and the data: {c["refby_disagreements"]}</li>'
                f'<li><a href="#missing-oracle">Tests without an oracle statement</a>: {len(r["missing_oracle"])} '
                f'({len(r.get("missing_oracle_srs", []))} of them SRS-labelled: weak evidence for their items); '
-               f'<a href="#gaps">items whose only evidence is weak</a> (peer, regression or unplaced oracles): '
-               f'{len(r["gaps"]["weak_evidence"])}</li>'
+               f'<a href="#gaps">items whose only evidence is weak</a> (no strong passing link): '
+               f'{len(r["gaps"]["weak_evidence"])}; <a href="#links">trace links</a>: '
+               f'{(r.get("link_summary") or {}).get("strong", 0)} strong, '
+               f'{(r.get("link_summary") or {}).get("weak", 0)} weak, '
+               f'<a href="#reviews">{(r.get("reviews") or {}).get("suspect", 0)} suspect</a></li>'
                f'<li><a href="#warnings">Harness warnings</a>: {c["warnings"]}</li></ul>')
         self.w('</section>')
 
@@ -412,18 +422,61 @@ say how the figure is measured:<ul>{"".join(rows)}</ul></div>""")
                    '}</code> tag in src/, apps/ or verification/</span></dd>')
         self.w('</dl>')
         if it["tests"]:
-            self.w('<table class="data"><thead><tr><th>Test / check</th><th>Status</th><th>Oracle kind</th>'
-                   '<th>Oracle</th></tr></thead><tbody>')
+            self.w('<table class="data"><thead><tr><th>Test / check</th><th>Status</th><th>Link</th>'
+                   '<th>Oracle kind</th><th>Oracle</th></tr></thead><tbody>')
             for tid in it["tests"]:
                 t = self.tests[tid]
                 oracle = E(t["oracle"]) if t.get("oracle") else '<span class="mute">no oracle stated</span>'
                 extra = f'<div class="small mute">{E(t["samples"])}</div>' if t.get("samples") else ""
                 self.w(f'<tr><td>{self.tlink(tid)}{extra}</td><td>{badge(t["status"])}</td>'
+                       f'<td class="small">{self._link_grade((it.get("links") or {}).get(tid))}</td>'
                        f'<td class="small">{E(", ".join(t.get("oracle_kinds") or []))}</td><td>{oracle}</td></tr>')
             self.w('</tbody></table>')
         else:
             self.w('<p class="small mute">No test or verification check carries this label.</p>')
         self.w('</div>')
+
+    def _link_grade(self, g):
+        if not g:
+            return ""
+        cls = "st-ok" if g["grade"] == "strong" else "st-warn"
+        why = "; ".join(g.get("reasons") or [])
+        return (f'<span class="badge {cls}" title="{E(why)}">{E(g["grade"])}</span>'
+                f'{render_audit.review_badge(g.get("review"), g.get("changed"))} '
+                f'<span class="mute">{E(g["level"])}</span>' + (f'<br>{E(why)}' if why else ""))
+
+    def link_review(self):
+        """Every link's grade, counted, and a seeded sample of links with their facts."""
+        r = self.r
+        s = r.get("link_summary") or {}
+        smp = r.get("link_sample") or {}
+        self.w(f'<h3 id="links">Trace links graded ({s.get("total", 0)}: {s.get("strong", 0)} strong, '
+               f'{s.get("weak", 0)} weak)</h3>')
+        self.w('<p class="small">Each (item, test) link is graded from facts the harness has '
+               '(<code>traceability/links.py</code>): <b>strong</b> when the test states an oracle '
+               'independent of the code (closed form, stated rule, GSL reference, conservation law, '
+               'property; a peer only where the item is itself a comparison with it) and drives '
+               'the item\'s implementation at a level that can show it right (a requirement on the '
+               'software: the world, the command or a program, not a model function alone); '
+               '<b>weak</b> otherwise, with the reasons. An item whose passing links are all weak is '
+               'listed under "Verified only by weak evidence".</p>')
+        rows = smp.get("links") or []
+        if rows:
+            self.w(f'<h4 id="link-sample">A sample for review: {len(rows)} links drawn with seed '
+                   f'<code>{E(str(smp.get("seed")))}</code></h4><p class="small">Drawn afresh for '
+                   'every commit (the seed is its first digits), the same in every report of it. A '
+                   'reviewer judges each link against its test\'s code and the item\'s text; the '
+                   'grade is the harness\'s.</p>')
+            self.w('<table class="data small"><thead><tr><th>Item</th><th>Test / check</th>'
+                   '<th>Grade</th><th>Oracle kinds</th><th>Tolerance stated</th><th>Oracle</th>'
+                   '</tr></thead><tbody>')
+            for g in rows:
+                t = self.tests.get(g["test"], {})
+                self.w(f'<tr><td>{self.link(g["item"])}</td><td>{self.tlink(g["test"])}</td>'
+                       f'<td>{self._link_grade(g)}</td><td>{E(", ".join(g["oracle_kinds"]))}</td>'
+                       f'<td>{"yes" if g["tolerance_stated"] else "no"}</td>'
+                       f'<td>{E(str(t.get("oracle") or ""))}</td></tr>')
+            self.w('</tbody></table>')
 
     def gaps(self):
         r = self.r
@@ -433,11 +486,13 @@ say how the figure is measured:<ul>{"".join(rows)}</ul></div>""")
                '<th>Items</th></tr></thead><tbody>')
         for key, title in (("no_code", "No code tag"), ("no_test", "No labelled test or check"),
                            ("no_passing_test", "No passing test or check"),
-                           ("weak_evidence", "Verified only by weak evidence (peer, regression or "
-                                             "unplaced oracles)"),
+                           ("weak_evidence", "Verified only by weak evidence (no passing link "
+                                             "is strong)"),
                            ("unstated_oracle", "Weak evidence: a labelled test states no oracle")):
             self.w(f'<tr><td>{E(title)}</td><td class="num">{len(g.get(key, []))}</td><td>{self.links(g.get(key, []))}</td></tr>')
         self.w('</tbody></table>')
+        self.link_review()
+        self.w(render_audit.html_reviews(self))
         self.w('<h3 id="orphan-tags">Evidence → SRS: orphan code tags</h3>')
         if o["code_tags"]:
             self.w('<table class="data sortable"><thead><tr><th>Tag</th><th>Site</th><th>Text</th><th>Hint</th></tr></thead><tbody>')
@@ -695,7 +750,7 @@ say how the figure is measured:<ul>{"".join(rows)}</ul></div>""")
     def _players(self):
         """reports/players/index.json, written by the main job (tests/viewer/check_player.py):
         one entry per page of `tamias2d view`; [] when absent or unreadable."""
-        path = os.path.join(self.r["inputs"]["out_dir"], "players", "index.json")
+        path = os.path.join(self.out_dir, "players", "index.json")
         try:
             with open(path, encoding="utf-8") as fh:
                 entries = json.load(fh)
@@ -765,7 +820,7 @@ say how the figure is measured:<ul>{"".join(rows)}</ul></div>""")
                    f'<td class="num">{E(_fmt(f.get("line_covered")))}/{E(_fmt(f.get("line_total")))}</td>'
                    f'<td class="num">{E(_fmt(f.get("function_percent")))}</td><td class="num">{E(_fmt(f.get("branch_percent")))}</td></tr>')
         self.w('</tbody></table>')
-        if os.path.exists(os.path.join(self.r["inputs"]["out_dir"], "coverage.html")):
+        if os.path.exists(os.path.join(self.out_dir, "coverage.html")):
             self.w('<p><a href="coverage.html">Line-by-line coverage (gcovr HTML)</a></p>')
         self.w('</section>')
 
@@ -795,7 +850,7 @@ say how the figure is measured:<ul>{"".join(rows)}</ul></div>""")
         i = r["inputs"]
         self.w('<section id="method"><h2>10. Method, inputs and warnings</h2><ul class="compact small">')
         self.w(f'<li>SRS: <code>{E(i["srs_dir"])}</code> ({E(", ".join(i["srs_files"]) or "no files")})</li>')
-        self.w('<li>Code sites: comments containing <code>\\srs{LABEL}</code> in src/, apps/, verification/</li>')
+        self.w('<li>Code sites: comments containing <code>\\srs{LABEL}</code> in src/, include/, apps/, verification/</li>')
         self.w(f'<li>Build directory: <code>{E(i["build_dir"])}</code>; raw results: <code>{E(i["results_dir"])}</code>; '
                f'verification data: <code>{E(i["data_dir"])}</code></li>')
         self.w('<li>Boost.Test: each binary is listed once with <code>--list_content=DOT</code> (test cases, '
@@ -812,6 +867,7 @@ say how the figure is measured:<ul>{"".join(rows)}</ul></div>""")
                    '<code>main_job</code> in the V&amp;V evidence)</li>')
         self.w('</ul>')
         self.builds()
+        self.w(render_audit.html_reqif(self))
         cmds = run.get("commands") or []
         if cmds:
             self.w('<details><summary>Commands run</summary><pre>' + E("\n".join(

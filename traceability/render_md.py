@@ -1,6 +1,7 @@
 """reports/traceability.md: the same content as index.html in a diffable form."""
 from __future__ import annotations
 
+from . import render_audit
 from .srsdata import KIND_NAMES
 
 
@@ -48,6 +49,7 @@ def render(r):
             lines.append(f'{goal["label"]} {goal["status"]}' + (f" ({figs})" if figs else ""))
         bullets('**Goals of the SRS ("should" requirements: measured and shown, never gating):**',
                 lines)
+    w(render_audit.md_gate(r))
     s = r["summary"]
     w("## 1. Summary\n")
     w("Items by status: " + ", ".join(f"{k}: {v}" for k, v in s["by_status"].items()) +
@@ -107,6 +109,7 @@ def render(r):
     for x in r["registration"]:
         w(f"- Registration: {x}")
     w("")
+    w(render_audit.md(r))
     w("## 4. Traceability matrices\n")
     seed = {t["id"]: t for t in r["seed_tables"]}
     for m in r["matrices"]:

@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import json
+import math
 import os
 import re
 
@@ -157,6 +158,21 @@ def checks_as_tests(programs, missing=()):
     return tests
 
 
+def _label_short_log_axis(axis, lim, ticker):
+    """A log axis of less than two decades shows too few powers of ten to read a value by: its
+    ticks are labelled as plain numbers, and the minor ticks at 2 and 5 (also 3 within a decade)."""
+    lo, hi = min(lim), max(lim)
+    if not (lo > 0 and hi > lo) or math.log10(hi / lo) >= 2:
+        return
+    keep = {2, 5} if math.log10(hi / lo) > 1 else {2, 3, 5}
+
+    def minor(v, _pos):
+        lead = round(v / 10 ** math.floor(math.log10(v) + 1e-9))
+        return f"{v:g}" if lead in keep else ""
+    axis.set_major_formatter(ticker.FuncFormatter(lambda v, _pos: f"{v:g}"))
+    axis.set_minor_formatter(ticker.FuncFormatter(minor))
+
+
 def render_plots(programs, out_dir, warnings):
     """One SVG per series into <out_dir>/plots/. Sets series['svg'] (relative path)."""
     series_all = [(p, s) for p in programs for s in p["series"]]
@@ -168,6 +184,7 @@ def render_plots(programs, out_dir, warnings):
         matplotlib.rcParams["svg.hashsalt"] = "tamias2d"
         matplotlib.rcParams["svg.fonttype"] = "none"
         import matplotlib.pyplot as plt
+        from matplotlib import ticker
     except Exception as exc:  # pragma: no cover - matplotlib is a Debian package here
         warnings.append(f"matplotlib unavailable, no plots: {exc}")
         return
@@ -182,24 +199,46 @@ def render_plots(programs, out_dir, warnings):
         used.add(name)
         fig, ax = plt.subplots(figsize=(6.4, 4.0), dpi=100)
         try:
+            colours = {}  # a line's "group": the lines of one group share a colour
+            cycle = matplotlib.rcParams["axes.prop_cycle"].by_key().get("color") or ["C0"]
             for ln in s.get("lines") or []:
                 xs, ys = ln.get("x") or [], ln.get("y") or []
                 if len(xs) != len(ys):
                     continue
-                pts = [(x, y) for x, y in zip(xs, ys) if x is not None and y is not None]
+                names = ln.get("point_labels")
+                if not isinstance(names, list) or len(names) != len(xs):
+                    names = [None] * len(xs)
+                pts = [(x, y, t) for x, y, t in zip(xs, ys, names) if x is not None and y is not None]
                 if s.get("log_x"):
-                    pts = [(x, y) for x, y in pts if x > 0]
+                    pts = [q for q in pts if q[0] > 0]
                 if s.get("log_y"):
-                    pts = [(x, y) for x, y in pts if y > 0]
+                    pts = [q for q in pts if q[1] > 0]
                 if not pts:
                     continue
-                marker = "o" if len(pts) <= 30 else None
-                ax.plot([a for a, _ in pts], [b for _, b in pts], marker=marker, markersize=3,
-                        linewidth=1.4, label=str(ln.get("label", "")))
+                style = {}
+                group = ln.get("group")
+                if group is not None:
+                    style["color"] = colours.setdefault(str(group), cycle[len(colours) % len(cycle)])
+                if ln.get("style") == "points":  # marks only
+                    style.update(linestyle="none", marker="o", markersize=4)
+                elif ln.get("style") == "line":  # a line only
+                    style.update(marker=None, linewidth=1.4)
+                else:
+                    style.update(marker="o" if len(pts) <= 30 else None, markersize=3, linewidth=1.4)
+                line, = ax.plot([q[0] for q in pts], [q[1] for q in pts],
+                                label=str(ln.get("label", "")), **style)
+                for x, y, t in pts:
+                    if t is not None:
+                        ax.annotate(str(t), (x, y), textcoords="offset points", xytext=(3, 3),
+                                    fontsize=6, color=line.get_color())
             if s.get("log_x"):
                 ax.set_xscale("log")
             if s.get("log_y"):
                 ax.set_yscale("log")
+            for axis, log, lim in ((ax.xaxis, s.get("log_x"), ax.get_xlim()),
+                                   (ax.yaxis, s.get("log_y"), ax.get_ylim())):
+                if log:
+                    _label_short_log_axis(axis, lim, ticker)
             ax.set_xlabel(str(s.get("x_label", "")))
             ax.set_ylabel(str(s.get("y_label", "")))
             ax.set_title(str(s.get("name", "")), fontsize=11)

@@ -6,7 +6,7 @@
 namespace tamias2d {
 
 /// An axis-aligned box in the world frame, by its lower-left and upper-right corners (m).
-/// A valid box has min_x <= max_x and min_y <= max_y.
+/// A valid box has min_x <= max_x and min_y <= max_y (World::query_aabb refuses another).
 struct Aabb {
     double min_x = 0.0; ///< m, left edge
     double min_y = 0.0; ///< m, bottom edge

@@ -5,9 +5,12 @@
 #pragma once
 
 #include <charconv>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <utility>
+
+#include "tamias2d/export.hpp"
 
 namespace tamias2d {
 
@@ -26,7 +29,7 @@ inline std::string validation_message(const std::string& field, double value,
 } // namespace detail
 
 /// An input violates a data constraint (SRS section 5.2.6 and its extensions, R4).
-struct ValidationError : std::invalid_argument {
+struct TAMIAS2D_EXPORT ValidationError : std::invalid_argument {
     std::string field;      ///< e.g. "shape.radius"
     double value;           ///< the offending value (NaN for non-numeric defects)
     std::string constraint; ///< the SRS data-constraint label, e.g. "DCX_shape"
@@ -40,12 +43,39 @@ struct ValidationError : std::invalid_argument {
                     std::string constraint_)
         : std::invalid_argument(detail::validation_message(field_, value_, rule, constraint_)),
           field(std::move(field_)), value(value_), constraint(std::move(constraint_)) {}
+
+    /// Selects the constructor of a defect that is not a number.
+    struct NotANumber {};
+    /// A defect that is not a number, such as the bodies a joint names: `value` is NaN and
+    /// what() states no value: "joint.body_b: must be another body than body_a, body[1 'box']
+    /// (DCX_joint)".
+    ValidationError(NotANumber, std::string field_, const std::string& rule,
+                    std::string constraint_)
+        : std::invalid_argument(field_ + ": " + rule + " (" + constraint_ + ")"),
+          field(std::move(field_)), value(std::numeric_limits<double>::quiet_NaN()),
+          constraint(std::move(constraint_)) {}
 };
 
 /// A body, shape or proxy handle that is stale or was never issued (a use-after-free turned into
 /// an error instead of a crash).
-struct InvalidHandle : std::invalid_argument {
+struct TAMIAS2D_EXPORT InvalidHandle : std::invalid_argument {
     using std::invalid_argument::invalid_argument;
+};
+
+/// A call that does not apply to what a valid handle names: a one-step force, torque or
+/// impulse on a static or kinematic body (which no force moves), or a joint's angle, travel,
+/// motor speed, target or offsets asked of a joint of a kind that has none. A mistake in the
+/// calling code, not in its numbers: no data constraint is broken, so none is named. Thrown
+/// before anything changes: the world is left exactly as it was.
+struct WrongKind : std::invalid_argument {
+    std::string call;    ///< the World member called, e.g. "apply_impulse"
+    std::string subject; ///< what the handle names, e.g. "body[0 'ground']" or "joint[2]"
+    std::string kind;    ///< what that is, e.g. "static body" or "distance joint"
+    /// what(): "apply_impulse: body[0 'ground'] is a static body: must be a dynamic body ...";
+    /// `rule` says what the call needs.
+    WrongKind(std::string call_, std::string subject_, std::string kind_, const std::string& rule)
+        : std::invalid_argument(call_ + ": " + subject_ + " is a " + kind_ + ": " + rule),
+          call(std::move(call_)), subject(std::move(subject_)), kind(std::move(kind_)) {}
 };
 
 /// World::step could not solve the joints: a velocity or displacement turned non-finite
@@ -53,7 +83,7 @@ struct InvalidHandle : std::invalid_argument {
 /// refused: every body's state, every joint, the sleep states and the clock are as they were
 /// before the call; the contacts were brought up to date with those unchanged poses (the next
 /// step would compute the same), and the step reports no events.
-struct SolverDivergence : std::runtime_error {
+struct TAMIAS2D_EXPORT SolverDivergence : std::runtime_error {
     std::string field; ///< the first body found diverged, e.g. "body[3 'slider'].velocity"
     /// what(): "body[3 'slider'].velocity: turned non-finite in the joints' solve; ...".
     SolverDivergence(std::string field_, const std::string& what)

@@ -9,6 +9,8 @@
 
 #include <cstddef>
 
+#include "tamias2d/export.hpp"
+
 namespace tamias2d {
 
 /// What the large blocks of every world in the process have done so far.
@@ -21,10 +23,10 @@ struct LargeArrayStats {
 };
 
 /// The counters of the large blocks; safe to call from any thread.
-LargeArrayStats large_array_stats();
+TAMIAS2D_EXPORT LargeArrayStats large_array_stats();
 
 /// Returns every retained block to the operating system (after unloading a large world, say).
 /// Safe to call from any thread at any time; worlds alive keep their own blocks.
-void release_retained_memory();
+TAMIAS2D_EXPORT void release_retained_memory();
 
 } // namespace tamias2d

@@ -6,6 +6,7 @@
 #include <span>
 #include <vector>
 
+#include "tamias2d/export.hpp"
 #include "tamias2d/shapes.hpp"
 
 namespace tamias2d {
@@ -42,22 +43,23 @@ struct ShapeDef {
 };
 
 /// A rectangle w x h (m) centred on the body origin (or on `center`, rotated by `angle`).
-ShapeDef box_shape(double width, double height, Material material = {}, Vec2d center = {},
-                   double angle = 0.0);
+TAMIAS2D_EXPORT ShapeDef box_shape(double width, double height, Material material = {},
+                                   Vec2d center = {}, double angle = 0.0);
 /// A circle of radius r (m).
-ShapeDef circle_shape(double radius, Material material = {}, Vec2d center = {});
+TAMIAS2D_EXPORT ShapeDef circle_shape(double radius, Material material = {}, Vec2d center = {});
 /// The convex hull of 3 to 8 points (m, body frame).
-ShapeDef polygon_shape(std::span<const Vec2d> points, Material material = {});
+TAMIAS2D_EXPORT ShapeDef polygon_shape(std::span<const Vec2d> points, Material material = {});
 /// \srs{DD30} A capsule: the points within `radius` (m, > 0) of the segment center1 -> center2.
-ShapeDef capsule_shape(Vec2d center1, Vec2d center2, double radius, Material material = {});
+TAMIAS2D_EXPORT ShapeDef capsule_shape(Vec2d center1, Vec2d center2, double radius,
+                                       Material material = {});
 /// A two-sided segment point1 -> point2 (no area: no mass).
-ShapeDef segment_shape(Vec2d point1, Vec2d point2, Material material = {});
+TAMIAS2D_EXPORT ShapeDef segment_shape(Vec2d point1, Vec2d point2, Material material = {});
 /// \srs{DD31} The one-sided segments of a chain through `points` (at least 2; 3 for a loop),
 /// each colliding on the right of its direction (a counter-clockwise loop is solid inside; a
 /// ground drawn right to left is walked on from above), ready for World::create_shape. A
 /// shape sliding along the chain meets no ghost corner at its vertices. World::create_chain
 /// creates them all at once.
-std::vector<ShapeDef> chain_shapes(std::span<const Vec2d> points, bool loop,
-                                   Material material = {});
+TAMIAS2D_EXPORT std::vector<ShapeDef> chain_shapes(std::span<const Vec2d> points, bool loop,
+                                                   Material material = {});
 
 } // namespace tamias2d

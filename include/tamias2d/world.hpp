@@ -14,6 +14,7 @@
 #include "tamias2d/body_state.hpp"
 #include "tamias2d/contact_info.hpp"
 #include "tamias2d/errors.hpp"
+#include "tamias2d/export.hpp"
 #include "tamias2d/handles.hpp"
 #include "tamias2d/joint_def.hpp"
 #include "tamias2d/shape_def.hpp"
@@ -31,11 +32,12 @@ struct RayCastHit {
 };
 
 /// \srs{R1} The space in which all rigid bodies of a simulation interact.
-/// Every mutating call validates its input first (SRS R4) and throws ValidationError or
-/// InvalidHandle (errors.hpp) without changing anything: the world is left exactly as it was.
+/// Every mutating call validates its input first (SRS R4) and throws ValidationError,
+/// InvalidHandle or WrongKind (errors.hpp) without changing anything: the world is left exactly
+/// as it was.
 /// Every real input must be finite (DCX_finite) and within the supported range (DCX_range:
 /// magnitudes up to 1e12 in SI units, sizes from 1e-12; docs/design.md, "Supported ranges").
-class World {
+class TAMIAS2D_EXPORT World {
   public:
     /// An empty world with the given settings; throws ValidationError if a setting breaks its
     /// constraint (e.g. substeps < 1, a non-finite gravity).
@@ -124,19 +126,29 @@ class World {
     double angular_damping(BodyId body) const; ///< s^-1 (DD18)
 
     // --- loads (R2, IM1, IM2) ---
-    /// Persistent force at the centre of mass (N) and torque (N m): act every step until changed.
+    // Loads move dynamic bodies only. The persistent ones (set_force, set_torque, set_load) are
+    // settings of the body, as BodyDef::force, torque and load are: a static or kinematic body
+    // keeps them, and they do not move it. The one-step ones (apply_force, apply_torque,
+    // apply_impulse) act at once or at the next step: given to a static or kinematic body they
+    // would be lost without a trace, so they throw WrongKind.
+    /// Persistent force at the centre of mass (N) and torque (N m): act every step until changed
+    /// (on a dynamic body; another keeps it unused).
     void set_force(BodyId body, Vec2d force);
-    /// Persistent torque (N m, CCW positive) until changed.
+    /// Persistent torque (N m, CCW positive) until changed (on a dynamic body).
     void set_torque(BodyId body, double torque);
     /// One-step force at a world point (N at m): the torque r x F (DD13) comes with it. The
     /// one-step forces and torques applied before a step must sum to at most 1e24 (DCX_range).
+    /// Throws WrongKind for a static or kinematic body.
     void apply_force(BodyId body, Vec2d force, Vec2d world_point);
-    /// One-step torque (N m), cleared after the next step.
+    /// One-step torque (N m), cleared after the next step. Throws WrongKind for a static or
+    /// kinematic body.
     void apply_torque(BodyId body, double torque);
     /// Instantaneous impulse J (N s) at a world point: dv = J / m (DD10), domega = r x J / I;
-    /// refused (DCX_range) if the velocities it gives exceed 1e24.
+    /// refused (DCX_range) if the velocities it gives exceed 1e24. Throws WrongKind for a
+    /// static or kinematic body.
     void apply_impulse(BodyId body, Vec2d impulse, Vec2d world_point);
-    /// Time-varying load F(t), tau(t); an empty function removes it.
+    /// Time-varying load F(t), tau(t); an empty function removes it. Evaluated for a dynamic
+    /// body only.
     void set_load(BodyId body, LoadFunction load);
 
     // --- joints (LC3, IM6) ---
@@ -171,10 +183,10 @@ class World {
     /// offsets, a negative force or torque, or a correction factor outside [0, 1].
     JointId create_joint(const MotorJointDef& def);
     /// Moves a motor joint's target pose (m in body_a's frame, rad; finite) and wakes its
-    /// bodies; ValidationError for a joint of another kind.
+    /// bodies; WrongKind for a joint of another kind.
     void set_motor_joint_offsets(JointId joint, Vec2d linear_offset, double angular_offset);
     /// Moves a target joint's target (m, world frame) and wakes its body; throws
-    /// ValidationError for a non-finite target or a joint of another kind.
+    /// ValidationError for a non-finite target, WrongKind for a joint of another kind.
     void set_joint_target(JointId joint, Vec2d target);
     /// Removes the joint and wakes its bodies. Destroying a body destroys its joints.
     void destroy_joint(JointId joint);
@@ -188,14 +200,14 @@ class World {
     /// target joints. (The linear force's moment is not included: it acts at the anchors.)
     double joint_reaction_torque(JointId joint) const;
     /// \srs{DD22} rad: body_b's turn against body_a since the joint was made (CCW positive, not
-    /// wrapped) of a revolute, prismatic, weld or wheel joint; ValidationError for another kind.
+    /// wrapped) of a revolute, prismatic, weld or wheel joint; WrongKind for another kind.
     double joint_angle(JointId joint) const;
     /// \srs{DD23} m: a prismatic or wheel joint's translation, the anchors' separation along
-    /// the axis (0 at creation); ValidationError for another kind of joint.
+    /// the axis (0 at creation); WrongKind for another kind of joint.
     double joint_translation(JointId joint) const;
     /// Sets the motor speed of a revolute or wheel joint (rad s^-1) or a prismatic joint
     /// (m s^-1), finite (the motor must be enabled to act), and wakes its bodies: a car's
-    /// throttle, an elevator's lever. ValidationError for another kind of joint.
+    /// throttle, an elevator's lever. WrongKind for another kind of joint.
     void set_joint_motor_speed(JointId joint, double speed);
     /// The joints that broke in the last step (reaction force above break_force): they no
     /// longer exist; their handles are listed so that a game can react.
@@ -234,9 +246,13 @@ class World {
     /// \srs{DD28} Shapes that stopped overlapping a sensor during the last step (or whose
     /// shape or body, or the sensor's, was destroyed).
     std::span<const SensorEvent> sensor_end_events() const;
-    /// Shapes whose bounding boxes overlap `box` (m), by shape index.
+    /// Shapes whose bounding boxes overlap `box` (m), by shape index. Throws ValidationError
+    /// for a side that is not finite (DCX_finite) and for a box upside down, min_x > max_x or
+    /// min_y > max_y (rule "query"): such a box holds nothing, and an empty answer would hide
+    /// the mistake. A box of zero width or height (a segment, a point) is a box.
     std::vector<ShapeId> query_aabb(const Aabb& box) const;
-    /// Shapes that contain `point` (m, world frame), by shape index.
+    /// Shapes that contain `point` (m, world frame), by shape index. Throws ValidationError for
+    /// a point that is not finite (DCX_finite).
     std::vector<ShapeId> query_point(Vec2d point) const;
     /// The first shape met by the segment origin -> origin + translation (m), if any; ties go
     /// to the lower shape index so that the answer is deterministic. Both within the supported

@@ -5,7 +5,7 @@
 namespace tamias2d {
 
 ShapeDef box_shape(double width, double height, Material material, Vec2d center, double angle) {
-    return {to_geometry(make_box(0.5 * width, 0.5 * height, center, angle)), material};
+    return {to_geometry(make_box_of_size(width, height, center, angle)), material};
 }
 
 ShapeDef circle_shape(double radius, Material material, Vec2d center) {

@@ -7,7 +7,9 @@
 
 #include "tamias2d/errors.hpp"
 #include "tamias2d/geometry/shape_factory.hpp"
+#include "tamias2d/math/hypot.hpp"
 #include "tamias2d/math/vec2d.hpp"
+#include "tamias2d/model/dcx_shape_non_degenerate_shapes.hpp"
 
 namespace tamias2d {
 
@@ -81,13 +83,11 @@ void validate_proportions(const Polygon& p) {
     // make_polygon's final check, term for term, on the same vertex triples and the same fan
     // (its hull order is the polygon's); the area's sign is dropped so that a clockwise
     // polygon reaches validate's orientation check instead.
-    double twice_area = 0.0;
     double min_height = extent;
-    for (int i = 0; i < n; ++i) {
-        twice_area += cross(p.vertices[i] - p.vertices[0], p.vertices[(i + 1) % n] - p.vertices[0]);
+    for (int i = 0; i < n; ++i)
         min_height = std::min(min_height, distance_to_line(p.vertices[(i + n - 1) % n],
                                                            p.vertices[(i + 1) % n], p.vertices[i]));
-    }
+    const double area = model::dcx_shape::polygon_area(p.vertices.data(), std::size_t(n)).value();
     const std::string of_extent = detail::format_value(hull_weld_tolerance) + " x the extent (" +
                                   detail::format_value(extent) + " m)";
     if (!(min_height >= tol))
@@ -95,8 +95,8 @@ void validate_proportions(const Polygon& p) {
                               "must be >= " + of_extent +
                                   ": every vertex that far from its neighbours' chord (a sliver)",
                               "DCX_shape");
-    if (!(std::abs(twice_area) > 2.0 * tol * extent))
-        throw ValidationError("polygon.area", 0.5 * twice_area,
+    if (!(std::abs(area) > tol * extent))
+        throw ValidationError("polygon.area", area,
                               "must be > " + of_extent + " x the extent (a sliver)", "DCX_shape");
 }
 
@@ -239,14 +239,31 @@ void validate(const ShapeDef& def) {
     validate(def.material);
 }
 
+const char* type_name(BodyType type) {
+    switch (type) {
+    case BodyType::static_body:
+        return "static";
+    case BodyType::kinematic:
+        return "kinematic";
+    case BodyType::dynamic:
+        return "dynamic";
+    }
+    return "of no known type";
+}
+
 namespace {
-void validate_joint_bodies(BodyId a, BodyId b, bool movable, double break_force) {
-    if (a == b)
-        throw ValidationError("joint.body_b", double(b.index), "must be another body than body_a",
+/// The bodies are named by their labels: a handle's index is a slot, not a value to fix.
+void validate_joint_bodies(const JointBody& a, const JointBody& b, double break_force) {
+    constexpr ValidationError::NotANumber bodies{};
+    if (a.id == b.id)
+        throw ValidationError(bodies, "joint.body_b",
+                              "must be another body than body_a, " + a.label, "DCX_joint");
+    if (a.type != BodyType::dynamic && b.type != BodyType::dynamic)
+        throw ValidationError(bodies, "joint.body_b",
+                              b.label + " is " + type_name(b.type) + " and body_a, " + a.label +
+                                  ", " + type_name(a.type) +
+                                  ": one of a joint's two bodies must be dynamic",
                               "DCX_joint");
-    if (!movable)
-        throw ValidationError("joint.body_b", double(b.index),
-                              "one of the two bodies must be dynamic", "DCX_joint");
     if (!(break_force > 0.0))
         throw ValidationError("joint.break_force", break_force, "must be > 0", "DCX_joint");
 }
@@ -308,15 +325,15 @@ void validate_motor(double speed, std::string_view speed_unit, const char* max_f
 /// nor underflows (either would normalise it to zero).
 void validate_axis(Vec2d axis) {
     require_within("joint.axis", axis, supported::input_max, "");
-    const double len = std::hypot(axis.x, axis.y);
+    const double len = math::hypot(axis.x, axis.y); // the same bits everywhere
     if (!(len > 0.0))
         throw ValidationError("joint.axis", len, "must have a non-zero length", "DCX_joint");
     require_scale("joint.axis", len, supported::input_min, 2.0 * supported::input_max, "");
 }
 } // namespace
 
-void validate(const DistanceJointDef& def, bool movable) {
-    validate_joint_bodies(def.body_a, def.body_b, movable, def.break_force);
+void validate(const DistanceJointDef& def, const JointBody& a, const JointBody& b) {
+    validate_joint_bodies(a, b, def.break_force);
     point("joint.anchor_a", def.anchor_a);
     point("joint.anchor_b", def.anchor_b);
     const Vec2d d = def.anchor_b - def.anchor_a;
@@ -338,9 +355,11 @@ void validate(const DistanceJointDef& def, bool movable) {
         require_within("joint.max_length", def.max_length, supported::input_max, "m");
 }
 
-void validate(const TargetJointDef& def, bool dynamic) {
-    if (!dynamic)
-        throw ValidationError("joint.body", double(def.body.index), "must be a dynamic body",
+void validate(const TargetJointDef& def, const JointBody& body) {
+    if (body.type != BodyType::dynamic)
+        throw ValidationError(ValidationError::NotANumber{}, "joint.body",
+                              body.label + " is " + type_name(body.type) +
+                                  ": a target joint's body must be dynamic",
                               "DCX_joint");
     point("joint.target", def.target);
     require_finite("joint.hertz", def.hertz);
@@ -371,8 +390,8 @@ void validate_joint_lever(std::string_view field, Vec2d r, double inv_mass, doub
                           "DCX_joint");
 }
 
-void validate(const RevoluteJointDef& def, bool movable) {
-    validate_joint_bodies(def.body_a, def.body_b, movable, def.break_force);
+void validate(const RevoluteJointDef& def, const JointBody& a, const JointBody& b) {
+    validate_joint_bodies(a, b, def.break_force);
     point("joint.anchor", def.anchor);
     validate_limits("joint.lower_angle", def.lower_angle, "joint.upper_angle", def.upper_angle,
                     "rad");
@@ -380,8 +399,8 @@ void validate(const RevoluteJointDef& def, bool movable) {
     validate_spring(def.enable_spring, def.hertz, def.damping_ratio);
 }
 
-void validate(const PrismaticJointDef& def, bool movable) {
-    validate_joint_bodies(def.body_a, def.body_b, movable, def.break_force);
+void validate(const PrismaticJointDef& def, const JointBody& a, const JointBody& b) {
+    validate_joint_bodies(a, b, def.break_force);
     point("joint.anchor", def.anchor);
     validate_axis(def.axis);
     validate_limits("joint.lower_translation", def.lower_translation, "joint.upper_translation",
@@ -390,8 +409,8 @@ void validate(const PrismaticJointDef& def, bool movable) {
     validate_spring(def.enable_spring, def.hertz, def.damping_ratio);
 }
 
-void validate(const WeldJointDef& def, bool movable) {
-    validate_joint_bodies(def.body_a, def.body_b, movable, def.break_force);
+void validate(const WeldJointDef& def, const JointBody& a, const JointBody& b) {
+    validate_joint_bodies(a, b, def.break_force);
     point("joint.anchor", def.anchor);
     non_negative("joint.linear_hertz", def.linear_hertz, "Hz");
     frequency("joint.linear_hertz", def.linear_hertz);
@@ -401,8 +420,8 @@ void validate(const WeldJointDef& def, bool movable) {
     non_negative("joint.angular_damping_ratio", def.angular_damping_ratio);
 }
 
-void validate(const WheelJointDef& def, bool movable) {
-    validate_joint_bodies(def.body_a, def.body_b, movable, def.break_force);
+void validate(const WheelJointDef& def, const JointBody& a, const JointBody& b) {
+    validate_joint_bodies(a, b, def.break_force);
     point("joint.anchor", def.anchor);
     validate_axis(def.axis);
     validate_spring(def.enable_spring, def.hertz, def.damping_ratio);
@@ -411,8 +430,8 @@ void validate(const WheelJointDef& def, bool movable) {
     validate_motor(def.motor_speed, "rad s^-1", "joint.max_motor_torque", def.max_motor_torque);
 }
 
-void validate(const MotorJointDef& def, bool movable) {
-    validate_joint_bodies(def.body_a, def.body_b, movable, def.break_force);
+void validate(const MotorJointDef& def, const JointBody& a, const JointBody& b) {
+    validate_joint_bodies(a, b, def.break_force);
     point("joint.linear_offset", def.linear_offset);
     require_within("joint.angular_offset", def.angular_offset, supported::input_max, "rad");
     if (!(def.max_force >= 0.0))

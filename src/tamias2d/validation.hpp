@@ -1,10 +1,17 @@
 // \srs{R4} Input validation: every check of the data constraints (section 5.2.6 and the ones
 // the SRS forgot, labelled DCX_*). Each throws ValidationError naming field, value and label.
+//
+// The scene library checks a file's values with the same functions, so that a rule lives in one
+// place. The ones it calls are marked TAMIAS2D_EXPORT: a shared libtamias2d exports them for
+// libtamias2d_io, beside the API. They are not part of the API (no public header declares
+// them); the two libraries come from one build, and share one SONAME version.
 #pragma once
 
+#include <string>
 #include <string_view>
 
 #include "tamias2d/body_def.hpp"
+#include "tamias2d/export.hpp"
 #include "tamias2d/joint_def.hpp"
 #include "tamias2d/shape_def.hpp"
 #include "tamias2d/world_def.hpp"
@@ -36,14 +43,16 @@ inline constexpr double joint_lever_ratio_max = 1e5;
 void require_finite(std::string_view field, double value);
 void require_finite(std::string_view field, Vec2d value);
 /// DCX_finite, then DCX_range: |value| <= max (`unit` names the SI unit in the message).
-void require_within(std::string_view field, double value, double max, std::string_view unit);
-void require_within(std::string_view field, Vec2d value, double max, std::string_view unit);
+TAMIAS2D_EXPORT void require_within(std::string_view field, double value, double max,
+                                    std::string_view unit);
+TAMIAS2D_EXPORT void require_within(std::string_view field, Vec2d value, double max,
+                                    std::string_view unit);
 /// DCX_range for a positive scale already checked > 0 by its own constraint: lo <= value <= hi.
 void require_scale(std::string_view field, double value, double lo, double hi,
                    std::string_view unit);
 /// DCX_finite, DCX_shape (> 0) and DCX_range: a shape dimension (width, height, radius) in
 /// [input_min, input_max] m.
-void validate_size(std::string_view field, double value);
+TAMIAS2D_EXPORT void validate_size(std::string_view field, double value);
 /// DCX_shape: the sliver rule, the one criterion for every polygon, boxes included: each vertex
 /// lies at least hull_weld_tolerance x extent from the chord of its neighbours, and twice the
 /// area exceeds 2 x that tolerance x extent (extent: the larger of the x and y spans). make_polygon
@@ -51,29 +60,40 @@ void validate_size(std::string_view field, double value);
 /// written as a polygon (io::scene_to_json), are.
 void validate_proportions(const Polygon& p);
 
-void validate(const BodyDef& def);
-void validate(const Material& material);
-void validate(const ShapeDef& def);
+TAMIAS2D_EXPORT void validate(const BodyDef& def);
+TAMIAS2D_EXPORT void validate(const Material& material);
+TAMIAS2D_EXPORT void validate(const ShapeDef& def);
 void validate(const WorldDef& def);
-/// DCX_joint: distinct bodies, one of them dynamic (`movable`), a finite anchor, a break force
-/// > 0. The handles are checked by the caller.
-void validate(const RevoluteJointDef& def, bool movable);
+/// "static", "kinematic" or "dynamic", as messages name a body's type.
+const char* type_name(BodyType type);
+
+/// A body a joint definition names: its handle, its name in messages ("body[3 'slider']") and
+/// its type. The handle is checked by the caller.
+struct JointBody {
+    BodyId id;
+    std::string label;
+    BodyType type;
+};
+
+/// DCX_joint: distinct bodies, one of them dynamic, a finite anchor, a break force > 0. A
+/// message about the bodies names them by their labels, not by a number.
+void validate(const RevoluteJointDef& def, const JointBody& a, const JointBody& b);
 /// DCX_joint for a distance joint: as above, and a rest length > 0 (given, or the anchors'
 /// distance), hertz and damping ratio >= 0.
-void validate(const DistanceJointDef& def, bool movable);
+void validate(const DistanceJointDef& def, const JointBody& a, const JointBody& b);
 /// DCX_joint for a target joint: a dynamic body, a finite target, hertz > 0, damping ratio
 /// >= 0, max force > 0.
-void validate(const TargetJointDef& def, bool dynamic);
+void validate(const TargetJointDef& def, const JointBody& body);
 /// DCX_joint for a prismatic joint: as for a revolute one, a non-zero finite axis, limits
 /// lower <= upper, a motor force >= 0, an enabled spring's hertz > 0.
-void validate(const PrismaticJointDef& def, bool movable);
+void validate(const PrismaticJointDef& def, const JointBody& a, const JointBody& b);
 /// DCX_joint for a weld joint: as for a revolute one, frequencies and damping ratios >= 0.
-void validate(const WeldJointDef& def, bool movable);
+void validate(const WeldJointDef& def, const JointBody& a, const JointBody& b);
 /// DCX_joint for a wheel joint: as for a prismatic one, with a motor torque >= 0.
-void validate(const WheelJointDef& def, bool movable);
+void validate(const WheelJointDef& def, const JointBody& a, const JointBody& b);
 /// DCX_joint for a motor joint: finite offsets, max force and torque >= 0, correction factor
 /// in [0, 1].
-void validate(const MotorJointDef& def, bool movable);
+void validate(const MotorJointDef& def, const JointBody& a, const JointBody& b);
 /// DCX_joint: an anchor at offset `r` (m) from the centre of mass of a body of inverse mass and
 /// inverse inertia `inv_mass`, `inv_inertia` lies within supported::joint_lever_ratio_max
 /// radii of gyration of it (a body that does not move or turn has no such limit).
@@ -81,7 +101,7 @@ void validate_joint_lever(std::string_view field, Vec2d r, double inv_mass, doub
 /// Whether validate_joint_lever accepts (for a check that names the field only on failure).
 bool joint_lever_fits(Vec2d r, double inv_mass, double inv_inertia);
 /// DCX_dt: the time step is finite and > 0; DCX_range: in [input_min, input_max] s.
-void validate_time_step(double dt);
+TAMIAS2D_EXPORT void validate_time_step(double dt);
 /// DCI_m: a mass given for a dynamic body is > 0 (the SRS's m >= 0 would divide by zero in IM1).
 void validate_mass(std::string_view field, double mass);
 /// DCI_I: a moment of inertia given is > 0 (the SRS's I >= 0 would divide by zero in IM2).

@@ -69,6 +69,47 @@ void validate_levers(const BodyStore& bodies, const Joint& j, const std::string&
     }
 }
 
+/// A body a joint definition names, for its checks and their messages.
+JointBody joint_body(const BodyStore& bodies, BodyId id, const Body& b) {
+    return {id, body_label(bodies, id.index), b.type};
+}
+
+/// How messages name a joint's kind.
+const char* kind_name(JointType type) {
+    switch (type) {
+    case JointType::revolute:
+        return "revolute joint";
+    case JointType::distance:
+        return "distance joint";
+    case JointType::target:
+        return "target joint";
+    case JointType::prismatic:
+        return "prismatic joint";
+    case JointType::weld:
+        return "weld joint";
+    case JointType::wheel:
+        return "wheel joint";
+    case JointType::motor:
+        return "motor joint";
+    }
+    return "joint of no known kind";
+}
+
+/// A joint reading or setter called on a joint of a kind it does not apply to.
+[[noreturn]] void wrong_joint(const char* call, JointId id, const Joint& j, const char* rule) {
+    throw WrongKind(call, "joint[" + std::to_string(id.index) + "]", kind_name(j.type), rule);
+}
+
+/// Forces, torques and impulses move dynamic bodies only: one given to a static or kinematic
+/// body would be lost without a trace, so it is refused as the mistake it is.
+void require_dynamic(const BodyStore& bodies, BodyId id, const Body& b, const char* call) {
+    if (b.type != BodyType::dynamic)
+        throw WrongKind(call, body_label(bodies, id.index),
+                        std::string(type_name(b.type)) + " body",
+                        "must be a dynamic body (a static or kinematic body does not move under "
+                        "forces, torques or impulses)");
+}
+
 } // namespace
 
 /// The engine's state and the step's pipeline over its stages (dynamics/): the bodies, the
@@ -139,7 +180,8 @@ struct World::Impl {
     void break_joints() {
         for (std::uint32_t i = 0; i < joints.joints.size(); ++i) {
             const Joint& j = joints.joints[i];
-            if (!j.alive || !(length(reaction_impulse(j)) * inv_h > j.break_force))
+            if (!j.alive ||
+                !(bridge::reaction_force(length(reaction_impulse(j)), inv_h) > j.break_force))
                 continue;
             broken.push_back(joints.id(i));
             unjoin(i);
@@ -355,7 +397,7 @@ JointId World::create_joint(const RevoluteJointDef& def) {
     Impl& w = *impl_;
     const Body& a = w.bodies.get(def.body_a);
     const Body& b = w.bodies.get(def.body_b);
-    validate(def, a.type == BodyType::dynamic || b.type == BodyType::dynamic);
+    validate(def, joint_body(w.bodies, def.body_a, a), joint_body(w.bodies, def.body_b, b));
     Joint j = two_body_joint(JointType::revolute, def.body_a, a, def.body_b, b, def.anchor,
                              def.collide_connected, def.break_force);
     j.enable_limit = def.enable_limit;
@@ -374,7 +416,7 @@ JointId World::create_joint(const DistanceJointDef& def) {
     Impl& w = *impl_;
     const Body& a = w.bodies.get(def.body_a);
     const Body& b = w.bodies.get(def.body_b);
-    validate(def, a.type == BodyType::dynamic || b.type == BodyType::dynamic);
+    validate(def, joint_body(w.bodies, def.body_a, a), joint_body(w.bodies, def.body_b, b));
     Joint j;
     j.type = JointType::distance;
     j.body_a = def.body_a.index;
@@ -396,7 +438,7 @@ JointId World::create_joint(const PrismaticJointDef& def) {
     Impl& w = *impl_;
     const Body& a = w.bodies.get(def.body_a);
     const Body& b = w.bodies.get(def.body_b);
-    validate(def, a.type == BodyType::dynamic || b.type == BodyType::dynamic);
+    validate(def, joint_body(w.bodies, def.body_a, a), joint_body(w.bodies, def.body_b, b));
     Joint j = two_body_joint(JointType::prismatic, def.body_a, a, def.body_b, b, def.anchor,
                              def.collide_connected, def.break_force);
     j.local_axis = local_axis(a, def.axis);
@@ -417,7 +459,7 @@ JointId World::create_joint(const WeldJointDef& def) {
     Impl& w = *impl_;
     const Body& a = w.bodies.get(def.body_a);
     const Body& b = w.bodies.get(def.body_b);
-    validate(def, a.type == BodyType::dynamic || b.type == BodyType::dynamic);
+    validate(def, joint_body(w.bodies, def.body_a, a), joint_body(w.bodies, def.body_b, b));
     Joint j = two_body_joint(JointType::weld, def.body_a, a, def.body_b, b, def.anchor,
                              def.collide_connected, def.break_force);
     j.hertz = def.linear_hertz;
@@ -431,7 +473,7 @@ JointId World::create_joint(const WheelJointDef& def) {
     Impl& w = *impl_;
     const Body& a = w.bodies.get(def.body_a);
     const Body& b = w.bodies.get(def.body_b);
-    validate(def, a.type == BodyType::dynamic || b.type == BodyType::dynamic);
+    validate(def, joint_body(w.bodies, def.body_a, a), joint_body(w.bodies, def.body_b, b));
     Joint j = two_body_joint(JointType::wheel, def.body_a, a, def.body_b, b, def.anchor,
                              def.collide_connected, def.break_force);
     j.local_axis = local_axis(a, def.axis);
@@ -452,7 +494,7 @@ JointId World::create_joint(const MotorJointDef& def) {
     Impl& w = *impl_;
     const Body& a = w.bodies.get(def.body_a);
     const Body& b = w.bodies.get(def.body_b);
-    validate(def, a.type == BodyType::dynamic || b.type == BodyType::dynamic);
+    validate(def, joint_body(w.bodies, def.body_a, a), joint_body(w.bodies, def.body_b, b));
     Joint j;
     j.type = JointType::motor;
     j.body_a = def.body_a.index;
@@ -472,7 +514,7 @@ JointId World::create_joint(const MotorJointDef& def) {
 JointId World::create_joint(const TargetJointDef& def) {
     Impl& w = *impl_;
     const Body& b = w.bodies.get(def.body);
-    validate(def, b.type == BodyType::dynamic);
+    validate(def, joint_body(w.bodies, def.body, b));
     Joint j;
     j.type = JointType::target;
     j.body_a = j.body_b = def.body.index;
@@ -490,9 +532,9 @@ JointId World::create_joint(const TargetJointDef& def) {
 
 void World::set_joint_target(JointId id, Vec2d target) {
     Joint& j = impl_->joints.get(id);
-    require_within("joint.target", target, supported::input_max, "m");
     if (j.type != JointType::target)
-        throw ValidationError("joint", double(id.index), "must be a target joint", "DCX_joint");
+        wrong_joint("set_joint_target", id, j, "must be a target joint");
+    require_within("joint.target", target, supported::input_max, "m");
     j.target = target;
     impl_->bodies.wake(j.body_b);
 }
@@ -508,18 +550,19 @@ bool World::is_valid(JointId id) const {
 }
 
 Vec2d World::joint_reaction_force(JointId id) const {
-    return reaction_impulse(impl_->joints.get(id)) * impl_->inv_h;
+    return bridge::reaction_force(reaction_impulse(impl_->joints.get(id)), impl_->inv_h);
 }
 
 double World::joint_reaction_torque(JointId id) const {
-    return reaction_angular_impulse(impl_->joints.get(id)) * impl_->inv_h;
+    return bridge::reaction_torque(reaction_angular_impulse(impl_->joints.get(id)), impl_->inv_h);
 }
 
 double World::joint_angle(JointId id) const {
     const Joint& j = impl_->joints.get(id);
     if (j.type == JointType::distance || j.type == JointType::target || j.type == JointType::motor)
-        throw ValidationError("joint", double(id.index),
-                              "must be a revolute, prismatic, weld or wheel joint", "DCX_joint");
+        wrong_joint("joint_angle", id, j,
+                    "must be a revolute, prismatic, weld or wheel joint (the kinds that hold an "
+                    "angle)");
     return bridge::joint_angle(impl_->bodies.bodies[j.body_a].angle,
                                impl_->bodies.bodies[j.body_b].angle, j.reference_angle);
 }
@@ -527,8 +570,8 @@ double World::joint_angle(JointId id) const {
 double World::joint_translation(JointId id) const {
     const Joint& j = impl_->joints.get(id);
     if (j.type != JointType::prismatic && j.type != JointType::wheel)
-        throw ValidationError("joint", double(id.index), "must be a prismatic or wheel joint",
-                              "DCX_joint");
+        wrong_joint("joint_translation", id, j,
+                    "must be a prismatic or wheel joint (the kinds with an axis)");
     const Body& a = impl_->bodies.bodies[j.body_a];
     const Body& b = impl_->bodies.bodies[j.body_b];
     const Vec2d r_a = rotate(a.xf.q, j.local_anchor_a - a.local_center);
@@ -539,12 +582,12 @@ double World::joint_translation(JointId id) const {
 
 void World::set_joint_motor_speed(JointId id, double speed) {
     Joint& j = impl_->joints.get(id);
-    require_within("joint.motor_speed", speed, supported::input_max,
-                   j.type == JointType::prismatic ? "m s^-1" : "rad s^-1");
     if (j.type != JointType::revolute && j.type != JointType::prismatic &&
         j.type != JointType::wheel)
-        throw ValidationError("joint", double(id.index),
-                              "must be a revolute, prismatic or wheel joint", "DCX_joint");
+        wrong_joint("set_joint_motor_speed", id, j,
+                    "must be a revolute, prismatic or wheel joint (the kinds with a motor)");
+    require_within("joint.motor_speed", speed, supported::input_max,
+                   j.type == JointType::prismatic ? "m s^-1" : "rad s^-1");
     j.motor_speed = speed;
     impl_->bodies.wake(j.body_a);
     impl_->bodies.wake(j.body_b);
@@ -552,10 +595,10 @@ void World::set_joint_motor_speed(JointId id, double speed) {
 
 void World::set_motor_joint_offsets(JointId id, Vec2d linear_offset, double angular_offset) {
     Joint& j = impl_->joints.get(id);
+    if (j.type != JointType::motor)
+        wrong_joint("set_motor_joint_offsets", id, j, "must be a motor joint");
     require_within("joint.linear_offset", linear_offset, supported::input_max, "m");
     require_within("joint.angular_offset", angular_offset, supported::input_max, "rad");
-    if (j.type != JointType::motor)
-        throw ValidationError("joint", double(id.index), "must be a motor joint", "DCX_joint");
     j.local_anchor_a = linear_offset;
     j.reference_angle = angular_offset;
     impl_->bodies.wake(j.body_a);
@@ -756,6 +799,7 @@ void World::set_torque(BodyId id, double torque) {
 }
 void World::apply_force(BodyId id, Vec2d force, Vec2d world_point) {
     Body& b = impl_->bodies.get(id);
+    require_dynamic(impl_->bodies, id, b, "apply_force");
     require_within("force", force, supported::input_max, "N");
     require_within("world_point", world_point, supported::input_max, "m");
     // The one-step loads add up until the next step: their sums stay within the state's range.
@@ -773,6 +817,7 @@ void World::apply_force(BodyId id, Vec2d force, Vec2d world_point) {
 }
 void World::apply_torque(BodyId id, double torque) {
     Body& b = impl_->bodies.get(id);
+    require_dynamic(impl_->bodies, id, b, "apply_torque");
     require_within("torque", torque, supported::input_max, "N m");
     require_within("torque (summed one-step torques)", b.torque_once + torque, supported::state_max,
                    "N m");
@@ -782,10 +827,9 @@ void World::apply_torque(BodyId id, double torque) {
 }
 void World::apply_impulse(BodyId id, Vec2d impulse, Vec2d world_point) {
     Body& b = impl_->bodies.get(id);
+    require_dynamic(impl_->bodies, id, b, "apply_impulse");
     require_within("impulse", impulse, supported::input_max, "N s");
     require_within("world_point", world_point, supported::input_max, "m");
-    if (b.type != BodyType::dynamic)
-        return;
     const double magnitude = length(impulse);
     if (magnitude == 0.0) {
         impl_->bodies.wake(id.index);
@@ -885,6 +929,21 @@ std::span<const SensorEvent> World::sensor_end_events() const {
 }
 
 std::vector<ShapeId> World::query_aabb(const Aabb& box) const {
+    // A box upside down on an axis (min > max) or with a NaN side contains nothing: answering
+    // it with no shapes would hide the caller's mistake (corners swapped, a size for a corner).
+    require_finite("box.min_x", box.min_x);
+    require_finite("box.min_y", box.min_y);
+    require_finite("box.max_x", box.max_x);
+    require_finite("box.max_y", box.max_y);
+    // The query's own rule, not an SRS data constraint: "query" names it.
+    if (!(box.min_x <= box.max_x))
+        throw ValidationError("box.max_x", box.max_x,
+                              "must be >= box.min_x (" + detail::format_value(box.min_x) + " m)",
+                              "query");
+    if (!(box.min_y <= box.max_y))
+        throw ValidationError("box.max_y", box.max_y,
+                              "must be >= box.min_y (" + detail::format_value(box.min_y) + " m)",
+                              "query");
     std::vector<ShapeId> out;
     impl_->shapes.broad_phase.query(box, [&](int proxy) {
         const std::uint32_t s = impl_->shapes.broad_phase.user_data(proxy);
@@ -898,6 +957,7 @@ std::vector<ShapeId> World::query_aabb(const Aabb& box) const {
 }
 
 std::vector<ShapeId> World::query_point(Vec2d p) const {
+    require_finite("point", p); // a NaN point is in no shape: refused, not answered empty
     std::vector<ShapeId> out;
     const Aabb box{p.x, p.y, p.x, p.y};
     impl_->shapes.broad_phase.query(box, [&](int proxy) {

@@ -165,7 +165,7 @@ BOOST_AUTO_TEST_CASE(new_pairs_equal_brute_force, *utf::label("IM4")) {
 }
 
 // Oracle: the IM4 check over the fat boxes, restricted to static proxies: never a pair.
-BOOST_AUTO_TEST_CASE(static_pairs_never_reported, *utf::label("IM4")) {
+BOOST_AUTO_TEST_CASE(static_pairs_never_reported, *utf::label("internals")) {
     BroadPhase bp(margin);
     for (std::uint32_t i = 0; i < 20; ++i)
         bp.create_proxy({0.0, 0.0, 1.0, 1.0}, i, true);
@@ -186,7 +186,7 @@ BOOST_AUTO_TEST_CASE(static_pairs_never_reported, *utf::label("IM4")) {
 // Oracle: R7 through T5: in random moving scenes, the pairs with a contact found by
 // broad phase + narrow phase equal the pairs a brute-force all-pairs distance check
 // (oracle::distance == 0, i.e. T5's shared point) finds, every step.
-BOOST_AUTO_TEST_CASE(scene_collisions_equal_brute_force, *utf::label("R7")) {
+BOOST_AUTO_TEST_CASE(scene_collisions_equal_brute_force, *utf::label("T5")) {
     std::mt19937_64 rng(17);
     const int n = 120;
     std::vector<Geometry> shapes;
@@ -241,7 +241,7 @@ BOOST_AUTO_TEST_CASE(scene_collisions_equal_brute_force, *utf::label("R7")) {
 
 // Oracle: move_proxy itself. Batched moves (move_proxies, as the world's write-back makes them)
 // leave the same fat boxes and report the same pairs as one move_proxy call per proxy.
-BOOST_AUTO_TEST_CASE(batched_moves_equal_single_moves, *utf::label("IM4") * utf::label("R7")) {
+BOOST_AUTO_TEST_CASE(batched_moves_equal_single_moves, *utf::label("internals")) {
     std::mt19937_64 rng(29);
     BroadPhase one(margin), many(margin);
     std::vector<int> ids;
@@ -325,7 +325,7 @@ BOOST_AUTO_TEST_CASE(steady_state_allocation_free) {
 }
 
 // Oracle: IM4 over the fat boxes: BroadPhase::query visits both trees and stops on false.
-BOOST_AUTO_TEST_CASE(query_both_trees, *utf::label("IM4")) {
+BOOST_AUTO_TEST_CASE(query_both_trees, *utf::label("internals")) {
     BroadPhase bp(margin);
     const int s = bp.create_proxy({0.0, 0.0, 1.0, 1.0}, 1, true);
     const int d = bp.create_proxy({0.5, 0.0, 1.5, 1.0}, 2, false);

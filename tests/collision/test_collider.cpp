@@ -158,7 +158,7 @@ BOOST_AUTO_TEST_CASE(reference_face_is_a_best_separating_axis,
 // in place from whatever it held: one manifold reused across random pairs of circles and
 // polygons, poses and margins must come out bit for bit as a new one each time, including the
 // slots past its count.
-BOOST_AUTO_TEST_CASE(in_place_update_matches_a_new_manifold, *utf::label("T5")) {
+BOOST_AUTO_TEST_CASE(in_place_update_matches_a_new_manifold, *utf::label("internals")) {
     std::mt19937_64 rng(47);
     Manifold reused;
     int with_points = 0, shrunk = 0;
@@ -224,7 +224,7 @@ BOOST_AUTO_TEST_CASE(surely_inside_never_errs, *utf::label("IM4")) {
 // Oracle: the bound's construction: an unrotated box's bound is the box itself (plus a slack
 // of 1e-9 of the coordinates), so a fat box 0.1 m wider on each side, the broad phase's margin,
 // is decided without the vertices at 1000 m out.
-BOOST_AUTO_TEST_CASE(surely_inside_decides_the_resting_case, *utf::label("IM4")) {
+BOOST_AUTO_TEST_CASE(surely_inside_decides_the_resting_case, *utf::label("internals")) {
     const Collider box = make_collider(make_box(0.25, 0.25));
     for (const double x : {0.0, 1.5, -999.0, 1000.0}) {
         const Transform xf{{x, 0.25}, Rot::from_angle(0.0)};

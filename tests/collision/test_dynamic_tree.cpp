@@ -183,7 +183,7 @@ BOOST_AUTO_TEST_CASE(marked_pairs_equal_brute_force, *utf::label("IM4")) {
 
 // Oracle: AVL height bound 1.44 log2(N + 2), N = 2n - 1 nodes for n leaves, for a tree built by
 // insertions alone.
-BOOST_AUTO_TEST_CASE(insertions_keep_the_tree_balanced, *utf::label("IM4")) {
+BOOST_AUTO_TEST_CASE(insertions_keep_the_tree_balanced, *utf::label("internals")) {
     std::mt19937_64 rng(3);
     DynamicTree tree;
     for (int i = 0; i < 3000; ++i)
@@ -196,7 +196,7 @@ BOOST_AUTO_TEST_CASE(insertions_keep_the_tree_balanced, *utf::label("IM4")) {
 // Oracle: a rebuild with nothing marked changes nothing (a resting scene pays nothing): the
 // height and the area ratio (sum of internal perimeters) stay bit for bit; one enlarged leaf
 // marks its ancestors, and the rebuild clears the marks (validate checks they reach the root).
-BOOST_AUTO_TEST_CASE(rebuild_touches_only_what_moved, *utf::label("IM4")) {
+BOOST_AUTO_TEST_CASE(rebuild_touches_only_what_moved, *utf::label("internals")) {
     std::mt19937_64 rng(8);
     DynamicTree tree;
     std::vector<std::pair<int, Aabb>> live;
@@ -226,7 +226,7 @@ BOOST_AUTO_TEST_CASE(rebuild_touches_only_what_moved, *utf::label("IM4")) {
 // Oracle: a median split halves the leaves, so a full rebuild has height ceil(log2 n). Boxes
 // at exponentially spread places defeat the midpoint splits of a partial rebuild (each split
 // peels off one box, height n - 1); the rebuild must catch that and stay within its limit.
-BOOST_AUTO_TEST_CASE(rebuild_bounds_the_height, *utf::label("IM4")) {
+BOOST_AUTO_TEST_CASE(rebuild_bounds_the_height, *utf::label("internals")) {
     DynamicTree tree;
     std::vector<std::pair<int, Aabb>> live;
     for (int i = 0; i < 48; ++i) {
@@ -278,7 +278,7 @@ BOOST_AUTO_TEST_CASE(small_moves_keep_the_tree_valid, *utf::label("IM4")) {
 }
 
 // Oracle: a query callback returning false stops the walk after one leaf.
-BOOST_AUTO_TEST_CASE(query_can_stop_early, *utf::label("IM4")) {
+BOOST_AUTO_TEST_CASE(query_can_stop_early, *utf::label("internals")) {
     DynamicTree tree;
     for (int i = 0; i < 50; ++i)
         tree.create_proxy({double(i) * 0.1, 0.0, double(i) * 0.1 + 1.0, 1.0}, std::uint32_t(i));

@@ -75,7 +75,8 @@ BOOST_AUTO_TEST_CASE(normal_points_from_a_into_b, *utf::label("A4")) {
         }
 }
 
-// Oracle: A4 on random penetrating pairs: n separates A then B better than -n does (the
+// Oracle: A4's convention as a property on random penetrating pairs: n separates A then B
+// better than -n does (the
 // support gap along n exceeds the one along -n), and |n| = 1.
 BOOST_AUTO_TEST_CASE(normal_direction_random, *utf::label("A4")) {
     std::mt19937_64 rng(7);
@@ -136,7 +137,8 @@ BOOST_AUTO_TEST_CASE(contact_points_satisfy_t5, *utf::label("T5")) {
     BOOST_TEST(separated > 500);
 }
 
-// Oracle: speculative contacts (docs/collision.md): a gap g is reported with separation g
+// Oracle: the stated rule of speculative contacts (docs/collision.md): a gap g is reported
+// with separation g
 // while g < margin, and not at all beyond.
 BOOST_AUTO_TEST_CASE(speculative_margin, *utf::label("T5")) {
     const Geometry box = to_geometry(make_box(0.5, 0.5));
@@ -179,7 +181,8 @@ BOOST_AUTO_TEST_CASE(parallel_faces_apart_give_two_points, *utf::label("LC1") * 
     }
 }
 
-// Oracle: LC1 (edge-to-edge): a box resting face down on a wider box touches along a
+// Oracle: hand geometry of LC1 (edge-to-edge): a box resting face down on a wider box
+// touches along a
 // segment; the manifold has two points, at its ends, midway through the overlap.
 BOOST_AUTO_TEST_CASE(edge_edge_gives_two_points, *utf::label("LC1")) {
     const Geometry ground = to_geometry(make_box(5.0, 0.5));
@@ -198,7 +201,8 @@ BOOST_AUTO_TEST_CASE(edge_edge_gives_two_points, *utf::label("LC1")) {
     BOOST_TEST(m.points[0].id.key() != m.points[1].id.key());
 }
 
-// Oracle: LC1 with clipping: a box overhanging the ground's corner touches only over the
+// Oracle: hand geometry of LC1 with clipping: a box overhanging the ground's corner touches
+// only over the
 // overlap [4.5, 5]; the clip point sits at the ground's corner x = 5.
 BOOST_AUTO_TEST_CASE(edge_edge_clipped_at_corner, *utf::label("LC1")) {
     const Geometry ground = to_geometry(make_box(5.0, 0.5));
@@ -213,7 +217,8 @@ BOOST_AUTO_TEST_CASE(edge_edge_clipped_at_corner, *utf::label("LC1")) {
     BOOST_TEST(*xs.rbegin() == 5.0, tt::tolerance(1e-12));
 }
 
-// Oracle: A5 (vertex-to-edge): a box turned 45 degrees pokes one corner 0.01 m into a face;
+// Oracle: hand geometry of A5 (vertex-to-edge): a box turned 45 degrees pokes one corner
+// 0.01 m into a face;
 // one point, midway between the corner and the face, separation -0.01, ids vertex-face.
 BOOST_AUTO_TEST_CASE(vertex_edge_gives_one_point, *utf::label("A5") * utf::label("LC1")) {
     const Geometry ground = to_geometry(make_box(5.0, 0.5));
@@ -260,7 +265,7 @@ BOOST_AUTO_TEST_CASE(head_on_points_symmetric, *utf::label("LC1") * utf::label("
 
 // Oracle: warm-starting contract: feature ids of a resting box do not change under small
 // motion and tilt, and the reference face does not flip (normal stays up).
-BOOST_AUTO_TEST_CASE(resting_box_ids_stable, *utf::label("LC1")) {
+BOOST_AUTO_TEST_CASE(resting_box_ids_stable, *utf::label("internals")) {
     const Geometry box = to_geometry(make_box(0.5, 0.5));
     std::mt19937_64 rng(99);
     std::uniform_real_distribution<double> jitter(-1e-4, 1e-4);
@@ -320,7 +325,7 @@ BOOST_AUTO_TEST_CASE(polygon_circle_regions, *utf::label("T5") * utf::label("A4"
 // touching, overlapping) is collided twice per pose, once carrying its SeparationHint from pose
 // to pose and once without: the manifolds must be identical, bit for bit, and the hint must have
 // skipped the full test for some poses (otherwise this checks nothing).
-BOOST_AUTO_TEST_CASE(separation_hint_changes_nothing, *utf::label("T5")) {
+BOOST_AUTO_TEST_CASE(separation_hint_changes_nothing, *utf::label("internals")) {
     std::mt19937_64 rng(7);
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     const Vec2d triangle[] = {{0, 0}, {1, 0}, {0.2, 0.7}};

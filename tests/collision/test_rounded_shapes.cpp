@@ -173,8 +173,9 @@ BOOST_AUTO_TEST_CASE(capsule_pairs, *utf::label("LC1") * utf::label("T5")) {
     BOOST_TEST(ends.normal.x == 1.0, tt::tolerance(1e-12));
 }
 
-// Oracle: DD31's one-sidedness: a chain edge running right to left (normal +y) meets a circle
-// above it and not one whose centre is below its line, which passes through from behind.
+// Oracle: hand geometry of DD31's one-sidedness: a chain edge running right to left (normal +y)
+// meets a circle above it and not one whose centre is below its line, which passes through from
+// behind.
 BOOST_AUTO_TEST_CASE(chain_edge_is_one_sided, *utf::label("DD31")) {
     const Geometry e = edge({2.0, 0.0}, {1.0, 0.0}, {-1.0, 0.0}, {-2.0, 0.0});
     const Geometry ball = to_geometry(make_circle(0.3));
@@ -190,11 +191,11 @@ BOOST_AUTO_TEST_CASE(chain_edge_is_one_sided, *utf::label("DD31")) {
     BOOST_TEST(rev.normal.y == -1.0, tt::tolerance(1e-12));
 }
 
-// Oracle: DD31, the ghost corner: a box resting flat on a flat chain (edges meeting at x = 0)
-// and straddling the joint, with less of it over the edge on the left than its penetration:
-// two-sided, the left edge's bare end meets the box's side face and the separating axis test
-// gives a horizontal normal (the "ghost" that catches a sliding body); as a chain edge its
-// normal is the edge's own, +y, and its points lie on its own extent.
+// Oracle: hand geometry of DD31, the ghost corner: a box resting flat on a flat chain (edges
+// meeting at x = 0) and straddling the joint, with less of it over the edge on the left than its
+// penetration: two-sided, the left edge's bare end meets the box's side face and the separating
+// axis test gives a horizontal normal (the "ghost" that catches a sliding body); as a chain edge
+// its normal is the edge's own, +y, and its points lie on its own extent.
 BOOST_AUTO_TEST_CASE(flat_joint_has_no_ghost_normal, *utf::label("DD31") * utf::label("T5")) {
     const Geometry box = to_geometry(make_box(0.5, 0.5));
     const Transform xb = at(0.495, 0.49); // left side 0.005 m past the joint, 0.01 m deep
@@ -213,9 +214,9 @@ BOOST_AUTO_TEST_CASE(flat_joint_has_no_ghost_normal, *utf::label("DD31") * utf::
     }
 }
 
-// Oracle: DD31 at a convex vertex: a chain over a hilltop at the origin (edges sloping down
-// both ways) gives a circle resting on the top the normal from the vertex to its centre, which
-// lies between the two edges' normals (the vertex's arc), from either edge.
+// Oracle: hand geometry of DD31 at a convex vertex: a chain over a hilltop at the origin (edges
+// sloping down both ways) gives a circle resting on the top the normal from the vertex to its
+// centre, which lies between the two edges' normals (the vertex's arc), from either edge.
 BOOST_AUTO_TEST_CASE(convex_vertex_keeps_its_arc, *utf::label("DD31")) {
     const Vec2d right{2.0, -0.5}, top{0.0, 0.0}, left{-2.0, -0.5};
     const Geometry ball = to_geometry(make_circle(0.3));

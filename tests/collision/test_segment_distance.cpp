@@ -15,7 +15,8 @@ using namespace tamias2d;
 
 BOOST_AUTO_TEST_SUITE(segment_distance_suite)
 
-// Oracle: in 2D, two segments that do not cross are closest at an endpoint of one of them,
+// Oracle: brute force over endpoints: in 2D, two segments that do not cross are closest at an
+// endpoint of one of them,
 // so the distance is the least of four point-segment distances (0 when they cross).
 BOOST_AUTO_TEST_CASE(random_segments_vs_endpoint_oracle, *utf::label("T5")) {
     std::mt19937_64 rng(41);

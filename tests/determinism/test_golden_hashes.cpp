@@ -1,6 +1,8 @@
 // Determinism across builds: every example scene, loaded and stepped, must reach the
 // World::state_hash() values committed in golden_hashes.txt, at the intermediate checkpoints
-// and at its last step.
+// and at its last step, on one worker (the scenes' own setting) and on four (the World's pool of
+// threads; where the platform has no threads, WebAssembly without them, a task system that runs
+// the pieces one after another on the calling thread).
 //
 // Oracle: the committed golden value, produced by another build (the file does not change
 // with the build: Release -O3, the ASan/UBSan build at -O1 and the portable-lanes build all
@@ -26,6 +28,7 @@
 #include <vector>
 
 #include "tamias2d/io/scene.hpp"
+#include "tamias2d/task_system.hpp"
 #include "tamias2d/world.hpp"
 
 namespace utf = boost::unit_test;
@@ -62,12 +65,30 @@ std::vector<fs::path> example_scenes() {
     return scenes;
 }
 
-Hashes run_scenes() {
+#if defined(__EMSCRIPTEN__) && !defined(__EMSCRIPTEN_PTHREADS__)
+/// No threads: each loop's pieces run at once, in order, on the calling thread (a task system
+/// may run them so, task_system.hpp).
+void* run_now(TaskCallback task, int items, void* task_context, void*) {
+    task(0, items, 0, task_context);
+    return nullptr;
+}
+void nothing_to_wait_for(void*, void*) {}
+#endif
+
+/// The scenes stepped with `workers` workers (0: each scene's own setting).
+Hashes run_scenes(int workers) {
     Hashes out;
     for (const fs::path& path : example_scenes()) {
         const std::string name = path.stem().string();
         const io::Scene scene = io::load_scene(path);
-        World world(scene.world);
+        WorldDef def = scene.world;
+        if (workers > 0) {
+            def.workers = workers;
+#if defined(__EMSCRIPTEN__) && !defined(__EMSCRIPTEN_PTHREADS__)
+            def.task_system = {run_now, nothing_to_wait_for, nullptr};
+#endif
+        }
+        World world(def);
         io::build_world(scene, world);
         const int last = steps_for(name, scene.steps);
         for (int s = 1; s <= last; ++s) {
@@ -118,21 +139,13 @@ void write_golden(const fs::path& file, const Hashes& hashes) {
     BOOST_TEST_REQUIRE(out.good(), "cannot write " << file);
 }
 
-} // namespace
+bool updating() {
+    const char* u = std::getenv("TAMIAS_GOLDEN_UPDATE");
+    return u && *u && std::string(u) != "0";
+}
 
-BOOST_AUTO_TEST_SUITE(determinism)
-
-// Oracle: the committed golden hashes (golden_hashes.txt), Tamias2D's own earlier output from
-// another build: a regression oracle, so the test proves the same bits across builds, not any
-// SRS item, and carries the `determinism` tag instead of an SRS label.
-BOOST_AUTO_TEST_CASE(example_scenes_reach_the_golden_hashes, *utf::label("determinism")) {
+void compare_with_golden(const Hashes& actual, const std::string& run) {
     const fs::path file = TAMIAS_GOLDEN_HASHES;
-    const Hashes actual = run_scenes();
-    if (const char* u = std::getenv("TAMIAS_GOLDEN_UPDATE"); u && *u && std::string(u) != "0") {
-        write_golden(file, actual);
-        BOOST_TEST_MESSAGE("wrote " << actual.size() << " golden hashes to " << file);
-        return;
-    }
     const Hashes golden = read_golden(file);
     // Each scene's first differing checkpoint only: later ones differ as a consequence.
     std::map<std::string, int> first_difference;
@@ -143,8 +156,8 @@ BOOST_AUTO_TEST_CASE(example_scenes_reach_the_golden_hashes, *utf::label("determ
                                   << " (new scene or checkpoint: regenerate the file)");
         } else if (g->second != hash && !first_difference.count(key.first)) {
             first_difference[key.first] = key.second;
-            BOOST_ERROR(key.first << " step " << key.second << ": state_hash " << hex(hash)
-                                  << ", golden " << hex(g->second)
+            BOOST_ERROR(key.first << " step " << key.second << " (" << run << "): state_hash "
+                                  << hex(hash) << ", golden " << hex(g->second)
                                   << ": this build does not give the golden bits");
         }
     }
@@ -153,7 +166,34 @@ BOOST_AUTO_TEST_CASE(example_scenes_reach_the_golden_hashes, *utf::label("determ
             BOOST_ERROR(key.first << " step " << key.second << ": golden hash " << hex(hash)
                                   << " was not computed (scene or step removed?)");
     BOOST_TEST_MESSAGE(actual.size() << " checkpoints over " << example_scenes().size()
-                                     << " scenes compared with " << file);
+                                     << " scenes (" << run << ") compared with " << file);
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(determinism)
+
+// Oracle: the committed golden hashes (golden_hashes.txt), Tamias2D's own earlier output from
+// another build: a regression oracle, so the test proves the same bits across builds, not any
+// SRS item, and carries the `determinism` tag instead of an SRS label.
+BOOST_AUTO_TEST_CASE(example_scenes_reach_the_golden_hashes, *utf::label("determinism")) {
+    const Hashes actual = run_scenes(0);
+    if (updating()) {
+        write_golden(TAMIAS_GOLDEN_HASHES, actual);
+        BOOST_TEST_MESSAGE("wrote " << actual.size() << " golden hashes to "
+                                    << TAMIAS_GOLDEN_HASHES);
+        return;
+    }
+    compare_with_golden(actual, "one worker");
+}
+
+// Oracle: the same golden hashes: a step's results do not depend on the worker count
+// (task_system.hpp), so four workers must give the one-worker bits that the file holds.
+BOOST_AUTO_TEST_CASE(example_scenes_on_four_workers_reach_the_golden_hashes,
+                     *utf::label("determinism")) {
+    if (updating())
+        return; // the file is written from one worker
+    compare_with_golden(run_scenes(4), "four workers");
 }
 
 BOOST_AUTO_TEST_SUITE_END()

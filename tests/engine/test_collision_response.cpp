@@ -27,11 +27,14 @@ BOOST_AUTO_TEST_SUITE(collision_response)
 // Oracle: IM3's closed form, evaluated here from the SRS text (not through the engine):
 // j = -(1 + C_R) v^AB.n / ((1/m_A + 1/m_B) + (r_AP x n)^2 / I_A + (r_BP x n)^2 / I_B) (DD8),
 // v_A' = v_A + j n / m_A, v_B' = v_B - j n / m_B, omega_A' = omega_A + (r_AP x j n) / I_A,
-// omega_B' = omega_B - (r_BP x j n) / I_B; A is a unit square turned 45 degrees whose lowest
-// vertex P touches the top face of a 4 x 1 box B off-centre, so n = (0, 1) points from B into A.
-BOOST_AUTO_TEST_CASE(vertex_edge_matches_im3_closed_form, *utf::label("IM3") * utf::label("R8") *
-                                                              utf::label("DD8") * utf::label("A5") *
-                                                              utf::label("A6") * utf::label("A7")) {
+// omega_B' = omega_B - (r_BP x j n) / I_B (B takes the reaction -j n, T2), with v^AB the
+// velocity of A's point P relative to B's (DD11), each by Chasles' theorem (DD9); A is a unit
+// square turned 45 degrees whose lowest vertex P touches the top face of a 4 x 1 box B
+// off-centre, so n = (0, 1) points from B into A.
+BOOST_AUTO_TEST_CASE(vertex_edge_matches_im3_closed_form,
+                     *utf::label("IM3") * utf::label("R8") * utf::label("DD8") * utf::label("A5") *
+                         utf::label("A6") * utf::label("A7") * utf::label("T2") *
+                         utf::label("DD9") * utf::label("DD11")) {
     for (const double c_r : {0.0, 0.4, 1.0}) {
         World world(WorldDef{.gravity = {0.0, 0.0}});
         const double half_diag = std::sqrt(0.5);

@@ -69,8 +69,8 @@ BOOST_AUTO_TEST_CASE(pyramid20_stands_in_regions, *utf::label("R8")) {
     }
 }
 
-// Oracle: the container's walls: 400 boxes rained into a static open-top container with
-// friction must all end inside it (between the walls, above the floor), finite, and at rest.
+// Oracle: hand geometry of the container's walls: 400 boxes rained into a static open-top container
+// with friction must all end inside it (between the walls, above the floor), finite, and at rest.
 BOOST_AUTO_TEST_CASE(rain_stays_in_container, *utf::label("R7") * utf::label("R8")) {
     World world(WorldDef{.gravity = {0.0, -10.0}});
     RainParams p;

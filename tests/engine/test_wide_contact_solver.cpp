@@ -83,7 +83,7 @@ BOOST_AUTO_TEST_CASE(packs_reproduce_the_sequential_pass, *utf::label("IM7")) {
 // while at most 1 in regroup_share manifolds changed group) must give the same numbers too:
 // the solver is first loaded with some two-point manifolds' separations negated (apart <->
 // touching), then with the scene itself.
-BOOST_AUTO_TEST_CASE(kept_packs_reproduce_the_sequential_pass, *utf::label("IM7")) {
+BOOST_AUTO_TEST_CASE(kept_packs_reproduce_the_sequential_pass, *utf::label("internals")) {
     const ContactSolverSettings st = iteration_settings();
     int regrouped = 0; // seeds whose kept packs differ from the scene's own
     for (std::uint32_t seed = 1; seed <= 40; ++seed) {

@@ -106,7 +106,8 @@ BOOST_AUTO_TEST_CASE(contact_report_follows_destruction, *utf::label("R1") * utf
     }
 }
 
-// Oracle: the report before the destruction. Destroying a body removes its contacts (the last
+// Oracle: the stated contract of world.hpp, checked against the report before the destruction.
+// Destroying a body removes its contacts (the last
 // contact moves into each gap, with its impulses kept beside it); every other contact must
 // still report the impulses of the last step, bit for bit, and the world must step on.
 BOOST_AUTO_TEST_CASE(surviving_contacts_keep_their_impulses, *utf::label("R1") * utf::label("R7")) {
@@ -146,7 +147,7 @@ BOOST_AUTO_TEST_CASE(surviving_contacts_keep_their_impulses, *utf::label("R1") *
 
 // Oracle: determinism by construction: the same input gives bitwise the same state (equal
 // state hashes after every step of two independent runs).
-BOOST_AUTO_TEST_CASE(bitwise_deterministic, *utf::label("R1") * utf::label("R8")) {
+BOOST_AUTO_TEST_CASE(bitwise_deterministic, *utf::label("determinism")) {
     World w1, w2;
     build_pile(w1);
     build_pile(w2);
@@ -172,7 +173,7 @@ BOOST_AUTO_TEST_CASE(pile_settles_on_ground, *utf::label("R7") * utf::label("R8"
     }
 }
 
-// Oracle: arithmetic: n steps of dt must read back as n dt (the double nearest to it), so that a
+// Oracle: closed form: n steps of dt must read back as n dt (the double nearest to it), so that a
 // load switching at t = n dt acts from step n on; plain summation gives 0.49999999999999994
 // after 15 steps of 1/30 s.
 BOOST_AUTO_TEST_CASE(simulated_time_is_n_dt, *utf::label("R5") * utf::label("IM1")) {

@@ -3,9 +3,10 @@
 // forged handles, odd time steps, and queries and ray casts of zero, huge and NaN vectors.
 //
 // Oracle: the library's stated promises (docs/user-guide.md, "Errors" and "Handles"): no crash
-// and no sanitizer report; every rejection is a ValidationError (non-empty field and message)
-// or an InvalidHandle (non-empty message); a rejected call leaves World::state_hash()
-// unchanged; after every accepted call every state, energy and ray-cast result is finite.
+// and no sanitizer report; every rejection is a ValidationError (non-empty field and message),
+// an InvalidHandle (non-empty message) or a WrongKind (non-empty subject and message); a
+// rejected call leaves World::state_hash() unchanged; after every accepted call every state,
+// energy and ray-cast result is finite.
 //
 // TAMIAS_FUZZ_API_ITERATIONS=<n> runs more sequences (the default is printed); a failure
 // prints its seed, replayed alone with TAMIAS_FUZZ_SEED=<seed> TAMIAS_FUZZ_API_ITERATIONS=1.
@@ -399,6 +400,10 @@ void run_sequence(std::uint64_t seed, Tally& tally) {
             why = e.what();
             if (why.empty())
                 problem = "InvalidHandle with an empty message";
+        } catch (const WrongKind& e) { // a load on a body no load moves: refused
+            why = e.what();
+            if (e.subject.empty() || why.empty())
+                problem = "WrongKind with an empty subject or message";
         } catch (const std::exception& e) {
             problem = std::string("an exception of another kind: ") + e.what();
         }

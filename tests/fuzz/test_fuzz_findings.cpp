@@ -38,6 +38,9 @@ std::string mutant(const std::string& name, const std::string& from, const std::
 
 BOOST_AUTO_TEST_SUITE(fuzz_findings)
 
+// Oracle: DCX_joint's stated rule (srs/data_constraints.yaml): example scenes edited so that a
+// joint's anchor lies far from its body or the body's radius of gyration is tiny are refused,
+// the error naming the body whose anchor breaks the rule.
 BOOST_AUTO_TEST_CASE(far_and_tiny_lever_scenes_are_refused,
                      *utf::label("R4") * utf::label("DCX_joint")) {
     struct Case {

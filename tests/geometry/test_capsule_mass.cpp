@@ -82,8 +82,8 @@ BOOST_AUTO_TEST_CASE(matches_the_defining_integrals, *utf::label("DD30") * utf::
     }
 }
 
-// Oracle: the limits: a capsule of vanishing length is a disc (I = m r^2 / 2), and a long thin
-// one a rod (I -> m L^2 / 12).
+// Oracle: closed-form limits: a capsule of vanishing length is a disc (I = m r^2 / 2), and a long
+// thin one a rod (I -> m L^2 / 12).
 BOOST_AUTO_TEST_CASE(disc_and_rod_limits, *utf::label("DD30")) {
     const double r = 0.7;
     const MassData disc = compute_mass(Capsule{{0.0, 0.0}, {1e-9, 0.0}, r}, 1.0);

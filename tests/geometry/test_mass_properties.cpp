@@ -16,8 +16,10 @@ using namespace tamias2d;
 
 BOOST_AUTO_TEST_SUITE(mass_properties)
 
-// Oracle: textbook rectangle, m = rho w h, I = m (w^2 + h^2) / 12 about the centroid.
-BOOST_AUTO_TEST_CASE(box_matches_closed_form, *utf::label("DD14") * utf::label("DD1")) {
+// Oracle: textbook rectangle, m = rho w h (its area w h, DCX_shape's, times the density),
+// I = m (w^2 + h^2) / 12 about the centroid.
+BOOST_AUTO_TEST_CASE(box_matches_closed_form,
+                     *utf::label("DD14") * utf::label("DD1") * utf::label("DCX_shape")) {
     const double rho = 3.0, w = 2.0, h = 1.0;
     const MassData d = compute_mass(make_box(w / 2, h / 2), rho);
     const double m = rho * w * h;
@@ -50,9 +52,11 @@ BOOST_AUTO_TEST_CASE(disc_matches_closed_form, *utf::label("DD14")) {
     BOOST_TEST(d.center.y == 2.0);
 }
 
-// Oracle: right triangle with legs a, b: centroid at (a/3, b/3), area ab/2,
-// polar moment about the centroid m (a^2 + b^2) / 18 (textbook table of area moments).
-BOOST_AUTO_TEST_CASE(right_triangle, *utf::label("DD14") * utf::label("DD1")) {
+// Oracle: right triangle with legs a, b: centroid at (a/3, b/3), area ab/2 (DCX_shape's, so
+// m = rho ab/2), polar moment about the centroid m (a^2 + b^2) / 18 (textbook table of area
+// moments).
+BOOST_AUTO_TEST_CASE(right_triangle,
+                     *utf::label("DD14") * utf::label("DD1") * utf::label("DCX_shape")) {
     const double a = 3.0, b = 2.0, rho = 2.0;
     const std::vector<Vec2d> pts{{0.0, 0.0}, {a, 0.0}, {0.0, b}};
     const Polygon t = make_polygon(pts);

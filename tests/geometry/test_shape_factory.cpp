@@ -111,7 +111,8 @@ BOOST_AUTO_TEST_CASE(non_finite_rejected, *utf::label("DCX_finite")) {
     BOOST_TEST(msg == "polygon.points[2].y = inf: must be finite (DCX_finite)");
 }
 
-// Oracle: a hull needs three non-collinear points, some area and at most 8 vertices.
+// Oracle: the definition of a convex hull (DCX_shape): three non-collinear points, some area,
+// and at most 8 vertices.
 BOOST_AUTO_TEST_CASE(degenerate_polygons_rejected, *utf::label("DCX_shape")) {
     const std::vector<Vec2d> two{{0.0, 0.0}, {1.0, 0.0}};
     expect_rejected([&] { (void)make_polygon(two); }, "polygon.points.size", "DCX_shape");

@@ -37,8 +37,8 @@ std::vector<units::Vec2<Length>> world_polygon(const Polygon& p, const Transform
 
 BOOST_AUTO_TEST_SUITE(shape_queries)
 
-// Oracle: the box of a placed polygon is the min/max of its placed vertices; of a circle,
-// centre +- radius.
+// Oracle: the definition of the tight box: the box of a placed polygon is the min/max of its placed
+// vertices; of a circle, centre +- radius.
 BOOST_AUTO_TEST_CASE(aabb_encloses_tightly, *utf::label("IM4")) {
     const Polygon tri = make_polygon(std::vector<Vec2d>{{0, 0}, {2, 0}, {0, 1}});
     const Transform xf{{1.0, -1.0}, Rot::from_angle(std::numbers::pi / 2)};

@@ -63,7 +63,7 @@ BOOST_AUTO_TEST_SUITE(scene_errors)
 // Oracle: RFC 8259 JSON grammar, positions counted by hand in each text: 1-based line and
 // column of the offending character (of the opening quote for an unexpected string, one past
 // the last character for a premature end of input).
-BOOST_AUTO_TEST_CASE(syntax_errors_give_line_and_column, *utf::label("R4")) {
+BOOST_AUTO_TEST_CASE(syntax_errors_give_line_and_column, *utf::label("scene")) {
     expect_error("{\n  \"dt\": 0.1,\n  \"steps\": 10,,\n}", {"", "", "", "syntax error", 3, 15});
     expect_error("{\"dt\": 0.1 \"steps\": 1}", {"", "", "", "syntax error", 1, 12});
     expect_error("", {"", "", "", "syntax error", 1, 1});
@@ -82,7 +82,7 @@ BOOST_AUTO_TEST_CASE(number_overflow_is_not_finite, *utf::label("R4") * utf::lab
 
 // Oracle: docs/scene-format.md: nesting is limited (128 levels), so hostile input cannot
 // exhaust the stack.
-BOOST_AUTO_TEST_CASE(deep_nesting_is_rejected, *utf::label("R4")) {
+BOOST_AUTO_TEST_CASE(deep_nesting_is_rejected, *utf::label("scene")) {
     const std::string deep = "{\"dt\": " + std::string(500, '[') + std::string(500, ']') + "}";
     try {
         (void)parse_scene(deep, "deep");
@@ -94,7 +94,7 @@ BOOST_AUTO_TEST_CASE(deep_nesting_is_rejected, *utf::label("R4")) {
 }
 
 // Oracle: docs/scene-format.md's types: each value below has the wrong JSON type.
-BOOST_AUTO_TEST_CASE(wrong_types_are_named, *utf::label("R4")) {
+BOOST_AUTO_TEST_CASE(wrong_types_are_named, *utf::label("scene")) {
     expect_error("[]", {"", "", "", "expected a scene object"});
     expect_error(R"({"dt": true, "steps": 1, "bodies": []})",
                  {"/dt", "dt", "", "dt: expected a number, got a boolean"});
@@ -125,7 +125,7 @@ BOOST_AUTO_TEST_CASE(wrong_types_are_named, *utf::label("R4")) {
 
 // Oracle: docs/scene-format.md's key lists: each object below has a key the format does not
 // define; the nearest defined key is suggested when it is within edit distance 2.
-BOOST_AUTO_TEST_CASE(unknown_keys_are_rejected, *utf::label("R4")) {
+BOOST_AUTO_TEST_CASE(unknown_keys_are_rejected, *utf::label("scene")) {
     expect_error(R"({"dt": 0.1, "step": 1, "bodies": []})",
                  {"/step", "step", "", "unknown key 'step' in a scene (did you mean 'steps'?)"});
     expect_error(with_bodies(R"({"positon": [0, 0], "mass": 1})"),
@@ -145,7 +145,7 @@ BOOST_AUTO_TEST_CASE(unknown_keys_are_rejected, *utf::label("R4")) {
 }
 
 // Oracle: docs/scene-format.md's required keys.
-BOOST_AUTO_TEST_CASE(missing_required_keys_are_named, *utf::label("R4")) {
+BOOST_AUTO_TEST_CASE(missing_required_keys_are_named, *utf::label("scene")) {
     expect_error(R"({"steps": 1, "bodies": []})", {"/dt", "dt", "", "missing required key 'dt'"});
     expect_error(R"({"dt": 0.1, "bodies": []})", {"/steps", "steps", "", "missing required"});
     expect_error(R"({"dt": 0.1, "steps": 1})", {"/bodies", "bodies", "", "missing required"});
@@ -212,7 +212,7 @@ BOOST_AUTO_TEST_CASE(out_of_range_values_name_their_constraint,
 
 // Oracle: docs/scene-format.md: a key appears once per object; body names are unique; names of
 // materials, shape types, body types, load kinds and generators come from fixed lists.
-BOOST_AUTO_TEST_CASE(duplicates_and_bad_references_are_rejected, *utf::label("R4")) {
+BOOST_AUTO_TEST_CASE(duplicates_and_bad_references_are_rejected, *utf::label("scene")) {
     expect_error(R"({"dt": 0.1, "dt": 0.2, "steps": 1, "bodies": []})",
                  {"/dt", "", "", "duplicate key 'dt'"});
     expect_error(with_bodies(R"({"shapes": [{"type": "circle", "radius": 1, "radius": 2}]})"),
@@ -348,7 +348,7 @@ BOOST_AUTO_TEST_CASE(generator_parameters_are_validated,
 }
 
 // Oracle: a file that does not exist cannot be read; the message names it.
-BOOST_AUTO_TEST_CASE(missing_file_is_reported, *utf::label("R4")) {
+BOOST_AUTO_TEST_CASE(missing_file_is_reported, *utf::label("scene")) {
     try {
         (void)load_scene("no/such/scene.json");
         BOOST_ERROR("loaded a missing file");
@@ -361,7 +361,7 @@ BOOST_AUTO_TEST_CASE(missing_file_is_reported, *utf::label("R4")) {
 // Oracle: every file in tests/io/data/malformed is malformed by construction (each breaks one
 // rule, see apps/cli/CMakeLists.txt for the expected messages): load_scene must reject each
 // with a SceneError, never crash or return a Scene.
-BOOST_AUTO_TEST_CASE(every_malformed_file_is_rejected, *utf::label("R4")) {
+BOOST_AUTO_TEST_CASE(every_malformed_file_is_rejected, *utf::label("scene")) {
     int files = 0;
     for (const auto& entry : std::filesystem::directory_iterator(TAMIAS_MALFORMED_SCENES)) {
         if (entry.path().extension() != ".json")

@@ -42,7 +42,7 @@ BOOST_AUTO_TEST_SUITE(scene_generators)
 // boxes (base 20: 210), plus one static ground; row r (from 0) has N - r boxes centred at
 // y = gap + box / 2 + r (box + gap) on a ground whose top face is at y = 0; each row is offset
 // by half a pitch from the one below and neighbours are `gap` apart (hand geometry).
-BOOST_AUTO_TEST_CASE(pyramid_counts_and_rows, *utf::label("R1")) {
+BOOST_AUTO_TEST_CASE(pyramid_counts_and_rows, *utf::label("scene")) {
     for (const int base : {1, 2, 20, 40}) {
         BOOST_TEST_CONTEXT("base " << base) {
             PyramidParams p;
@@ -91,7 +91,7 @@ BOOST_AUTO_TEST_CASE(pyramid_counts_and_rows, *utf::label("R1")) {
 
 // Oracle: the gaps make every pair of boxes disjoint (no initial overlap, so the stack settles
 // without being pushed apart); checked pairwise for base 20 (22 155 pairs).
-BOOST_AUTO_TEST_CASE(pyramid_boxes_do_not_overlap, *utf::label("R1")) {
+BOOST_AUTO_TEST_CASE(pyramid_boxes_do_not_overlap, *utf::label("scene")) {
     const std::vector<SceneBody> bodies = generate_pyramid(PyramidParams{});
     BOOST_TEST_REQUIRE(bodies.size() == 211u);
     std::size_t overlaps = 0;
@@ -104,7 +104,7 @@ BOOST_AUTO_TEST_CASE(pyramid_boxes_do_not_overlap, *utf::label("R1")) {
 // Oracle: the rain's specification: count boxes + 1 container body of 3 boxes (floor and two
 // walls, inner floor at the origin, inner width 40, wall height 20); every box starts above the
 // walls and inside the inner width, on a grid of pitch 1.5 box with |jitter| <= 0.2 box.
-BOOST_AUTO_TEST_CASE(rain_counts_and_geometry, *utf::label("R1")) {
+BOOST_AUTO_TEST_CASE(rain_counts_and_geometry, *utf::label("scene")) {
     RainParams p; // the defaults: 2000 boxes of 0.5 m, seed 1
     const std::vector<SceneBody> bodies = generate_rain(p);
     BOOST_TEST_REQUIRE(bodies.size() == 2001u);
@@ -140,7 +140,7 @@ BOOST_AUTO_TEST_CASE(rain_counts_and_geometry, *utf::label("R1")) {
 
 // Oracle: determinism by construction (splitmix64, no platform RNG): the same seed gives the
 // same scene bit for bit, another seed other jitters; count 0 leaves just the container.
-BOOST_AUTO_TEST_CASE(rain_is_deterministic_in_its_seed, *utf::label("R1")) {
+BOOST_AUTO_TEST_CASE(rain_is_deterministic_in_its_seed, *utf::label("scene")) {
     RainParams p;
     p.count = 300;
     const auto a = generate_rain(p);

@@ -82,7 +82,7 @@ BOOST_AUTO_TEST_SUITE(scene_limits)
 
 // Oracle: docs/scene-format.md, Limits: a text beyond the size limit is refused with a message
 // naming the limit; at the limit it is parsed (here: rejected for its content, not its size).
-BOOST_AUTO_TEST_CASE(text_beyond_the_size_limit_is_refused, *utf::label("R4")) {
+BOOST_AUTO_TEST_CASE(text_beyond_the_size_limit_is_refused, *utf::label("scene")) {
     const std::string padded = empty_scene + std::string(1000, ' ');
     try {
         (void)parse_scene(padded, "big.json", padded.size() - 1);
@@ -98,7 +98,7 @@ BOOST_AUTO_TEST_CASE(text_beyond_the_size_limit_is_refused, *utf::label("R4")) {
 
 // Oracle: the limit is enforced while reading, not after: from an endless stream the reader
 // takes no more than the limit and one chunk (64 KiB) before it refuses.
-BOOST_AUTO_TEST_CASE(an_endless_stream_is_refused_while_reading, *utf::label("R4")) {
+BOOST_AUTO_TEST_CASE(an_endless_stream_is_refused_while_reading, *utf::label("scene")) {
     Endless zeros('\0');
     std::istream in(&zeros);
     constexpr std::size_t limit = std::size_t{1} << 20;
@@ -117,7 +117,7 @@ BOOST_AUTO_TEST_CASE(an_endless_stream_is_refused_while_reading, *utf::label("R4
 
 #if defined(__unix__)
 // Oracle: `tamias2d validate /dev/zero` used never to end: /dev/zero is refused after the limit.
-BOOST_AUTO_TEST_CASE(dev_zero_is_refused, *utf::label("R4")) {
+BOOST_AUTO_TEST_CASE(dev_zero_is_refused, *utf::label("scene")) {
     try {
         (void)load_scene("/dev/zero", std::size_t{1} << 20);
         BOOST_ERROR("/dev/zero was loaded");
@@ -129,7 +129,7 @@ BOOST_AUTO_TEST_CASE(dev_zero_is_refused, *utf::label("R4")) {
 
 // Oracle: a FIFO whose writer never stops is refused while reading: the writer, which would
 // write 64 MiB, is cut off (EPIPE) after the limit plus what the pipe and one chunk hold.
-BOOST_AUTO_TEST_CASE(an_endless_fifo_is_refused_while_reading, *utf::label("R4")) {
+BOOST_AUTO_TEST_CASE(an_endless_fifo_is_refused_while_reading, *utf::label("scene")) {
     const std::string path = "/tmp/tamias2d_scene_fifo_" + std::to_string(::getpid());
     ::unlink(path.c_str());
     BOOST_TEST_REQUIRE(::mkfifo(path.c_str(), 0600) == 0);
@@ -160,7 +160,7 @@ BOOST_AUTO_TEST_CASE(an_endless_fifo_is_refused_while_reading, *utf::label("R4")
 // Oracle: RFC 8259: JSON text contains no NUL. A valid scene followed by a NUL and garbage was
 // accepted (the parser took the NUL for the end) while the same without the NUL was not: both
 // are rejected now, the NUL at its line and column.
-BOOST_AUTO_TEST_CASE(a_nul_byte_is_a_syntax_error, *utf::label("R4")) {
+BOOST_AUTO_TEST_CASE(a_nul_byte_is_a_syntax_error, *utf::label("scene")) {
     const SceneError with_nul = error_of(empty_scene + std::string("\0garbage", 8));
     BOOST_TEST(std::string(with_nul.what()).find("NUL byte") != std::string::npos);
     BOOST_TEST(with_nul.line == 1);
@@ -177,7 +177,7 @@ BOOST_AUTO_TEST_CASE(a_nul_byte_is_a_syntax_error, *utf::label("R4")) {
 
 // Oracle: docs/scene-format.md, Errors: a pointer is shown by its first and last six levels,
 // so 100 000 levels of nesting give a short message; the pointer member stays whole.
-BOOST_AUTO_TEST_CASE(deep_pointers_are_shortened_in_messages, *utf::label("R4")) {
+BOOST_AUTO_TEST_CASE(deep_pointers_are_shortened_in_messages, *utf::label("scene")) {
     const SceneError e = error_of(std::string(100000, '['));
     const std::string what = e.what();
     BOOST_TEST(what.size() < 160, what);
@@ -188,7 +188,7 @@ BOOST_AUTO_TEST_CASE(deep_pointers_are_shortened_in_messages, *utf::label("R4"))
 
 // Oracle: a message quotes a user's string escaped as JSON writes it (no raw control character
 // reaches a terminal or breaks the one-line format) and at most 64 bytes of it.
-BOOST_AUTO_TEST_CASE(quoted_user_text_is_escaped_and_short, *utf::label("R4")) {
+BOOST_AUTO_TEST_CASE(quoted_user_text_is_escaped_and_short, *utf::label("scene")) {
     const SceneError key =
         error_of(R"({"dt": 0.01, "steps": 1, "bodies": [], "a\nb\u0001\u001b[2J": 1})");
     const std::string what = key.what();
@@ -275,7 +275,7 @@ BOOST_AUTO_TEST_CASE(values_beyond_the_supported_range_are_named,
 // Oracle: RFC 8259 numbers and C++ [conv.fpint]: 9223372036854775808.0 is 2^63, which no long
 // long holds; it passed the range check because double(LLONG_MAX) is 2^63, and converted with
 // undefined behaviour. It is rejected now; the largest double below 2^63 is accepted.
-BOOST_AUTO_TEST_CASE(a_seed_of_2_to_the_63_is_rejected, *utf::label("R4")) {
+BOOST_AUTO_TEST_CASE(a_seed_of_2_to_the_63_is_rejected, *utf::label("scene")) {
     const auto rain = [](const std::string& seed) {
         return with_bodies(R"({"generator": "rain", "count": 2, "seed": )" + seed + "}");
     };
@@ -292,7 +292,7 @@ BOOST_AUTO_TEST_CASE(a_seed_of_2_to_the_63_is_rejected, *utf::label("R4")) {
 // Oracle: the rain generator's grid (docs/scene-format.md): in a container 1e10 m wide every box
 // has a column of its own, left to right at the pitch, inside the walls. The column count used
 // to be converted to int with undefined behaviour (in Release every box landed in one column).
-BOOST_AUTO_TEST_CASE(a_very_wide_rain_container_keeps_the_grid, *utf::label("R1")) {
+BOOST_AUTO_TEST_CASE(a_very_wide_rain_container_keeps_the_grid, *utf::label("scene")) {
     RainParams p;
     p.count = 50;
     p.container.width = 1e10;
@@ -339,7 +339,7 @@ BOOST_AUTO_TEST_CASE(a_self_crossing_outline_is_rejected,
 // and generated; the generator that passes the limit is refused, before a World is built. Two
 // pyramids of base 500 hold 2 (500 * 501 / 2 + 1) = 250 502 bodies (boxes and a ground each),
 // the count the message names; the first alone (125 251) is within the limit.
-BOOST_AUTO_TEST_CASE(bodies_beyond_the_scene_limit_are_refused, *utf::label("R4")) {
+BOOST_AUTO_TEST_CASE(bodies_beyond_the_scene_limit_are_refused, *utf::label("scene")) {
     const std::string pyramid = R"({"generator": "pyramid", "base": 500})";
     const std::string second = R"({"generator": "pyramid", "base": 500, "name": "other"})";
     const std::size_t one = 500 * 501 / 2 + 1;
@@ -354,7 +354,7 @@ BOOST_AUTO_TEST_CASE(bodies_beyond_the_scene_limit_are_refused, *utf::label("R4"
 // exceeds the limit, before its points are read. A hand-made Scene beyond the limit is
 // written with its excess chains segment by segment ("chain_segment", not counted), so its
 // written form loads and builds the same world (World::state_hash()).
-BOOST_AUTO_TEST_CASE(chain_points_beyond_the_limit_are_refused, *utf::label("R4")) {
+BOOST_AUTO_TEST_CASE(chain_points_beyond_the_limit_are_refused, *utf::label("scene")) {
     const auto chain = [](std::size_t n) {
         std::string pts;
         for (std::size_t i = 0; i < n; ++i)

@@ -65,7 +65,7 @@ BOOST_AUTO_TEST_CASE(multiples_of_two_pi, *utf::label("DCO_phi")) {
     }
 }
 
-// Oracle: analysis of -tiny + 2 pi. For 0 < t < ulp(2 pi) / 2 = 4.4e-16, -t + 2 pi rounds to
+// Oracle: hand derivation of -tiny + 2 pi. For 0 < t < ulp(2 pi) / 2 = 4.4e-16, -t + 2 pi rounds to
 // 2 pi itself, which is out of range: the result must be 0 (the nearest in-range angle on the
 // circle). For larger t it is the largest representable angle below 2 pi, still in range.
 // Subnormals, t = 1e-300, 1e-17, 4e-16, 1e-15, 1e-10 are all covered.

@@ -21,7 +21,7 @@ Vec2<Acceleration> A2(double x, double y) {
 
 /// v after n steps of h from v0 under a constant applied acceleration a at rate c.
 double integrate(double v0, double a, double c, double h, int n) {
-    const Dimensionless f = im5::decay_factor(c / second, h * second);
+    const Dimensionless f = im5::linear_decay_factor(c / second, h * second);
     Vec2<Velocity> v = V2(v0, 0.0);
     for (int k = 0; k < n; ++k)
         v = im5::velocity_step(v, A2(a, 0.0), h * second, f);
@@ -41,8 +41,20 @@ BOOST_AUTO_TEST_CASE(geometric_decay, *utf::label("IM5") * utf::label("LC2")) {
     BOOST_TEST(integrate(8.0, 0.0, 3.0, 0.1, 50) == expected,
                boost::test_tools::tolerance(100 * 2.2e-16));
     // c = 0 is A6's regime: the factor is exactly 1 and the step is IM1's.
-    BOOST_TEST(im5::decay_factor(0.0 / second, 0.01 * second).value() == 1.0);
+    BOOST_TEST(im5::linear_decay_factor(0.0 / second, 0.01 * second).value() == 1.0);
     BOOST_TEST(integrate(1.5, -9.81, 0.0, 0.25, 1) == 1.5 + (-9.81 * 0.25));
+}
+
+// Oracle: hand derivation. DD17's a_d = -c_v v and DD18's alpha_d = -c_omega omega are linear,
+// with slopes -c_v and -c_omega; backward Euler then scales by 1 / (1 + h c): c = 2 s^-1 over
+// h = 0.5 s gives exactly 1/2, c = 0.8 s^-1 over h = 1.25 s exactly 1/2 too.
+BOOST_AUTO_TEST_CASE(decay_factors_are_backward_euler_of_dd17_and_dd18,
+                     *utf::label("IM5") * utf::label("DD17") * utf::label("DD18")) {
+    BOOST_TEST(im5::linear_damping_slope(2.0 / second).value() == -2.0);
+    BOOST_TEST(im5::angular_damping_slope(0.8 / second).value() == -0.8);
+    BOOST_TEST(im5::linear_decay_factor(2.0 / second, 0.5 * second).value() == 0.5);
+    BOOST_TEST(im5::angular_decay_factor(0.8 / second, 1.25 * second).value() == 0.5);
+    BOOST_TEST(im5::angular_decay_factor(0.0 / second, 0.01 * second).value() == 1.0);
 }
 
 // Oracle: the exact solution of dv/dt = a - c v, v(t) = a/c + (v0 - a/c) e^(-c t). The scheme
@@ -90,7 +102,7 @@ BOOST_AUTO_TEST_CASE(step_solves_the_implicit_relation,
     const Vec2<Velocity> v = V2(2.5, -1.25);
     const Vec2<Acceleration> a = A2(0.75, -9.81);
     const Rate c = 3.0 / second;
-    const Vec2<Velocity> next = im5::velocity_step(v, a, h, im5::decay_factor(c, h));
+    const Vec2<Velocity> next = im5::velocity_step(v, a, h, im5::linear_decay_factor(c, h));
     const Vec2<Acceleration> total = im5::acceleration(a, c, next);
     BOOST_TEST((next.x - v.x).value() == (total.x * h).value(),
                boost::test_tools::tolerance(1e-12));
@@ -98,8 +110,9 @@ BOOST_AUTO_TEST_CASE(step_solves_the_implicit_relation,
                boost::test_tools::tolerance(1e-12));
 
     const AngularVelocity w = -4.0 * radian / second,
-                          w_next = im5::angular_velocity_step(w, 2.0 * radian / second / second, h,
-                                                              im5::decay_factor(0.8 / second, h));
+                          w_next = im5::angular_velocity_step(
+                              w, 2.0 * radian / second / second, h,
+                              im5::angular_decay_factor(0.8 / second, h));
     const AngularAcceleration alpha =
         im5::angular_acceleration(2.0 * radian / second / second, 0.8 / second, w_next);
     BOOST_TEST((w_next - w).value() == (alpha * h).value(), boost::test_tools::tolerance(1e-12));

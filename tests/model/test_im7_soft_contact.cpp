@@ -60,4 +60,82 @@ BOOST_AUTO_TEST_CASE(zero_frequency_is_rigid_and_the_cap_is_a_quarter_of_the_sub
                1e-12);
 }
 
+// Oracle: IM7's cases by hand, 240 substeps per second (1/h = 240 s^-1), bias rate 10 s^-1,
+// slop 0.005 m, v_push 3 m s^-1: a gap of 0.02 m closes at 0.02 x 240 = 4.8 m s^-1 (rigid
+// scales, soft or not); an overlap of 0.03 m is pushed out at 10 x (0.03 - 0.005) = 0.25 m s^-1
+// with the softness' scales, one of 1 m at the cap 3 m s^-1; the relax stops any overlap
+// (v* = 0, rigid). The joints' form from h itself: a gap of 0.5 rad over h = 0.25 s closes
+// at 2 rad s^-1.
+BOOST_AUTO_TEST_CASE(target_velocity_cases_by_hand, *utf::label("IM7")) {
+    const Rate inv_h = 240.0 / second, beta = 10.0 / second;
+    const Length slop = 0.005 * metre;
+    const Velocity push = 3.0 * metre / second;
+    const auto soft = [&](double s) {
+        return im7::target_velocity<true>(s * metre, inv_h, beta, 0.4, 0.3, slop, push);
+    };
+    const auto rigid = [&](double s) {
+        return im7::target_velocity<false>(s * metre, inv_h, beta, 0.4, 0.3, slop, push);
+    };
+    for (const auto& t : {soft(0.02), rigid(0.02)}) {
+        BOOST_TEST(t.velocity.value() == -4.8, boost::test_tools::tolerance(1e-15));
+        BOOST_TEST(t.mass_scale == 1.0);
+        BOOST_TEST(t.impulse_scale == 0.0);
+    }
+    const auto pushed = soft(-0.03);
+    BOOST_TEST(pushed.velocity.value() == 0.25, boost::test_tools::tolerance(1e-14));
+    BOOST_TEST(pushed.mass_scale == 0.4);
+    BOOST_TEST(pushed.impulse_scale == 0.3);
+    BOOST_TEST(soft(-1.0).velocity.value() == 3.0);
+    BOOST_TEST(soft(-0.004).velocity.value() == 0.0); // within the slop: no push
+    const auto held = rigid(-0.03);
+    BOOST_TEST(held.velocity.value() == 0.0);
+    BOOST_TEST(held.mass_scale == 1.0);
+    BOOST_TEST(held.impulse_scale == 0.0);
+    BOOST_TEST(im7::closing_velocity(0.5 * radian, 0.25 * second).value() == -2.0);
+}
+
+namespace {
+/// K = [k11 k12; k12 k22] (kg^-1) as IM7's pair takes it, with its inverse.
+im7::PairMass<double> pair_mass(double k11, double k12, double k22) {
+    const double det = k11 * k22 - k12 * k12;
+    return {k11 / kilogram,         k12 / kilogram,          k22 / kilogram,
+            (k22 / det) * kilogram, (-k12 / det) * kilogram, (k11 / det) * kilogram};
+}
+} // namespace
+
+// Oracle: the linear complementarity conditions themselves, checked on the result: x >= 0,
+// w = K x + b >= 0 and x_i w_i = 0 (to round-off), where b = v - t - K x_acc, for 2000 random
+// positive definite K, velocities, targets and accumulated impulses, among which each of the
+// four cases (both points pushed, only the first, only the second, neither) comes up.
+BOOST_AUTO_TEST_CASE(two_point_impulses_solve_the_complementarity_problem,
+                     *utf::label("IM7") * utf::label("LC1")) {
+    std::mt19937_64 g(7);
+    auto u = [&](double lo, double hi) { return lo + (hi - lo) * double(g() >> 11) * 0x1.0p-53; };
+    int cases[4] = {0, 0, 0, 0};
+    for (int i = 0; i < 2000; ++i) {
+        const double k11 = u(0.1, 3.0), k22 = u(0.1, 3.0);
+        const double k12 = u(-0.9, 0.9) * std::sqrt(k11 * k22);
+        const double v1 = u(-3.0, 3.0), v2 = u(-3.0, 3.0), t1 = u(-1.0, 1.0), t2 = u(-1.0, 1.0);
+        const double a1 = u(0.0, 2.0), a2 = u(0.0, 2.0);
+        const auto K = pair_mass(k11, k12, k22);
+        const auto x = im7::two_point_impulses(
+            K, (1.0 / k11) * kilogram, (1.0 / k22) * kilogram, v1 * metre / second,
+            v2 * metre / second, t1 * metre / second, t2 * metre / second,
+            a1 * kilogram * metre / second, a2 * kilogram * metre / second);
+        const double x1 = x.x1.value(), x2 = x.x2.value();
+        const double b1 = v1 - t1 - (k11 * a1 + k12 * a2), b2 = v2 - t2 - (k12 * a1 + k22 * a2);
+        const double w1 = k11 * x1 + k12 * x2 + b1, w2 = k12 * x1 + k22 * x2 + b2;
+        const double tol = 1e-12 * (1.0 + std::abs(b1) + std::abs(b2)) * (1.0 + x1 + x2);
+        BOOST_TEST(x1 >= 0.0);
+        BOOST_TEST(x2 >= 0.0);
+        BOOST_TEST(w1 >= -tol);
+        BOOST_TEST(w2 >= -tol);
+        BOOST_TEST(std::abs(x1 * w1) <= tol);
+        BOOST_TEST(std::abs(x2 * w2) <= tol);
+        ++cases[(x1 > 0.0 ? 1 : 0) + (x2 > 0.0 ? 2 : 0)];
+    }
+    for (int c = 0; c < 4; ++c)
+        BOOST_TEST(cases[c] > 50, "case " << c << " drawn " << cases[c] << " times");
+}
+
 BOOST_AUTO_TEST_SUITE_END()

@@ -312,7 +312,8 @@ BOOST_AUTO_TEST_CASE(double_pendulum_follows_the_reference,
                            nominal);
 }
 
-// Oracle: as the double pendulum, for a chain of five pinned boxes released at 45 degrees.
+// Oracle: as double_pendulum_follows_the_reference, for a chain of five pinned boxes released
+// at 45 degrees.
 BOOST_AUTO_TEST_CASE(five_link_chain_follows_the_reference,
                      *utf::label("DD19") * utf::label("IM6") * utf::label("LC3")) {
     const ChainReference ref = reference_of(five_links);

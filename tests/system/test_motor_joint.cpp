@@ -50,10 +50,10 @@ BOOST_AUTO_TEST_CASE(drives_with_its_force_and_torque_limits,
     }
 }
 
-// Oracle: the target pose. With limits that do not bind, each substep asks for the velocity
-// that removes the share c of the pose error, so the error decays geometrically, as (1 - c)
-// per substep: after 1 s (240 substeps, c = 0.3) the box sits on the target pose to 1e-9,
-// whatever pose the reference body has (here moved and turned).
+// Oracle: closed form of the target pose's approach. With limits that do not bind, each substep
+// asks for the velocity that removes the share c of the pose error, so the error decays
+// geometrically, as (1 - c) per substep: after 1 s (240 substeps, c = 0.3) the box sits on the
+// target pose to 1e-9, whatever pose the reference body has (here moved and turned).
 BOOST_AUTO_TEST_CASE(settles_on_the_target_pose,
                      *utf::label("DD26") * utf::label("IM6") * utf::label("LC3")) {
     World world(WorldDef{.gravity = {0.0, 0.0}, .enable_sleep = false});

@@ -80,11 +80,12 @@ void check_spins(const std::vector<Spin>& spins, double dt, int steps) {
 
 } // namespace
 
-// Oracle: closed form of IM2 with constant alpha = tau / I (T4): omega = omega0 + alpha t,
-// phi = phi0 + omega0 t + alpha t^2 / 2 (+ the scheme's alpha h t / 2); counter-clockwise and
-// clockwise torques, from rest, against an initial spin, and while translating.
+// Oracle: closed form of IM2 with constant alpha = tau / I (T4): omega = omega0 + alpha t (the
+// change alpha dt of every step, DD7, summed), phi = phi0 + omega0 t + alpha t^2 / 2 (+ the
+// scheme's alpha h t / 2); counter-clockwise and clockwise torques, from rest, against an
+// initial spin, and while translating.
 BOOST_AUTO_TEST_CASE(TC8_rotation_under_constant_torque, *utf::label("R6") * utf::label("IM2") *
-                                                             utf::label("T4") *
+                                                             utf::label("T4") * utf::label("DD7") *
                                                              utf::label("DCO_phi")) {
     check_spins({{0.0, 0.0, 2.0, {0.0, 0.0}},
                  {0.0, 0.0, -2.0, {0.0, 0.0}},
@@ -94,10 +95,11 @@ BOOST_AUTO_TEST_CASE(TC8_rotation_under_constant_torque, *utf::label("R6") * utf
                 1.0 / 60.0, 300);
 }
 
-// Oracle: closed form of IM2 with alpha = 0: phi(t) = phi0 + omega t, omega constant (exact for
-// the scheme), wrapped into [0, 2 pi); slow and fast (20 rad/s: many turns) in both senses.
-BOOST_AUTO_TEST_CASE(TC9_constant_angular_velocity,
-                     *utf::label("R6") * utf::label("IM2") * utf::label("DCO_phi")) {
+// Oracle: closed form of IM2 with alpha = 0: phi(t) = phi0 + omega t (the turn omega dt of every
+// step, DD6, summed), omega constant (exact for the scheme), wrapped into [0, 2 pi); slow and
+// fast (20 rad/s: many turns) in both senses.
+BOOST_AUTO_TEST_CASE(TC9_constant_angular_velocity, *utf::label("R6") * utf::label("IM2") *
+                                                        utf::label("DD6") * utf::label("DCO_phi")) {
     check_spins({{0.0, 3.0, 0.0, {0.0, 0.0}},
                  {0.0, -3.0, 0.0, {0.0, 0.0}},
                  {2.0, 20.0, 0.0, {0.0, 1.5}},

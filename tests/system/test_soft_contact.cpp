@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 
 #include "properties/random_scenes.hpp"
@@ -36,6 +37,42 @@ struct Tally {
 } // namespace
 
 BOOST_AUTO_TEST_SUITE(soft_contact)
+
+namespace {
+/// A box dropped into the ground (overlapping it by 5 cm) beside a pendulum, stepped 120 times
+/// at dt = 1/64 s with 4 substeps (the cap n / (4 dt) is 64 Hz exactly); the final state hash.
+std::uint64_t capped_scene(double contact_hertz, double joint_hertz) {
+    const double dt = 1.0 / 64.0;
+    World world(WorldDef{.contact_hertz = contact_hertz, .joint_hertz = joint_hertz});
+    BodyDef ground_def;
+    ground_def.type = BodyType::static_body;
+    const BodyId ground = world.create_body(ground_def);
+    world.create_shape(ground, box_shape(20.0, 1.0));
+    BodyDef box_def;
+    box_def.position = {0.0, 0.95};
+    const BodyId box = world.create_body(box_def);
+    world.create_shape(box, box_shape(1.0, 1.0));
+    BodyDef bob_def;
+    bob_def.position = {5.0, 3.0};
+    const BodyId bob = world.create_body(bob_def);
+    world.create_shape(bob, circle_shape(0.25));
+    world.create_joint(RevoluteJointDef{.body_a = ground, .body_b = bob, .anchor = {4.0, 3.0}});
+    for (int k = 0; k < 120; ++k)
+        world.step(dt);
+    return world.state_hash();
+}
+} // namespace
+
+// Oracle: IM7's and IM6's frequency omega = 2 pi min(f, n / (4 dt)): a stiffness asked above
+// the cap (64 Hz here) behaves exactly as the cap itself, bit for bit, for the contacts and for
+// the joints; one asked below it is used as asked (a different state: the test is not vacuous).
+BOOST_AUTO_TEST_CASE(stiffness_above_the_cap_is_the_cap, *utf::label("IM7") * utf::label("IM6")) {
+    const std::uint64_t capped = capped_scene(64.0, 64.0);
+    BOOST_TEST(capped_scene(1.0e4, 64.0) == capped);
+    BOOST_TEST(capped_scene(64.0, 1.0e4) == capped);
+    BOOST_TEST(capped_scene(30.0, 64.0) != capped);
+    BOOST_TEST(capped_scene(64.0, 30.0) != capped);
+}
 
 // Oracle: IM3's closed form written here from the SRS text: j = -(1 + C_R) v_n / K with
 // K = 1/m_A + 1/m_B + (r_AP x n)^2 / I_A + (r_BP x n)^2 / I_B (DD8; 1/m = 1/I = 0 for a static

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "system/damped_oscillator.hpp"
 #include "system/system_support.hpp"
@@ -71,6 +72,27 @@ BOOST_AUTO_TEST_CASE(suspension_is_a_damped_oscillator,
     BOOST_TEST(e240 / e480 >= 1.8);
     BOOST_TEST(side240 <= 1e-12);
     BOOST_TEST(side480 <= 1e-12);
+}
+
+// Oracle: IM6's soft constraint is a spring of the joints' frequency f_J (WorldDef::joint_hertz)
+// on the effective mass across the line: under a constant sideways acceleration g_x its
+// equilibrium line error is g_x / omega_J^2 (omega_J = 2 pi f_J), and from rest, damped
+// (joint_damping_ratio 2), it never exceeds that. The wheel, pulled sideways by gravity's x
+// component while its suspension sags, stays within twice that of its line over 2 s.
+BOOST_AUTO_TEST_CASE(wheel_holds_its_line_against_a_sideways_load,
+                     *utf::label("DD25") * utf::label("IM6") * utf::label("LC3")) {
+    const double gx = -2.0, dt = 1.0 / 240.0;
+    Wheel w({gx, -g}, WheelJointDef{.hertz = 2.0, .damping_ratio = 0.3});
+    const double omega = 2.0 * std::numbers::pi * WorldDef{}.joint_hertz;
+    const double bound = 2.0 * std::abs(gx) / (omega * omega);
+    double sideways = 0.0;
+    for (int k = 1; k <= 480; ++k) {
+        w.world.step(dt);
+        sideways = std::max(sideways, std::abs(w.world.position(w.wheel).x));
+    }
+    BOOST_TEST_MESSAGE("wheel off its line: at most " << sideways << " m (bound " << bound << ")");
+    BOOST_TEST(sideways <= bound);
+    BOOST_TEST(w.world.joint_translation(w.joint) < -0.01); // it sags meanwhile
 }
 
 // Oracle: T4 with the motor's torque limit. The wheel's motor, asked for 10 rad/s with at most

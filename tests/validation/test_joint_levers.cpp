@@ -51,6 +51,8 @@ bool finite(const World& w, BodyId b) {
 
 BOOST_AUTO_TEST_SUITE(joint_levers)
 
+// Oracle: DCX_joint's stated rule (srs/data_constraints.yaml): an anchor's lever over the
+// body's radius of gyration is bounded, and a refused joint leaves the world unchanged.
 // F1: the fuzzer's circle (r = 1.468 m, k = r / sqrt(2)) pinned at (3e8, -8), |r| / k = 4e8:
 // without the rule, NaN after one step under g = 8.8e10 m s^-2 (under 10 m s^-2 this geometry
 // happened to stay finite, with no digit of the pin's solve left).
@@ -82,6 +84,7 @@ BOOST_AUTO_TEST_CASE(a_far_anchor_is_refused, *utf::label("R4") * utf::label("DC
                                               .anchor_b = {c.x + 0.9999e5 * k, c.y}}));
 }
 
+// Oracle: DCX_joint's stated rule, checked again at the step (as a_shapeless_jointed_body...).
 // F1 after the joint: the centre of mass moves when a shape comes or goes (API seed 20287469
 // reached it with a circle centred 3e8 m off). Here a second disc 3e8 m off makes a dumbbell whose
 // radius of gyration is as long as its anchor's lever (accepted); with the first disc destroyed
@@ -100,6 +103,8 @@ BOOST_AUTO_TEST_CASE(an_anchor_made_far_by_a_shape_refuses_the_step,
         p.world, [&] { p.world.step(1.0 / 60.0); }, "joint[0].anchor (on body[1])", "DCX_joint");
 }
 
+// Oracle: DCX_joint's stated rule: the radius of gyration k = sqrt(I / m) against the anchor's
+// lever, here k from the inertia override.
 // F2: API seed 20264405, a body of 3.45e8 kg with an inertia override of 1e-13 kg m^2
 // (k = 1.7e-11 m) pinned about 20 m from its centre by two revolute joints: without the rule,
 // NaN after one step. A circle of radius 1e-12 m as a ragdoll's head (scene seeds 50007199,
@@ -140,6 +145,8 @@ BOOST_AUTO_TEST_CASE(a_tiny_radius_of_gyration_is_refused,
         RevoluteJointDef{.body_a = other, .body_b = b, .anchor = {-18.85, 9.41}}));
 }
 
+// Oracle: DCX_joint's stated rule, checked again at the step: a joint whose lever became too
+// long for its body's radius of gyration refuses the step, naming the anchor, world unchanged.
 // F3's seeds 20275047 (g = 8.8e10) and 20280323 (dt = 8.5 s), and F1's 20287469: the joint was
 // made on a shapeless body, which does not turn (no lever applies), and a circle centred far off,
 // added later, made it turn about a centre of mass far from the anchor (2.8e11 radii of gyration
@@ -157,6 +164,8 @@ BOOST_AUTO_TEST_CASE(a_shapeless_jointed_body_given_a_far_shape_refuses_the_step
         p.world, [&] { p.world.step(1.0 / 60.0); }, "joint[0].anchor (on body[2])", "DCX_joint");
 }
 
+// Oracle: DCX_range's stated bound (docs/design.md, "Supported ranges"): every accepted state
+// is finite, and a step that would leave the supported range is refused.
 // F3's load itself: a 1 m circle pinned 16 m from its centre under g = 1e7, 8.8e10 and 1e9 m s^-2,
 // and under g = 10 with steps of 8.5 s. The joint stretches (a soft joint's physics), but every
 // state stays finite or the step is refused at a state beyond the supported range.

@@ -308,7 +308,8 @@ BOOST_AUTO_TEST_CASE(setters_beyond_the_range_are_rejected,
     BOOST_CHECK_NO_THROW(w.apply_force(m.ball, {big, 0.0}, {0.0, big}));
 }
 
-// Oracle: the one-step loads add up until the next step: their sum is held within the state's
+// Oracle: DCX_range's stated bound (docs/design.md, "Supported ranges"): the one-step loads add
+// up until the next step: their sum is held within the state's
 // headroom (1e24), and an impulse that would take a light body beyond it is refused; both
 // leave the world unchanged, the impulse's body not even woken.
 BOOST_AUTO_TEST_CASE(accumulated_loads_and_impulses_stay_within_the_headroom,

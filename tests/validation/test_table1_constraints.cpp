@@ -70,8 +70,8 @@ BOOST_AUTO_TEST_CASE(non_positive_lengths_are_rejected,
     for (const double L : {0.0, -0.0, -1e-300, -44.2}) {
         BOOST_TEST_CONTEXT("L = " << L) {
             // The shape factories reject it before any world is involved ...
-            expect_validation_error([&] { (void)box_shape(L, 1.0); }, "width", "DCX_shape");
-            expect_validation_error([&] { (void)box_shape(1.0, L); }, "height", "DCX_shape");
+            expect_validation_error([&] { (void)box_shape(L, 1.0); }, "shape.width", "DCX_shape");
+            expect_validation_error([&] { (void)box_shape(1.0, L); }, "shape.height", "DCX_shape");
             expect_validation_error([&] { (void)circle_shape(L); }, "radius", "DCX_shape");
             // ... and the world rejects a hand-made shape that bypassed them.
             ShapeDef bad;

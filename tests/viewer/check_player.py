@@ -18,7 +18,10 @@ and checks that:
     rows of the same steps to within half a quantisation step;
   * a screenshot shows the scene: at the projected centre of sampled bodies, the pixels differ
     from the canvas background (at frame 0 and at the middle frame, whose screenshot is kept
-    as DIR/NAME.png).
+    as DIR/NAME.png);
+  * the page marks itself decoded (data-tamias-player="ready" on <html>), and, on the first
+    page, docs/viewer.md's screenshot recipe (chromium --screenshot with a virtual-time budget)
+    waits for the decoding: the DOM it dumps says "ready" and its canvas is drawn.
 
 Exit status: 0 when every check passes, 1 when one fails, 77 when Chromium is not installed
 (CTest's SKIP_RETURN_CODE; the pages are still written), 2 for a bad command line.
@@ -32,6 +35,7 @@ import io
 import json
 import math
 import os
+import re
 import select
 import shutil
 import subprocess
@@ -203,6 +207,46 @@ def page_summary(page):
             "joints": len(data["joints"]), "description": data["description"]}
 
 
+# docs/viewer.md's screenshot recipe ("A screenshot of a page"): Chromium's own --screenshot,
+# with a virtual-time budget so that it runs the page's decoding before it captures.
+RECIPE_FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
+                "--disable-background-networking", "--disable-component-update", "--disable-sync",
+                "--hide-scrollbars", f"--window-size={WIDTH},{HEIGHT}", "--virtual-time-budget=5000"]
+
+
+def check_recipe(chromium, page, work, frame, background, label):
+    """The recipe on `page` at `frame`: the DOM Chromium dumps with the same flags says the run
+    is decoded, and the screenshot's canvas is drawn: over 1 % of its pixels differ from the
+    background (a page still decoding shows the background and one line of text, 0.1 %)."""
+    from PIL import Image
+    url = page.resolve().as_uri() + f"#frame={frame}"
+    shot = work / "recipe.png"
+    outputs = {}
+    for mode in ("--dump-dom", f"--screenshot={shot}"):
+        profile = Path(tempfile.mkdtemp(prefix="profile-", dir=work))
+        try:
+            run = subprocess.run([chromium, *RECIPE_FLAGS, f"--user-data-dir={profile}", mode, url],
+                                 capture_output=True, text=True, timeout=120)
+        finally:
+            shutil.rmtree(profile, ignore_errors=True)
+        if run.returncode != 0:
+            raise AssertionError(f"{label}: recipe: chromium {mode} failed: {run.stderr.strip()[-300:]}")
+        outputs[mode] = run.stdout
+    status = re.search(r'<html[^>]*data-tamias-player="([a-z]*)"', outputs["--dump-dom"])
+    if not status or status.group(1) != "ready":
+        raise AssertionError(f"{label}: recipe: the page is "
+                             f"{status.group(1) if status else 'without its status'} when captured")
+    image = Image.open(shot).convert("RGB")
+    if image.size != (WIDTH, HEIGHT):
+        raise AssertionError(f"{label}: recipe: a {image.size} screenshot, expected {(WIDTH, HEIGHT)}")
+    stage = [image.getpixel((x, y)) for x in range(0, int(0.7 * WIDTH), 3)
+             for y in range(int(0.1 * HEIGHT), HEIGHT, 3)]
+    drawn = sum(1 for p in stage if p != background) / len(stage)
+    if drawn <= 0.01:
+        raise AssertionError(f"{label}: recipe: {100 * drawn:.2f} % of the canvas drawn: not decoded?")
+    return f"the screenshot recipe captures it decoded ({100 * drawn:.0f} % of the canvas drawn)"
+
+
 def hex_rgb(colour):
     return tuple(int(colour[i:i + 2], 16) for i in (1, 3, 5))
 
@@ -327,6 +371,9 @@ def check_page(browser, page, csv_path, shot_path, label):
         if time.monotonic() > deadline:
             raise AssertionError(f"{label}: the player was not ready after 60 s")
         time.sleep(0.05)
+    marker = browser.evaluate("document.documentElement.dataset.tamiasPlayer")
+    if marker != "ready":
+        raise AssertionError(f"{label}: ready, but <html data-tamias-player> is {marker!r}")
     frames_csv = read_csv(csv_path)
     quantum = browser.evaluate("tamiasPlayer.quantum")
     background = hex_rgb(browser.evaluate("tamiasPlayer.background"))
@@ -360,7 +407,8 @@ def check_page(browser, page, csv_path, shot_path, label):
     errors = page_errors(browser)
     if errors:
         raise AssertionError(f"{label}: " + "; ".join(errors[:5]))
-    return (f"{count} frames, {compared} states within half a quantum (worst {worst:.2f} of it), "
+    return (count, background,
+            f"{count} frames, {compared} states within half a quantum (worst {worst:.2f} of it), "
             f"{drawn} bodies seen in 2 screenshots, played to frame {played}, {interaction}")
 
 
@@ -379,6 +427,7 @@ def main():
     chromium = find_chromium(args.chromium)
     browser = None
     failures, entries = 0, []
+    recipe_checked = False
     try:
         for case in args.cases:
             scene, options = split_case(case)
@@ -422,7 +471,10 @@ def main():
                     profile.mkdir(exist_ok=True)
                     browser = Browser(chromium, str(profile))
                     browser.open_page()
-                summary = check_page(browser, page, csv_path, shot, name)
+                count, background, summary = check_page(browser, page, csv_path, shot, name)
+                if not recipe_checked:
+                    summary += "; " + check_recipe(chromium, page, work, count // 2, background, name)
+                    recipe_checked = True
                 entry["result"] = "OK: " + summary
                 if shot:
                     entry["screenshot"] = shot.name

@@ -12,11 +12,6 @@ same scene (the CSV's numbers are shortest round-trip text: they read back as th
 doubles). A difference is reported precisely (step, body, value, both doubles in hex, their
 distance in ulps) and fails the check.
 
---musl-trig runs the native CLI with musl's sin, cos and sincos (the libm emscripten compiles
-into the module: emscripten's copy of its sources, built with gcc into a library loaded with
-LD_PRELOAD) in place of glibc's. The step calls no other function that IEEE 754 does not round
-exactly (sqrt and fmod are exact), so with it every scene should be bitwise equal.
-
 Then, on pyramid20: the page requests nothing but itself, raises no script error, runs when
 played, drops a box where a click falls, pulls a body with the mouse (a target joint: the body
 moves towards the cursor), follows a change of gravity, and a screenshot shows the bodies (the
@@ -30,7 +25,6 @@ from __future__ import annotations
 import argparse
 import csv
 import os
-import re
 import struct
 import subprocess
 import sys
@@ -61,54 +55,6 @@ def ulps(a: float, b: float) -> int:
 
 def hexd(v: float) -> str:
     return f"{bits(v) & 0xFFFFFFFFFFFFFFFF:016x}"
-
-
-MUSL = Path("/usr/share/emscripten/system/lib/libc/musl")
-MUSL_TRIG = ("sin", "cos", "sincos", "__sin", "__cos", "__rem_pio2", "__rem_pio2_large")
-
-
-def musl_trig_cli(cli, work):
-    """A wrapper of `cli` that runs it with musl's sin, cos and sincos (see the docstring)."""
-    src = work / "musl"
-    src.mkdir()
-    # musl's kernels __sin and __cos share their names with glibc's declarations in math.h.
-    rename = lambda text: re.sub(r"\b__(sin|cos|tan)(l?)\b", r"musl_k_\1\2", text)  # noqa: E731
-    (src / "libm.h").write_text(rename((MUSL / "src/internal/libm.h").read_text()))
-    objects = []
-    for name in MUSL_TRIG:
-        c = src / f"{name}.c"
-        c.write_text(rename((MUSL / f"src/math/{name}.c").read_text()))
-        objects.append(src / f"{name}.o")
-        subprocess.run(["gcc", "-O2", "-fPIC", "-ffp-contract=off", "-fno-builtin",
-                        "-Dhidden=__attribute__((visibility(\"hidden\")))", f"-I{src}",
-                        f"-I{MUSL / 'arch/generic'}", "-c", str(c), "-o", str(objects[-1])], check=True)
-    lib = work / "musl_trig.so"
-    subprocess.run(["gcc", "-shared", "-o", str(lib), *map(str, objects), "-lm"], check=True)
-    # How often the two libms differ: 10^6 arguments spread over [0, 2 pi).
-    rate = work / "rate.c"
-    rate.write_text(r"""#include <dlfcn.h>
-#include <math.h>
-#include <stdio.h>
-int main(int argc, char** argv) {
-    void* h = dlopen(argv[1], RTLD_NOW | RTLD_LOCAL);
-    double (*s)(double) = (double (*)(double))dlsym(h, "sin");
-    double (*c)(double) = (double (*)(double))dlsym(h, "cos");
-    long n = 1000000, ds = 0, dc = 0;
-    for (long i = 0; i < n; i++) {
-        volatile double x = (i + 0.5) * (6.283185307179586 / n);
-        ds += sin(x) != s(x);
-        dc += cos(x) != c(x);
-    }
-    printf("glibc and musl differ in sin for %ld and in cos for %ld of %ld arguments in [0, 2 pi)\n", ds, dc, n);
-    return 0;
-}
-""")
-    subprocess.run(["gcc", "-O2", "-fno-builtin", str(rate), "-o", str(work / "rate"), "-ldl", "-lm"], check=True)
-    print(subprocess.run([str(work / "rate"), str(lib)], check=True, capture_output=True, text=True).stdout.strip())
-    wrapper = work / "tamias2d-musl-trig"
-    wrapper.write_text(f"#!/bin/sh\nLD_PRELOAD={lib} exec {Path(cli).resolve()} \"$@\"\n")
-    wrapper.chmod(0o755)
-    return str(wrapper)
 
 
 def native_frames(cli, scene, steps, every, work):
@@ -256,8 +202,6 @@ def main():
     ap.add_argument("--page", default=str(ROOT / "build-wasm" / "sandbox.html"))
     ap.add_argument("--shot", help="keep the screenshot as this PNG")
     ap.add_argument("--chromium", help="the browser (default: /usr/bin/chromium, then PATH)")
-    ap.add_argument("--musl-trig", action="store_true",
-                    help="run the native CLI with musl's sin and cos (emscripten's libm) instead of glibc's")
     ap.add_argument("cases", nargs="*", default=["pyramid20.json:120:20"],
                     help="scene.json:STEPS:EVERY, an example scene")
     args = ap.parse_args()
@@ -281,11 +225,6 @@ def main():
         work = Path(tmp)
         (work / "profile").mkdir()
         cli = args.cli
-        if args.musl_trig:
-            if not MUSL.is_dir():
-                print(f"check_sandbox: {MUSL} is missing (Debian package 'emscripten'): not checked")
-                return SKIP
-            cli = musl_trig_cli(cli, work)
         browser = Browser(chromium, str(work / "profile"))
         try:
             browser.open_page()

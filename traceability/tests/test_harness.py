@@ -214,7 +214,7 @@ class FixtureReport(unittest.TestCase):
             self.assertIn(needle, page)
         self.assertNotIn("<link ", page)  # self-contained: no external stylesheet
         self.assertTrue(os.path.exists(os.path.join(self.out, "traceability.md")))
-        self.assertEqual(self.report["schema_version"], "1.2")
+        self.assertEqual(self.report["schema_version"], "1.3")
         self.assertTrue(os.path.exists(os.path.join(self.out, "plots", "peer_compare__Error_vs_step_size.svg")))
         self.assertEqual(self.report["coverage"]["totals"]["line_percent"], 80.0)
         if HAVE_DOT:
@@ -554,9 +554,44 @@ class Units(unittest.TestCase):
             {"without_tests": {"A1": {"status": "assumed", "reason": "r"},
                                "A9": {"status": "assumed", "reason": "r"},
                                "UC1": {"status": "untested", "reason": "r"},
-                               "UC2": {"status": "not testable"}}}, {"A1", "UC1", "UC2"}, warnings)
-        self.assertEqual(got, {"A1": {"status": "assumed", "reason": "r"}})
+                               "UC3": {"status": "verified", "reason": "r"},
+                               "UC2": {"status": "not testable"}}}, {"A1", "UC1", "UC2", "UC3"},
+            warnings)
+        # "untested" may carry its reason (a test not yet run); a status no test gave may not.
+        self.assertEqual(got, {"A1": {"status": "assumed", "reason": "r"},
+                               "UC1": {"status": "untested", "reason": "r"}})
         self.assertEqual(len(warnings), 3)
+        self.assertEqual(analysis.item_status([], [], "NFR", "untested"), "untested")
+
+    def test_link_grades(self):
+        # Oracle: the rules stated in traceability/links.py's docstring, case by case.
+        from traceability import links
+        r1, dd8 = {"kind": "R"}, {"kind": "DD"}
+        model = {"origin": "boost", "file": "tests/model/test_dd08.cpp", "oracle": "closed form",
+                 "oracle_kinds": ["closed form"]}
+        world = dict(model, file="tests/system/test_collisions.cpp")
+        golden = dict(world, oracle="golden hashes", oracle_kinds=["regression"])
+        peer = dict(world, oracle="Chipmunk 7", oracle_kinds=["peer"])
+        mute = dict(world, oracle=None, oracle_kinds=["unstated"])
+        cli = {"origin": "ctest", "file": "apps/cli/CMakeLists.txt", "labels": ["R1"],
+               "oracle": "the scene's bodies, a hand count", "oracle_kinds": ["stated rule"]}
+        self.assertEqual(links.grade(dd8, model)[0], "strong")
+        self.assertEqual(links.grade(r1, world)[0], "strong")
+        grade, reasons, facts = links.grade(r1, model)
+        self.assertEqual((grade, facts["level"]), ("weak", "model"))
+        self.assertIn("model alone", reasons[0])
+        self.assertEqual(links.grade(dd8, golden)[0], "weak")
+        self.assertEqual(links.grade(dd8, peer)[0], "weak")
+        self.assertEqual(links.grade({"kind": "NFR"}, peer, peer_reference=True)[0], "strong")
+        self.assertEqual(links.grade(dd8, mute)[1], ["states no oracle"])
+        self.assertEqual(links.level_of(cli), "command")
+        pool = [{"item": f"DD{i}", "test": f"t{i}"} for i in range(100)]
+        first = links.sample(pool, 30, "abc")
+        self.assertEqual(first, links.sample(list(reversed(pool)), 30, "abc"))
+        self.assertNotEqual(first, links.sample(pool, 30, "abd"))
+        # A link's draw does not depend on the others: drop one unsampled link, same sample.
+        rest = [ln for ln in pool if ln not in first]
+        self.assertEqual(first, links.sample(first + rest[1:], 30, "abc"))
 
     def test_labelled_test_without_oracle_is_weak_evidence(self):
         # Oracle: the rule stated in docs/traceability.md: an SRS-labelled test that states no

@@ -51,8 +51,8 @@ void corners(const BoxPart& p, V2 out[4]) {
 class TamiasEngine final : public Engine {
   public:
     explicit TamiasEngine(const SceneDesc& s, int workers = 1, double manifold_reuse = -1.0,
-                          int regions = 1)
-        : dt_(s.dt), world_(world_def(s, workers, manifold_reuse, regions)) {
+                          int regions = 1, int substeps = 0)
+        : dt_(s.dt), world_(world_def(s, workers, manifold_reuse, regions, substeps)) {
         ids_.reserve(s.bodies.size());
         for (const BodyDesc& d : s.bodies) {
             tamias2d::BodyDef bd;
@@ -90,8 +90,10 @@ class TamiasEngine final : public Engine {
 
   private:
     static tamias2d::WorldDef world_def(const SceneDesc& s, int workers, double manifold_reuse,
-                                        int regions) {
+                                        int regions, int substeps) {
         tamias2d::WorldDef def;
+        if (substeps > 0) // the work-precision sweep; otherwise the default
+            def.substeps = substeps;
         def.workers = workers;     // 1 in the peer benchmark: every engine on one thread
         if (manifold_reuse >= 0.0) // tamias_thread_bench's A/B; otherwise the default
             def.manifold_reuse_distance = manifold_reuse;
@@ -108,8 +110,9 @@ class TamiasEngine final : public Engine {
 // ------------------------------------------------------------------------------ Chipmunk 7
 class ChipmunkEngine final : public Engine {
   public:
-    explicit ChipmunkEngine(const SceneDesc& s) : dt_(s.dt), space_(cpSpaceNew()) {
-        cpSpaceSetIterations(space_, 10);
+    explicit ChipmunkEngine(const SceneDesc& s, int iterations = 0)
+        : dt_(s.dt), space_(cpSpaceNew()) {
+        cpSpaceSetIterations(space_, iterations > 0 ? iterations : 10);
         cpSpaceSetGravity(space_, cpv(s.gravity.x, s.gravity.y));
         // Sleeping is off by default (sleep time threshold INFINITY); slop and bias as shipped.
         if (s.sleep)
@@ -199,8 +202,11 @@ float f32(double x) {
 
 class Box2DEngine final : public Engine {
   public:
-    explicit Box2DEngine(const SceneDesc& s)
-        : dt_(f32(s.dt)), world_(b2Vec2(f32(s.gravity.x), f32(s.gravity.y))) {
+    explicit Box2DEngine(const SceneDesc& s, int velocity_iterations = 0,
+                         int position_iterations = 0)
+        : dt_(f32(s.dt)), velocity_iterations_(velocity_iterations > 0 ? velocity_iterations : 8),
+          position_iterations_(position_iterations > 0 ? position_iterations : 3),
+          world_(b2Vec2(f32(s.gravity.x), f32(s.gravity.y))) {
         world_.SetAllowSleeping(s.sleep); // b2_timeToSleep is 0.5 s
         bodies_.reserve(s.bodies.size());
         for (const BodyDesc& d : s.bodies) {
@@ -238,7 +244,7 @@ class Box2DEngine final : public Engine {
             world_.CreateJoint(&jd);
         }
     }
-    void step() override { world_.Step(dt_, 8, 3); }
+    void step() override { world_.Step(dt_, velocity_iterations_, position_iterations_); }
     Probe probe(int i) const override {
         const b2Body* b = bodies_[std::size_t(i)];
         const b2Vec2 p = b->GetPosition(), v = b->GetLinearVelocity();
@@ -247,6 +253,7 @@ class Box2DEngine final : public Engine {
 
   private:
     float dt_;
+    int velocity_iterations_, position_iterations_;
     b2World world_;
     std::vector<b2Body*> bodies_;
 };
@@ -258,14 +265,14 @@ std::unique_ptr<Engine> make_tamias_engine(const SceneDesc& scene, int workers,
     return std::make_unique<TamiasEngine>(scene, workers, manifold_reuse, regions);
 }
 
-std::unique_ptr<Engine> make_engine(EngineId id, const SceneDesc& scene) {
+std::unique_ptr<Engine> make_engine(EngineId id, const SceneDesc& scene, const SolverKnobs& knobs) {
     switch (id) {
     case EngineId::tamias:
-        return std::make_unique<TamiasEngine>(scene);
+        return std::make_unique<TamiasEngine>(scene, 1, -1.0, 1, knobs.substeps);
     case EngineId::chipmunk:
-        return std::make_unique<ChipmunkEngine>(scene);
+        return std::make_unique<ChipmunkEngine>(scene, knobs.iterations);
     case EngineId::box2d:
-        return std::make_unique<Box2DEngine>(scene);
+        return std::make_unique<Box2DEngine>(scene, knobs.iterations, knobs.position_iterations);
     case EngineId::box2d_v3_sse2:
     case EngineId::box2d_v3_avx2:
         break; // in a worker process: remote_engine.hpp

@@ -9,9 +9,11 @@
 //   Box2D v3  b2DefaultWorldDef, 4 substeps, one worker thread, sleeping as the scene says;
 //             joints: b2RevoluteJoint with its defaults (box2d_v3_engine.cpp). Its SSE2 and AVX2
 //             builds each run in an executable of their own (remote_engine.hpp).
+// SolverKnobs replaces these substep and iteration counts (the work-precision sweep).
 #pragma once
 
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -40,6 +42,12 @@ struct Probe {
     double w = 0.0;
     double angle = 0.0; ///< rad
 };
+
+/// Whether the body's position and velocities are finite (a NaN or infinite state is not).
+inline bool finite(const Probe& p) {
+    return std::isfinite(p.p.x) && std::isfinite(p.p.y) && std::isfinite(p.v.x) &&
+           std::isfinite(p.v.y) && std::isfinite(p.w);
+}
 
 /// The time a block of steps took (ms): the thread's CPU time (the benchmark's measure), wall
 /// time, and the kernel's part of the CPU time.
@@ -81,8 +89,17 @@ class Engine {
     }
 };
 
+/// The solver's cost knobs, each engine reading its own; 0 keeps the benchmark's setting (above).
+/// Every other setting stays the benchmark's: the knobs trade accuracy for time, nothing else.
+struct SolverKnobs {
+    int substeps = 0;   ///< Tamias2D (WorldDef::substeps) and Box2D v3 (b2World_Step's count)
+    int iterations = 0; ///< Chipmunk 7 (cpSpaceSetIterations), Box2D 2.4's velocity iterations
+    int position_iterations = 0; ///< Box2D 2.4
+};
+
 /// Builds the scene; throws (std::exception) if the engine rejects it or is not available.
-std::unique_ptr<Engine> make_engine(EngineId id, const SceneDesc& scene);
+std::unique_ptr<Engine> make_engine(EngineId id, const SceneDesc& scene,
+                                    const SolverKnobs& knobs = {});
 /// Tamias2D with WorldDef::workers = `workers` (the thread benchmark, thread_bench.cpp) and,
 /// when `manifold_reuse` >= 0, that WorldDef::manifold_reuse_distance instead of the default,
 /// with WorldDef::contact_regions = `regions`.

@@ -53,6 +53,7 @@ foreach(variant IN LISTS box2d_v3_variants)
   target_link_libraries(tamias_bench_v3_${variant} PRIVATE ${lib} tamias_warnings)
   add_dependencies(tamias_bench tamias_bench_v3_${variant})
   add_dependencies(tamias_thread_bench tamias_bench_v3_${variant})
+  add_dependencies(tamias_work_precision tamias_bench_v3_${variant})
   string(TOUPPER ${variant} VARIANT)
   set_property(SOURCE remote_engine.cpp APPEND PROPERTY COMPILE_DEFINITIONS
                "TAMIAS_BENCH_V3_${VARIANT}_WORKER=\"$<TARGET_FILE:tamias_bench_v3_${variant}>\"")

@@ -27,7 +27,8 @@ b2Rot rotation(double angle) {
 
 class Box2DV3Engine final : public Engine {
   public:
-    Box2DV3Engine(const SceneDesc& s, int workers, double recycle_distance) : dt_(f32(s.dt)) {
+    Box2DV3Engine(const SceneDesc& s, int workers, double recycle_distance, int substeps)
+        : dt_(f32(s.dt)), substeps_(substeps > 0 ? substeps : 4) {
         b2WorldDef wd = b2DefaultWorldDef(); // contact 30 Hz, continuous collision on
         wd.gravity = vec(s.gravity);
         wd.enableSleep = s.sleep; // a body falls asleep after b2_timeToSleep, 0.5 s
@@ -73,7 +74,7 @@ class Box2DV3Engine final : public Engine {
     Box2DV3Engine(const Box2DV3Engine&) = delete;
     Box2DV3Engine& operator=(const Box2DV3Engine&) = delete;
 
-    void step() override { b2World_Step(world_, dt_, 4); }
+    void step() override { b2World_Step(world_, dt_, substeps_); }
     Probe probe(int i) const override {
         const b2BodyId b = bodies_[std::size_t(i)];
         const b2Vec2 p = b2Body_GetPosition(b), v = b2Body_GetLinearVelocity(b);
@@ -84,6 +85,7 @@ class Box2DV3Engine final : public Engine {
 
   private:
     float dt_;
+    int substeps_;
     b2WorldId world_{};
     std::vector<b2BodyId> bodies_;
 };
@@ -91,8 +93,8 @@ class Box2DV3Engine final : public Engine {
 } // namespace
 
 std::unique_ptr<Engine> make_box2d_v3_engine(const SceneDesc& scene, int workers,
-                                             double recycle_distance) {
-    return std::make_unique<Box2DV3Engine>(scene, workers, recycle_distance);
+                                             double recycle_distance, int substeps) {
+    return std::make_unique<Box2DV3Engine>(scene, workers, recycle_distance, substeps);
 }
 
 } // namespace tamias_bench

@@ -36,7 +36,7 @@ double live_heap_bytes() {
 
 /// Runs one command and writes its results after the status byte.
 void run(wire::Op op, wire::Reader& in, wire::Writer& results, std::unique_ptr<Engine>& engine,
-         SceneDesc& scene, int workers, double recycle_distance) {
+         SceneDesc& scene, int& substeps, int workers, double recycle_distance) {
     const auto engine_ref = [&]() -> Engine& {
         if (!engine)
             throw std::runtime_error("no engine built");
@@ -46,7 +46,12 @@ void run(wire::Op op, wire::Reader& in, wire::Writer& results, std::unique_ptr<E
     case wire::Op::build:
         engine.reset();
         scene = wire::get_scene(in);
-        engine = make_box2d_v3_engine(scene, workers, recycle_distance);
+        engine = make_box2d_v3_engine(scene, workers, recycle_distance, substeps);
+        return;
+    case wire::Op::substeps:
+        substeps = in.get<std::int32_t>();
+        if (substeps < 0)
+            throw std::runtime_error("substeps must be >= 0");
         return;
     case wire::Op::timed: {
         const int n = in.get<std::int32_t>();
@@ -103,6 +108,7 @@ int main(int argc, char** argv) {
     wire::Reader in(STDIN_FILENO);
     std::unique_ptr<Engine> engine;
     SceneDesc scene;
+    int substeps = 0; // the benchmark's
     try {
         while (in.more()) {
             const auto op = in.get<wire::Op>();
@@ -110,7 +116,7 @@ int main(int argc, char** argv) {
             std::uint8_t status = 0;
             std::string error;
             try {
-                run(op, in, results, engine, scene, workers, recycle_distance);
+                run(op, in, results, engine, scene, substeps, workers, recycle_distance);
             } catch (const std::exception& ex) {
                 status = 1;
                 error = ex.what();

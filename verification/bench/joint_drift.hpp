@@ -70,36 +70,57 @@ struct JointDrift {
     std::string outcome;
 };
 
-/// Runs `steps` steps of a freshly built engine, sampling the separation after each.
-inline JointDrift measure_drift(const SceneDesc& s, Engine& e, int steps) {
-    const std::vector<LocalAnchors> anchors = local_anchors(s);
-    const double speed_bound = 10.0 * std::hypot(s.gravity.x, s.gravity.y) * steps * s.dt;
-    JointDrift d;
-    for (int i = 1; i <= steps; ++i) {
-        e.step();
-        const double sep = largest_separation(s, anchors, e);
-        if (!(sep <= d.max)) {
-            d.max = sep;
-            d.max_step = i;
+/// The drift so far; observe() after every step, outcome() after the last.
+class JointDriftWatch {
+  public:
+    /// `steps`: the run's length, which bounds the speed free fall can reach.
+    JointDriftWatch(const SceneDesc& s, int steps)
+        : anchors_(local_anchors(s)),
+          speed_bound_(10.0 * std::hypot(s.gravity.x, s.gravity.y) * steps * s.dt) {}
+    void observe(const SceneDesc& s, const Engine& e) {
+        ++step_;
+        const double sep = largest_separation(s, anchors_, e);
+        if (!(sep <= d_.max)) {
+            d_.max = sep;
+            d_.max_step = step_;
         }
-        d.end = sep;
+        d_.end = sep;
         for (std::size_t b = 0; b < s.bodies.size(); ++b) {
             if (!s.bodies[b].dynamic)
                 continue;
             const Probe p = e.probe(int(b));
             const double v = std::hypot(p.v.x, p.v.y);
-            d.max_speed = std::isfinite(v) ? std::max(d.max_speed, v) : INFINITY;
+            d_.max_speed = std::isfinite(v) ? std::max(d_.max_speed, v) : INFINITY;
         }
     }
-    if (!std::isfinite(d.max) || !(d.max_speed <= speed_bound))
-        d.outcome = "exploded";
-    else if (d.max < s.apart_separation)
-        d.outcome = "intact";
-    else if (d.end < s.apart_separation)
-        d.outcome = "rejoined";
-    else
-        d.outcome = "apart at the end";
-    return d;
+    JointDrift outcome(const SceneDesc& s) const {
+        JointDrift d = d_;
+        if (!std::isfinite(d.max) || !(d.max_speed <= speed_bound_))
+            d.outcome = "exploded";
+        else if (d.max < s.apart_separation)
+            d.outcome = "intact";
+        else if (d.end < s.apart_separation)
+            d.outcome = "rejoined";
+        else
+            d.outcome = "apart at the end";
+        return d;
+    }
+
+  private:
+    std::vector<LocalAnchors> anchors_;
+    double speed_bound_;
+    int step_ = 0;
+    JointDrift d_;
+};
+
+/// Runs `steps` steps of a freshly built engine, sampling the separation after each.
+inline JointDrift measure_drift(const SceneDesc& s, Engine& e, int steps) {
+    JointDriftWatch watch(s, steps);
+    for (int i = 1; i <= steps; ++i) {
+        e.step();
+        watch.observe(s, e);
+    }
+    return watch.outcome(s);
 }
 
 } // namespace tamias_bench

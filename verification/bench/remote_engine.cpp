@@ -128,9 +128,13 @@ wire::Writer command(wire::Op op) {
 
 class RemoteEngine final : public Engine {
   public:
-    RemoteEngine(Worker& worker, const SceneDesc& s) : worker_(worker), bodies_(s.bodies.size()) {
+    RemoteEngine(Worker& worker, const SceneDesc& s, int substeps)
+        : worker_(worker), bodies_(s.bodies.size()) {
         if (worker_.busy)
             throw std::logic_error("the engine's worker already holds a scene");
+        wire::Writer n = command(wire::Op::substeps); // every build: no setting outlives its run
+        n.put(std::int32_t(substeps));
+        worker_.call(n);
         wire::Writer c = command(wire::Op::build);
         wire::put_scene(c, s);
         worker_.call(c);
@@ -218,11 +222,12 @@ double remote_heap_bytes(EngineId id) {
     return w == workers.end() ? 0.0 : w->second->heap();
 }
 
-std::unique_ptr<Engine> make_remote_engine(EngineId id, const SceneDesc& scene, int threads) {
+std::unique_ptr<Engine> make_remote_engine(EngineId id, const SceneDesc& scene, int threads,
+                                           int substeps) {
     const auto w = workers.find({id, threads});
     if (w == workers.end())
         throw std::runtime_error("its worker is not running");
-    return std::make_unique<RemoteEngine>(*w->second, scene);
+    return std::make_unique<RemoteEngine>(*w->second, scene, substeps);
 }
 
 std::string remote_engines_description() {

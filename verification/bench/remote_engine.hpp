@@ -33,9 +33,11 @@ void set_remote_engine_arguments(std::vector<std::string> arguments);
 /// The one-thread worker's live heap (bytes) after its last command; 0 when it is not running.
 double remote_heap_bytes(EngineId id);
 
-/// Builds the scene in the engine's worker for `threads` (which holds one engine at a time); throws
-/// (std::exception) when the worker fails or rejects the scene.
-std::unique_ptr<Engine> make_remote_engine(EngineId id, const SceneDesc& scene, int threads = 1);
+/// Builds the scene in the engine's worker for `threads` (which holds one engine at a time),
+/// stepping with `substeps` substeps (0: the benchmark's); throws (std::exception) when the worker
+/// fails or rejects the scene.
+std::unique_ptr<Engine> make_remote_engine(EngineId id, const SceneDesc& scene, int threads = 1,
+                                           int substeps = 0);
 
 /// What the workers' engines are and how they were built (the report's set-up table).
 std::string remote_engines_description();

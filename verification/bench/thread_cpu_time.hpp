@@ -18,7 +18,7 @@ inline double cpu_ms() {
 /// The part of the thread's CPU time spent in the kernel (ms): page faults, mostly. Recorded
 /// beside the steps' time because on a virtual machine whose kernel hands freed memory back to
 /// the host, faulting fresh pages in costs far more than their zeroing (docs/performance.md,
-/// "Large arrays").
+/// "Why the engine is built this way": retained blocks).
 inline double system_ms() {
     rusage u{};
     getrusage(RUSAGE_THREAD, &u);

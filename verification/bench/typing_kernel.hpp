@@ -86,6 +86,43 @@ struct PlainOps {
     template <class V> static V soft_impulse(V mass_scale, V rigid, V impulse_scale, V acc) {
         return rigid * mass_scale - acc * impulse_scale; // IM7
     }
+    template <bool soft, class V>
+    static tamias2d::bridge::Target<V> target(V s, const tamias2d::ContactSolverSettings& st) {
+        using tamias2d::broadcast, tamias2d::select, tamias2d::min, tamias2d::max; // IM7's target
+        const V zero = broadcast<V>(0.0);
+        const V one = broadcast<V>(1.0);
+        const auto speculative = s > zero;
+        const V closing = -(s * broadcast<V>(st.inv_h));
+        if constexpr (!soft) {
+            return {select(speculative, closing, zero), one, zero};
+        } else {
+            const V bias = max(broadcast<V>(st.softness.bias_rate) *
+                                   min(s + broadcast<V>(st.linear_slop), zero),
+                               -broadcast<V>(st.push_max_velocity));
+            return {select(speculative, closing, -bias),
+                    select(speculative, one, broadcast<V>(st.softness.mass_scale)),
+                    select(speculative, zero, broadcast<V>(st.softness.impulse_scale))};
+        }
+    }
+    template <class V>
+    static tamias2d::bridge::TwoPointSolution<V>
+    two_point_impulses(V k11, V k12, V k22, V inv11, V inv12, V inv22, V m1, V m2, V vn1, V vn2,
+                       V t1, V t2, V x1, V x2) { // IM7's two_point_impulses
+        using tamias2d::both, tamias2d::select;
+        const V zero = tamias2d::broadcast<V>(0.0);
+        const V b1 = vn1 - t1 - (k11 * x1 + k12 * x2);
+        const V b2 = vn2 - t2 - (k12 * x1 + k22 * x2);
+        const V both1 = -(inv11 * b1 + inv12 * b2);
+        const V both2 = -(inv12 * b1 + inv22 * b2);
+        const auto both_active = both(both1 >= zero, both2 >= zero);
+        const V only1 = -b1 * m1;
+        const auto first_active = both(only1 >= zero, k12 * only1 + b2 >= zero);
+        const V only2 = -b2 * m2;
+        const auto second_active = both(only2 >= zero, k12 * only2 + b1 >= zero);
+        return {select(both_active, both1, select(first_active, only1, zero)),
+                select(both_active, both2,
+                       select(first_active, zero, select(second_active, only2, zero)))};
+    }
 };
 
 // ------------------------------------------------------------------------------- the loop

@@ -27,6 +27,8 @@ enum class Op : std::uint8_t {
     steps = 'S',   ///< int32 n -> (): n steps, untimed
     probes = 'P',  ///< () -> int32 count, count x Probe: every body of the scene
     release = 'R', ///< () -> (): destroys the engine
+    /// int32 n -> (): the substeps of the engines built from now on (0: the benchmark's 4)
+    substeps = 'N',
 };
 
 /// Collects a message and sends it in one go.

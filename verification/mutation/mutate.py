@@ -1136,7 +1136,10 @@ def main(argv=None):
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--minutes", type=float, default=30.0)
     ap.add_argument("--all", action="store_true", help="every mutant, no time box")
-    ap.add_argument("--scratch", default=os.path.join("/tmp", f"tamias-mutation-{os.getuid()}"))
+    # One scratch per checkout: two checkouts syncing one scratch would build each other's trees.
+    ap.add_argument("--scratch", default=None,
+                    help="scratch copy and build (default /tmp/tamias-mutation-<uid>-<hash of "
+                         "the checkout's path>)")
     ap.add_argument("--root", default=ROOT)
     ap.add_argument("--test-timeout", type=int, default=300)
     ap.add_argument("--list", action="store_true", help="print the mutants and stop")
@@ -1151,6 +1154,9 @@ def main(argv=None):
                     help="instrument the scratch build, run every test once on the unmutated "
                          "sources and write gcovr's summary and pages before the mutants")
     a = ap.parse_args(argv)
+    if a.scratch is None:
+        where = hashlib.sha1(os.path.abspath(a.root).encode()).hexdigest()[:8]
+        a.scratch = os.path.join("/tmp", f"tamias-mutation-{os.getuid()}-{where}")
     if a.merge:
         if a.out_dir or len(a.merge) < 2:
             ap.error("--merge OUT_DIR FILE...")

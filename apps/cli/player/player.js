@@ -490,12 +490,18 @@ window.TamiasDraw = (function () {
     CHANNELS.forEach((k, i) => { ch[k] = decodeChannel(streams[i], F, B); });
     contacts = decodeContacts(D.contacts, D.contacts.recorded ? await inflate(D.contacts.data) : null, F);
   }
+  // The page's state as an attribute of <html> too (data-tamias-player: decoding, ready or
+  // error), so that a tool that sees only the DOM (chromium --dump-dom) can tell whether a
+  // screenshot taken at the same moment shows the run: it is decoded after the page has loaded.
+  const setStatus = (status) => { document.documentElement.dataset.tamiasPlayer = status; };
   window.tamiasPlayer = { ready: false };
   const loadStart = performance.now();
   $('message').textContent = 'Decoding the run\u2026';
+  setStatus('decoding');
   load().then(start).catch((e) => {
     $('message').textContent = 'This page cannot show its run: ' + e.message;
     window.tamiasPlayer = { ready: false, error: String(e) };
+    setStatus('error');
   });
 
   function start() {
@@ -877,6 +883,7 @@ window.TamiasDraw = (function () {
     };
     if (/(^|[#&])play(&|$)/.test(location.hash)) play();
     draw();
+    setStatus('ready'); // drawn: a screenshot from now on shows the run
     requestAnimationFrame(tick);
   }
 })();

@@ -22,6 +22,7 @@
 
 #include "tamias2d/body_def.hpp"
 #include "tamias2d/handles.hpp"
+#include "tamias2d/io/export.hpp"
 #include "tamias2d/joint_def.hpp"
 #include "tamias2d/shape_def.hpp"
 #include "tamias2d/world_def.hpp"
@@ -34,7 +35,7 @@ namespace io {
 
 /// A scalar function of time f(t) (t in s) for one load component (IM1's F_i(t), IM2's
 /// tau_i(t)). Only the fields of its kind are used; the others keep their defaults.
-struct TimeFunction {
+struct TAMIAS2D_IO_EXPORT TimeFunction {
     /// The form of f(t).
     enum class Kind : std::uint8_t { constant, sinusoid, step, ramp };
     Kind kind = Kind::constant; ///< which of the forms below applies
@@ -58,7 +59,7 @@ struct TimeFunction {
 
 /// Time-varying loads of one body, each component optional; they add to BodyDef::force and
 /// BodyDef::torque.
-struct SceneLoads {
+struct TAMIAS2D_IO_EXPORT SceneLoads {
     std::optional<TimeFunction> force_x;                           ///< N
     std::optional<TimeFunction> force_y;                           ///< N
     std::optional<TimeFunction> torque;                            ///< N m
@@ -108,7 +109,7 @@ struct Scene {
 /// A scene that cannot be loaded. what() is one line:
 ///   "scene.json: /bodies/3/shapes/0/radius: radius = -1: must be > 0 (DCX_shape)"
 ///   "scene.json:4:17: syntax error: unexpected ','; expected '[', '{', or a literal"
-struct SceneError : std::runtime_error {
+struct TAMIAS2D_IO_EXPORT SceneError : std::runtime_error {
     std::string origin;     ///< file name or other origin given to the parser
     std::string pointer;    ///< JSON pointer (RFC 6901) of the offending value, "" for the root
     int line = 0;           ///< 1-based, syntax errors only (0 otherwise)
@@ -144,26 +145,27 @@ inline constexpr std::size_t max_scene_bodies = 250000;
 /// Reads and parses a scene file (origin in messages: the path as given). The file is read in
 /// chunks and refused as soon as it exceeds `max_bytes`, so that an endless source (/dev/zero,
 /// a pipe) is refused promptly and with bounded memory.
-Scene load_scene(const std::filesystem::path& path, std::size_t max_bytes = max_scene_bytes);
+TAMIAS2D_IO_EXPORT Scene load_scene(const std::filesystem::path& path,
+                                    std::size_t max_bytes = max_scene_bytes);
 
 /// Reads a scene from a stream (standard input, a pipe) as load_scene reads a file; `origin`
 /// names it in error messages.
-Scene load_scene(std::istream& in, std::string_view origin,
-                 std::size_t max_bytes = max_scene_bytes);
+TAMIAS2D_IO_EXPORT Scene load_scene(std::istream& in, std::string_view origin,
+                                    std::size_t max_bytes = max_scene_bytes);
 
 /// Parses and validates a scene from JSON text; `origin` names it in error messages. A text
 /// longer than `max_bytes` is refused.
-Scene parse_scene(std::string_view json, std::string_view origin = "<scene>",
-                  std::size_t max_bytes = max_scene_bytes);
+TAMIAS2D_IO_EXPORT Scene parse_scene(std::string_view json, std::string_view origin = "<scene>",
+                                     std::size_t max_bytes = max_scene_bytes);
 
 /// Checks a Scene (parsed or hand-made) by building it into a scratch World: throws SceneError
 /// at the body's `source` if the World rejects any body or shape.
-void validate_scene(const Scene& scene, std::string_view origin = "<scene>");
+TAMIAS2D_IO_EXPORT void validate_scene(const Scene& scene, std::string_view origin = "<scene>");
 
 /// Creates the scene's bodies and shapes, then its joints, in `world` (whose settings the
 /// caller made from scene.world) and returns the body handles in scene order. The scene is
 /// validated first (validate_scene), so on error `world` is left unchanged.
-std::vector<BodyId> build_world(const Scene& scene, World& world);
+TAMIAS2D_IO_EXPORT std::vector<BodyId> build_world(const Scene& scene, World& world);
 
 /// The scene as canonical JSON: generators expanded, materials inlined, boxes written as
 /// polygons, the segments of a chain as one "chain" (each segment that is not exactly the
@@ -171,7 +173,7 @@ std::vector<BodyId> build_world(const Scene& scene, World& world);
 /// with its ghosts). parse_scene(scene_to_json(s)) reproduces s (loads, materials and
 /// geometry, bit for bit): a box is accepted exactly when its polygon is, both by the one sliver
 /// rule (DCX_shape). (A text beyond max_scene_bytes needs a larger limit passed to parse_scene.)
-std::string scene_to_json(const Scene& scene, int indent = 2);
+TAMIAS2D_IO_EXPORT std::string scene_to_json(const Scene& scene, int indent = 2);
 
 } // namespace io
 } // namespace tamias2d

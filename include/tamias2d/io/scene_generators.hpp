@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "tamias2d/io/export.hpp"
 #include "tamias2d/io/scene.hpp"
 
 namespace tamias2d::io {
@@ -31,7 +32,7 @@ struct PyramidParams {
 };
 /// The pyramid's bodies, ground first then the rows bottom-up, each left to right; throws
 /// ValidationError for a parameter out of range.
-std::vector<SceneBody> generate_pyramid(const PyramidParams& p);
+TAMIAS2D_IO_EXPORT std::vector<SceneBody> generate_pyramid(const PyramidParams& p);
 
 /// An open-top static container of three boxes (floor and two walls, one body) whose inner
 /// floor is centred at `origin`.
@@ -59,7 +60,7 @@ struct RainParams {
     Material material{1.0, 0.0, 0.6}; ///< of every box and of the container
 };
 /// The container and the falling boxes; throws ValidationError for a parameter out of range.
-std::vector<SceneBody> generate_rain(const RainParams& p);
+TAMIAS2D_IO_EXPORT std::vector<SceneBody> generate_rain(const RainParams& p);
 
 /// Two equal square boxes on the x axis, approaching head-on: "<name>/left" at
 /// (-distance / 2, 0) with velocity (+speed, 0) and "<name>/right" at (+distance / 2, 0) with
@@ -74,10 +75,10 @@ struct ElasticPairParams {
     double restitution = 1.0;     ///< C_R of both boxes (DD12), in [0, 1]
 };
 /// The two boxes, left first; throws ValidationError for a parameter out of range.
-std::vector<SceneBody> generate_elastic_pair(const ElasticPairParams& p);
+TAMIAS2D_IO_EXPORT std::vector<SceneBody> generate_elastic_pair(const ElasticPairParams& p);
 
 /// The generators' deterministic random stream: splitmix64, uniform doubles in [0, 1).
-struct SplitMix64 {
+struct TAMIAS2D_IO_EXPORT SplitMix64 {
     std::uint64_t state;  ///< the seed, then the stream's position
     std::uint64_t next(); ///< the next 64 random bits
     double uniform();     ///< 53 random bits / 2^53

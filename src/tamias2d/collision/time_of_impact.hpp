@@ -5,6 +5,7 @@
 
 #include "tamias2d/collision/collider.hpp"
 #include "tamias2d/math/vec2d.hpp"
+#include "tamias2d/model/dd29_time_of_impact.hpp"
 
 namespace tamias2d {
 
@@ -29,10 +30,17 @@ struct Sweep {
     Vec2d c0{}, c1{};     ///< m, centre of mass at the start and end
     double a0 = 0.0, a1 = 0.0;
 
+    /// The pose at the fraction t: DD29's linear motion of the centre and the angle.
     Transform at(double t) const {
+        namespace u = tamias2d::units;
+        const u::Vec2<u::Length> c =
+            model::dd29::at_fraction(u::vec_from_values<u::Length>(c0.x, c0.y),
+                                     u::vec_from_values<u::Length>(c1.x, c1.y), t);
         Transform xf;
-        xf.q = Rot::from_angle(a0 + t * (a1 - a0));
-        xf.p = c0 + t * (c1 - c0) - rotate(xf.q, local_center);
+        xf.q = Rot::from_angle(
+            model::dd29::at_fraction(u::Angle::from_value(a0), u::Angle::from_value(a1), t)
+                .value());
+        xf.p = Vec2d{c.x.value(), c.y.value()} - rotate(xf.q, local_center);
         return xf;
     }
 };

@@ -4,14 +4,14 @@
 // lane (WideContactConstraint, WideBody; see wide_contact_solver.cpp). The field names of the
 // two constraint and body types match, and both points are always processed: an unused second
 // point is all zeros and changes nothing. Every formula is a call into the model layer through
-// Model (bridge::Model: DD8, DD9, DD11, IM3, IM7 on Boost.Units quantities); the benchmark also
+// Model (bridge::Model: DD8, DD9, DD11, IM3, IM7's impulse, target and two-point solve, on
+// Boost.Units quantities); the benchmark also
 // instantiates the iteration with the same formulas on plain doubles, to show that the typing
 // costs nothing (verification/bench/typing_kernel.hpp).
 #pragma once
 
 #include "tamias2d/dynamics/model_bridge.hpp"
 #include "tamias2d/dynamics/solver_settings.hpp"
-#include "tamias2d/dynamics/two_point_lcp.hpp"
 #include "tamias2d/math/vec2d.hpp"
 #include "tamias2d/math/wide.hpp"
 
@@ -32,32 +32,11 @@ V current_separation(const Point& cp, const Body& a, const Body& b, Vec2<V> n) {
            (dot(b.dp - a.dp, n) + (b.dq * cp.normal_arm_b - a.dq * cp.normal_arm_a));
 }
 
-/// \srs{IM7} Normal velocity the point must reach in this iteration (m s^-1): a speculative gap
-/// may be closed within the substep; with bias, an overlap beyond the slop is pushed out softly.
-/// (Lane selects and clamps on V: written here, not in model/, which has no packs of lanes.)
-template <class V> struct NormalTarget {
-    V target{};
-    V mass_scale{};
-    V impulse_scale{};
-};
-
-template <bool use_bias, class V>
-NormalTarget<V> normal_target(V s, const ContactSolverSettings& st) {
-    const V zero = broadcast<V>(0.0);
-    const V one = broadcast<V>(1.0);
-    const auto speculative = s > zero;
-    const V speculative_target = -s * broadcast<V>(st.inv_h);
-    if constexpr (!use_bias) { // rigid: stop the approach
-        return {select(speculative, speculative_target, zero), one, zero};
-    } else {
-        const V bias =
-            max(broadcast<V>(st.softness.bias_rate) * min(s + broadcast<V>(st.linear_slop), zero),
-                -broadcast<V>(st.push_max_velocity));
-        return {select(speculative, speculative_target, -bias),
-                select(speculative, one, broadcast<V>(st.softness.mass_scale)),
-                select(speculative, zero, broadcast<V>(st.softness.impulse_scale))};
-    }
-}
+/// IM7's target of a point for this iteration and its impulse's scales (model/im7's
+/// target_velocity: a speculative gap closes within the substep; with bias, an overlap beyond
+/// the slop is pushed out softly; lane by lane on a pack).
+template <class V> using NormalTarget = bridge::Target<V>;
+using bridge::TwoPointSolution;
 
 /// Re-applies the accumulated impulses (they carry the previous substep's solution forward).
 template <class Model = bridge::Model, class Constraint, class Body>
@@ -95,8 +74,8 @@ V point_update(const Constraint& c, int j, const Body& a, const Body& b,
     return max(cp.normal_impulse + lambda, broadcast<V>(0.0));
 }
 
-/// Both points at once (the 2x2 LCP) for targets t1, t2 with rigid masses, from the current
-/// velocities and the accumulated impulses x1, x2 that the LCP keeps non-negative.
+/// Both points at once (IM7's 2x2 LCP, LC1) for targets t1, t2 with rigid masses, from the
+/// current velocities and the accumulated impulses x1, x2 that the LCP keeps non-negative.
 template <class Model = bridge::Model, class Constraint, class Body, class V = value_of<Body>>
 TwoPointSolution<V> block_update(const Constraint& c, const Body& a, const Body& b, V t1, V t2,
                                  V x1, V x2) {
@@ -104,11 +83,8 @@ TwoPointSolution<V> block_update(const Constraint& c, const Body& a, const Body&
     const auto& p2 = c.points[1];
     const V vn1 = Model::relative_velocity(a, b, p1.normal_arm_a, p1.normal_arm_b, c.normal);
     const V vn2 = Model::relative_velocity(a, b, p2.normal_arm_a, p2.normal_arm_b, c.normal);
-    // b = (velocity the points would have without their accumulated impulses) - target.
-    const V b1 = vn1 - t1 - (c.k11 * x1 + c.k12 * x2);
-    const V b2 = vn2 - t2 - (c.k12 * x1 + c.k22 * x2);
-    return solve_two_point_lcp(c.k12, c.inv_k11, c.inv_k12, c.inv_k22, p1.normal_mass,
-                               p2.normal_mass, b1, b2);
+    return Model::two_point_impulses(c.k11, c.k12, c.k22, c.inv_k11, c.inv_k12, c.inv_k22,
+                                     p1.normal_mass, p2.normal_mass, vn1, vn2, t1, t2, x1, x2);
 }
 
 template <class Model, class Constraint, class Body>
@@ -134,8 +110,8 @@ template <bool use_bias, class Model = bridge::Model, class Constraint, class Bo
 void solve(Constraint& c, Body& a, Body& b, const ContactSolverSettings& st) {
     using V = value_of<Body>;
     const NormalTarget<V> nt[2] = {
-        normal_target<use_bias>(current_separation(c.points[0], a, b, c.normal), st),
-        normal_target<use_bias>(current_separation(c.points[1], a, b, c.normal), st)};
+        Model::template target<use_bias>(current_separation(c.points[0], a, b, c.normal), st),
+        Model::template target<use_bias>(current_separation(c.points[1], a, b, c.normal), st)};
     const V one = broadcast<V>(1.0);
     const auto soft = either(nt[0].mass_scale != one, nt[1].mass_scale != one);
     const auto block = and_not(c.use_block, soft);

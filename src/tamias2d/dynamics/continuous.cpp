@@ -7,6 +7,7 @@
 #include "tamias2d/dynamics/body_store.hpp"
 #include "tamias2d/dynamics/contact_manager.hpp"
 #include "tamias2d/dynamics/joint_store.hpp"
+#include "tamias2d/dynamics/model_bridge.hpp"
 #include "tamias2d/dynamics/shape_store.hpp"
 
 namespace tamias2d {
@@ -141,10 +142,11 @@ void ContinuousPass::sweep(const FastBody& f, bool bullet, BodyStore& store,
     }
     if (t >= 1.0)
         return;
-    b.center = f.c0 + t * (sweep.c1 - sweep.c0);
-    b.angle = f.a0 + t * (sweep.a1 - sweep.a0);
-    b.v = f.v0 + t * (b.v - f.v0);
-    b.w = f.w0 + t * (b.w - f.w0);
+    // DD29: position, angle and velocities interpolated to the time of impact.
+    b.center = bridge::center_at(f.c0, sweep.c1, t);
+    b.angle = bridge::angle_at(f.a0, sweep.a1, t);
+    b.v = bridge::velocity_at(f.v0, b.v, t);
+    b.w = bridge::angular_velocity_at(f.w0, b.w, t);
     b.xf.q = Rot::from_angle(b.angle);
     b.xf.p = b.center - rotate(b.xf.q, b.local_center);
     for (std::uint32_t s = b.first_shape; s != null_index; s = shapes[s].next)

@@ -34,8 +34,9 @@ void solve_distance(Joint& j, std::span<SolverBody> bodies, const Softness& rigi
         double rhs = bridge::axial_velocity_error(a, arm_a, b, arm_b, j.axis);
         double mass_scale = 1.0, impulse_scale = 0.0;
         if (use_bias) {
-            const Softness soft = spring ? make_softness(j.hertz, j.damping_ratio, h) : rigid;
-            rhs += soft.bias_rate * bridge::distance_position_error(length, j.length);
+            const Softness soft = spring ? make_joint_softness(j.hertz, j.damping_ratio, h) : rigid;
+            rhs = bridge::biased_error(rhs, soft.bias_rate,
+                                       bridge::distance_position_error(length, j.length));
             mass_scale = soft.mass_scale;
             impulse_scale = soft.impulse_scale;
         }

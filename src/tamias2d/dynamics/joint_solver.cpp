@@ -44,7 +44,7 @@ void solve_pin(Joint& j, SolverBody& a, SolverBody& b, const Softness& softness,
     if (use_bias) {
         // The pins' separation now: the centres have moved by dp since the step's start.
         const Vec2d c = bridge::pin_position_error(j.center_offset + (b.dp - a.dp), r_a, r_b);
-        rhs += softness.bias_rate * c;
+        rhs = bridge::biased_error(rhs, softness.bias_rate, c);
         mass_scale = softness.mass_scale;
         impulse_scale = softness.impulse_scale;
     }
@@ -57,7 +57,8 @@ void solve_pin(Joint& j, SolverBody& a, SolverBody& b, const Softness& softness,
 void solve_angular_motor(Joint& j, SolverBody& a, SolverBody& b, double h) {
     const double lambda = bridge::angular_impulse(a, b, bridge::joint_speed(a, b) - j.motor_speed,
                                                   1.0, 0.0, j.motor_impulse);
-    const double updated = bridge::clamp_angular_impulse(j.motor_impulse + lambda, j.max_motor * h);
+    const double updated = bridge::clamp_angular_impulse(
+        j.motor_impulse + lambda, bridge::torque_impulse_bound(j.max_motor, h));
     bridge::apply_angular_impulse(a, b, updated - j.motor_impulse);
     j.motor_impulse = updated;
 }
@@ -67,11 +68,11 @@ void solve_angular_limits(Joint& j, SolverBody& a, SolverBody& b, const Softness
     const double angle = current_joint_angle(j, a, b);
     for (const bool lower : {true, false}) {
         const double c = lower ? angle - j.lower_limit : j.upper_limit - angle;
-        const LimitTerms t = limit_terms(c, softness, h, use_bias);
+        const bridge::LimitTarget t = bridge::limit_target<units::Angle>(c, softness, h, use_bias);
         // The upper bound's impulse is taken positive against the turn, then applied negated.
         const double speed = lower ? bridge::joint_speed(a, b) : -bridge::joint_speed(a, b);
         double& accumulated = lower ? j.lower_impulse : j.upper_impulse;
-        const double lambda = bridge::angular_impulse(a, b, speed + t.bias, t.mass_scale,
+        const double lambda = bridge::angular_impulse(a, b, speed - t.velocity, t.mass_scale,
                                                       t.impulse_scale, accumulated);
         const double updated = std::max(accumulated + lambda, 0.0);
         const double applied = updated - accumulated;
@@ -84,11 +85,12 @@ void solve_axial_limits(Joint& j, SolverBody& a, SolverBody& b, double arm_a, do
                         double value, const Softness& softness, double h, bool use_bias) {
     for (const bool lower : {true, false}) {
         const double c = lower ? value - j.lower_limit : j.upper_limit - value;
-        const LimitTerms t = limit_terms(c, softness, h, use_bias);
+        const bridge::LimitTarget t = bridge::limit_target<units::Length>(c, softness, h, use_bias);
         const double v = bridge::axial_velocity_error(a, arm_a, b, arm_b, n);
         double& accumulated = lower ? j.lower_impulse : j.upper_impulse;
-        const double lambda = bridge::axial_impulse(a, arm_a, b, arm_b, (lower ? v : -v) + t.bias,
-                                                    t.mass_scale, t.impulse_scale, accumulated);
+        const double lambda =
+            bridge::axial_impulse(a, arm_a, b, arm_b, (lower ? v : -v) - t.velocity, t.mass_scale,
+                                  t.impulse_scale, accumulated);
         const double updated = std::max(accumulated + lambda, 0.0);
         const double applied = updated - accumulated;
         accumulated = updated;
@@ -98,8 +100,9 @@ void solve_axial_limits(Joint& j, SolverBody& a, SolverBody& b, double arm_a, do
 
 void solve_axial_spring(Joint& j, SolverBody& a, SolverBody& b, double arm_a, double arm_b, Vec2d n,
                         double value, double h) {
-    const Softness soft = make_softness(j.hertz, j.damping_ratio, h);
-    const double rhs = bridge::axial_velocity_error(a, arm_a, b, arm_b, n) + soft.bias_rate * value;
+    const Softness soft = make_joint_softness(j.hertz, j.damping_ratio, h);
+    const double rhs = bridge::biased_error(bridge::axial_velocity_error(a, arm_a, b, arm_b, n),
+                                            soft.bias_rate, value);
     const double lambda = bridge::axial_impulse(a, arm_a, b, arm_b, rhs, soft.mass_scale,
                                                 soft.impulse_scale, j.spring_impulse);
     j.spring_impulse += lambda;

@@ -44,20 +44,6 @@ struct LineFrame {
 };
 LineFrame line_frame(const Joint& j, const SolverBody& a, const SolverBody& b);
 
-/// The terms of one one-sided limit at a distance c (>= 0 inside) from its bound: a bound
-/// still ahead is approached no faster than it closes within the substep (speculative: bias
-/// c / h); a bound passed is pulled back softly (IM6's bias), or rigidly in the relax.
-struct LimitTerms {
-    double bias = 0.0, mass_scale = 1.0, impulse_scale = 0.0;
-};
-inline LimitTerms limit_terms(double c, const Softness& softness, double h, bool use_bias) {
-    if (c > 0.0)
-        return {c / h, 1.0, 0.0};
-    if (use_bias)
-        return {softness.bias_rate * c, softness.mass_scale, softness.impulse_scale};
-    return {};
-}
-
 /// \srs{IM6} DD19's pin (revolute, weld): with use_bias the soft solve that also pulls the
 /// pins together, without it the rigid relax.
 void solve_pin(Joint& j, SolverBody& a, SolverBody& b, const Softness& softness, bool use_bias);

@@ -4,10 +4,12 @@
 // (verification/bench measures it); the formulas themselves live only in model/.
 #pragma once
 
+#include <limits>
 #include <type_traits>
 #include <utility>
 
 #include "tamias2d/dynamics/solver_body.hpp"
+#include "tamias2d/dynamics/solver_settings.hpp"
 #include "tamias2d/model/dd03_linear_velocity.hpp"
 #include "tamias2d/model/dd04_linear_acceleration.hpp"
 #include "tamias2d/model/dd06_angular_velocity.hpp"
@@ -19,10 +21,15 @@
 #include "tamias2d/model/dd21_target_constraint.hpp"
 #include "tamias2d/model/dd22_angular_constraint.hpp"
 #include "tamias2d/model/dd23_line_constraint.hpp"
+#include "tamias2d/model/dd24_weld_constraint.hpp"
+#include "tamias2d/model/dd25_wheel_constraint.hpp"
+#include "tamias2d/model/dd26_motor_constraint.hpp"
+#include "tamias2d/model/dd29_time_of_impact.hpp"
 #include "tamias2d/model/im1_translational_motion.hpp"
 #include "tamias2d/model/im2_rotational_motion.hpp"
 #include "tamias2d/model/im3_collision_response.hpp"
 #include "tamias2d/model/im5_motion_with_damping.hpp"
+#include "tamias2d/model/im6_motion_with_joints.hpp"
 #include "tamias2d/model/im7_soft_contact.hpp"
 
 namespace tamias2d::bridge {
@@ -102,11 +109,18 @@ inline double angular_velocity_change(double alpha, double h) {
                                                  u::from_value<u::Time>(h))
         .value();
 }
-/// IM5's decay factor 1 / (1 + h c) of a velocity damped at rate c (s^-1) over a substep h.
-inline double decay_factor(double rate, double h) {
-    return m::im5::decay_factor(u::from_value<u::Rate>(rate), u::from_value<u::Time>(h)).value();
+/// IM5's decay factor 1 / (1 + h c) over a substep h of a velocity damped at rate c (s^-1) by
+/// DD17's law, backward Euler of DD17's acceleration.
+inline double linear_decay_factor(double rate, double h) {
+    return m::im5::linear_decay_factor(u::from_value<u::Rate>(rate), u::from_value<u::Time>(h))
+        .value();
 }
-/// IM5 over a substep: v' = (v + a h) f, with f from decay_factor (1: IM1's DD4 step).
+/// The same for an angular velocity damped by DD18's law.
+inline double angular_decay_factor(double rate, double h) {
+    return m::im5::angular_decay_factor(u::from_value<u::Rate>(rate), u::from_value<u::Time>(h))
+        .value();
+}
+/// IM5 over a substep: v' = (v + a h) f, with f from linear_decay_factor (1: IM1's DD4 step).
 inline Vec2d velocity_step(Vec2d v, Vec2d a, double h, double decay) {
     return plain(m::im5::velocity_step(typed<u::Velocity>(v), typed<u::Acceleration>(a),
                                        u::from_value<u::Time>(h),
@@ -126,6 +140,32 @@ inline Vec2d displacement(Vec2d v, double h) {
 /// DD6 over a substep: d phi = omega h.
 inline double rotation(double w, double h) {
     return m::dd06::angle_over(u::from_value<u::AngularVelocity>(w), u::from_value<u::Time>(h))
+        .value();
+}
+
+/// DD29's bound on how far any point of a body moves when its centre moves `translation` (m)
+/// and it turns `rotation` (rad, >= 0), its points at most `reach` (m) from the centre.
+inline double motion_bound(double translation, double rotation, double reach) {
+    return m::dd29::motion_bound(u::from_value<u::Length>(translation),
+                                 u::from_value<u::Angle>(rotation), u::from_value<u::Length>(reach))
+        .value();
+}
+
+/// DD29's linear motion over the step: a centre (m), an angle (rad), a velocity (m s^-1) or an
+/// angular velocity (rad s^-1) at the fraction t, from its values at the start and the end.
+inline Vec2d center_at(Vec2d start, Vec2d end, double t) {
+    return plain(m::dd29::at_fraction(typed<u::Length>(start), typed<u::Length>(end), t));
+}
+inline double angle_at(double start, double end, double t) {
+    return m::dd29::at_fraction(u::from_value<u::Angle>(start), u::from_value<u::Angle>(end), t)
+        .value();
+}
+inline Vec2d velocity_at(Vec2d start, Vec2d end, double t) {
+    return plain(m::dd29::at_fraction(typed<u::Velocity>(start), typed<u::Velocity>(end), t));
+}
+inline double angular_velocity_at(double start, double end, double t) {
+    return m::dd29::at_fraction(u::from_value<u::AngularVelocity>(start),
+                                u::from_value<u::AngularVelocity>(end), t)
         .value();
 }
 
@@ -200,6 +240,79 @@ inline void apply_impulse(Body& a, Body& b, V arm_a, V arm_b, u::Vec2<V> dir, V 
     a.w = va.omega.value();
     b.v = plain_vec(vb.v);
     b.w = vb.omega.value();
+}
+
+// IM6, the joints' soft form, and their bounds (DD10, DD22).
+
+/// IM6's biased velocity error Cdot + beta C of a point (m s^-1, m).
+inline Vec2d biased_error(Vec2d velocity_error, double bias_rate, Vec2d position_error) {
+    return plain(m::im6::biased_velocity_error(typed<u::Velocity>(velocity_error),
+                                               u::from_value<u::Rate>(bias_rate),
+                                               typed<u::Length>(position_error)));
+}
+/// The same along one direction (m s^-1, m).
+inline double biased_error(double velocity_error, double bias_rate, double position_error) {
+    return m::im6::biased_velocity_error(u::from_value<u::Velocity>(velocity_error),
+                                         u::from_value<u::Rate>(bias_rate),
+                                         u::from_value<u::Length>(position_error))
+        .value();
+}
+/// The same for an angle (rad s^-1, rad).
+inline double biased_angular_error(double speed, double bias_rate, double angle_error) {
+    return m::im6::biased_velocity_error(u::from_value<u::AngularVelocity>(speed),
+                                         u::from_value<u::Rate>(bias_rate),
+                                         u::from_value<u::Angle>(angle_error))
+        .value();
+}
+/// IM6's reaction force (N) of a joint's impulse (N s) over the substep of rate inv_h (s^-1).
+inline Vec2d reaction_force(Vec2d impulse, double inv_h) {
+    return plain(m::im6::reaction(typed<u::Impulse>(impulse), u::from_value<u::Rate>(inv_h)));
+}
+inline double reaction_force(double impulse, double inv_h) {
+    return m::im6::reaction(u::from_value<u::Impulse>(impulse), u::from_value<u::Rate>(inv_h))
+        .value();
+}
+/// IM6's reaction torque (N m) of a joint's angular impulse (N m s).
+inline double reaction_torque(double angular_impulse, double inv_h) {
+    return m::im6::reaction(m::dd22::AngularImpulse::from_value(angular_impulse),
+                            u::from_value<u::Rate>(inv_h))
+        .value();
+}
+/// DD21's bound F_max h on a joint's impulse accumulated in a substep h (N s), and DD23's (the
+/// same).
+inline double force_impulse_bound(double max_force, double h) {
+    return m::dd21::impulse_bound(u::from_value<u::Force>(max_force), u::from_value<u::Time>(h))
+        .value();
+}
+inline double axial_force_impulse_bound(double max_force, double h) {
+    return m::dd23::impulse_bound(u::from_value<u::Force>(max_force), u::from_value<u::Time>(h))
+        .value();
+}
+/// DD22's bound tau_max h on a motor's angular impulse accumulated in a substep h (N m s).
+inline double torque_impulse_bound(double max_torque, double h) {
+    return m::dd22::impulse_bound(u::from_value<u::Torque>(max_torque), u::from_value<u::Time>(h))
+        .value();
+}
+
+/// IM7's target, as a joint's one-sided limit takes it: the limit `c` (>= 0 inside) ahead of
+/// the bound closes within the substep h (speculative), a bound passed is pulled back at the
+/// softness' bias rate (soft) or held (the relax, soft false); no slop, no cap. c and the
+/// target are a length and a velocity (m, m s^-1) or an angle and an angular velocity.
+struct LimitTarget {
+    double velocity = 0.0, mass_scale = 1.0, impulse_scale = 0.0;
+};
+template <class Gap>
+inline LimitTarget limit_target(double c, const Softness& softness, double h, bool soft) {
+    using Vel = decltype(Gap{} / u::Time{});
+    const Gap gap = Gap::from_value(c), none{};
+    const Vel uncapped = Vel::from_value(std::numeric_limits<double>::infinity());
+    const u::Time step = u::from_value<u::Time>(h);
+    const u::Rate rate = u::from_value<u::Rate>(softness.bias_rate);
+    const auto t = soft ? m::im7::target_velocity<true>(gap, step, rate, softness.mass_scale,
+                                                        softness.impulse_scale, none, uncapped)
+                        : m::im7::target_velocity<false>(gap, step, rate, softness.mass_scale,
+                                                         softness.impulse_scale, none, uncapped);
+    return {t.velocity.value(), t.mass_scale, t.impulse_scale};
 }
 
 // DD19, the revolute joint's pin, on one pair of solver bodies (joints are solved one by one).
@@ -365,7 +478,69 @@ inline double clamp_axial_impulse(double accumulated, double max) {
         .value();
 }
 
-/// The four adapters the contact iteration calls, as one type it is instantiated with
+// DD24-DD26: the weld's angle, the wheel's line, the motor joint's rows.
+
+/// DD24's angular impulse (N m s) of a weld from the joint speed and the angle error, in IM6's
+/// soft form with softness s (the relax: rigid on the speed alone).
+inline double weld_angular_impulse(const SolverBody& a, const SolverBody& b, double speed,
+                                   double angle_error, const Softness& s, bool use_bias,
+                                   double accumulated) {
+    return m::dd24::angular_impulse(
+               inverse_inertia(a), inverse_inertia(b), u::from_value<u::AngularVelocity>(speed),
+               u::from_value<u::Angle>(angle_error),
+               {u::from_value<u::Rate>(s.bias_rate), s.mass_scale, s.impulse_scale}, use_bias,
+               m::dd22::AngularImpulse::from_value(accumulated))
+        .value();
+}
+/// DD25's impulse (N s) across a wheel's axis from the line's rate and error and the moment
+/// arms of a_perp, in IM6's soft form with softness s (the relax: rigid on the rate alone).
+inline double wheel_line_impulse(const SolverBody& a, const SolverBody& b, double perp_arm_a,
+                                 double perp_arm_b, double rate, double line_error,
+                                 const Softness& s, bool use_bias, double accumulated) {
+    return m::dd25::line_impulse(
+               inverse_inertia(a), inverse_inertia(b), u::from_value<u::Length>(perp_arm_a),
+               u::from_value<u::Length>(perp_arm_b), u::from_value<u::Velocity>(rate),
+               u::from_value<u::Length>(line_error),
+               {u::from_value<u::Rate>(s.bias_rate), s.mass_scale, s.impulse_scale}, use_bias,
+               u::from_value<u::Impulse>(accumulated))
+        .value();
+}
+/// DD26's correction rate c / h (s^-1).
+inline double correction_rate(double correction, double h) {
+    return m::dd26::correction_rate(correction, u::from_value<u::Time>(h)).value();
+}
+/// DD26's angular row: the accumulated angular impulse after one iteration (N m s).
+inline double motor_angular_update(const SolverBody& a, const SolverBody& b, double speed,
+                                   double angle_error, double rate, double max_torque, double h,
+                                   double accumulated) {
+    return m::dd26::angular_update(
+               inverse_inertia(a), inverse_inertia(b), u::from_value<u::AngularVelocity>(speed),
+               u::from_value<u::Angle>(angle_error), u::from_value<u::Rate>(rate),
+               u::from_value<u::Torque>(max_torque), u::from_value<u::Time>(h),
+               m::dd22::AngularImpulse::from_value(accumulated))
+        .value();
+}
+/// DD26's linear row: the accumulated impulse after one iteration (N s).
+inline Vec2d motor_linear_update(const SolverBody& a, Vec2d r_a, const SolverBody& b, Vec2d r_b,
+                                 Vec2d velocity_error, Vec2d position_error, double rate,
+                                 double max_force, double h, Vec2d accumulated) {
+    return plain(m::dd26::linear_update(
+        inverse_inertia(a), inverse_inertia(b), typed<u::Length>(r_a), typed<u::Length>(r_b),
+        typed<u::Velocity>(velocity_error), typed<u::Length>(position_error),
+        u::from_value<u::Rate>(rate), u::from_value<u::Force>(max_force), u::from_value<u::Time>(h),
+        typed<u::Impulse>(accumulated)));
+}
+
+/// IM7's target of a contact point (V: double or a pack) and the scales its impulse takes.
+template <class V> struct Target {
+    V target{};
+    V mass_scale{};
+    V impulse_scale{};
+};
+/// IM7's two impulses of a two-point manifold (V: double or a pack).
+template <class V> struct TwoPointSolution { V x1{}, x2{}; };
+
+/// The adapters the contact iteration calls, as one type it is instantiated with
 /// (contact_iteration.hpp's Model parameter).
 struct Model {
     template <class V> static V impulse_to_reach(V vn, V target, V effective_mass) {
@@ -382,6 +557,32 @@ struct Model {
     template <class Body, class V = value_of<Body>>
     static void apply_impulse(Body& a, Body& b, V arm_a, V arm_b, u::Vec2<V> dir, V lambda) {
         bridge::apply_impulse(a, b, arm_a, arm_b, dir, lambda);
+    }
+    /// IM7's target for separation s (m) in the soft iteration (soft) or the relax.
+    template <bool soft, class V> static Target<V> target(V s, const ContactSolverSettings& st) {
+        const auto t = m::im7::target_velocity<soft>(
+            typed_value<u::Length>(s), typed_value<u::Rate>(broadcast<V>(st.inv_h)),
+            typed_value<u::Rate>(broadcast<V>(st.softness.bias_rate)),
+            broadcast<V>(st.softness.mass_scale), broadcast<V>(st.softness.impulse_scale),
+            typed_value<u::Length>(broadcast<V>(st.linear_slop)),
+            typed_value<u::Velocity>(broadcast<V>(st.push_max_velocity)));
+        return {t.velocity.value(), t.mass_scale, t.impulse_scale};
+    }
+    /// IM7's two-point impulses from K (k11, k12, k22 in kg^-1, its inverse in kg), the points'
+    /// effective masses m1, m2, velocities vn1, vn2, targets t1, t2 and accumulated impulses.
+    template <class V>
+    static TwoPointSolution<V> two_point_impulses(V k11, V k12, V k22, V inv11, V inv12, V inv22,
+                                                  V m1, V m2, V vn1, V vn2, V t1, V t2, V x1,
+                                                  V x2) {
+        const m::im7::PairMass<V> K{
+            typed_value<u::InverseMass>(k11), typed_value<u::InverseMass>(k12),
+            typed_value<u::InverseMass>(k22), typed_value<u::Mass>(inv11),
+            typed_value<u::Mass>(inv12),      typed_value<u::Mass>(inv22)};
+        const m::im7::PairImpulses<V> x = m::im7::two_point_impulses(
+            K, typed_value<u::Mass>(m1), typed_value<u::Mass>(m2), typed_value<u::Velocity>(vn1),
+            typed_value<u::Velocity>(vn2), typed_value<u::Velocity>(t1),
+            typed_value<u::Velocity>(t2), typed_value<u::Impulse>(x1), typed_value<u::Impulse>(x2));
+        return {x.x1.value(), x.x2.value()};
     }
 };
 

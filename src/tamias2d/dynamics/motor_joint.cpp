@@ -19,21 +19,19 @@ void solve_motor(Joint& j, std::span<SolverBody> bodies, double h, bool use_bias
     SolverBody& b = bodies[j.solver_b];
     // DD26: each error asks for the velocity that removes the fraction `correction_factor` of
     // it per substep; the accumulated impulses are bounded by the largest torque and force.
-    const double rate = j.correction_factor / h;
-    const double rhs_angle = bridge::joint_speed(a, b) + rate * current_joint_angle(j, a, b);
-    const double lambda = bridge::angular_impulse(a, b, rhs_angle, 1.0, 0.0, j.angular_impulse);
+    const double rate = bridge::correction_rate(j.correction_factor, h);
     const double angular =
-        bridge::clamp_angular_impulse(j.angular_impulse + lambda, j.max_torque * h);
+        bridge::motor_angular_update(a, b, bridge::joint_speed(a, b), current_joint_angle(j, a, b),
+                                     rate, j.max_torque, h, j.angular_impulse);
     bridge::apply_angular_impulse(a, b, angular - j.angular_impulse);
     j.angular_impulse = angular;
 
     const Vec2d r_a = anchor_a(j);
     const Vec2d r_b = anchor_b(j);
     const Vec2d c = bridge::pin_position_error(j.center_offset + (b.dp - a.dp), r_a, r_b);
-    const Vec2d rhs = bridge::pin_velocity_error(a, r_a, b, r_b) + rate * c;
-    const Vec2d P = bridge::pin_impulse(a, r_a, b, r_b, rhs, 1.0, 0.0, j.linear_impulse);
     const Vec2d old = j.linear_impulse;
-    j.linear_impulse = bridge::clamp_impulse(old + P, j.max_force * h);
+    j.linear_impulse = bridge::motor_linear_update(
+        a, r_a, b, r_b, bridge::pin_velocity_error(a, r_a, b, r_b), c, rate, j.max_force, h, old);
     bridge::apply_pin_impulse(a, r_a, b, r_b, j.linear_impulse - old);
 }
 

@@ -30,8 +30,8 @@ void solve_prismatic(Joint& j, std::span<SolverBody> bodies, const Softness& rig
         const double v = bridge::axial_velocity_error(a, l.arm_a, b, l.arm_b, f.axis);
         const double lambda = bridge::axial_impulse(a, l.arm_a, b, l.arm_b, v - j.motor_speed, 1.0,
                                                     0.0, j.motor_impulse);
-        const double updated =
-            bridge::clamp_axial_impulse(j.motor_impulse + lambda, j.max_motor * h);
+        const double updated = bridge::clamp_axial_impulse(
+            j.motor_impulse + lambda, bridge::axial_force_impulse_bound(j.max_motor, h));
         bridge::apply_axial_impulse(a, l.arm_a, b, l.arm_b, f.axis, updated - j.motor_impulse);
         j.motor_impulse = updated;
     }
@@ -44,8 +44,9 @@ void solve_prismatic(Joint& j, std::span<SolverBody> bodies, const Softness& rig
     double rhs_angle = bridge::joint_speed(a, b);
     double mass_scale = 1.0, impulse_scale = 0.0;
     if (use_bias) {
-        rhs_perp += rigid.bias_rate * l.perpendicular;
-        rhs_angle += rigid.bias_rate * current_joint_angle(j, a, b);
+        rhs_perp = bridge::biased_error(rhs_perp, rigid.bias_rate, l.perpendicular);
+        rhs_angle =
+            bridge::biased_angular_error(rhs_angle, rigid.bias_rate, current_joint_angle(j, a, b));
         mass_scale = rigid.mass_scale;
         impulse_scale = rigid.impulse_scale;
     }

@@ -61,7 +61,7 @@ bool restitute(ContactConstraint& c, std::span<SolverBody> bodies,
     SolverBody& a = bodies[c.body_a];
     SolverBody& b = bodies[c.body_b];
     if (c.count == 2 && c.invertible && pushed[0] && pushed[1]) {
-        const TwoPointSolution<double> x =
+        const bridge::TwoPointSolution<double> x =
             iteration::block_update(c, a, b, target[0], target[1], c.points[0].total_normal_impulse,
                                     c.points[1].total_normal_impulse);
         // Both deltas applied from the same state: exact for the linear system.

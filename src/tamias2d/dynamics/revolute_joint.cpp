@@ -18,9 +18,9 @@ void solve_revolute(Joint& j, std::span<SolverBody> bodies, const Softness& soft
     SolverBody& b = bodies[j.solver_b];
     if (j.enable_spring && use_bias) {
         // DD22's spring: the joint angle pulled to 0 with the spring's own softness.
-        const Softness soft = make_softness(j.hertz, j.damping_ratio, h);
-        const double rhs =
-            bridge::joint_speed(a, b) + soft.bias_rate * current_joint_angle(j, a, b);
+        const Softness soft = make_joint_softness(j.hertz, j.damping_ratio, h);
+        const double rhs = bridge::biased_angular_error(bridge::joint_speed(a, b), soft.bias_rate,
+                                                        current_joint_angle(j, a, b));
         const double lambda = bridge::angular_impulse(a, b, rhs, soft.mass_scale,
                                                       soft.impulse_scale, j.spring_impulse);
         j.spring_impulse += lambda;

@@ -1,8 +1,10 @@
-// Soft constraint coefficients (Catto, "Solver2D" / "Soft Step", 2024): a contact behaves like
-// a damped spring of stiffness `hertz` and `damping_ratio`, solved implicitly over a substep h,
-// which removes overlap smoothly instead of Baumgarte's energy-adding kicks.
+// Soft constraint coefficients (Catto, "Solver2D" / "Soft Step", 2024): a contact (IM7) or a
+// joint (IM6) behaves like a damped spring of stiffness `hertz` and `damping_ratio`, solved
+// implicitly over a substep h, which removes overlap smoothly instead of Baumgarte's
+// energy-adding kicks.
 #pragma once
 
+#include "tamias2d/model/im6_motion_with_joints.hpp"
 #include "tamias2d/model/im7_soft_contact.hpp"
 
 namespace tamias2d {
@@ -22,10 +24,27 @@ inline Softness make_softness(double hertz, double damping_ratio, double h) {
     return {s.bias_rate.value(), s.mass_scale.value(), s.impulse_scale.value()};
 }
 
+/// IM6's coefficients of a joint's spring (the same as IM7's), unwrapped; once per step and joint.
+inline Softness make_joint_softness(double hertz, double damping_ratio, double h) {
+    namespace u = tamias2d::units;
+    const model::im6::Softness s = model::im6::softness(
+        u::from_value<u::Rate>(hertz), u::from_value<u::Dimensionless>(damping_ratio),
+        u::from_value<u::Time>(h));
+    return {s.bias_rate.value(), s.mass_scale.value(), s.impulse_scale.value()};
+}
+
 /// IM7's frequency cap: a quarter of the substep rate (Hz).
 inline double capped_frequency(double hertz, int substeps, double dt) {
     namespace u = tamias2d::units;
     return model::im7::frequency(u::from_value<u::Rate>(hertz), substeps,
+                                 u::from_value<u::Time>(dt))
+        .value();
+}
+
+/// IM6's frequency cap of the joints' spring: the contacts' (Hz).
+inline double capped_joint_frequency(double hertz, int substeps, double dt) {
+    namespace u = tamias2d::units;
+    return model::im6::frequency(u::from_value<u::Rate>(hertz), substeps,
                                  u::from_value<u::Time>(dt))
         .value();
 }

@@ -102,8 +102,10 @@ void StepSolver::prepare_bodies(const BodyStore& store, const std::vector<Load>&
         }
         if (any_damped_) {
             const BodySettings& set = store.settings[i];
-            linear_decay_.push_back(b.damped ? bridge::decay_factor(set.linear_damping, h) : 1.0);
-            angular_decay_.push_back(b.damped ? bridge::decay_factor(set.angular_damping, h) : 1.0);
+            linear_decay_.push_back(b.damped ? bridge::linear_decay_factor(set.linear_damping, h)
+                                             : 1.0);
+            angular_decay_.push_back(b.damped ? bridge::angular_decay_factor(set.angular_damping, h)
+                                              : 1.0);
         }
     }
 }
@@ -172,9 +174,10 @@ void StepSolver::prepare_bodies_in_blocks(const BodyStore& store, const std::vec
                 angular_accelerations_[s] = acc.alpha;
                 if (any_damped_) {
                     const BodySettings& set = store.settings[i];
-                    linear_decay_[s] = b.damped ? bridge::decay_factor(set.linear_damping, h) : 1.0;
+                    linear_decay_[s] =
+                        b.damped ? bridge::linear_decay_factor(set.linear_damping, h) : 1.0;
                     angular_decay_[s] =
-                        b.damped ? bridge::decay_factor(set.angular_damping, h) : 1.0;
+                        b.damped ? bridge::angular_decay_factor(set.angular_damping, h) : 1.0;
                 }
             }
         }
@@ -425,8 +428,8 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
     const double h = dt / n;
     std::vector<Joint>& joints = joint_store.joints;
     // IM6: the joints' soft bias, capped like the contacts' at a quarter of the substep rate.
-    const Softness joint_softness =
-        make_softness(capped_frequency(def.joint_hertz, n, dt), def.joint_damping_ratio, h);
+    const Softness joint_softness = make_joint_softness(
+        capped_joint_frequency(def.joint_hertz, n, dt), def.joint_damping_ratio, h);
     // The touching manifolds in creation order, as the colouring sees them; those that can
     // bounce get a slot for the restitution pass's copy, also in creation order.
     const std::uint32_t bounce_count = list_edges(contacts, tasks);
@@ -666,7 +669,7 @@ void StepSolver::write_back(BodyStore& store, ShapeStore& shape_store, const Wor
                 reach = std::max(reach, k.radius + std::abs(k.center.x - b.local_center.x) +
                                             std::abs(k.center.y - b.local_center.y));
             }
-            fast = std::sqrt(dp2) + std::abs(sb.dq) * reach > seen;
+            fast = bridge::motion_bound(std::sqrt(dp2), std::abs(sb.dq), reach) > seen;
         }
         std::uint8_t done = 0;
         if (fast) {

@@ -21,13 +21,14 @@ void solve_target(Joint& j, std::span<SolverBody> bodies, double h, bool use_bia
     SolverBody& b = bodies[j.solver_b];
     SolverBody world{};
     const Vec2d r = anchor_b(j);
-    const Softness soft = make_softness(j.hertz, j.damping_ratio, h);
+    const Softness soft = make_joint_softness(j.hertz, j.damping_ratio, h);
     const Vec2d c = bridge::target_position_error(j.center_b + b.dp, r, j.target);
-    const Vec2d rhs = bridge::pin_velocity_error(world, {}, b, r) + soft.bias_rate * c;
+    const Vec2d rhs =
+        bridge::biased_error(bridge::pin_velocity_error(world, {}, b, r), soft.bias_rate, c);
     const Vec2d P = bridge::pin_impulse(world, {}, b, r, rhs, soft.mass_scale, soft.impulse_scale,
                                         j.linear_impulse);
     const Vec2d old = j.linear_impulse;
-    j.linear_impulse = bridge::clamp_impulse(old + P, j.max_force * h);
+    j.linear_impulse = bridge::clamp_impulse(old + P, bridge::force_impulse_bound(j.max_force, h));
     bridge::apply_pin_impulse(world, {}, b, r, j.linear_impulse - old);
 }
 

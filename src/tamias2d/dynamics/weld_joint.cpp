@@ -19,22 +19,18 @@ void solve_weld(Joint& j, std::span<SolverBody> bodies, const Softness& rigid, d
     // A soft part is a spring (hertz > 0): its own softness, and no relax, which would undo it.
     const bool soft_angle = j.angular_hertz > 0.0, soft_pin = j.hertz > 0.0;
     if (use_bias || !soft_angle) {
+        // DD24: the angle first, the point (DD19) last.
         const Softness s =
-            soft_angle ? make_softness(j.angular_hertz, j.angular_damping_ratio, h) : rigid;
-        double rhs = bridge::joint_speed(a, b);
-        double mass_scale = 1.0, impulse_scale = 0.0;
-        if (use_bias) {
-            rhs += s.bias_rate * current_joint_angle(j, a, b);
-            mass_scale = s.mass_scale;
-            impulse_scale = s.impulse_scale;
-        }
-        const double lambda =
-            bridge::angular_impulse(a, b, rhs, mass_scale, impulse_scale, j.angular_impulse);
+            soft_angle ? make_joint_softness(j.angular_hertz, j.angular_damping_ratio, h) : rigid;
+        const double lambda = bridge::weld_angular_impulse(a, b, bridge::joint_speed(a, b),
+                                                           current_joint_angle(j, a, b), s,
+                                                           use_bias, j.angular_impulse);
         j.angular_impulse += lambda;
         bridge::apply_angular_impulse(a, b, lambda);
     }
     if (use_bias || !soft_pin)
-        solve_pin(j, a, b, soft_pin ? make_softness(j.hertz, j.damping_ratio, h) : rigid, use_bias);
+        solve_pin(j, a, b, soft_pin ? make_joint_softness(j.hertz, j.damping_ratio, h) : rigid,
+                  use_bias);
 }
 
 } // namespace tamias2d

@@ -30,17 +30,12 @@ void solve_wheel(Joint& j, std::span<SolverBody> bodies, const Softness& rigid, 
         solve_axial_spring(j, a, b, l.arm_a, l.arm_b, f.axis, l.translation, h);
     if (j.enable_limit)
         solve_axial_limits(j, a, b, l.arm_a, l.arm_b, f.axis, l.translation, rigid, h, use_bias);
-    // The wheel kept on the line (DD23's line constraint alone: the wheel turns freely).
+    // The wheel kept on the line (DD25: DD23's line constraint alone, the wheel turns freely).
     const Vec2d perp = left_perp(f.axis);
-    double rhs = bridge::axial_velocity_error(a, l.perp_arm_a, b, l.perp_arm_b, perp);
-    double mass_scale = 1.0, impulse_scale = 0.0;
-    if (use_bias) {
-        rhs += rigid.bias_rate * l.perpendicular;
-        mass_scale = rigid.mass_scale;
-        impulse_scale = rigid.impulse_scale;
-    }
-    const double lambda = bridge::axial_impulse(a, l.perp_arm_a, b, l.perp_arm_b, rhs, mass_scale,
-                                                impulse_scale, j.perp_impulse);
+    const double lambda = bridge::wheel_line_impulse(
+        a, b, l.perp_arm_a, l.perp_arm_b,
+        bridge::axial_velocity_error(a, l.perp_arm_a, b, l.perp_arm_b, perp), l.perpendicular,
+        rigid, use_bias, j.perp_impulse);
     j.perp_impulse += lambda;
     bridge::apply_axial_impulse(a, l.perp_arm_a, b, l.perp_arm_b, perp, lambda);
 }

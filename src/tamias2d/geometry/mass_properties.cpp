@@ -6,6 +6,7 @@
 
 #include "tamias2d/errors.hpp"
 #include "tamias2d/math/vec2d.hpp"
+#include "tamias2d/model/dcx_shape_non_degenerate_shapes.hpp"
 #include "tamias2d/model/dd01_center_of_mass.hpp"
 #include "tamias2d/model/dd14_moment_of_inertia.hpp"
 #include "tamias2d/model/dd30_capsule_mass.hpp"
@@ -16,6 +17,7 @@ namespace {
 namespace dd01 = model::dd01;
 namespace dd14 = model::dd14;
 namespace dd30 = model::dd30;
+namespace dcx_shape = model::dcx_shape;
 using units::from_value;
 using units::Length;
 using units::Mass;
@@ -46,11 +48,9 @@ double area(const Circle& c) {
     return std::numbers::pi * c.radius * c.radius;
 }
 
+/// \srs{DCX_shape} a polygon's area
 double area(const Polygon& p) {
-    double twice = 0.0;
-    for (int i = 1; i + 1 < p.count; ++i)
-        twice += cross(p.vertices[i] - p.vertices[0], p.vertices[i + 1] - p.vertices[0]);
-    return 0.5 * twice;
+    return dcx_shape::polygon_area(p.vertices.data(), std::size_t(p.count)).value();
 }
 
 /// \srs{DD30} a capsule's area
@@ -87,7 +87,7 @@ MassData compute_mass(const Polygon& p, double density) {
     for (int i = 1; i + 1 < p.count; ++i) {
         const Vec2d e1 = p.vertices[i] - origin;
         const Vec2d e2 = p.vertices[i + 1] - origin;
-        const double m = weight * 0.5 * cross(e1, e2);
+        const double m = weight * dcx_shape::triangle_area(metres(e1), metres(e2)).value();
         parts[n++] = {kg(m), metres(Vec2d{(e1.x + e2.x) / 3.0, (e1.y + e2.y) / 3.0})};
     }
     /// \srs{DD1} centre of mass of the fan
@@ -103,7 +103,7 @@ MassData compute_mass(const Polygon& p, double density) {
     for (int i = 0; i < p.count; ++i) {
         const Vec2d a = p.vertices[i] - center;
         const Vec2d b = p.vertices[(i + 1) % p.count] - center;
-        const double m = density * 0.5 * cross(a, b);
+        const double m = density * dcx_shape::triangle_area(metres(a), metres(b)).value();
         mass += m;
         /// \srs{DD14} triangle (centre, a, b) about the centre
         inertia += dd14::triangle_about_vertex(kg(m), metres(a), metres(b)).value();

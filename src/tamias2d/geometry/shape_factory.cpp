@@ -8,6 +8,7 @@
 #include "tamias2d/errors.hpp"
 #include "tamias2d/geometry/mass_properties.hpp"
 #include "tamias2d/math/vec2d.hpp"
+#include "tamias2d/model/dcx_shape_non_degenerate_shapes.hpp"
 
 namespace tamias2d {
 namespace {
@@ -64,6 +65,13 @@ Polygon make_box(double half_w, double half_h, Vec2d center, double angle) {
     }
     p.centroid = center;
     return p;
+}
+
+/// \srs{DCX_shape} \srs{DCX_finite} as make_box, the sizes named as box_shape's caller gave them.
+Polygon make_box_of_size(double width, double height, Vec2d center, double angle) {
+    require_positive(width, "shape.width");
+    require_positive(height, "shape.height");
+    return make_box(0.5 * width, 0.5 * height, center, angle);
 }
 
 /// \srs{DCX_shape} convex, counter-clockwise, 3 to 8 vertices, positive area.
@@ -123,16 +131,13 @@ Polygon make_polygon(std::span<const Vec2d> points) {
     if (hull.size() < 3)
         throw ValidationError("polygon.hull_count", double(hull.size()),
                               "must be >= 3 (points are collinear)", "DCX_shape");
-    double twice_area = 0.0;
     double min_height = extent;
-    for (std::size_t i = 0, n = hull.size(); i < n; ++i) {
-        twice_area += cross(hull[i] - hull[0], hull[(i + 1) % n] - hull[0]);
+    for (std::size_t i = 0, n = hull.size(); i < n; ++i)
         min_height = std::min(min_height,
                               distance_to_line(hull[(i + n - 1) % n], hull[(i + 1) % n], hull[i]));
-    }
-    if (!(min_height >= tol) || !(twice_area > 2.0 * tol * extent))
-        throw ValidationError("polygon.area", 0.5 * twice_area, "must not be near zero",
-                              "DCX_shape");
+    const double area = model::dcx_shape::polygon_area(hull.data(), hull.size()).value();
+    if (!(min_height >= tol) || !(area > tol * extent))
+        throw ValidationError("polygon.area", area, "must not be near zero", "DCX_shape");
     if (hull.size() > std::size_t(max_polygon_vertices))
         throw ValidationError("polygon.hull_count", double(hull.size()),
                               "must be <= " + std::to_string(max_polygon_vertices), "DCX_shape");

@@ -16,6 +16,11 @@ namespace tamias2d {
 /// Throws ValidationError (DCX_shape, DCX_finite) for non-positive or non-finite input.
 Polygon make_box(double half_w, double half_h, Vec2d center = {}, double angle = 0.0);
 
+/// The same box from its full width and height (m), as box_shape takes them: a size that is
+/// not finite or not > 0 is reported as the caller gave it ("shape.width = 0"), not as the half
+/// extent make_box receives.
+Polygon make_box_of_size(double width, double height, Vec2d center = {}, double angle = 0.0);
+
 /// The convex hull of `points` (m, body frame). Points closer than a relative welding tolerance
 /// (1e-6 of the cloud's extent) are merged, and collinear points dropped. Throws
 /// ValidationError when an input is not finite (DCX_finite), or the hull has fewer than 3

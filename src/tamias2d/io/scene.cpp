@@ -21,6 +21,7 @@
 #include "tamias2d/errors.hpp"
 #include "tamias2d/io/chain_runs.hpp"
 #include "tamias2d/io/scene_generators.hpp"
+#include "tamias2d/math/sincos.hpp"
 #include "tamias2d/validation.hpp"
 #include "tamias2d/world.hpp"
 
@@ -37,7 +38,7 @@ double TimeFunction::operator()(double t) const {
     case Kind::constant:
         return value;
     case Kind::sinusoid:
-        return offset + amplitude * std::sin(omega * t + phase);
+        return offset + amplitude * math::sincos(omega * t + phase).sin; // the same bits everywhere
     case Kind::step:
         return t < time ? before : after;
     case Kind::ramp:

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "tamias2d/model/dd32_rotation.hpp"
 #include "tamias2d/vec2.hpp"
 
 namespace tamias2d {
@@ -12,7 +13,11 @@ namespace tamias2d {
 struct Rot {
     double c = 1.0;
     double s = 0.0;
-    static Rot from_angle(double phi) { return {std::cos(phi), std::sin(phi)}; }
+    /// \srs{DD32} R(phi), the model's (the project's own sincos, not the C library's).
+    static Rot from_angle(double phi) {
+        const model::dd32::Rotation r = model::dd32::rotation(units::from_value<units::Angle>(phi));
+        return {r.cos.value(), r.sin.value()};
+    }
 };
 
 constexpr Vec2d rotate(Rot q, Vec2d v) {

@@ -1,7 +1,10 @@
 #pragma once
 #include "tamias2d/model/dd08_collision_impulse.hpp"
 #include "tamias2d/model/dd09_chasles_theorem.hpp"
+#include "tamias2d/model/dd10_impulse.hpp"
 #include "tamias2d/model/im3_collision_response.hpp"
+#include "tamias2d/model/im6_motion_with_joints.hpp"
+#include "tamias2d/model/t2_newtons_third_law.hpp"
 #include "tamias2d/units/angle.hpp"
 #include "tamias2d/units/vec2.hpp"
 
@@ -48,17 +51,17 @@ inline Vec2<Impulse> impulse(PinMass K, Vec2<Velocity> rhs, Dimensionless mass_s
     const auto det = K.k11 * K.k22 - K.k12 * K.k12;
     const Vec2<Impulse> solved{(K.k22 * rhs.x - K.k12 * rhs.y) / det,
                                (K.k11 * rhs.y - K.k12 * rhs.x) / det};
-    return -(mass_scale * solved) - impulse_scale * accumulated;
+    return im6::soft_impulse(mass_scale, -solved, impulse_scale, accumulated);
 }
 
-/// \srs{DD19} P at the pin: +P on B, -P on A (T2); each velocity changes by P / m (DD10) and
-/// each angular velocity by r x P / I.
+/// \srs{DD19} P at the pin: +P on B, -P on A (T2); each velocity changes by P / m (DD10), each
+/// angular velocity by r x P / I (IM3's angular jump of the moment r x P).
 inline void apply(Velocities& A, Velocities& B, InverseInertia a, InverseInertia b,
                   Vec2<Length> r_A, Vec2<Length> r_B, Vec2<Impulse> P) {
-    A.v -= a.inv_m * P;
-    A.omega -= a.inv_I * per_radian(cross(r_A, P));
-    B.v += b.inv_m * P;
-    B.omega += b.inv_I * per_radian(cross(r_B, P));
+    B.v += dd10::velocity_change(P, b.inv_m);
+    A.v += t2::reaction(dd10::velocity_change(P, a.inv_m));
+    B.omega += im3::angular_velocity_change_of_moment(b.inv_I, cross(r_B, P));
+    A.omega += t2::reaction(im3::angular_velocity_change_of_moment(a.inv_I, cross(r_A, P)));
 }
 
 } // namespace tamias2d::model::dd19

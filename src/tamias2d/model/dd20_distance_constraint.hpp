@@ -4,6 +4,7 @@
 #include "tamias2d/model/dd08_collision_impulse.hpp"
 #include "tamias2d/model/dd09_chasles_theorem.hpp"
 #include "tamias2d/model/im3_collision_response.hpp"
+#include "tamias2d/model/im6_motion_with_joints.hpp"
 #include "tamias2d/units/angle.hpp"
 #include "tamias2d/units/vec2.hpp"
 
@@ -44,7 +45,7 @@ inline Velocity velocity_error(const Velocities& A, Length arm_A, const Velociti
 inline Impulse impulse(InverseInertia A, InverseInertia B, Length arm_A, Length arm_B, Velocity rhs,
                        Dimensionless mass_scale, Dimensionless impulse_scale, Impulse accumulated) {
     const InverseMass K = dd08::effective_mass_inverse(A, B, arm_A, arm_B);
-    return -(mass_scale * (rhs / K)) - impulse_scale * accumulated;
+    return im6::soft_impulse(mass_scale, -(rhs / K), impulse_scale, accumulated);
 }
 
 /// \srs{DD20} lambda n on B at its anchor and -lambda n on A (T2), as IM3 applies an impulse.

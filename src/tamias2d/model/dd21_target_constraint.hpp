@@ -9,6 +9,12 @@ inline Vec2<Length> position_error(Vec2<Length> center, Vec2<Length> r, Vec2<Len
     return (center + r) - target;
 }
 
+/// \srs{DD21} The bound F_max h on the impulse accumulated in a substep h: the impulse of the
+/// largest force over h (DD10's J = F dt). DD23's motor and DD26 bound theirs so too.
+inline Impulse impulse_bound(Force max_force, Time h) {
+    return max_force * h;
+}
+
 /// \srs{DD21} The accumulated impulse clamped to the length F_max h: the joint never pulls
 /// with more than its maximum force.
 inline Vec2<Impulse> clamp(Vec2<Impulse> accumulated, Impulse max_impulse) {

@@ -3,6 +3,8 @@
 
 #include "tamias2d/model/dd08_collision_impulse.hpp"
 #include "tamias2d/model/im3_collision_response.hpp"
+#include "tamias2d/model/im6_motion_with_joints.hpp"
+#include "tamias2d/model/t2_newtons_third_law.hpp"
 #include "tamias2d/units/angle.hpp"
 
 namespace tamias2d::model::dd22 {
@@ -33,7 +35,13 @@ inline AngularImpulse impulse(InverseInertia A, InverseInertia B, AngularVelocit
     const auto k = A.inv_I + B.inv_I;
     if (!(k > decltype(k){}))
         return AngularImpulse{};
-    return -(mass_scale * (rhs / k)) - impulse_scale * accumulated;
+    return im6::soft_impulse(mass_scale, AngularImpulse(-(rhs / k)), impulse_scale, accumulated);
+}
+
+/// \srs{DD22} The bound tau_max h on the motor's angular impulse accumulated in a substep h: the
+/// angular impulse of the largest torque over h.
+inline AngularImpulse impulse_bound(Torque max_torque, Time h) {
+    return max_torque * h;
 }
 
 /// \srs{DD22} The motor's accumulation bounded by tau_max h: [-max, max].
@@ -41,11 +49,12 @@ inline AngularImpulse clamp(AngularImpulse accumulated, AngularImpulse max) {
     return std::clamp(accumulated, -max, max);
 }
 
-/// \srs{DD22} +Lambda on B, -Lambda on A (T2 for torques): omega changes by Lambda / I (T4).
+/// \srs{DD22} +Lambda on B, -Lambda on A (T2 for torques): omega changes by Lambda / I (T4),
+/// IM3's angular jump.
 inline void apply(Velocities& A, Velocities& B, InverseInertia a, InverseInertia b,
                   AngularImpulse lambda) {
-    A.omega -= a.inv_I * lambda;
-    B.omega += b.inv_I * lambda;
+    A.omega += t2::reaction(im3::angular_velocity_change(a.inv_I, lambda));
+    B.omega += im3::angular_velocity_change(b.inv_I, lambda);
 }
 
 } // namespace tamias2d::model::dd22

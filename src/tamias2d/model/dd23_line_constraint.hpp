@@ -2,7 +2,9 @@
 #include <algorithm>
 
 #include "tamias2d/model/dd08_collision_impulse.hpp"
+#include "tamias2d/model/dd21_target_constraint.hpp"
 #include "tamias2d/model/dd22_angular_constraint.hpp"
+#include "tamias2d/model/im6_motion_with_joints.hpp"
 #include "tamias2d/units/angle.hpp"
 #include "tamias2d/units/vec2.hpp"
 
@@ -48,13 +50,20 @@ inline BlockImpulse block_impulse(InverseInertia A, InverseInertia B, Length per
     const auto k12 = A.inv_I * per_radian(perp_arm_A) + B.inv_I * per_radian(perp_arm_B);
     const auto k22 = A.inv_I + B.inv_I;
     if (!(k22 > decltype(k22){}))
-        return {-(mass_scale * (rhs_perp / k11)) - impulse_scale * accumulated.linear,
+        return {im6::soft_impulse(mass_scale, Impulse(-(rhs_perp / k11)), impulse_scale,
+                                  accumulated.linear),
                 AngularImpulse{}};
     const auto det = k11 * k22 - k12 * k12;
     const Impulse linear = (k22 * rhs_perp - k12 * rhs_angle) / det;
     const AngularImpulse angular = (k11 * rhs_angle - k12 * rhs_perp) / det;
-    return {-(mass_scale * linear) - impulse_scale * accumulated.linear,
-            -(mass_scale * angular) - impulse_scale * accumulated.angular};
+    return {im6::soft_impulse(mass_scale, -linear, impulse_scale, accumulated.linear),
+            im6::soft_impulse(mass_scale, -angular, impulse_scale, accumulated.angular)};
+}
+
+/// \srs{DD23} The bound F_max h on a motor's impulse along the axis accumulated in a substep h,
+/// as DD21 bounds its.
+inline Impulse impulse_bound(Force max_force, Time h) {
+    return dd21::impulse_bound(max_force, h);
 }
 
 /// \srs{DD23} A motor's accumulated impulse along the axis bounded by F_max h: [-max, max].

@@ -18,6 +18,21 @@ template <class V> struct VelocitiesOver {
 };
 using Velocities = VelocitiesOver<double>;
 
+/// \srs{IM3} The angular velocity jump of a body from an angular impulse L about its centre of
+/// mass (N m s rad^-1): L / I, with 1/I = 0 for a body that does not turn (T4 over the impulse).
+template <class V, class L>
+Over<AngularVelocity, V> angular_velocity_change(Over<InverseMomentOfInertia, V> inv_I, L angular) {
+    return inv_I * angular;
+}
+
+/// \srs{IM3} The same from the moment r x J of an impulse J applied at r from the centre of mass
+/// (N m s): (r x J / rad) / I, IM3's angular jump.
+template <class V, class M>
+Over<AngularVelocity, V> angular_velocity_change_of_moment(Over<InverseMomentOfInertia, V> inv_I,
+                                                           M moment) {
+    return angular_velocity_change(inv_I, per_radian(moment));
+}
+
 /// \srs{IM3} Applies a normal impulse j n at P to A and -j n to B (T2):
 /// v_A' = v_A + j n / m_A, v_B' = v_B - j n / m_B,
 /// omega_A' = omega_A + (r_AP x j n) / I_A, omega_B' = omega_B - (r_BP x j n) / I_B,
@@ -31,8 +46,8 @@ void apply_impulse(VelocitiesOver<V>& A, VelocitiesOver<V>& B, InverseInertiaOve
     const Vec2<Over<Impulse, V>> J = j * n;
     A.v += dd10::velocity_change(J, a.inv_m);
     B.v += t2::reaction(dd10::velocity_change(J, b.inv_m));
-    A.omega += a.inv_I * per_radian(j * arm_A);
-    B.omega += t2::reaction(b.inv_I * per_radian(j * arm_B));
+    A.omega += angular_velocity_change_of_moment(a.inv_I, j * arm_A);
+    B.omega += t2::reaction(angular_velocity_change_of_moment(b.inv_I, j * arm_B));
 }
 
 /// \srs{IM3} The same from the anchors r_AP, r_BP.

@@ -5,10 +5,11 @@
 // pattern), and whose handles are live, destroyed, stale, forged, null or a second world's.
 //
 // Oracle: the library's stated promises (docs/user-guide.md, "Errors" and "Handles"): no crash
-// and no sanitizer report; a refusal is a ValidationError (non-empty field and message) or an
-// InvalidHandle (non-empty message) and leaves World::state_hash() unchanged; after every
-// accepted call every body state, energy and momentum is finite, and a ray cast's result is
-// well formed. No finding is excused (docs/verification.md, "Findings (fixed)").
+// and no sanitizer report; a refusal is a ValidationError (non-empty field and message), an
+// InvalidHandle (non-empty message) or a WrongKind (non-empty subject and message) and leaves
+// World::state_hash() unchanged; after every accepted call every body state, energy and
+// momentum is finite, and a ray cast's result is well formed. No finding is excused
+// (docs/verification.md, "Findings (fixed)").
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -501,6 +502,9 @@ void check_refusal(const std::exception_ptr& error, std::uint64_t before,
     } catch (const InvalidHandle& e) {
         if (std::string(e.what()).empty())
             broken_promise("InvalidHandle with an empty message");
+    } catch (const WrongKind& e) { // a load on a body no load moves, a joint of another kind
+        if (e.subject.empty() || std::string(e.what()).empty())
+            broken_promise("WrongKind with an empty subject or message");
     } catch (const std::exception& e) {
         broken_promise(std::string("a refusal of another kind: ") + e.what());
     } catch (...) {

@@ -1,0 +1,153 @@
+// DD32: a body's rotation R(phi) = (cos phi, sin phi) from the project's own sincos
+// (model/dd32_rotation.hpp, math/sincos.hpp), within 1 ulp of the exact values.
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "support/trig_hard_arguments.hpp"
+#include "support/trig_reference.hpp"
+#include "tamias2d/model/dd32_rotation.hpp"
+#include "tamias2d/shape_def.hpp"
+#include "tamias2d/world.hpp"
+
+namespace utf = boost::unit_test;
+using namespace tamias2d;
+using tamias2d::test::LongSinCos;
+
+namespace {
+
+struct MaxError {
+    double sin = 0.0, sin_at = 0.0;
+    double cos = 0.0, cos_at = 0.0;
+};
+
+model::dd32::Rotation rotation(double phi) {
+    return model::dd32::rotation(units::from_value<units::Angle>(phi));
+}
+
+void accumulate(MaxError& m, double phi, const LongSinCos& ref) {
+    const model::dd32::Rotation r = rotation(phi);
+    const double es = test::ulp_error(r.sin.value(), ref.sin);
+    const double ec = test::ulp_error(r.cos.value(), ref.cos);
+    if (es > m.sin)
+        m.sin = es, m.sin_at = phi;
+    if (ec > m.cos)
+        m.cos = ec, m.cos_at = phi;
+}
+
+MaxError uniform(double bound, int count, std::uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(-bound, bound);
+    MaxError m;
+    for (int i = 0; i < count; ++i) {
+        const double phi = u(rng);
+        accumulate(m, phi, test::long_double_sincos(phi));
+    }
+    return m;
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(dd32_rotation)
+
+// Oracle: sin and cos in long double (x86-64's 64-bit significand: the C library's sinl and
+// cosl of the argument reduced in long double with pi/2 to 160 bits, tests/support/
+// trig_reference.hpp), about 2^-10 ulp of a double from the exact values. 2 x 10^5 random
+// orientations in [-pi, pi] (where bodies' orientations stay), 2 x 10^5 in [-2^20, 2^20], and
+// the double nearest to a multiple of pi/2 in each binade up to 2^31 with its two neighbours
+// (the reduction's hardest cases): every cos phi and sin phi within 1 ulp.
+BOOST_AUTO_TEST_CASE(within_one_ulp_of_long_double_sin_and_cos, *utf::label("DD32")) {
+    for (const auto& [bound, seed] : {std::pair{3.141592653589793, 11}, std::pair{0x1p20, 12}}) {
+        const MaxError m = uniform(bound, 200'000, static_cast<std::uint64_t>(seed));
+        BOOST_TEST(m.sin < 1.0, "[-" << bound << ", " << bound << "]: sin off by " << m.sin
+                                     << " ulp at " << std::hexfloat << m.sin_at);
+        BOOST_TEST(m.cos < 1.0, "[-" << bound << ", " << bound << "]: cos off by " << m.cos
+                                     << " ulp at " << std::hexfloat << m.cos_at);
+        BOOST_TEST_MESSAGE("[-" << bound << ", " << bound << "]: max " << m.sin << " ulp (sin), "
+                                << m.cos << " ulp (cos)");
+    }
+    MaxError hard;
+    for (double x : test::trig_hard_arguments) {
+        if (x >= 0x1p31)
+            break;
+        for (double phi : {x, std::nextafter(x, 0.0), std::nextafter(x, 2 * x), -x})
+            accumulate(hard, phi, test::long_double_sincos(phi));
+    }
+    BOOST_TEST(hard.sin < 1.0,
+               "sin off by " << hard.sin << " ulp at " << std::hexfloat << hard.sin_at);
+    BOOST_TEST(hard.cos < 1.0,
+               "cos off by " << hard.cos << " ulp at " << std::hexfloat << hard.cos_at);
+}
+
+// Oracle: sin and cos at 1400 bits (Boost.Multiprecision, its own pi and reduction). The engine
+// accepts orientations up to 1e24 (DCX_range), and the function is defined for every double:
+// the hardest argument of every binade from 1 to 2^1023 (0x1.6ac5b262ca1ffp+849 lies 2^-60.9
+// from a multiple of pi/2) and 500 random ones, log-uniform in [2^20, 2^1024), within 1 ulp.
+BOOST_AUTO_TEST_CASE(within_one_ulp_for_large_orientations, *utf::label("DD32")) {
+    std::vector<double> phis(std::begin(test::trig_hard_arguments),
+                             std::end(test::trig_hard_arguments));
+    std::mt19937_64 rng(13);
+    std::uniform_real_distribution<double> exponent(20.0, 1023.999);
+    for (int i = 0; i < 500; ++i)
+        phis.push_back((i % 2 ? -1.0 : 1.0) * std::exp2(exponent(rng)));
+    MaxError m;
+    for (double phi : phis)
+        accumulate(m, phi, test::multiprecision_sincos(phi));
+    BOOST_TEST(m.sin < 1.0, "sin off by " << m.sin << " ulp at " << std::hexfloat << m.sin_at);
+    BOOST_TEST(m.cos < 1.0, "cos off by " << m.cos << " ulp at " << std::hexfloat << m.cos_at);
+}
+
+// Oracle: the definitions. sin is odd and cos even, bit for bit (-0 included); R(0) = (1, 0)
+// exactly; an infinite or NaN angle has no rotation (NaN).
+BOOST_AUTO_TEST_CASE(odd_sine_even_cosine_and_special_values, *utf::label("DD32")) {
+    std::mt19937_64 rng(14);
+    std::uniform_real_distribution<double> u(-40.0, 40.0);
+    for (int i = 0; i < 10'000; ++i) {
+        const double phi = std::exp2(u(rng));
+        const model::dd32::Rotation p = rotation(phi);
+        const model::dd32::Rotation n = rotation(-phi);
+        BOOST_TEST(n.sin.value() == -p.sin.value());
+        BOOST_TEST(n.cos.value() == p.cos.value());
+    }
+    BOOST_TEST(rotation(0.0).cos.value() == 1.0);
+    BOOST_TEST(rotation(0.0).sin.value() == 0.0);
+    BOOST_TEST(!std::signbit(rotation(0.0).sin.value()));
+    BOOST_TEST(std::signbit(rotation(-0.0).sin.value()));
+    for (double bad :
+         {std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+          std::numeric_limits<double>::quiet_NaN()}) {
+        BOOST_TEST(std::isnan(rotation(bad).sin.value()));
+        BOOST_TEST(std::isnan(rotation(bad).cos.value()));
+    }
+}
+
+// Oracle: DD32's p = x + R(phi) p_B in long double (cos and sin at 1400 bits, rounded). A body
+// whose centre of mass lies off its origin (a box centred at (1.5, -0.5) in the body frame) is
+// placed at orientation phi: World::position, its centre of mass in the world, is the origin plus
+// the counter-clockwise rotation of the local centre, to the roundings of the products and sums (4
+// ulp of the largest term), for orientations up to 1e12 (DCX_range's input bound).
+BOOST_AUTO_TEST_CASE(engine_places_a_body_point_by_the_rotation, *utf::label("DD32")) {
+    for (double phi : {0.0, 0.3, -2.0, 3.9, 100.25, -1.0e6 + 0.7, 1.0e12}) {
+        World world;
+        BodyDef def;
+        def.type = BodyType::dynamic;
+        def.position = {2.0, 3.0};
+        def.angle = phi;
+        const BodyId body = world.create_body(def);
+        world.create_shape(body, box_shape(0.5, 0.25, {}, {1.5, -0.5}));
+        const Vec2d c = world.local_center(body);
+        const LongSinCos r = test::multiprecision_sincos(phi);
+        const long double x = 2.0L + r.cos * c.x - r.sin * c.y;
+        const long double y = 3.0L + r.sin * c.x + r.cos * c.y;
+        const Vec2d p = world.position(body);
+        const double tolerance = 4.0 * std::ldexp(1.0, -52) * 3.0; // 4 ulp of |origin| <= 3
+        BOOST_TEST(std::fabs(static_cast<long double>(p.x) - x) <= tolerance, "phi " << phi);
+        BOOST_TEST(std::fabs(static_cast<long double>(p.y) - y) <= tolerance, "phi " << phi);
+    }
+}
+
+BOOST_AUTO_TEST_SUITE_END()
