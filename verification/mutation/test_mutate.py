@@ -1,5 +1,7 @@
-"""The mutation tool's own test: which mutants a fragment of C++ yields (no build).
-Oracle: the mutants of each hand-written line, listed by hand."""
+"""The mutation tool's own test, without building the project: which mutants a fragment of C++
+yields, how they are judged, scored, sharded and merged (builds and tests mocked), the test
+runner on made-up executables and the restoring of a made-up CMake project's build. Each class
+names its oracle; the first: the mutants of each hand-written line, listed by hand."""
 import contextlib
 import io
 import json
