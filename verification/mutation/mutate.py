@@ -1129,79 +1129,9 @@ def merge(out_dir, files, survivors=SURVIVORS):
     return 0
 
 
-def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("out_dir", nargs="?")
-    ap.add_argument("--sample", type=int, default=20)
-    ap.add_argument("--seed", type=int, default=1)
-    ap.add_argument("--minutes", type=float, default=30.0)
-    ap.add_argument("--all", action="store_true", help="every mutant, no time box")
-    # One scratch per checkout: two checkouts syncing one scratch would build each other's trees.
-    ap.add_argument("--scratch", default=None,
-                    help="scratch copy and build (default /tmp/tamias-mutation-<uid>-<hash of "
-                         "the checkout's path>)")
-    ap.add_argument("--root", default=ROOT)
-    ap.add_argument("--test-timeout", type=int, default=300)
-    ap.add_argument("--list", action="store_true", help="print the mutants and stop")
-    ap.add_argument("--survivors", default=SURVIVORS, help="the judged survivors (JSON)")
-    ap.add_argument("--ids", help="judge these mutants (ids of --list, comma-separated) only")
-    ap.add_argument("--shard", metavar="I/N",
-                    help="judge the I-th (0 to N-1) of N disjoint shards of the chosen mutants "
-                         "and write OUT_DIR/mutation-shard-I-of-N.json")
-    ap.add_argument("--merge", nargs="+", metavar=("OUT_DIR", "FILE"),
-                    help="merge shards' results into OUT_DIR/mutation.json (no mutant is built)")
-    ap.add_argument("--coverage", nargs=2, metavar=("JSON", "HTML"),
-                    help="instrument the scratch build, run every test once on the unmutated "
-                         "sources and write gcovr's summary and pages before the mutants")
-    a = ap.parse_args(argv)
-    if a.scratch is None:
-        where = hashlib.sha1(os.path.abspath(a.root).encode()).hexdigest()[:8]
-        a.scratch = os.path.join("/tmp", f"tamias-mutation-{os.getuid()}-{where}")
-    if a.merge:
-        if a.out_dir or len(a.merge) < 2:
-            ap.error("--merge OUT_DIR FILE...")
-        return merge(a.merge[0], a.merge[1:], a.survivors)
-    if not a.out_dir:
-        ap.error("OUT_DIR is required")
-    shard = parse_shard(a.shard) if a.shard else None
-
-    muts = all_mutants(a.root)
-    if a.list:
-        try:
-            for m in muts:
-                if shard and shard_of(m, shard[1]) != shard[0]:
-                    continue
-                print(f"{m['id']:5d} {m['file']}:{m['line']} {m['op']}"
-                      + (f" (occurrence {m['occurrence']})" if m["occurrence"] > 1 else ""))
-            print(f"{len(muts)} mutants")
-        except BrokenPipeError:  # piped into head
-            pass
-        return 0
-    # A malformed or stale record stops the run before any build.
-    check_record(a.survivors, muts)
-    if a.ids:
-        by_id = {m["id"]: m for m in muts}
-        chosen = [by_id[int(x)] for x in a.ids.split(",") if x.strip()]
-        selection = {"mode": "ids", "ids": a.ids}
-    elif a.all:
-        chosen, selection = muts, {"mode": "all"}
-    else:
-        chosen = sample_of(muts, a.sample, a.seed)
-        selection = {"mode": "sample", "seed": a.seed, "sample": a.sample, "minutes": a.minutes}
-    if shard:
-        chosen = [m for m in chosen if shard_of(m, shard[1]) == shard[0]]
-    # Within each run of WINDOW sampled mutants, those of one file one after another: restoring
-    # the file and building its next mutant are then one rebuild, not two, while a time box
-    # still cuts the sample at a window's end, not after a few whole files.
-    chosen = [m for k in range(0, len(chosen), WINDOW)
-              for m in sorted(chosen[k:k + WINDOW], key=lambda m: (m["file"], m["line"], m["id"]))]
-    # One run per scratch: two runs in one copy would build each other's mutants.
-    os.makedirs(a.scratch, exist_ok=True)
-    lock = open(os.path.join(a.scratch, ".lock"), "w")
-    try:
-        fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
-    except OSError:
-        raise SystemExit(f"{a.scratch} is in use by another mutate.py run: pass --scratch DIR")
+def judge_run(a, muts, chosen, selection, shard):
+    """Builds the scratch, judges the chosen mutants (within the box, if any) and writes
+    mutation.json or the shard's file to a.out_dir; the exit status."""
     commit, dirty = commit_of(a.root)
     tree = tree_of(a.root)
     started = now_utc()
@@ -1296,6 +1226,90 @@ def main(argv=None):
         json.dump(doc, fh, indent=1)
     print("mutation: " + doc["summary"])
     return 3 if coverage_failed else 0
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("out_dir", nargs="?")
+    ap.add_argument("--sample", type=int, default=20)
+    ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--minutes", type=float, default=30.0)
+    ap.add_argument("--all", action="store_true", help="every mutant, no time box")
+    # One scratch per checkout: two checkouts syncing one scratch would build each other's trees.
+    ap.add_argument("--scratch", default=None,
+                    help="scratch copy and build (default /tmp/tamias-mutation-<uid>-<hash of "
+                         "the checkout's path>)")
+    ap.add_argument("--root", default=ROOT)
+    ap.add_argument("--test-timeout", type=int, default=300)
+    ap.add_argument("--list", action="store_true", help="print the mutants and stop")
+    ap.add_argument("--survivors", default=SURVIVORS, help="the judged survivors (JSON)")
+    ap.add_argument("--ids", help="judge these mutants (ids of --list, comma-separated) only")
+    ap.add_argument("--shard", metavar="I/N",
+                    help="judge the I-th (0 to N-1) of N disjoint shards of the chosen mutants "
+                         "and write OUT_DIR/mutation-shard-I-of-N.json")
+    ap.add_argument("--merge", nargs="+", metavar=("OUT_DIR", "FILE"),
+                    help="merge shards' results into OUT_DIR/mutation.json (no mutant is built)")
+    ap.add_argument("--coverage", nargs=2, metavar=("JSON", "HTML"),
+                    help="instrument the scratch build, run every test once on the unmutated "
+                         "sources and write gcovr's summary and pages before the mutants")
+    a = ap.parse_args(argv)
+    if a.scratch is None:
+        where = hashlib.sha1(os.path.abspath(a.root).encode()).hexdigest()[:8]
+        a.scratch = os.path.join("/tmp", f"tamias-mutation-{os.getuid()}-{where}")
+    if a.merge:
+        if a.out_dir or len(a.merge) < 2:
+            ap.error("--merge OUT_DIR FILE...")
+        return merge(a.merge[0], a.merge[1:], a.survivors)
+    if not a.out_dir:
+        ap.error("OUT_DIR is required")
+    shard = parse_shard(a.shard) if a.shard else None
+
+    muts = all_mutants(a.root)
+    if a.list:
+        try:
+            for m in muts:
+                if shard and shard_of(m, shard[1]) != shard[0]:
+                    continue
+                print(f"{m['id']:5d} {m['file']}:{m['line']} {m['op']}"
+                      + (f" (occurrence {m['occurrence']})" if m["occurrence"] > 1 else ""))
+            if shard:
+                print(f"{sum(shard_of(m, shard[1]) == shard[0] for m in muts)} of "
+                      f"{len(muts)} mutants in shard {shard[0]}/{shard[1]}")
+            else:
+                print(f"{len(muts)} mutants")
+        except BrokenPipeError:  # piped into head
+            pass
+        return 0
+    # A malformed or stale record stops the run before any build.
+    check_record(a.survivors, muts)
+    if a.ids:
+        by_id = {m["id"]: m for m in muts}
+        chosen = [by_id[int(x)] for x in a.ids.split(",") if x.strip()]
+        selection = {"mode": "ids", "ids": a.ids}
+    elif a.all:
+        chosen, selection = muts, {"mode": "all"}
+    else:
+        chosen = sample_of(muts, a.sample, a.seed)
+        selection = {"mode": "sample", "seed": a.seed, "sample": a.sample, "minutes": a.minutes}
+    if shard:
+        chosen = [m for m in chosen if shard_of(m, shard[1]) == shard[0]]
+    # Within each run of WINDOW sampled mutants, those of one file one after another: restoring
+    # the file and building its next mutant are then one rebuild, not two, while a time box
+    # still cuts the sample at a window's end, not after a few whole files.
+    chosen = [m for k in range(0, len(chosen), WINDOW)
+              for m in sorted(chosen[k:k + WINDOW], key=lambda m: (m["file"], m["line"], m["id"]))]
+    # One run per scratch: two runs in one copy would build each other's mutants.
+    os.makedirs(a.scratch, exist_ok=True)
+    lock = open(os.path.join(a.scratch, ".lock"), "w")
+    try:
+        fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
+    except OSError:
+        lock.close()
+        raise SystemExit(f"{a.scratch} is in use by another mutate.py run: pass --scratch DIR")
+    try:
+        return judge_run(a, muts, chosen, selection, shard)
+    finally:
+        lock.close()
 
 
 if __name__ == "__main__":
