@@ -960,8 +960,12 @@ def make_doc(results, judgements, *, population, chosen, selection, complete, pr
                        "copy, judged by the CTest entries labelled with the SRS items the mutated "
                        "file's \\srs tags, or those of the library headers it includes, name (a "
                        "file that reaches no tag: those of the files that include it), and by the "
-                       "golden state hashes (tests/determinism); a survivor is judged again in an "
-                       "ASan and UBSan build, where a sanitizer report kills it. Score: "
+                       "golden state hashes (tests/determinism); "
+                       + ("a survivor is judged again in an ASan and UBSan build, where a "
+                          "sanitizer report kills it" if selection.get("sanitizer", True) else
+                          "survivors not judged again in an ASan and UBSan build (--no-sanitizer: "
+                          "a survivor counts against the score, which can only be lower for it)")
+                       + ". Score: "
                        "killed / (killed + survivors not judged equivalent in "
                        "verification/mutation/survivors.json), with its 95 % Wilson interval; the "
                        f"{100 * FLOOR:.0f} % floor applies to the interval's lower bound for a "
@@ -1181,7 +1185,7 @@ def judge_run(a, muts, chosen, selection, shard):
                                                          unmutated=unmutated)
         killed_by = "tests" if verdict == "killed" else None
         prep_before = sanitizer.seconds
-        if verdict == "survived":
+        if verdict == "survived" and a.sanitizer:
             # The second judge: the same tests in the ASan and UBSan build.
             killed, log, b2, t2, san_failed = sanitizer.judge(m, entries, a.test_timeout)
             b_secs, t_secs = b_secs + b2, t_secs + t2
@@ -1242,6 +1246,10 @@ def main(argv=None):
     ap.add_argument("--root", default=ROOT)
     ap.add_argument("--test-timeout", type=int, default=300)
     ap.add_argument("--list", action="store_true", help="print the mutants and stop")
+    # The sanitizer build's first build of a test executable takes minutes to tens of minutes
+    # on 2 cores; a short box (the main job's) leaves it out and counts survivors as survivors.
+    ap.add_argument("--no-sanitizer", dest="sanitizer", action="store_false",
+                    help="do not judge survivors again in the ASan and UBSan build")
     ap.add_argument("--survivors", default=SURVIVORS, help="the judged survivors (JSON)")
     ap.add_argument("--ids", help="judge these mutants (ids of --list, comma-separated) only")
     ap.add_argument("--shard", metavar="I/N",
@@ -1291,6 +1299,8 @@ def main(argv=None):
     else:
         chosen = sample_of(muts, a.sample, a.seed)
         selection = {"mode": "sample", "seed": a.seed, "sample": a.sample, "minutes": a.minutes}
+    if not a.sanitizer:
+        selection["sanitizer"] = False
     if shard:
         chosen = [m for m in chosen if shard_of(m, shard[1]) == shard[0]]
     # Within each run of WINDOW sampled mutants, those of one file one after another: restoring
