@@ -1,45 +1,57 @@
 #!/usr/bin/python3
-"""Mutation testing of the model layer and the dynamics: do the SRS-labelled tests notice when
-the code that realises an item is wrong?
+"""Mutation testing of the model layer and the dynamics: do the tests notice when the code that
+realises an item is wrong?
 
 Each mutant changes one spot of src/tamias2d/model/ or src/tamias2d/dynamics/: an arithmetic
 operator swapped (+ -, * /), a comparison turned (< <=, > >=, == !=), a numeric constant
 changed (c -> 2c, 0 -> 1), or an assignment statement removed. The mutant is built in a
-scratch copy of the repository with its own build directory (never the caller's), and the
-CTest entries labelled with the SRS items that the mutated file, or a library header it
-includes, names in its \\srs tags are run (a file that reaches no tag: those of the files that
-include it). A mutant is killed when they fail (or time out), survives when they pass, and is
-stillborn when it does not compile, not built when its objects come out bit for bit as the
-unmutated ones (a line of a #if branch this build skips): neither is counted in the score.
-The sample is ranked by a seeded hash of each mutant's file, line text and operator, so an
-edit elsewhere leaves it, and the judgements of its survivors, in place. A survivor is judged in
-survivors.json ("equivalent", argued, or "gap"); score = killed / (killed + survivors not
-judged equivalent).
+scratch copy of the repository with its own build directory (never the caller's) and judged
+by the CTest entries labelled with the SRS items that the mutated file, or a library header it
+includes, names in its \\srs tags (a file that reaches no tag: those of the files that include
+it), and by the golden state hashes of tests/determinism. A mutant is killed when they fail (or
+time out); one that passes is judged again in an ASan and UBSan build of the same copy, where a
+sanitizer report kills it; it survives when it passes there too. A mutant is stillborn when it
+does not compile, not built when its objects come out bit for bit as the unmutated ones (a
+line of a #if branch this build skips): neither is counted in the score.
+The sample is ranked by a seeded hash of each mutant's file, line text, operator and
+occurrence, so an edit elsewhere leaves it, and the judgements of its survivors, in place. A
+survivor is judged in survivors.json ("equivalent", argued, or "gap"), one record per mutant;
+score = killed / (killed + survivors not judged equivalent), with its Wilson 95 % interval: the
+90 % floor applies to the interval's lower bound for a sample, to the score for every mutant.
 
     /usr/bin/python3 verification/mutation/mutate.py OUT_DIR [--sample N] [--seed S]
-        [--minutes M] [--all] [--ids I,J,...] [--scratch DIR] [--list]
+        [--minutes M] [--all] [--ids I,J,...] [--shard I/N] [--scratch DIR] [--list]
         [--coverage JSON HTML]
+    /usr/bin/python3 verification/mutation/mutate.py --merge OUT_DIR SHARD_FILE...
 
 With --coverage the scratch build is instrumented with gcov and, before any mutant, every test
 runs once on the unmutated sources: gcovr's summary and pages of src/ and include/ are the
 report's coverage (one build for both analyses). Exit status 3 when a test fails there.
 
 By default a seeded sample of N = 20 mutants judged within M = 30 minutes (after the scratch
-build); --all takes every mutant (hours on two cores). Writes OUT_DIR/mutation.json in the
-verification schema (docs/traceability.md): the score, one row per mutant, every survivor with
+build); --all takes every mutant (hours on two cores), --ids the given ones (no box). With
+--shard I/N only the I-th of N disjoint shards of those (a hash of each mutant's key) is judged
+and written to OUT_DIR/mutation-shard-I-of-N.json; --merge joins shards of one tree into
+OUT_DIR/mutation.json. Writes OUT_DIR/mutation.json in the verification schema
+(docs/traceability.md): the score and its interval, one row per mutant, every survivor with
 its judgement. The report shows it; the main job runs a time-boxed sample (it is an optional
 program of traceability/config.yaml: absent, the report says "not run").
 """
 import argparse
 import datetime
+import fcntl
 import fnmatch
 import hashlib
 import json
+import math
 import os
 import re
 import shutil
+import socket
+import stat
 import subprocess
 import sys
+import tempfile
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -93,7 +105,10 @@ def code_part(line):
 
 
 def mutants_of(relpath, text):
-    """Every mutant of one file: dicts {file, line, op, before, after}."""
+    """Every mutant of one file: dicts {file, line, op, before, after, occurrence}; occurrence
+    counts the mutants of the same line text and operator in the file, 1 for the first (in
+    line order, then left to right), so that file, line text, operator and occurrence name one
+    mutant."""
     out = []
     in_block = False
     for no, line in enumerate(text.split("\n"), 1):
@@ -122,6 +137,11 @@ def mutants_of(relpath, text):
                                                     code):
             out.append({"file": relpath, "line": no, "op": "statement removed",
                         "before": line, "after": ""})
+    seen = {}
+    for m in out:
+        key = line_key(m)
+        seen[key] = seen.get(key, 0) + 1
+        m["occurrence"] = seen[key]
     return out
 
 
@@ -140,12 +160,13 @@ def all_mutants(root):
 
 def sample_of(muts, n, seed):
     """n mutants chosen by seed, stable under edits elsewhere: each mutant is ranked by a hash
-    of the seed, its survivor key and which repeat of that key in its file it is (not its id,
-    which shifts whenever a target file changes), so a change to one line moves only that
-    line's mutants in or out of the sample; the rest keep their ranks and judgements."""
+    of the seed, its file, line text and operator and which repeat of those in its file it is
+    (its occurrence less one; not its id, which shifts whenever a target file changes), so a
+    change to one line moves only that line's mutants in or out of the sample; the rest keep
+    their ranks and judgements."""
     seen, ranked = {}, []
     for m in muts:
-        key = survivor_key(m)
+        key = line_key(m)
         nth = seen.get(key, 0)
         seen[key] = nth + 1
         text = "\x1f".join((str(seed), *key, str(nth)))
@@ -215,9 +236,10 @@ def labels_of(root, relpath):
     return sorted(found)
 
 
-def run(cmd, cwd=None, timeout=None):
+def run(cmd, cwd=None, timeout=None, env=None):
     try:
-        p = subprocess.run(cmd, cwd=cwd, capture_output=True, text=True, timeout=timeout)
+        p = subprocess.run(cmd, cwd=cwd, capture_output=True, text=True, timeout=timeout,
+                           env=None if env is None else {**os.environ, **env})
         return p.returncode, p.stdout + p.stderr
     except subprocess.TimeoutExpired:
         return None, "timeout"
@@ -303,6 +325,11 @@ def prepare_scratch(root, scratch, coverage=False):
     rc, out = run(["nice", "-n", "5", "cmake", "--build", build, "-j2", "--target", *targets])
     if rc != 0:
         raise SystemExit("scratch build of the unmutated sources failed:\n" + out[-3000:])
+    # Listed again now that the executables exist: ctest names an entry's command only then.
+    rc, out = run(["ctest", "--test-dir", build, "--show-only=json-v1"])
+    if rc != 0:
+        raise SystemExit("ctest cannot list the scratch build's tests:\n" + out[-3000:])
+    catalogue = json.loads(out).get("tests", [])
     return src, build, catalogue, object_digests(build)
 
 
@@ -369,6 +396,98 @@ def scratch_build(scratch, coverage):
                        f"TAMIAS_COVERAGE={'ON' if coverage else 'OFF'}"}
 
 
+# The second judge's build: the scratch build's flags with ASan and UBSan (TAMIAS_SANITIZE:
+# -fsanitize=address,undefined -fno-sanitize-recover=all), as scripts/test.sh --sanitize builds
+# them, a report fatal. A mutant that reads or writes out of bounds, overflows a signed integer
+# or leaks, and passes the tests in the scratch build (a stray read can return a harmless value,
+# a stray write land on a field that is overwritten anyway), is killed there.
+SANITIZER_OPTIONS = ["-DTAMIAS_SANITIZE=ON", "-DTAMIAS_WIDE_X86_64_V4=OFF"]
+SANITIZER_ENV = {"ASAN_OPTIONS": "detect_leaks=1:abort_on_error=1",
+                 "UBSAN_OPTIONS": "print_stacktrace=1:halt_on_error=1"}
+SANITIZER_REPORT = re.compile(r"(?:ERROR|SUMMARY): (?:Address|Leak|UndefinedBehavior)"
+                              r"Sanitizer[^\n]*|[^\n]*runtime error:[^\n]*")
+
+
+class SanitizerScratch:
+    """The ASan and UBSan build of the scratch's sources (<scratch>/build-asan), configured and
+    built lazily: nothing until a survivor needs it, then only the test executables that
+    survivor's entries need (from the unmutated sources, as the scratch build). It shares the
+    scratch's source copy, so a mutant written there is built in both."""
+
+    def __init__(self, scratch, src):
+        self.src, self.build = src, os.path.join(scratch, "build-asan")
+        self.configured, self.built, self.baseline, self.commands = False, set(), {}, {}
+        self.unmutated = None
+        self.seconds = 0.0  # spent configuring and building it unmutated
+
+    def ensure(self, targets):
+        """Configures the build and builds targets from the unmutated sources, once each."""
+        t0 = time.monotonic()
+        try:
+            if not self.configured:
+                rc, out = run(["cmake", "-S", self.src, "-B", self.build, "-G", "Ninja",
+                               "-DCMAKE_BUILD_TYPE=Release",
+                               f"-DCMAKE_CXX_FLAGS_RELEASE={SCRATCH_FLAGS}",
+                               "-DBUILD_SHARED_LIBS=ON", "-DCMAKE_LINK_DEPENDS_NO_SHARED=ON",
+                               "-DTAMIAS_BUILD_TESTS=ON", "-DTAMIAS_BUILD_VERIFICATION=OFF",
+                               "-DTAMIAS_BUILD_APPS=OFF", "-DTAMIAS_COVERAGE=OFF",
+                               "-DTAMIAS_INSTALL=OFF", *SANITIZER_OPTIONS])
+                if rc != 0:
+                    raise SystemExit("sanitizer scratch configure failed:\n" + out[-3000:])
+                self.configured = True
+            todo = sorted(set(targets) - self.built)
+            if todo:
+                rc, out = run(["nice", "-n", "5", "cmake", "--build", self.build, "-j2",
+                               "--target", *todo])
+                if rc != 0:
+                    raise SystemExit("sanitizer scratch build of the unmutated sources failed:\n"
+                                     + out[-3000:])
+                self.built |= set(todo)
+                rc, out = run(["ctest", "--test-dir", self.build, "--show-only=json-v1"])
+                if rc != 0:
+                    raise SystemExit("ctest cannot list the sanitizer build's tests:\n"
+                                     + out[-3000:])
+                self.commands = commands_of(json.loads(out).get("tests", []))
+                self.unmutated = Unmutated(self.build)
+        finally:
+            self.seconds += time.monotonic() - t0
+
+    def judge(self, m, entries, test_timeout):
+        """(killed, log, build seconds, test seconds, failed entries): whether the tests of
+        entries fail on the mutant in this build (a sanitizer report, or a failure of an
+        executable whose entries pass on the unmutated sources here), and the report's lines."""
+        b = t = 0.0
+        for _ in range(2):
+            entries = {n: x for n, x in entries.items() if self.baseline.get(n, True)}
+            self.ensure(set(entries.values()))
+            verdict, log, b1, t1, failed = judge(m, self.src, self.build, entries, test_timeout,
+                                                 env=SANITIZER_ENV, commands=self.commands,
+                                                 unmutated=self.unmutated)
+            b, t = b + b1, t + t1
+            if verdict == "stillborn":
+                raise SystemExit(f"mutant #{m['id']} compiles in the scratch build but not in "
+                                 f"the sanitizer build:\n{log[-3000:]}")
+            if verdict != "killed":
+                return False, "", b, t, []
+            if passes_unmutated(failed, self.build, entries, self.baseline, test_timeout,
+                                env=SANITIZER_ENV, commands=self.commands):
+                reports = [r.strip() for r in SANITIZER_REPORT.findall(log)]
+                summary = "; ".join(dict.fromkeys(reports)) if reports else (
+                    "failed in the sanitizer build only: " + ", ".join(failed))
+                return True, summary[:600], b, t, failed
+            # Killed by a test that fails here without the mutant too: judged again without it.
+        return False, "", b, t, []
+
+    def description(self):
+        return {"name": "mutation scratch build with ASan and UBSan (the survivors' second judge)",
+                "where": self.build, "flags": SCRATCH_FLAGS + " -fsanitize=address,undefined "
+                "-fno-sanitize-recover=all -fno-omit-frame-pointer",
+                "options": "CMAKE_BUILD_TYPE=Release BUILD_SHARED_LIBS=ON TAMIAS_BUILD_TESTS=ON "
+                           "TAMIAS_SANITIZE=ON TAMIAS_WIDE_X86_64_V4=OFF",
+                "environment": " ".join(f"{k}={v}" for k, v in SANITIZER_ENV.items()),
+                "seconds": round(self.seconds, 1), "targets": sorted(self.built)}
+
+
 def object_digests(build, since_ns=None):
     """{object file: SHA-256} of the build's objects (those written at or after since_ns only,
     when given)."""
@@ -384,34 +503,112 @@ def object_digests(build, since_ns=None):
     return out
 
 
-def ctest_entries(catalogue, labels):
+def is_output(name, mode):
+    """Whether a file of a build directory is a build output a mutant's build can rewrite: an
+    object, its coverage notes, a library, an executable, a precompiled header."""
+    return (name.endswith((".o", ".gcno", ".gch", ".a")) or ".so" in name
+            or bool(mode & 0o111))
+
+
+class Unmutated:
+    """The bytes of a built scratch's outputs as the unmutated sources build them (precompiled
+    headers aside: large, and no target file reaches them). After a mutant, restore() puts back
+    every output its build rewrote, each keeping the time that build gave it, and the source
+    then gets its own time back: to ninja the build is as the unmutated sources left it, so the
+    next mutant's build compiles only that mutant, not the restored file too (for a header,
+    every file that includes it, twice). Ninja keeps deciding what is out of date as always:
+    an output is rebuilt when an input is newer than it (or than the time its log records)."""
+
+    def __init__(self, build):
+        self.build, self.files = build, {}
+        for dirpath, _, files in os.walk(build):
+            for f in files:
+                path = os.path.join(dirpath, f)
+                st = os.lstat(path)
+                if stat.S_ISREG(st.st_mode) and is_output(f, st.st_mode) \
+                        and not f.endswith(".gch"):
+                    with open(path, "rb") as fh:
+                        self.files[path] = fh.read()
+
+    def written_since(self, since_ns):
+        out = []
+        for dirpath, _, files in os.walk(self.build):
+            for f in files:
+                path = os.path.join(dirpath, f)
+                st = os.lstat(path)
+                if stat.S_ISREG(st.st_mode) and st.st_mtime_ns >= since_ns \
+                        and is_output(f, st.st_mode):
+                    out.append(path)
+        return out
+
+    def restore(self, since_ns):
+        """Puts back the unmutated bytes of every output written at or after since_ns, each
+        with its current time; False, with nothing done, when one of them is not held (the
+        source must then keep a new time, so that the next build rebuilds from it)."""
+        written = self.written_since(since_ns)
+        if any(path not in self.files for path in written):
+            return False
+        for path in written:
+            st = os.stat(path)
+            with open(path, "r+b") as fh:
+                fh.write(self.files[path])
+                fh.truncate()
+            os.utime(path, ns=(st.st_atime_ns, st.st_mtime_ns))
+        return True
+
+
+def ctest_entries(catalogue, labels, targets=()):
     """{test name: executable target} of the CTest entries (ctest --show-only=json-v1's
-    "tests") carrying any of labels."""
+    "tests") carrying any of labels, and every labelled entry of the executables targets."""
     entries = {}
     for t in catalogue:
         props = {p["name"]: p["value"] for p in t.get("properties", [])}
         tl = props.get("LABELS", [])
         if isinstance(tl, str):
             tl = [tl]
-        if set(tl) & set(labels) and "@" in t["name"]:
-            entries[t["name"]] = t["name"].split("@", 1)[0]
+        if "@" not in t["name"]:
+            continue
+        target = t["name"].split("@", 1)[0]
+        if set(tl) & set(labels) or target in targets:
+            entries[t["name"]] = target
     return entries
 
 
-def judge(m, src, build, entries, test_timeout, objects):
-    """(verdict, log, build seconds, test seconds) of one mutant, run against entries
-    ({CTest name: target}); the scratch source is restored afterwards. "not built": every
-    object the mutant's build rewrote is bit for bit the unmutated one (objects: their
-    digests), so the mutated line is not compiled here (a branch of #if this build does not
-    take); no test can tell it apart and it is not counted."""
+# The golden state hashes of the example scenes (tests/determinism): a project rule, not an SRS
+# item, so their entries carry the category label "determinism", not an item's. Every mutant
+# of the model and the dynamics is judged by them too: a change in any step's arithmetic shows
+# in a hash, also where no labelled test looks (a joint's generation, an unread default that
+# the hash reads).
+GOLDEN_TARGETS = ("determinism_tests",)
+
+
+def entries_of(catalogue, labels, relpath):
+    """The CTest entries that judge a mutant of relpath: those of its labels, and the golden
+    hashes for a file of the model or the dynamics."""
+    golden = GOLDEN_TARGETS if relpath.startswith(tuple(d + "/" for d in TARGET_DIRS)) else ()
+    return ctest_entries(catalogue, labels, golden)
+
+
+def judge(m, src, build, entries, test_timeout, objects=None, env=None, commands=None,
+          unmutated=None):
+    """(verdict, log, build seconds, test seconds, failed entries) of one mutant, run against
+    entries ({CTest name: target}) in build (commands: {CTest name: (executable, directory)},
+    see run_tests; env: the tests' variables); the scratch source is restored afterwards, and
+    with unmutated (an Unmutated of build) the outputs too, so that the source keeps its time.
+    "not built" (only when objects, the unmutated objects' digests, are given): every object
+    the mutant's build rewrote is bit for bit the unmutated one, so the mutated line is not
+    compiled here (a branch of #if this build does not take); no test can tell it apart and it
+    is not counted."""
     if not entries:
-        return "no tests", "", 0.0, 0.0
+        return "no tests", "", 0.0, 0.0, []
     path = os.path.join(src, m["file"])
     with open(path, encoding="utf-8") as fh:
         original = fh.read()
+    times = os.stat(path)
     lines = original.split("\n")
     assert lines[m["line"] - 1] == m["before"]
     lines[m["line"] - 1] = m["after"]
+    since = None
     try:
         with open(path, "w", encoding="utf-8") as fh:
             fh.write("\n".join(lines))
@@ -421,20 +618,98 @@ def judge(m, src, build, entries, test_timeout, objects):
         rc, out = run(["nice", "-n", "5", "cmake", "--build", build, "-j2", "--target", *targets])
         t1 = time.monotonic()
         if rc != 0:
-            return "stillborn", out[-600:], t1 - t0, 0.0
-        rebuilt = object_digests(build, since)
-        if all(objects.get(path) == digest for path, digest in rebuilt.items()):
-            return "not built", f"{len(rebuilt)} objects rebuilt, each as unmutated", t1 - t0, 0.0
-        regex = "^(" + "|".join(re.escape(n) for n in sorted(entries)) + ")$"
-        rc, out = run(["ctest", "--test-dir", build, "-R", regex, "--stop-on-failure", "-j2",
-                       "--timeout", str(test_timeout)], timeout=test_timeout * len(entries) + 60)
+            return "stillborn", out[-600:], t1 - t0, 0.0, []
+        if objects is not None:
+            rebuilt = object_digests(build, since)
+            if all(objects.get(path) == digest for path, digest in rebuilt.items()):
+                return ("not built", f"{len(rebuilt)} objects rebuilt, each as unmutated",
+                        t1 - t0, 0.0, [])
+        failed, out = run_tests(entries, commands, test_timeout, env=env)
         t2 = time.monotonic()
-        if rc is None or rc != 0:
-            return "killed", out[-600:], t1 - t0, t2 - t1
-        return "survived", "", t1 - t0, t2 - t1
+        if failed:
+            return "killed", out, t1 - t0, t2 - t1, failed
+        return "survived", "", t1 - t0, t2 - t1, []
     finally:
+        # The source first, with a new time: whatever happens next, the build then rebuilds
+        # from it. Its own time back only once every output it reached is unmutated again.
         with open(path, "w", encoding="utf-8") as fh:
             fh.write(original)
+        if unmutated is not None and since is not None and unmutated.restore(since):
+            os.utime(path, ns=(times.st_atime_ns, times.st_mtime_ns))
+
+
+def commands_of(catalogue):
+    """{CTest name: (executable, working directory)} of the catalogue's labelled entries whose
+    executable exists (ctest --show-only names a command only then)."""
+    out = {}
+    for t in catalogue:
+        if "@" not in t["name"] or not t.get("command"):
+            continue
+        props = {p["name"]: p["value"] for p in t.get("properties", [])}
+        out[t["name"]] = (t["command"][0], props.get("WORKING_DIRECTORY"))
+    return out
+
+
+# Seconds each test executable took at its last run with its entries' labels (per label), so
+# that the longest starts first: the other process runs the short ones meanwhile.
+_COSTS = {}
+
+
+def run_tests(entries, commands, test_timeout, env=None, jobs=2):
+    """Runs the tests of entries ({CTest name: target}) and returns (failed, log): the entries
+    of the executables that failed or ran past test_timeout (none when all pass) and their
+    output. Each executable runs once, with the union of its entries' labels
+    (--run_test=@A:@B), not once per entry as CTest would: a case that carries several of the
+    labels runs once. Two run at a time; at the first failure the others are stopped."""
+    units = {}
+    for n, target in sorted(entries.items()):
+        exe, cwd = commands[n]
+        u = units.setdefault(target, {"exe": exe, "cwd": cwd, "labels": [], "names": []})
+        u["labels"].append(n.split("@", 1)[1])
+        u["names"].append(n)
+    todo = sorted(units.items(), key=lambda kv: (-_COSTS.get(kv[0], 1e9) * len(kv[1]["labels"]),
+                                                 kv[0]))
+    full_env = None if env is None else {**os.environ, **env}
+    running, failed, log = [], [], []
+    try:
+        while todo or running:
+            while todo and len(running) < jobs and not failed:
+                target, u = todo.pop(0)
+                out = tempfile.TemporaryFile(mode="w+")
+                p = subprocess.Popen([u["exe"], "--run_test=" + ":".join("@" + x for x in
+                                                                          u["labels"]),
+                                      "--color_output=no"], cwd=u["cwd"] or None, stdout=out,
+                                     stderr=subprocess.STDOUT, env=full_env)
+                running.append((p, target, u, out, time.monotonic()))
+            if failed:
+                break
+            time.sleep(0.02)
+            for item in list(running):
+                p, target, u, out, t0 = item
+                rc = p.poll()
+                late = rc is None and time.monotonic() - t0 > test_timeout
+                if rc is None and not late:
+                    continue
+                running.remove(item)
+                if late:
+                    p.kill()
+                    p.wait()
+                else:
+                    _COSTS[target] = (time.monotonic() - t0) / len(u["labels"])
+                if late or rc != 0:
+                    failed += u["names"]
+                    out.seek(0)
+                    text = out.read()
+                    log.append(f"{target} {' '.join('@' + x for x in u['labels'])}: "
+                               + (f"time-out after {test_timeout} s" if late else
+                                  f"exit status {rc}") + "\n" + text[-20000:])
+                out.close()
+    finally:
+        for p, _, _, out, _ in running:
+            p.kill()
+            p.wait()
+            out.close()
+    return sorted(failed), "\n".join(log)
 
 
 FAILED = re.compile(r"^\s*\d+ - (\S+) \(", re.M)
@@ -446,23 +721,28 @@ def failed_entries(log):
     return sorted(set(FAILED.findall(tail[1]))) if len(tail) == 2 else []
 
 
-def passes_unmutated(names, build, entries, baseline, test_timeout):
-    """Whether every entry of names passes on the unmutated sources (the scratch restored),
-    remembered in baseline: a kill by a test that fails anyway is no kill."""
-    todo = [n for n in names if n not in baseline]
+def passes_unmutated(names, build, entries, baseline, test_timeout, env=None, commands=None):
+    """Whether every entry of names (those of the executables that failed on a mutant) passes
+    on the unmutated sources (the scratch restored), remembered in baseline: a kill by a test
+    that fails anyway is no kill. They run as on the mutant (run_tests); when they fail, each
+    entry alone tells which."""
+    todo = {n: entries[n] for n in names if n not in baseline}
     if todo:
-        targets = sorted({entries[n] for n in todo})
+        targets = sorted(set(todo.values()))
         rc, out = run(["nice", "-n", "5", "cmake", "--build", build, "-j2", "--target", *targets])
         if rc != 0:
             raise SystemExit("the unmutated scratch does not build:\n" + out[-3000:])
-        regex = "^(" + "|".join(re.escape(n) for n in todo) + ")$"
-        rc, out = run(["ctest", "--test-dir", build, "-R", regex, "-j2", "--timeout",
-                       str(test_timeout)], timeout=test_timeout * len(todo) + 60)
-        bad = set(failed_entries(out)) if rc not in (None, 0) else set()
-        if rc is None:
-            bad = set(todo)
+        failed, _ = run_tests(todo, commands, test_timeout, env=env)
+        if failed:
+            alone = {n: not run_tests({n: todo[n]}, commands, test_timeout, env=env)[0]
+                     for n in failed}
+            # Failing together but each passing alone (a time-out of the union): none is
+            # trusted to kill.
+            bad = [n for n, ok in alone.items() if not ok] or failed
+            for n in bad:
+                baseline[n] = False
         for n in todo:
-            baseline[n] = n not in bad
+            baseline.setdefault(n, True)
     return all(baseline[n] for n in names)
 
 
@@ -470,34 +750,71 @@ SURVIVORS = os.path.join(HERE, "survivors.json")
 WINDOW = 8
 
 
-def survivor_key(m):
-    """A survivor's key: file, the mutated line's text (stripped) and operator, not the id
-    (ids shift whenever a target file changes; the line's text and place in its file rarely
-    do together)."""
+def line_key(m):
+    """File, the mutated line's text (stripped) and operator: what a mutant changes, not where
+    (ids and line numbers shift whenever a target file changes; a line's text rarely does)."""
     return (m["file"], m["before"].strip(), m["op"])
 
 
+def survivor_key(m):
+    """A judgement's key: line_key and the occurrence, so that one judgement stands for exactly
+    one mutant, also where a line text repeats in its file or holds the operator twice."""
+    return (*line_key(m), m["occurrence"])
+
+
+RECORD_FIELDS = ("file", "line", "op", "occurrence", "verdict", "reason")
+
+
 def load_judgements(path=SURVIVORS):
-    """{key: judgement} from survivors.json: a list of {file, line, op, verdict, reason}, the
-    verdict "equivalent" (reason: why no input the code receives tells the mutant apart) or
-    "gap" (reason: what the tests lack). A malformed entry is an error, not ignored."""
+    """{key: judgement} from survivors.json: a list of {file, line, op, occurrence, verdict,
+    reason}, the verdict "equivalent" (reason: why no input the code receives tells the mutant
+    apart) or "gap" (reason: what the tests lack). A malformed entry is an error, not ignored;
+    so is one that repeats a key or has a field of its own (a misspelt one would go unread)."""
     if not os.path.exists(path):
         return {}
     with open(path, encoding="utf-8") as fh:
         doc = json.load(fh)
     out = {}
     for i, j in enumerate(doc.get("survivors", [])):
+        if not isinstance(j, dict):
+            raise SystemExit(f"{path}: survivors[{i}] must be an object")
         for field in ("file", "line", "op", "verdict", "reason"):
             if not isinstance(j.get(field), str) or not j[field].strip():
                 raise SystemExit(f"{path}: survivors[{i}].{field} must be a non-empty string")
+        occ = j.get("occurrence")
+        if not isinstance(occ, int) or isinstance(occ, bool) or occ < 1:
+            raise SystemExit(f"{path}: survivors[{i}].occurrence must be an integer >= 1 (which "
+                             f"mutant of that line text and operator in the file, 1 for the "
+                             f"first), not {occ!r}")
+        extra = sorted(set(j) - set(RECORD_FIELDS))
+        if extra:
+            raise SystemExit(f"{path}: survivors[{i}] has unknown fields {extra}")
         if j["verdict"] not in ("equivalent", "gap"):
             raise SystemExit(f"{path}: survivors[{i}].verdict must be \"equivalent\" or "
                              f"\"gap\", not {j['verdict']!r}")
-        key = (j["file"], j["line"].strip(), j["op"])
+        key = (j["file"], j["line"].strip(), j["op"], occ)
         if key in out:
             raise SystemExit(f"{path}: survivors[{i}] repeats {key}")
         out[key] = j
     return out
+
+
+def stale_judgements(judgements, muts):
+    """The keys of judgements that name no mutant of muts: the line changed, or the occurrence
+    is past the number of such mutants in the file. A stale record is an error."""
+    keys = {survivor_key(m) for m in muts}
+    return sorted(k for k in judgements if k not in keys)
+
+
+def check_record(path, muts):
+    """load_judgements, and a stale record an error too."""
+    judgements = load_judgements(path)
+    stale = stale_judgements(judgements, muts)
+    if stale:
+        raise SystemExit(f"{path}: {len(stale)} judgement(s) name no mutant of this tree (the "
+                         f"line changed or the occurrence is past its last): "
+                         + "; ".join(f"{f} '{t}' {o} occurrence {n}" for f, t, o, n in stale[:5]))
+    return judgements
 
 
 def score_of(results, judgements):
@@ -510,6 +827,35 @@ def score_of(results, judgements):
                      for r in survived)
     counted = killed + len(survived) - equivalent
     return (killed / counted if counted else 0.0), killed, equivalent, counted
+
+
+# The floor of the kill rate, and how sure a sample must make it: the check applies the floor
+# to the lower bound of the score's 95 % interval when a sample was judged, and to the score
+# itself only when every mutant was.
+FLOOR = 0.9
+CONFIDENCE = 0.95
+Z = 1.959963984540054  # the standard normal quantile of 0.975
+
+
+def wilson(k, n, z=Z):
+    """The Wilson score interval (95 % with the default z) of a kill rate k/n: where the rate of
+    the mutants a random sample of n counted ones was drawn from lies. (0, 1) for n = 0."""
+    if n <= 0:
+        return (0.0, 1.0)
+    p = k / n
+    d = 1.0 + z * z / n
+    centre = (p + z * z / (2 * n)) / d
+    half = z * math.sqrt(p * (1.0 - p) / n + z * z / (4.0 * n * n)) / d
+    return (max(0.0, centre - half), min(1.0, centre + half))
+
+
+def shard_of(m, count):
+    """Which of count shards (0 to count - 1) a mutant belongs to: a hash of its key (file, line
+    text, operator, occurrence), so the split is the same on every machine, the shards are
+    disjoint and together hold every mutant, and neither the seed, the ids nor an edit
+    elsewhere moves a mutant to another shard. A shard is thus a random sample too."""
+    text = "\x1f".join(("shard", *map(str, survivor_key(m))))
+    return int(hashlib.sha256(text.encode("utf-8")).hexdigest(), 16) % count
 
 
 def commit_of(root):
@@ -529,9 +875,366 @@ def tree_of(root):
 SCRATCH_FLAGS = "-O1 -DNDEBUG -D_GLIBCXX_ASSERTIONS"
 
 
+def now_utc():
+    return datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ")
+
+
+def selection_text(sel):
+    if sel["mode"] == "all":
+        return "all"
+    if sel["mode"] == "ids":
+        return f"ids {sel['ids']}"
+    return f"seed {sel['seed']}, sample {sel['sample']}, {sel['minutes']:g} min box"
+
+
+def make_doc(results, judgements, *, population, chosen, selection, complete, provenance,
+             prep_secs, sanitizer, broken, shard=None, shards=None):
+    """The verification-schema document of judged mutants (results) with the record's
+    judgements applied: the score, its 95 % interval and which of them the floor applies to."""
+    for r in results:
+        if r["verdict"] == "survived":
+            j = judgements.get(survivor_key(r))
+            r["judged"] = j["verdict"] if j else "not yet judged"
+            r["reason"] = j["reason"] if j else ""
+        else:
+            r.pop("judged", None)
+            r.pop("reason", None)
+    score, killed, equivalent, counted = score_of(results, judgements)
+    lo, hi = wilson(killed, counted)
+    survived = [r for r in results if r["verdict"] == "survived"]
+    gaps = [r for r in survived if r["judged"] == "gap"]
+    unjudged = [r for r in survived if r["judged"] == "not yet judged"]
+    by_sanitizer = sum(r.get("killed_by") == "sanitizer" for r in results)
+    # A judgement of a mutant that the tests or the sanitizer build now kill: the record to
+    # update (it does not count; the kill does).
+    judged_killed = [f"#{r['id']} {r['file']}:{r['line']} {r['op']} (occurrence "
+                     f"{r['occurrence']})" for r in results
+                     if r["verdict"] == "killed" and survivor_key(r) in judgements]
+    judged_runs = [r for r in results
+                   if r["verdict"] in ("killed", "survived", "stillborn", "not built")]
+    mean = (sum(r["seconds"] for r in judged_runs) / len(judged_runs)) if judged_runs else 0.0
+    floor_on = "point estimate" if complete else "lower bound"
+    value = score if complete else lo
+    passed = bool(counted) and value >= FLOOR - 1e-12
+    pct = lambda x: f"{100 * x:.1f} %"  # noqa: E731
+    figure = (f"{pct(score)} ({killed} of {counted}), 95 % interval {100 * lo:.1f}-"
+              f"{100 * hi:.1f} %")
+    if complete:
+        rule = (f"every mutant judged: the floor ({100 * FLOOR:.0f} %) applies to the score, "
+                f"{pct(score)}")
+    else:
+        what = (f"shards {', '.join(str(i) for i in shards['merged'])} of {shards['count']}"
+                if shards else f"shard {shard['index']} of {shard['count']}" if shard else
+                "a sample")
+        rule = (f"{what}, {len(results)} of {population} mutants judged: the floor "
+                f"({100 * FLOOR:.0f} %) applies to the lower bound of the score's 95 % "
+                f"interval, {pct(lo)}")
+    details = (f"{killed} of {counted} non-equivalent compiled mutants killed ({pct(score)}, "
+               f"95 % Wilson interval {100 * lo:.1f}-{100 * hi:.1f} %"
+               f"{f'; {by_sanitizer} by the sanitizer build' if by_sanitizer else ''}); {rule} "
+               f"({'met' if passed else 'not met'}); "
+               f"{len(survived)} survived ({equivalent} judged equivalent, "
+               f"{len(gaps)} judged gaps, {len(unjudged)} not yet judged), "
+               f"{sum(r['verdict'] == 'stillborn' for r in results)} did not compile, "
+               f"{sum(r['verdict'] == 'not built' for r in results)} compiled to unchanged "
+               f"objects, "
+               f"{sum(r['verdict'] == 'no tests' for r in results)} had no test; "
+               f"{len(results)} of {chosen} chosen from {population} "
+               f"({selection_text(selection)}); "
+               f"{mean:.0f} s per built mutant, scratch build {prep_secs:.0f} s")
+    if shards and shards["missing"]:
+        details += (f"; shards missing: {', '.join(str(i) for i in shards['missing'])} of "
+                    f"{shards['count']}")
+    if sanitizer:
+        details += f", sanitizer build {sanitizer['seconds']:.0f} s"
+    if broken:
+        details += (f"; {len(broken)} CTest entries fail without any mutant and were left out: "
+                    + ", ".join(broken))
+    if judged_killed:
+        details += (f"; {len(judged_killed)} judged in survivors.json but killed now: "
+                    + ", ".join(judged_killed))
+    doc = {
+        "program": "mutation",
+        "description": "Mutation testing of src/tamias2d/model/ and dynamics/: mutants (operator "
+                       "swaps, constants, comparisons, removed assignments) built in a scratch "
+                       "copy, judged by the CTest entries labelled with the SRS items the mutated "
+                       "file's \\srs tags, or those of the library headers it includes, name (a "
+                       "file that reaches no tag: those of the files that include it), and by the "
+                       "golden state hashes (tests/determinism); "
+                       + ("a survivor is judged again in an ASan and UBSan build, where a "
+                          "sanitizer report kills it" if selection.get("sanitizer", True) else
+                          "survivors not judged again in an ASan and UBSan build (--no-sanitizer: "
+                          "a survivor counts against the score, which can only be lower for it)")
+                       + ". Score: "
+                       "killed / (killed + survivors not judged equivalent in "
+                       "verification/mutation/survivors.json), with its 95 % Wilson interval; the "
+                       f"{100 * FLOOR:.0f} % floor applies to the interval's lower bound for a "
+                       "sample, to the score when every mutant is judged. This run: "
+                       + details + ".",
+        "provenance": provenance,
+        "checks": [{"name": f"at least {100 * FLOOR:.0f} % of the non-equivalent mutants killed",
+                    "labels": [], "passed": passed,
+                    "target": (f">= {100 * FLOOR:.0f} % killed: "
+                               + ("the score (every mutant judged)" if complete else
+                                  "the lower bound of the score's 95 % interval (a sample)")),
+                    "figure": figure,
+                    "oracle": "the SRS-labelled tests and the golden state hashes fail on each "
+                              "mutant, or a survivor's tests report an error in the sanitizer "
+                              "build; survivors judged equivalent are argued in "
+                              "verification/mutation/survivors.json",
+                    "details": details}],
+        "tables": [{"name": "Mutants", "columns": ["id", "where", "mutation", "labels (tests run)",
+                                                   "verdict", "seconds (build + tests)"],
+                    "rows": [[r["id"], f"{r['file']}:{r['line']}", r["op"],
+                              ", ".join(r["labels"] + (["golden hashes"] if any(
+                                  t.split("@", 1)[0] in GOLDEN_TARGETS for t in r["tests"])
+                                  else [])),
+                              r["verdict"] + (" (sanitizer)" if r.get("killed_by") == "sanitizer"
+                                              else ""),
+                              f"{r['seconds']:.0f} ({r['build_seconds']:.0f} + "
+                              f"{r['test_seconds']:.0f})"] for r in results]},
+                   {"name": "Survivors",
+                    "columns": ["id", "where", "mutation", "occurrence", "before", "after",
+                                "judged", "reason"],
+                    "rows": [[r["id"], f"{r['file']}:{r['line']}", r["op"], r["occurrence"],
+                              r["before"].strip(), r["after"].strip() or "(removed)",
+                              r["judged"], r["reason"]] for r in survived]}],
+        "series": [],
+        "score": score,
+        "killed": killed,
+        "counted": counted,
+        "interval": [lo, hi],
+        "confidence": CONFIDENCE,
+        "floor": FLOOR,
+        "floor_applies_to": floor_on,
+        "sample_size": len(results),
+        "chosen": chosen,
+        "population": population,
+        "complete": complete,
+        "selection": selection,
+        "killed_by_sanitizer": by_sanitizer,
+        "judged_but_killed": judged_killed,
+        "summary": details,
+        "seconds_per_mutant": round(mean, 1),
+        "failing_unmutated": broken,
+        "scratch_build_seconds": round(prep_secs, 1),
+        "sanitizer_build": sanitizer,
+        "mutants": results,
+    }
+    if shard:
+        doc["shard"] = shard
+    if shards:
+        doc["shards"] = shards
+    return doc
+
+
+def parse_shard(text):
+    m = re.fullmatch(r"(\d+)/(\d+)", text or "")
+    if not m or int(m.group(2)) < 1 or int(m.group(1)) >= int(m.group(2)):
+        raise SystemExit(f"--shard {text!r}: I/N with 0 <= I < N (e.g. 0/8 to 7/8)")
+    return int(m.group(1)), int(m.group(2))
+
+
+def shard_file(index, count):
+    return f"mutation-shard-{index}-of-{count}.json"
+
+
+def merge(out_dir, files, survivors=SURVIVORS):
+    """Merges the results of shards (mutate.py --shard I/N) into out_dir/mutation.json with the
+    record's judgements as they stand. Refuses shards of different trees or commits, of
+    different selections or shard counts, and overlapping shards (an index twice, or a mutant in
+    two files); a missing shard is reported, and the result is then not complete."""
+    docs = []
+    for f in files:
+        try:
+            with open(f, encoding="utf-8") as fh:
+                doc = json.load(fh)
+        except (OSError, ValueError) as exc:
+            raise SystemExit(f"--merge: {f}: unreadable ({exc})")
+        sh = doc.get("shard") if isinstance(doc, dict) else None
+        if doc.get("program") != "mutation" or not isinstance(sh, dict):
+            raise SystemExit(f"--merge: {f} is not the results of a shard (mutate.py --shard)")
+        docs.append((f, doc))
+    if not docs:
+        raise SystemExit("--merge: no shard results given")
+
+    def refuse_unless_same(what, value):
+        seen = {}
+        for f, d in docs:
+            seen.setdefault(json.dumps(value(d), sort_keys=True), []).append(f)
+        if len(seen) > 1:
+            raise SystemExit(f"--merge: the shards are of different {what}: " + "; ".join(
+                f"{v} ({', '.join(fs)})" for v, fs in seen.items()))
+
+    refuse_unless_same("commits", lambda d: d["provenance"].get("commit"))
+    refuse_unless_same("trees (commit and uncommitted changes)",
+                       lambda d: d["provenance"].get("tree"))
+    refuse_unless_same("shard counts", lambda d: d["shard"]["count"])
+    refuse_unless_same("selections", lambda d: {k: v for k, v in d["selection"].items()
+                                                if k != "minutes"})
+    refuse_unless_same("populations", lambda d: d["population"])
+    count = docs[0][1]["shard"]["count"]
+    where = {}
+    for f, d in docs:
+        where.setdefault(d["shard"]["index"], []).append(f)
+    twice = {i: fs for i, fs in where.items() if len(fs) > 1}
+    if twice:
+        raise SystemExit("--merge: overlapping shards: " + "; ".join(
+            f"shard {i} in {', '.join(fs)}" for i, fs in sorted(twice.items())))
+    owner = {}
+    for f, d in docs:
+        for r in d["mutants"]:
+            key = survivor_key(r)
+            if key in owner:
+                raise SystemExit(f"--merge: overlapping shards: mutant #{r['id']} {r['file']}:"
+                                 f"{r['line']} {r['op']} is in {owner[key]} and {f}")
+            owner[key] = f
+    missing = sorted(set(range(count)) - set(where))
+    results = sorted((r for _, d in docs for r in d["mutants"]), key=lambda r: r["id"])
+    first = docs[0][1]
+    sel = first["selection"]
+    complete = (sel["mode"] == "all" and not missing
+                and all(d["shard"].get("complete") for _, d in docs))
+    builds = [d["provenance"].get("build") or {} for _, d in docs]
+
+    def joined(key):
+        return "; ".join(dict.fromkeys(str(b.get(key)) for b in builds if b.get(key)))
+    provenance = {"commit": first["provenance"].get("commit"),
+                  "dirty": first["provenance"].get("dirty"),
+                  "tree": first["provenance"].get("tree"), "build_id": None,
+                  "built": min(d["provenance"].get("built") or "" for _, d in docs),
+                  "generated": now_utc(),
+                  "build": {"name": f"mutation scratch builds of {len(docs)} shard(s)",
+                            "where": joined("where"), "compiler": joined("compiler"),
+                            "flags": joined("flags"), "options": joined("options")}}
+    sanitizers = [d.get("sanitizer_build") for _, d in docs if d.get("sanitizer_build")]
+    sanitizer = None
+    if sanitizers:
+        sanitizer = dict(sanitizers[0],
+                         where="; ".join(dict.fromkeys(s["where"] for s in sanitizers)),
+                         seconds=round(sum(s["seconds"] for s in sanitizers), 1),
+                         targets=sorted({t for s in sanitizers for t in s.get("targets", [])}))
+    shards = {"count": count, "merged": sorted(where), "missing": missing,
+              "files": [os.path.basename(f) for f, _ in docs],
+              "hosts": sorted({str(d.get("host")) for _, d in docs if d.get("host")})}
+    doc = make_doc(results, load_judgements(survivors), population=first["population"],
+                   chosen=sum(d["chosen"] for _, d in docs), selection=sel, complete=complete,
+                   provenance=provenance,
+                   prep_secs=sum(d["scratch_build_seconds"] for _, d in docs),
+                   sanitizer=sanitizer,
+                   broken=sorted({n for _, d in docs for n in d["failing_unmutated"]}),
+                   shards=shards)
+    os.makedirs(out_dir, exist_ok=True)
+    with open(os.path.join(out_dir, "mutation.json"), "w", encoding="utf-8") as fh:
+        json.dump(doc, fh, indent=1)
+    print(f"mutation: merged {len(docs)} of {count} shards"
+          + (f" (missing: {', '.join(map(str, missing))})" if missing else "") + "; "
+          + doc["summary"])
+    return 0
+
+
+def judge_run(a, muts, chosen, selection, shard):
+    """Builds the scratch, judges the chosen mutants (within the box, if any) and writes
+    mutation.json or the shard's file to a.out_dir; the exit status."""
+    commit, dirty = commit_of(a.root)
+    tree = tree_of(a.root)
+    started = now_utc()
+    t_prep = time.monotonic()
+    src, build, catalogue, objects = prepare_scratch(a.root, a.scratch, bool(a.coverage))
+    prep_secs = time.monotonic() - t_prep
+    coverage_failed = []
+    if a.coverage:
+        t_cov = time.monotonic()
+        coverage_failed = measure_coverage(
+            src, build, catalogue, *a.coverage,
+            provenance={"commit": commit, "dirty": dirty, "tree": tree, "build_id": None,
+                        "built": started, "generated": now_utc(),
+                        "build": scratch_build(a.scratch, True)})
+        print(f"coverage: every test once in {time.monotonic() - t_cov:.0f} s"
+              + (f"; FAILED: {', '.join(coverage_failed)}" if coverage_failed else ""),
+              flush=True)
+        if not a.all and not a.ids and a.minutes <= 0:
+            return 3 if coverage_failed else 0
+    # The box is for judging mutants; the scratch builds are reported apart (minutes when the
+    # scratch is new, seconds when it outlives a run): the sanitizer build's first build of a
+    # test executable moves the deadline on by its time.
+    deadline = None if (a.all or a.ids) else time.monotonic() + 60.0 * a.minutes
+    sanitizer = SanitizerScratch(a.scratch, src)
+    commands = commands_of(catalogue)
+    unmutated = Unmutated(build)
+    results = []
+    baseline = {}  # CTest entry -> passes on the unmutated sources (asked when it kills)
+    for m in chosen:
+        if deadline is not None and time.monotonic() > deadline:
+            break
+        labels = labels_of(a.root, m["file"])
+        entries = entries_of(catalogue, labels, m["file"])
+        t0 = time.monotonic()
+        entries = {n: t for n, t in entries.items() if baseline.get(n, True)}
+        verdict, log, b_secs, t_secs, failed = judge(m, src, build, entries, a.test_timeout,
+                                                     objects, commands=commands,
+                                                     unmutated=unmutated)
+        if verdict == "killed" and not passes_unmutated(failed, build, entries, baseline,
+                                                        a.test_timeout, commands=commands):
+            # Killed by a test that fails without the mutant too: judged again without it.
+            broken = sorted(n for n in entries if baseline.get(n) is False)
+            print(f"   (fails unmutated, left out from now on: {', '.join(broken)})")
+            entries = {n: t for n, t in entries.items() if baseline.get(n, True)}
+            verdict, log, b_secs, t_secs, failed = judge(m, src, build, entries, a.test_timeout,
+                                                         objects, commands=commands,
+                                                         unmutated=unmutated)
+        killed_by = "tests" if verdict == "killed" else None
+        prep_before = sanitizer.seconds
+        if verdict == "survived" and a.sanitizer:
+            # The second judge: the same tests in the ASan and UBSan build.
+            killed, log, b2, t2, san_failed = sanitizer.judge(m, entries, a.test_timeout)
+            b_secs, t_secs = b_secs + b2, t_secs + t2
+            if killed:
+                verdict, killed_by = "killed", "sanitizer"
+        prep = sanitizer.seconds - prep_before
+        if deadline is not None:
+            deadline += prep
+        secs = time.monotonic() - t0 - prep
+        r = dict(m, verdict=verdict, labels=labels, tests=sorted(entries), seconds=round(secs, 1),
+                 build_seconds=round(b_secs, 1), test_seconds=round(t_secs, 1),
+                 log=log[-600:] if verdict in ("survived", "stillborn", "not built")
+                 or killed_by == "sanitizer" else "")
+        if killed_by:
+            r["killed_by"] = killed_by
+            r["failed"] = failed if killed_by == "tests" else san_failed
+        if verdict == "survived":
+            r["sanitizer"] = "passed"
+        results.append(r)
+        print(f"{verdict:10s} #{m['id']} {m['file']}:{m['line']} {m['op']}"
+              + (" (sanitizer)" if killed_by == "sanitizer" else "")
+              + f" ({secs:.0f} s: build {b_secs:.0f}, tests {t_secs:.0f})"
+              + (f" [sanitizer build {prep:.0f} s]" if prep >= 1 else ""), flush=True)
+    # The record as it stands when the run ends (survivors may be judged while it runs).
+    judgements = load_judgements(a.survivors)
+    complete = selection["mode"] == "all" and not shard and len(results) == len(chosen)
+    provenance = {"commit": commit, "dirty": dirty, "tree": tree, "build_id": None,
+                  "built": started, "generated": now_utc(),
+                  "build": scratch_build(a.scratch, bool(a.coverage))}
+    doc = make_doc(results, judgements, population=len(muts), chosen=len(chosen),
+                   selection=selection, complete=complete, provenance=provenance,
+                   prep_secs=prep_secs,
+                   sanitizer=sanitizer.description() if sanitizer.configured else None,
+                   broken=sorted(n for n, ok in baseline.items() if not ok),
+                   shard={"index": shard[0], "count": shard[1],
+                          "complete": len(results) == len(chosen)} if shard else None)
+    if shard:
+        doc["host"] = socket.gethostname()
+    os.makedirs(a.out_dir, exist_ok=True)
+    name = shard_file(*shard) if shard else "mutation.json"
+    with open(os.path.join(a.out_dir, name), "w", encoding="utf-8") as fh:
+        json.dump(doc, fh, indent=1)
+    print("mutation: " + doc["summary"])
+    return 3 if coverage_failed else 0
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("out_dir")
+    ap.add_argument("out_dir", nargs="?")
     ap.add_argument("--sample", type=int, default=20)
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--minutes", type=float, default=30.0)
@@ -543,8 +1246,17 @@ def main(argv=None):
     ap.add_argument("--root", default=ROOT)
     ap.add_argument("--test-timeout", type=int, default=300)
     ap.add_argument("--list", action="store_true", help="print the mutants and stop")
+    # The sanitizer build's first build of a test executable takes minutes to tens of minutes
+    # on 2 cores; a short box (the main job's) leaves it out and counts survivors as survivors.
+    ap.add_argument("--no-sanitizer", dest="sanitizer", action="store_false",
+                    help="do not judge survivors again in the ASan and UBSan build")
     ap.add_argument("--survivors", default=SURVIVORS, help="the judged survivors (JSON)")
     ap.add_argument("--ids", help="judge these mutants (ids of --list, comma-separated) only")
+    ap.add_argument("--shard", metavar="I/N",
+                    help="judge the I-th (0 to N-1) of N disjoint shards of the chosen mutants "
+                         "and write OUT_DIR/mutation-shard-I-of-N.json")
+    ap.add_argument("--merge", nargs="+", metavar=("OUT_DIR", "FILE"),
+                    help="merge shards' results into OUT_DIR/mutation.json (no mutant is built)")
     ap.add_argument("--coverage", nargs=2, metavar=("JSON", "HTML"),
                     help="instrument the scratch build, run every test once on the unmutated "
                          "sources and write gcovr's summary and pages before the mutants")
@@ -552,145 +1264,62 @@ def main(argv=None):
     if a.scratch is None:
         where = hashlib.sha1(os.path.abspath(a.root).encode()).hexdigest()[:8]
         a.scratch = os.path.join("/tmp", f"tamias-mutation-{os.getuid()}-{where}")
+    if a.merge:
+        if a.out_dir or len(a.merge) < 2:
+            ap.error("--merge OUT_DIR FILE...")
+        return merge(a.merge[0], a.merge[1:], a.survivors)
+    if not a.out_dir:
+        ap.error("OUT_DIR is required")
+    shard = parse_shard(a.shard) if a.shard else None
 
     muts = all_mutants(a.root)
     if a.list:
         try:
             for m in muts:
-                print(f"{m['id']:5d} {m['file']}:{m['line']} {m['op']}")
-            print(f"{len(muts)} mutants")
+                if shard and shard_of(m, shard[1]) != shard[0]:
+                    continue
+                print(f"{m['id']:5d} {m['file']}:{m['line']} {m['op']}"
+                      + (f" (occurrence {m['occurrence']})" if m["occurrence"] > 1 else ""))
+            if shard:
+                print(f"{sum(shard_of(m, shard[1]) == shard[0] for m in muts)} of "
+                      f"{len(muts)} mutants in shard {shard[0]}/{shard[1]}")
+            else:
+                print(f"{len(muts)} mutants")
         except BrokenPipeError:  # piped into head
             pass
         return 0
-    load_judgements(a.survivors)  # a malformed record stops the run before any build
+    # A malformed or stale record stops the run before any build.
+    check_record(a.survivors, muts)
     if a.ids:
         by_id = {m["id"]: m for m in muts}
         chosen = [by_id[int(x)] for x in a.ids.split(",") if x.strip()]
+        selection = {"mode": "ids", "ids": a.ids}
+    elif a.all:
+        chosen, selection = muts, {"mode": "all"}
     else:
-        chosen = muts if a.all else sample_of(muts, a.sample, a.seed)
+        chosen = sample_of(muts, a.sample, a.seed)
+        selection = {"mode": "sample", "seed": a.seed, "sample": a.sample, "minutes": a.minutes}
+    if not a.sanitizer:
+        selection["sanitizer"] = False
+    if shard:
+        chosen = [m for m in chosen if shard_of(m, shard[1]) == shard[0]]
     # Within each run of WINDOW sampled mutants, those of one file one after another: restoring
     # the file and building its next mutant are then one rebuild, not two, while a time box
     # still cuts the sample at a window's end, not after a few whole files.
     chosen = [m for k in range(0, len(chosen), WINDOW)
               for m in sorted(chosen[k:k + WINDOW], key=lambda m: (m["file"], m["line"], m["id"]))]
-    commit, dirty = commit_of(a.root)
-    tree = tree_of(a.root)
-    started = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ")
-    t_prep = time.monotonic()
-    src, build, catalogue, objects = prepare_scratch(a.root, a.scratch, bool(a.coverage))
-    prep_secs = time.monotonic() - t_prep
-    coverage_failed = []
-    if a.coverage:
-        t_cov = time.monotonic()
-        now = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ")
-        coverage_failed = measure_coverage(
-            src, build, catalogue, *a.coverage,
-            provenance={"commit": commit, "dirty": dirty, "tree": tree, "build_id": None,
-                        "built": started, "generated": now,
-                        "build": scratch_build(a.scratch, True)})
-        print(f"coverage: every test once in {time.monotonic() - t_cov:.0f} s"
-              + (f"; FAILED: {', '.join(coverage_failed)}" if coverage_failed else ""),
-              flush=True)
-        if not a.all and not a.ids and a.minutes <= 0:
-            return 3 if coverage_failed else 0
-    # The box is for judging mutants; the scratch build before it is reported apart (minutes
-    # when the scratch is new, seconds when it outlives a run).
-    deadline = None if a.all else time.monotonic() + 60.0 * a.minutes
-    results = []
-    baseline = {}  # CTest entry -> passes on the unmutated sources (asked when it kills)
-    for m in chosen:
-        if deadline is not None and time.monotonic() > deadline:
-            break
-        labels = labels_of(a.root, m["file"])
-        entries = ctest_entries(catalogue, labels)
-        t0 = time.monotonic()
-        entries = {n: t for n, t in entries.items() if baseline.get(n, True)}
-        verdict, log, b_secs, t_secs = judge(m, src, build, entries, a.test_timeout, objects)
-        if verdict == "killed" and not passes_unmutated(failed_entries(log), build, entries,
-                                                        baseline, a.test_timeout):
-            # Killed by a test that fails without the mutant too: judged again without it.
-            broken = sorted(n for n in entries if baseline.get(n) is False)
-            print(f"   (fails unmutated, left out from now on: {', '.join(broken)})")
-            entries = {n: t for n, t in entries.items() if baseline.get(n, True)}
-            verdict, log, b_secs, t_secs = judge(m, src, build, entries, a.test_timeout, objects)
-        secs = time.monotonic() - t0
-        r = dict(m, verdict=verdict, labels=labels, tests=sorted(entries), seconds=round(secs, 1),
-                 build_seconds=round(b_secs, 1), test_seconds=round(t_secs, 1),
-                 log=log if verdict in ("survived", "stillborn", "not built") else "")
-        results.append(r)
-        print(f"{verdict:10s} #{m['id']} {m['file']}:{m['line']} {m['op']} ({secs:.0f} s: "
-              f"build {b_secs:.0f}, tests {t_secs:.0f})", flush=True)
-    # The record as it stands when the run ends (survivors may be judged while it runs).
-    judgements = load_judgements(a.survivors)
-    for r in results:
-        if r["verdict"] == "survived":
-            j = judgements.get(survivor_key(r))
-            r["judged"] = j["verdict"] if j else "not yet judged"
-            r["reason"] = j["reason"] if j else ""
-    score, killed, equivalent, counted = score_of(results, judgements)
-    survived = [r for r in results if r["verdict"] == "survived"]
-    gaps = [r for r in survived if r["judged"] == "gap"]
-    unjudged = [r for r in survived if r["judged"] == "not yet judged"]
-    judged_runs = [r for r in results
-                   if r["verdict"] in ("killed", "survived", "stillborn", "not built")]
-    mean = (sum(r["seconds"] for r in judged_runs) / len(judged_runs)) if judged_runs else 0.0
-    finished = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ")
-    details = (f"{killed} of {counted} non-equivalent compiled mutants killed "
-               f"({100 * score:.0f} %); {len(survived)} survived ({equivalent} judged equivalent, "
-               f"{len(gaps)} judged gaps, {len(unjudged)} not yet judged), "
-               f"{sum(r['verdict'] == 'stillborn' for r in results)} did not compile, "
-               f"{sum(r['verdict'] == 'not built' for r in results)} compiled to unchanged "
-               f"objects, "
-               f"{sum(r['verdict'] == 'no tests' for r in results)} had no labelled test; "
-               f"{len(results)} of {len(chosen)} chosen from {len(muts)} "
-               f"({'all' if a.all else f'ids {a.ids}' if a.ids else f'seed {a.seed}, sample {a.sample}, {a.minutes:g} min box'}); "
-               f"{mean:.0f} s per built mutant, scratch build {prep_secs:.0f} s")
-    broken = sorted(n for n, ok in baseline.items() if not ok)
-    if broken:
-        details += (f"; {len(broken)} CTest entries fail without any mutant and were left out: "
-                    + ", ".join(broken))
-    doc = {
-        "program": "mutation",
-        "description": "Mutation testing of src/tamias2d/model/ and dynamics/: mutants (operator "
-                       "swaps, constants, comparisons, removed assignments) built in a scratch "
-                       "copy, judged by the CTest entries labelled with the SRS items the mutated "
-                       "file's \\srs tags, or those of the library headers it includes, name (a "
-                       "file that reaches no tag: those of the files that include it). Score: "
-                       "killed / (killed + survivors not judged equivalent in "
-                       "verification/mutation/survivors.json). This run: " + details + ".",
-        "provenance": {"commit": commit, "dirty": dirty, "tree": tree, "build_id": None,
-                       "built": started, "generated": finished,
-                       "build": scratch_build(a.scratch, bool(a.coverage))},
-        "checks": [{"name": "at least 90 % of the non-equivalent mutants killed",
-                    "labels": [], "passed": bool(counted) and score >= 0.9 - 1e-12,
-                    "target": ">= 90 % killed",
-                    "oracle": "the SRS-labelled tests fail on each mutant; survivors judged "
-                              "equivalent are argued in verification/mutation/survivors.json",
-                    "details": details}],
-        "tables": [{"name": "Mutants", "columns": ["id", "where", "mutation", "labels (tests run)",
-                                                   "verdict", "seconds (build + tests)"],
-                    "rows": [[r["id"], f"{r['file']}:{r['line']}", r["op"],
-                              ", ".join(r["labels"]), r["verdict"],
-                              f"{r['seconds']:.0f} ({r['build_seconds']:.0f} + "
-                              f"{r['test_seconds']:.0f})"] for r in results]},
-                   {"name": "Survivors",
-                    "columns": ["id", "where", "mutation", "before", "after", "judged", "reason"],
-                    "rows": [[r["id"], f"{r['file']}:{r['line']}", r["op"], r["before"].strip(),
-                              r["after"].strip() or "(removed)", r["judged"], r["reason"]]
-                             for r in survived]}],
-        "series": [],
-        "score": score,
-        "summary": details,
-        "seconds_per_mutant": round(mean, 1),
-        "failing_unmutated": broken,
-        "scratch_build_seconds": round(prep_secs, 1),
-        "mutants": results,
-    }
-    os.makedirs(a.out_dir, exist_ok=True)
-    with open(os.path.join(a.out_dir, "mutation.json"), "w", encoding="utf-8") as fh:
-        json.dump(doc, fh, indent=1)
-    print("mutation: " + details)
-    return 3 if coverage_failed else 0
+    # One run per scratch: two runs in one copy would build each other's mutants.
+    os.makedirs(a.scratch, exist_ok=True)
+    lock = open(os.path.join(a.scratch, ".lock"), "w")
+    try:
+        fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
+    except OSError:
+        lock.close()
+        raise SystemExit(f"{a.scratch} is in use by another mutate.py run: pass --scratch DIR")
+    try:
+        return judge_run(a, muts, chosen, selection, shard)
+    finally:
+        lock.close()
 
 
 if __name__ == "__main__":

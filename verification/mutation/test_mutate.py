@@ -1,10 +1,17 @@
-"""The mutation tool's own test: which mutants a fragment of C++ yields (no build).
-Oracle: the mutants of each hand-written line, listed by hand."""
+"""The mutation tool's own test, without building the project: which mutants a fragment of C++
+yields, how they are judged, scored, sharded and merged (builds and tests mocked), the test
+runner on made-up executables and the restoring of a made-up CMake project's build. Each class
+names its oracle; the first: the mutants of each hand-written line, listed by hand."""
+import contextlib
+import io
 import json
 import os
+import re
+import shutil
 import sys
 import tempfile
 import unittest
+from unittest import mock
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import mutate  # noqa: E402
@@ -136,38 +143,68 @@ class Scoring(unittest.TestCase):
     def test_score_counts_only_survivors_not_judged_equivalent(self):
         def mut(line, verdict):
             return {"file": "f.cpp", "before": f"  x = {line};", "op": "statement removed",
-                    "verdict": verdict}
+                    "occurrence": 1, "verdict": verdict}
         results = [mut(1, "killed"), mut(2, "killed"), mut(3, "killed"), mut(4, "survived"),
                    mut(5, "survived"), mut(6, "survived"), mut(7, "stillborn"),
                    mut(8, "no tests")]
         j = self.judgements([
-            {"file": "f.cpp", "line": "x = 4;", "op": "statement removed",
+            {"file": "f.cpp", "line": "x = 4;", "op": "statement removed", "occurrence": 1,
              "verdict": "equivalent", "reason": "x is never read"},
-            {"file": "f.cpp", "line": "x = 5;", "op": "statement removed", "verdict": "gap",
-             "reason": "no test reads x"}])
+            {"file": "f.cpp", "line": "x = 5;", "op": "statement removed", "occurrence": 1,
+             "verdict": "gap", "reason": "no test reads x"}])
         # 3 killed; survivors 4 (equivalent, out), 5 (gap, in), 6 (not judged, in): 3 / 5.
         self.assertEqual(mutate.score_of(results, j), (3 / 5, 3, 1, 5))
         self.assertEqual(mutate.score_of(results, {}), (3 / 6, 3, 0, 6))
         # Keyed by the line's text, not its number or id: the judgement follows the line.
         self.assertIn(mutate.survivor_key(mut(4, "survived")), j)
 
+    def test_one_judgement_stands_for_one_mutant(self):
+        # The same loop twice in a file, and a line with the operator twice: four mutants of
+        # one line text and operator pair or another, told apart by their occurrence.
+        code = ("    for (int l = 0; l < n; ++l) {\n    }\n    y = a + b + c;\n"
+                "    for (int l = 0; l < n; ++l) {\n    }\n")
+        muts = [m for m in mutate.mutants_of("f.cpp", code) if m["op"].startswith(("compare <",
+                                                                                  "arith +"))]
+        self.assertEqual([(m["line"], m["op"], m["occurrence"]) for m in muts],
+                         [(1, "compare < to <=", 1), (3, "arith + to -", 1),
+                          (3, "arith + to -", 2), (4, "compare < to <=", 2)])
+        self.assertEqual([m["after"].strip() for m in muts[1:3]],
+                         ["y = a - b + c;", "y = a + b - c;"])
+        j = self.judgements([{"file": "f.cpp", "line": "for (int l = 0; l < n; ++l) {",
+                              "op": "compare < to <=", "occurrence": 2, "verdict": "equivalent",
+                              "reason": "the second loop's stray pass reads nothing"}])
+        results = [dict(m, verdict="survived") for m in muts if m["op"] == "compare < to <="]
+        # The judgement covers the second loop only: the first survivor still counts.
+        self.assertEqual(mutate.score_of(results, j), (0.0, 0, 1, 1))
+        # An occurrence past the last such mutant of the file is stale.
+        stale = self.judgements([{"file": "f.cpp", "line": "y = a + b + c;",
+                                  "op": "arith + to -", "occurrence": 3, "verdict": "gap",
+                                  "reason": "r"}])
+        self.assertEqual(mutate.stale_judgements(stale, muts),
+                         [("f.cpp", "y = a + b + c;", "arith + to -", 3)])
+        self.assertEqual(mutate.stale_judgements(j, muts), [])
+
     def test_malformed_judgement_is_an_error(self):
-        for bad in ({"file": "f", "line": "x", "op": "o", "verdict": "maybe", "reason": "r"},
-                    {"file": "f", "line": "x", "op": "o", "verdict": "gap", "reason": " "},
-                    {"file": "f", "line": "x", "op": "o", "verdict": "equivalent"}):
+        good = {"file": "f", "line": "x", "op": "o", "occurrence": 1, "verdict": "gap",
+                "reason": "r"}
+        for bad in (dict(good, verdict="maybe"), dict(good, reason=" "),
+                    {k: v for k, v in good.items() if k != "reason"},
+                    {k: v for k, v in good.items() if k != "occurrence"},  # keyed by line only
+                    dict(good, occurrence=0), dict(good, occurrence="1"),
+                    dict(good, occurrence=True), dict(good, ocurrence=2)):
             with self.subTest(bad=bad), self.assertRaises(SystemExit):
                 self.judgements([bad])
         with self.assertRaises(SystemExit):  # the same key twice
-            same = {"file": "f", "line": "x", "op": "o", "verdict": "gap", "reason": "r"}
-            self.judgements([same, same])
+            self.judgements([good, good])
+        self.assertEqual(len(self.judgements([good, dict(good, occurrence=2)])), 2)
 
     def test_the_repository_record_is_well_formed(self):
-        # Every judged survivor names a line that exists in its file with a mutant of that
-        # operator: a record that no mutant reaches any more is stale.
-        keys = {mutate.survivor_key(m) for m in mutate.all_mutants(mutate.ROOT)}
-        for key in mutate.load_judgements():
-            with self.subTest(key=key):
-                self.assertIn(key, keys)
+        # Every judged survivor names a mutant of this tree: its line text in its file with a
+        # mutant of that operator, and at least as many of them as its occurrence. A record
+        # that no mutant reaches any more is stale.
+        muts = mutate.all_mutants(mutate.ROOT)
+        self.assertEqual(mutate.stale_judgements(mutate.load_judgements(), muts), [])
+        mutate.check_record(mutate.SURVIVORS, muts)
 
     def test_failed_entries_from_a_ctest_log(self):
         log = ("50% tests passed, 1 tests failed out of 2\n\nThe following tests FAILED:\n"
@@ -175,6 +212,388 @@ class Scoring(unittest.TestCase):
                "Errors while running CTest\n")
         self.assertEqual(mutate.failed_entries(log), ["engine_tests@IM3", "model_tests@DD8"])
         self.assertEqual(mutate.failed_entries("100% tests passed"), [])
+
+
+class Interval(unittest.TestCase):
+    """Oracle: the Wilson score intervals (no continuity correction) tabulated by Newcombe,
+    Statistics in Medicine 17 (1998) 857-872, Table II, method 3."""
+
+    def test_wilson_interval_against_the_table(self):
+        for k, n, lo, hi in ((81, 263, 0.2553, 0.3662), (15, 148, 0.0624, 0.1605),
+                             (0, 20, 0.0, 0.1611), (1, 29, 0.0061, 0.1718),
+                             (29, 29, 0.8830, 1.0)):
+            with self.subTest(k=k, n=n):
+                got = mutate.wilson(k, n)
+                self.assertAlmostEqual(got[0], lo, places=4)
+                self.assertAlmostEqual(got[1], hi, places=4)
+        self.assertEqual(mutate.wilson(0, 0), (0.0, 1.0))
+
+    def doc(self, killed, survived, complete):
+        results = ([{"id": i, "file": "f.cpp", "line": i, "before": f"x = {i};",
+                     "after": "", "op": "statement removed", "occurrence": 1,
+                     "verdict": "killed", "labels": ["IM1"], "tests": ["t@IM1"],
+                     "seconds": 1.0, "build_seconds": 0.5, "test_seconds": 0.5}
+                    for i in range(killed)]
+                   + [{"id": 100 + i, "file": "f.cpp", "line": 100 + i,
+                       "before": f"y = {i};", "after": "", "op": "statement removed",
+                       "occurrence": 1, "verdict": "survived", "labels": ["IM1"],
+                       "tests": ["t@IM1"], "seconds": 1.0, "build_seconds": 0.5,
+                       "test_seconds": 0.5} for i in range(survived)])
+        return mutate.make_doc(results, {}, population=1604, chosen=len(results),
+                               selection={"mode": "all"} if complete else
+                               {"mode": "sample", "seed": 1, "sample": 1000, "minutes": 4},
+                               complete=complete, provenance={}, prep_secs=0.0,
+                               sanitizer=None, broken=[])
+
+    def test_the_floor_applies_to_the_lower_bound_of_a_sample(self):
+        # 16 of 17 (94 %, interval 73-99 %): a sample misses the floor, every mutant meets it.
+        sample, full = self.doc(16, 1, False), self.doc(16, 1, True)
+        self.assertEqual(sample["floor_applies_to"], "lower bound")
+        self.assertFalse(sample["checks"][0]["passed"])
+        self.assertEqual(full["floor_applies_to"], "point estimate")
+        self.assertTrue(full["checks"][0]["passed"])
+        self.assertAlmostEqual(sample["interval"][0], 0.7302, places=4)
+        self.assertEqual((sample["sample_size"], sample["counted"], sample["population"]),
+                         (17, 17, 1604))
+        self.assertIn("lower bound", sample["checks"][0]["details"])
+        self.assertIn("73.0-99.0 %", sample["checks"][0]["figure"])
+        # 16 of 18 is below the floor either way; 100 of 101 (lower bound 94.6 %) above it.
+        self.assertFalse(self.doc(16, 2, True)["checks"][0]["passed"])
+        self.assertTrue(self.doc(100, 1, False)["checks"][0]["passed"])
+        sys.path.insert(0, mutate.ROOT)
+        from traceability.vvdata import validate
+        self.assertEqual(validate(sample), [])
+
+
+class Judges(unittest.TestCase):
+    """Oracle: which tests judge a mutant, and the second judge's rule, on a made-up catalogue
+    and made-up test runs (no build)."""
+
+    CATALOGUE = [{"name": n, "properties": [{"name": "LABELS", "value": [n.split("@")[1]]}]}
+                 for n in ("model_tests@DD8", "engine_tests@IM3", "engine_tests@R7",
+                           "determinism_tests@determinism", "reliability_tests@determinism")]
+
+    def test_golden_hashes_judge_every_mutant_of_the_model_and_the_dynamics(self):
+        for rel in ("src/tamias2d/dynamics/joint_store.cpp", "src/tamias2d/model/x.hpp"):
+            with self.subTest(rel=rel):
+                self.assertEqual(mutate.entries_of(self.CATALOGUE, ["IM3"], rel),
+                                 {"engine_tests@IM3": "engine_tests",
+                                  "determinism_tests@determinism": "determinism_tests"})
+        # A file with no label is judged by the golden hashes alone; a test of another target
+        # carrying the same category label (run-to-run repeatability) is not one of them.
+        self.assertEqual(mutate.entries_of(self.CATALOGUE, [], "src/tamias2d/dynamics/y.cpp"),
+                         {"determinism_tests@determinism": "determinism_tests"})
+
+    def sanitizer_run(self, asan_log, unmutated_fails=False):
+        """SanitizerScratch.judge of a mutant whose tests fail in the sanitizer build with
+        asan_log (None: they pass), every build and command mocked."""
+        calls = []
+
+        def fake_run(cmd, cwd=None, timeout=None, env=None):
+            calls.append((cmd, env))
+            return 0, '{"tests": []}'  # configure, build, and ctest's empty listing
+
+        def fake_run_tests(entries, commands, test_timeout, env=None, jobs=2):
+            # The unmutated sources, asked when a test kills.
+            calls.append(("unmutated", sorted(entries), env))
+            return (sorted(entries), "failed") if unmutated_fails else ([], "")
+
+        def fake_judge(m, src, build, entries, test_timeout, objects=None, env=None,
+                       **_):
+            calls.append(("judge", build, env))
+            return ("killed", asan_log, 1.0, 2.0, sorted(entries)) if asan_log and entries \
+                else ("survived", "", 1.0, 2.0, [])
+
+        with mock.patch.object(mutate, "run", fake_run), \
+                mock.patch.object(mutate, "run_tests", fake_run_tests), \
+                mock.patch.object(mutate, "judge", fake_judge):
+            s = mutate.SanitizerScratch("/scratch", "/scratch/src")
+            out = s.judge({"id": 7}, {"engine_tests@IM3": "engine_tests"}, 60)
+        return out, calls, s
+
+    def test_a_sanitizer_report_kills_a_survivor(self):
+        log = ("1/1 Test #3: engine_tests@IM3 ...***Failed\n==1==ERROR: AddressSanitizer: "
+               "heap-buffer-overflow on address 0x6\nThe following tests FAILED:\n"
+               "\t  3 - engine_tests@IM3 (Failed)\n")
+        (killed, summary, _, _, failed), calls, s = self.sanitizer_run(log)
+        self.assertTrue(killed)
+        self.assertEqual(failed, ["engine_tests@IM3"])
+        self.assertIn("AddressSanitizer: heap-buffer-overflow", summary)
+        judged = [c for c in calls if c[0] == "judge"]
+        self.assertEqual(judged[0][1:], ("/scratch/build-asan", mutate.SANITIZER_ENV))
+        # Configured lazily, once, with the sanitizers on, and built before the mutant.
+        configure = [c[0] for c in calls if c[0][0] == "cmake" and "-S" in c[0]]
+        self.assertEqual(len(configure), 1)
+        self.assertIn("-DTAMIAS_SANITIZE=ON", configure[0])
+        self.assertEqual(s.built, {"engine_tests"})
+        # The kill is confirmed on the unmutated sources, in the sanitizer build's setting.
+        self.assertIn(("unmutated", ["engine_tests@IM3"], mutate.SANITIZER_ENV), calls)
+
+    def test_no_kill_by_a_test_that_fails_unmutated_or_without_failing(self):
+        log = "==1==ERROR: AddressSanitizer: x\nThe following tests FAILED:\n" \
+              "\t  3 - engine_tests@IM3 (Failed)\n"
+        (killed, _, _, _, _), _, s = self.sanitizer_run(log, unmutated_fails=True)
+        self.assertFalse(killed)
+        self.assertEqual(s.baseline, {"engine_tests@IM3": False})
+        (killed, _, _, _, _), calls, s = self.sanitizer_run(None)
+        self.assertFalse(killed)
+
+
+class Shards(unittest.TestCase):
+    """Oracle: a sharded run and its merge give what one run of the same mutants gives (every
+    mutant once, the same verdicts and score), on made-up files with the builds and tests
+    mocked: a mutant's verdict is a function of its key, as a real build's would be."""
+
+    FILES = {"src/tamias2d/model/a.hpp": "".join(f"    x{k} = a{k} + b{k} * 2.0;\n"
+                                                   for k in range(6)),
+             "src/tamias2d/dynamics/b.cpp": "    for (int l = 0; l < n; ++l) {\n    }\n" * 3
+             + "    y = p - q;\n"}
+
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.root = os.path.join(self.tmp.name, "root")
+        for rel, text in self.FILES.items():
+            os.makedirs(os.path.dirname(os.path.join(self.root, rel)), exist_ok=True)
+            with open(os.path.join(self.root, rel), "w") as fh:
+                fh.write(text)
+        self.record = os.path.join(self.tmp.name, "survivors.json")
+        with open(self.record, "w") as fh:
+            json.dump({"survivors": [{"file": "src/tamias2d/dynamics/b.cpp",
+                                      "line": "for (int l = 0; l < n; ++l) {",
+                                      "op": "compare < to <=", "occurrence": 2,
+                                      "verdict": "equivalent", "reason": "made up"}]}, fh)
+        self.tree = "tree-1"
+        self.judged = []
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    @staticmethod
+    def verdict(m, build):
+        h = int(mutate.hashlib.sha256(repr(mutate.survivor_key(m)).encode()).hexdigest(), 16)
+        if h % 5 == 0 and build.endswith("build-asan"):
+            return "killed"  # a stray read the sanitizer build reports
+        return "survived" if h % 5 in (0, 1) else "killed"
+
+    def run_main(self, *args):
+        def fake_judge(m, src, build, entries, test_timeout, objects=None, env=None,
+                       **_):
+            self.judged.append((m["id"], build))
+            v = self.verdict(m, build)
+            return v, ("==1==ERROR: AddressSanitizer: stray read" if v == "killed" and
+                       build.endswith("build-asan") else ""), 1.0, 1.0, \
+                sorted(entries) if v == "killed" else []
+
+        catalogue = [{"name": "determinism_tests@determinism",
+                      "properties": [{"name": "LABELS", "value": ["determinism"]}]}]
+        out = os.path.join(self.tmp.name, "out")
+        with mock.patch.object(mutate, "prepare_scratch",
+                               lambda root, scratch, coverage=False:
+                               (scratch + "/src", scratch + "/build", catalogue, {})), \
+                mock.patch.object(mutate, "judge", fake_judge), \
+                mock.patch.object(mutate, "run", lambda *a, **k: (0, '{"tests": []}')), \
+                mock.patch.object(mutate, "run_tests", lambda *a, **k: ([], "")), \
+                mock.patch.object(mutate, "commit_of", lambda root: ("c0ffee", False)), \
+                mock.patch.object(mutate, "tree_of", lambda root: self.tree), \
+                mock.patch.object(mutate, "scratch_build", lambda s, c: {"name": "scratch"}), \
+                contextlib.redirect_stdout(io.StringIO()):
+            self.assertEqual(mutate.main([out, "--root", self.root, "--survivors", self.record,
+                                          "--scratch", os.path.join(self.tmp.name, "s"),
+                                          *args]), 0)
+        return out
+
+    def load(self, path):
+        with open(path) as fh:
+            return json.load(fh)
+
+    def test_shards_merge_into_the_whole_run(self):
+        muts = mutate.all_mutants(self.root)
+        whole = self.load(os.path.join(self.run_main("--all"), "mutation.json"))
+        self.assertTrue(whole["complete"])
+        self.assertEqual(whole["population"], len(muts))
+        self.assertGreater(whole["killed_by_sanitizer"], 0)
+        files, seen = [], []
+        for i in range(3):
+            out = self.run_main("--all", "--shard", f"{i}/3")
+            files.append(os.path.join(out, mutate.shard_file(i, 3)))
+            doc = self.load(files[-1])
+            self.assertFalse(doc["complete"])
+            self.assertEqual(doc["floor_applies_to"], "lower bound")
+            seen += [r["id"] for r in doc["mutants"]]
+        self.assertEqual(sorted(seen), [m["id"] for m in muts])  # disjoint, together all
+        merged_dir = os.path.join(self.tmp.name, "merged")
+        with contextlib.redirect_stdout(io.StringIO()):
+            mutate.main(["--merge", merged_dir, *files, "--survivors", self.record])
+        merged = self.load(os.path.join(merged_dir, "mutation.json"))
+        for key in ("score", "killed", "counted", "interval", "population", "complete",
+                    "floor_applies_to", "killed_by_sanitizer"):
+            self.assertEqual(merged[key], whole[key], key)
+        self.assertEqual([(r["id"], r["verdict"]) for r in merged["mutants"]],
+                         [(r["id"], r["verdict"]) for r in whole["mutants"]])
+        self.assertEqual(merged["shards"]["missing"], [])
+        sys.path.insert(0, mutate.ROOT)
+        from traceability.vvdata import validate
+        self.assertEqual(validate(merged), [])
+
+        # A missing shard: reported, and the rest is a sample (the floor on the lower bound).
+        with contextlib.redirect_stdout(io.StringIO()):
+            mutate.main(["--merge", merged_dir, files[0], files[2], "--survivors", self.record])
+        part = self.load(os.path.join(merged_dir, "mutation.json"))
+        self.assertEqual(part["shards"]["missing"], [1])
+        self.assertFalse(part["complete"])
+        self.assertEqual(part["floor_applies_to"], "lower bound")
+        self.assertIn("shards missing: 1 of 3", part["checks"][0]["details"])
+
+        # Refused: a shard twice, and shards of another tree.
+        for bad in ([files[0], files[0]], [files[0], self.other_tree_shard()]):
+            with self.subTest(bad=bad), self.assertRaises(SystemExit):
+                mutate.main(["--merge", merged_dir, *bad, "--survivors", self.record])
+
+    def other_tree_shard(self):
+        self.tree = "tree-2"
+        return os.path.join(self.run_main("--all", "--shard", "1/3"), mutate.shard_file(1, 3))
+
+    def test_the_split_is_stable_under_edits_elsewhere(self):
+        before = {mutate.survivor_key(m): mutate.shard_of(m, 4)
+                  for m in mutate.all_mutants(self.root)}
+        with open(os.path.join(self.root, "src/tamias2d/model/a.hpp"), "a") as fh:
+            fh.write("    z = u / v;\n")
+        after = {mutate.survivor_key(m): mutate.shard_of(m, 4)
+                 for m in mutate.all_mutants(self.root)}
+        self.assertEqual({k: v for k, v in after.items() if k in before}, before)
+        self.assertEqual(len(set(before.values())), 4)  # every shard gets some
+
+    def test_one_run_per_scratch(self):
+        scratch = os.path.join(self.tmp.name, "s")
+        os.makedirs(scratch)
+        with open(os.path.join(scratch, ".lock"), "w") as held:
+            mutate.fcntl.flock(held, mutate.fcntl.LOCK_EX)
+            with self.assertRaises(SystemExit):
+                self.run_main("--all")
+        self.run_main("--all")  # released
+
+    def test_a_survivor_goes_to_the_sanitizer_build_only(self):
+        doc = self.load(os.path.join(self.run_main("--all"), "mutation.json"))
+        asan = {i for i, b in self.judged if b.endswith("build-asan")}
+        self.assertEqual(asan, {r["id"] for r in doc["mutants"]
+                                if r["verdict"] == "survived" or
+                                r.get("killed_by") == "sanitizer"})
+
+
+def script(path, body):
+    with open(path, "w") as fh:
+        fh.write("#!/bin/sh\n" + body + "\n")
+    os.chmod(path, 0o755)
+    return path
+
+
+class Tests(unittest.TestCase):
+    """Oracle: what made-up test executables (shell scripts that log their arguments) were
+    asked to do, and when run_tests returned."""
+
+    def test_each_executable_runs_once_with_its_entries_labels(self):
+        with tempfile.TemporaryDirectory() as d:
+            log = os.path.join(d, "log")
+            exe = script(os.path.join(d, "engine_tests"), f'echo "$@" >> {log}')
+            other = script(os.path.join(d, "model_tests"), f'echo "model $@" >> {log}')
+            commands = {"engine_tests@IM3": (exe, d), "engine_tests@R7": (exe, d),
+                        "model_tests@DD8": (other, d)}
+            entries = {n: n.split("@")[0] for n in commands}
+            self.assertEqual(mutate.run_tests(entries, commands, 30), ([], ""))
+            with open(log) as fh:
+                self.assertEqual(sorted(fh.read().split("\n")),
+                                 ["", "--run_test=@IM3:@R7 --color_output=no",
+                                  "model --run_test=@DD8 --color_output=no"])
+
+    def test_the_first_failure_stops_the_others_and_a_time_out_fails(self):
+        with tempfile.TemporaryDirectory() as d:
+            slow = script(os.path.join(d, "slow"), "sleep 30")
+            bad = script(os.path.join(d, "bad"), "echo 'check failed'; exit 201")
+            commands = {"slow@A": (slow, d), "bad@B": (bad, d), "bad@C": (bad, d)}
+            t0 = mutate.time.monotonic()
+            failed, log = mutate.run_tests({n: n.split("@")[0] for n in commands}, commands, 60)
+            self.assertLess(mutate.time.monotonic() - t0, 20)
+            self.assertEqual(failed, ["bad@B", "bad@C"])
+            self.assertIn("check failed", log)
+            failed, log = mutate.run_tests({"slow@A": "slow"}, commands, 1)
+            self.assertEqual(failed, ["slow@A"])
+            self.assertIn("time-out after 1 s", log)
+
+
+@unittest.skipUnless(all(shutil.which(t) for t in ("cmake", "ninja", "c++")),
+                     "needs cmake, ninja and a C++ compiler")
+class Restore(unittest.TestCase):
+    """Oracle: ninja's own dry run and the bytes of the outputs, on a made-up CMake project
+    built as the scratch is (a shared library, executables not relinked when only it changes):
+    after a mutant and its restoring, the build is as the unmutated sources leave it."""
+
+    def test_a_mutant_leaves_the_build_unmutated_and_the_next_builds_only_itself(self):
+        with tempfile.TemporaryDirectory() as d:
+            src, build = os.path.join(d, "src"), os.path.join(d, "build")
+            os.makedirs(src)
+            files = {"CMakeLists.txt": "cmake_minimum_required(VERSION 3.16)\nproject(t CXX)\n"
+                                       "add_library(lib SHARED a.cpp b.cpp)\n"
+                                       "add_executable(app main.cpp)\n"
+                                       "target_link_libraries(app lib)\n",
+                     "h.hpp": "inline int g() { return 2 * 3; }\n",
+                     "a.cpp": '#include "h.hpp"\nint f() {\n    return 1 + g();\n}\n',
+                     "b.cpp": "int k() {\n    return 4 - 1;\n}\n",
+                     "main.cpp": '#include "h.hpp"\nint f();\nint k();\n'
+                                 "int main() { return f() == 7 && k() == 3 && g() == 6 ? 0 : 1; }\n"}
+            for name, text in files.items():
+                with open(os.path.join(src, name), "w") as fh:
+                    fh.write(text)
+            rc, out = mutate.run(["cmake", "-S", src, "-B", build, "-G", "Ninja",
+                                  "-DCMAKE_BUILD_TYPE=Release", "-DBUILD_SHARED_LIBS=ON",
+                                  "-DCMAKE_LINK_DEPENDS_NO_SHARED=ON"])
+            self.assertEqual(rc, 0, out)
+            self.assertEqual(mutate.run(["cmake", "--build", build])[0], 0)
+            unmutated, objects = mutate.Unmutated(build), mutate.object_digests(build)
+            app = os.path.join(build, "app")
+            entries, commands = {"app@X": "app"}, {"app@X": (app, build)}
+
+            def mutant(name, no, before, after):
+                return {"file": name, "line": no, "before": before, "after": after, "id": 0}
+
+            def dry_run():
+                return mutate.run(["ninja", "-C", build, "-n"])[1]
+
+            for m in (mutant("a.cpp", 3, "    return 1 + g();", "    return 1 - g();"),
+                      mutant("h.hpp", 1, files["h.hpp"][:-1],
+                             "inline int g() { return 2 / 3; }")):
+                with self.subTest(file=m["file"]):
+                    path = os.path.join(src, m["file"])
+                    before = os.stat(path).st_mtime_ns
+                    verdict = mutate.judge(m, src, build, entries, 60, objects,
+                                           commands=commands, unmutated=unmutated)
+                    self.assertEqual(verdict[0], "killed")  # the program checks f() and g()
+                    self.assertEqual(os.stat(path).st_mtime_ns, before)
+                    self.assertIn("no work to do", dry_run())
+                    for out_path, data in unmutated.files.items():
+                        with open(out_path, "rb") as fh:
+                            self.assertEqual(fh.read(), data, out_path)
+            # The next mutant's build compiles its own file and links, nothing else.
+            m = mutant("b.cpp", 2, "    return 4 - 1;", "    return 4 + 1;")
+            with mock.patch.object(mutate, "run_tests", lambda *a, **k: (["app@X"], "")):
+                real_run = mutate.run
+                logs = []
+
+                def logging_run(cmd, **kw):
+                    rc, out = real_run(cmd, **kw)
+                    logs.append(out)
+                    return rc, out
+                with mock.patch.object(mutate, "run", logging_run):
+                    mutate.judge(m, src, build, entries, 60, objects, commands=commands,
+                                 unmutated=unmutated)
+            compiled = re.findall(r"Building CXX object (\S+)", logs[0])
+            self.assertEqual(compiled, ["CMakeFiles/lib.dir/b.cpp.o"])
+            self.assertIn("no work to do", dry_run())
+            self.assertEqual(mutate.judge(dict(m, after=m["before"]), src, build, entries, 60,
+                                          objects, commands=commands, unmutated=unmutated)[0],
+                             "not built")
+            # The control: restored without its outputs, the source is rebuilt.
+            mutate.judge(m, src, build, entries, 60, objects, commands=commands)
+            self.assertIn("b.cpp.o", dry_run())
 
 
 if __name__ == "__main__":
