@@ -238,7 +238,7 @@ BOOST_AUTO_TEST_CASE(values_beyond_the_supported_range_are_named,
     expect_rejected(with_bodies(R"({"angle": 1e300, )" + circle + "}"), "/bodies/0/angle",
                     "DCX_range", "body.angle = 1e+300");
     expect_rejected(with_bodies(R"({"mass": 1e-300, )" + circle + "}"), "/bodies/0/mass",
-                    "DCX_range", "body.mass = 1e-300: must be in [1e-36, 1e+36] kg");
+                    "DCX_range", ": mass = 1e-300: must be in [1e-36, 1e+36] kg");
     expect_rejected(with_bodies(R"({"shapes": [{"type": "circle", "radius": 1e-200}]})"),
                     "/bodies/0/shapes/0/radius", "DCX_range", "radius = 1e-200");
     expect_rejected(
