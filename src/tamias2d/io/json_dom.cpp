@@ -1,6 +1,7 @@
 #include "json_dom.hpp"
 
 #include <algorithm>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -79,6 +80,14 @@ std::string escape_token(std::string_view key) {
     return out;
 }
 
+ojson& append_member(ojson& object, std::string key, ojson value) {
+    // The ordered object is a vector of members: appended in place, without the linear search
+    // of operator[] or emplace.
+    ojson::object_t& members = object.get_ref<ojson::object_t&>();
+    members.emplace_back(std::move(key), std::move(value));
+    return members.back().second;
+}
+
 namespace {
 
 // ---------------------------------------------------------------------------------------------
@@ -115,7 +124,7 @@ class DomBuilder {
     bool end_object() { return close(); }
     bool end_array() { return close(); }
     bool key(string_t& k) {
-        if (stack_.back()->contains(k)) {
+        if (!keys_.back().insert(k).second) {
             pointer = current_pointer() + "/" + escape_token(k);
             return error_at_pointer("duplicate key " + quote(k));
         }
@@ -152,6 +161,9 @@ class DomBuilder {
 
   private:
     std::vector<ojson*> stack_;
+    // The keys of each open container so far (none for an array): a duplicate is found in
+    // constant expected time, where the ordered object's own lookup is linear in its keys.
+    std::vector<std::unordered_set<std::string>> keys_;
     std::vector<std::string> path_;
     std::string key_;
 
@@ -177,9 +189,7 @@ class DomBuilder {
             top.push_back(std::forward<V>(v));
             return &top.back();
         }
-        ojson& slot = top[key_];
-        slot = std::forward<V>(v);
-        return &slot;
+        return &append_member(top, key_, ojson(std::forward<V>(v))); // key() found it new
     }
     template <class V> bool put(V&& v) {
         insert(std::forward<V>(v));
@@ -195,10 +205,12 @@ class DomBuilder {
         if (!stack_.empty())
             path_.push_back(std::move(seg));
         stack_.push_back(p);
+        keys_.emplace_back();
         return true;
     }
     bool close() {
         stack_.pop_back();
+        keys_.pop_back();
         if (!path_.empty()) // the root has no segment
             path_.pop_back();
         return true;

@@ -29,6 +29,10 @@ std::string quote(std::string_view s);
 /// RFC 6901 escaping of one reference token.
 std::string escape_token(std::string_view key);
 
+/// Appends the member `key` to `object` (an object that has no such key: the caller knows it),
+/// in constant amortised time, and returns its value.
+ojson& append_member(ojson& object, std::string key, ojson value);
+
 /// The document of `text`; a SceneError (at a line and column, or at the pointer of a
 /// duplicate key or of too deep a nesting) if it is no JSON text the scene format takes.
 ojson parse_json(std::string_view text, const std::string& origin);

@@ -117,7 +117,7 @@ std::string scene_to_json(const Scene& scene, int indent) {
     if (!scene.materials.empty()) {
         ojson mats = ojson::object();
         for (const auto& [name, m] : scene.materials)
-            mats[name] = material_json(m);
+            scene_detail::append_member(mats, name, material_json(m)); // a map's keys differ
         j["materials"] = std::move(mats);
     }
     ojson bodies = ojson::array();
