@@ -5,6 +5,7 @@
 #include <cmath>
 #include <utility>
 
+#include "box_polygon.hpp"
 #include "scene_read.hpp"
 #include "tamias2d/io/chain_runs.hpp"
 #include "tamias2d/validation.hpp"
@@ -350,7 +351,8 @@ std::vector<ShapeDef> parse_shape_geometry(const Ctx& ctx, const ojson& v, const
             opt_vec2(ctx, v, ptr, "center", center);
             opt_number(ctx, v, ptr, "angle", angle);
             read_material();
-            return {checked(ctx, ptr, ptr, box_shape(w, h, material, center, angle))};
+            // Checked as a box (its sizes named as the file names them), held as its polygon.
+            return {box_polygon(checked(ctx, ptr, ptr, box_shape(w, h, material, center, angle)))};
         }
         if (type == "circle") {
             check_keys(ctx, v, ptr, {"type", "radius", "center", "material", "filter", "sensor"},
