@@ -5,6 +5,7 @@
 #include <string>
 #include <type_traits>
 #include <variant>
+#include <vector>
 
 #include "json_dom.hpp"
 #include "scene_fields.hpp"
@@ -99,6 +100,101 @@ ojson geometry_json(const Geometry& g) {
             {"ghost2", vec(g.chain_segment.ghost2)}};
 }
 
+/// A body's shapes: each shape an entry of its geometry's keys, then the keys every shape has;
+/// a run of chain segments that a chain makes again as one "chain" while `chain_budget` (the
+/// points parse_scene allows) lasts, else segment by segment.
+ojson shapes_json(const std::vector<ShapeDef>& shapes, std::size_t& chain_budget) {
+    ojson out = ojson::array();
+    const auto add = [&out](ojson sj, const ShapeDef& s) {
+        sj["material"] = material_json(s.material);
+        if (!(s.filter == Filter{})) // (the default filter is left out)
+            sj["filter"] = {{"category_bits", s.filter.category_bits},
+                            {"mask_bits", s.filter.mask_bits},
+                            {"group_index", s.filter.group_index}};
+        if (s.is_sensor)
+            sj["sensor"] = true;
+        out.push_back(std::move(sj));
+    };
+    for (std::size_t i = 0; i < shapes.size();) {
+        const ShapeDef& s = shapes[i];
+        const Geometry& g = s.geometry;
+        if (g.type != ShapeType::chain_segment) {
+            add(geometry_json(g), s);
+            ++i;
+            continue;
+        }
+        const ChainRun run = chain_run_at(shapes, i);
+        if (run.reproduced && run.points.size() <= chain_budget) {
+            ojson pts = ojson::array();
+            for (const Vec2d p : run.points)
+                pts.push_back(vec(p));
+            add({{"type", "chain"}, {"points", std::move(pts)}, {"loop", run.loop}}, s);
+            chain_budget -= run.points.size();
+        } else {
+            for (std::size_t k = i; k < i + run.count; ++k)
+                add(geometry_json(shapes[k].geometry), shapes[k]);
+        }
+        i += run.count;
+    }
+    return out;
+}
+
+/// A body entry: its definition's keys (the body field table), its loads and its shapes.
+ojson body_json(const SceneBody& b, std::size_t& chain_budget) {
+    ojson o = ojson::object();
+    scene_detail::body_fields(
+        b.def, [&o](std::string_view key, const auto& member, scene_detail::FieldRule rule) {
+            using T = std::remove_cvref_t<decltype(member)>;
+            if constexpr (std::is_same_v<T, std::optional<double>>) {
+                if (member)
+                    o[std::string(key)] = *member;
+            } else if constexpr (std::is_same_v<T, std::string> || std::is_same_v<T, bool>) {
+                if (!(rule.omit_default && member == T{}))
+                    o[std::string(key)] = member;
+            } else {
+                o[std::string(key)] = field_json(member);
+            }
+        });
+    if (!b.loads.empty()) {
+        ojson l = ojson::object();
+        if (b.loads.force_x)
+            l["force_x"] = time_function_json(*b.loads.force_x);
+        if (b.loads.force_y)
+            l["force_y"] = time_function_json(*b.loads.force_y);
+        if (b.loads.torque)
+            l["torque"] = time_function_json(*b.loads.torque);
+        o["loads"] = std::move(l);
+    }
+    o["shapes"] = shapes_json(b.shapes, chain_budget);
+    return o;
+}
+
+/// A joint entry: its type, its bodies' names and its kind's keys (the joint field tables).
+ojson joint_json(const SceneJoint& sj) {
+    ojson o = ojson::object();
+    o["type"] = scene_detail::joint_types[sj.def.index()];
+    o["body_a"] = sj.body_a;
+    o["body_b"] = sj.body_b;
+    SceneJoint::Definition def = sj.def; // the field tables take mutable members
+    std::visit(
+        [&](auto& d) {
+            scene_detail::all_joint_fields(d, [&](std::string_view key, auto& member, bool) {
+                using T = std::remove_cvref_t<decltype(member)>;
+                if constexpr (std::is_same_v<T, Vec2d>)
+                    o[std::string(key)] = vec(member);
+                else if constexpr (std::is_same_v<T, std::optional<double>>) {
+                    if (member)
+                        o[std::string(key)] = *member;
+                } else if constexpr (std::is_same_v<T, bool>)
+                    o[std::string(key)] = member;
+                else if (std::isfinite(member)) // infinite (no bound): the default
+                    o[std::string(key)] = member;
+            });
+        },
+        def);
+    return o;
+}
+
 } // namespace
 
 std::string scene_to_json(const Scene& scene, int indent) {
@@ -123,96 +219,13 @@ std::string scene_to_json(const Scene& scene, int indent) {
     ojson bodies = ojson::array();
     // Chains beyond the limit parse_scene sets are written segment by segment.
     std::size_t chain_budget = max_chain_points;
-    for (const SceneBody& b : scene.bodies) {
-        const BodyDef& d = b.def;
-        ojson o = ojson::object();
-        scene_detail::body_fields(
-            d, [&o](std::string_view key, const auto& member, scene_detail::FieldRule rule) {
-                using T = std::remove_cvref_t<decltype(member)>;
-                if constexpr (std::is_same_v<T, std::optional<double>>) {
-                    if (member)
-                        o[std::string(key)] = *member;
-                } else if constexpr (std::is_same_v<T, std::string> || std::is_same_v<T, bool>) {
-                    if (!(rule.omit_default && member == T{}))
-                        o[std::string(key)] = member;
-                } else {
-                    o[std::string(key)] = field_json(member);
-                }
-            });
-        if (!b.loads.empty()) {
-            ojson l = ojson::object();
-            if (b.loads.force_x)
-                l["force_x"] = time_function_json(*b.loads.force_x);
-            if (b.loads.force_y)
-                l["force_y"] = time_function_json(*b.loads.force_y);
-            if (b.loads.torque)
-                l["torque"] = time_function_json(*b.loads.torque);
-            o["loads"] = std::move(l);
-        }
-        ojson shapes = ojson::array();
-        // An entry: its geometry's keys, then the keys every shape has.
-        const auto add = [&shapes](ojson sj, const ShapeDef& s) {
-            sj["material"] = material_json(s.material);
-            if (!(s.filter == Filter{})) // (the default filter is left out)
-                sj["filter"] = {{"category_bits", s.filter.category_bits},
-                                {"mask_bits", s.filter.mask_bits},
-                                {"group_index", s.filter.group_index}};
-            if (s.is_sensor)
-                sj["sensor"] = true;
-            shapes.push_back(std::move(sj));
-        };
-        for (std::size_t i = 0; i < b.shapes.size();) {
-            const ShapeDef& s = b.shapes[i];
-            const Geometry& g = s.geometry;
-            if (g.type != ShapeType::chain_segment) {
-                add(geometry_json(g), s);
-                ++i;
-                continue;
-            }
-            const ChainRun run = chain_run_at(b.shapes, i);
-            if (run.reproduced && run.points.size() <= chain_budget) {
-                ojson pts = ojson::array();
-                for (const Vec2d p : run.points)
-                    pts.push_back(vec(p));
-                add({{"type", "chain"}, {"points", std::move(pts)}, {"loop", run.loop}}, s);
-                chain_budget -= run.points.size();
-            } else {
-                for (std::size_t k = i; k < i + run.count; ++k)
-                    add(geometry_json(b.shapes[k].geometry), b.shapes[k]);
-            }
-            i += run.count;
-        }
-        o["shapes"] = std::move(shapes);
-        bodies.push_back(std::move(o));
-    }
+    for (const SceneBody& b : scene.bodies)
+        bodies.push_back(body_json(b, chain_budget));
     j["bodies"] = std::move(bodies);
     if (!scene.joints.empty()) {
         ojson joints = ojson::array();
-        for (const SceneJoint& sj : scene.joints) {
-            ojson o = ojson::object();
-            o["type"] = scene_detail::joint_types[sj.def.index()];
-            o["body_a"] = sj.body_a;
-            o["body_b"] = sj.body_b;
-            SceneJoint::Definition def = sj.def; // the field tables take mutable members
-            std::visit(
-                [&](auto& d) {
-                    scene_detail::all_joint_fields(
-                        d, [&](std::string_view key, auto& member, bool) {
-                            using T = std::remove_cvref_t<decltype(member)>;
-                            if constexpr (std::is_same_v<T, Vec2d>)
-                                o[std::string(key)] = vec(member);
-                            else if constexpr (std::is_same_v<T, std::optional<double>>) {
-                                if (member)
-                                    o[std::string(key)] = *member;
-                            } else if constexpr (std::is_same_v<T, bool>)
-                                o[std::string(key)] = member;
-                            else if (std::isfinite(member)) // infinite (no bound): the default
-                                o[std::string(key)] = member;
-                        });
-                },
-                def);
-            joints.push_back(std::move(o));
-        }
+        for (const SceneJoint& sj : scene.joints)
+            joints.push_back(joint_json(sj));
         j["joints"] = std::move(joints);
     }
     return j.dump(indent);
