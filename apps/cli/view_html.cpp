@@ -106,18 +106,6 @@ std::string html_escape(std::string_view s) {
     return out;
 }
 
-const char* type_name(BodyType t) {
-    switch (t) {
-    case BodyType::static_body:
-        return "static";
-    case BodyType::kinematic:
-        return "kinematic";
-    case BodyType::dynamic:
-        return "dynamic";
-    }
-    return "dynamic";
-}
-
 using view::to_body_frame;
 
 json pair(Vec2d v) {
@@ -230,7 +218,7 @@ Recording::Recording(const io::Scene& scene, const World& world, std::vector<Bod
             shapes.push_back(it->second);
         }
         bodies.push_back({{"name", body.def.name},
-                          {"type", type_name(world.type(ids_[i]))},
+                          {"type", std::string(to_string(world.type(ids_[i])))},
                           {"m", world.mass(ids_[i])},
                           {"I", world.inertia(ids_[i])},
                           {"lc", pair(lc)},

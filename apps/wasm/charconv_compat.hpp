@@ -2,8 +2,8 @@
 // which has only the integer ones. scripts/build_wasm.sh includes this before every source
 // (-include), so that the library's sources compile unchanged. The library uses them for one
 // thing each: the shortest round-trip text of a value in error messages (errors.hpp) and the
-// numbers of a "1/60" dt string (io/scene.cpp), which strtod (correctly rounded in musl, the
-// libc emscripten uses) reads to the same double.
+// numbers of a "1/60" dt string (io/scene_reader.cpp), which strtod (correctly rounded in musl,
+// the libc emscripten uses) reads to the same double.
 #pragma once
 
 #include <cerrno>

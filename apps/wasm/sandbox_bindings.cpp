@@ -63,12 +63,6 @@ template <class F> int guarded(F&& f) {
 using tamias2d::view::point_json;
 using tamias2d::view::to_body_frame;
 
-const char* type_name(BodyType t) {
-    return t == BodyType::static_body ? "static"
-           : t == BodyType::kinematic ? "kinematic"
-                                      : "dynamic";
-}
-
 /// A body as the player's drawing code takes it (apps/cli/player/player.js): name, type,
 /// mass, inertia, local centre of mass and its shapes' geometry (in the body frame, as
 /// `tamias2d view` writes them: view_geometry.hpp).
@@ -77,7 +71,7 @@ json body_json(const World& world, BodyId id, const std::vector<ShapeDef>& shape
     for (const ShapeDef& shape : shapes)
         geoms.push_back(tamias2d::view::geometry_json(shape.geometry));
     return {{"name", world.name(id)},
-            {"type", type_name(world.type(id))},
+            {"type", std::string(to_string(world.type(id)))},
             {"m", world.mass(id)},
             {"I", world.inertia(id)},
             {"lc", point_json(world.local_center(id))},

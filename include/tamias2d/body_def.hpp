@@ -6,6 +6,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "tamias2d/vec2.hpp"
 
@@ -14,6 +15,20 @@ namespace tamias2d {
 /// Static bodies never move; kinematic bodies move with their velocity and are not pushed;
 /// dynamic bodies obey IM1/IM2 and collisions.
 enum class BodyType : std::uint8_t { static_body, kinematic, dynamic };
+
+/// A body type's name as scene files, the command-line tool, the viewer and messages spell it:
+/// "static", "kinematic" or "dynamic"; "" for a value outside the enumeration.
+constexpr std::string_view to_string(BodyType type) noexcept {
+    switch (type) {
+    case BodyType::static_body:
+        return "static";
+    case BodyType::kinematic:
+        return "kinematic";
+    case BodyType::dynamic:
+        return "dynamic";
+    }
+    return "";
+}
 
 /// Time-varying loads (SRS IM1's F_i(t), IM2's tau_i(t)) at the centre of mass.
 struct Load {

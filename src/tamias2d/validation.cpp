@@ -240,15 +240,8 @@ void validate(const ShapeDef& def) {
 }
 
 const char* type_name(BodyType type) {
-    switch (type) {
-    case BodyType::static_body:
-        return "static";
-    case BodyType::kinematic:
-        return "kinematic";
-    case BodyType::dynamic:
-        return "dynamic";
-    }
-    return "of no known type";
+    const std::string_view name = to_string(type);
+    return name.empty() ? "of no known type" : name.data();
 }
 
 namespace {

@@ -103,10 +103,10 @@ bool joint_lever_fits(Vec2d r, double inv_mass, double inv_inertia);
 /// DCX_dt: the time step is finite and > 0; DCX_range: in [input_min, input_max] s.
 TAMIAS2D_EXPORT void validate_time_step(double dt);
 /// DCI_m: a mass given for a dynamic body is > 0 (the SRS's m >= 0 would divide by zero in IM1).
-void validate_mass(std::string_view field, double mass);
+TAMIAS2D_EXPORT void validate_mass(std::string_view field, double mass);
 /// DCI_I: a moment of inertia given is > 0 (the SRS's I >= 0 would divide by zero in IM2).
-void validate_inertia(std::string_view field, double inertia);
+TAMIAS2D_EXPORT void validate_inertia(std::string_view field, double inertia);
 /// DCX_damping: a damping rate is finite and >= 0 (a negative one would feed energy in).
-void validate_damping(std::string_view field, double rate);
+TAMIAS2D_EXPORT void validate_damping(std::string_view field, double rate);
 
 } // namespace tamias2d

@@ -12,7 +12,7 @@ Usage: python3 tests/io/check_scene_schema.py <repo_root>
     express, each at the JSON pointer where the loader reports it, and a few inline variants
     (an unknown key at each level of nesting).
 
-The loader (src/tamias2d/io/scene.cpp) remains the authority: the malformed scenes in
+The loader (src/tamias2d/io/, its reader scene_reader.cpp) remains the authority: the malformed scenes in
 LOADER_ONLY are rejected by it but not by the schema, for the reason given. A malformed scene in
 neither list fails the check until it is classified here.
 

@@ -171,8 +171,12 @@ TAMIAS2D_IO_EXPORT std::vector<BodyId> build_world(const Scene& scene, World& wo
 /// polygons, the segments of a chain as one "chain" (each segment that is not exactly the
 /// segment of a chain through its neighbours, or beyond max_chain_points, as a "chain_segment"
 /// with its ghosts). parse_scene(scene_to_json(s)) reproduces s (loads, materials and
-/// geometry, bit for bit): a box is accepted exactly when its polygon is, both by the one sliver
-/// rule (DCX_shape). (A text beyond max_scene_bytes needs a larger limit passed to parse_scene.)
+/// geometry, bit for bit), so the written form simulates with the same state hashes: a scene's
+/// polygons, its boxes included, are what polygon_shape derives from their points (a box read
+/// or generated is held as the polygon of its corners), and a box is accepted exactly when its
+/// polygon is, both by the one sliver rule (DCX_shape). A polygon made otherwise by hand (a
+/// box_shape, whose centroid is its centre) reads back as what its points give. (A text beyond
+/// max_scene_bytes needs a larger limit passed to parse_scene.)
 TAMIAS2D_IO_EXPORT std::string scene_to_json(const Scene& scene, int indent = 2);
 
 } // namespace io

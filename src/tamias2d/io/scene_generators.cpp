@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "box_polygon.hpp"
 #include "tamias2d/errors.hpp"
 #include "tamias2d/validation.hpp"
 
@@ -89,7 +90,7 @@ std::vector<SceneBody> generate_pyramid(const PyramidParams& p) {
     out.reserve(std::size_t(p.base) * std::size_t(p.base + 1) / 2 + 1);
     SceneBody ground = make_body(p.name + "/ground", BodyType::static_body,
                                  {p.origin.x, p.origin.y - 0.5 * ground_h});
-    ground.shapes.push_back(box_shape(ground_w, ground_h, p.material));
+    ground.shapes.push_back(box_polygon(box_shape(ground_w, ground_h, p.material)));
     out.push_back(std::move(ground));
 
     for (int row = 0; row < p.base; ++row) {
@@ -99,7 +100,7 @@ std::vector<SceneBody> generate_pyramid(const PyramidParams& p) {
             const double x = p.origin.x + (col - 0.5 * (n - 1)) * pitch;
             SceneBody b = make_body(p.name + "/r" + std::to_string(row) + "c" + std::to_string(col),
                                     BodyType::dynamic, {x, y});
-            b.shapes.push_back(box_shape(p.box, p.box, p.material));
+            b.shapes.push_back(box_polygon(box_shape(p.box, p.box, p.material)));
             out.push_back(std::move(b));
         }
     }
@@ -135,11 +136,11 @@ std::vector<SceneBody> generate_rain(const RainParams& p) {
     SceneBody box = make_body(p.name + "/container", BodyType::static_body, c.origin);
     const double half_w = 0.5 * c.width;
     box.shapes.push_back(
-        box_shape(c.width + 2.0 * c.wall, c.wall, p.material, {0.0, -0.5 * c.wall}));
-    box.shapes.push_back(
-        box_shape(c.wall, c.height, p.material, {-(half_w + 0.5 * c.wall), 0.5 * c.height}));
-    box.shapes.push_back(
-        box_shape(c.wall, c.height, p.material, {half_w + 0.5 * c.wall, 0.5 * c.height}));
+        box_polygon(box_shape(c.width + 2.0 * c.wall, c.wall, p.material, {0.0, -0.5 * c.wall})));
+    box.shapes.push_back(box_polygon(
+        box_shape(c.wall, c.height, p.material, {-(half_w + 0.5 * c.wall), 0.5 * c.height})));
+    box.shapes.push_back(box_polygon(
+        box_shape(c.wall, c.height, p.material, {half_w + 0.5 * c.wall, 0.5 * c.height})));
     out.push_back(std::move(box));
 
     // In doubles: a wide container holds more columns than an int counts (width / spacing up to
@@ -155,7 +156,7 @@ std::vector<SceneBody> generate_rain(const RainParams& p) {
         const double x = c.origin.x + (col - 0.5 * (columns - 1)) * spacing + dx;
         const double y = y0 + row * spacing;
         SceneBody b = make_body(p.name + "/" + std::to_string(i), BodyType::dynamic, {x, y});
-        b.shapes.push_back(box_shape(p.box, p.box, p.material));
+        b.shapes.push_back(box_polygon(box_shape(p.box, p.box, p.material)));
         out.push_back(std::move(b));
     }
     return out;
@@ -182,7 +183,7 @@ std::vector<SceneBody> generate_elastic_pair(const ElasticPairParams& p) {
                                 {0.5 * side * p.distance, 0.0});
         b.def.linear_velocity = {-side * p.speed, 0.0};
         b.def.gravity_scale = 0.0;
-        b.shapes.push_back(box_shape(p.box, p.box, m));
+        b.shapes.push_back(box_polygon(box_shape(p.box, p.box, m)));
         out.push_back(std::move(b));
     }
     return out;
