@@ -4,18 +4,24 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <string>
 #include <utility>
 
 #include "tamias2d/dynamics/body_store.hpp"
 #include "tamias2d/dynamics/contact_manager.hpp"
+#include "tamias2d/dynamics/distance_joint.hpp"
 #include "tamias2d/dynamics/island_sleep.hpp"
 #include "tamias2d/dynamics/joint_store.hpp"
 #include "tamias2d/dynamics/model_bridge.hpp"
+#include "tamias2d/dynamics/motor_joint.hpp"
+#include "tamias2d/dynamics/prismatic_joint.hpp"
+#include "tamias2d/dynamics/revolute_joint.hpp"
 #include "tamias2d/dynamics/sensor_overlaps.hpp"
 #include "tamias2d/dynamics/shape_store.hpp"
 #include "tamias2d/dynamics/step_solver.hpp"
+#include "tamias2d/dynamics/target_joint.hpp"
+#include "tamias2d/dynamics/weld_joint.hpp"
+#include "tamias2d/dynamics/wheel_joint.hpp"
 #include "tamias2d/errors.hpp"
 #include "tamias2d/geometry/shape_queries.hpp"
 #include "tamias2d/model/dd13_torque.hpp"
@@ -32,80 +38,21 @@ namespace u = tamias2d::units;
 
 namespace {
 
-/// How messages name body i: "body[3]", or "body[3 'slider']" when it has a name.
-std::string body_label(const BodyStore& bodies, std::uint32_t i) {
-    const std::string& name = bodies.settings[i].name;
-    return "body[" + std::to_string(i) + (name.empty() ? "" : " '" + name + "'") + "]";
-}
-
-/// The input field that placed each anchor of a joint of this type (for DCX_joint's lever).
-std::pair<const char*, const char*> anchor_fields(JointType type) {
-    switch (type) {
-    case JointType::distance:
-        return {"anchor_a", "anchor_b"};
-    case JointType::target:
-        return {"target", "target"};
-    case JointType::motor:
-        return {"linear_offset", "body_b (its origin)"};
-    default:
-        return {"anchor", "anchor"};
-    }
-}
-
-/// \srs{DCX_joint} Each anchor of `j` lies within supported::joint_lever_ratio_max radii of
-/// gyration of its body's centre of mass. `at` begins the field's name ("joint." or
-/// "joint[3].").
-void validate_levers(const BodyStore& bodies, const Joint& j, const std::string& at) {
-    const auto [field_a, field_b] = anchor_fields(j.type);
-    for (const bool side_a : {true, false}) {
-        const std::uint32_t i = side_a ? j.body_a : j.body_b;
-        const Body& b = bodies.bodies[i];
-        const Vec2d r = (side_a ? j.local_anchor_a : j.local_anchor_b) - b.local_center;
-        if (joint_lever_fits(r, b.inv_mass, b.inv_inertia))
-            continue; // the field's name is made only for the message
-        validate_joint_lever(at + (side_a ? field_a : field_b) + " (on " + body_label(bodies, i) +
-                                 ")",
-                             r, b.inv_mass, b.inv_inertia);
-    }
-}
-
 /// A body a joint definition names, for its checks and their messages.
 JointBody joint_body(const BodyStore& bodies, BodyId id, const Body& b) {
-    return {id, body_label(bodies, id.index), b.type};
-}
-
-/// How messages name a joint's kind.
-const char* kind_name(JointType type) {
-    switch (type) {
-    case JointType::revolute:
-        return "revolute joint";
-    case JointType::distance:
-        return "distance joint";
-    case JointType::target:
-        return "target joint";
-    case JointType::prismatic:
-        return "prismatic joint";
-    case JointType::weld:
-        return "weld joint";
-    case JointType::wheel:
-        return "wheel joint";
-    case JointType::motor:
-        return "motor joint";
-    }
-    return "joint of no known kind";
+    return {id, bodies.label(id.index), b.type};
 }
 
 /// A joint reading or setter called on a joint of a kind it does not apply to.
 [[noreturn]] void wrong_joint(const char* call, JointId id, const Joint& j, const char* rule) {
-    throw WrongKind(call, "joint[" + std::to_string(id.index) + "]", kind_name(j.type), rule);
+    throw WrongKind(call, "joint[" + std::to_string(id.index) + "]", joint_kind_name(j.type), rule);
 }
 
 /// Forces, torques and impulses move dynamic bodies only: one given to a static or kinematic
 /// body would be lost without a trace, so it is refused as the mistake it is.
 void require_dynamic(const BodyStore& bodies, BodyId id, const Body& b, const char* call) {
     if (b.type != BodyType::dynamic)
-        throw WrongKind(call, body_label(bodies, id.index),
-                        std::string(type_name(b.type)) + " body",
+        throw WrongKind(call, bodies.label(id.index), std::string(type_name(b.type)) + " body",
                         "must be a dynamic body (a static or kinematic body does not move under "
                         "forces, torques or impulses)");
 }
@@ -125,70 +72,20 @@ struct World::Impl {
     SensorOverlaps sensors;
     StepSolver solver;
     IslandSleep sleep;
-    StepTasks tasks;             ///< the step's parallel loops (WorldDef::workers, task_system)
-    std::vector<Load> loads;     ///< this step's load-function values (empty when none has one)
-    double inv_h = 0.0;          ///< s^-1, the last step's substep rate (reaction forces)
-    std::vector<JointId> broken; ///< joints the last step broke
-    /// With joints, what a step changes before its solve and a refused step must give back:
-    /// the part of each joint a step writes (joint_step_part on: impulses, axis, the
-    /// preparation's fields; whole joints, twice the bytes, cost an eighth of a 20 000-joint
-    /// grid's step), the sleep states the islands woke and the substep rate the reaction forces
-    /// are read with.
-    using JointStepPart = std::array<unsigned char, sizeof(Joint) - joint_step_part>;
-    std::vector<JointStepPart> joints_before;
-    std::vector<SleepState> sleep_before;
-    double inv_h_before = 0.0;
-
-    /// The solve diverged (StepSolver::diverged): the joints and sleep states as they were,
-    /// no event of this step, and the step refused naming the body (SolverDivergence). Nothing was
-    /// finalized, so the bodies are as they were; the contacts hold the manifolds of those same
-    /// poses.
-    [[noreturn]] void refuse_diverged(std::uint32_t i) {
-        for (std::size_t k = 0; k < joints_before.size(); ++k)
-            std::memcpy(reinterpret_cast<unsigned char*>(&joints.joints[k]) + joint_step_part,
-                        joints_before[k].data(), sizeof(JointStepPart));
-        inv_h = inv_h_before;
-        if (def.enable_sleep)
-            std::copy(sleep_before.begin(), sleep_before.end(), bodies.sleep_states.begin());
-        contacts.begin_events.clear();
-        contacts.end_events.clear();
-        const std::string field = body_label(bodies, i) + ".velocity";
-        throw SolverDivergence(
-            field, field + ": turned non-finite in the joints' solve; the step is refused, "
-                           "bodies, joints and clock as they were");
-    }
-
-    /// Destroys joint i and wakes its bodies. A joint that kept its bodies from colliding
-    /// (DD27) no longer does: the shapes of one of its bodies (B, or A when B is static) are
-    /// touched, so that the broad phase reports their pairs again at the next step (at rest,
-    /// they would not be looked for again).
-    void unjoin(std::uint32_t i) {
-        const Joint& j = joints.joints[i];
-        bodies.wake(j.body_a);
-        bodies.wake(j.body_b);
-        if (!j.collide_connected) {
-            const std::uint32_t body =
-                bodies.bodies[j.body_b].type == BodyType::static_body ? j.body_a : j.body_b;
-            for (std::uint32_t s = bodies.bodies[body].first_shape; s != null_index;
-                 s = shapes.shapes[s].next)
-                shapes.broad_phase.touch_proxy(shapes.shapes[s].proxy);
-        }
-        joints.destroy(i);
-    }
-
-    /// After the step: a joint whose reaction force exceeded its break force is destroyed.
-    void break_joints() {
-        for (std::uint32_t i = 0; i < joints.joints.size(); ++i) {
-            const Joint& j = joints.joints[i];
-            if (!j.alive ||
-                !(bridge::reaction_force(length(reaction_impulse(j)), inv_h) > j.break_force))
-                continue;
-            broken.push_back(joints.id(i));
-            unjoin(i);
-        }
-    }
+    StepTasks tasks;         ///< the step's parallel loops (WorldDef::workers, task_system)
+    std::vector<Load> loads; ///< this step's load-function values (empty when none has one)
 
     explicit Impl(const WorldDef& d) : def(d) {}
+
+    /// The solve diverged (StepSolver::diverged): the joints and sleep states as they were, no
+    /// event of this step, and the step refused naming the body (SolverDivergence). Nothing was
+    /// finalized, so the bodies are as they were; the contacts hold the manifolds of those same
+    /// poses.
+    [[noreturn]] void refuse_diverged() {
+        contacts.begin_events.clear();
+        contacts.end_events.clear();
+        joints.refuse_step(solver.diverged(), bodies, def.enable_sleep);
+    }
 
     /// The time-varying loads at the step's start: a user function returning NaN is rejected
     /// before anything has changed. Most worlds have none: then no setting is read and `loads`
@@ -222,18 +119,13 @@ struct World::Impl {
             if (std::abs(b.center.x) <= m && std::abs(b.center.y) <= m && std::abs(b.v.x) <= m &&
                 std::abs(b.v.y) <= m && std::abs(b.w) <= m && std::abs(b.angle) <= m)
                 continue;
-            const std::string at = body_label(bodies, i) + ".";
+            const std::string at = bodies.label(i) + ".";
             require_within(at + "position", b.center, m, "m");
             require_within(at + "velocity", b.v, m, "m s^-1");
             require_within(at + "angular_velocity", b.w, m, "rad s^-1");
             require_within(at + "angle", b.angle, m, "rad");
         }
-        // A shape added or removed since a joint was made moves the centre of mass and
-        // changes the inertia its anchors are judged by (the joints are few: one pass).
-        for (std::uint32_t k = 0; k < joints.joints.size(); ++k) {
-            if (joints.joints[k].alive)
-                validate_levers(bodies, joints.joints[k], "joint[" + std::to_string(k) + "].");
-        }
+        joints.check_levers(bodies); // (the joints are few: one pass)
     }
 };
 
@@ -360,7 +252,8 @@ std::vector<ShapeId> World::shapes(BodyId id) const {
 
 namespace {
 
-/// Stores a joint whose fields are set, removes the contacts it filters, wakes its bodies.
+/// Stores a joint made from a validated definition, removes the contacts it filters, wakes its
+/// bodies.
 JointId add_joint(World::Impl& w, const Joint& j) {
     validate_levers(w.bodies, j, "joint.");
     const std::uint32_t i = w.joints.create(j);
@@ -371,163 +264,40 @@ JointId add_joint(World::Impl& w, const Joint& j) {
     return w.joints.id(i);
 }
 
-/// A two-body joint's common fields: the bodies, one anchor fixed on both, the reference angle.
-Joint two_body_joint(JointType type, BodyId id_a, const Body& a, BodyId id_b, const Body& b,
-                     Vec2d anchor, bool collide_connected, double break_force) {
-    Joint j;
-    j.type = type;
-    j.body_a = id_a.index;
-    j.body_b = id_b.index;
-    j.local_anchor_a = inv_transform_point(a.xf, anchor);
-    j.local_anchor_b = inv_transform_point(b.xf, anchor);
-    j.collide_connected = collide_connected;
-    j.break_force = break_force;
-    j.reference_angle = b.angle - a.angle;
-    return j;
-}
-
-/// The joint's axis in body A's frame, normalised (validated non-zero).
-Vec2d local_axis(const Body& a, Vec2d axis) {
-    return inv_rotate(a.xf.q, normalize(axis));
+/// A two-body joint: the handles checked, the definition validated, the joint its kind makes
+/// (make_joint, beside the kind's solve) stored.
+template <class Def> JointId join(World::Impl& w, const Def& def) {
+    const Body& a = w.bodies.get(def.body_a);
+    const Body& b = w.bodies.get(def.body_b);
+    validate(def, joint_body(w.bodies, def.body_a, a), joint_body(w.bodies, def.body_b, b));
+    return add_joint(w, make_joint(def, a, b));
 }
 
 } // namespace
 
 JointId World::create_joint(const RevoluteJointDef& def) {
-    Impl& w = *impl_;
-    const Body& a = w.bodies.get(def.body_a);
-    const Body& b = w.bodies.get(def.body_b);
-    validate(def, joint_body(w.bodies, def.body_a, a), joint_body(w.bodies, def.body_b, b));
-    Joint j = two_body_joint(JointType::revolute, def.body_a, a, def.body_b, b, def.anchor,
-                             def.collide_connected, def.break_force);
-    j.enable_limit = def.enable_limit;
-    j.lower_limit = def.lower_angle;
-    j.upper_limit = def.upper_angle;
-    j.enable_motor = def.enable_motor;
-    j.motor_speed = def.motor_speed;
-    j.max_motor = def.max_motor_torque;
-    j.enable_spring = def.enable_spring;
-    j.hertz = def.hertz;
-    j.damping_ratio = def.damping_ratio;
-    return add_joint(w, j);
+    return join(*impl_, def);
 }
-
 JointId World::create_joint(const DistanceJointDef& def) {
-    Impl& w = *impl_;
-    const Body& a = w.bodies.get(def.body_a);
-    const Body& b = w.bodies.get(def.body_b);
-    validate(def, joint_body(w.bodies, def.body_a, a), joint_body(w.bodies, def.body_b, b));
-    Joint j;
-    j.type = JointType::distance;
-    j.body_a = def.body_a.index;
-    j.body_b = def.body_b.index;
-    j.local_anchor_a = inv_transform_point(a.xf, def.anchor_a);
-    j.local_anchor_b = inv_transform_point(b.xf, def.anchor_b);
-    j.length = def.length.value_or(length(def.anchor_b - def.anchor_a));
-    j.hertz = def.hertz;
-    j.damping_ratio = def.damping_ratio;
-    j.enable_limit = def.enable_limit;
-    j.lower_limit = def.min_length;
-    j.upper_limit = def.max_length;
-    j.collide_connected = def.collide_connected;
-    j.break_force = def.break_force;
-    return add_joint(w, j);
+    return join(*impl_, def);
 }
-
 JointId World::create_joint(const PrismaticJointDef& def) {
-    Impl& w = *impl_;
-    const Body& a = w.bodies.get(def.body_a);
-    const Body& b = w.bodies.get(def.body_b);
-    validate(def, joint_body(w.bodies, def.body_a, a), joint_body(w.bodies, def.body_b, b));
-    Joint j = two_body_joint(JointType::prismatic, def.body_a, a, def.body_b, b, def.anchor,
-                             def.collide_connected, def.break_force);
-    j.local_axis = local_axis(a, def.axis);
-    j.axis = normalize(def.axis);
-    j.enable_limit = def.enable_limit;
-    j.lower_limit = def.lower_translation;
-    j.upper_limit = def.upper_translation;
-    j.enable_motor = def.enable_motor;
-    j.motor_speed = def.motor_speed;
-    j.max_motor = def.max_motor_force;
-    j.enable_spring = def.enable_spring;
-    j.hertz = def.hertz;
-    j.damping_ratio = def.damping_ratio;
-    return add_joint(w, j);
+    return join(*impl_, def);
 }
-
 JointId World::create_joint(const WeldJointDef& def) {
-    Impl& w = *impl_;
-    const Body& a = w.bodies.get(def.body_a);
-    const Body& b = w.bodies.get(def.body_b);
-    validate(def, joint_body(w.bodies, def.body_a, a), joint_body(w.bodies, def.body_b, b));
-    Joint j = two_body_joint(JointType::weld, def.body_a, a, def.body_b, b, def.anchor,
-                             def.collide_connected, def.break_force);
-    j.hertz = def.linear_hertz;
-    j.damping_ratio = def.linear_damping_ratio;
-    j.angular_hertz = def.angular_hertz;
-    j.angular_damping_ratio = def.angular_damping_ratio;
-    return add_joint(w, j);
+    return join(*impl_, def);
 }
-
 JointId World::create_joint(const WheelJointDef& def) {
-    Impl& w = *impl_;
-    const Body& a = w.bodies.get(def.body_a);
-    const Body& b = w.bodies.get(def.body_b);
-    validate(def, joint_body(w.bodies, def.body_a, a), joint_body(w.bodies, def.body_b, b));
-    Joint j = two_body_joint(JointType::wheel, def.body_a, a, def.body_b, b, def.anchor,
-                             def.collide_connected, def.break_force);
-    j.local_axis = local_axis(a, def.axis);
-    j.axis = normalize(def.axis);
-    j.enable_spring = def.enable_spring;
-    j.hertz = def.hertz;
-    j.damping_ratio = def.damping_ratio;
-    j.enable_limit = def.enable_limit;
-    j.lower_limit = def.lower_translation;
-    j.upper_limit = def.upper_translation;
-    j.enable_motor = def.enable_motor;
-    j.motor_speed = def.motor_speed;
-    j.max_motor = def.max_motor_torque;
-    return add_joint(w, j);
+    return join(*impl_, def);
 }
-
 JointId World::create_joint(const MotorJointDef& def) {
-    Impl& w = *impl_;
-    const Body& a = w.bodies.get(def.body_a);
-    const Body& b = w.bodies.get(def.body_b);
-    validate(def, joint_body(w.bodies, def.body_a, a), joint_body(w.bodies, def.body_b, b));
-    Joint j;
-    j.type = JointType::motor;
-    j.body_a = def.body_a.index;
-    j.body_b = def.body_b.index;
-    // DD26's pin: body_b's origin held at linear_offset in body_a's frame.
-    j.local_anchor_a = def.linear_offset;
-    j.local_anchor_b = {0.0, 0.0};
-    j.reference_angle = def.angular_offset;
-    j.max_force = def.max_force;
-    j.max_torque = def.max_torque;
-    j.correction_factor = def.correction_factor;
-    j.collide_connected = def.collide_connected;
-    j.break_force = def.break_force;
-    return add_joint(w, j);
+    return join(*impl_, def);
 }
-
 JointId World::create_joint(const TargetJointDef& def) {
     Impl& w = *impl_;
     const Body& b = w.bodies.get(def.body);
     validate(def, joint_body(w.bodies, def.body, b));
-    Joint j;
-    j.type = JointType::target;
-    j.body_a = j.body_b = def.body.index;
-    j.local_anchor_a = j.local_anchor_b = inv_transform_point(b.xf, def.target);
-    j.target = def.target;
-    j.hertz = def.hertz;
-    j.damping_ratio = def.damping_ratio;
-    j.max_force = def.max_force;
-    j.collide_connected = true; // one body: nothing to filter
-    validate_levers(w.bodies, j, "joint.");
-    const std::uint32_t i = w.joints.create(j);
-    w.bodies.wake(j.body_b);
-    return w.joints.id(i);
+    return add_joint(w, make_joint(def, b));
 }
 
 void World::set_joint_target(JointId id, Vec2d target) {
@@ -542,7 +312,7 @@ void World::set_joint_target(JointId id, Vec2d target) {
 void World::destroy_joint(JointId id) {
     Impl& w = *impl_;
     w.joints.get(id); // throws for a stale handle, before anything changes
-    w.unjoin(id.index);
+    w.joints.unjoin(id.index, w.bodies, w.shapes);
 }
 
 bool World::is_valid(JointId id) const {
@@ -550,11 +320,12 @@ bool World::is_valid(JointId id) const {
 }
 
 Vec2d World::joint_reaction_force(JointId id) const {
-    return bridge::reaction_force(reaction_impulse(impl_->joints.get(id)), impl_->inv_h);
+    return bridge::reaction_force(reaction_impulse(impl_->joints.get(id)), impl_->joints.inv_h);
 }
 
 double World::joint_reaction_torque(JointId id) const {
-    return bridge::reaction_torque(reaction_angular_impulse(impl_->joints.get(id)), impl_->inv_h);
+    return bridge::reaction_torque(reaction_angular_impulse(impl_->joints.get(id)),
+                                   impl_->joints.inv_h);
 }
 
 double World::joint_angle(JointId id) const {
@@ -606,7 +377,7 @@ void World::set_motor_joint_offsets(JointId id, Vec2d linear_offset, double angu
 }
 
 std::span<const JointId> World::broken_joints() const {
-    return impl_->broken;
+    return impl_->joints.broken;
 }
 
 std::size_t World::joint_count() const {
@@ -623,26 +394,17 @@ void World::step(double dt) {
     w.check_state();
     w.evaluate_loads();
     w.contacts.forget_filter_error(); // (one a step cut short by bad_alloc left)
-    w.broken.clear();
+    w.joints.broken.clear();
     w.contacts.begin_events.clear();
     w.contacts.end_events.clear();
     w.sensors.begin_events.clear();
     w.sensors.end_events.clear();
     const bool guarded = w.joints.live() > 0;
-    if (guarded) { // (resize and assign reuse the vectors: no allocation in a steady state)
-        w.inv_h_before = w.inv_h;
-        w.joints_before.resize(w.joints.joints.size());
-        for (std::size_t k = 0; k < w.joints_before.size(); ++k)
-            std::memcpy(w.joints_before[k].data(),
-                        reinterpret_cast<const unsigned char*>(&w.joints.joints[k]) +
-                            joint_step_part,
-                        sizeof(Impl::JointStepPart));
-        if (w.def.enable_sleep)
-            w.sleep_before.assign(w.bodies.sleep_states.begin(), w.bodies.sleep_states.end());
-    }
+    if (guarded)
+        w.joints.guard_step(w.bodies, w.def.enable_sleep);
     w.contacts.find_new(w.bodies, w.shapes, w.joints);
     const double h = dt / w.def.substeps;
-    w.inv_h = w.def.substeps / dt;
+    w.joints.inv_h = w.def.substeps / dt;
     if (w.def.enable_sleep && !w.bodies.any_awake()) {
         // Every body asleep: every contact is kept as it is (a new one, of a static body moved
         // onto sleeping ones, too) and nothing is solved; the step does only this.
@@ -656,9 +418,9 @@ void World::step(double dt) {
         w.solver.prepare_joints(w.joints, w.bodies);
         w.solver.solve(w.contacts, w.joints, w.def, dt, w.tasks);
         if (guarded && w.solver.diverged() != null_index)
-            w.refuse_diverged(w.solver.diverged());
+            w.refuse_diverged();
         w.solver.finalize(w.bodies, w.shapes, w.contacts, w.joints, w.def, w.tasks);
-        w.break_joints();
+        w.joints.break_joints(w.bodies, w.shapes);
         w.sleep.update_sleep(w.bodies, w.def, dt);
     } else {
         w.solver.prepare_bodies(w.bodies, w.loads, w.def, h, w.tasks);
@@ -667,9 +429,9 @@ void World::step(double dt) {
                           w.def.manifold_reuse_distance, w.tasks);
         w.solver.solve(w.contacts, w.joints, w.def, dt, w.tasks);
         if (guarded && w.solver.diverged() != null_index)
-            w.refuse_diverged(w.solver.diverged());
+            w.refuse_diverged();
         w.solver.finalize(w.bodies, w.shapes, w.contacts, w.joints, w.def, w.tasks);
-        w.break_joints();
+        w.joints.break_joints(w.bodies, w.shapes);
     }
     // DD28: the sensors see the poses this step made.
     if (!w.sensors.empty())
@@ -1108,11 +870,11 @@ std::uint64_t World::state_hash() const {
             hs(std::uint64_t(j.body_a) << 32 | j.body_b);
             hs(j.local_anchor_a);
             hs(j.local_anchor_b);
-            hs(j.linear_impulse);
+            hs(j.step.linear_impulse);
             hs(j.length);
             hs(j.hertz);
             hs(j.damping_ratio);
-            hs(j.axial_impulse);
+            hs(j.step.axial_impulse);
             hs(j.target);
             hs(j.reference_angle);
             hs(std::uint64_t(j.enable_limit) << 1 | std::uint64_t(j.enable_motor));
@@ -1120,15 +882,15 @@ std::uint64_t World::state_hash() const {
             hs(j.upper_limit);
             hs(j.motor_speed);
             hs(j.max_motor);
-            hs(j.motor_impulse);
-            hs(j.lower_impulse);
-            hs(j.upper_impulse);
+            hs(j.step.motor_impulse);
+            hs(j.step.lower_impulse);
+            hs(j.step.upper_impulse);
             hs(j.max_force);
             hs(j.local_axis);
             hs(std::uint64_t(j.enable_spring));
-            hs(j.spring_impulse);
-            hs(j.angular_impulse);
-            hs(j.perp_impulse);
+            hs(j.step.spring_impulse);
+            hs(j.step.angular_impulse);
+            hs(j.step.perp_impulse);
             hs(j.angular_hertz);
             hs(j.angular_damping_ratio);
             hs(j.max_torque);

@@ -106,6 +106,11 @@ void BodyStore::update_mass(std::uint32_t i, ShapeStore& shapes) {
     shapes.sync_poses(b);
 }
 
+std::string BodyStore::label(std::uint32_t i) const {
+    const std::string& name = settings[i].name;
+    return "body[" + std::to_string(i) + (name.empty() ? "" : " '" + name + "'") + "]";
+}
+
 bool BodyStore::any_awake() const {
     return std::any_of(sleep_states.begin(), sleep_states.end(),
                        [](const SleepState& st) { return st.awake; });

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "tamias2d/body_def.hpp"
@@ -34,6 +35,8 @@ struct BodyStore {
     BodyId id(std::uint32_t i) const { return {i, generation[i]}; }
     std::uint32_t size() const { return std::uint32_t(bodies.size()); }
     std::size_t count() const { return bodies.size() - free_slots.size(); }
+    /// How messages name body i: "body[3]", or "body[3 'slider']" when it has a name.
+    std::string label(std::uint32_t i) const;
 
     /// A slot for a new body made from a validated definition; its mass is not set yet
     /// (update_mass). With sleeping off every body is awake, whatever `def` asks.

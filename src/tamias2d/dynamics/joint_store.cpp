@@ -2,10 +2,66 @@
 
 #include <algorithm>
 #include <string>
+#include <utility>
 
+#include "tamias2d/dynamics/body_store.hpp"
+#include "tamias2d/dynamics/model_bridge.hpp"
+#include "tamias2d/dynamics/shape_store.hpp"
 #include "tamias2d/errors.hpp"
+#include "tamias2d/validation.hpp"
 
 namespace tamias2d {
+
+namespace {
+
+/// The input field that placed each anchor of a joint of this type (for DCX_joint's lever).
+std::pair<const char*, const char*> anchor_fields(JointType type) {
+    switch (type) {
+    case JointType::distance:
+        return {"anchor_a", "anchor_b"};
+    case JointType::target:
+        return {"target", "target"};
+    case JointType::motor:
+        return {"linear_offset", "body_b (its origin)"};
+    default:
+        return {"anchor", "anchor"};
+    }
+}
+
+} // namespace
+
+const char* joint_kind_name(JointType type) {
+    switch (type) {
+    case JointType::revolute:
+        return "revolute joint";
+    case JointType::distance:
+        return "distance joint";
+    case JointType::target:
+        return "target joint";
+    case JointType::prismatic:
+        return "prismatic joint";
+    case JointType::weld:
+        return "weld joint";
+    case JointType::wheel:
+        return "wheel joint";
+    case JointType::motor:
+        return "motor joint";
+    }
+    return "joint of no known kind";
+}
+
+void validate_levers(const BodyStore& bodies, const Joint& j, const std::string& at) {
+    const auto [field_a, field_b] = anchor_fields(j.type);
+    for (const bool side_a : {true, false}) {
+        const std::uint32_t i = side_a ? j.body_a : j.body_b;
+        const Body& b = bodies.bodies[i];
+        const Vec2d r = (side_a ? j.local_anchor_a : j.local_anchor_b) - b.local_center;
+        if (joint_lever_fits(r, b.inv_mass, b.inv_inertia))
+            continue; // the field's name is made only for the message
+        validate_joint_lever(at + (side_a ? field_a : field_b) + " (on " + bodies.label(i) + ")", r,
+                             b.inv_mass, b.inv_inertia);
+    }
+}
 
 Joint& JointStore::get(JointId id) {
     if (!is_valid(id)) {
@@ -53,6 +109,20 @@ void JointStore::destroy(std::uint32_t i) {
     --live_;
 }
 
+void JointStore::unjoin(std::uint32_t i, BodyStore& bodies, ShapeStore& shapes) {
+    const Joint& j = joints[i];
+    bodies.wake(j.body_a);
+    bodies.wake(j.body_b);
+    if (!j.collide_connected) {
+        const std::uint32_t body =
+            bodies.bodies[j.body_b].type == BodyType::static_body ? j.body_a : j.body_b;
+        for (std::uint32_t s = bodies.bodies[body].first_shape; s != null_index;
+             s = shapes.shapes[s].next)
+            shapes.broad_phase.touch_proxy(shapes.shapes[s].proxy);
+    }
+    destroy(i);
+}
+
 const std::vector<std::uint32_t>& JointStore::of_body(std::uint32_t body) const {
     static const std::vector<std::uint32_t> none;
     return body < by_body_.size() ? by_body_[body] : none;
@@ -66,6 +136,45 @@ bool JointStore::filters(std::uint32_t a, std::uint32_t b) const {
             return true;
     }
     return false;
+}
+
+void JointStore::check_levers(const BodyStore& bodies) const {
+    for (std::uint32_t k = 0; k < joints.size(); ++k) {
+        if (joints[k].alive)
+            validate_levers(bodies, joints[k], "joint[" + std::to_string(k) + "].");
+    }
+}
+
+void JointStore::guard_step(const BodyStore& bodies, bool sleeping) {
+    inv_h_before_ = inv_h;
+    step_before_.resize(joints.size());
+    for (std::size_t k = 0; k < joints.size(); ++k)
+        step_before_[k] = joints[k].step;
+    if (sleeping)
+        sleep_before_.assign(bodies.sleep_states.begin(), bodies.sleep_states.end());
+}
+
+void JointStore::refuse_step(std::uint32_t i, BodyStore& bodies, bool sleeping) {
+    for (std::size_t k = 0; k < step_before_.size(); ++k)
+        joints[k].step = step_before_[k];
+    inv_h = inv_h_before_;
+    if (sleeping)
+        std::copy(sleep_before_.begin(), sleep_before_.end(), bodies.sleep_states.begin());
+    const std::string field = bodies.label(i) + ".velocity";
+    throw SolverDivergence(field,
+                           field + ": turned non-finite in the joints' solve; the step is refused, "
+                                   "bodies, joints and clock as they were");
+}
+
+void JointStore::break_joints(BodyStore& bodies, ShapeStore& shapes) {
+    for (std::uint32_t i = 0; i < joints.size(); ++i) {
+        const Joint& j = joints[i];
+        if (!j.alive ||
+            !(bridge::reaction_force(length(reaction_impulse(j)), inv_h) > j.break_force))
+            continue;
+        broken.push_back(id(i));
+        unjoin(i, bodies, shapes);
+    }
 }
 
 } // namespace tamias2d

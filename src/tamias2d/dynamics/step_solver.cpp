@@ -247,7 +247,7 @@ namespace {
 /// Whether a joint takes part in this step: alive, and not between two immovable bodies
 /// (both asleep, or asleep and static: solver body 0 on both sides).
 bool solved(const Joint& j) {
-    return j.alive && (j.solver_a != 0 || j.solver_b != 0);
+    return j.alive && (j.step.solver_a != 0 || j.step.solver_b != 0);
 }
 
 } // namespace
@@ -267,13 +267,14 @@ void StepSolver::prepare_joints(JointStore& joints, const BodyStore& bodies) {
         prepare_joint(j, bodies, solver_index_);
         // An immovable side keeps its rotation all step (solver body 0 never turns); a moving
         // side's is its body's, turned once per body below rather than once per joint.
-        if (j.solver_a == 0)
-            j.q_a = Rot::from_angle(j.angle_a + solver_bodies_[0].dq);
-        if (j.solver_b == 0)
-            j.q_b = Rot::from_angle(j.angle_b + solver_bodies_[0].dq);
+        if (j.step.solver_a == 0)
+            j.step.q_a = Rot::from_angle(j.step.angle_a + solver_bodies_[0].dq);
+        if (j.step.solver_b == 0)
+            j.step.q_b = Rot::from_angle(j.step.angle_b + solver_bodies_[0].dq);
         if (!solved(j))
             continue;
-        for (const auto& [k, angle] : {std::pair{j.solver_a, j.angle_a}, {j.solver_b, j.angle_b}}) {
+        for (const auto& [k, angle] :
+             {std::pair{j.step.solver_a, j.step.angle_a}, {j.step.solver_b, j.step.angle_b}}) {
             if (k != 0 && !listed_[k]) {
                 listed_[k] = 1;
                 jointed_.push_back({k, angle});
@@ -291,10 +292,10 @@ void StepSolver::turn_joints(std::vector<Joint>& joints) {
     for (Joint& j : joints) {
         if (!solved(j))
             continue;
-        if (j.solver_a != 0)
-            j.q_a = joint_rotations_[j.solver_a];
-        if (j.solver_b != 0)
-            j.q_b = joint_rotations_[j.solver_b];
+        if (j.step.solver_a != 0)
+            j.step.q_a = joint_rotations_[j.step.solver_a];
+        if (j.step.solver_b != 0)
+            j.step.q_b = joint_rotations_[j.step.solver_b];
     }
 }
 
