@@ -18,6 +18,7 @@
 #include "tamias2d/dynamics/revolute_joint.hpp"
 #include "tamias2d/dynamics/sensor_overlaps.hpp"
 #include "tamias2d/dynamics/shape_store.hpp"
+#include "tamias2d/dynamics/state_hasher.hpp"
 #include "tamias2d/dynamics/step_solver.hpp"
 #include "tamias2d/dynamics/target_joint.hpp"
 #include "tamias2d/dynamics/weld_joint.hpp"
@@ -758,170 +759,16 @@ std::optional<RayCastHit> World::ray_cast(Vec2d origin, Vec2d translation) const
     return best;
 }
 
-namespace {
-struct Hasher {
-    std::uint64_t h = 1469598103934665603ull;
-    void bytes(const void* p, std::size_t n) {
-        const auto* c = static_cast<const unsigned char*>(p);
-        for (std::size_t i = 0; i < n; ++i) {
-            h ^= c[i];
-            h *= 1099511628211ull;
-        }
-    }
-    void operator()(double v) { bytes(&v, sizeof v); }
-    void operator()(Vec2d v) {
-        (*this)(v.x);
-        (*this)(v.y);
-    }
-    void operator()(std::uint64_t v) { bytes(&v, sizeof v); }
-};
-} // namespace
-
 std::uint64_t World::state_hash() const {
     const Impl& w = *impl_;
-    Hasher hs;
+    StateHasher hs;
     hs(w.time);
     hs(w.time_error);
     hs(w.def.gravity);
-    hs(std::uint64_t(w.bodies.size()));
-    for (std::uint32_t i = 0; i < w.bodies.size(); ++i) {
-        const Body& b = w.bodies.bodies[i];
-        const BodySettings& set = w.bodies.settings[i];
-        hs(std::uint64_t(w.bodies.generation[i]) << 8 | std::uint64_t(b.alive) << 4 |
-           std::uint64_t(b.type));
-        if (!b.alive)
-            continue;
-        hs(b.xf.p);
-        hs(b.xf.q.c);
-        hs(b.xf.q.s);
-        hs(b.angle);
-        hs(b.center);
-        hs(b.local_center);
-        hs(b.v);
-        hs(b.w);
-        hs(b.force);
-        hs(b.torque);
-        hs(b.force_once);
-        hs(b.torque_once);
-        hs(b.mass);
-        hs(b.inertia);
-        hs(b.inv_mass);
-        hs(b.inv_inertia);
-        hs(b.gravity_scale);
-        hs(std::uint64_t(set.fixed_rotation) << 1 | std::uint64_t(bool(set.load)));
-        if (set.bullet) // (other bodies hash as they always did)
-            hs(std::uint64_t(1) << 2);
-        if (b.damped) { // (so that undamped worlds hash as they always did)
-            hs(set.linear_damping);
-            hs(set.angular_damping);
-        }
-        if (w.def.enable_sleep) { // (so that worlds without sleeping hash as they always did)
-            const SleepState& st = w.bodies.sleep_states[i];
-            hs(st.sleep_time);
-            hs(std::uint64_t(st.awake) << 1 | std::uint64_t(st.enabled));
-        }
-        hs.bytes(set.name.data(), set.name.size());
-        for (std::uint32_t s = b.first_shape; s != null_index; s = w.shapes.shapes[s].next)
-            hs(std::uint64_t(s));
-    }
-    hs(std::uint64_t(w.shapes.shapes.size()));
-    for (std::uint32_t i = 0; i < w.shapes.shapes.size(); ++i) {
-        const Shape& s = w.shapes.shapes[i];
-        hs(std::uint64_t(s.generation) << 1 | std::uint64_t(s.alive()));
-        if (!s.alive())
-            continue;
-        const ShapeDef& d = w.shapes.defs[i];
-        hs(std::uint64_t(s.body));
-        hs(std::uint64_t(d.geometry.type));
-        hs(d.geometry.circle.center);
-        hs(d.geometry.circle.radius);
-        hs(std::uint64_t(d.geometry.polygon.count));
-        for (int k = 0; k < d.geometry.polygon.count; ++k)
-            hs(d.geometry.polygon.vertices[std::size_t(k)]);
-        if (d.geometry.type == ShapeType::capsule) {
-            hs(d.geometry.capsule.center1);
-            hs(d.geometry.capsule.center2);
-            hs(d.geometry.capsule.radius);
-        } else if (d.geometry.type == ShapeType::segment) {
-            hs(d.geometry.segment.point1);
-            hs(d.geometry.segment.point2);
-        } else if (d.geometry.type == ShapeType::chain_segment) {
-            hs(d.geometry.chain_segment.ghost1);
-            hs(d.geometry.chain_segment.point1);
-            hs(d.geometry.chain_segment.point2);
-            hs(d.geometry.chain_segment.ghost2);
-        }
-        hs(d.material.density);
-        hs(d.material.restitution);
-        hs(d.material.friction);
-        if (!(d.filter == Filter{}) || d.is_sensor) { // (default shapes hash as they always did)
-            hs(std::uint64_t(d.filter.category_bits) << 32 | d.filter.mask_bits);
-            hs(std::uint64_t(std::uint32_t(d.filter.group_index)) << 1 |
-               std::uint64_t(d.is_sensor));
-        }
-    }
-    if (w.joints.live() > 0) { // (so that worlds without joints hash as they always did)
-        for (std::uint32_t i = 0; i < w.joints.joints.size(); ++i) {
-            const Joint& j = w.joints.joints[i];
-            hs(std::uint64_t(j.generation) << 1 | std::uint64_t(j.alive));
-            if (!j.alive)
-                continue;
-            hs(std::uint64_t(j.type));
-            hs(std::uint64_t(j.body_a) << 32 | j.body_b);
-            hs(j.local_anchor_a);
-            hs(j.local_anchor_b);
-            hs(j.step.linear_impulse);
-            hs(j.length);
-            hs(j.hertz);
-            hs(j.damping_ratio);
-            hs(j.step.axial_impulse);
-            hs(j.target);
-            hs(j.reference_angle);
-            hs(std::uint64_t(j.enable_limit) << 1 | std::uint64_t(j.enable_motor));
-            hs(j.lower_limit);
-            hs(j.upper_limit);
-            hs(j.motor_speed);
-            hs(j.max_motor);
-            hs(j.step.motor_impulse);
-            hs(j.step.lower_impulse);
-            hs(j.step.upper_impulse);
-            hs(j.max_force);
-            hs(j.local_axis);
-            hs(std::uint64_t(j.enable_spring));
-            hs(j.step.spring_impulse);
-            hs(j.step.angular_impulse);
-            hs(j.step.perp_impulse);
-            hs(j.angular_hertz);
-            hs(j.angular_damping_ratio);
-            hs(j.max_torque);
-            hs(j.correction_factor);
-            hs(j.break_force);
-            hs(std::uint64_t(j.collide_connected));
-        }
-    }
-    hs(std::uint64_t(w.contacts.size()));
-    for (std::size_t i = 0; i < w.contacts.size(); ++i) {
-        const Contact& c = w.contacts.contacts[i];
-        hs(std::uint64_t(c.shape_a) << 32 | c.shape_b);
-        hs(std::uint64_t(c.manifold.count));
-        for (int j = 0; j < c.manifold.count; ++j) {
-            hs(c.manifold.points[j].point);
-            hs(c.manifold.points[j].separation);
-            hs(w.contacts.warm_impulses[i].normal[j]);
-            hs(w.contacts.warm_impulses[i].tangent[j]);
-        }
-        if (w.def.manifold_reuse_distance > 0.0 && c.manifold.count > 0) {
-            // What a reused manifold is computed from (manifold_reuse.hpp).
-            const ManifoldBasis& b = w.contacts.bases[i];
-            for (const double x : {b.q_a.c, b.q_a.s, b.q_b.c, b.q_b.s})
-                hs(x);
-            hs(b.b_in_a);
-            for (int j = 0; j < c.manifold.count; ++j) {
-                hs(b.separation[j]);
-                hs(b.on_a[j]);
-            }
-        }
-    }
+    w.bodies.hash(hs, w.shapes, w.def.enable_sleep);
+    w.shapes.hash(hs);
+    w.joints.hash(hs);
+    w.contacts.hash(hs, w.def.manifold_reuse_distance > 0.0);
     return hs.h;
 }
 

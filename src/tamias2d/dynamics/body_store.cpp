@@ -4,6 +4,7 @@
 #include <string>
 
 #include "tamias2d/dynamics/shape_store.hpp"
+#include "tamias2d/dynamics/state_hasher.hpp"
 #include "tamias2d/errors.hpp"
 #include "tamias2d/geometry/mass_properties.hpp"
 
@@ -122,6 +123,49 @@ void BodyStore::wake(std::uint32_t i) {
         return;
     st.awake = true;
     st.sleep_time = 0.0;
+}
+
+void BodyStore::hash(StateHasher& hs, const ShapeStore& shapes, bool sleeping) const {
+    hs(std::uint64_t(size()));
+    for (std::uint32_t i = 0; i < size(); ++i) {
+        const Body& b = bodies[i];
+        const BodySettings& set = settings[i];
+        hs(std::uint64_t(generation[i]) << 8 | std::uint64_t(b.alive) << 4 | std::uint64_t(b.type));
+        if (!b.alive)
+            continue;
+        hs(b.xf.p);
+        hs(b.xf.q.c);
+        hs(b.xf.q.s);
+        hs(b.angle);
+        hs(b.center);
+        hs(b.local_center);
+        hs(b.v);
+        hs(b.w);
+        hs(b.force);
+        hs(b.torque);
+        hs(b.force_once);
+        hs(b.torque_once);
+        hs(b.mass);
+        hs(b.inertia);
+        hs(b.inv_mass);
+        hs(b.inv_inertia);
+        hs(b.gravity_scale);
+        hs(std::uint64_t(set.fixed_rotation) << 1 | std::uint64_t(bool(set.load)));
+        if (set.bullet) // (other bodies hash as they always did)
+            hs(std::uint64_t(1) << 2);
+        if (b.damped) { // (so that undamped worlds hash as they always did)
+            hs(set.linear_damping);
+            hs(set.angular_damping);
+        }
+        if (sleeping) { // (so that worlds without sleeping hash as they always did)
+            const SleepState& st = sleep_states[i];
+            hs(st.sleep_time);
+            hs(std::uint64_t(st.awake) << 1 | std::uint64_t(st.enabled));
+        }
+        hs.bytes(set.name.data(), set.name.size());
+        for (std::uint32_t s = b.first_shape; s != null_index; s = shapes.shapes[s].next)
+            hs(std::uint64_t(s));
+    }
 }
 
 } // namespace tamias2d

@@ -14,6 +14,7 @@
 
 namespace tamias2d {
 
+struct StateHasher;
 class ShapeStore;
 
 struct BodyStore {
@@ -53,6 +54,11 @@ struct BodyStore {
     bool any_awake() const;
     /// Wakes the body (and so, at the next step, its island); its time at rest starts again.
     void wake(std::uint32_t i);
+
+    /// Feeds the bodies' state to the state hash (World::state_hash): each slot's generation,
+    /// life and type, a live body's pose, velocities, loads, masses and settings, its sleep
+    /// state with sleeping on, its name and its shapes.
+    void hash(StateHasher& hs, const ShapeStore& shapes, bool sleeping) const;
 };
 
 } // namespace tamias2d

@@ -8,6 +8,7 @@
 #include "tamias2d/dynamics/body_store.hpp"
 #include "tamias2d/dynamics/joint_store.hpp"
 #include "tamias2d/dynamics/shape_store.hpp"
+#include "tamias2d/dynamics/state_hasher.hpp"
 #include "tamias2d/math/prefetch.hpp"
 #include "tamias2d/model/dd27_collision_filter.hpp"
 #include "tamias2d/parallel/step_tasks.hpp"
@@ -421,6 +422,32 @@ const std::vector<ContactInfo>& ContactManager::report(const BodyStore& bodies,
         infos_.push_back(ci);
     }
     return infos_;
+}
+
+void ContactManager::hash(StateHasher& hs, bool reuse) const {
+    hs(std::uint64_t(size()));
+    for (std::size_t i = 0; i < size(); ++i) {
+        const Contact& c = contacts[i];
+        hs(std::uint64_t(c.shape_a) << 32 | c.shape_b);
+        hs(std::uint64_t(c.manifold.count));
+        for (int j = 0; j < c.manifold.count; ++j) {
+            hs(c.manifold.points[j].point);
+            hs(c.manifold.points[j].separation);
+            hs(warm_impulses[i].normal[j]);
+            hs(warm_impulses[i].tangent[j]);
+        }
+        if (reuse && c.manifold.count > 0) {
+            // What a reused manifold is computed from (manifold_reuse.hpp).
+            const ManifoldBasis& b = bases[i];
+            for (const double x : {b.q_a.c, b.q_a.s, b.q_b.c, b.q_b.s})
+                hs(x);
+            hs(b.b_in_a);
+            for (int j = 0; j < c.manifold.count; ++j) {
+                hs(b.separation[j]);
+                hs(b.on_a[j]);
+            }
+        }
+    }
 }
 
 } // namespace tamias2d

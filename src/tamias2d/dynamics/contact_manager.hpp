@@ -22,6 +22,7 @@
 
 namespace tamias2d {
 
+struct StateHasher;
 struct BodyStore;
 class ShapeStore;
 class JointStore;
@@ -105,6 +106,11 @@ class ContactManager {
     /// step cost a few percent of a pile's step.
     const std::vector<ContactInfo>& report(const BodyStore& bodies, const ShapeStore& shapes);
     void report_stale() { infos_stale_ = true; }
+
+    /// Feeds the contacts to the state hash (World::state_hash): each contact's shapes,
+    /// manifold points and warm-start impulses, and with manifold reuse on (`reuse`) the
+    /// poses its manifold was computed at.
+    void hash(StateHasher& hs, bool reuse) const;
 
   private:
     void destroy(std::uint32_t i, BodyStore& bodies, const ShapeStore& shapes);

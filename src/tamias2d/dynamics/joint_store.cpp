@@ -7,6 +7,7 @@
 #include "tamias2d/dynamics/body_store.hpp"
 #include "tamias2d/dynamics/model_bridge.hpp"
 #include "tamias2d/dynamics/shape_store.hpp"
+#include "tamias2d/dynamics/state_hasher.hpp"
 #include "tamias2d/errors.hpp"
 #include "tamias2d/validation.hpp"
 
@@ -174,6 +175,48 @@ void JointStore::break_joints(BodyStore& bodies, ShapeStore& shapes) {
             continue;
         broken.push_back(id(i));
         unjoin(i, bodies, shapes);
+    }
+}
+
+void JointStore::hash(StateHasher& hs) const {
+    if (live_ > 0) { // (so that worlds without joints hash as they always did)
+        for (std::uint32_t i = 0; i < joints.size(); ++i) {
+            const Joint& j = joints[i];
+            hs(std::uint64_t(j.generation) << 1 | std::uint64_t(j.alive));
+            if (!j.alive)
+                continue;
+            hs(std::uint64_t(j.type));
+            hs(std::uint64_t(j.body_a) << 32 | j.body_b);
+            hs(j.local_anchor_a);
+            hs(j.local_anchor_b);
+            hs(j.step.linear_impulse);
+            hs(j.length);
+            hs(j.hertz);
+            hs(j.damping_ratio);
+            hs(j.step.axial_impulse);
+            hs(j.target);
+            hs(j.reference_angle);
+            hs(std::uint64_t(j.enable_limit) << 1 | std::uint64_t(j.enable_motor));
+            hs(j.lower_limit);
+            hs(j.upper_limit);
+            hs(j.motor_speed);
+            hs(j.max_motor);
+            hs(j.step.motor_impulse);
+            hs(j.step.lower_impulse);
+            hs(j.step.upper_impulse);
+            hs(j.max_force);
+            hs(j.local_axis);
+            hs(std::uint64_t(j.enable_spring));
+            hs(j.step.spring_impulse);
+            hs(j.step.angular_impulse);
+            hs(j.step.perp_impulse);
+            hs(j.angular_hertz);
+            hs(j.angular_damping_ratio);
+            hs(j.max_torque);
+            hs(j.correction_factor);
+            hs(j.break_force);
+            hs(std::uint64_t(j.collide_connected));
+        }
     }
 }
 

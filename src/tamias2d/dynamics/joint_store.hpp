@@ -14,6 +14,7 @@
 
 namespace tamias2d {
 
+struct StateHasher;
 struct BodyStore;
 class ShapeStore;
 
@@ -66,6 +67,10 @@ class JointStore {
     /// After the step: a joint whose reaction force exceeded its break force is destroyed
     /// (unjoin) and listed in `broken`.
     void break_joints(BodyStore& bodies, ShapeStore& shapes);
+
+    /// Feeds the joints to the state hash (World::state_hash): with any live joint, each
+    /// slot's generation and life, a live joint's definition and impulses.
+    void hash(StateHasher& hs) const;
 
   private:
     std::vector<std::uint32_t> free_slots_;

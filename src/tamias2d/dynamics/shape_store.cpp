@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "tamias2d/dynamics/state_hasher.hpp"
 #include "tamias2d/errors.hpp"
 #include "tamias2d/math/prefetch.hpp"
 
@@ -90,6 +91,45 @@ void ShapeStore::refit_undecided() {
     }
     undecided_.clear();
     apply_moves();
+}
+
+void ShapeStore::hash(StateHasher& hs) const {
+    hs(std::uint64_t(shapes.size()));
+    for (std::uint32_t i = 0; i < shapes.size(); ++i) {
+        const Shape& s = shapes[i];
+        hs(std::uint64_t(s.generation) << 1 | std::uint64_t(s.alive()));
+        if (!s.alive())
+            continue;
+        const ShapeDef& d = defs[i];
+        hs(std::uint64_t(s.body));
+        hs(std::uint64_t(d.geometry.type));
+        hs(d.geometry.circle.center);
+        hs(d.geometry.circle.radius);
+        hs(std::uint64_t(d.geometry.polygon.count));
+        for (int k = 0; k < d.geometry.polygon.count; ++k)
+            hs(d.geometry.polygon.vertices[std::size_t(k)]);
+        if (d.geometry.type == ShapeType::capsule) {
+            hs(d.geometry.capsule.center1);
+            hs(d.geometry.capsule.center2);
+            hs(d.geometry.capsule.radius);
+        } else if (d.geometry.type == ShapeType::segment) {
+            hs(d.geometry.segment.point1);
+            hs(d.geometry.segment.point2);
+        } else if (d.geometry.type == ShapeType::chain_segment) {
+            hs(d.geometry.chain_segment.ghost1);
+            hs(d.geometry.chain_segment.point1);
+            hs(d.geometry.chain_segment.point2);
+            hs(d.geometry.chain_segment.ghost2);
+        }
+        hs(d.material.density);
+        hs(d.material.restitution);
+        hs(d.material.friction);
+        if (!(d.filter == Filter{}) || d.is_sensor) { // (default shapes hash as they always did)
+            hs(std::uint64_t(d.filter.category_bits) << 32 | d.filter.mask_bits);
+            hs(std::uint64_t(std::uint32_t(d.filter.group_index)) << 1 |
+               std::uint64_t(d.is_sensor));
+        }
+    }
 }
 
 } // namespace tamias2d

@@ -15,6 +15,7 @@
 
 namespace tamias2d {
 
+struct StateHasher;
 class ShapeStore {
   public:
     LargeArray<Shape> shapes;
@@ -78,6 +79,10 @@ class ShapeStore {
         broad_phase.move_proxies(proxy_moves_);
         proxy_moves_.clear();
     }
+
+    /// Feeds the shapes to the state hash (World::state_hash): each slot's generation and
+    /// life, a live shape's body, geometry, material and (when not the default) filter.
+    void hash(StateHasher& hs) const;
 
   private:
     /// The proxies refit_fat_box moved, for one BroadPhase::move_proxies call.
