@@ -19,16 +19,13 @@
 #include "tamias2d/dynamics/sensor_overlaps.hpp"
 #include "tamias2d/dynamics/shape_store.hpp"
 #include "tamias2d/dynamics/state_hasher.hpp"
+#include "tamias2d/dynamics/step_context.hpp"
 #include "tamias2d/dynamics/step_solver.hpp"
 #include "tamias2d/dynamics/target_joint.hpp"
 #include "tamias2d/dynamics/weld_joint.hpp"
 #include "tamias2d/dynamics/wheel_joint.hpp"
 #include "tamias2d/errors.hpp"
-#include "tamias2d/geometry/shape_queries.hpp"
 #include "tamias2d/model/dd13_torque.hpp"
-#include "tamias2d/model/dd15_kinetic_energy.hpp"
-#include "tamias2d/model/dd16_potential_energy.hpp"
-#include "tamias2d/model/gd1_conservation_of_momentum.hpp"
 #include "tamias2d/parallel/step_tasks.hpp"
 #include "tamias2d/units/angle.hpp"
 #include "tamias2d/validation.hpp"
@@ -42,11 +39,6 @@ namespace {
 /// A body a joint definition names, for its checks and their messages.
 JointBody joint_body(const BodyStore& bodies, BodyId id, const Body& b) {
     return {id, bodies.label(id.index), b.type};
-}
-
-/// A joint reading or setter called on a joint of a kind it does not apply to.
-[[noreturn]] void wrong_joint(const char* call, JointId id, const Joint& j, const char* rule) {
-    throw WrongKind(call, "joint[" + std::to_string(id.index) + "]", joint_kind_name(j.type), rule);
 }
 
 /// Forces, torques and impulses move dynamic bodies only: one given to a static or kinematic
@@ -88,44 +80,37 @@ struct World::Impl {
         joints.refuse_step(solver.diverged(), bodies, def.enable_sleep);
     }
 
-    /// The time-varying loads at the step's start: a user function returning NaN is rejected
-    /// before anything has changed. Most worlds have none: then no setting is read and `loads`
-    /// stays empty.
-    void evaluate_loads() {
-        loads.clear();
-        if (bodies.loaded_bodies > 0)
-            loads.assign(bodies.size(), Load{});
-        for (std::uint32_t i = 0; i < loads.size(); ++i) {
-            const Body& b = bodies.bodies[i];
-            const LoadFunction& load = bodies.settings[i].load;
-            if (!b.alive || !load || b.type != BodyType::dynamic)
-                continue;
-            const Load l = load(time);
-            require_within("load(t).force", l.force, supported::input_max, "N");
-            require_within("load(t).torque", l.torque, supported::input_max, "N m");
-            loads[i] = l;
-        }
+    /// The solver bodies and the joints' frames at the step's start.
+    void prepare(const StepContext& step) {
+        solver.prepare_bodies(bodies, step);
+        solver.prepare_joints(joints, bodies);
     }
 
-    /// \srs{DCX_range} A step starts only from a state within supported::state_max, the headroom a
-    /// simulation of in-range inputs may grow into; from there no product of one step
-    /// overflows (docs/design.md, "Supported ranges"). One pass over the bodies, before
-    /// anything changes.
-    void check_state() const {
-        constexpr double m = supported::state_max;
-        for (std::uint32_t i = 0; i < bodies.size(); ++i) {
-            const Body& b = bodies.bodies[i];
-            if (!b.alive || b.type == BodyType::static_body)
-                continue;
-            if (std::abs(b.center.x) <= m && std::abs(b.center.y) <= m && std::abs(b.v.x) <= m &&
-                std::abs(b.v.y) <= m && std::abs(b.w) <= m && std::abs(b.angle) <= m)
-                continue;
-            const std::string at = bodies.label(i) + ".";
-            require_within(at + "position", b.center, m, "m");
-            require_within(at + "velocity", b.v, m, "m s^-1");
-            require_within(at + "angular_velocity", b.w, m, "rad s^-1");
-            require_within(at + "angle", b.angle, m, "rad");
+    /// A step with some body awake: its stages in one order. Only where the solver bodies are
+    /// prepared depends on sleeping: with sleeping, after the islands (which need this step's
+    /// touching contacts) have woken what they wake; without, before the narrow phase. With
+    /// joints (`guarded`), a diverged solve is refused before anything is finalized.
+    void solve(const StepContext& step, bool guarded) {
+        if (!step.sleeping)
+            prepare(step);
+        contacts.update(bodies, shapes, step);
+        if (step.sleeping) {
+            sleep.wake_islands(bodies, contacts, joints);
+            prepare(step);
         }
+        solver.solve(contacts, joints, step);
+        if (guarded && solver.diverged() != null_index)
+            refuse_diverged();
+        solver.finalize(bodies, shapes, contacts, joints, step);
+        joints.break_joints(bodies, shapes);
+        if (step.sleeping)
+            sleep.update_sleep(bodies, step);
+    }
+
+    /// A step starts only from a state within supported::state_max (BodyStore::check_state),
+    /// with its joints' anchors within their levers' limit.
+    void check_state() const {
+        bodies.check_state();
         joints.check_levers(bodies); // (the joints are few: one pass)
     }
 };
@@ -235,20 +220,11 @@ bool World::is_valid(ShapeId id) const {
 }
 
 std::vector<BodyId> World::bodies() const {
-    std::vector<BodyId> out;
-    for (std::uint32_t i = 0; i < impl_->bodies.size(); ++i) {
-        if (impl_->bodies.bodies[i].alive)
-            out.push_back(impl_->bodies.id(i));
-    }
-    return out;
+    return impl_->bodies.live_ids();
 }
 
 std::vector<ShapeId> World::shapes(BodyId id) const {
-    std::vector<ShapeId> out;
-    for (std::uint32_t s = impl_->bodies.get(id).first_shape; s != null_index;
-         s = impl_->shapes.shapes[s].next)
-        out.push_back(impl_->shapes.id(s));
-    return out;
+    return impl_->shapes.ids_of(impl_->bodies.get(id));
 }
 
 namespace {
@@ -302,9 +278,8 @@ JointId World::create_joint(const TargetJointDef& def) {
 }
 
 void World::set_joint_target(JointId id, Vec2d target) {
-    Joint& j = impl_->joints.get(id);
-    if (j.type != JointType::target)
-        wrong_joint("set_joint_target", id, j, "must be a target joint");
+    Joint& j =
+        impl_->joints.get(id, {JointType::target}, "set_joint_target", "must be a target joint");
     require_within("joint.target", target, supported::input_max, "m");
     j.target = target;
     impl_->bodies.wake(j.body_b);
@@ -330,34 +305,25 @@ double World::joint_reaction_torque(JointId id) const {
 }
 
 double World::joint_angle(JointId id) const {
-    const Joint& j = impl_->joints.get(id);
-    if (j.type == JointType::distance || j.type == JointType::target || j.type == JointType::motor)
-        wrong_joint("joint_angle", id, j,
-                    "must be a revolute, prismatic, weld or wheel joint (the kinds that hold an "
-                    "angle)");
-    return bridge::joint_angle(impl_->bodies.bodies[j.body_a].angle,
-                               impl_->bodies.bodies[j.body_b].angle, j.reference_angle);
+    const Joint& j = impl_->joints.get(
+        id, {JointType::revolute, JointType::prismatic, JointType::weld, JointType::wheel},
+        "joint_angle",
+        "must be a revolute, prismatic, weld or wheel joint (the kinds that hold an "
+        "angle)");
+    return joint_angle_now(j, impl_->bodies);
 }
 
 double World::joint_translation(JointId id) const {
-    const Joint& j = impl_->joints.get(id);
-    if (j.type != JointType::prismatic && j.type != JointType::wheel)
-        wrong_joint("joint_translation", id, j,
-                    "must be a prismatic or wheel joint (the kinds with an axis)");
-    const Body& a = impl_->bodies.bodies[j.body_a];
-    const Body& b = impl_->bodies.bodies[j.body_b];
-    const Vec2d r_a = rotate(a.xf.q, j.local_anchor_a - a.local_center);
-    const Vec2d r_b = rotate(b.xf.q, j.local_anchor_b - b.local_center);
-    return bridge::line((b.center + r_b) - (a.center + r_a), r_a, r_b, rotate(a.xf.q, j.local_axis))
-        .translation;
+    const Joint& j =
+        impl_->joints.get(id, {JointType::prismatic, JointType::wheel}, "joint_translation",
+                          "must be a prismatic or wheel joint (the kinds with an axis)");
+    return joint_translation_now(j, impl_->bodies);
 }
 
 void World::set_joint_motor_speed(JointId id, double speed) {
-    Joint& j = impl_->joints.get(id);
-    if (j.type != JointType::revolute && j.type != JointType::prismatic &&
-        j.type != JointType::wheel)
-        wrong_joint("set_joint_motor_speed", id, j,
-                    "must be a revolute, prismatic or wheel joint (the kinds with a motor)");
+    Joint& j = impl_->joints.get(
+        id, {JointType::revolute, JointType::prismatic, JointType::wheel}, "set_joint_motor_speed",
+        "must be a revolute, prismatic or wheel joint (the kinds with a motor)");
     require_within("joint.motor_speed", speed, supported::input_max,
                    j.type == JointType::prismatic ? "m s^-1" : "rad s^-1");
     j.motor_speed = speed;
@@ -366,9 +332,8 @@ void World::set_joint_motor_speed(JointId id, double speed) {
 }
 
 void World::set_motor_joint_offsets(JointId id, Vec2d linear_offset, double angular_offset) {
-    Joint& j = impl_->joints.get(id);
-    if (j.type != JointType::motor)
-        wrong_joint("set_motor_joint_offsets", id, j, "must be a motor joint");
+    Joint& j = impl_->joints.get(id, {JointType::motor}, "set_motor_joint_offsets",
+                                 "must be a motor joint");
     require_within("joint.linear_offset", linear_offset, supported::input_max, "m");
     require_within("joint.angular_offset", angular_offset, supported::input_max, "rad");
     j.local_anchor_a = linear_offset;
@@ -393,7 +358,7 @@ void World::step(double dt) {
     validate_time_step(dt);
     Impl& w = *impl_;
     w.check_state();
-    w.evaluate_loads();
+    w.bodies.evaluate_loads(w.time, w.loads);
     w.contacts.forget_filter_error(); // (one a step cut short by bad_alloc left)
     w.joints.broken.clear();
     w.contacts.begin_events.clear();
@@ -404,35 +369,14 @@ void World::step(double dt) {
     if (guarded)
         w.joints.guard_step(w.bodies, w.def.enable_sleep);
     w.contacts.find_new(w.bodies, w.shapes, w.joints);
-    const double h = dt / w.def.substeps;
     w.joints.inv_h = w.def.substeps / dt;
-    if (w.def.enable_sleep && !w.bodies.any_awake()) {
+    const StepContext step{w.def, dt, dt / w.def.substeps, w.def.enable_sleep, w.loads, w.tasks};
+    if (step.sleeping && !w.bodies.any_awake()) {
         // Every body asleep: every contact is kept as it is (a new one, of a static body moved
         // onto sleeping ones, too) and nothing is solved; the step does only this.
         w.contacts.keep_all();
-    } else if (w.def.enable_sleep) {
-        // The islands need this step's touching contacts, and the solver bodies the islands.
-        w.contacts.update(w.bodies, w.shapes, true, w.def.speculative_distance,
-                          w.def.manifold_reuse_distance, w.tasks);
-        w.sleep.wake_islands(w.bodies, w.contacts, w.joints);
-        w.solver.prepare_bodies(w.bodies, w.loads, w.def, h, w.tasks);
-        w.solver.prepare_joints(w.joints, w.bodies);
-        w.solver.solve(w.contacts, w.joints, w.def, dt, w.tasks);
-        if (guarded && w.solver.diverged() != null_index)
-            w.refuse_diverged();
-        w.solver.finalize(w.bodies, w.shapes, w.contacts, w.joints, w.def, w.tasks);
-        w.joints.break_joints(w.bodies, w.shapes);
-        w.sleep.update_sleep(w.bodies, w.def, dt);
     } else {
-        w.solver.prepare_bodies(w.bodies, w.loads, w.def, h, w.tasks);
-        w.solver.prepare_joints(w.joints, w.bodies);
-        w.contacts.update(w.bodies, w.shapes, false, w.def.speculative_distance,
-                          w.def.manifold_reuse_distance, w.tasks);
-        w.solver.solve(w.contacts, w.joints, w.def, dt, w.tasks);
-        if (guarded && w.solver.diverged() != null_index)
-            w.refuse_diverged();
-        w.solver.finalize(w.bodies, w.shapes, w.contacts, w.joints, w.def, w.tasks);
-        w.joints.break_joints(w.bodies, w.shapes);
+        w.solve(step, guarded);
     }
     // DD28: the sensors see the poses this step made.
     if (!w.sensors.empty())
@@ -507,9 +451,7 @@ void World::set_transform(BodyId id, Vec2d origin, double angle) {
     b.angle = angle;
     b.xf = {origin, Rot::from_angle(angle)};
     b.center = transform_point(b.xf, b.local_center);
-    for (std::uint32_t s = b.first_shape; s != null_index; s = impl_->shapes.shapes[s].next)
-        impl_->shapes.follow_body(impl_->shapes.shapes[s], b);
-    impl_->shapes.apply_moves();
+    impl_->shapes.move_with(b);
     impl_->bodies.wake(id.index);
     if (impl_->def.enable_sleep && b.type == BodyType::static_body)
         impl_->contacts.wake_touching(id.index, impl_->bodies);
@@ -631,48 +573,17 @@ void World::set_awake(BodyId id, bool awake) {
     }
     if (!impl_->def.enable_sleep || b.type == BodyType::static_body)
         return; // with sleeping off every body stays awake
-    impl_->bodies.sleep_states[id.index].awake = false;
-    impl_->bodies.sleep_states[id.index].sleep_time = 0.0;
-    b.v = {};
-    b.w = 0.0;
-    b.force_once = {};
-    b.torque_once = 0.0;
+    impl_->bodies.put_to_sleep(id.index);
 }
 
 double World::kinetic_energy() const {
-    double e = 0.0;
-    for (const Body& b : impl_->bodies.bodies) {
-        if (!b.alive || b.type != BodyType::dynamic)
-            continue;
-        const double inertia = b.inv_inertia > 0.0 ? b.inertia : 0.0;
-        e += model::dd15::kinetic_energy(
-                 u::from_value<u::Mass>(b.mass), bridge::typed<u::Velocity>(b.v),
-                 u::from_value<u::MomentOfInertia>(inertia), u::from_value<u::AngularVelocity>(b.w))
-                 .value();
-    }
-    return e;
+    return impl_->bodies.kinetic_energy();
 }
 double World::potential_energy() const {
-    double e = 0.0;
-    for (const Body& b : impl_->bodies.bodies) {
-        if (!b.alive || b.type != BodyType::dynamic)
-            continue;
-        e += model::dd16::potential_energy(
-                 u::from_value<u::Mass>(b.mass),
-                 bridge::typed<u::Acceleration>(b.gravity_scale * impl_->def.gravity),
-                 bridge::typed<u::Length>(b.center))
-                 .value();
-    }
-    return e;
+    return impl_->bodies.potential_energy(impl_->def.gravity);
 }
 Vec2d World::linear_momentum() const {
-    std::vector<model::gd1::MassVelocity> mv;
-    for (const Body& b : impl_->bodies.bodies) {
-        if (!b.alive || b.type != BodyType::dynamic)
-            continue;
-        mv.push_back({u::from_value<u::Mass>(b.mass), bridge::typed<u::Velocity>(b.v)});
-    }
-    return bridge::plain(model::gd1::total_momentum(mv));
+    return impl_->bodies.linear_momentum();
 }
 
 std::span<const ContactInfo> World::contacts() const {
@@ -707,56 +618,19 @@ std::vector<ShapeId> World::query_aabb(const Aabb& box) const {
         throw ValidationError("box.max_y", box.max_y,
                               "must be >= box.min_y (" + detail::format_value(box.min_y) + " m)",
                               "query");
-    std::vector<ShapeId> out;
-    impl_->shapes.broad_phase.query(box, [&](int proxy) {
-        const std::uint32_t s = impl_->shapes.broad_phase.user_data(proxy);
-        const Shape& sh = impl_->shapes.shapes[s];
-        if (overlaps(impl_->shapes.box(sh, impl_->bodies.bodies[sh.body]), box))
-            out.push_back(impl_->shapes.id(s));
-        return true;
-    });
-    std::sort(out.begin(), out.end(), [](ShapeId a, ShapeId b) { return a.index < b.index; });
-    return out;
+    return impl_->shapes.overlapping(box, impl_->bodies);
 }
 
 std::vector<ShapeId> World::query_point(Vec2d p) const {
     require_finite("point", p); // a NaN point is in no shape: refused, not answered empty
-    std::vector<ShapeId> out;
-    const Aabb box{p.x, p.y, p.x, p.y};
-    impl_->shapes.broad_phase.query(box, [&](int proxy) {
-        const std::uint32_t s = impl_->shapes.broad_phase.user_data(proxy);
-        const Shape& sh = impl_->shapes.shapes[s];
-        if (test_point(impl_->shapes.defs[s].geometry, impl_->bodies.bodies[sh.body].xf, p))
-            out.push_back(impl_->shapes.id(s));
-        return true;
-    });
-    std::sort(out.begin(), out.end(), [](ShapeId a, ShapeId b) { return a.index < b.index; });
-    return out;
+    return impl_->shapes.containing(p, impl_->bodies);
 }
 
 std::optional<RayCastHit> World::ray_cast(Vec2d origin, Vec2d translation) const {
     // Within the supported range, |translation|^2 and the hit fraction cannot overflow.
     require_within("origin", origin, supported::input_max, "m");
     require_within("translation", translation, supported::input_max, "m");
-    const Vec2d end = origin + translation;
-    const Aabb box{std::min(origin.x, end.x), std::min(origin.y, end.y), std::max(origin.x, end.x),
-                   std::max(origin.y, end.y)};
-    std::optional<RayCastHit> best;
-    impl_->shapes.broad_phase.query(inflated(box, 1e-9), [&](int proxy) {
-        const std::uint32_t s = impl_->shapes.broad_phase.user_data(proxy);
-        if (impl_->shapes.defs[s].is_sensor)
-            return true; // a sensor is not there for rays (DD28)
-        const Shape& sh = impl_->shapes.shapes[s];
-        const auto hit = tamias2d::ray_cast(impl_->shapes.defs[s].geometry,
-                                            impl_->bodies.bodies[sh.body].xf, origin, translation);
-        if (hit && (!best || hit->fraction < best->fraction ||
-                    (hit->fraction == best->fraction && s < best->shape.index))) {
-            best = RayCastHit{impl_->shapes.id(s), impl_->bodies.id(sh.body), hit->point,
-                              hit->normal, hit->fraction};
-        }
-        return true;
-    });
-    return best;
+    return impl_->shapes.ray_cast(origin, translation, impl_->bodies);
 }
 
 std::uint64_t World::state_hash() const {

@@ -9,6 +9,7 @@
 #include "tamias2d/dynamics/joint_store.hpp"
 #include "tamias2d/dynamics/shape_store.hpp"
 #include "tamias2d/dynamics/state_hasher.hpp"
+#include "tamias2d/dynamics/step_context.hpp"
 #include "tamias2d/math/prefetch.hpp"
 #include "tamias2d/model/dd27_collision_filter.hpp"
 #include "tamias2d/parallel/step_tasks.hpp"
@@ -277,9 +278,11 @@ inline void prefetch_shapes(const Contact& c, const LargeArray<Shape>& shape) {
 
 } // namespace
 
-void ContactManager::update(BodyStore& bodies, const ShapeStore& shapes, bool sleeping,
-                            double speculative_distance, double reuse_distance,
-                            const StepTasks& tasks) {
+void ContactManager::update(BodyStore& bodies, const ShapeStore& shapes, const StepContext& step) {
+    const bool sleeping = step.sleeping;
+    const double speculative_distance = step.def.speculative_distance;
+    const double reuse_distance = step.def.manifold_reuse_distance;
+    const StepTasks& tasks = step.tasks;
     doomed_.clear();
     const auto count = std::uint32_t(contacts.size()); // the loop adds and removes none
     edge_inputs.resize(count);

@@ -51,6 +51,20 @@ const char* joint_kind_name(JointType type) {
     return "joint of no known kind";
 }
 
+double joint_angle_now(const Joint& j, const BodyStore& bodies) {
+    return bridge::joint_angle(bodies.bodies[j.body_a].angle, bodies.bodies[j.body_b].angle,
+                               j.reference_angle);
+}
+
+double joint_translation_now(const Joint& j, const BodyStore& bodies) {
+    const Body& a = bodies.bodies[j.body_a];
+    const Body& b = bodies.bodies[j.body_b];
+    const Vec2d r_a = rotate(a.xf.q, j.local_anchor_a - a.local_center);
+    const Vec2d r_b = rotate(b.xf.q, j.local_anchor_b - b.local_center);
+    return bridge::line((b.center + r_b) - (a.center + r_a), r_a, r_b, rotate(a.xf.q, j.local_axis))
+        .translation;
+}
+
 void validate_levers(const BodyStore& bodies, const Joint& j, const std::string& at) {
     const auto [field_a, field_b] = anchor_fields(j.type);
     for (const bool side_a : {true, false}) {
@@ -70,6 +84,15 @@ Joint& JointStore::get(JointId id) {
                             std::to_string(id.generation));
     }
     return joints[id.index];
+}
+
+Joint& JointStore::get(JointId id, std::initializer_list<JointType> kinds, const char* call,
+                       const char* rule) {
+    Joint& j = get(id);
+    if (std::find(kinds.begin(), kinds.end(), j.type) == kinds.end())
+        throw WrongKind(call, "joint[" + std::to_string(id.index) + "]", joint_kind_name(j.type),
+                        rule);
+    return j;
 }
 
 bool JointStore::is_valid(JointId id) const {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,11 @@ class ShapeStore;
 /// How messages name a joint's kind ("revolute joint", ...).
 const char* joint_kind_name(JointType type);
 
+/// The joint angle now (DD22): B's turn against A since creation, rad.
+double joint_angle_now(const Joint& j, const BodyStore& bodies);
+/// The translation now along a prismatic or wheel joint's axis (DD23), m.
+double joint_translation_now(const Joint& j, const BodyStore& bodies);
+
 /// \srs{DCX_joint} Each anchor of `j` lies within supported::joint_lever_ratio_max radii of
 /// gyration of its body's centre of mass. `at` begins the field's name ("joint." or
 /// "joint[3].").
@@ -35,6 +41,15 @@ class JointStore {
     /// The joint of a handle; throws InvalidHandle for a stale or unknown one.
     Joint& get(JointId id);
     const Joint& get(JointId id) const { return const_cast<JointStore*>(this)->get(id); }
+    /// The joint of a handle for a reading or setter `call` that applies to the `kinds` only:
+    /// throws InvalidHandle for a stale or unknown handle, WrongKind (saying `rule`) for a joint
+    /// of another kind.
+    Joint& get(JointId id, std::initializer_list<JointType> kinds, const char* call,
+               const char* rule);
+    const Joint& get(JointId id, std::initializer_list<JointType> kinds, const char* call,
+                     const char* rule) const {
+        return const_cast<JointStore*>(this)->get(id, kinds, call, rule);
+    }
     bool is_valid(JointId id) const;
     JointId id(std::uint32_t i) const { return {i, joints[i].generation}; }
     std::uint32_t live() const { return live_; }

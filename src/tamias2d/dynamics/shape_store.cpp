@@ -1,9 +1,12 @@
 #include "tamias2d/dynamics/shape_store.hpp"
 
+#include <algorithm>
 #include <string>
 
+#include "tamias2d/dynamics/body_store.hpp"
 #include "tamias2d/dynamics/state_hasher.hpp"
 #include "tamias2d/errors.hpp"
+#include "tamias2d/geometry/shape_queries.hpp"
 #include "tamias2d/math/prefetch.hpp"
 
 namespace tamias2d {
@@ -91,6 +94,68 @@ void ShapeStore::refit_undecided() {
     }
     undecided_.clear();
     apply_moves();
+}
+
+std::vector<ShapeId> ShapeStore::ids_of(const Body& b) const {
+    std::vector<ShapeId> out;
+    for (std::uint32_t s = b.first_shape; s != null_index; s = shapes[s].next)
+        out.push_back(id(s));
+    return out;
+}
+
+void ShapeStore::move_with(const Body& b) {
+    for (std::uint32_t s = b.first_shape; s != null_index; s = shapes[s].next)
+        follow_body(shapes[s], b);
+    apply_moves();
+}
+
+std::vector<ShapeId> ShapeStore::overlapping(const Aabb& box, const BodyStore& bodies) const {
+    std::vector<ShapeId> out;
+    broad_phase.query(box, [&](int proxy) {
+        const std::uint32_t s = broad_phase.user_data(proxy);
+        const Shape& sh = shapes[s];
+        if (overlaps(this->box(sh, bodies.bodies[sh.body]), box))
+            out.push_back(id(s));
+        return true;
+    });
+    std::sort(out.begin(), out.end(), [](ShapeId a, ShapeId b) { return a.index < b.index; });
+    return out;
+}
+
+std::vector<ShapeId> ShapeStore::containing(Vec2d p, const BodyStore& bodies) const {
+    std::vector<ShapeId> out;
+    const Aabb box{p.x, p.y, p.x, p.y};
+    broad_phase.query(box, [&](int proxy) {
+        const std::uint32_t s = broad_phase.user_data(proxy);
+        const Shape& sh = shapes[s];
+        if (test_point(defs[s].geometry, bodies.bodies[sh.body].xf, p))
+            out.push_back(id(s));
+        return true;
+    });
+    std::sort(out.begin(), out.end(), [](ShapeId a, ShapeId b) { return a.index < b.index; });
+    return out;
+}
+
+std::optional<RayCastHit> ShapeStore::ray_cast(Vec2d origin, Vec2d translation,
+                                               const BodyStore& bodies) const {
+    const Vec2d end = origin + translation;
+    const Aabb box{std::min(origin.x, end.x), std::min(origin.y, end.y), std::max(origin.x, end.x),
+                   std::max(origin.y, end.y)};
+    std::optional<RayCastHit> best;
+    broad_phase.query(inflated(box, 1e-9), [&](int proxy) {
+        const std::uint32_t s = broad_phase.user_data(proxy);
+        if (defs[s].is_sensor)
+            return true; // a sensor is not there for rays (DD28)
+        const Shape& sh = shapes[s];
+        const auto hit =
+            tamias2d::ray_cast(defs[s].geometry, bodies.bodies[sh.body].xf, origin, translation);
+        if (hit && (!best || hit->fraction < best->fraction ||
+                    (hit->fraction == best->fraction && s < best->shape.index))) {
+            best = RayCastHit{id(s), bodies.id(sh.body), hit->point, hit->normal, hit->fraction};
+        }
+        return true;
+    });
+    return best;
 }
 
 void ShapeStore::hash(StateHasher& hs) const {

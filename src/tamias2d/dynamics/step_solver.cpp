@@ -60,8 +60,11 @@ Accelerations accelerations_of(const Body& b, std::uint32_t i, const std::vector
 // Built before the narrow phase, not after it: a pass over every body between the narrow
 // phase's sweep of the contacts and the lane filling's gather of them pushed them out of the
 // cache (rain_16k).
-void StepSolver::prepare_bodies(const BodyStore& store, const std::vector<Load>& loads,
-                                const WorldDef& def, double h, const StepTasks& tasks) {
+void StepSolver::prepare_bodies(const BodyStore& store, const StepContext& step) {
+    const std::vector<Load>& loads = step.loads;
+    const WorldDef& def = step.def;
+    const double h = step.h;
+    const StepTasks& tasks = step.tasks;
     const auto& bodies = store.bodies;
     solver_index_.resize(bodies.size());
     // The contact regions (WorldDef::contact_regions) are slabs along gravity, cut across it:
@@ -423,10 +426,12 @@ std::uint32_t StepSolver::list_edges(const ContactManager& contacts, const StepT
     return total.bounces;
 }
 
-void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const WorldDef& def,
-                       double dt, const StepTasks& tasks) {
+void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const StepContext& step) {
+    const WorldDef& def = step.def;
+    const StepTasks& tasks = step.tasks;
     const int n = def.substeps;
-    const double h = dt / n;
+    const double dt = step.dt;
+    const double h = step.h;
     std::vector<Joint>& joints = joint_store.joints;
     // IM6: the joints' soft bias, capped like the contacts' at a quarter of the substep rate.
     const Softness joint_softness = make_joint_softness(
@@ -576,7 +581,9 @@ void StepSolver::contact_pass(const StepTasks& tasks, std::uint32_t streams,
 }
 
 void StepSolver::finalize(BodyStore& store, ShapeStore& shape_store, const ContactManager& contacts,
-                          const JointStore& joints, const WorldDef& def, const StepTasks& tasks) {
+                          const JointStore& joints, const StepContext& step) {
+    const WorldDef& def = step.def;
+    const StepTasks& tasks = step.tasks;
     const auto body_count = std::uint32_t(store.bodies.size());
     shape_store.reserve_undecided(); // allocates only after shapes were added
     continuous_.clear();
