@@ -138,22 +138,24 @@ std::vector<ShapeId> ShapeStore::containing(Vec2d p, const BodyStore& bodies) co
 
 std::optional<RayCastHit> ShapeStore::ray_cast(Vec2d origin, Vec2d translation,
                                                const BodyStore& bodies) const {
-    const Vec2d end = origin + translation;
-    const Aabb box{std::min(origin.x, end.x), std::min(origin.y, end.y), std::max(origin.x, end.x),
-                   std::max(origin.y, end.y)};
+    // The trees are walked along the ray, clipped at the nearest hit so far: a shape beyond it
+    // is not visited (a long diagonal ray no longer visits every shape in its bounding box).
+    // The clip lies a little past the hit, so that a shape hit at the same fraction (the lower
+    // index wins) is still visited whatever the rounding of the clipped ray's box tests.
+    constexpr double clip_margin = 1e-9; // of the ray's length
     std::optional<RayCastHit> best;
-    broad_phase.query(inflated(box, 1e-9), [&](int proxy) {
+    broad_phase.ray_cast(origin, translation, [&](int proxy, double max_fraction) {
         const std::uint32_t s = broad_phase.user_data(proxy);
-        if (defs[s].is_sensor)
-            return true; // a sensor is not there for rays (DD28)
-        const Shape& sh = shapes[s];
-        const auto hit =
-            tamias2d::ray_cast(defs[s].geometry, bodies.bodies[sh.body].xf, origin, translation);
-        if (hit && (!best || hit->fraction < best->fraction ||
-                    (hit->fraction == best->fraction && s < best->shape.index))) {
-            best = RayCastHit{id(s), bodies.id(sh.body), hit->point, hit->normal, hit->fraction};
+        if (!defs[s].is_sensor) { // a sensor is not there for rays (DD28)
+            const Shape& sh = shapes[s];
+            const auto hit = tamias2d::ray_cast(defs[s].geometry, bodies.bodies[sh.body].xf, origin,
+                                                translation);
+            if (hit && (!best || hit->fraction < best->fraction ||
+                        (hit->fraction == best->fraction && s < best->shape.index)))
+                best =
+                    RayCastHit{id(s), bodies.id(sh.body), hit->point, hit->normal, hit->fraction};
         }
-        return true;
+        return best ? std::min(max_fraction, best->fraction + clip_margin) : max_fraction;
     });
     return best;
 }

@@ -94,7 +94,8 @@ class ShapeStore {
     /// The live shapes containing point p (T5), in index order.
     std::vector<ShapeId> containing(Vec2d p, const BodyStore& bodies) const;
     /// The first non-sensor shape the segment origin -> origin + translation hits (DD28: a
-    /// sensor is not there for rays); at equal fractions the lowest shape index.
+    /// sensor is not there for rays); at equal fractions the lowest shape index. Found by
+    /// walking the broad phase's trees along the ray, clipped at each hit.
     std::optional<RayCastHit> ray_cast(Vec2d origin, Vec2d translation,
                                        const BodyStore& bodies) const;
 
