@@ -4,24 +4,28 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <string>
 #include <utility>
 
 #include "tamias2d/dynamics/body_store.hpp"
 #include "tamias2d/dynamics/contact_manager.hpp"
+#include "tamias2d/dynamics/distance_joint.hpp"
 #include "tamias2d/dynamics/island_sleep.hpp"
 #include "tamias2d/dynamics/joint_store.hpp"
 #include "tamias2d/dynamics/model_bridge.hpp"
+#include "tamias2d/dynamics/motor_joint.hpp"
+#include "tamias2d/dynamics/prismatic_joint.hpp"
+#include "tamias2d/dynamics/revolute_joint.hpp"
 #include "tamias2d/dynamics/sensor_overlaps.hpp"
 #include "tamias2d/dynamics/shape_store.hpp"
+#include "tamias2d/dynamics/state_hasher.hpp"
+#include "tamias2d/dynamics/step_context.hpp"
 #include "tamias2d/dynamics/step_solver.hpp"
+#include "tamias2d/dynamics/target_joint.hpp"
+#include "tamias2d/dynamics/weld_joint.hpp"
+#include "tamias2d/dynamics/wheel_joint.hpp"
 #include "tamias2d/errors.hpp"
-#include "tamias2d/geometry/shape_queries.hpp"
 #include "tamias2d/model/dd13_torque.hpp"
-#include "tamias2d/model/dd15_kinetic_energy.hpp"
-#include "tamias2d/model/dd16_potential_energy.hpp"
-#include "tamias2d/model/gd1_conservation_of_momentum.hpp"
 #include "tamias2d/parallel/step_tasks.hpp"
 #include "tamias2d/units/angle.hpp"
 #include "tamias2d/validation.hpp"
@@ -32,80 +36,16 @@ namespace u = tamias2d::units;
 
 namespace {
 
-/// How messages name body i: "body[3]", or "body[3 'slider']" when it has a name.
-std::string body_label(const BodyStore& bodies, std::uint32_t i) {
-    const std::string& name = bodies.settings[i].name;
-    return "body[" + std::to_string(i) + (name.empty() ? "" : " '" + name + "'") + "]";
-}
-
-/// The input field that placed each anchor of a joint of this type (for DCX_joint's lever).
-std::pair<const char*, const char*> anchor_fields(JointType type) {
-    switch (type) {
-    case JointType::distance:
-        return {"anchor_a", "anchor_b"};
-    case JointType::target:
-        return {"target", "target"};
-    case JointType::motor:
-        return {"linear_offset", "body_b (its origin)"};
-    default:
-        return {"anchor", "anchor"};
-    }
-}
-
-/// \srs{DCX_joint} Each anchor of `j` lies within supported::joint_lever_ratio_max radii of
-/// gyration of its body's centre of mass. `at` begins the field's name ("joint." or
-/// "joint[3].").
-void validate_levers(const BodyStore& bodies, const Joint& j, const std::string& at) {
-    const auto [field_a, field_b] = anchor_fields(j.type);
-    for (const bool side_a : {true, false}) {
-        const std::uint32_t i = side_a ? j.body_a : j.body_b;
-        const Body& b = bodies.bodies[i];
-        const Vec2d r = (side_a ? j.local_anchor_a : j.local_anchor_b) - b.local_center;
-        if (joint_lever_fits(r, b.inv_mass, b.inv_inertia))
-            continue; // the field's name is made only for the message
-        validate_joint_lever(at + (side_a ? field_a : field_b) + " (on " + body_label(bodies, i) +
-                                 ")",
-                             r, b.inv_mass, b.inv_inertia);
-    }
-}
-
 /// A body a joint definition names, for its checks and their messages.
 JointBody joint_body(const BodyStore& bodies, BodyId id, const Body& b) {
-    return {id, body_label(bodies, id.index), b.type};
-}
-
-/// How messages name a joint's kind.
-const char* kind_name(JointType type) {
-    switch (type) {
-    case JointType::revolute:
-        return "revolute joint";
-    case JointType::distance:
-        return "distance joint";
-    case JointType::target:
-        return "target joint";
-    case JointType::prismatic:
-        return "prismatic joint";
-    case JointType::weld:
-        return "weld joint";
-    case JointType::wheel:
-        return "wheel joint";
-    case JointType::motor:
-        return "motor joint";
-    }
-    return "joint of no known kind";
-}
-
-/// A joint reading or setter called on a joint of a kind it does not apply to.
-[[noreturn]] void wrong_joint(const char* call, JointId id, const Joint& j, const char* rule) {
-    throw WrongKind(call, "joint[" + std::to_string(id.index) + "]", kind_name(j.type), rule);
+    return {id, bodies.label(id.index), b.type};
 }
 
 /// Forces, torques and impulses move dynamic bodies only: one given to a static or kinematic
 /// body would be lost without a trace, so it is refused as the mistake it is.
 void require_dynamic(const BodyStore& bodies, BodyId id, const Body& b, const char* call) {
     if (b.type != BodyType::dynamic)
-        throw WrongKind(call, body_label(bodies, id.index),
-                        std::string(type_name(b.type)) + " body",
+        throw WrongKind(call, bodies.label(id.index), std::string(type_name(b.type)) + " body",
                         "must be a dynamic body (a static or kinematic body does not move under "
                         "forces, torques or impulses)");
 }
@@ -125,117 +65,55 @@ struct World::Impl {
     SensorOverlaps sensors;
     StepSolver solver;
     IslandSleep sleep;
-    StepTasks tasks;             ///< the step's parallel loops (WorldDef::workers, task_system)
-    std::vector<Load> loads;     ///< this step's load-function values (empty when none has one)
-    double inv_h = 0.0;          ///< s^-1, the last step's substep rate (reaction forces)
-    std::vector<JointId> broken; ///< joints the last step broke
-    /// With joints, what a step changes before its solve and a refused step must give back:
-    /// the part of each joint a step writes (joint_step_part on: impulses, axis, the
-    /// preparation's fields; whole joints, twice the bytes, cost an eighth of a 20 000-joint
-    /// grid's step), the sleep states the islands woke and the substep rate the reaction forces
-    /// are read with.
-    using JointStepPart = std::array<unsigned char, sizeof(Joint) - joint_step_part>;
-    std::vector<JointStepPart> joints_before;
-    std::vector<SleepState> sleep_before;
-    double inv_h_before = 0.0;
-
-    /// The solve diverged (StepSolver::diverged): the joints and sleep states as they were,
-    /// no event of this step, and the step refused naming the body (SolverDivergence). Nothing was
-    /// finalized, so the bodies are as they were; the contacts hold the manifolds of those same
-    /// poses.
-    [[noreturn]] void refuse_diverged(std::uint32_t i) {
-        for (std::size_t k = 0; k < joints_before.size(); ++k)
-            std::memcpy(reinterpret_cast<unsigned char*>(&joints.joints[k]) + joint_step_part,
-                        joints_before[k].data(), sizeof(JointStepPart));
-        inv_h = inv_h_before;
-        if (def.enable_sleep)
-            std::copy(sleep_before.begin(), sleep_before.end(), bodies.sleep_states.begin());
-        contacts.begin_events.clear();
-        contacts.end_events.clear();
-        const std::string field = body_label(bodies, i) + ".velocity";
-        throw SolverDivergence(
-            field, field + ": turned non-finite in the joints' solve; the step is refused, "
-                           "bodies, joints and clock as they were");
-    }
-
-    /// Destroys joint i and wakes its bodies. A joint that kept its bodies from colliding
-    /// (DD27) no longer does: the shapes of one of its bodies (B, or A when B is static) are
-    /// touched, so that the broad phase reports their pairs again at the next step (at rest,
-    /// they would not be looked for again).
-    void unjoin(std::uint32_t i) {
-        const Joint& j = joints.joints[i];
-        bodies.wake(j.body_a);
-        bodies.wake(j.body_b);
-        if (!j.collide_connected) {
-            const std::uint32_t body =
-                bodies.bodies[j.body_b].type == BodyType::static_body ? j.body_a : j.body_b;
-            for (std::uint32_t s = bodies.bodies[body].first_shape; s != null_index;
-                 s = shapes.shapes[s].next)
-                shapes.broad_phase.touch_proxy(shapes.shapes[s].proxy);
-        }
-        joints.destroy(i);
-    }
-
-    /// After the step: a joint whose reaction force exceeded its break force is destroyed.
-    void break_joints() {
-        for (std::uint32_t i = 0; i < joints.joints.size(); ++i) {
-            const Joint& j = joints.joints[i];
-            if (!j.alive ||
-                !(bridge::reaction_force(length(reaction_impulse(j)), inv_h) > j.break_force))
-                continue;
-            broken.push_back(joints.id(i));
-            unjoin(i);
-        }
-    }
+    StepTasks tasks;         ///< the step's parallel loops (WorldDef::workers, task_system)
+    std::vector<Load> loads; ///< this step's load-function values (empty when none has one)
 
     explicit Impl(const WorldDef& d) : def(d) {
         shapes.broad_phase.set_least_margin(d.speculative_distance); // (BroadPhase::fattened)
     }
 
-    /// The time-varying loads at the step's start: a user function returning NaN is rejected
-    /// before anything has changed. Most worlds have none: then no setting is read and `loads`
-    /// stays empty.
-    void evaluate_loads() {
-        loads.clear();
-        if (bodies.loaded_bodies > 0)
-            loads.assign(bodies.size(), Load{});
-        for (std::uint32_t i = 0; i < loads.size(); ++i) {
-            const Body& b = bodies.bodies[i];
-            const LoadFunction& load = bodies.settings[i].load;
-            if (!b.alive || !load || b.type != BodyType::dynamic)
-                continue;
-            const Load l = load(time);
-            require_within("load(t).force", l.force, supported::input_max, "N");
-            require_within("load(t).torque", l.torque, supported::input_max, "N m");
-            loads[i] = l;
-        }
+    /// The solve diverged (StepSolver::diverged): the joints and sleep states as they were, no
+    /// event of this step, and the step refused naming the body (SolverDivergence). Nothing was
+    /// finalized, so the bodies are as they were; the contacts hold the manifolds of those same
+    /// poses.
+    [[noreturn]] void refuse_diverged() {
+        contacts.begin_events.clear();
+        contacts.end_events.clear();
+        joints.refuse_step(solver.diverged(), bodies, def.enable_sleep);
     }
 
-    /// \srs{DCX_range} A step starts only from a state within supported::state_max, the headroom a
-    /// simulation of in-range inputs may grow into; from there no product of one step
-    /// overflows (docs/design.md, "Supported ranges"). One pass over the bodies, before
-    /// anything changes.
+    /// The solver bodies and the joints' frames at the step's start.
+    void prepare(const StepContext& step) {
+        solver.prepare_bodies(bodies, step);
+        solver.prepare_joints(joints, bodies);
+    }
+
+    /// A step with some body awake: its stages in one order. Only where the solver bodies are
+    /// prepared depends on sleeping: with sleeping, after the islands (which need this step's
+    /// touching contacts) have woken what they wake; without, before the narrow phase. With
+    /// joints (`guarded`), a diverged solve is refused before anything is finalized.
+    void solve(const StepContext& step, bool guarded) {
+        if (!step.sleeping)
+            prepare(step);
+        contacts.update(bodies, shapes, step);
+        if (step.sleeping) {
+            sleep.wake_islands(bodies, contacts, joints);
+            prepare(step);
+        }
+        solver.solve(contacts, joints, step);
+        if (guarded && solver.diverged() != null_index)
+            refuse_diverged();
+        solver.finalize(bodies, shapes, contacts, joints, step);
+        joints.break_joints(bodies, shapes);
+        if (step.sleeping)
+            sleep.update_sleep(bodies, step);
+    }
+
+    /// A step starts only from a state within supported::state_max (BodyStore::check_state),
+    /// with its joints' anchors within their levers' limit.
     void check_state() const {
-        constexpr double m = supported::state_max;
-        for (std::uint32_t i = 0; i < bodies.size(); ++i) {
-            const Body& b = bodies.bodies[i];
-            if (!b.alive || b.type == BodyType::static_body)
-                continue;
-            if (std::abs(b.center.x) <= m && std::abs(b.center.y) <= m && std::abs(b.v.x) <= m &&
-                std::abs(b.v.y) <= m && std::abs(b.w) <= m && std::abs(b.angle) <= m)
-                continue;
-            const std::string at = body_label(bodies, i) + ".";
-            require_within(at + "position", b.center, m, "m");
-            require_within(at + "velocity", b.v, m, "m s^-1");
-            require_within(at + "angular_velocity", b.w, m, "rad s^-1");
-            require_within(at + "angle", b.angle, m, "rad");
-        }
-        // A shape added or removed since a joint was made moves the centre of mass and
-        // changes the inertia its anchors are judged by (the joints are few: one pass).
-        for (std::uint32_t k = 0; k < joints.joints.size(); ++k) {
-            if (joints.joints[k].alive)
-                validate_levers(bodies, joints.joints[k], "joint[" + std::to_string(k) + "].");
-        }
+        bodies.check_state();
+        joints.check_levers(bodies); // (the joints are few: one pass)
     }
 };
 
@@ -345,25 +223,17 @@ bool World::is_valid(ShapeId id) const {
 }
 
 std::vector<BodyId> World::bodies() const {
-    std::vector<BodyId> out;
-    for (std::uint32_t i = 0; i < impl_->bodies.size(); ++i) {
-        if (impl_->bodies.bodies[i].alive)
-            out.push_back(impl_->bodies.id(i));
-    }
-    return out;
+    return impl_->bodies.live_ids();
 }
 
 std::vector<ShapeId> World::shapes(BodyId id) const {
-    std::vector<ShapeId> out;
-    for (std::uint32_t s = impl_->bodies.get(id).first_shape; s != null_index;
-         s = impl_->shapes.shapes[s].next)
-        out.push_back(impl_->shapes.id(s));
-    return out;
+    return impl_->shapes.ids_of(impl_->bodies.get(id));
 }
 
 namespace {
 
-/// Stores a joint whose fields are set, removes the contacts it filters, wakes its bodies.
+/// Stores a joint made from a validated definition, removes the contacts it filters, wakes its
+/// bodies.
 JointId add_joint(World::Impl& w, const Joint& j) {
     validate_levers(w.bodies, j, "joint.");
     const std::uint32_t i = w.joints.create(j);
@@ -374,169 +244,45 @@ JointId add_joint(World::Impl& w, const Joint& j) {
     return w.joints.id(i);
 }
 
-/// A two-body joint's common fields: the bodies, one anchor fixed on both, the reference angle.
-Joint two_body_joint(JointType type, BodyId id_a, const Body& a, BodyId id_b, const Body& b,
-                     Vec2d anchor, bool collide_connected, double break_force) {
-    Joint j;
-    j.type = type;
-    j.body_a = id_a.index;
-    j.body_b = id_b.index;
-    j.local_anchor_a = inv_transform_point(a.xf, anchor);
-    j.local_anchor_b = inv_transform_point(b.xf, anchor);
-    j.collide_connected = collide_connected;
-    j.break_force = break_force;
-    j.reference_angle = b.angle - a.angle;
-    return j;
-}
-
-/// The joint's axis in body A's frame, normalised (validated non-zero).
-Vec2d local_axis(const Body& a, Vec2d axis) {
-    return inv_rotate(a.xf.q, normalize(axis));
+/// A two-body joint: the handles checked, the definition validated, the joint its kind makes
+/// (make_joint, beside the kind's solve) stored.
+template <class Def> JointId join(World::Impl& w, const Def& def) {
+    const Body& a = w.bodies.get(def.body_a);
+    const Body& b = w.bodies.get(def.body_b);
+    validate(def, joint_body(w.bodies, def.body_a, a), joint_body(w.bodies, def.body_b, b));
+    return add_joint(w, make_joint(def, a, b));
 }
 
 } // namespace
 
 JointId World::create_joint(const RevoluteJointDef& def) {
-    Impl& w = *impl_;
-    const Body& a = w.bodies.get(def.body_a);
-    const Body& b = w.bodies.get(def.body_b);
-    validate(def, joint_body(w.bodies, def.body_a, a), joint_body(w.bodies, def.body_b, b));
-    Joint j = two_body_joint(JointType::revolute, def.body_a, a, def.body_b, b, def.anchor,
-                             def.collide_connected, def.break_force);
-    j.enable_limit = def.enable_limit;
-    j.lower_limit = def.lower_angle;
-    j.upper_limit = def.upper_angle;
-    j.enable_motor = def.enable_motor;
-    j.motor_speed = def.motor_speed;
-    j.max_motor = def.max_motor_torque;
-    j.enable_spring = def.enable_spring;
-    j.hertz = def.hertz;
-    j.damping_ratio = def.damping_ratio;
-    return add_joint(w, j);
+    return join(*impl_, def);
 }
-
 JointId World::create_joint(const DistanceJointDef& def) {
-    Impl& w = *impl_;
-    const Body& a = w.bodies.get(def.body_a);
-    const Body& b = w.bodies.get(def.body_b);
-    validate(def, joint_body(w.bodies, def.body_a, a), joint_body(w.bodies, def.body_b, b));
-    Joint j;
-    j.type = JointType::distance;
-    j.body_a = def.body_a.index;
-    j.body_b = def.body_b.index;
-    j.local_anchor_a = inv_transform_point(a.xf, def.anchor_a);
-    j.local_anchor_b = inv_transform_point(b.xf, def.anchor_b);
-    j.length = def.length.value_or(length(def.anchor_b - def.anchor_a));
-    j.hertz = def.hertz;
-    j.damping_ratio = def.damping_ratio;
-    j.enable_limit = def.enable_limit;
-    j.lower_limit = def.min_length;
-    j.upper_limit = def.max_length;
-    j.collide_connected = def.collide_connected;
-    j.break_force = def.break_force;
-    return add_joint(w, j);
+    return join(*impl_, def);
 }
-
 JointId World::create_joint(const PrismaticJointDef& def) {
-    Impl& w = *impl_;
-    const Body& a = w.bodies.get(def.body_a);
-    const Body& b = w.bodies.get(def.body_b);
-    validate(def, joint_body(w.bodies, def.body_a, a), joint_body(w.bodies, def.body_b, b));
-    Joint j = two_body_joint(JointType::prismatic, def.body_a, a, def.body_b, b, def.anchor,
-                             def.collide_connected, def.break_force);
-    j.local_axis = local_axis(a, def.axis);
-    j.axis = normalize(def.axis);
-    j.enable_limit = def.enable_limit;
-    j.lower_limit = def.lower_translation;
-    j.upper_limit = def.upper_translation;
-    j.enable_motor = def.enable_motor;
-    j.motor_speed = def.motor_speed;
-    j.max_motor = def.max_motor_force;
-    j.enable_spring = def.enable_spring;
-    j.hertz = def.hertz;
-    j.damping_ratio = def.damping_ratio;
-    return add_joint(w, j);
+    return join(*impl_, def);
 }
-
 JointId World::create_joint(const WeldJointDef& def) {
-    Impl& w = *impl_;
-    const Body& a = w.bodies.get(def.body_a);
-    const Body& b = w.bodies.get(def.body_b);
-    validate(def, joint_body(w.bodies, def.body_a, a), joint_body(w.bodies, def.body_b, b));
-    Joint j = two_body_joint(JointType::weld, def.body_a, a, def.body_b, b, def.anchor,
-                             def.collide_connected, def.break_force);
-    j.hertz = def.linear_hertz;
-    j.damping_ratio = def.linear_damping_ratio;
-    j.angular_hertz = def.angular_hertz;
-    j.angular_damping_ratio = def.angular_damping_ratio;
-    return add_joint(w, j);
+    return join(*impl_, def);
 }
-
 JointId World::create_joint(const WheelJointDef& def) {
-    Impl& w = *impl_;
-    const Body& a = w.bodies.get(def.body_a);
-    const Body& b = w.bodies.get(def.body_b);
-    validate(def, joint_body(w.bodies, def.body_a, a), joint_body(w.bodies, def.body_b, b));
-    Joint j = two_body_joint(JointType::wheel, def.body_a, a, def.body_b, b, def.anchor,
-                             def.collide_connected, def.break_force);
-    j.local_axis = local_axis(a, def.axis);
-    j.axis = normalize(def.axis);
-    j.enable_spring = def.enable_spring;
-    j.hertz = def.hertz;
-    j.damping_ratio = def.damping_ratio;
-    j.enable_limit = def.enable_limit;
-    j.lower_limit = def.lower_translation;
-    j.upper_limit = def.upper_translation;
-    j.enable_motor = def.enable_motor;
-    j.motor_speed = def.motor_speed;
-    j.max_motor = def.max_motor_torque;
-    return add_joint(w, j);
+    return join(*impl_, def);
 }
-
 JointId World::create_joint(const MotorJointDef& def) {
-    Impl& w = *impl_;
-    const Body& a = w.bodies.get(def.body_a);
-    const Body& b = w.bodies.get(def.body_b);
-    validate(def, joint_body(w.bodies, def.body_a, a), joint_body(w.bodies, def.body_b, b));
-    Joint j;
-    j.type = JointType::motor;
-    j.body_a = def.body_a.index;
-    j.body_b = def.body_b.index;
-    // DD26's pin: body_b's origin held at linear_offset in body_a's frame.
-    j.local_anchor_a = def.linear_offset;
-    j.local_anchor_b = {0.0, 0.0};
-    j.reference_angle = def.angular_offset;
-    j.max_force = def.max_force;
-    j.max_torque = def.max_torque;
-    j.correction_factor = def.correction_factor;
-    j.collide_connected = def.collide_connected;
-    j.break_force = def.break_force;
-    return add_joint(w, j);
+    return join(*impl_, def);
 }
-
 JointId World::create_joint(const TargetJointDef& def) {
     Impl& w = *impl_;
     const Body& b = w.bodies.get(def.body);
     validate(def, joint_body(w.bodies, def.body, b));
-    Joint j;
-    j.type = JointType::target;
-    j.body_a = j.body_b = def.body.index;
-    j.local_anchor_a = j.local_anchor_b = inv_transform_point(b.xf, def.target);
-    j.target = def.target;
-    j.hertz = def.hertz;
-    j.damping_ratio = def.damping_ratio;
-    j.max_force = def.max_force;
-    j.collide_connected = true; // one body: nothing to filter
-    validate_levers(w.bodies, j, "joint.");
-    const std::uint32_t i = w.joints.create(j);
-    w.bodies.wake(j.body_b);
-    return w.joints.id(i);
+    return add_joint(w, make_joint(def, b));
 }
 
 void World::set_joint_target(JointId id, Vec2d target) {
-    Joint& j = impl_->joints.get(id);
-    if (j.type != JointType::target)
-        wrong_joint("set_joint_target", id, j, "must be a target joint");
+    Joint& j =
+        impl_->joints.get(id, {JointType::target}, "set_joint_target", "must be a target joint");
     require_within("joint.target", target, supported::input_max, "m");
     j.target = target;
     impl_->bodies.wake(j.body_b);
@@ -545,7 +291,7 @@ void World::set_joint_target(JointId id, Vec2d target) {
 void World::destroy_joint(JointId id) {
     Impl& w = *impl_;
     w.joints.get(id); // throws for a stale handle, before anything changes
-    w.unjoin(id.index);
+    w.joints.unjoin(id.index, w.bodies, w.shapes);
 }
 
 bool World::is_valid(JointId id) const {
@@ -553,43 +299,35 @@ bool World::is_valid(JointId id) const {
 }
 
 Vec2d World::joint_reaction_force(JointId id) const {
-    return bridge::reaction_force(reaction_impulse(impl_->joints.get(id)), impl_->inv_h);
+    return bridge::reaction_force(reaction_impulse(impl_->joints.get(id)), impl_->joints.inv_h);
 }
 
 double World::joint_reaction_torque(JointId id) const {
-    return bridge::reaction_torque(reaction_angular_impulse(impl_->joints.get(id)), impl_->inv_h);
+    return bridge::reaction_torque(reaction_angular_impulse(impl_->joints.get(id)),
+                                   impl_->joints.inv_h);
 }
 
 double World::joint_angle(JointId id) const {
-    const Joint& j = impl_->joints.get(id);
-    if (j.type == JointType::distance || j.type == JointType::target || j.type == JointType::motor)
-        wrong_joint("joint_angle", id, j,
-                    "must be a revolute, prismatic, weld or wheel joint (the kinds that hold an "
-                    "angle)");
-    return bridge::joint_angle(impl_->bodies.bodies[j.body_a].angle,
-                               impl_->bodies.bodies[j.body_b].angle, j.reference_angle);
+    const Joint& j = impl_->joints.get(
+        id, {JointType::revolute, JointType::prismatic, JointType::weld, JointType::wheel},
+        "joint_angle",
+        "must be a revolute, prismatic, weld or wheel joint (the kinds that hold an "
+        "angle)");
+    return joint_angle_now(j, impl_->bodies);
 }
 
 double World::joint_translation(JointId id) const {
-    const Joint& j = impl_->joints.get(id);
-    if (j.type != JointType::prismatic && j.type != JointType::wheel)
-        wrong_joint("joint_translation", id, j,
-                    "must be a prismatic or wheel joint (the kinds with an axis)");
+    const Joint& j =
+        impl_->joints.get(id, {JointType::prismatic, JointType::wheel}, "joint_translation",
+                          "must be a prismatic or wheel joint (the kinds with an axis)");
     impl_->bodies.settle();
-    const Body& a = impl_->bodies.bodies[j.body_a];
-    const Body& b = impl_->bodies.bodies[j.body_b];
-    const Vec2d r_a = rotate(a.xf.q, j.local_anchor_a - a.local_center);
-    const Vec2d r_b = rotate(b.xf.q, j.local_anchor_b - b.local_center);
-    return bridge::line((b.center + r_b) - (a.center + r_a), r_a, r_b, rotate(a.xf.q, j.local_axis))
-        .translation;
+    return joint_translation_now(j, impl_->bodies);
 }
 
 void World::set_joint_motor_speed(JointId id, double speed) {
-    Joint& j = impl_->joints.get(id);
-    if (j.type != JointType::revolute && j.type != JointType::prismatic &&
-        j.type != JointType::wheel)
-        wrong_joint("set_joint_motor_speed", id, j,
-                    "must be a revolute, prismatic or wheel joint (the kinds with a motor)");
+    Joint& j = impl_->joints.get(
+        id, {JointType::revolute, JointType::prismatic, JointType::wheel}, "set_joint_motor_speed",
+        "must be a revolute, prismatic or wheel joint (the kinds with a motor)");
     require_within("joint.motor_speed", speed, supported::input_max,
                    j.type == JointType::prismatic ? "m s^-1" : "rad s^-1");
     j.motor_speed = speed;
@@ -598,9 +336,8 @@ void World::set_joint_motor_speed(JointId id, double speed) {
 }
 
 void World::set_motor_joint_offsets(JointId id, Vec2d linear_offset, double angular_offset) {
-    Joint& j = impl_->joints.get(id);
-    if (j.type != JointType::motor)
-        wrong_joint("set_motor_joint_offsets", id, j, "must be a motor joint");
+    Joint& j = impl_->joints.get(id, {JointType::motor}, "set_motor_joint_offsets",
+                                 "must be a motor joint");
     require_within("joint.linear_offset", linear_offset, supported::input_max, "m");
     require_within("joint.angular_offset", angular_offset, supported::input_max, "rad");
     j.local_anchor_a = linear_offset;
@@ -610,7 +347,7 @@ void World::set_motor_joint_offsets(JointId id, Vec2d linear_offset, double angu
 }
 
 std::span<const JointId> World::broken_joints() const {
-    return impl_->broken;
+    return impl_->joints.broken;
 }
 
 std::size_t World::joint_count() const {
@@ -626,55 +363,25 @@ void World::step(double dt) {
     Impl& w = *impl_;
     w.bodies.settle(); // the masses attach_shape left pending
     w.check_state();
-    w.evaluate_loads();
+    w.bodies.evaluate_loads(w.time, w.loads);
     w.contacts.forget_filter_error(); // (one a step cut short by bad_alloc left)
-    w.broken.clear();
+    w.joints.broken.clear();
     w.contacts.begin_events.clear();
     w.contacts.end_events.clear();
     w.sensors.begin_events.clear();
     w.sensors.end_events.clear();
     const bool guarded = w.joints.live() > 0;
-    if (guarded) { // (resize and assign reuse the vectors: no allocation in a steady state)
-        w.inv_h_before = w.inv_h;
-        w.joints_before.resize(w.joints.joints.size());
-        for (std::size_t k = 0; k < w.joints_before.size(); ++k)
-            std::memcpy(w.joints_before[k].data(),
-                        reinterpret_cast<const unsigned char*>(&w.joints.joints[k]) +
-                            joint_step_part,
-                        sizeof(Impl::JointStepPart));
-        if (w.def.enable_sleep)
-            w.sleep_before.assign(w.bodies.sleep_states.begin(), w.bodies.sleep_states.end());
-    }
+    if (guarded)
+        w.joints.guard_step(w.bodies, w.def.enable_sleep);
     w.contacts.find_new(w.bodies, w.shapes, w.joints);
-    const double h = dt / w.def.substeps;
-    w.inv_h = w.def.substeps / dt;
-    if (w.def.enable_sleep && !w.bodies.any_awake()) {
+    w.joints.inv_h = w.def.substeps / dt;
+    const StepContext step{w.def, dt, dt / w.def.substeps, w.def.enable_sleep, w.loads, w.tasks};
+    if (step.sleeping && !w.bodies.any_awake()) {
         // Every body asleep: every contact is kept as it is (a new one, of a static body moved
         // onto sleeping ones, too) and nothing is solved; the step does only this.
         w.contacts.keep_all();
-    } else if (w.def.enable_sleep) {
-        // The islands need this step's touching contacts, and the solver bodies the islands.
-        w.contacts.update(w.bodies, w.shapes, true, w.def.speculative_distance,
-                          w.def.manifold_reuse_distance, w.tasks);
-        w.sleep.wake_islands(w.bodies, w.contacts, w.joints);
-        w.solver.prepare_bodies(w.bodies, w.loads, w.def, h, w.tasks);
-        w.solver.prepare_joints(w.joints, w.bodies);
-        w.solver.solve(w.contacts, w.joints, w.def, dt, w.tasks);
-        if (guarded && w.solver.diverged() != null_index)
-            w.refuse_diverged(w.solver.diverged());
-        w.solver.finalize(w.bodies, w.shapes, w.contacts, w.joints, w.def, w.tasks);
-        w.break_joints();
-        w.sleep.update_sleep(w.bodies, w.def, dt);
     } else {
-        w.solver.prepare_bodies(w.bodies, w.loads, w.def, h, w.tasks);
-        w.solver.prepare_joints(w.joints, w.bodies);
-        w.contacts.update(w.bodies, w.shapes, false, w.def.speculative_distance,
-                          w.def.manifold_reuse_distance, w.tasks);
-        w.solver.solve(w.contacts, w.joints, w.def, dt, w.tasks);
-        if (guarded && w.solver.diverged() != null_index)
-            w.refuse_diverged(w.solver.diverged());
-        w.solver.finalize(w.bodies, w.shapes, w.contacts, w.joints, w.def, w.tasks);
-        w.break_joints();
+        w.solve(step, guarded);
     }
     // DD28: the sensors see the poses this step made.
     if (!w.sensors.empty())
@@ -749,9 +456,7 @@ void World::set_transform(BodyId id, Vec2d origin, double angle) {
     b.angle = angle;
     b.xf = {origin, Rot::from_angle(angle)};
     b.center = transform_point(b.xf, b.local_center);
-    for (std::uint32_t s = b.first_shape; s != null_index; s = impl_->shapes.shapes[s].next)
-        impl_->shapes.follow_body(impl_->shapes.shapes[s], b);
-    impl_->shapes.apply_moves();
+    impl_->shapes.move_with(b);
     impl_->bodies.wake(id.index);
     if (impl_->def.enable_sleep && b.type == BodyType::static_body)
         impl_->contacts.wake_touching(id.index, impl_->bodies);
@@ -873,51 +578,20 @@ void World::set_awake(BodyId id, bool awake) {
     }
     if (!impl_->def.enable_sleep || b.type == BodyType::static_body)
         return; // with sleeping off every body stays awake
-    impl_->bodies.sleep_states[id.index].awake = false;
-    impl_->bodies.sleep_states[id.index].sleep_time = 0.0;
-    b.v = {};
-    b.w = 0.0;
-    b.force_once = {};
-    b.torque_once = 0.0;
+    impl_->bodies.put_to_sleep(id.index);
 }
 
 double World::kinetic_energy() const {
-    double e = 0.0;
     impl_->bodies.settle();
-    for (const Body& b : impl_->bodies.bodies) {
-        if (!b.alive || b.type != BodyType::dynamic)
-            continue;
-        const double inertia = b.inv_inertia > 0.0 ? b.inertia : 0.0;
-        e += model::dd15::kinetic_energy(
-                 u::from_value<u::Mass>(b.mass), bridge::typed<u::Velocity>(b.v),
-                 u::from_value<u::MomentOfInertia>(inertia), u::from_value<u::AngularVelocity>(b.w))
-                 .value();
-    }
-    return e;
+    return impl_->bodies.kinetic_energy();
 }
 double World::potential_energy() const {
-    double e = 0.0;
     impl_->bodies.settle();
-    for (const Body& b : impl_->bodies.bodies) {
-        if (!b.alive || b.type != BodyType::dynamic)
-            continue;
-        e += model::dd16::potential_energy(
-                 u::from_value<u::Mass>(b.mass),
-                 bridge::typed<u::Acceleration>(b.gravity_scale * impl_->def.gravity),
-                 bridge::typed<u::Length>(b.center))
-                 .value();
-    }
-    return e;
+    return impl_->bodies.potential_energy(impl_->def.gravity);
 }
 Vec2d World::linear_momentum() const {
-    std::vector<model::gd1::MassVelocity> mv;
     impl_->bodies.settle();
-    for (const Body& b : impl_->bodies.bodies) {
-        if (!b.alive || b.type != BodyType::dynamic)
-            continue;
-        mv.push_back({u::from_value<u::Mass>(b.mass), bridge::typed<u::Velocity>(b.v)});
-    }
-    return bridge::plain(model::gd1::total_momentum(mv));
+    return impl_->bodies.linear_momentum();
 }
 
 std::span<const ContactInfo> World::contacts() const {
@@ -952,223 +626,32 @@ std::vector<ShapeId> World::query_aabb(const Aabb& box) const {
         throw ValidationError("box.max_y", box.max_y,
                               "must be >= box.min_y (" + detail::format_value(box.min_y) + " m)",
                               "query");
-    std::vector<ShapeId> out;
-    impl_->shapes.broad_phase.query(box, [&](int proxy) {
-        const std::uint32_t s = impl_->shapes.broad_phase.user_data(proxy);
-        const Shape& sh = impl_->shapes.shapes[s];
-        if (overlaps(impl_->shapes.box(sh, impl_->bodies.bodies[sh.body]), box))
-            out.push_back(impl_->shapes.id(s));
-        return true;
-    });
-    std::sort(out.begin(), out.end(), [](ShapeId a, ShapeId b) { return a.index < b.index; });
-    return out;
+    return impl_->shapes.overlapping(box, impl_->bodies);
 }
 
 std::vector<ShapeId> World::query_point(Vec2d p) const {
     require_finite("point", p); // a NaN point is in no shape: refused, not answered empty
-    std::vector<ShapeId> out;
-    const Aabb box{p.x, p.y, p.x, p.y};
-    impl_->shapes.broad_phase.query(box, [&](int proxy) {
-        const std::uint32_t s = impl_->shapes.broad_phase.user_data(proxy);
-        const Shape& sh = impl_->shapes.shapes[s];
-        if (test_point(impl_->shapes.defs[s].geometry, impl_->bodies.bodies[sh.body].xf, p))
-            out.push_back(impl_->shapes.id(s));
-        return true;
-    });
-    std::sort(out.begin(), out.end(), [](ShapeId a, ShapeId b) { return a.index < b.index; });
-    return out;
+    return impl_->shapes.containing(p, impl_->bodies);
 }
 
 std::optional<RayCastHit> World::ray_cast(Vec2d origin, Vec2d translation) const {
     // Within the supported range, |translation|^2 and the hit fraction cannot overflow.
     require_within("origin", origin, supported::input_max, "m");
     require_within("translation", translation, supported::input_max, "m");
-    const Vec2d end = origin + translation;
-    const Aabb box{std::min(origin.x, end.x), std::min(origin.y, end.y), std::max(origin.x, end.x),
-                   std::max(origin.y, end.y)};
-    std::optional<RayCastHit> best;
-    impl_->shapes.broad_phase.query(inflated(box, 1e-9), [&](int proxy) {
-        const std::uint32_t s = impl_->shapes.broad_phase.user_data(proxy);
-        if (impl_->shapes.defs[s].is_sensor)
-            return true; // a sensor is not there for rays (DD28)
-        const Shape& sh = impl_->shapes.shapes[s];
-        const auto hit = tamias2d::ray_cast(impl_->shapes.defs[s].geometry,
-                                            impl_->bodies.bodies[sh.body].xf, origin, translation);
-        if (hit && (!best || hit->fraction < best->fraction ||
-                    (hit->fraction == best->fraction && s < best->shape.index))) {
-            best = RayCastHit{impl_->shapes.id(s), impl_->bodies.id(sh.body), hit->point,
-                              hit->normal, hit->fraction};
-        }
-        return true;
-    });
-    return best;
+    return impl_->shapes.ray_cast(origin, translation, impl_->bodies);
 }
-
-namespace {
-struct Hasher {
-    std::uint64_t h = 1469598103934665603ull;
-    void bytes(const void* p, std::size_t n) {
-        const auto* c = static_cast<const unsigned char*>(p);
-        for (std::size_t i = 0; i < n; ++i) {
-            h ^= c[i];
-            h *= 1099511628211ull;
-        }
-    }
-    void operator()(double v) { bytes(&v, sizeof v); }
-    void operator()(Vec2d v) {
-        (*this)(v.x);
-        (*this)(v.y);
-    }
-    void operator()(std::uint64_t v) { bytes(&v, sizeof v); }
-};
-} // namespace
 
 std::uint64_t World::state_hash() const {
     const Impl& w = *impl_;
     w.bodies.settle();
-    Hasher hs;
+    StateHasher hs;
     hs(w.time);
     hs(w.time_error);
     hs(w.def.gravity);
-    hs(std::uint64_t(w.bodies.size()));
-    for (std::uint32_t i = 0; i < w.bodies.size(); ++i) {
-        const Body& b = w.bodies.bodies[i];
-        const BodySettings& set = w.bodies.settings[i];
-        hs(std::uint64_t(w.bodies.generation[i]) << 8 | std::uint64_t(b.alive) << 4 |
-           std::uint64_t(b.type));
-        if (!b.alive)
-            continue;
-        hs(b.xf.p);
-        hs(b.xf.q.c);
-        hs(b.xf.q.s);
-        hs(b.angle);
-        hs(b.center);
-        hs(b.local_center);
-        hs(b.v);
-        hs(b.w);
-        hs(b.force);
-        hs(b.torque);
-        hs(b.force_once);
-        hs(b.torque_once);
-        hs(b.mass);
-        hs(b.inertia);
-        hs(b.inv_mass);
-        hs(b.inv_inertia);
-        hs(b.gravity_scale);
-        hs(std::uint64_t(set.fixed_rotation) << 1 | std::uint64_t(bool(set.load)));
-        if (set.bullet) // (other bodies hash as they always did)
-            hs(std::uint64_t(1) << 2);
-        if (b.damped) { // (so that undamped worlds hash as they always did)
-            hs(set.linear_damping);
-            hs(set.angular_damping);
-        }
-        if (w.def.enable_sleep) { // (so that worlds without sleeping hash as they always did)
-            const SleepState& st = w.bodies.sleep_states[i];
-            hs(st.sleep_time);
-            hs(std::uint64_t(st.awake) << 1 | std::uint64_t(st.enabled));
-        }
-        hs.bytes(set.name.data(), set.name.size());
-        for (std::uint32_t s = b.first_shape; s != null_index; s = w.shapes.shapes[s].next)
-            hs(std::uint64_t(s));
-    }
-    hs(std::uint64_t(w.shapes.shapes.size()));
-    for (std::uint32_t i = 0; i < w.shapes.shapes.size(); ++i) {
-        const Shape& s = w.shapes.shapes[i];
-        hs(std::uint64_t(s.generation) << 1 | std::uint64_t(s.alive()));
-        if (!s.alive())
-            continue;
-        const ShapeDef& d = w.shapes.defs[i];
-        hs(std::uint64_t(s.body));
-        hs(std::uint64_t(d.geometry.type));
-        hs(d.geometry.circle.center);
-        hs(d.geometry.circle.radius);
-        hs(std::uint64_t(d.geometry.polygon.count));
-        for (int k = 0; k < d.geometry.polygon.count; ++k)
-            hs(d.geometry.polygon.vertices[std::size_t(k)]);
-        if (d.geometry.type == ShapeType::capsule) {
-            hs(d.geometry.capsule.center1);
-            hs(d.geometry.capsule.center2);
-            hs(d.geometry.capsule.radius);
-        } else if (d.geometry.type == ShapeType::segment) {
-            hs(d.geometry.segment.point1);
-            hs(d.geometry.segment.point2);
-        } else if (d.geometry.type == ShapeType::chain_segment) {
-            hs(d.geometry.chain_segment.ghost1);
-            hs(d.geometry.chain_segment.point1);
-            hs(d.geometry.chain_segment.point2);
-            hs(d.geometry.chain_segment.ghost2);
-        }
-        hs(d.material.density);
-        hs(d.material.restitution);
-        hs(d.material.friction);
-        if (!(d.filter == Filter{}) || d.is_sensor) { // (default shapes hash as they always did)
-            hs(std::uint64_t(d.filter.category_bits) << 32 | d.filter.mask_bits);
-            hs(std::uint64_t(std::uint32_t(d.filter.group_index)) << 1 |
-               std::uint64_t(d.is_sensor));
-        }
-    }
-    if (w.joints.live() > 0) { // (so that worlds without joints hash as they always did)
-        for (std::uint32_t i = 0; i < w.joints.joints.size(); ++i) {
-            const Joint& j = w.joints.joints[i];
-            hs(std::uint64_t(j.generation) << 1 | std::uint64_t(j.alive));
-            if (!j.alive)
-                continue;
-            hs(std::uint64_t(j.type));
-            hs(std::uint64_t(j.body_a) << 32 | j.body_b);
-            hs(j.local_anchor_a);
-            hs(j.local_anchor_b);
-            hs(j.linear_impulse);
-            hs(j.length);
-            hs(j.hertz);
-            hs(j.damping_ratio);
-            hs(j.axial_impulse);
-            hs(j.target);
-            hs(j.reference_angle);
-            hs(std::uint64_t(j.enable_limit) << 1 | std::uint64_t(j.enable_motor));
-            hs(j.lower_limit);
-            hs(j.upper_limit);
-            hs(j.motor_speed);
-            hs(j.max_motor);
-            hs(j.motor_impulse);
-            hs(j.lower_impulse);
-            hs(j.upper_impulse);
-            hs(j.max_force);
-            hs(j.local_axis);
-            hs(std::uint64_t(j.enable_spring));
-            hs(j.spring_impulse);
-            hs(j.angular_impulse);
-            hs(j.perp_impulse);
-            hs(j.angular_hertz);
-            hs(j.angular_damping_ratio);
-            hs(j.max_torque);
-            hs(j.correction_factor);
-            hs(j.break_force);
-            hs(std::uint64_t(j.collide_connected));
-        }
-    }
-    hs(std::uint64_t(w.contacts.size()));
-    for (std::size_t i = 0; i < w.contacts.size(); ++i) {
-        const Contact& c = w.contacts.contacts[i];
-        hs(std::uint64_t(c.shape_a) << 32 | c.shape_b);
-        hs(std::uint64_t(c.manifold.count));
-        for (int j = 0; j < c.manifold.count; ++j) {
-            hs(c.manifold.points[j].point);
-            hs(c.manifold.points[j].separation);
-            hs(w.contacts.warm_impulses[i].normal[j]);
-            hs(w.contacts.warm_impulses[i].tangent[j]);
-        }
-        if (w.def.manifold_reuse_distance > 0.0 && c.manifold.count > 0) {
-            // What a reused manifold is computed from (manifold_reuse.hpp).
-            const ManifoldBasis& b = w.contacts.bases[i];
-            for (const double x : {b.q_a.c, b.q_a.s, b.q_b.c, b.q_b.s})
-                hs(x);
-            hs(b.b_in_a);
-            for (int j = 0; j < c.manifold.count; ++j) {
-                hs(b.separation[j]);
-                hs(b.on_a[j]);
-            }
-        }
-    }
+    w.bodies.hash(hs, w.shapes, w.def.enable_sleep);
+    w.shapes.hash(hs);
+    w.joints.hash(hs);
+    w.contacts.hash(hs, w.def.manifold_reuse_distance > 0.0);
     return hs.h;
 }
 

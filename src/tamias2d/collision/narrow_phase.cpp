@@ -342,6 +342,61 @@ struct Clipped {
     return c;
 }
 
+/// polygons_into's hinted face (the last call's separating face, of A or of B): its separation
+/// as max_separation computes it (same expressions, same order), B's vertices in lb.
+[[gnu::always_inline]] inline double hinted_separation(const Collider& a, const Collider& b,
+                                                       const Local& lb, Rot q,
+                                                       const SeparationHint& hint, int na, int nb) {
+    const int i = hint.face;
+    double s = std::numeric_limits<double>::infinity();
+    double offset = 0.0;
+    if (!hint.on_b && i < na) {
+        const Vec2d n = a.normal(i);
+        offset = dot(n, a.vertex(i) - a.center);
+        for (int j = 0; j < nb; ++j)
+            s = std::min(s, dot(n, lb.v(j)));
+    } else if (hint.on_b && i < nb) {
+        const Vec2d n = rotate(q, b.normal(i));
+        offset = dot(n, lb.v(i));
+        for (int j = 0; j < na; ++j)
+            s = std::min(s, dot(n, a.vertex(j) - a.center));
+    }
+    return s - offset;
+}
+
+/// polygons_into's frame, after B's vertices: A's vertices from its centroid and its normals,
+/// B's normals turned by q (cosine c, sine sn in both lanes), two at a time.
+[[gnu::always_inline]] inline void place_rest(const Collider& a, const Collider& b, Duo c, Duo sn,
+                                              int na, int nb, Local& la, Local& lb) {
+    const Duo cx = in_both_lanes(a.center.x), cy = in_both_lanes(a.center.y);
+    for (int k = 0; k < (na + 1) / 2; ++k) {
+        const VertexPair& s = a.pairs[k];
+        store2(&la.vx[2 * k], load2(s.vx) - cx);
+        store2(&la.vy[2 * k], load2(s.vy) - cy);
+        store2(&la.nx[2 * k], load2(s.nx));
+        store2(&la.ny[2 * k], load2(s.ny));
+    }
+    for (int k = 0; k < (nb + 1) / 2; ++k) {
+        const Duo nx = load2(b.pairs[k].nx), ny = load2(b.pairs[k].ny);
+        store2(&lb.nx[2 * k], c * nx - sn * ny);
+        store2(&lb.ny[2 * k], sn * nx + c * ny);
+    }
+}
+
+/// The incident face: of `inc`'s faces, the first most anti-parallel to the reference normal n.
+[[gnu::always_inline]] inline int incident_edge(Vec2d n, const Local& inc, int inc_count) {
+    int i21 = 0;
+    double min_dot = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < inc_count; ++i) {
+        const double d = dot(n, inc.n(i));
+        if (d < min_dot) {
+            min_dot = d;
+            i21 = i;
+        }
+    }
+    return i21;
+}
+
 /// \srs{T5} polygons by the separating axis test; \srs{A5} vertex-edge gives one point,
 /// \srs{LC1} edge-edge two. NA and NB are the vertex counts when known at compile time (0: read
 /// from the colliders): boxes against boxes get straight-line code.
@@ -374,40 +429,11 @@ void polygons_into(const Collider& a, const Collider& b, const CollideInput& in,
         // The hinted face's separation, computed exactly as max_separation computes it below
         // (same expressions, same order): if it still reaches the margin, so would the full
         // test, and the answer is the same empty manifold.
-        const int i = hint->face;
-        double s = std::numeric_limits<double>::infinity();
-        double offset = 0.0;
-        if (!hint->on_b && i < na) {
-            const Vec2d n = a.normal(i);
-            offset = dot(n, a.vertex(i) - a.center);
-            for (int j = 0; j < nb; ++j)
-                s = std::min(s, dot(n, lb.v(j)));
-        } else if (hint->on_b && i < nb) {
-            const Vec2d n = rotate(q, b.normal(i));
-            offset = dot(n, lb.v(i));
-            for (int j = 0; j < na; ++j)
-                s = std::min(s, dot(n, a.vertex(j) - a.center));
-        }
-        s -= offset;
-        if (!(s < in.margin))
+        if (!(hinted_separation(a, b, lb, q, *hint, na, nb) < in.margin))
             return set_empty(m);
         hint->face = -1;
     }
-    {
-        const Duo cx = in_both_lanes(a.center.x), cy = in_both_lanes(a.center.y);
-        for (int k = 0; k < (na + 1) / 2; ++k) {
-            const VertexPair& s = a.pairs[k];
-            store2(&la.vx[2 * k], load2(s.vx) - cx);
-            store2(&la.vy[2 * k], load2(s.vy) - cy);
-            store2(&la.nx[2 * k], load2(s.nx));
-            store2(&la.ny[2 * k], load2(s.ny));
-        }
-        for (int k = 0; k < (nb + 1) / 2; ++k) {
-            const Duo nx = load2(b.pairs[k].nx), ny = load2(b.pairs[k].ny);
-            store2(&lb.nx[2 * k], c * nx - sn * ny);
-            store2(&lb.ny[2 * k], sn * nx + c * ny);
-        }
-    }
+    place_rest(a, b, c, sn, na, nb, la, lb);
 
     int edge_a = 0;
     const double sep_a = max_separation_n<NA, NB>(la, lb, in.margin, edge_a);
@@ -442,15 +468,7 @@ void polygons_into(const Collider& a, const Collider& b, const CollideInput& in,
     const Vec2d n = ref.n(i11);
 
     // Incident edge: the face of the other polygon most anti-parallel to the reference normal.
-    int i21 = 0;
-    double min_dot = std::numeric_limits<double>::infinity();
-    for (int i = 0; i < inc_count; ++i) {
-        const double d = dot(n, inc.n(i));
-        if (d < min_dot) {
-            min_dot = d;
-            i21 = i;
-        }
-    }
+    const int i21 = incident_edge(n, inc, inc_count);
     const int i22 = i21 + 1 == inc_count ? 0 : i21 + 1;
     const Vec2d v11 = ref.v(i11);
     const Vec2d v12 = ref.v(i12);

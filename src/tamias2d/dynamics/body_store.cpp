@@ -3,9 +3,15 @@
 #include <algorithm>
 #include <string>
 
+#include "tamias2d/dynamics/model_bridge.hpp"
 #include "tamias2d/dynamics/shape_store.hpp"
+#include "tamias2d/dynamics/state_hasher.hpp"
 #include "tamias2d/errors.hpp"
 #include "tamias2d/geometry/mass_properties.hpp"
+#include "tamias2d/model/dd15_kinetic_energy.hpp"
+#include "tamias2d/model/dd16_potential_energy.hpp"
+#include "tamias2d/model/gd1_conservation_of_momentum.hpp"
+#include "tamias2d/validation.hpp"
 
 namespace tamias2d {
 
@@ -143,9 +149,106 @@ void BodyStore::update_mass(std::uint32_t i, ShapeStore& shapes) {
     shapes.sync_poses(b);
 }
 
+void BodyStore::evaluate_loads(double time, std::vector<Load>& loads) const {
+    loads.clear();
+    if (loaded_bodies > 0)
+        loads.assign(size(), Load{});
+    for (std::uint32_t i = 0; i < loads.size(); ++i) {
+        const Body& b = bodies[i];
+        const LoadFunction& load = settings[i].load;
+        if (!b.alive || !load || b.type != BodyType::dynamic)
+            continue;
+        const Load l = load(time);
+        require_within("load(t).force", l.force, supported::input_max, "N");
+        require_within("load(t).torque", l.torque, supported::input_max, "N m");
+        loads[i] = l;
+    }
+}
+
+void BodyStore::check_state() const {
+    constexpr double m = supported::state_max;
+    for (std::uint32_t i = 0; i < size(); ++i) {
+        const Body& b = bodies[i];
+        if (!b.alive || b.type == BodyType::static_body)
+            continue;
+        if (std::abs(b.center.x) <= m && std::abs(b.center.y) <= m && std::abs(b.v.x) <= m &&
+            std::abs(b.v.y) <= m && std::abs(b.w) <= m && std::abs(b.angle) <= m)
+            continue;
+        const std::string at = label(i) + ".";
+        require_within(at + "position", b.center, m, "m");
+        require_within(at + "velocity", b.v, m, "m s^-1");
+        require_within(at + "angular_velocity", b.w, m, "rad s^-1");
+        require_within(at + "angle", b.angle, m, "rad");
+    }
+}
+
+double BodyStore::kinetic_energy() const {
+    namespace u = tamias2d::units;
+    double e = 0.0;
+    for (const Body& b : bodies) {
+        if (!b.alive || b.type != BodyType::dynamic)
+            continue;
+        const double inertia = b.inv_inertia > 0.0 ? b.inertia : 0.0;
+        e += model::dd15::kinetic_energy(
+                 u::from_value<u::Mass>(b.mass), bridge::typed<u::Velocity>(b.v),
+                 u::from_value<u::MomentOfInertia>(inertia), u::from_value<u::AngularVelocity>(b.w))
+                 .value();
+    }
+    return e;
+}
+
+double BodyStore::potential_energy(Vec2d g) const {
+    namespace u = tamias2d::units;
+    double e = 0.0;
+    for (const Body& b : bodies) {
+        if (!b.alive || b.type != BodyType::dynamic)
+            continue;
+        e += model::dd16::potential_energy(u::from_value<u::Mass>(b.mass),
+                                           bridge::typed<u::Acceleration>(b.gravity_scale * g),
+                                           bridge::typed<u::Length>(b.center))
+                 .value();
+    }
+    return e;
+}
+
+Vec2d BodyStore::linear_momentum() const {
+    namespace u = tamias2d::units;
+    std::vector<model::gd1::MassVelocity> mv;
+    for (const Body& b : bodies) {
+        if (!b.alive || b.type != BodyType::dynamic)
+            continue;
+        mv.push_back({u::from_value<u::Mass>(b.mass), bridge::typed<u::Velocity>(b.v)});
+    }
+    return bridge::plain(model::gd1::total_momentum(mv));
+}
+
+std::vector<BodyId> BodyStore::live_ids() const {
+    std::vector<BodyId> out;
+    for (std::uint32_t i = 0; i < size(); ++i) {
+        if (bodies[i].alive)
+            out.push_back(id(i));
+    }
+    return out;
+}
+
+std::string BodyStore::label(std::uint32_t i) const {
+    const std::string& name = settings[i].name;
+    return "body[" + std::to_string(i) + (name.empty() ? "" : " '" + name + "'") + "]";
+}
+
 bool BodyStore::any_awake() const {
     return std::any_of(sleep_states.begin(), sleep_states.end(),
                        [](const SleepState& st) { return st.awake; });
+}
+
+void BodyStore::put_to_sleep(std::uint32_t i) {
+    sleep_states[i].awake = false;
+    sleep_states[i].sleep_time = 0.0;
+    Body& b = bodies[i];
+    b.v = {};
+    b.w = 0.0;
+    b.force_once = {};
+    b.torque_once = 0.0;
 }
 
 void BodyStore::wake(std::uint32_t i) {
@@ -154,6 +257,49 @@ void BodyStore::wake(std::uint32_t i) {
         return;
     st.awake = true;
     st.sleep_time = 0.0;
+}
+
+void BodyStore::hash(StateHasher& hs, const ShapeStore& shapes, bool sleeping) const {
+    hs(std::uint64_t(size()));
+    for (std::uint32_t i = 0; i < size(); ++i) {
+        const Body& b = bodies[i];
+        const BodySettings& set = settings[i];
+        hs(std::uint64_t(generation[i]) << 8 | std::uint64_t(b.alive) << 4 | std::uint64_t(b.type));
+        if (!b.alive)
+            continue;
+        hs(b.xf.p);
+        hs(b.xf.q.c);
+        hs(b.xf.q.s);
+        hs(b.angle);
+        hs(b.center);
+        hs(b.local_center);
+        hs(b.v);
+        hs(b.w);
+        hs(b.force);
+        hs(b.torque);
+        hs(b.force_once);
+        hs(b.torque_once);
+        hs(b.mass);
+        hs(b.inertia);
+        hs(b.inv_mass);
+        hs(b.inv_inertia);
+        hs(b.gravity_scale);
+        hs(std::uint64_t(set.fixed_rotation) << 1 | std::uint64_t(bool(set.load)));
+        if (set.bullet) // (other bodies hash as they always did)
+            hs(std::uint64_t(1) << 2);
+        if (b.damped) { // (so that undamped worlds hash as they always did)
+            hs(set.linear_damping);
+            hs(set.angular_damping);
+        }
+        if (sleeping) { // (so that worlds without sleeping hash as they always did)
+            const SleepState& st = sleep_states[i];
+            hs(st.sleep_time);
+            hs(std::uint64_t(st.awake) << 1 | std::uint64_t(st.enabled));
+        }
+        hs.bytes(set.name.data(), set.name.size());
+        for (std::uint32_t s = b.first_shape; s != null_index; s = shapes.shapes[s].next)
+            hs(std::uint64_t(s));
+    }
 }
 
 } // namespace tamias2d

@@ -3,6 +3,8 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
+#include <string>
 #include <vector>
 
 #include "tamias2d/body_def.hpp"
@@ -13,6 +15,7 @@
 
 namespace tamias2d {
 
+struct StateHasher;
 class ShapeStore;
 
 struct BodyStore {
@@ -47,6 +50,10 @@ struct BodyStore {
     BodyId id(std::uint32_t i) const { return {i, generation[i]}; }
     std::uint32_t size() const { return std::uint32_t(bodies.size()); }
     std::size_t count() const { return bodies.size() - free_slots.size(); }
+    /// The handles of the live bodies, in index order.
+    std::vector<BodyId> live_ids() const;
+    /// How messages name body i: "body[3]", or "body[3 'slider']" when it has a name.
+    std::string label(std::uint32_t i) const;
 
     /// A slot for a new body made from a validated definition; its mass is not set yet
     /// (update_mass). With sleeping off every body is awake, whatever `def` asks.
@@ -71,6 +78,31 @@ struct BodyStore {
     bool any_awake() const;
     /// Wakes the body (and so, at the next step, its island); its time at rest starts again.
     void wake(std::uint32_t i);
+    /// Puts body i (movable, with sleeping on) to sleep: its velocities and one-step loads zero.
+    void put_to_sleep(std::uint32_t i);
+
+    /// The time-varying loads at time `time` (the step's start) into `loads`, per body: a
+    /// user function returning NaN is rejected before anything has changed. Most worlds have
+    /// none: then no setting is read and `loads` stays empty.
+    void evaluate_loads(double time, std::vector<Load>& loads) const;
+    /// \srs{DCX_range} A step starts only from a state within supported::state_max, the
+    /// headroom a simulation of in-range inputs may grow into; from there no product of one
+    /// step overflows (docs/design.md, "Supported ranges"). One pass over the bodies, before
+    /// anything changes.
+    void check_state() const;
+
+    /// DD15's kinetic energy of the dynamic bodies (J).
+    double kinetic_energy() const;
+    /// DD16's potential energy of the dynamic bodies in gravity g, each scaled by its
+    /// gravity scale (J).
+    double potential_energy(Vec2d g) const;
+    /// GD1's total momentum of the dynamic bodies (kg m s^-1).
+    Vec2d linear_momentum() const;
+
+    /// Feeds the bodies' state to the state hash (World::state_hash): each slot's generation,
+    /// life and type, a live body's pose, velocities, loads, masses and settings, its sleep
+    /// state with sleeping on, its name and its shapes.
+    void hash(StateHasher& hs, const ShapeStore& shapes, bool sleeping) const;
 };
 
 } // namespace tamias2d

@@ -123,8 +123,14 @@ void ConstraintGraph::colour(std::span<const GraphEdge> edges, std::size_t body_
     coloured_regions_ = R;
     coloured_bodies_ = body_count;
     const std::uint32_t S = streams_ = R > 1 ? R + 1 : 1;
-    const auto n = std::uint32_t(edges.size());
     sequence(edges, R, body_count);
+    level_sort(edges, body_count, S > 1);
+    place_packs(body_count, S);
+}
+
+void ConstraintGraph::level_sort(std::span<const GraphEdge> edges, std::size_t body_count,
+                                 bool streamed) {
+    const auto n = std::uint32_t(edges.size());
     // Constraints of one level share no body, and constraints that share one keep their order
     // in the sequence, so solving level by level is the sequential pass in that order. Each
     // stream's levels come after the streams' before it: a stream's constraints are ordered by
@@ -132,7 +138,6 @@ void ConstraintGraph::colour(std::span<const GraphEdge> edges, std::size_t body_
     body_mark_.assign(body_count, 0);
     level_of_.resize(n);
     std::uint32_t levels = 0, base = 0, stream = 0;
-    const bool streamed = S > 1;
     for (std::uint32_t k = 0; k < n; ++k) {
         const std::uint32_t i = streamed ? sequence_[k] : k;
         const GraphEdge& c = edges[i];
@@ -167,6 +172,10 @@ void ConstraintGraph::colour(std::span<const GraphEdge> edges, std::size_t body_
         sorted_[level_fill_[level_of_[i]]++] = {i, edges[i].body_a, edges[i].body_b,
                                                 streamed ? stream_of_[i] : 0};
     }
+}
+
+void ConstraintGraph::place_packs(std::size_t body_count, std::uint32_t S) {
+    const bool streamed = S > 1;
     // The packs, in that order. Placed level by level, a constraint's predecessors on its
     // bodies are the bodies' last placed constraints; it joins the open pack unless one of them
     // is in it (the only way it could also share a moving body with a lane there), or unless

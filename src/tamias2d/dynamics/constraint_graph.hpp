@@ -138,6 +138,14 @@ class ConstraintGraph {
     /// The pass's order (sequence_) from stream_of_: stream by stream, creation order within
     /// (the last stream by colour first); streams_ already set.
     void sequence(std::span<const GraphEdge> edges, std::uint32_t R, std::size_t body_count);
+    /// Each manifold's level (level_of_: no two of one level share a moving body, and those
+    /// that share one keep their order in the sequence) and the manifolds sorted by level and
+    /// path group (sorted_); `streamed`: in sequence_'s order, each stream's levels after the
+    /// streams' before it.
+    void level_sort(std::span<const GraphEdge> edges, std::size_t body_count, bool streamed);
+    /// The packs from sorted_ (packs_, pack_stream_, stream_begin_, the waits and awaited_)
+    /// for S streams.
+    void place_packs(std::size_t body_count, std::uint32_t S);
     /// Orders `between` (manifolds in creation order) by their greedy colours: each in turn
     /// takes the lowest of 64 colours that no earlier one on its moving bodies took (with all
     /// 64 taken: after them all), then creation order within a colour.

@@ -8,6 +8,8 @@
 #include "tamias2d/dynamics/body_store.hpp"
 #include "tamias2d/dynamics/joint_store.hpp"
 #include "tamias2d/dynamics/shape_store.hpp"
+#include "tamias2d/dynamics/state_hasher.hpp"
+#include "tamias2d/dynamics/step_context.hpp"
 #include "tamias2d/math/prefetch.hpp"
 #include "tamias2d/model/dd27_collision_filter.hpp"
 #include "tamias2d/parallel/step_tasks.hpp"
@@ -276,9 +278,11 @@ inline void prefetch_shapes(const Contact& c, const LargeArray<Shape>& shape) {
 
 } // namespace
 
-void ContactManager::update(BodyStore& bodies, const ShapeStore& shapes, bool sleeping,
-                            double speculative_distance, double reuse_distance,
-                            const StepTasks& tasks) {
+void ContactManager::update(BodyStore& bodies, const ShapeStore& shapes, const StepContext& step) {
+    const bool sleeping = step.sleeping;
+    const double speculative_distance = step.def.speculative_distance;
+    const double reuse_distance = step.def.manifold_reuse_distance;
+    const StepTasks& tasks = step.tasks;
     doomed_.clear();
     const auto count = std::uint32_t(contacts.size()); // the loop adds and removes none
     edge_inputs.resize(count);
@@ -421,6 +425,32 @@ const std::vector<ContactInfo>& ContactManager::report(const BodyStore& bodies,
         infos_.push_back(ci);
     }
     return infos_;
+}
+
+void ContactManager::hash(StateHasher& hs, bool reuse) const {
+    hs(std::uint64_t(size()));
+    for (std::size_t i = 0; i < size(); ++i) {
+        const Contact& c = contacts[i];
+        hs(std::uint64_t(c.shape_a) << 32 | c.shape_b);
+        hs(std::uint64_t(c.manifold.count));
+        for (int j = 0; j < c.manifold.count; ++j) {
+            hs(c.manifold.points[j].point);
+            hs(c.manifold.points[j].separation);
+            hs(warm_impulses[i].normal[j]);
+            hs(warm_impulses[i].tangent[j]);
+        }
+        if (reuse && c.manifold.count > 0) {
+            // What a reused manifold is computed from (manifold_reuse.hpp).
+            const ManifoldBasis& b = bases[i];
+            for (const double x : {b.q_a.c, b.q_a.s, b.q_b.c, b.q_b.s})
+                hs(x);
+            hs(b.b_in_a);
+            for (int j = 0; j < c.manifold.count; ++j) {
+                hs(b.separation[j]);
+                hs(b.on_a[j]);
+            }
+        }
+    }
 }
 
 } // namespace tamias2d

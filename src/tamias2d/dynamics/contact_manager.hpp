@@ -22,10 +22,12 @@
 
 namespace tamias2d {
 
+struct StateHasher;
 struct BodyStore;
 class ShapeStore;
 class JointStore;
 class StepTasks;
+struct StepContext;
 
 /// DD27's rule: whether two shapes' filters let them collide (or a sensor detect a shape).
 bool admits(const Filter& a, const Filter& b);
@@ -78,8 +80,9 @@ class ContactManager {
     /// their order are those of one thread, bit for bit. A touching contact whose bodies have
     /// moved less than `reuse_distance` (m) against each other since its manifold was computed
     /// keeps that manifold, its separations brought up to date (manifold_reuse.hpp; 0: never).
-    void update(BodyStore& bodies, const ShapeStore& shapes, bool sleeping,
-                double speculative_distance, double reuse_distance, const StepTasks& tasks);
+    /// (`reuse_distance`: StepContext::def's manifold_reuse_distance; the speculative
+    /// distance is its speculative_distance.)
+    void update(BodyStore& bodies, const ShapeStore& shapes, const StepContext& step);
     /// Every body asleep: every contact stands as it is, its edge input included.
     void keep_all() { edge_inputs.resize(contacts.size()); }
     /// Destroys every contact of shape s (its end events and wakes included).
@@ -105,6 +108,11 @@ class ContactManager {
     /// step cost a few percent of a pile's step.
     const std::vector<ContactInfo>& report(const BodyStore& bodies, const ShapeStore& shapes);
     void report_stale() { infos_stale_ = true; }
+
+    /// Feeds the contacts to the state hash (World::state_hash): each contact's shapes,
+    /// manifold points and warm-start impulses, and with manifold reuse on (`reuse`) the
+    /// poses its manifold was computed at.
+    void hash(StateHasher& hs, bool reuse) const;
 
   private:
     void destroy(std::uint32_t i, BodyStore& bodies, const ShapeStore& shapes);

@@ -33,7 +33,9 @@ void IslandSleep::wake_islands(BodyStore& store, const ContactManager& contacts,
     }
 }
 
-void IslandSleep::update_sleep(BodyStore& store, const WorldDef& def, double dt) {
+void IslandSleep::update_sleep(BodyStore& store, const StepContext& step) {
+    const WorldDef& def = step.def;
+    const double dt = step.dt;
     const std::uint32_t n = store.size();
     island_rest_.assign(n, std::numeric_limits<double>::infinity());
     for (std::uint32_t i = 0; i < n; ++i) {

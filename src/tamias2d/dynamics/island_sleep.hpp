@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "tamias2d/dynamics/sleep.hpp"
-#include "tamias2d/world_def.hpp"
+#include "tamias2d/dynamics/step_context.hpp"
 
 namespace tamias2d {
 
@@ -24,7 +24,7 @@ class IslandSleep {
     /// After the step: each awake body's time at rest, and an island whose bodies have all
     /// been at rest for time_to_sleep falls asleep (velocities zero: they no longer move). A
     /// body that may not sleep, or carries a persistent load, is never at rest.
-    void update_sleep(BodyStore& bodies, const WorldDef& def, double dt);
+    void update_sleep(BodyStore& bodies, const StepContext& step);
 
   private:
     // Per island (at its representative): whether a body of it is awake, and its bodies'

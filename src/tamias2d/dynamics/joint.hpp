@@ -14,6 +14,36 @@ namespace tamias2d {
 
 enum class JointType : std::uint8_t { revolute, distance, target, prismatic, weld, wheel, motor };
 
+/// The part of a joint that a step writes: the impulses (the warm start of the next substep and
+/// the reaction force) and the step's preparation. The World keeps a copy of this part alone to
+/// refuse a diverged step (the rest of a Joint is its definition, which only the World's
+/// setters change).
+struct JointStepState {
+    /// N s: the impulse accumulated over the last substep's iterations, the warm start of the
+    /// next; over the substep length it is the reaction force (IM6).
+    Vec2d linear_impulse{};
+    // The impulse along the axis (N s: a distance joint's rod or spring) and the axis of the
+    // last solve (for the reaction force).
+    double axial_impulse = 0.0;
+    Vec2d axis{1.0, 0.0};
+    // The motor's and the limits' impulses in the last substep (N m s, or N s along an axis).
+    double motor_impulse = 0.0, lower_impulse = 0.0, upper_impulse = 0.0;
+    double spring_impulse = 0.0;  ///< N s or N m s: a spring's along the axis or about z
+    double angular_impulse = 0.0; ///< N m s: the angle held (prismatic, weld, motor joint)
+    double perp_impulse = 0.0;    ///< N s: the line held (prismatic, wheel)
+
+    // Set by the step's preparation (joint_solver.hpp).
+    std::uint32_t solver_a = 0, solver_b = 0; ///< solver bodies (0: immovable this step)
+    Vec2d frame_a{}, frame_b{};               ///< m, the pin from each centre, body frame
+    double angle_a = 0.0, angle_b = 0.0;      ///< rad, the bodies' angles at the step's start
+    Vec2d center_offset{};                    ///< m, p_B - p_A at the step's start
+    Vec2d center_b{};                         ///< m, p_B at the step's start
+    /// The bodies' rotations now, angle at the step's start plus the turn dq made since, as the
+    /// write-back will place them: the step solver updates them after each position half, one
+    /// cosine and sine per body rather than per joint and pass.
+    Rot q_a{}, q_b{};
+};
+
 struct Joint {
     JointType type = JointType::revolute;
     bool alive = false;
@@ -44,51 +74,24 @@ struct Joint {
     double max_force = std::numeric_limits<double>::infinity();
     double max_torque = 0.0, correction_factor = 0.0;
 
-    // What a step writes, from linear_impulse to the end of the record (joint_step_part): the
-    // World keeps a copy of this part alone to refuse a diverged step (the fields above are the
-    // joint's definition, which only the World's setters change).
-    /// N s: the impulse accumulated over the last substep's iterations, the warm start of the
-    /// next; over the substep length it is the reaction force (IM6).
-    Vec2d linear_impulse{};
-    // The impulse along the axis (N s: a distance joint's rod or spring) and the axis of the
-    // last solve (for the reaction force).
-    double axial_impulse = 0.0;
-    Vec2d axis{1.0, 0.0};
-    // The motor's and the limits' impulses in the last substep (N m s, or N s along an axis).
-    double motor_impulse = 0.0, lower_impulse = 0.0, upper_impulse = 0.0;
-    double spring_impulse = 0.0;  ///< N s or N m s: a spring's along the axis or about z
-    double angular_impulse = 0.0; ///< N m s: the angle held (prismatic, weld, motor joint)
-    double perp_impulse = 0.0;    ///< N s: the line held (prismatic, wheel)
-
-    // Set by the step's preparation (joint_solver.hpp).
-    std::uint32_t solver_a = 0, solver_b = 0; ///< solver bodies (0: immovable this step)
-    Vec2d frame_a{}, frame_b{};               ///< m, the pin from each centre, body frame
-    double angle_a = 0.0, angle_b = 0.0;      ///< rad, the bodies' angles at the step's start
-    Vec2d center_offset{};                    ///< m, p_B - p_A at the step's start
-    Vec2d center_b{};                         ///< m, p_B at the step's start
-    /// The bodies' rotations now, angle at the step's start plus the turn dq made since, as the
-    /// write-back will place them: the step solver updates them after each position half, one
-    /// cosine and sine per body rather than per joint and pass.
-    Rot q_a{}, q_b{};
+    JointStepState step; ///< what a step writes (copied by value to refuse a diverged step)
 };
 
 static_assert(std::is_standard_layout_v<Joint> && std::is_trivially_copyable_v<Joint>);
-
-/// Where the part of a joint that a step writes begins (bytes); it runs to the record's end.
-inline constexpr std::size_t joint_step_part = offsetof(Joint, linear_impulse);
 
 /// The angular impulse (N m s) the joint's angular parts (motor, limits, spring, held angle)
 /// applied to body B in the last substep: over the substep's length, its reaction torque.
 inline double reaction_angular_impulse(const Joint& j) {
     switch (j.type) {
     case JointType::revolute:
-        return j.motor_impulse + j.lower_impulse - j.upper_impulse + j.spring_impulse;
+        return j.step.motor_impulse + j.step.lower_impulse - j.step.upper_impulse +
+               j.step.spring_impulse;
     case JointType::prismatic:
     case JointType::weld:
     case JointType::motor:
-        return j.angular_impulse;
+        return j.step.angular_impulse;
     case JointType::wheel:
-        return j.motor_impulse;
+        return j.step.motor_impulse;
     case JointType::distance:
     case JointType::target:
         return 0.0;
@@ -101,20 +104,22 @@ inline double reaction_angular_impulse(const Joint& j) {
 inline Vec2d reaction_impulse(const Joint& j) {
     switch (j.type) {
     case JointType::distance:
-        return (j.axial_impulse + j.lower_impulse - j.upper_impulse) * j.axis;
+        return (j.step.axial_impulse + j.step.lower_impulse - j.step.upper_impulse) * j.step.axis;
     case JointType::prismatic:
-        return j.perp_impulse * left_perp(j.axis) +
-               (j.spring_impulse + j.motor_impulse + j.lower_impulse - j.upper_impulse) * j.axis;
+        return j.step.perp_impulse * left_perp(j.step.axis) +
+               (j.step.spring_impulse + j.step.motor_impulse + j.step.lower_impulse -
+                j.step.upper_impulse) *
+                   j.step.axis;
     case JointType::wheel:
-        return j.perp_impulse * left_perp(j.axis) +
-               (j.spring_impulse + j.lower_impulse - j.upper_impulse) * j.axis;
+        return j.step.perp_impulse * left_perp(j.step.axis) +
+               (j.step.spring_impulse + j.step.lower_impulse - j.step.upper_impulse) * j.step.axis;
     case JointType::revolute:
     case JointType::target:
     case JointType::weld:
     case JointType::motor:
-        return j.linear_impulse;
+        return j.step.linear_impulse;
     }
-    return j.linear_impulse;
+    return j.step.linear_impulse;
 }
 
 } // namespace tamias2d

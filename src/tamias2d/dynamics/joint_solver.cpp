@@ -17,22 +17,22 @@ void prepare_joint(Joint& j, const BodyStore& store,
                    const std::vector<std::uint32_t>& solver_index) {
     const Body& a = store.bodies[j.body_a];
     const Body& b = store.bodies[j.body_b];
-    j.solver_a = solver_index[j.body_a];
-    j.solver_b = solver_index[j.body_b];
-    j.frame_a = j.local_anchor_a - a.local_center;
-    j.frame_b = j.local_anchor_b - b.local_center;
-    j.angle_a = a.angle;
-    j.angle_b = b.angle;
-    j.center_offset = b.center - a.center;
-    j.center_b = b.center;
+    j.step.solver_a = solver_index[j.body_a];
+    j.step.solver_b = solver_index[j.body_b];
+    j.step.frame_a = j.local_anchor_a - a.local_center;
+    j.step.frame_b = j.local_anchor_b - b.local_center;
+    j.step.angle_a = a.angle;
+    j.step.angle_b = b.angle;
+    j.step.center_offset = b.center - a.center;
+    j.step.center_b = b.center;
 }
 
 LineFrame line_frame(const Joint& j, const SolverBody& a, const SolverBody& b) {
     const Vec2d r_a = anchor_a(j);
     const Vec2d r_b = anchor_b(j);
-    const Vec2d axis = rotate(j.q_a, j.local_axis);
+    const Vec2d axis = rotate(j.step.q_a, j.local_axis);
     // The anchors' separation now: the centres have moved by dp since the step's start.
-    const Vec2d d = j.center_offset + (b.dp - a.dp) + (r_b - r_a);
+    const Vec2d d = j.step.center_offset + (b.dp - a.dp) + (r_b - r_a);
     return {r_a, r_b, axis, bridge::line(d, r_a, r_b, axis)};
 }
 
@@ -43,24 +43,24 @@ void solve_pin(Joint& j, SolverBody& a, SolverBody& b, const Softness& softness,
     double mass_scale = 1.0, impulse_scale = 0.0;
     if (use_bias) {
         // The pins' separation now: the centres have moved by dp since the step's start.
-        const Vec2d c = bridge::pin_position_error(j.center_offset + (b.dp - a.dp), r_a, r_b);
+        const Vec2d c = bridge::pin_position_error(j.step.center_offset + (b.dp - a.dp), r_a, r_b);
         rhs = bridge::biased_error(rhs, softness.bias_rate, c);
         mass_scale = softness.mass_scale;
         impulse_scale = softness.impulse_scale;
     }
     const Vec2d P =
-        bridge::pin_impulse(a, r_a, b, r_b, rhs, mass_scale, impulse_scale, j.linear_impulse);
-    j.linear_impulse += P;
+        bridge::pin_impulse(a, r_a, b, r_b, rhs, mass_scale, impulse_scale, j.step.linear_impulse);
+    j.step.linear_impulse += P;
     bridge::apply_pin_impulse(a, r_a, b, r_b, P);
 }
 
 void solve_angular_motor(Joint& j, SolverBody& a, SolverBody& b, double h) {
     const double lambda = bridge::angular_impulse(a, b, bridge::joint_speed(a, b) - j.motor_speed,
-                                                  1.0, 0.0, j.motor_impulse);
+                                                  1.0, 0.0, j.step.motor_impulse);
     const double updated = bridge::clamp_angular_impulse(
-        j.motor_impulse + lambda, bridge::torque_impulse_bound(j.max_motor, h));
-    bridge::apply_angular_impulse(a, b, updated - j.motor_impulse);
-    j.motor_impulse = updated;
+        j.step.motor_impulse + lambda, bridge::torque_impulse_bound(j.max_motor, h));
+    bridge::apply_angular_impulse(a, b, updated - j.step.motor_impulse);
+    j.step.motor_impulse = updated;
 }
 
 void solve_angular_limits(Joint& j, SolverBody& a, SolverBody& b, const Softness& softness,
@@ -71,7 +71,7 @@ void solve_angular_limits(Joint& j, SolverBody& a, SolverBody& b, const Softness
         const bridge::LimitTarget t = bridge::limit_target<units::Angle>(c, softness, h, use_bias);
         // The upper bound's impulse is taken positive against the turn, then applied negated.
         const double speed = lower ? bridge::joint_speed(a, b) : -bridge::joint_speed(a, b);
-        double& accumulated = lower ? j.lower_impulse : j.upper_impulse;
+        double& accumulated = lower ? j.step.lower_impulse : j.step.upper_impulse;
         const double lambda = bridge::angular_impulse(a, b, speed - t.velocity, t.mass_scale,
                                                       t.impulse_scale, accumulated);
         const double updated = std::max(accumulated + lambda, 0.0);
@@ -87,7 +87,7 @@ void solve_axial_limits(Joint& j, SolverBody& a, SolverBody& b, double arm_a, do
         const double c = lower ? value - j.lower_limit : j.upper_limit - value;
         const bridge::LimitTarget t = bridge::limit_target<units::Length>(c, softness, h, use_bias);
         const double v = bridge::axial_velocity_error(a, arm_a, b, arm_b, n);
-        double& accumulated = lower ? j.lower_impulse : j.upper_impulse;
+        double& accumulated = lower ? j.step.lower_impulse : j.step.upper_impulse;
         const double lambda =
             bridge::axial_impulse(a, arm_a, b, arm_b, (lower ? v : -v) - t.velocity, t.mass_scale,
                                   t.impulse_scale, accumulated);
@@ -104,8 +104,8 @@ void solve_axial_spring(Joint& j, SolverBody& a, SolverBody& b, double arm_a, do
     const double rhs = bridge::biased_error(bridge::axial_velocity_error(a, arm_a, b, arm_b, n),
                                             soft.bias_rate, value);
     const double lambda = bridge::axial_impulse(a, arm_a, b, arm_b, rhs, soft.mass_scale,
-                                                soft.impulse_scale, j.spring_impulse);
-    j.spring_impulse += lambda;
+                                                soft.impulse_scale, j.step.spring_impulse);
+    j.step.spring_impulse += lambda;
     bridge::apply_axial_impulse(a, arm_a, b, arm_b, n, lambda);
 }
 

@@ -25,15 +25,15 @@ void prepare_joint(Joint& j, const BodyStore& bodies,
 /// The anchors' offsets from their bodies' centres in the world frame, with the bodies turned
 /// as far as they have in the step (q_a, q_b: the step solver keeps them current).
 inline Vec2d anchor_a(const Joint& j) {
-    return rotate(j.q_a, j.frame_a);
+    return rotate(j.step.q_a, j.step.frame_a);
 }
 inline Vec2d anchor_b(const Joint& j) {
-    return rotate(j.q_b, j.frame_b);
+    return rotate(j.step.q_b, j.step.frame_b);
 }
 
 /// The joint angle (DD22) now: the bodies' angles at the step's start plus their turn since.
 inline double current_joint_angle(const Joint& j, const SolverBody& a, const SolverBody& b) {
-    return bridge::joint_angle(j.angle_a + a.dq, j.angle_b + b.dq, j.reference_angle);
+    return bridge::joint_angle(j.step.angle_a + a.dq, j.step.angle_b + b.dq, j.reference_angle);
 }
 
 /// A prismatic or wheel joint's line now (DD23): the anchors' offsets, the axis (fixed in

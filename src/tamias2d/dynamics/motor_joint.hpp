@@ -1,13 +1,19 @@
-// The motor joint in the soft step (internal): DD26, body B driven towards a pose relative to
-// body A with bounded force and torque (joint_solver.hpp).
+// The motor joint (internal), made from its definition and solved in the soft step: DD26, body B
+// driven towards a pose relative to body A with bounded force and torque (joint_solver.hpp).
 #pragma once
 
 #include <span>
 
+#include "tamias2d/dynamics/body.hpp"
 #include "tamias2d/dynamics/joint.hpp"
 #include "tamias2d/dynamics/solver_body.hpp"
+#include "tamias2d/joint_def.hpp"
 
 namespace tamias2d {
+
+/// The joint a validated definition makes, its anchors fixed on bodies `a` and `b` as they
+/// are now.
+Joint make_joint(const MotorJointDef& def, const Body& a, const Body& b);
 
 /// Re-applies the impulses of the previous substep (they carry the solution forward).
 void warm_start_motor(const Joint& j, std::span<SolverBody> bodies);

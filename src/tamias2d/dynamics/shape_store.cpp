@@ -1,9 +1,13 @@
 #include "tamias2d/dynamics/shape_store.hpp"
 
+#include <algorithm>
 #include <string>
 
+#include "tamias2d/dynamics/body_store.hpp"
+#include "tamias2d/dynamics/state_hasher.hpp"
 #include "tamias2d/errors.hpp"
 #include "tamias2d/geometry/shape_factory.hpp"
+#include "tamias2d/geometry/shape_queries.hpp"
 #include "tamias2d/math/prefetch.hpp"
 
 namespace tamias2d {
@@ -98,6 +102,109 @@ void ShapeStore::refit_undecided() {
     }
     undecided_.clear();
     apply_moves();
+}
+
+std::vector<ShapeId> ShapeStore::ids_of(const Body& b) const {
+    std::vector<ShapeId> out;
+    for (std::uint32_t s = b.first_shape; s != null_index; s = shapes[s].next)
+        out.push_back(id(s));
+    return out;
+}
+
+void ShapeStore::move_with(const Body& b) {
+    for (std::uint32_t s = b.first_shape; s != null_index; s = shapes[s].next)
+        follow_body(shapes[s], b);
+    apply_moves();
+}
+
+std::vector<ShapeId> ShapeStore::overlapping(const Aabb& box, const BodyStore& bodies) const {
+    std::vector<ShapeId> out;
+    broad_phase.query(box, [&](int proxy) {
+        const std::uint32_t s = broad_phase.user_data(proxy);
+        const Shape& sh = shapes[s];
+        if (overlaps(this->box(sh, bodies.bodies[sh.body]), box))
+            out.push_back(id(s));
+        return true;
+    });
+    std::sort(out.begin(), out.end(), [](ShapeId a, ShapeId b) { return a.index < b.index; });
+    return out;
+}
+
+std::vector<ShapeId> ShapeStore::containing(Vec2d p, const BodyStore& bodies) const {
+    std::vector<ShapeId> out;
+    const Aabb box{p.x, p.y, p.x, p.y};
+    broad_phase.query(box, [&](int proxy) {
+        const std::uint32_t s = broad_phase.user_data(proxy);
+        const Shape& sh = shapes[s];
+        if (test_point(defs[s].geometry, bodies.bodies[sh.body].xf, p))
+            out.push_back(id(s));
+        return true;
+    });
+    std::sort(out.begin(), out.end(), [](ShapeId a, ShapeId b) { return a.index < b.index; });
+    return out;
+}
+
+std::optional<RayCastHit> ShapeStore::ray_cast(Vec2d origin, Vec2d translation,
+                                               const BodyStore& bodies) const {
+    // The trees are walked along the ray, clipped at the nearest hit so far: a shape beyond it
+    // is not visited (a long diagonal ray no longer visits every shape in its bounding box).
+    // The clip lies a little past the hit, so that a shape hit at the same fraction (the lower
+    // index wins) is still visited whatever the rounding of the clipped ray's box tests.
+    constexpr double clip_margin = 1e-9; // of the ray's length
+    std::optional<RayCastHit> best;
+    broad_phase.ray_cast(origin, translation, [&](int proxy, double max_fraction) {
+        const std::uint32_t s = broad_phase.user_data(proxy);
+        if (!defs[s].is_sensor) { // a sensor is not there for rays (DD28)
+            const Shape& sh = shapes[s];
+            const auto hit = tamias2d::ray_cast(defs[s].geometry, bodies.bodies[sh.body].xf, origin,
+                                                translation);
+            if (hit && (!best || hit->fraction < best->fraction ||
+                        (hit->fraction == best->fraction && s < best->shape.index)))
+                best =
+                    RayCastHit{id(s), bodies.id(sh.body), hit->point, hit->normal, hit->fraction};
+        }
+        return best ? std::min(max_fraction, best->fraction + clip_margin) : max_fraction;
+    });
+    return best;
+}
+
+void ShapeStore::hash(StateHasher& hs) const {
+    hs(std::uint64_t(shapes.size()));
+    for (std::uint32_t i = 0; i < shapes.size(); ++i) {
+        const Shape& s = shapes[i];
+        hs(std::uint64_t(s.generation) << 1 | std::uint64_t(s.alive()));
+        if (!s.alive())
+            continue;
+        const ShapeDef& d = defs[i];
+        hs(std::uint64_t(s.body));
+        hs(std::uint64_t(d.geometry.type));
+        hs(d.geometry.circle.center);
+        hs(d.geometry.circle.radius);
+        hs(std::uint64_t(d.geometry.polygon.count));
+        for (int k = 0; k < d.geometry.polygon.count; ++k)
+            hs(d.geometry.polygon.vertices[std::size_t(k)]);
+        if (d.geometry.type == ShapeType::capsule) {
+            hs(d.geometry.capsule.center1);
+            hs(d.geometry.capsule.center2);
+            hs(d.geometry.capsule.radius);
+        } else if (d.geometry.type == ShapeType::segment) {
+            hs(d.geometry.segment.point1);
+            hs(d.geometry.segment.point2);
+        } else if (d.geometry.type == ShapeType::chain_segment) {
+            hs(d.geometry.chain_segment.ghost1);
+            hs(d.geometry.chain_segment.point1);
+            hs(d.geometry.chain_segment.point2);
+            hs(d.geometry.chain_segment.ghost2);
+        }
+        hs(d.material.density);
+        hs(d.material.restitution);
+        hs(d.material.friction);
+        if (!(d.filter == Filter{}) || d.is_sensor) { // (default shapes hash as they always did)
+            hs(std::uint64_t(d.filter.category_bits) << 32 | d.filter.mask_bits);
+            hs(std::uint64_t(std::uint32_t(d.filter.group_index)) << 1 |
+               std::uint64_t(d.is_sensor));
+        }
+    }
 }
 
 } // namespace tamias2d

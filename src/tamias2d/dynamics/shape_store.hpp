@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "tamias2d/collision/broad_phase.hpp"
@@ -12,8 +13,12 @@
 #include "tamias2d/handles.hpp"
 #include "tamias2d/memory/large_array.hpp"
 #include "tamias2d/shape_def.hpp"
+#include "tamias2d/world.hpp"
 
 namespace tamias2d {
+
+struct BodyStore;
+struct StateHasher;
 
 class ShapeStore {
   public:
@@ -78,6 +83,25 @@ class ShapeStore {
         broad_phase.move_proxies(proxy_moves_);
         proxy_moves_.clear();
     }
+
+    /// The handles of body b's shapes, in its list's order.
+    std::vector<ShapeId> ids_of(const Body& b) const;
+    /// After body b was placed through the API: its shapes' copies follow it and the broad
+    /// phase's proxies that left their fat boxes move.
+    void move_with(const Body& b);
+    /// The live shapes whose boxes overlap `box` (IM4), in index order.
+    std::vector<ShapeId> overlapping(const Aabb& box, const BodyStore& bodies) const;
+    /// The live shapes containing point p (T5), in index order.
+    std::vector<ShapeId> containing(Vec2d p, const BodyStore& bodies) const;
+    /// The first non-sensor shape the segment origin -> origin + translation hits (DD28: a
+    /// sensor is not there for rays); at equal fractions the lowest shape index. Found by
+    /// walking the broad phase's trees along the ray, clipped at each hit.
+    std::optional<RayCastHit> ray_cast(Vec2d origin, Vec2d translation,
+                                       const BodyStore& bodies) const;
+
+    /// Feeds the shapes to the state hash (World::state_hash): each slot's generation and
+    /// life, a live shape's body, geometry, material and (when not the default) filter.
+    void hash(StateHasher& hs) const;
 
   private:
     /// The proxies refit_fat_box moved, for one BroadPhase::move_proxies call.

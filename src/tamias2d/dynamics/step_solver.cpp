@@ -60,8 +60,11 @@ Accelerations accelerations_of(const Body& b, std::uint32_t i, const std::vector
 // Built before the narrow phase, not after it: a pass over every body between the narrow
 // phase's sweep of the contacts and the lane filling's gather of them pushed them out of the
 // cache (rain_16k).
-void StepSolver::prepare_bodies(const BodyStore& store, const std::vector<Load>& loads,
-                                const WorldDef& def, double h, const StepTasks& tasks) {
+void StepSolver::prepare_bodies(const BodyStore& store, const StepContext& step) {
+    const std::vector<Load>& loads = step.loads;
+    const WorldDef& def = step.def;
+    const double h = step.h;
+    const StepTasks& tasks = step.tasks;
     const auto& bodies = store.bodies;
     solver_index_.resize(bodies.size());
     // The contact regions (WorldDef::contact_regions) are slabs along gravity, cut across it:
@@ -247,7 +250,7 @@ namespace {
 /// Whether a joint takes part in this step: alive, and not between two immovable bodies
 /// (both asleep, or asleep and static: solver body 0 on both sides).
 bool solved(const Joint& j) {
-    return j.alive && (j.solver_a != 0 || j.solver_b != 0);
+    return j.alive && (j.step.solver_a != 0 || j.step.solver_b != 0);
 }
 
 } // namespace
@@ -267,13 +270,14 @@ void StepSolver::prepare_joints(JointStore& joints, const BodyStore& bodies) {
         prepare_joint(j, bodies, solver_index_);
         // An immovable side keeps its rotation all step (solver body 0 never turns); a moving
         // side's is its body's, turned once per body below rather than once per joint.
-        if (j.solver_a == 0)
-            j.q_a = Rot::from_angle(j.angle_a + solver_bodies_[0].dq);
-        if (j.solver_b == 0)
-            j.q_b = Rot::from_angle(j.angle_b + solver_bodies_[0].dq);
+        if (j.step.solver_a == 0)
+            j.step.q_a = Rot::from_angle(j.step.angle_a + solver_bodies_[0].dq);
+        if (j.step.solver_b == 0)
+            j.step.q_b = Rot::from_angle(j.step.angle_b + solver_bodies_[0].dq);
         if (!solved(j))
             continue;
-        for (const auto& [k, angle] : {std::pair{j.solver_a, j.angle_a}, {j.solver_b, j.angle_b}}) {
+        for (const auto& [k, angle] :
+             {std::pair{j.step.solver_a, j.step.angle_a}, {j.step.solver_b, j.step.angle_b}}) {
             if (k != 0 && !listed_[k]) {
                 listed_[k] = 1;
                 jointed_.push_back({k, angle});
@@ -291,10 +295,10 @@ void StepSolver::turn_joints(std::vector<Joint>& joints) {
     for (Joint& j : joints) {
         if (!solved(j))
             continue;
-        if (j.solver_a != 0)
-            j.q_a = joint_rotations_[j.solver_a];
-        if (j.solver_b != 0)
-            j.q_b = joint_rotations_[j.solver_b];
+        if (j.step.solver_a != 0)
+            j.step.q_a = joint_rotations_[j.step.solver_a];
+        if (j.step.solver_b != 0)
+            j.step.q_b = joint_rotations_[j.step.solver_b];
     }
 }
 
@@ -422,10 +426,12 @@ std::uint32_t StepSolver::list_edges(const ContactManager& contacts, const StepT
     return total.bounces;
 }
 
-void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const WorldDef& def,
-                       double dt, const StepTasks& tasks) {
+void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const StepContext& step) {
+    const WorldDef& def = step.def;
+    const StepTasks& tasks = step.tasks;
     const int n = def.substeps;
-    const double h = dt / n;
+    const double dt = step.dt;
+    const double h = step.h;
     std::vector<Joint>& joints = joint_store.joints;
     // IM6: the joints' soft bias, capped like the contacts' at a quarter of the substep rate.
     const Softness joint_softness = make_joint_softness(
@@ -575,7 +581,9 @@ void StepSolver::contact_pass(const StepTasks& tasks, std::uint32_t streams,
 }
 
 void StepSolver::finalize(BodyStore& store, ShapeStore& shape_store, const ContactManager& contacts,
-                          const JointStore& joints, const WorldDef& def, const StepTasks& tasks) {
+                          const JointStore& joints, const StepContext& step) {
+    const WorldDef& def = step.def;
+    const StepTasks& tasks = step.tasks;
     const auto body_count = std::uint32_t(store.bodies.size());
     shape_store.reserve_undecided(); // allocates only after shapes were added
     continuous_.clear();

@@ -15,6 +15,7 @@
 #include "tamias2d/dynamics/joint.hpp"
 #include "tamias2d/dynamics/pack_streams.hpp"
 #include "tamias2d/dynamics/solver_body.hpp"
+#include "tamias2d/dynamics/step_context.hpp"
 #include "tamias2d/dynamics/wide_contact_solver.hpp"
 #include "tamias2d/handles.hpp"
 #include "tamias2d/memory/large_array.hpp"
@@ -32,10 +33,8 @@ class StepSolver {
   public:
     /// The solver bodies and their accelerations (IM1, IM2's loads; IM5's decay factors over
     /// the substep h): one per awake non-static body, 0 standing for every immovable one.
-    /// `loads` holds the load functions' values per body, or is empty when no body has one.
     /// With more than one worker, in parallel blocks of bodies, to the serial loop's results.
-    void prepare_bodies(const BodyStore& bodies, const std::vector<Load>& loads,
-                        const WorldDef& def, double h, const StepTasks& tasks);
+    void prepare_bodies(const BodyStore& bodies, const StepContext& step);
     /// The joints' solver bodies and pins at the step's start (after prepare_bodies).
     void prepare_joints(JointStore& joints, const BodyStore& bodies);
     /// The substeps of the soft step over dt and the restitution pass; the contacts' impulses
@@ -44,8 +43,7 @@ class StepSolver {
     /// solve diverged) stops before anything is stored: diverged() names the body.
     /// With more than one worker, the bodies' integration and the contacts' preparation run in
     /// parallel blocks (each body, each pack its own), with the results of one thread.
-    void solve(ContactManager& contacts, JointStore& joints, const WorldDef& def, double dt,
-               const StepTasks& tasks);
+    void solve(ContactManager& contacts, JointStore& joints, const StepContext& step);
     /// The body (index in the body store) of the first solver body the last solve left
     /// non-finite, or null_index: the step must then be refused, nothing finalized.
     std::uint32_t diverged() const { return diverged_; }
@@ -55,7 +53,7 @@ class StepSolver {
     /// With more than one worker the bodies are written back in parallel blocks, and the lists
     /// that follow body order (continuous pass, undecided shapes) are gathered after them.
     void finalize(BodyStore& bodies, ShapeStore& shapes, const ContactManager& contacts,
-                  const JointStore& joints, const WorldDef& def, const StepTasks& tasks);
+                  const JointStore& joints, const StepContext& step);
 
   private:
     /// prepare_bodies' parallel form; `across` is the axis the contact regions are cut across.
