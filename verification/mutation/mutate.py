@@ -525,6 +525,14 @@ def tree_of(root):
     return tree_key(root)
 
 
+def default_scratch(root):
+    """One scratch per checkout (two checkouts syncing one scratch would build each other's
+    trees): /tmp/tamias-mutation-<uid>-<hash of the checkout's path>. The module reach
+    (verification/model_reach/) uses the same one."""
+    where = hashlib.sha1(os.path.abspath(root).encode()).hexdigest()[:8]
+    return os.path.join("/tmp", f"tamias-mutation-{os.getuid()}-{where}")
+
+
 # The scratch build's flags (prepare_scratch), for the report's list of builds.
 SCRATCH_FLAGS = "-O1 -DNDEBUG -D_GLIBCXX_ASSERTIONS"
 
@@ -550,8 +558,7 @@ def main(argv=None):
                          "sources and write gcovr's summary and pages before the mutants")
     a = ap.parse_args(argv)
     if a.scratch is None:
-        where = hashlib.sha1(os.path.abspath(a.root).encode()).hexdigest()[:8]
-        a.scratch = os.path.join("/tmp", f"tamias-mutation-{os.getuid()}-{where}")
+        a.scratch = default_scratch(a.root)
 
     muts = all_mutants(a.root)
     if a.list:
