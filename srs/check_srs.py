@@ -58,10 +58,12 @@ OPTIONAL_KEYS = {
     "obligation", "engine", "engine_reason",
 }
 # Whether the engine evaluates a TM/GD/DD/IM's formula (through its model module, which
-# verification/model_reach/module_reach.py checks by perturbing it): absent, it does;
-# `engine: model-only` states that it does not, with `engine_reason` saying why, so that the
-# engine's tests are not counted as that item's verification.
-ENGINE_VALUES = ("model-only",)
+# verification/model_reach/module_reach.py checks by perturbing it): absent, it does. With
+# `engine_reason` saying why, `engine: model-only` states that it does not, so that the
+# engine's tests are not counted as that item's verification; `engine: property` that it does
+# not either, but the item is a law the engine's results must satisfy, which engine-level
+# tests check with an oracle of their own (they count).
+ENGINE_VALUES = ("model-only", "property")
 # Requirements carry their obligation as data, from the SRS's own verb (ISO/IEC/IEEE 29148:
 # "shall" binds, "should" states a goal, "will" states a fact or intent). A statement with no
 # verb or with several must cite an erratum of kind "obligation" giving the reading.
@@ -772,6 +774,9 @@ def summary(res, out=sys.stdout):
     model_only = [lab for lab in res.order if res.items[lab].get("engine") == "model-only"]
     print(f"Model only (the engine does not evaluate the formula): "
           f"{', '.join(model_only) or 'none'}", file=out)
+    prop = [lab for lab in res.order if res.items[lab].get("engine") == "property"]
+    print(f"Properties (the engine does not evaluate the formula, its results are checked "
+          f"against it): {', '.join(prop) or 'none'}", file=out)
     print(f"Seed references to labels that do not exist: "
           + ", ".join(f"{u['text']} ({u['where']})" for u in res.unresolved), file=out)
     if res.errors:

@@ -216,6 +216,13 @@ class TinySrs(unittest.TestCase):
         files["theoretical_models.yaml"][0]["engine_reason"] = " "
         self.assertRejected(files, "needs engine_reason")
 
+    def test_property_item_passes_with_its_reason(self):
+        files = tiny_srs()
+        files["theoretical_models.yaml"][0].update(engine="property",
+                                                   engine_reason="a law the results obey")
+        res = self.run_check(files)
+        self.assertTrue(res.valid, res.errors)
+
     def test_engine_value_is_model_only(self):
         files = tiny_srs()
         files["data_definitions.yaml"][0].update(engine="runs", engine_reason="it does")

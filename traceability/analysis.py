@@ -15,7 +15,10 @@ STATUSES = ["verified", "goal met", "failing", "goal missed", "model only", "unt
 # engine does not evaluate (its engine_reason says why; verification/model_reach/ checks that
 # perturbing its module goes unnoticed by the engine's tests). Only the tests of its module
 # (tests/model/) count for it: passing, it is "model only", never "verified" by an engine test.
+# One marked `engine: property` is not evaluated by the engine either, but is a law the engine's
+# results must satisfy: engine-level tests that check them with their own oracle count as usual.
 MODEL_ONLY = "model-only"
+PROPERTY = "property"
 # A requirement whose obligation is "should" (srs/: the SRS's own verb) is a goal: measured and
 # shown with its figure, judged "goal met" or "goal missed", never a gate failure. A check that
 # only such items label is "goal-missed" when it fails; "shall" items gate as before.
@@ -181,6 +184,9 @@ def analyse(srs, code_sites, tests, config, warnings=None):
             notes.append("Model only: the engine does not evaluate this item's formula (srs/ "
                          f"engine: model-only): {it.get('engine_reason')} Its module's tests "
                          "verify it; tests beyond the module do not count.")
+        elif it.get("engine") == PROPERTY:
+            notes.append("A property of the engine's results: the engine does not evaluate this "
+                         f"item's formula (srs/ engine: property): {it.get('engine_reason')}")
         if lab in peer_reference and "peer" in kinds:
             notes.append("A peer's figure is this item's own reference, not weak evidence: " +
                          peer_reference[lab])
@@ -211,8 +217,9 @@ def analyse(srs, code_sites, tests, config, warnings=None):
             "obligation": it.get("obligation"),
             "status_reason": (decl["reason"] if decl and status == decl["status"] else
                               it.get("engine_reason") if model_only else None),
-            "engine": "model only" if model_only else ("engine" if it["kind"] in
-                                                       linkgrades.MODEL_KINDS else None),
+            "engine": ("model only" if model_only else "property"
+                       if it.get("engine") == PROPERTY else "engine"
+                       if it["kind"] in linkgrades.MODEL_KINDS else None),
             "oracle_kinds": kinds, "weak_evidence": weak, "tests_without_oracle": unstated,
             "links": {g["test"]: {k: g[k] for k in ("grade", "reasons", "level",
                                                      "tolerance_stated")} for g in grades},

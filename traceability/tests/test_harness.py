@@ -626,6 +626,12 @@ class Units(unittest.TestCase):
         got = t1_and_dd1([dict(engine, id="e", labels=["T1"], status="failed"),
                           dict(model, id="m", labels=["T1"])])
         self.assertEqual(got["T1"]["status"], "failing")
+        # A property (engine: property) is a law the engine's results obey: engine tests count.
+        srs.items["T1"].update(engine="property", engine_reason="A law the results obey.")
+        got = t1_and_dd1([dict(engine, id="e", labels=["T1"])])
+        self.assertEqual((got["T1"]["status"], got["T1"]["engine"]), ("verified", "property"))
+        self.assertEqual(got["T1"]["links"]["e"]["grade"], "strong")
+        self.assertTrue(any(n.startswith("A property") for n in got["T1"]["notes"]))
 
     def test_labelled_test_without_oracle_is_weak_evidence(self):
         # Oracle: the rule stated in docs/traceability.md: an SRS-labelled test that states no

@@ -17,9 +17,9 @@ and judged by the engine-level tests, every CTest entry but the model unit tests
   not reached  no engine test fails (or nothing the perturbation touches is compiled into them):
                the engine does not evaluate the formula there.
 
-An item marked `engine: model-only` in srs/ (srs/README.md) must come out "not reached" (a
-perturbation noticed by the engine means the marking is wrong); every other item must come out
-"verified". Without a build (--check), the perturbations are checked against the tree: each
+An item marked `engine: model-only` or `engine: property` in srs/ (srs/README.md: the engine
+does not evaluate its formula) must come out "not reached" (a perturbation noticed by the engine
+means the marking is wrong); every other item must come out "verified". Without a build (--check), the perturbations are checked against the tree: each
 applies exactly once, every model module has at least one, and every TM, GD, DD and IM item of
 srs/ has a module.
 
@@ -56,6 +56,8 @@ import perturbations as spec  # noqa: E402
 MODEL_DIR = "src/tamias2d/model"
 TAG = re.compile(r"\\srs\{([A-Za-z0-9_]+)\}")
 MODEL_KINDS = {"TM", "GD", "DD", "IM"}
+# srs/'s engine values of items whose formula the engine does not evaluate (srs/README.md).
+ENGINE_NOT_EVALUATED = ("model-only", "property")
 SRS_FILES = ("theoretical_models.yaml", "general_definitions.yaml", "data_definitions.yaml",
              "instance_models.yaml", "data_constraints.yaml")
 # Entries that are not the engine's: the model unit tests (the modules alone) and the
@@ -264,7 +266,7 @@ def hold_scratch(root, scratch):
 
 def expected(label, items):
     it = items.get(label, {})
-    return "not reached" if it.get("engine") == "model-only" else "verified"
+    return "not reached" if it.get("engine") in ENGINE_NOT_EVALUATED else "verified"
 
 
 # ------------------------------------------------------------------------------- main
@@ -397,7 +399,7 @@ def write(a, rows, items, labels, run, quiet=False):
                        "copy and judged by the engine-level tests (every CTest entry but the "
                        "model unit tests): verified (the item's own engine tests fail), reached "
                        "(only other engine tests fail) or not reached (none does). An item "
-                       "marked engine: model-only in srs/ must be not reached, every other "
+                       "marked engine: model-only or property in srs/ must be not reached, every other "
                        "verified. This run: " + details + ".",
         "provenance": {"commit": run["commit"], "dirty": run["dirty"], "tree": run["tree"],
                        "build_id": None, "built": run["started"], "generated": finished,
@@ -411,7 +413,8 @@ def write(a, rows, items, labels, run, quiet=False):
              "perturbed module", "details": "; ".join(
                  f"{s['label']}: {', '.join(s['results'])}" for s in engine_items
                  if not s["as_expected"]) or "all verified"},
-            {"name": "every model-only item's module is unnoticed by the engine's tests",
+            {"name": "every module the engine does not evaluate (srs/: model-only, property) "
+                     "is unnoticed by the engine's tests",
              "labels": [], "passed": all(s["as_expected"] for s in model_only),
              "target": "not reached", "oracle": "no engine-level test fails on the perturbed "
              "module", "details": "; ".join(
@@ -422,7 +425,7 @@ def write(a, rows, items, labels, run, quiet=False):
             {"name": "Items", "columns": ["item", "module", "srs/ says", "perturbations",
                                           "result"],
              "rows": [[s["label"], ", ".join(s["modules"]),
-                       "model only" if s["expected"] == "not reached" else "engine",
+                       (items.get(s["label"], {}).get("engine") or "engine").replace("-", " "),
                        s["perturbations"], ", ".join(s["results"])] for s in per_item]},
             {"name": "Perturbations", "columns": ["item", "module", "function", "perturbation",
                                                   "judged by", "result", "first failing entry",

@@ -1,8 +1,9 @@
 """The perturbations of module_reach.py: for each model module, the formula (or formulas) the
 engine is meant to evaluate, made wrong by one textual edit (a sign flipped, a term negated,
 a bound halved). Each is applied alone: `old` must occur exactly once in the module, and the
-module must still compile with `new`. A module's item is marked `engine: model-only` in srs/
-when the engine does not evaluate it; its perturbation is then expected to go unnoticed.
+module must still compile with `new`. A module's item is marked `engine: model-only` (or
+`engine: property`) in srs/ when the engine does not evaluate it; its perturbation is then
+expected to go unnoticed.
 
 Every module has at least one; module_reach.py --check (CTest module_reach_check) fails
 otherwise, or when an `old` no longer matches the module.

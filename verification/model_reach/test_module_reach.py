@@ -105,8 +105,10 @@ class Judging(unittest.TestCase):
 
     def test_expectations_follow_srs(self):
         items = {"T3": {"engine": "model-only", "engine_reason": "not in the engine"},
+                 "GD3": {"engine": "property", "engine_reason": "a law the results obey"},
                  "DD17": {}}
         self.assertEqual(mr.expected("T3", items), "not reached")
+        self.assertEqual(mr.expected("GD3", items), "not reached")
         self.assertEqual(mr.expected("DD17", items), "verified")
 
     def test_summary_per_item(self):
