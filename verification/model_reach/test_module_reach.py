@@ -103,6 +103,41 @@ class Judging(unittest.TestCase):
                           "system_tests.unlabelled": "system_tests",
                           "determinism_tests@determinism": "determinism_tests"})
 
+    def test_an_instrumented_scratch_stays_instrumented(self):
+        with tempfile.TemporaryDirectory() as scratch:
+            self.assertFalse(mr.instrumented(scratch))  # no build yet: the plain build
+            os.makedirs(os.path.join(scratch, "build"))
+            cache = os.path.join(scratch, "build", "CMakeCache.txt")
+            with open(cache, "w", encoding="utf-8") as fh:
+                fh.write("TAMIAS_COVERAGE:BOOL=OFF\n")
+            self.assertFalse(mr.instrumented(scratch))
+            with open(cache, "w", encoding="utf-8") as fh:
+                fh.write("TAMIAS_COVERAGE:BOOL=ON\n")
+            self.assertTrue(mr.instrumented(scratch))
+
+    def test_a_run_cut_short_says_so(self):
+        import argparse
+        import json
+        rows = [{"label": "DD17", "module": "dd17_linear_damping.hpp", "function": "acceleration",
+                 "why": "a_d = +c v", "judged_by": ["DD17"], "result": "verified",
+                 "expected": "verified", "failed": "system_tests@DD17", "seconds": 1.0}]
+        run = {"commit": "c", "dirty": False, "tree": "t", "build": {"name": "b"}, "chosen": 2,
+               "started": "s", "prep_secs": 1.0, "judging_secs": 1.0}
+        with tempfile.TemporaryDirectory() as out:
+            a = argparse.Namespace(out_dir=out, subset="ci", only=None)
+            mr.write(a, rows, {"DD17": {}}, {}, run, quiet=True)
+            with open(os.path.join(out, "module_reach.json"), encoding="utf-8") as fh:
+                doc = json.load(fh)
+            checks = {c["name"]: c["passed"] for c in doc["checks"]}
+            self.assertFalse(checks["every perturbation chosen was judged"])
+            self.assertIn("cut short: 1 of 2 judged", doc["summary"])
+            run["chosen"] = 1
+            mr.write(a, rows, {"DD17": {}}, {}, run, quiet=True)
+            with open(os.path.join(out, "module_reach.json"), encoding="utf-8") as fh:
+                doc = json.load(fh)
+            self.assertTrue(all(c["passed"] for c in doc["checks"]))
+            self.assertEqual(doc["provenance"]["tree"], "t")
+
     def test_expectations_follow_srs(self):
         items = {"T3": {"engine": "model-only", "engine_reason": "not in the engine"},
                  "GD3": {"engine": "property", "engine_reason": "a law the results obey"},
