@@ -7,7 +7,7 @@
 #   TAMIAS_MUTATION_MINUTES=M  judges mutants for M minutes (default 4; docs/verification.md)
 #   TAMIAS_MUTATION=all        judges every mutant instead (hours); TAMIAS_MUTATION=0 skips it
 #   TAMIAS_MUTATION_SEED=S     picks the sample (default 1)
-#   TAMIAS_MODULE_REACH=ci     perturbs the damping modules only instead of every model module
+#   TAMIAS_MODULE_REACH=damping     perturbs the damping modules only instead of every model module
 #                              (docs/verification.md, section 11); TAMIAS_MODULE_REACH=0 skips it
 # It prints each phase's time at the end and writes them to reports/data/main_job.json, which the
 # report shows; without the module reach (its own phase, the longest: a rebuild and the engine's
@@ -120,8 +120,8 @@ phase "module reach: each model module perturbed, judged by the engine's tests (
 # instrumented): every model module's formula made wrong in turn, the engine-level tests run;
 # an item the engine evaluates must be noticed by its own engine tests, one marked
 # engine: model-only in srs/ by none (docs/verification.md, section 11). A rebuild and the
-# engine's tests per perturbation: the longest phase. TAMIAS_MODULE_REACH=ci judges the named
-# subset ci (DD17, DD18) only, TAMIAS_MODULE_REACH=0 none (the report then lists no results for
+# engine's tests per perturbation: the longest phase. TAMIAS_MODULE_REACH=damping judges the named
+# subset damping (DD17, DD18) only, TAMIAS_MODULE_REACH=0 none (the report then lists no results for
 # it); --quick skips it.
 reach=${TAMIAS_MODULE_REACH:-all}
 if [ $quick -eq 1 ]; then

@@ -23,7 +23,7 @@ means the marking is wrong); every other item must come out "verified". Without 
 applies exactly once, every model module has at least one, and every TM, GD, DD and IM item of
 srs/ has a module.
 
-    /usr/bin/python3 verification/model_reach/module_reach.py OUT_DIR [--subset ci]
+    /usr/bin/python3 verification/model_reach/module_reach.py OUT_DIR [--subset damping]
         [--only LABEL,...] [--first LABEL,...] [--scratch DIR] [--test-timeout S]
     /usr/bin/python3 verification/model_reach/module_reach.py --check
     /usr/bin/python3 verification/model_reach/module_reach.py --list

@@ -61,7 +61,7 @@ class TreeCheck(unittest.TestCase):
     def check(self, modules, items, perturbations):
         with tempfile.TemporaryDirectory() as root:
             make_tree(root, modules, items)
-            return mr.check_tree(root, perturbations, {"ci": ["DD17"]})
+            return mr.check_tree(root, perturbations, {"damping": ["DD17"]})
 
     def test_a_consistent_tree_passes(self):
         self.assertEqual(self.check({"dd17_linear_damping.hpp": MODULE},
@@ -85,7 +85,7 @@ class TreeCheck(unittest.TestCase):
     def test_a_module_of_an_unknown_item_is_named(self):
         got = self.check({"dd17_linear_damping.hpp": MODULE}, [], [FLIP])
         self.assertTrue(any("DD17 is not an SRS item" in g for g in got), got)
-        self.assertIn("subset ci: DD17 has no module",
+        self.assertIn("subset damping: DD17 has no module",
                       self.check({}, [], []))
 
     def test_the_repository_fits_its_perturbations(self):
@@ -124,7 +124,7 @@ class Judging(unittest.TestCase):
         run = {"commit": "c", "dirty": False, "tree": "t", "build": {"name": "b"}, "chosen": 2,
                "started": "s", "prep_secs": 1.0, "judging_secs": 1.0}
         with tempfile.TemporaryDirectory() as out:
-            a = argparse.Namespace(out_dir=out, subset="ci", only=None)
+            a = argparse.Namespace(out_dir=out, subset="damping", only=None)
             mr.write(a, rows, {"DD17": {}}, {}, run, quiet=True)
             with open(os.path.join(out, "module_reach.json"), encoding="utf-8") as fh:
                 doc = json.load(fh)
