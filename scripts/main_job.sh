@@ -7,8 +7,9 @@
 #   TAMIAS_MUTATION_MINUTES=M  judges mutants for M minutes (default 4; docs/verification.md)
 #   TAMIAS_MUTATION=all        judges every mutant instead (hours); TAMIAS_MUTATION=0 skips it
 #   TAMIAS_MUTATION_SEED=S     picks the sample (default 1)
-#   TAMIAS_MODULE_REACH=damping     perturbs the damping modules only instead of every model module
-#                              (docs/verification.md, section 11); TAMIAS_MODULE_REACH=0 skips it
+#   TAMIAS_MODULE_REACH=damping  perturbs the damping modules (DD17, DD18) only instead of
+#                              every model module (docs/verification.md, section 11);
+#                              TAMIAS_MODULE_REACH=0 skips it
 # It prints each phase's time at the end and writes them to reports/data/main_job.json, which the
 # report shows; without the module reach (its own phase, the longest: a rebuild and the engine's
 # tests per model module's perturbation) the job is meant to take at most 20 minutes on 2 cores.
@@ -119,10 +120,10 @@ phase "module reach: each model module perturbed, judged by the engine's tests (
 # verification/model_reach/module_reach.py on the same scratch build (rebuilt incrementally, kept
 # instrumented): every model module's formula made wrong in turn, the engine-level tests run;
 # an item the engine evaluates must be noticed by its own engine tests, one marked
-# engine: model-only in srs/ by none (docs/verification.md, section 11). A rebuild and the
-# engine's tests per perturbation: the longest phase. TAMIAS_MODULE_REACH=damping judges the named
-# subset damping (DD17, DD18) only, TAMIAS_MODULE_REACH=0 none (the report then lists no results for
-# it); --quick skips it.
+# engine: model-only or property in srs/ by none (docs/verification.md, section 11). A rebuild
+# and the engine's tests per perturbation: the longest phase. TAMIAS_MODULE_REACH=damping judges
+# DD17 and DD18 only, TAMIAS_MODULE_REACH=0 none (the report then has no module reach results);
+# --quick skips it.
 reach=${TAMIAS_MODULE_REACH:-all}
 if [ $quick -eq 1 ]; then
     echo "   skipped (--quick)"
