@@ -24,7 +24,7 @@ applies exactly once, every model module has at least one, and every TM, GD, DD 
 srs/ has a module.
 
     /usr/bin/python3 verification/model_reach/module_reach.py OUT_DIR [--subset damping]
-        [--only LABEL,...] [--first LABEL,...] [--scratch DIR] [--test-timeout S]
+        [--only LABEL,...] [--first LABEL,...] [--lazy] [--scratch DIR] [--test-timeout S]
     /usr/bin/python3 verification/model_reach/module_reach.py --check
     /usr/bin/python3 verification/model_reach/module_reach.py --list
 
@@ -282,6 +282,11 @@ def main(argv=None):
     ap.add_argument("--only", help="these items only (comma-separated labels)")
     ap.add_argument("--first", help="judge these items' perturbations before the others "
                                     "(comma-separated labels: a run that may be cut short)")
+    ap.add_argument("--lazy", action="store_true",
+                    help="build the scratch's test executables as the perturbations need them, "
+                         "not all of them first: a run that may be cut short starts judging "
+                         "sooner (an object first built perturbed is then taken as changed, so "
+                         "its tests run)")
     ap.add_argument("--test-timeout", type=int, default=600)
     ap.add_argument("--check", action="store_true", help="check the perturbations, no build")
     ap.add_argument("--list", action="store_true", help="print the perturbations and stop")
@@ -323,7 +328,8 @@ def main(argv=None):
            "build": mutate.scratch_build(a.scratch, coverage), "chosen": len(chosen),
            "started": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ")}
     t_prep = time.monotonic()
-    src, build, catalogue, objects = mutate.prepare_scratch(a.root, a.scratch, coverage)
+    src, build, catalogue, objects = mutate.prepare_scratch(a.root, a.scratch, coverage,
+                                                            build_all=not a.lazy)
     run["prep_secs"] = time.monotonic() - t_prep
     engine = engine_entries(catalogue)
     baseline = {}

@@ -265,7 +265,7 @@ def sync_tree(root, dest):
         shutil.copymode(s, d)
 
 
-def prepare_scratch(root, scratch, coverage=False):
+def prepare_scratch(root, scratch, coverage=False, build_all=True):
     """A copy of the sources (no .git, builds or reports) and a built Release build (with
     coverage: instrumented by gcov, the command and examples built too, every target built).
 
@@ -273,7 +273,8 @@ def prepare_scratch(root, scratch, coverage=False):
     (LINK_DEPENDS_NO_SHARED): a mutant of a .cpp then recompiles one object and relinks one
     .so instead of every test executable. The copy is synchronised file by file (sync_tree),
     so a scratch that outlives a run rebuilds only what changed since, and never keeps an
-    object built from a mutant."""
+    object built from a mutant. Without build_all, nothing is built here: the caller builds
+    what it needs, and the digests returned are those of the objects already there."""
     src = os.path.join(scratch, "src")
     build = os.path.join(scratch, "build")
     sync_tree(root, src)
@@ -298,6 +299,8 @@ def prepare_scratch(root, scratch, coverage=False):
         raise SystemExit("ctest cannot list the scratch build's tests:\n" + out[-3000:])
     catalogue = json.loads(out).get("tests", [])
     targets = sorted({t["name"].split("@", 1)[0] for t in catalogue if "@" in t["name"]})
+    if not build_all:
+        return src, build, catalogue, object_digests(build)
     if coverage:
         targets = ["all"]
     rc, out = run(["nice", "-n", "5", "cmake", "--build", build, "-j2", "--target", *targets])
