@@ -55,8 +55,15 @@ REQUIRED_KEYS = ["label", "kind", "alias", "title", "equation", "symbols", "uses
 OPTIONAL_KEYS = {
     "seed_equation", "seed_ref_by", "seed_ref_by_unresolved", "notes", "errata",
     "seed_cites", "seed_cites_unresolved", "alias_ref_by", "inputs", "seed_inputs", "outputs",
-    "obligation",
+    "obligation", "engine", "engine_reason",
 }
+# Whether the engine evaluates a TM/GD/DD/IM's formula (through its model module, which
+# verification/model_reach/module_reach.py checks by perturbing it): absent, it does. With
+# `engine_reason` saying why, `engine: model-only` states that it does not, so that the
+# engine's tests are not counted as that item's verification; `engine: property` that it does
+# not either, but the item is a law the engine's results must satisfy, which engine-level
+# tests check with an oracle of their own (they count).
+ENGINE_VALUES = ("model-only", "property")
 # Requirements carry their obligation as data, from the SRS's own verb (ISO/IEC/IEEE 29148:
 # "shall" binds, "should" states a goal, "will" states a fact or intent). A statement with no
 # verb or with several must cite an erratum of kind "obligation" giving the reading.
@@ -277,6 +284,16 @@ def _check_item(fname, idx, raw, res, allowed_kinds):
         res.error(f"{where}: a project constraint must cite the erratum that motivates it")
     if "notes" in raw and not _is_str(raw["notes"]):
         res.error(f"{where}: notes must be a non-empty string")
+    if "engine" in raw or "engine_reason" in raw:
+        if kind not in MODEL_KINDS:
+            res.error(f"{where}: only {', '.join(sorted(MODEL_KINDS))} items carry engine "
+                      "(whether the engine evaluates their formula)")
+        elif raw.get("engine") not in ENGINE_VALUES:
+            res.error(f"{where}: engine must be one of {', '.join(ENGINE_VALUES)} (absent: the "
+                      "engine evaluates the formula through its module)")
+        elif not _is_str(raw.get("engine_reason")):
+            res.error(f"{where}: engine: {raw.get('engine')} needs engine_reason (why the engine "
+                      "does not evaluate the formula)")
     if kind in OBLIGATION_KINDS and raw.get("obligation") not in OBLIGATIONS:
         res.error(f"{where}: a {kind} needs obligation, one of {', '.join(OBLIGATIONS)}")
     if kind not in OBLIGATION_KINDS and "obligation" in raw:
@@ -754,6 +771,12 @@ def summary(res, out=sys.stdout):
     for d in res.alias_disagreements:
         print(f"  {d['label']} ({d['alias']}): missing in seed 001: "
               f"{_labels(d['missing_in_seed'])}; extra: {_labels(d['extra_in_seed'])}", file=out)
+    model_only = [lab for lab in res.order if res.items[lab].get("engine") == "model-only"]
+    print(f"Model only (the engine does not evaluate the formula): "
+          f"{', '.join(model_only) or 'none'}", file=out)
+    prop = [lab for lab in res.order if res.items[lab].get("engine") == "property"]
+    print(f"Properties (the engine does not evaluate the formula, its results are checked "
+          f"against it): {', '.join(prop) or 'none'}", file=out)
     print(f"Seed references to labels that do not exist: "
           + ", ".join(f"{u['text']} ({u['where']})" for u in res.unresolved), file=out)
     if res.errors:

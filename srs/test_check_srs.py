@@ -201,6 +201,41 @@ class TinySrs(unittest.TestCase):
         files["goals.yaml"][0]["obligation"] = "shall"
         self.assertRejected(files, "only requirements")
 
+    def test_model_only_item_passes_with_its_reason(self):
+        files = tiny_srs()
+        files["theoretical_models.yaml"][0].update(engine="model-only",
+                                                   engine_reason="the engine never forms x")
+        res = self.run_check(files)
+        self.assertTrue(res.valid, res.errors)
+        self.assertEqual(res.items["T1"]["engine"], "model-only")
+
+    def test_model_only_needs_a_reason(self):
+        files = tiny_srs()
+        files["theoretical_models.yaml"][0]["engine"] = "model-only"
+        self.assertRejected(files, "needs engine_reason")
+        files["theoretical_models.yaml"][0]["engine_reason"] = " "
+        self.assertRejected(files, "needs engine_reason")
+
+    def test_property_item_passes_with_its_reason(self):
+        files = tiny_srs()
+        files["theoretical_models.yaml"][0].update(engine="property",
+                                                   engine_reason="a law the results obey")
+        res = self.run_check(files)
+        self.assertTrue(res.valid, res.errors)
+
+    def test_engine_value_is_model_only(self):
+        files = tiny_srs()
+        files["data_definitions.yaml"][0].update(engine="runs", engine_reason="it does")
+        self.assertRejected(files, "engine must be one of model-only")
+        files = tiny_srs()
+        files["data_definitions.yaml"][0]["engine_reason"] = "a reason alone"
+        self.assertRejected(files, "engine must be one of model-only")
+
+    def test_engine_only_on_model_items(self):
+        files = tiny_srs()
+        files["requirements.yaml"][0].update(engine="model-only", engine_reason="no formula")
+        self.assertRejected(files, "carry engine")
+
     def test_cycle_in_uses_rejected(self):
         files = tiny_srs()
         files["theoretical_models.yaml"][0]["uses"] = ["IM1"]

@@ -9,8 +9,16 @@ import yaml
 from . import links as linkgrades
 from .srsdata import KIND_NAMES, KIND_ORDER, natural_key
 
-STATUSES = ["verified", "goal met", "failing", "goal missed", "untested", "assumed",
-            "not testable", "not implemented"]
+STATUSES = ["verified", "goal met", "failing", "goal missed", "model only", "untested",
+            "assumed", "not testable", "not implemented"]
+# A model item (TM, GD, DD, IM) marked `engine: model-only` in srs/ is one whose formula the
+# engine does not evaluate (its engine_reason says why; verification/model_reach/ checks that
+# perturbing its module goes unnoticed by the engine's tests). Only the tests of its module
+# (tests/model/) count for it: passing, it is "model only", never "verified" by an engine test.
+# One marked `engine: property` is not evaluated by the engine either, but is a law the engine's
+# results must satisfy: engine-level tests that check them with their own oracle count as usual.
+MODEL_ONLY = "model-only"
+PROPERTY = "property"
 # A requirement whose obligation is "should" (srs/: the SRS's own verb) is a goal: measured and
 # shown with its figure, judged "goal met" or "goal missed", never a gate failure. A check that
 # only such items label is "goal-missed" when it fails; "shall" items gate as before.
@@ -86,11 +94,15 @@ def load_config(path):
     return cfg
 
 
-def item_status(code_sites, tests, kind=None, declared=None):
+def item_status(code_sites, tests, kind=None, declared=None, model_only=False):
     passed = [t for t in tests if t["status"] == "passed"]
     failing = [t for t in tests if t["status"] in FAILING]
     if failing:
         return "failing"
+    if model_only:
+        # Engine-level tests do not verify what the engine does not evaluate.
+        return "model only" if any(linkgrades.level_of(t) == "model" for t in passed) \
+            else "untested"
     if passed:
         return "verified"
     # Declared only for items no test can verify, and only while no labelled test exists.
@@ -146,7 +158,9 @@ def analyse(srs, code_sites, tests, config, warnings=None):
         sites = sites_by.get(lab, [])
         its_tests = sorted(tests_by.get(lab, []), key=lambda t: (t["status"] not in FAILING, t["id"]))
         decl = declared.get(lab)
-        status = item_status(sites, its_tests, it["kind"], decl["status"] if decl else None)
+        model_only = it.get("engine") == MODEL_ONLY
+        status = item_status(sites, its_tests, it["kind"], decl["status"] if decl else None,
+                             model_only)
         if lab in goals and status != "failing":
             if any(t["status"] == "goal-missed" for t in its_tests):
                 status = "goal missed"
@@ -165,7 +179,14 @@ def analyse(srs, code_sites, tests, config, warnings=None):
         strong = [g for g in grades if g["grade"] == "strong" and
                   next(t for t in its_tests if t["id"] == g["test"])["status"] in
                   ("passed", "goal-missed")]
-        weak = status in ("verified", "goal met", "goal missed") and not strong
+        weak = status in ("verified", "goal met", "goal missed", "model only") and not strong
+        if model_only:
+            notes.append("Model only: the engine does not evaluate this item's formula (srs/ "
+                         f"engine: model-only): {it.get('engine_reason')} Its module's tests "
+                         "verify it; tests beyond the module do not count.")
+        elif it.get("engine") == PROPERTY:
+            notes.append("A property of the engine's results: the engine does not evaluate this "
+                         f"item's formula (srs/ engine: property): {it.get('engine_reason')}")
         if lab in peer_reference and "peer" in kinds:
             notes.append("A peer's figure is this item's own reference, not weak evidence: " +
                          peer_reference[lab])
@@ -194,7 +215,11 @@ def analyse(srs, code_sites, tests, config, warnings=None):
             "label": lab, "kind": it["kind"], "alias": it.get("alias"), "title": it.get("title"),
             "status": status, "gated": it["kind"] in GATED_KINDS,
             "obligation": it.get("obligation"),
-            "status_reason": decl["reason"] if decl and status == decl["status"] else None,
+            "status_reason": (decl["reason"] if decl and status == decl["status"] else
+                              it.get("engine_reason") if model_only else None),
+            "engine": ("model only" if model_only else "property"
+                       if it.get("engine") == PROPERTY else "engine"
+                       if it["kind"] in linkgrades.MODEL_KINDS else None),
             "oracle_kinds": kinds, "weak_evidence": weak, "tests_without_oracle": unstated,
             "links": {g["test"]: {k: g[k] for k in ("grade", "reasons", "level",
                                                      "tolerance_stated")} for g in grades},

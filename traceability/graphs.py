@@ -20,7 +20,7 @@ KIND_HEX = {  # the same colours as hex, for the HTML legend
     "DC": "#e0ffff",
 }
 STATUS_BORDER = {"verified": "#2e7d32", "goal met": "#2e7d32", "failing": "#c62828",
-                 "goal missed": "#ef6c00", "untested": "#ef6c00",
+                 "goal missed": "#ef6c00", "model only": "#2e7d32", "untested": "#ef6c00",
                  "assumed": "#5b6474", "not testable": "#5b6474", "not implemented": "#757575"}
 
 VIEWS = [

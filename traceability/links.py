@@ -21,7 +21,8 @@ here from facts the harness already has, never typed by hand:
 A link is *strong* when its oracle is independent and the test drives the item's
 implementation at a level that can show it right: a requirement on the software (R, NFR) needs
 the world, the command or a program, not a model function alone; a model item (TM, GD, DD, IM)
-may be shown on its module or through the engine. Every other link is *weak*, with its reasons.
+may be shown on its module or through the engine, except that one the engine does not evaluate
+(srs/ `engine: model-only`) only on its module. Every other link is *weak*, with its reasons.
 An item with no strong link is flagged; the report publishes a seeded sample of links with their
 facts, for a reviewer to judge against the grades.
 """
@@ -33,6 +34,7 @@ import re
 INDEPENDENT = {"closed form", "stated rule", "GSL reference", "conservation law",
                "independent implementation", "property"}
 REQUIREMENT_KINDS = {"R", "NFR"}
+MODEL_KINDS = {"TM", "GD", "DD", "IM"}
 SOFTWARE_LEVELS = {"world", "command", "program"}
 # The requirements on receiving and checking input (R2-R4) may also be shown on the scene
 # reader, the library's other way in.
@@ -92,6 +94,9 @@ def grade(item, test, peer_reference=False):
                                   else set())
     if item["kind"] in REQUIREMENT_KINDS and level not in software and level != "history":
         reasons.append(f"a requirement on the software shown on the {level} alone")
+    if item.get("engine") == "model-only" and level != "model":
+        reasons.append(f"the engine does not evaluate {label} (srs/ engine: model-only): a test "
+                       f"at the {level} level is not its verification")
     facts = {"oracle_kinds": sorted(kinds), "level": level, "tolerance_stated": tolerance}
     return ("weak" if reasons else "strong"), reasons, facts
 

@@ -15,7 +15,7 @@ E = html.escape
 
 STATUS_CLASS = {"verified": "st-ok", "goal met": "st-ok", "goal missed": "st-warn",
                 "goal-missed": "st-warn", "failing": "st-fail", "untested": "st-warn",
-                "assumed": "st-none", "not testable": "st-none", "not implemented": "st-none", "passed": "st-ok", "known-failure": "st-warn",
+                "model only": "st-ok", "assumed": "st-none", "not testable": "st-none", "not implemented": "st-none", "passed": "st-ok", "known-failure": "st-warn",
                 "target-missed": "st-warn", "failed": "st-fail",
                 "error": "st-fail", "skipped": "st-none", "notrun": "st-none"}
 STATUS_HELP = {
@@ -23,6 +23,7 @@ STATUS_HELP = {
     "goal met": "a \"should\" requirement (a goal, srs/ obligation) whose labelled checks pass",
     "failing": "at least one labelled test or check fails",
     "goal missed": "a \"should\" requirement (a goal) whose measured figure misses its limit; shown with the figure, never gating",
+    "model only": "a model item whose formula the engine does not evaluate (srs/ engine: model-only, the reason is on the item): its module's labelled tests pass, and tests beyond the module do not count for it",
     "untested": "code carries the item's \\srs tag (or labelled tests exist but did not run), but nothing passing verifies it",
     "assumed": "no test can verify it: an assumption the code is built on (the reason is on the item); no labelled test exists",
     "not testable": "no test can verify it (the reason is on the item): a statement about the project, not the code; no labelled test exists",
@@ -279,8 +280,8 @@ say how the figure is measured:<ul>{"".join(rows)}</ul></div>""")
         n_items = len(r["items"])
         self.w('<div class="cards">')
         self.w(f'<div class="card info"><div class="n">{n_items}</div><div class="l">SRS items in srs/</div></div>')
-        for st in ("verified", "goal met", "failing", "goal missed", "untested", "assumed",
-                   "not testable", "not implemented"):
+        for st in ("verified", "goal met", "failing", "goal missed", "model only", "untested",
+                   "assumed", "not testable", "not implemented"):
             self.w(f'<div class="card {STATUS_CLASS[st]}"><div class="n">{s["by_status"].get(st, 0)}</div>'
                    f'<div class="l">{E(st)}</div></div>')
         self.w('</div>')
@@ -289,7 +290,7 @@ say how the figure is measured:<ul>{"".join(rows)}</ul></div>""")
                'inferred from the items it uses.</p>')
         self.w('<h3>Coverage of the SRS per kind</h3><table class="data sortable"><thead><tr>'
                '<th>Kind</th><th>Name</th><th class="num">Items</th><th class="num">Verified</th>'
-               '<th class="num">Goal met</th><th class="num">Failing</th><th class="num">Goal missed</th><th class="num">Untested</th><th class="num">Assumed</th>'
+               '<th class="num">Goal met</th><th class="num">Failing</th><th class="num">Goal missed</th><th class="num">Model only</th><th class="num">Untested</th><th class="num">Assumed</th>'
                '<th class="num">Not testable</th><th class="num">Not impl.</th>'
                '<th class="num">With code tag</th><th class="num">With tests</th><th>Verified share</th>'
                '<th>Gate</th></tr></thead><tbody>')
@@ -299,7 +300,8 @@ say how the figure is measured:<ul>{"".join(rows)}</ul></div>""")
             self.w(f'<tr><td data-sort="{E(row["kind"])}">{self.kind(row["kind"])}</td><td>{E(row["name"])}</td>'
                    f'<td class="num">{row["total"]}</td><td class="num">{row["verified"]}</td>'
                    f'<td class="num">{row["goal met"]}</td><td class="num">{row["failing"]}</td>'
-                   f'<td class="num">{row["goal missed"]}</td><td class="num">{row["untested"]}</td>'
+                   f'<td class="num">{row["goal missed"]}</td><td class="num">{row["model only"]}</td>'
+                   f'<td class="num">{row["untested"]}</td>'
                    f'<td class="num">{row["assumed"]}</td><td class="num">{row["not testable"]}</td>'
                    f'<td class="num">{row["not implemented"]}</td><td class="num">{row["with_code"]}</td>'
                    f'<td class="num">{row["with_tests"]}</td>'

@@ -54,10 +54,11 @@ def render(r):
     w("## 1. Summary\n")
     w("Items by status: " + ", ".join(f"{k}: {v}" for k, v in s["by_status"].items()) +
       f" (of {len(r['items'])}).\n")
-    w(_table(["Kind", "Name", "Items", "Verified", "Goal met", "Failing", "Goal missed", "Untested",
+    w(_table(["Kind", "Name", "Items", "Verified", "Goal met", "Failing", "Goal missed",
+              "Model only", "Untested",
               "Assumed", "Not testable", "Not impl.", "With code", "With tests", "Verified %"],
              [[k["kind"], k["name"], k["total"], k["verified"], k["goal met"], k["failing"],
-               k["goal missed"], k["untested"],
+               k["goal missed"], k["model only"], k["untested"],
                k["assumed"], k["not testable"], k["not implemented"], k["with_code"], k["with_tests"],
                k["verified_percent"]] for k in s["by_kind"]]))
     w(_table(["Origin", "Total", "Passed", "Failed", "Error", "Skipped", "Not run", "Known failure",

@@ -64,8 +64,8 @@ SYMBOL_KEYS = ("symbol", "unit", "description", "seed_unit", "tamias_unit")
 ENUMS = {  # datatype -> its fixed values (values found in the report are appended)
     "Kind": list(KIND_ORDER),
     "Obligation": ["shall", "should", "will"],
-    "Item status": ["verified", "goal met", "failing", "goal missed", "untested", "assumed",
-                    "not testable", "not implemented"],
+    "Item status": ["verified", "goal met", "failing", "goal missed", "model only", "untested",
+                    "assumed", "not testable", "not implemented"],
     "Test status": ["passed", "failed", "error", "skipped", "notrun", "known-failure",
                     "target-missed", "goal-missed"],
     "Origin": ["boost", "ctest", "verification"],

@@ -104,7 +104,8 @@ class FixtureReport(unittest.TestCase):
         self.assertEqual(by_kind["IM"]["verified_percent"], 50.0)
         self.assertEqual(self.report["summary"]["by_status"],
                          {"verified": 4, "goal met": 0, "failing": 1, "goal missed": 1,
-                          "untested": 5, "assumed": 1, "not testable": 0, "not implemented": 1})
+                          "model only": 0, "untested": 5, "assumed": 1, "not testable": 0,
+                          "not implemented": 1})
         self.assertNotIn("GD", by_kind)  # general_definitions.yaml is an empty list
 
     def test_orphans_both_directions(self):
@@ -214,7 +215,7 @@ class FixtureReport(unittest.TestCase):
             self.assertIn(needle, page)
         self.assertNotIn("<link ", page)  # self-contained: no external stylesheet
         self.assertTrue(os.path.exists(os.path.join(self.out, "traceability.md")))
-        self.assertEqual(self.report["schema_version"], "1.3")
+        self.assertEqual(self.report["schema_version"], "1.4")
         self.assertTrue(os.path.exists(os.path.join(self.out, "plots", "peer_compare__Error_vs_step_size.svg")))
         self.assertEqual(self.report["coverage"]["totals"]["line_percent"], 80.0)
         if HAVE_DOT:
@@ -592,6 +593,45 @@ class Units(unittest.TestCase):
         # A link's draw does not depend on the others: drop one unsampled link, same sample.
         rest = [ln for ln in pool if ln not in first]
         self.assertEqual(first, links.sample(first + rest[1:], 30, "abc"))
+
+    def test_model_only_items(self):
+        # Oracle: the rule stated in docs/traceability.md ("model only"): an item marked
+        # engine: model-only in srs/ (the fixture's T1, marked here) is verified only by its
+        # module's tests; a passing engine test makes it neither verified nor model only, and
+        # its link is weak with the reason; an item the engine evaluates (DD1) is verified by
+        # the same kind of test.
+        from traceability import srsdata
+        srs = srsdata.load_srs(os.path.join(REPO, "srs"))
+        srs.items["T1"].update(engine="model-only", engine_reason="Not in the engine.")
+        engine = {"origin": "boost", "file": "tests/engine/test_motion.cpp", "status": "passed",
+                  "oracle": "closed form F = m a"}
+        model = dict(engine, file="tests/model/test_t1.cpp")
+
+        def t1_and_dd1(tests):
+            res = analysis.analyse(srs, [], [dict(t) for t in tests], {"category_labels": []})
+            return {i["label"]: i for i in res["items"] if i["label"] in ("T1", "DD1")}
+
+        got = t1_and_dd1([dict(engine, id="e", labels=["T1", "DD1"])])
+        self.assertEqual(got["T1"]["status"], "untested")
+        self.assertEqual(got["DD1"]["status"], "verified")
+        self.assertEqual(got["T1"]["links"]["e"]["grade"], "weak")
+        self.assertIn("engine: model-only", " ".join(got["T1"]["links"]["e"]["reasons"]))
+        self.assertEqual(got["DD1"]["links"]["e"]["grade"], "strong")
+        self.assertEqual((got["T1"]["engine"], got["DD1"]["engine"]), ("model only", "engine"))
+        got = t1_and_dd1([dict(engine, id="e", labels=["T1"]), dict(model, id="m", labels=["T1"])])
+        self.assertEqual(got["T1"]["status"], "model only")
+        self.assertEqual(got["T1"]["status_reason"], "Not in the engine.")
+        self.assertFalse(got["T1"]["weak_evidence"])
+        self.assertTrue(any(n.startswith("Model only") for n in got["T1"]["notes"]))
+        got = t1_and_dd1([dict(engine, id="e", labels=["T1"], status="failed"),
+                          dict(model, id="m", labels=["T1"])])
+        self.assertEqual(got["T1"]["status"], "failing")
+        # A property (engine: property) is a law the engine's results obey: engine tests count.
+        srs.items["T1"].update(engine="property", engine_reason="A law the results obey.")
+        got = t1_and_dd1([dict(engine, id="e", labels=["T1"])])
+        self.assertEqual((got["T1"]["status"], got["T1"]["engine"]), ("verified", "property"))
+        self.assertEqual(got["T1"]["links"]["e"]["grade"], "strong")
+        self.assertTrue(any(n.startswith("A property") for n in got["T1"]["notes"]))
 
     def test_labelled_test_without_oracle_is_weak_evidence(self):
         # Oracle: the rule stated in docs/traceability.md: an SRS-labelled test that states no

@@ -287,7 +287,7 @@ def sync_tree(root, dest):
         shutil.copymode(s, d)
 
 
-def prepare_scratch(root, scratch, coverage=False):
+def prepare_scratch(root, scratch, coverage=False, build_all=True):
     """A copy of the sources (no .git, builds or reports) and a built Release build (with
     coverage: instrumented by gcov, the command and examples built too, every target built).
 
@@ -295,7 +295,8 @@ def prepare_scratch(root, scratch, coverage=False):
     (LINK_DEPENDS_NO_SHARED): a mutant of a .cpp then recompiles one object and relinks one
     .so instead of every test executable. The copy is synchronised file by file (sync_tree),
     so a scratch that outlives a run rebuilds only what changed since, and never keeps an
-    object built from a mutant."""
+    object built from a mutant. Without build_all, nothing is built here: the caller builds
+    what it needs, and the digests returned are those of the objects already there."""
     src = os.path.join(scratch, "src")
     build = os.path.join(scratch, "build")
     sync_tree(root, src)
@@ -320,6 +321,8 @@ def prepare_scratch(root, scratch, coverage=False):
         raise SystemExit("ctest cannot list the scratch build's tests:\n" + out[-3000:])
     catalogue = json.loads(out).get("tests", [])
     targets = sorted({t["name"].split("@", 1)[0] for t in catalogue if "@" in t["name"]})
+    if not build_all:
+        return src, build, catalogue, object_digests(build)
     if coverage:
         targets = ["all"]
     rc, out = run(["nice", "-n", "5", "cmake", "--build", build, "-j2", "--target", *targets])
@@ -871,6 +874,14 @@ def tree_of(root):
     return tree_key(root)
 
 
+def default_scratch(root):
+    """One scratch per checkout (two checkouts syncing one scratch would build each other's
+    trees): /tmp/tamias-mutation-<uid>-<hash of the checkout's path>. The module reach
+    (verification/model_reach/) uses the same one."""
+    where = hashlib.sha1(os.path.abspath(root).encode()).hexdigest()[:8]
+    return os.path.join("/tmp", f"tamias-mutation-{os.getuid()}-{where}")
+
+
 # The scratch build's flags (prepare_scratch), for the report's list of builds.
 SCRATCH_FLAGS = "-O1 -DNDEBUG -D_GLIBCXX_ASSERTIONS"
 
@@ -1262,8 +1273,7 @@ def main(argv=None):
                          "sources and write gcovr's summary and pages before the mutants")
     a = ap.parse_args(argv)
     if a.scratch is None:
-        where = hashlib.sha1(os.path.abspath(a.root).encode()).hexdigest()[:8]
-        a.scratch = os.path.join("/tmp", f"tamias-mutation-{os.getuid()}-{where}")
+        a.scratch = default_scratch(a.root)
     if a.merge:
         if a.out_dir or len(a.merge) < 2:
             ap.error("--merge OUT_DIR FILE...")
