@@ -4,8 +4,8 @@
 #include <boost/test/unit_test.hpp>
 
 #include <string>
-#include <vector>
 #include <variant>
+#include <vector>
 
 #include "tamias2d/errors.hpp"
 #include "tamias2d/io/scene.hpp"
@@ -27,6 +27,9 @@ const char* const filter_scene = R"({"dt": 0.01, "steps": 10,
 
 BOOST_AUTO_TEST_SUITE(scene_filter_joint)
 
+// Oracle: the documented round trip (parse_scene(scene_to_json(s)) reproduces s, and the written
+// form is a fixed point) and the API: the scene built with its joint hashes as the scene built
+// without it and then joined by World::create_joint, before and after a step.
 BOOST_AUTO_TEST_CASE(reads_builds_and_writes_back, *utf::label("scene")) {
     const Scene s = parse_scene(filter_scene, "filter");
     BOOST_TEST_REQUIRE(s.joints.size() == 1u);
@@ -59,7 +62,8 @@ BOOST_AUTO_TEST_CASE(reads_builds_and_writes_back, *utf::label("scene")) {
     BOOST_TEST(from_file.contacts().size() == 0u);
 }
 
-// A filter joint takes no anchor: a key of another kind is refused, naming it.
+// Oracle: docs/scene-format.md's "filter" row (no key beyond type, body_a, body_b): an anchor,
+// a key of other kinds, is refused, naming it.
 BOOST_AUTO_TEST_CASE(refuses_keys_it_does_not_have, *utf::label("scene")) {
     std::string text = filter_scene;
     text.replace(text.find(R"("body_b": "b"})"), 14, R"("body_b": "b", "anchor": [0, 0]})");
