@@ -1,8 +1,8 @@
 // libFuzzer target: the input bytes drive a sequence of World calls (bodies of every type,
-// circles, boxes, polygons, capsules, segments and chains, the seven joint kinds, velocities,
-// transforms, damping, forces, torques, impulses, gravity, filters, sleep, motors, queries, ray
-// casts and steps) whose arguments are any doubles (NaN, infinities, denormals, 1e308, any bit
-// pattern), and whose handles are live, destroyed, stale, forged, null or a second world's.
+// circles, boxes, polygons, capsules, segments and chains, every joint kind but the target,
+// velocities, transforms, damping, forces, torques, impulses, gravity, filters, sleep, motors,
+// queries, ray casts and steps) whose arguments are any doubles (NaN, infinities, denormals, 1e308,
+// any bit pattern), and whose handles are live, destroyed, stale, forged, null or a second world's.
 //
 // Oracle: the library's stated promises (docs/user-guide.md, "Errors" and "Handles"): no crash
 // and no sanitizer report; a refusal is a ValidationError (non-empty field and message), an
