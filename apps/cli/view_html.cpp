@@ -242,6 +242,8 @@ Recording::Recording(const io::Scene& scene, const World& world, std::vector<Bod
                             to_body_frame(world, ib, d.anchor_b)};
                 else if constexpr (std::is_same_v<D, MotorJointDef>)
                     return {"motor", d.linear_offset, Vec2d{}}; // B's origin's target in A
+                else if constexpr (std::is_same_v<D, FilterJointDef>)
+                    return {"filter", Vec2d{}, Vec2d{}}; // no anchor: drawn between origins
                 else {
                     const char* name = std::is_same_v<D, RevoluteJointDef>    ? "revolute"
                                        : std::is_same_v<D, PrismaticJointDef> ? "prismatic"

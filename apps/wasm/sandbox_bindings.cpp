@@ -101,6 +101,8 @@ json joints_json(const Sandbox& s) {
                     lb = to_body_frame(w, s.ids[b], d.anchor_b);
                 } else if constexpr (std::is_same_v<D, MotorJointDef>) {
                     la = d.linear_offset;
+                } else if constexpr (std::is_same_v<D, FilterJointDef>) {
+                    // no anchor: drawn between the bodies' origins
                 } else {
                     la = to_body_frame(w, s.ids[a], d.anchor);
                     lb = to_body_frame(w, s.ids[b], d.anchor);

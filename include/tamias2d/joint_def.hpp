@@ -177,4 +177,15 @@ struct MotorJointDef {
     friend bool operator==(const MotorJointDef&, const MotorJointDef&) = default;
 };
 
+/// A filter joint: no constraint, only "these two bodies' shapes do not collide" (DD27's
+/// joint-filtered pair, as Box2D v3's b2FilterJointDef): a ragdoll's limbs that overlap without
+/// being pinned, a bullet that passes its gun. It applies no force and never breaks; destroying
+/// it lets the two collide again.
+struct FilterJointDef {
+    BodyId body_a{}; ///< the first body
+    BodyId body_b{}; ///< the second body; not body_a
+    /// Field by field (a scene's joints compare so after a round trip through JSON).
+    friend bool operator==(const FilterJointDef&, const FilterJointDef&) = default;
+};
+
 } // namespace tamias2d

@@ -182,6 +182,10 @@ class TAMIAS2D_EXPORT World {
     /// Throws as the revolute overload does, and ValidationError (DCX_joint) for non-finite
     /// offsets, a negative force or torque, or a correction factor outside [0, 1].
     JointId create_joint(const MotorJointDef& def);
+    /// \srs{DD27} Stops body_a's and body_b's shapes from colliding (see FilterJointDef): no
+    /// constraint, no solver work; their contacts are removed and both bodies woken. Throws as
+    /// the revolute overload does for the bodies.
+    JointId create_joint(const FilterJointDef& def);
     /// Moves a motor joint's target pose (m in body_a's frame, rad; finite) and wakes its
     /// bodies; WrongKind for a joint of another kind.
     void set_motor_joint_offsets(JointId joint, Vec2d linear_offset, double angular_offset);

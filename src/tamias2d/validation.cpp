@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <utility>
 
@@ -435,6 +436,10 @@ void validate(const MotorJointDef& def, const JointBody& a, const JointBody& b) 
     if (!(def.correction_factor >= 0.0 && def.correction_factor <= 1.0))
         throw ValidationError("joint.correction_factor", def.correction_factor, "must be in [0, 1]",
                               "DCX_joint");
+}
+
+void validate(const FilterJointDef&, const JointBody& a, const JointBody& b) {
+    validate_joint_bodies(a, b, std::numeric_limits<double>::infinity());
 }
 
 void validate(const WorldDef& def) {

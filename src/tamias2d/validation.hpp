@@ -94,6 +94,8 @@ void validate(const WheelJointDef& def, const JointBody& a, const JointBody& b);
 /// DCX_joint for a motor joint: finite offsets, max force and torque >= 0, correction factor
 /// in [0, 1].
 void validate(const MotorJointDef& def, const JointBody& a, const JointBody& b);
+/// DCX_joint for a filter joint: two bodies, one of them dynamic.
+void validate(const FilterJointDef& def, const JointBody& a, const JointBody& b);
 /// DCX_joint: an anchor at offset `r` (m) from the centre of mass of a body of inverse mass and
 /// inverse inertia `inv_mass`, `inv_inertia` lies within supported::joint_lever_ratio_max
 /// radii of gyration of it (a body that does not move or turn has no such limit).

@@ -10,6 +10,7 @@
 #include "tamias2d/dynamics/body_store.hpp"
 #include "tamias2d/dynamics/contact_manager.hpp"
 #include "tamias2d/dynamics/distance_joint.hpp"
+#include "tamias2d/dynamics/filter_joint.hpp"
 #include "tamias2d/dynamics/island_sleep.hpp"
 #include "tamias2d/dynamics/joint_store.hpp"
 #include "tamias2d/dynamics/model_bridge.hpp"
@@ -271,6 +272,9 @@ JointId World::create_joint(const WheelJointDef& def) {
     return join(*impl_, def);
 }
 JointId World::create_joint(const MotorJointDef& def) {
+    return join(*impl_, def);
+}
+JointId World::create_joint(const FilterJointDef& def) {
     return join(*impl_, def);
 }
 JointId World::create_joint(const TargetJointDef& def) {

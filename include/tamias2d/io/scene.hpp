@@ -84,9 +84,10 @@ struct SceneBody {
 /// One joint of a scene, between two named bodies.
 struct SceneJoint {
     /// The definition, of the kind the "type" key names ("revolute", "distance", "prismatic",
-    /// "weld", "wheel", "motor"); its body handles are set by build_world from the names.
+    /// "weld", "wheel", "motor", "filter"); its body handles are set by build_world from the
+    /// names.
     using Definition = std::variant<RevoluteJointDef, DistanceJointDef, PrismaticJointDef,
-                                    WeldJointDef, WheelJointDef, MotorJointDef>;
+                                    WeldJointDef, WheelJointDef, MotorJointDef, FilterJointDef>;
     Definition def;     ///< the joint's definition (bodies unset: build_world sets them)
     std::string body_a; ///< the name of its first body (BodyDef::name, unique)
     std::string body_b; ///< the name of its second body

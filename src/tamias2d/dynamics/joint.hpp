@@ -12,7 +12,16 @@
 
 namespace tamias2d {
 
-enum class JointType : std::uint8_t { revolute, distance, target, prismatic, weld, wheel, motor };
+enum class JointType : std::uint8_t {
+    revolute,
+    distance,
+    target,
+    prismatic,
+    weld,
+    wheel,
+    motor,
+    filter
+};
 
 /// The part of a joint that a step writes: the impulses (the warm start of the next substep and
 /// the reaction force) and the step's preparation. The World keeps a copy of this part alone to
@@ -94,6 +103,7 @@ inline double reaction_angular_impulse(const Joint& j) {
         return j.step.motor_impulse;
     case JointType::distance:
     case JointType::target:
+    case JointType::filter:
         return 0.0;
     }
     return 0.0;
@@ -117,6 +127,7 @@ inline Vec2d reaction_impulse(const Joint& j) {
     case JointType::target:
     case JointType::weld:
     case JointType::motor:
+    case JointType::filter: // (zero: a filter joint is never solved)
         return j.step.linear_impulse;
     }
     return j.step.linear_impulse;

@@ -125,6 +125,8 @@ void warm_start_joint(const Joint& j, std::span<SolverBody> bodies) {
         return warm_start_wheel(j, bodies);
     case JointType::motor:
         return warm_start_motor(j, bodies);
+    case JointType::filter: // no constraint (StepSolver::prepare_joints leaves it out)
+        return;
     }
 }
 
@@ -145,6 +147,8 @@ void solve_joint(Joint& j, std::span<SolverBody> bodies, const Softness& rigid, 
         return solve_wheel(j, bodies, rigid, h, use_bias);
     case JointType::motor:
         return solve_motor(j, bodies, h, use_bias);
+    case JointType::filter:
+        return;
     }
 }
 

@@ -47,6 +47,8 @@ const char* joint_kind_name(JointType type) {
         return "wheel joint";
     case JointType::motor:
         return "motor joint";
+    case JointType::filter:
+        return "filter joint";
     }
     return "joint of no known kind";
 }
@@ -66,6 +68,8 @@ double joint_translation_now(const Joint& j, const BodyStore& bodies) {
 }
 
 void validate_levers(const BodyStore& bodies, const Joint& j, const std::string& at) {
+    if (j.type == JointType::filter)
+        return; // no anchor, no lever
     const auto [field_a, field_b] = anchor_fields(j.type);
     for (const bool side_a : {true, false}) {
         const std::uint32_t i = side_a ? j.body_a : j.body_b;

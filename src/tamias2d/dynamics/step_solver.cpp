@@ -265,7 +265,7 @@ void StepSolver::prepare_joints(JointStore& joints, const BodyStore& bodies) {
     joint_rotations_.resize(solver_bodies_.size());
     listed_.resize(solver_bodies_.size()); // all false: the marks are cleared above
     for (Joint& j : joints.joints) {
-        if (!j.alive)
+        if (!j.alive || j.type == JointType::filter) // (no constraint: its solver bodies stay 0)
             continue;
         prepare_joint(j, bodies, solver_index_);
         // An immovable side keeps its rotation all step (solver body 0 never turns); a moving

@@ -136,6 +136,8 @@ template <class V> void joint_fields(MotorJointDef& d, V&& v) {
     v("max_torque", d.max_torque, false);
     v("correction_factor", d.correction_factor, false);
 }
+/// A filter joint has no field beyond its bodies (it never collides them and never breaks).
+template <class V> void all_joint_fields(FilterJointDef&, V&&) {}
 /// The fields every two-body joint has.
 template <class Def, class V> void all_joint_fields(Def& d, V&& v) {
     joint_fields(d, v);
@@ -145,7 +147,7 @@ template <class Def, class V> void all_joint_fields(Def& d, V&& v) {
 
 /// The "type" names, in SceneJoint::Definition's order.
 inline constexpr std::array<std::string_view, std::variant_size_v<SceneJoint::Definition>>
-    joint_types{"revolute", "distance", "prismatic", "weld", "wheel", "motor"};
+    joint_types{"revolute", "distance", "prismatic", "weld", "wheel", "motor", "filter"};
 
 /// A default definition of the kind named `type`; false for an unknown name.
 template <std::size_t I = 0> bool make_joint_def(std::string_view type, SceneJoint::Definition& d) {
