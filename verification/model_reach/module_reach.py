@@ -252,7 +252,7 @@ def hold_scratch(root, scratch):
     rel = os.path.relpath(os.path.abspath(scratch), os.path.abspath(root))
     if not rel.startswith(".."):
         top = rel.split(os.sep, 1)[0]
-        if not any(fnmatch.fnmatch(top, pat) for pat in mutate.IGNORED):
+        if not any(fnmatch.fnmatch(top, pat) for pat in mutate.IGNORED_AT_TOP):
             raise SystemExit(f"the scratch {scratch} lies inside {root}, where the copy would "
                              "take it in: choose one outside, or under build*/")
     os.makedirs(scratch, exist_ok=True)

@@ -245,18 +245,22 @@ def run(cmd, cwd=None, timeout=None, env=None):
         return None, "timeout"
 
 
-IGNORED = (".git", "build*", "reports", "__pycache__")
+# Left out of the copy: the checkout's own builds and reports at its top (a source file may be
+# named build_*, e.g. include/tamias2d/build_info.hpp) and, at any depth, git's and Python's.
+IGNORED_AT_TOP = (".git", "build*", "reports")
+IGNORED = (".git", "__pycache__")
 
 
-def sync_tree(root, dest):
-    """Makes dest hold root's files (IGNORED names left out) and nothing else. A file whose
+def sync_tree(root, dest, top=True):
+    """Makes dest hold root's files (IGNORED names left out, IGNORED_AT_TOP at the top) and
+    nothing else. A file whose
     bytes already match is left alone, time included; any other is written anew, with the
     current time. So a file that a mutant once changed, restored since, keeps the time of its
     restoring, which is later than any object built from the mutant: a build never takes a
     mutant's object for the restored source's (keeping root's older times would), and a
     mutant left in place by an interrupted run differs from root and is rewritten."""
     def ignored(name):
-        return any(fnmatch.fnmatch(name, pat) for pat in IGNORED)
+        return any(fnmatch.fnmatch(name, pat) for pat in (IGNORED_AT_TOP if top else IGNORED))
 
     os.makedirs(dest, exist_ok=True)
     names = {n for n in os.listdir(root) if not ignored(n)}
@@ -272,7 +276,7 @@ def sync_tree(root, dest):
         if os.path.isdir(s) and not os.path.islink(s):
             if os.path.exists(d) and not os.path.isdir(d):
                 os.remove(d)
-            sync_tree(s, d)
+            sync_tree(s, d, top=False)
             continue
         if os.path.isdir(d):
             shutil.rmtree(d)

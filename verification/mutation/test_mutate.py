@@ -82,11 +82,14 @@ class Scratch(unittest.TestCase):
         with tempfile.TemporaryDirectory() as root, tempfile.TemporaryDirectory() as dest:
             os.makedirs(os.path.join(root, "src"))
             os.makedirs(os.path.join(root, "build"))
-            for rel, text in (("src/a.hpp", "a"), ("src/b.cpp", "b"), ("build/x.o", "x")):
+            for rel, text in (("src/a.hpp", "a"), ("src/b.cpp", "b"), ("build/x.o", "x"),
+                              ("src/build_info.hpp", "i")):
                 with open(os.path.join(root, rel), "w") as fh:
                     fh.write(text)
             mutate.sync_tree(root, dest)
             self.assertFalse(os.path.exists(os.path.join(dest, "build")))  # ignored
+            # A source named build_* below the top is a source, not a build.
+            self.assertTrue(os.path.isfile(os.path.join(dest, "src/build_info.hpp")))
             # a.hpp restored after a mutant (same bytes, a later time); b.cpp left mutated;
             # a file root no longer has.
             os.utime(os.path.join(dest, "src/a.hpp"), ns=(4 * 10**18, 4 * 10**18))
