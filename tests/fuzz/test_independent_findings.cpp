@@ -13,7 +13,6 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <numbers>
@@ -26,6 +25,7 @@
 #include "tamias2d/memory.hpp"
 #include "tamias2d/shape_def.hpp"
 #include "tamias2d/world.hpp"
+#include "support/cpu_time.hpp"
 
 namespace utf = boost::unit_test;
 using namespace tamias2d;
@@ -177,7 +177,8 @@ BOOST_AUTO_TEST_CASE(self_intersecting_polygons_are_refused,
 }
 
 namespace {
-/// Seconds to create a body with `n` boxes of a tile map (n / 100 rows of 100), the best of three.
+/// CPU seconds to create a body with `n` boxes of a tile map (n / 100 rows of 100), the best of
+/// three.
 double seconds_for_shapes(int n, BodyType type) {
     double best = 1e300;
     for (int trial = 0; trial < 3; ++trial) {
@@ -185,29 +186,29 @@ double seconds_for_shapes(int n, BodyType type) {
         BodyDef d;
         d.type = type;
         const BodyId b = w.create_body(d);
-        const auto t0 = std::chrono::steady_clock::now();
+        const double t0 = test::process_cpu_seconds();
         for (int i = 0; i < n; ++i)
             w.create_shape(b, box_shape(1.0, 1.0, Material{}, {double(i % 100), double(i / 100)}));
         // The mass is read once: a dynamic body's sum over its shapes is part of the cost.
         BOOST_TEST(w.mass(b) == (type == BodyType::dynamic ? double(n) : 0.0));
-        best = std::min(
-            best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+        best = std::min(best, test::process_cpu_seconds() - t0);
     }
     return best;
 }
 } // namespace
 
-// G4. Oracle: linear cost, stated as a ratio (no absolute time): 4N shapes on one body take
-// less than 8 times as long as N (4 for linear cost; 16 for the quadratic cost it had). The
-// mass of N unit boxes of density 1 is N kg.
+// G4. Oracle: linear cost, stated as a ratio of CPU times (no absolute time): 8N shapes on one
+// body take less than 24 times as long as N (8 for linear cost; 64 for the quadratic cost it
+// had: the bound lies between them with room for a shared machine's and a sanitizer's noise).
+// The mass of N unit boxes of density 1 is N kg.
 BOOST_AUTO_TEST_CASE(shapes_attach_to_one_body_in_linear_time, *utf::label("performance")) {
     for (const BodyType type : {BodyType::static_body, BodyType::dynamic}) {
         BOOST_TEST_CONTEXT((type == BodyType::dynamic ? "dynamic" : "static")) {
-            const int n = 10000;
+            const int n = 5000;
             const double t1 = seconds_for_shapes(n, type);
-            const double t4 = seconds_for_shapes(4 * n, type);
-            BOOST_TEST_MESSAGE(n << " shapes: " << t1 << " s; " << 4 * n << ": " << t4 << " s");
-            BOOST_TEST(t4 < 8.0 * t1, t4 << " s for 4N against " << t1 << " s for N");
+            const double t8 = seconds_for_shapes(8 * n, type);
+            BOOST_TEST_MESSAGE(n << " shapes: " << t1 << " s; " << 8 * n << ": " << t8 << " s");
+            BOOST_TEST(t8 < 24.0 * t1, t8 << " s for 8N against " << t1 << " s for N");
         }
     }
 }
