@@ -23,8 +23,8 @@
 #include <utility>
 #include <vector>
 
-#include "support/cpu_time.hpp"
 #include "fuzz/fuzz_support.hpp"
+#include "support/cpu_time.hpp"
 #include "tamias2d/errors.hpp"
 #include "tamias2d/io/scene.hpp"
 #include "tamias2d/memory.hpp"

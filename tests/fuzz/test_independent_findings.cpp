@@ -19,13 +19,13 @@
 #include <string>
 #include <vector>
 
+#include "support/cpu_time.hpp"
 #include "tamias2d/collision/broad_phase.hpp"
 #include "tamias2d/errors.hpp"
 #include "tamias2d/io/scene.hpp"
 #include "tamias2d/memory.hpp"
 #include "tamias2d/shape_def.hpp"
 #include "tamias2d/world.hpp"
-#include "support/cpu_time.hpp"
 
 namespace utf = boost::unit_test;
 using namespace tamias2d;
