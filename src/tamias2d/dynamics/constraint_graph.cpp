@@ -119,13 +119,16 @@ void ConstraintGraph::colour(std::span<const GraphEdge> edges, std::size_t body_
         return;
     if (R > 1 && changed == other_bodies)
         assign_streams(edges, R, cut);
-    coloured_edges_.assign(edges.begin(), edges.end());
-    coloured_regions_ = R;
-    coloured_bodies_ = body_count;
+    // Not coloured until every part below is done: a bad_alloc in any of them must not leave a
+    // record saying these edges were coloured, or the next step would reuse half-made packs.
+    coloured_regions_ = 0;
     const std::uint32_t S = streams_ = R > 1 ? R + 1 : 1;
     sequence(edges, R, body_count);
     level_sort(edges, body_count, S > 1);
     place_packs(body_count, S);
+    coloured_edges_.assign(edges.begin(), edges.end());
+    coloured_regions_ = R;
+    coloured_bodies_ = body_count;
 }
 
 void ConstraintGraph::level_sort(std::span<const GraphEdge> edges, std::size_t body_count,
