@@ -125,12 +125,6 @@ def project_items(repo):
     return {i["label"] for i in srs_items(repo) if str(i["source"].get("seed")) == "project"}
 
 
-def mutant_count(repo):
-    out = subprocess.run(["/usr/bin/python3", os.path.join(repo.root, "verification/mutation/mutate.py"),
-                          "/tmp", "--list"], capture_output=True, text=True, check=True).stdout
-    return (int(re.search(r"^(\d+) mutants$", out, re.M).group(1)),)
-
-
 def clock_sums(steps_a, rate_a, steps_b, rate_b):
     """World::time() after n steps of 1/rate: t += dt, as the engine accumulates it."""
     def after(n, rate):
@@ -295,8 +289,6 @@ FACTS = [
      lambda repo: (repo.find("scripts/fuzz.sh", r"-timeout=(\d+)"),), "scripts/fuzz.sh's timeout"),
     ("docs/verification.md", r"out-of-memory \(over (\d+) GB\)",
      lambda repo: (repo.find("scripts/fuzz.sh", r"-rss_limit_mb=(\d+)") / 1024,), "scripts/fuzz.sh's memory limit"),
-    ("docs/verification.md", r"mutate\.py /tmp --list\s+# list them \((\d+) today\)", mutant_count,
-     "the mutants mutate.py lists"),
     ("docs/scene-format.md", r"\| scene text \| (\d+) MiB \(`io::max_scene_bytes`",
      lambda repo: (repo.find("include/tamias2d/io/scene.hpp", r"max_scene_bytes = std::size_t\{(\d+)\} << 20"),),
      "io::max_scene_bytes"),
