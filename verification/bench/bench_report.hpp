@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstddef>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -14,6 +15,17 @@
 #include <nlohmann/json.hpp>
 
 namespace tamias_bench {
+
+/// The items of a comma-separated command-line list (--scenes a,b), empty ones left out.
+inline std::vector<std::string> split(const std::string& s) {
+    std::vector<std::string> out;
+    std::stringstream ss(s);
+    for (std::string item; std::getline(ss, item, ',');) {
+        if (!item.empty())
+            out.push_back(item);
+    }
+    return out;
+}
 
 inline double median(std::vector<double> v) {
     if (v.empty())

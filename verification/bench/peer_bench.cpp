@@ -568,16 +568,6 @@ TypingResult measure_typing() {
 }
 
 // ---------------------------------------------------------------------------------- main
-std::vector<std::string> split(const std::string& s) {
-    std::vector<std::string> out;
-    std::stringstream ss(s);
-    for (std::string item; std::getline(ss, item, ',');) {
-        if (!item.empty())
-            out.push_back(item);
-    }
-    return out;
-}
-
 [[noreturn]] void usage(const std::string& why) {
     std::cerr << "tamias_bench: " << why << "\n"
               << "usage: tamias_bench [<out_dir>] [--scenes a,b] [--reps N] [--quick]\n"

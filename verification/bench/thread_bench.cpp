@@ -36,6 +36,7 @@
 #include <vector>
 
 #include "bench/bench_engines.hpp"
+#include "bench/bench_report.hpp"
 #include "bench/bench_scenes.hpp"
 #include "bench/remote_engine.hpp"
 
@@ -87,21 +88,6 @@ struct Run {
                                           : make_remote_engine(engine, d, threads);
     }
 };
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-std::vector<std::string> split(const std::string& s) {
-    std::vector<std::string> out;
-    std::stringstream ss(s);
-    for (std::string item; std::getline(ss, item, ',');)
-        if (!item.empty())
-            out.push_back(item);
-    return out;
-}
 
 [[noreturn]] void usage() {
     std::fprintf(stderr, "usage: tamias_thread_bench [--scenes a,b] [--threads 1,2] [--reps N] "

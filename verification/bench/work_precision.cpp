@@ -586,16 +586,6 @@ Dominance dominance(const SceneResult& r, const Measure& m) {
 }
 
 // ---------------------------------------------------------------------------------- main
-std::vector<std::string> split(const std::string& s) {
-    std::vector<std::string> out;
-    std::stringstream ss(s);
-    for (std::string item; std::getline(ss, item, ',');) {
-        if (!item.empty())
-            out.push_back(item);
-    }
-    return out;
-}
-
 [[noreturn]] void usage(const std::string& why) {
     std::cerr << "tamias_work_precision: " << why << "\n"
               << "usage: tamias_work_precision [<out_dir>] [--quick] [--scenes a,b]\n"
