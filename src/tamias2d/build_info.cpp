@@ -1,6 +1,6 @@
 #include "tamias2d/build_info.hpp"
 
-#include "tamias2d/dynamics/wide_contact_solver.hpp"
+#include "tamias2d/dynamics/contacts/wide_contact_solver.hpp"
 
 namespace tamias2d {
 

@@ -250,7 +250,7 @@ FACTS = [
     ("docs/performance.md", r"`joint_hertz` (\d+), `joint_damping_ratio`\s+(\d+)",
      constants(const(WORLD_DEF, "joint_hertz"), const(WORLD_DEF, "joint_damping_ratio")), "WorldDef's defaults"),
     ("docs/collision.md", r"read only when in use \((\d+) bytes\)",
-     lambda repo: (repo.find("src/tamias2d/dynamics/contact.hpp", r"sizeof\(Contact\) == (\d+)"),),
+     lambda repo: (repo.find("src/tamias2d/dynamics/contacts/contact.hpp", r"sizeof\(Contact\) == (\d+)"),),
      "contact.hpp's static_assert"),
     ("docs/collision.md", r"scan for none, (\d+) %, (\d+) %, (\d+) % and all leaves marked", marked_shares,
      "the shares dynamic_tree/marked_pairs_equal_brute_force marks"),

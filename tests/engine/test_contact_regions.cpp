@@ -15,9 +15,9 @@
 #include "support/random_contacts.hpp"
 #include "support/sequential_pass.hpp"
 #include "tamias2d/dynamics/constraint_graph.hpp"
-#include "tamias2d/dynamics/contact_iteration.hpp"
-#include "tamias2d/dynamics/pack_streams.hpp"
-#include "tamias2d/dynamics/wide_contact_solver.hpp"
+#include "tamias2d/dynamics/contacts/contact_iteration.hpp"
+#include "tamias2d/dynamics/contacts/pack_streams.hpp"
+#include "tamias2d/dynamics/contacts/wide_contact_solver.hpp"
 
 namespace utf = boost::unit_test;
 using namespace tamias2d;

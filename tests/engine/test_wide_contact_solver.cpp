@@ -13,10 +13,10 @@
 #include "support/random_contacts.hpp"
 #include "support/sequential_pass.hpp"
 #include "tamias2d/dynamics/constraint_graph.hpp"
-#include "tamias2d/dynamics/contact_iteration.hpp"
-#include "tamias2d/dynamics/contact_manager.hpp"
-#include "tamias2d/dynamics/restitution.hpp"
-#include "tamias2d/dynamics/wide_contact_solver.hpp"
+#include "tamias2d/dynamics/contacts/contact_iteration.hpp"
+#include "tamias2d/dynamics/contacts/contact_manager.hpp"
+#include "tamias2d/dynamics/contacts/restitution.hpp"
+#include "tamias2d/dynamics/contacts/wide_contact_solver.hpp"
 
 namespace utf = boost::unit_test;
 using namespace tamias2d;

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "support/random_contacts.hpp"
-#include "tamias2d/dynamics/contact_iteration.hpp"
+#include "tamias2d/dynamics/contacts/contact_iteration.hpp"
 
 namespace tamias2d::test {
 

@@ -4,20 +4,21 @@
 //                            Boost.Units quantities, the labelled model function, unwrapped);
 //   PlainOps                 the same formulas written directly on doubles and packs, in the
 //                            same operation order.
-// The loop is not a copy: it is the engine's own pack loops (tamias2d/dynamics/wide_pack_loops.hpp,
-// contact_iteration.hpp) instantiated with each, plus the substep integration (IM1/IM2), on a
-// resting pyramid's contact graph packed by the engine. Same algorithm, same data, same order:
-// the final states must be bitwise equal (checked), so the only difference left is the typing.
+// The loop is not a copy: it is the engine's own pack loops
+// (tamias2d/dynamics/contacts/wide_pack_loops.hpp, contact_iteration.hpp) instantiated with each,
+// plus the substep integration (IM1/IM2), on a resting pyramid's contact graph packed by the
+// engine. Same algorithm, same data, same order: the final states must be bitwise equal (checked),
+// so the only difference left is the typing.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
-#include "tamias2d/dynamics/contact_constraint.hpp"
+#include "tamias2d/dynamics/contacts/contact_constraint.hpp"
+#include "tamias2d/dynamics/contacts/wide_contact_constraint.hpp"
+#include "tamias2d/dynamics/contacts/wide_pack_loops.hpp"
 #include "tamias2d/dynamics/model_bridge.hpp"
 #include "tamias2d/dynamics/solver_body.hpp"
-#include "tamias2d/dynamics/wide_contact_constraint.hpp"
-#include "tamias2d/dynamics/wide_pack_loops.hpp"
 
 namespace tamias_bench::typing {
 

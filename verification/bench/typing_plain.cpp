@@ -1,8 +1,8 @@
 // The plain-double instantiation of the typing kernel, and its data.
 #include "typing_kernel.hpp"
 
-#include "tamias2d/dynamics/restitution.hpp"
-#include "tamias2d/dynamics/wide_contact_solver.hpp"
+#include "tamias2d/dynamics/contacts/restitution.hpp"
+#include "tamias2d/dynamics/contacts/wide_contact_solver.hpp"
 
 namespace tamias_bench::typing {
 

@@ -148,11 +148,14 @@ def mutants_of(relpath, text):
 def all_mutants(root):
     muts = []
     for d in TARGET_DIRS:
-        for f in sorted(os.listdir(os.path.join(root, d))):
-            if f.endswith((".hpp", ".cpp")):
-                rel = f"{d}/{f}"
-                with open(os.path.join(root, rel), encoding="utf-8") as fh:
-                    muts += mutants_of(rel, fh.read())
+        # The whole tree under each target: dynamics/ keeps its joints and contacts in folders.
+        rels = []
+        for here, _dirs, files in os.walk(os.path.join(root, d)):
+            sub = os.path.relpath(here, root)
+            rels += [f"{sub}/{f}" for f in files if f.endswith((".hpp", ".cpp"))]
+        for rel in sorted(rels):
+            with open(os.path.join(root, rel), encoding="utf-8") as fh:
+                muts += mutants_of(rel, fh.read())
     for i, m in enumerate(muts):
         m["id"] = i
     return muts

@@ -277,7 +277,7 @@ class Judges(unittest.TestCase):
                            "determinism_tests@determinism", "reliability_tests@determinism")]
 
     def test_golden_hashes_judge_every_mutant_of_the_model_and_the_dynamics(self):
-        for rel in ("src/tamias2d/dynamics/joint_store.cpp", "src/tamias2d/model/x.hpp"):
+        for rel in ("src/tamias2d/dynamics/joints/joint_store.cpp", "src/tamias2d/model/x.hpp"):
             with self.subTest(rel=rel):
                 self.assertEqual(mutate.entries_of(self.CATALOGUE, ["IM3"], rel),
                                  {"engine_tests@IM3": "engine_tests",

@@ -5,8 +5,8 @@
 
 #include "tamias2d/collision/time_of_impact.hpp"
 #include "tamias2d/dynamics/body_store.hpp"
-#include "tamias2d/dynamics/contact_manager.hpp"
-#include "tamias2d/dynamics/joint_store.hpp"
+#include "tamias2d/dynamics/contacts/contact_manager.hpp"
+#include "tamias2d/dynamics/joints/joint_store.hpp"
 #include "tamias2d/dynamics/model_bridge.hpp"
 #include "tamias2d/dynamics/shape_store.hpp"
 

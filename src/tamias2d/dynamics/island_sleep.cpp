@@ -4,8 +4,8 @@
 #include <limits>
 
 #include "tamias2d/dynamics/body_store.hpp"
-#include "tamias2d/dynamics/contact_manager.hpp"
-#include "tamias2d/dynamics/joint_store.hpp"
+#include "tamias2d/dynamics/contacts/contact_manager.hpp"
+#include "tamias2d/dynamics/joints/joint_store.hpp"
 
 namespace tamias2d {
 

@@ -5,11 +5,11 @@
 #include <cstddef>
 
 #include "tamias2d/dynamics/body_store.hpp"
-#include "tamias2d/dynamics/contact_manager.hpp"
-#include "tamias2d/dynamics/joint_solver.hpp"
-#include "tamias2d/dynamics/joint_store.hpp"
+#include "tamias2d/dynamics/contacts/contact_manager.hpp"
+#include "tamias2d/dynamics/contacts/restitution.hpp"
+#include "tamias2d/dynamics/joints/joint_solver.hpp"
+#include "tamias2d/dynamics/joints/joint_store.hpp"
 #include "tamias2d/dynamics/model_bridge.hpp"
-#include "tamias2d/dynamics/restitution.hpp"
 #include "tamias2d/dynamics/shape_store.hpp"
 #include "tamias2d/math/prefetch.hpp"
 #include "tamias2d/parallel/step_tasks.hpp"

@@ -76,7 +76,7 @@ inline bool all(WideMask m) {
 }
 
 // The mask vocabulary for one lane (V = double), so that the contact iteration is written once
-// as a template over V (dynamics/contact_iteration.hpp).
+// as a template over V (dynamics/contacts/contact_iteration.hpp).
 inline bool any(bool m) {
     return m;
 }

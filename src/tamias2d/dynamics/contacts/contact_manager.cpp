@@ -1,0 +1,456 @@
+#include "tamias2d/dynamics/contacts/contact_manager.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "tamias2d/collision/narrow_phase.hpp"
+#include "tamias2d/dynamics/body_store.hpp"
+#include "tamias2d/dynamics/joints/joint_store.hpp"
+#include "tamias2d/dynamics/shape_store.hpp"
+#include "tamias2d/dynamics/state_hasher.hpp"
+#include "tamias2d/dynamics/step_context.hpp"
+#include "tamias2d/math/prefetch.hpp"
+#include "tamias2d/model/dd27_collision_filter.hpp"
+#include "tamias2d/parallel/step_tasks.hpp"
+
+namespace tamias2d {
+
+/// DD27's rule on two shapes' filters.
+bool admits(const Filter& a, const Filter& b) {
+    return model::dd27::should_collide({a.category_bits, a.mask_bits, a.group_index},
+                                       {b.category_bits, b.mask_bits, b.group_index});
+}
+
+namespace {
+
+/// What the colouring needs of a contact (EdgeInput).
+ContactManager::EdgeInput edge_input(const Contact& c) {
+    // (The separations only matter with two points: read for one, or none, they would fetch
+    // the point lines of a pair that is apart.)
+    const int n = c.manifold.count;
+    const PathGroup group =
+        n == 2 ? path_group(n, c.manifold.points[0].separation, c.manifold.points[1].separation)
+               : path_group(n, 0.0, 0.0);
+    return {c.body_a, c.body_b, group, c.touching, c.restitution > 0.0};
+}
+
+} // namespace
+
+void ContactManager::destroy(std::uint32_t i, BodyStore& bodies, const ShapeStore& shapes) {
+    infos_stale_ = true; // a destroyed body's or shape's contacts leave the report at once
+    Contact& c = contacts[i];
+    if (c.touching) {
+        bodies.wake(c.body_a); // what held the other up, or pushed it, is gone
+        bodies.wake(c.body_b);
+        end_events.push_back({shapes.id(c.shape_a), shapes.id(c.shape_b),
+                              bodies.id(shapes.shapes[c.shape_a].body),
+                              bodies.id(shapes.shapes[c.shape_b].body)});
+    }
+    index_.erase(Contact::key(c.shape_a, c.shape_b));
+    const std::uint32_t last = std::uint32_t(contacts.size() - 1);
+    if (i != last) {
+        contacts[i] = contacts[last];
+        warm_impulses[i] = warm_impulses[last];
+        total_impulses[i] = total_impulses[last];
+        bases[i] = bases[last];
+        edge_inputs[i] = edge_inputs[last];
+        index_.assign(Contact::key(contacts[i].shape_a, contacts[i].shape_b), i);
+    }
+    contacts.pop_back();
+    warm_impulses.pop_back();
+    total_impulses.pop_back();
+    bases.pop_back();
+    edge_inputs.pop_back();
+}
+
+void ContactManager::destroy_of_shape(std::uint32_t s, BodyStore& bodies,
+                                      const ShapeStore& shapes) {
+    for (std::uint32_t i = std::uint32_t(contacts.size()); i-- > 0;) {
+        if (contacts[i].shape_a == s || contacts[i].shape_b == s)
+            destroy(i, bodies, shapes);
+    }
+}
+
+void ContactManager::wake_touching(std::uint32_t i, BodyStore& bodies) const {
+    for (const Contact& c : contacts) {
+        if (c.touching && (c.body_a == i || c.body_b == i)) {
+            bodies.wake(c.body_a);
+            bodies.wake(c.body_b);
+        }
+    }
+}
+
+void ContactManager::destroy_between(std::uint32_t a, std::uint32_t b, BodyStore& bodies,
+                                     const ShapeStore& shapes) {
+    for (std::uint32_t i = std::uint32_t(contacts.size()); i-- > 0;) {
+        const Contact& c = contacts[i];
+        if ((c.body_a == a && c.body_b == b) || (c.body_a == b && c.body_b == a))
+            destroy(i, bodies, shapes);
+    }
+}
+
+bool ContactManager::should_collide(const BodyStore& bodies, const ShapeStore& shapes,
+                                    const JointStore& joints, std::uint32_t sa,
+                                    std::uint32_t sb) const {
+    const std::uint32_t ia = shapes.shapes[sa].body, ib = shapes.shapes[sb].body;
+    const Body& a = bodies.bodies[ia];
+    const Body& b = bodies.bodies[ib];
+    if (ia == ib)
+        return false;
+    if (a.type != BodyType::dynamic && b.type != BodyType::dynamic)
+        return false;
+    if (joints.live() != 0 && joints.filters(ia, ib))
+        return false;
+    const ShapeDef& da = shapes.defs[sa];
+    const ShapeDef& db = shapes.defs[sb];
+    if (da.is_sensor || db.is_sensor)
+        return false;
+    return admits(da.filter, db.filter) && custom_admits(shapes.id(sa), shapes.id(sb));
+}
+
+bool ContactManager::custom_admits(ShapeId a, ShapeId b) const {
+    if (!custom_filter)
+        return true;
+    try {
+        return custom_filter(a, b);
+    } catch (...) {
+        // Unwinding from here would leave the step half done (bodies moved, pairs the broad
+        // phase has reported and forgotten never made contacts): refuse the pair, finish.
+        if (!filter_error_)
+            filter_error_ = std::current_exception();
+        return false;
+    }
+}
+
+void ContactManager::rethrow_filter_error() {
+    if (filter_error_)
+        std::rethrow_exception(std::exchange(filter_error_, nullptr));
+}
+
+void ContactManager::refilter(std::uint32_t s, BodyStore& bodies, const ShapeStore& shapes,
+                              const JointStore& joints) {
+    // Every answer first, then the destructions: a filter that throws changes nothing.
+    forget_filter_error();
+    doomed_.clear();
+    for (std::uint32_t i = std::uint32_t(contacts.size()); i-- > 0;) {
+        const Contact& c = contacts[i];
+        if ((c.shape_a == s || c.shape_b == s) &&
+            !should_collide(bodies, shapes, joints, c.shape_a, c.shape_b))
+            doomed_.push_back(i);
+    }
+    rethrow_filter_error();
+    for (const std::uint32_t i : doomed_) // descending: each swap-removal moves a kept one
+        destroy(i, bodies, shapes);
+}
+
+void ContactManager::find_new(const BodyStore& bodies, ShapeStore& shapes,
+                              const JointStore& joints) {
+    // Pairs a bad_alloc left unexamined in the last call first (the broad phase has forgotten
+    // their moves and would not report them again): those whose shapes still exist and whose
+    // fat boxes still overlap, merged with the new ones in the broad phase's sorted order.
+    std::size_t kept = 0;
+    for (std::size_t i = pending_begin_; i < pending_end_; ++i) {
+        const Shape& a = shapes.shapes[new_pairs_[i].first];
+        const Shape& b = shapes.shapes[new_pairs_[i].second];
+        if (a.alive() && b.alive() && overlaps(a.fat_box, b.fat_box))
+            new_pairs_[kept++] = new_pairs_[i];
+    }
+    new_pairs_.resize(kept);
+    pending_begin_ = 0;
+    pending_end_ = kept;
+    shapes.broad_phase.update_pairs(new_pairs_);
+    if (kept > 0) {
+        const auto middle = new_pairs_.begin() + static_cast<std::ptrdiff_t>(kept);
+        std::inplace_merge(new_pairs_.begin(), middle, new_pairs_.end());
+        new_pairs_.erase(std::unique(new_pairs_.begin(), new_pairs_.end()), new_pairs_.end());
+    }
+    pending_end_ = new_pairs_.size();
+    // Most pairs the broad phase reports are contacts already (rain_16k: 78 %), so the index
+    // is asked first, its slots eight pairs ahead: one line per pair, where the filter's shapes
+    // and bodies are four scattered lines.
+    constexpr std::size_t ahead = 8;
+    for (std::size_t i = 0; i < new_pairs_.size(); ++i) {
+        if (i + ahead < new_pairs_.size())
+            index_.prefetch(
+                Contact::key(new_pairs_[i + ahead].first, new_pairs_[i + ahead].second));
+        pending_begin_ = i; // until this pair is done: a bad_alloc below leaves it pending
+        const auto [ua, ub] = new_pairs_[i];
+        const std::uint32_t sa = std::min(ua, ub), sb = std::max(ua, ub);
+        const std::uint64_t key = Contact::key(sa, sb);
+        if (index_.contains(key) || !should_collide(bodies, shapes, joints, sa, sb))
+            continue;
+        Contact c;
+        c.shape_a = sa;
+        c.shape_b = sb;
+        c.body_a = shapes.shapes[sa].body;
+        c.body_b = shapes.shapes[sb].body;
+        // Combination rules (docs/design.md): friction geometric mean, restitution max.
+        const Material& ma = shapes.defs[sa].material;
+        const Material& mb = shapes.defs[sb].material;
+        c.friction = std::sqrt(ma.friction * mb.friction);
+        c.restitution = std::max(ma.restitution, mb.restitution);
+        // All the memory first, so that a bad_alloc leaves the parallel arrays and the index
+        // agreeing.
+        contacts.reserve_more(1);
+        warm_impulses.reserve_more(1);
+        total_impulses.reserve_more(1);
+        bases.reserve_more(1);
+        index_.insert(key, std::uint32_t(contacts.size()));
+        contacts.push_back(c);
+        warm_impulses.emplace_back();
+        total_impulses.emplace_back();
+        bases.emplace_back();
+    }
+    pending_begin_ = pending_end_ = 0;
+}
+
+namespace {
+
+/// What the narrow phase found for one contact.
+enum class Narrowed : std::uint8_t {
+    kept,      ///< not updated: both bodies asleep or static (sleeping on)
+    separated, ///< the fat boxes no longer overlap: the contact is to be destroyed
+    same,      ///< updated; touching as before
+    changed    ///< updated; began or stopped touching (an event, and with sleeping a wake)
+};
+
+/// \srs{R7} One contact's narrow phase: its manifold, its warm-start impulses, its basis and
+/// its edge input, all its own (so contacts may be updated on different threads).
+inline Narrowed narrow_contact(Contact& c, ContactImpulses& warm, ManifoldBasis& basis,
+                               ContactManager::EdgeInput& edge, const Shape& sa, const Shape& sb,
+                               double speculative_distance, double reuse_distance) {
+    if (!overlaps(sa.fat_box, sb.fat_box))
+        return Narrowed::separated;
+    // A touching manifold whose bodies have barely moved against each other is kept, with the
+    // same points and so the same warm start (manifold_reuse.hpp).
+    if (reuse_distance > 0.0 && c.manifold.count > 0 &&
+        reuse_manifold(c.manifold, basis, sa.body_xf.q, sb.body_xf.q, sa.body_center,
+                       sb.body_center, reuse_distance)) {
+        edge = edge_input(c);
+        return Narrowed::same;
+    }
+    const CollideInput in{sa.body_xf, sa.body_center, sb.body_xf, sb.body_center,
+                          speculative_distance};
+    // Warm starting needs only the old points' ids and impulses: the manifold itself is
+    // rewritten in place (building a new one and copying it in cost a fifth of this loop).
+    // Only the points in use are read: a pair that stays apart reads the first line only.
+    const int old_count = c.manifold.count;
+    std::uint32_t old_id[2] = {};
+    double old_n[2] = {}, old_t[2] = {};
+    for (int k = 0; k < old_count; ++k) {
+        old_id[k] = c.manifold.points[k].id.key();
+        old_n[k] = warm.normal[k];
+        old_t[k] = warm.tangent[k];
+    }
+    collide(sa.collider, sb.collider, in, c.manifold, &c.hint);
+    // \srs{IM7} Warm starting: a point keeps its impulses when the same features touch
+    // again, and starts from none otherwise.
+    // (Chosen in registers, then stored: zeroing first made GCC call memset twice.)
+    for (int j = 0; j < c.manifold.count; ++j) {
+        double normal = 0.0, tangent = 0.0;
+        for (int k = 0; k < old_count; ++k) {
+            if (old_id[k] == c.manifold.points[j].id.key()) {
+                normal = old_n[k];
+                tangent = old_t[k];
+            }
+        }
+        warm.normal[j] = normal;
+        warm.tangent[j] = tangent;
+    }
+    if (reuse_distance > 0.0)
+        record_basis(basis, c.manifold, sa.body_xf.q, sb.body_xf.q, sa.body_center, sb.body_center);
+    const bool was = c.touching;
+    c.touching = c.manifold.count > 0;
+    edge = edge_input(c);
+    return c.touching != was ? Narrowed::changed : Narrowed::same;
+}
+
+/// Asks for the lines of a contact's shapes that its narrow phase reads first.
+inline void prefetch_shapes(const Contact& c, const LargeArray<Shape>& shape) {
+    for (const Shape* s : {&shape[c.shape_a], &shape[c.shape_b]}) {
+        prefetch(&s->fat_box);
+        prefetch(&s->body_xf);
+        prefetch(&s->collider.pairs[0]);
+        prefetch(&s->collider.pairs[1]);
+    }
+}
+
+} // namespace
+
+void ContactManager::update(BodyStore& bodies, const ShapeStore& shapes, const StepContext& step) {
+    const bool sleeping = step.sleeping;
+    const double speculative_distance = step.def.speculative_distance;
+    const double reuse_distance = step.def.manifold_reuse_distance;
+    const StepTasks& tasks = step.tasks;
+    doomed_.clear();
+    const auto count = std::uint32_t(contacts.size()); // the loop adds and removes none
+    edge_inputs.resize(count);
+    constexpr std::uint32_t block = 128; // contacts: ~5 us of work
+    if (tasks.parallel() && count > block) {
+        update_in_blocks(bodies, shapes, sleeping, speculative_distance, reuse_distance, tasks,
+                         block);
+    } else {
+        const auto& shape = shapes.shapes;
+        constexpr std::uint32_t ahead = 6; // contacts: the shapes' lines arrive before use
+        for (std::uint32_t i = 0; i < count; ++i) {
+            if (i + ahead < count) {
+                const Contact& next = contacts[i + ahead];
+                // (A contact kept as it is, below, reads no shape.)
+                if (!sleeping || bodies.active(next.body_a) || bodies.active(next.body_b))
+                    prefetch_shapes(next, shape);
+            }
+            Contact& c = contacts[i];
+            if (sleeping && !bodies.active(c.body_a) && !bodies.active(c.body_b))
+                continue; // its edge input stands too, from its last update
+            const Narrowed r =
+                narrow_contact(c, warm_impulses[i], bases[i], edge_inputs[i], shape[c.shape_a],
+                               shape[c.shape_b], speculative_distance, reuse_distance);
+            if (r == Narrowed::separated)
+                doomed_.push_back(i);
+            else if (r == Narrowed::changed)
+                touch_changed(c, bodies, shapes, sleeping);
+        }
+    }
+    // Descending, so swap-removal never moves a contact that is still to be removed.
+    for (auto it = doomed_.rbegin(); it != doomed_.rend(); ++it)
+        destroy(*it, bodies, shapes); // moves the last contact into the gap
+}
+
+void ContactManager::touch_changed(const Contact& c, BodyStore& bodies, const ShapeStore& shapes,
+                                   bool sleeping) {
+    if (sleeping) { // a body met, or left, another: both islands wake
+        bodies.wake(c.body_a);
+        bodies.wake(c.body_b);
+    }
+    (c.touching ? begin_events : end_events)
+        .push_back({shapes.id(c.shape_a), shapes.id(c.shape_b),
+                    bodies.id(shapes.shapes[c.shape_a].body),
+                    bodies.id(shapes.shapes[c.shape_b].body)});
+}
+
+// The serial loop's results and order, in two passes: the contacts' own updates in parallel
+// blocks, then in contact order what depends on order (the doomed list, the events, the wakes).
+// A wake in the serial loop can make a later contact of a sleeping body due for update: the
+// second pass updates such a contact then, from the same inputs (the shapes do not change in
+// between), so the same contacts are updated, to the same bits, as by the serial loop.
+void ContactManager::update_in_blocks(BodyStore& bodies, const ShapeStore& shapes, bool sleeping,
+                                      double speculative_distance, double reuse_distance,
+                                      const StepTasks& tasks, std::uint32_t block) {
+    const auto& shape = shapes.shapes;
+    const auto count = std::uint32_t(contacts.size());
+    if (outcomes_.size() < count)
+        outcomes_.resize(count); // only while the scene grows
+    auto run = [&](int first, int last) {
+        const std::uint32_t begin = std::uint32_t(first) * block;
+        const std::uint32_t end = std::min(count, std::uint32_t(last) * block);
+        constexpr std::uint32_t ahead = 6;
+        for (std::uint32_t i = begin; i < end; ++i) {
+            if (i + ahead < end) {
+                const Contact& next = contacts[i + ahead];
+                if (!sleeping || bodies.active(next.body_a) || bodies.active(next.body_b))
+                    prefetch_shapes(next, shape);
+            }
+            Contact& c = contacts[i];
+            if (sleeping && !bodies.active(c.body_a) && !bodies.active(c.body_b)) {
+                outcomes_[i] = std::uint8_t(Narrowed::kept);
+                continue;
+            }
+            outcomes_[i] = std::uint8_t(
+                narrow_contact(c, warm_impulses[i], bases[i], edge_inputs[i], shape[c.shape_a],
+                               shape[c.shape_b], speculative_distance, reuse_distance));
+        }
+    };
+    tasks.for_each_block(blocks_of(count, block), run);
+    for (std::uint32_t i = 0; i < count; ++i) {
+        auto r = Narrowed(outcomes_[i]);
+        Contact& c = contacts[i];
+        if (r == Narrowed::kept) {
+            if (!bodies.active(c.body_a) && !bodies.active(c.body_b))
+                continue;
+            r = narrow_contact(c, warm_impulses[i], bases[i], edge_inputs[i], shape[c.shape_a],
+                               shape[c.shape_b], speculative_distance, reuse_distance);
+        }
+        if (r == Narrowed::separated)
+            doomed_.push_back(i);
+        else if (r == Narrowed::changed)
+            touch_changed(c, bodies, shapes, sleeping);
+    }
+}
+
+void ContactManager::unprepared_constraint(ContactConstraint& cc, const GraphEdge& edge,
+                                           std::uint32_t contact) const {
+    const Contact& c = contacts[contact];
+    const ContactImpulses& warm = warm_impulses[contact];
+    cc.body_a = edge.body_a;
+    cc.body_b = edge.body_b;
+    cc.contact = contact;
+    cc.normal = c.manifold.normal;
+    cc.friction = c.friction;
+    cc.restitution = c.restitution;
+    cc.count = c.manifold.count;
+    for (int j = 0; j < cc.count; ++j) {
+        const ManifoldPoint& mp = c.manifold.points[j];
+        ContactConstraintPoint& cp = cc.points[j];
+        cp.r_a = mp.anchor_a;
+        cp.r_b = mp.anchor_b;
+        cp.base_separation = mp.separation;
+        cp.normal_impulse = warm.normal[j];
+        cp.tangent_impulse = warm.tangent[j];
+    }
+}
+
+const std::vector<ContactInfo>& ContactManager::report(const BodyStore& bodies,
+                                                       const ShapeStore& shapes) {
+    if (!infos_stale_)
+        return infos_;
+    infos_stale_ = false;
+    infos_.clear();
+    for (std::size_t i = 0; i < contacts.size(); ++i) {
+        const Contact& c = contacts[i];
+        if (!c.touching)
+            continue;
+        const ContactImpulses& total = total_impulses[i];
+        ContactInfo ci;
+        ci.shape_a = shapes.id(c.shape_a);
+        ci.shape_b = shapes.id(c.shape_b);
+        ci.body_a = bodies.id(shapes.shapes[c.shape_a].body);
+        ci.body_b = bodies.id(shapes.shapes[c.shape_b].body);
+        ci.normal = c.manifold.normal;
+        ci.point_count = c.manifold.count;
+        for (int j = 0; j < c.manifold.count; ++j) {
+            ci.points[j] = {c.manifold.points[j].point, c.manifold.points[j].separation,
+                            total.normal[j], total.tangent[j]};
+        }
+        infos_.push_back(ci);
+    }
+    return infos_;
+}
+
+void ContactManager::hash(StateHasher& hs, bool reuse) const {
+    hs(std::uint64_t(size()));
+    for (std::size_t i = 0; i < size(); ++i) {
+        const Contact& c = contacts[i];
+        hs(std::uint64_t(c.shape_a) << 32 | c.shape_b);
+        hs(std::uint64_t(c.manifold.count));
+        for (int j = 0; j < c.manifold.count; ++j) {
+            hs(c.manifold.points[j].point);
+            hs(c.manifold.points[j].separation);
+            hs(warm_impulses[i].normal[j]);
+            hs(warm_impulses[i].tangent[j]);
+        }
+        if (reuse && c.manifold.count > 0) {
+            // What a reused manifold is computed from (manifold_reuse.hpp).
+            const ManifoldBasis& b = bases[i];
+            for (const double x : {b.q_a.c, b.q_a.s, b.q_b.c, b.q_b.s})
+                hs(x);
+            hs(b.b_in_a);
+            for (int j = 0; j < c.manifold.count; ++j) {
+                hs(b.separation[j]);
+                hs(b.on_a[j]);
+            }
+        }
+    }
+}
+
+} // namespace tamias2d

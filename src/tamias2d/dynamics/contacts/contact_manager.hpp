@@ -1,0 +1,142 @@
+// The world's contacts (internal): one per pair of shapes whose fat boxes overlap, with the
+// arrays kept parallel to them (edge inputs, warm-start and total impulses), the index by shape
+// pair, the begin/end events and the report. Only this class knows that the arrays are
+// parallel: contacts are added and swap-removed here. Box2D keeps the same concerns in
+// contact.c.
+#pragma once
+
+#include <cstdint>
+#include <exception>
+#include <functional>
+#include <utility>
+#include <vector>
+
+#include "tamias2d/collision/manifold_reuse.hpp"
+#include "tamias2d/contact_info.hpp"
+#include "tamias2d/dynamics/constraint_graph.hpp"
+#include "tamias2d/dynamics/contacts/contact.hpp"
+#include "tamias2d/dynamics/contacts/contact_constraint.hpp"
+#include "tamias2d/memory/large_array.hpp"
+#include "tamias2d/memory/pair_map.hpp"
+#include "tamias2d/shape_def.hpp"
+
+namespace tamias2d {
+
+struct StateHasher;
+struct BodyStore;
+class ShapeStore;
+class JointStore;
+class StepTasks;
+struct StepContext;
+
+/// DD27's rule: whether two shapes' filters let them collide (or a sensor detect a shape).
+bool admits(const Filter& a, const Filter& b);
+
+class ContactManager {
+  public:
+    /// Per contact, indexed alike: what the colouring needs of it, written by the narrow phase
+    /// while the contact is in cache. (Reading it back from the contacts cost a pass over most
+    /// of their lines: 3.8 MB per step at 16k boxes.)
+    struct EdgeInput {
+        std::uint32_t body_a, body_b;
+        PathGroup group;
+        bool touching, bounces;
+    };
+
+    LargeArray<Contact> contacts;
+    std::vector<EdgeInput> edge_inputs;
+    /// Per contact, indexed alike: the accumulated impulses (warm start) and the last step's
+    /// totals (contact report).
+    LargeArray<ContactImpulses> warm_impulses, total_impulses;
+    /// Per contact, indexed alike: the poses its manifold was computed at (manifold reuse).
+    LargeArray<ManifoldBasis> bases;
+    std::vector<ContactEvent> begin_events, end_events;
+    /// The user's filter, asked for each new pair the rules admit (empty: none).
+    std::function<bool(ShapeId, ShapeId)> custom_filter;
+    /// The user's filter's answer for shapes a and b (true when there is none). An exception
+    /// it throws counts as a refusal and the first is kept, so that a step asking it is still
+    /// a whole step; the step then rethrows it (rethrow_filter_error).
+    bool custom_admits(ShapeId a, ShapeId b) const;
+    /// Rethrows, and forgets, the first exception the user's filter threw since the last call
+    /// or forget_filter_error; nothing when it threw none.
+    void rethrow_filter_error();
+    void forget_filter_error() { filter_error_ = nullptr; }
+    /// Whether the rules and the filters let shapes sa and sb collide (DD27): not two shapes of
+    /// one body, two immovable bodies or bodies a joint keeps apart, no sensor (sensors have
+    /// no contacts: SensorOverlaps), and admitted by the filters and the user's filter.
+    bool should_collide(const BodyStore& bodies, const ShapeStore& shapes, const JointStore& joints,
+                        std::uint32_t sa, std::uint32_t sb) const;
+
+    std::uint32_t size() const { return std::uint32_t(contacts.size()); }
+
+    /// New contacts for the pairs the broad phase found since the last step (creation order),
+    /// except between two shapes of one body, two immovable bodies, or bodies a joint keeps
+    /// from colliding.
+    void find_new(const BodyStore& bodies, ShapeStore& shapes, const JointStore& joints);
+    /// \srs{R7} Narrow phase for every contact; contacts whose fat boxes separated are
+    /// destroyed. With sleeping on, a contact between bodies that do not move this step (asleep
+    /// or static) is kept as it is: neither has moved since it was last updated. With more
+    /// than one worker the contacts are updated in parallel blocks; the results, the events and
+    /// their order are those of one thread, bit for bit. A touching contact whose bodies have
+    /// moved less than `reuse_distance` (m) against each other since its manifold was computed
+    /// keeps that manifold, its separations brought up to date (manifold_reuse.hpp; 0: never).
+    /// (`reuse_distance`: StepContext::def's manifold_reuse_distance; the speculative
+    /// distance is its speculative_distance.)
+    void update(BodyStore& bodies, const ShapeStore& shapes, const StepContext& step);
+    /// Every body asleep: every contact stands as it is, its edge input included.
+    void keep_all() { edge_inputs.resize(contacts.size()); }
+    /// Destroys every contact of shape s (its end events and wakes included).
+    void destroy_of_shape(std::uint32_t s, BodyStore& bodies, const ShapeStore& shapes);
+    /// Destroys every contact between bodies a and b (a joint now keeps them apart).
+    void destroy_between(std::uint32_t a, std::uint32_t b, BodyStore& bodies,
+                         const ShapeStore& shapes);
+    /// Destroys the contacts of shape s that its filter (changed) no longer admits; the pairs
+    /// it now admits are found by the next step (its proxy is marked moved by the caller).
+    void refilter(std::uint32_t s, BodyStore& bodies, const ShapeStore& shapes,
+                  const JointStore& joints);
+    /// Wakes every body touching body i: what keeps them up may have gone (a static body does
+    /// not move in a step, so its contacts with sleeping bodies are not updated).
+    void wake_touching(std::uint32_t i, BodyStore& bodies) const;
+
+    /// A manifold as the solver takes it, before preparation: bodies, normal, materials,
+    /// anchors, separations and the impulses to warm start from.
+    void unprepared_constraint(ContactConstraint& cc, const GraphEdge& edge,
+                               std::uint32_t contact) const;
+
+    /// The touching pairs after the last step; built when first asked for after a step or a
+    /// destruction: most steps of a game never read it, and copying every contact out each
+    /// step cost a few percent of a pile's step.
+    const std::vector<ContactInfo>& report(const BodyStore& bodies, const ShapeStore& shapes);
+    void report_stale() { infos_stale_ = true; }
+
+    /// Feeds the contacts to the state hash (World::state_hash): each contact's shapes,
+    /// manifold points and warm-start impulses, and with manifold reuse on (`reuse`) the
+    /// poses its manifold was computed at.
+    void hash(StateHasher& hs, bool reuse) const;
+
+  private:
+    void destroy(std::uint32_t i, BodyStore& bodies, const ShapeStore& shapes);
+    /// update's parallel form: the contacts' own work in blocks of `block`, then the rest in
+    /// contact order.
+    void update_in_blocks(BodyStore& bodies, const ShapeStore& shapes, bool sleeping,
+                          double speculative_distance, double reuse_distance,
+                          const StepTasks& tasks, std::uint32_t block);
+    /// A contact began or stopped touching: its event, and with sleeping its bodies woken.
+    void touch_changed(const Contact& c, BodyStore& bodies, const ShapeStore& shapes,
+                       bool sleeping);
+
+    /// The first exception of the user's filter (custom_admits), for the step to rethrow.
+    mutable std::exception_ptr filter_error_;
+
+    PairMap index_; ///< contact by Contact::key of its shapes
+    // Per-step scratch, kept to avoid allocation in steady state.
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> new_pairs_;
+    /// new_pairs_[pending_begin_, pending_end_): pairs a bad_alloc in find_new left unexamined.
+    std::size_t pending_begin_ = 0, pending_end_ = 0;
+    std::vector<std::uint32_t> doomed_;
+    std::vector<std::uint8_t> outcomes_; ///< per contact: update_in_blocks's first pass
+    std::vector<ContactInfo> infos_;
+    bool infos_stale_ = true;
+};
+
+} // namespace tamias2d

@@ -1,0 +1,96 @@
+#include "tamias2d/dynamics/contacts/sensor_overlaps.hpp"
+
+#include <algorithm>
+
+#include "tamias2d/collision/narrow_phase.hpp"
+#include "tamias2d/dynamics/body_store.hpp"
+#include "tamias2d/dynamics/contacts/contact_manager.hpp"
+#include "tamias2d/dynamics/shape_store.hpp"
+#include "tamias2d/model/dd28_sensor_overlap.hpp"
+
+namespace tamias2d {
+namespace {
+
+SensorEvent event(std::uint32_t sensor, std::uint32_t visitor, const BodyStore& bodies,
+                  const ShapeStore& shapes) {
+    return {shapes.id(sensor), shapes.id(visitor), bodies.id(shapes.shapes[sensor].body),
+            bodies.id(shapes.shapes[visitor].body)};
+}
+
+/// DD28's overlap of two shapes in their current poses, from R7's manifold.
+bool overlap(const Shape& a, const Shape& b) {
+    const CollideInput in{a.body_xf, a.body_center, b.body_xf, b.body_center, 0.0};
+    Manifold m{};
+    collide(a.collider, b.collider, in, m);
+    double least = 0.0;
+    for (int k = 0; k < m.count; ++k)
+        least = k == 0 ? m.points[k].separation : std::min(least, m.points[k].separation);
+    return model::dd28::overlapping(m.count, units::Length::from_value(least));
+}
+
+} // namespace
+
+void SensorOverlaps::add(std::uint32_t sensor_shape) {
+    sensors_.push_back({sensor_shape, {}});
+}
+
+void SensorOverlaps::remove_shape(std::uint32_t s, const BodyStore& bodies,
+                                  const ShapeStore& shapes) {
+    for (std::size_t i = 0; i < sensors_.size();) {
+        Sensor& sensor = sensors_[i];
+        if (sensor.shape == s) {
+            for (const std::uint32_t v : sensor.visitors)
+                end_events.push_back(event(s, v, bodies, shapes));
+            sensors_.erase(sensors_.begin() + std::ptrdiff_t(i));
+            continue;
+        }
+        const auto it = std::lower_bound(sensor.visitors.begin(), sensor.visitors.end(), s);
+        if (it != sensor.visitors.end() && *it == s) {
+            end_events.push_back(event(sensor.shape, s, bodies, shapes));
+            sensor.visitors.erase(it);
+        }
+        ++i;
+    }
+}
+
+void SensorOverlaps::update(const BodyStore& bodies, const ShapeStore& shapes,
+                            const ContactManager& rules) {
+    for (Sensor& sensor : sensors_) {
+        const Shape& ss = shapes.shapes[sensor.shape];
+        const Body& sb = bodies.bodies[ss.body];
+        now_.clear();
+        shapes.broad_phase.query(compute_aabb(ss.collider, ss.body_xf), [&](int proxy) {
+            const std::uint32_t v = shapes.broad_phase.user_data(proxy);
+            const Shape& vs = shapes.shapes[v];
+            const ShapeDef& vd = shapes.defs[v];
+            // Not itself or its own body, not another sensor, not two static bodies; the
+            // filters (DD27) and the game's filter decide the rest, as for contacts.
+            if (vs.body == ss.body || vd.is_sensor ||
+                (sb.type == BodyType::static_body &&
+                 bodies.bodies[vs.body].type == BodyType::static_body) ||
+                !admits(shapes.defs[sensor.shape].filter, vd.filter) ||
+                !rules.custom_admits(shapes.id(sensor.shape), shapes.id(v)))
+                return true;
+            if (overlap(ss, vs))
+                now_.push_back(v);
+            return true;
+        });
+        std::sort(now_.begin(), now_.end());
+        // Both lists ascending: one merge finds who came and who went.
+        auto before = sensor.visitors.begin();
+        auto now = now_.begin();
+        while (before != sensor.visitors.end() || now != now_.end()) {
+            if (now == now_.end() || (before != sensor.visitors.end() && *before < *now)) {
+                end_events.push_back(event(sensor.shape, *before++, bodies, shapes));
+            } else if (before == sensor.visitors.end() || *now < *before) {
+                begin_events.push_back(event(sensor.shape, *now++, bodies, shapes));
+            } else {
+                ++before;
+                ++now;
+            }
+        }
+        sensor.visitors.swap(now_);
+    }
+}
+
+} // namespace tamias2d

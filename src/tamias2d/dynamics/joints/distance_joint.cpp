@@ -1,0 +1,72 @@
+#include "tamias2d/dynamics/joints/distance_joint.hpp"
+
+#include "tamias2d/dynamics/joints/joint_creation.hpp"
+#include "tamias2d/dynamics/joints/joint_solver.hpp"
+#include "tamias2d/dynamics/model_bridge.hpp"
+
+namespace tamias2d {
+
+Joint make_joint(const DistanceJointDef& def, const Body& a, const Body& b) {
+    Joint j;
+    j.type = JointType::distance;
+    j.body_a = def.body_a.index;
+    j.body_b = def.body_b.index;
+    j.local_anchor_a = inv_transform_point(a.xf, def.anchor_a);
+    j.local_anchor_b = inv_transform_point(b.xf, def.anchor_b);
+    j.length = def.length.value_or(length(def.anchor_b - def.anchor_a));
+    j.hertz = def.hertz;
+    j.damping_ratio = def.damping_ratio;
+    j.enable_limit = def.enable_limit;
+    j.lower_limit = def.min_length;
+    j.upper_limit = def.max_length;
+    j.collide_connected = def.collide_connected;
+    j.break_force = def.break_force;
+    return j;
+}
+
+void warm_start_distance(const Joint& j, std::span<SolverBody> bodies) {
+    SolverBody& a = bodies[j.step.solver_a];
+    SolverBody& b = bodies[j.step.solver_b];
+    const Vec2d r_a = anchor_a(j);
+    const Vec2d r_b = anchor_b(j);
+    bridge::apply_axial_impulse(a, bridge::moment_arm(r_a, j.step.axis), b,
+                                bridge::moment_arm(r_b, j.step.axis), j.step.axis,
+                                j.step.axial_impulse + j.step.lower_impulse - j.step.upper_impulse);
+}
+
+void solve_distance(Joint& j, std::span<SolverBody> bodies, const Softness& rigid, double h,
+                    bool use_bias) {
+    const bool spring = j.hertz > 0.0;
+    // Limits bound a spring's travel (a rigid rod has none to bound); a spring is not relaxed.
+    const bool limits = spring && j.enable_limit;
+    if (spring && !use_bias && !limits)
+        return;
+    SolverBody& a = bodies[j.step.solver_a];
+    SolverBody& b = bodies[j.step.solver_b];
+    const Vec2d r_a = anchor_a(j);
+    const Vec2d r_b = anchor_b(j);
+    // The anchors' separation now: the centres have moved by dp since the step's start.
+    double length = 0.0;
+    bridge::distance_axis(j.step.center_offset + (b.dp - a.dp) + (r_b - r_a), length, j.step.axis);
+    const double arm_a = bridge::moment_arm(r_a, j.step.axis),
+                 arm_b = bridge::moment_arm(r_b, j.step.axis);
+    if (!spring || use_bias) {
+        double rhs = bridge::axial_velocity_error(a, arm_a, b, arm_b, j.step.axis);
+        double mass_scale = 1.0, impulse_scale = 0.0;
+        if (use_bias) {
+            const Softness soft = spring ? make_joint_softness(j.hertz, j.damping_ratio, h) : rigid;
+            rhs = bridge::biased_error(rhs, soft.bias_rate,
+                                       bridge::distance_position_error(length, j.length));
+            mass_scale = soft.mass_scale;
+            impulse_scale = soft.impulse_scale;
+        }
+        const double lambda = bridge::axial_impulse(a, arm_a, b, arm_b, rhs, mass_scale,
+                                                    impulse_scale, j.step.axial_impulse);
+        j.step.axial_impulse += lambda;
+        bridge::apply_axial_impulse(a, arm_a, b, arm_b, j.step.axis, lambda);
+    }
+    if (limits)
+        solve_axial_limits(j, a, b, arm_a, arm_b, j.step.axis, length, rigid, h, use_bias);
+}
+
+} // namespace tamias2d

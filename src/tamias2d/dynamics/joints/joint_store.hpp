@@ -1,0 +1,102 @@
+// The world's joints (internal): storage, slots and handles, which bodies each joins (for the
+// collision filter, the islands and a body's destruction), the lever check of their anchors,
+// the guard that lets a diverged step be refused, and breaking. Box2D keeps the same concerns
+// in joint.c.
+#pragma once
+
+#include <cstdint>
+#include <initializer_list>
+#include <string>
+#include <vector>
+
+#include "tamias2d/dynamics/joints/joint.hpp"
+#include "tamias2d/dynamics/sleep.hpp"
+#include "tamias2d/handles.hpp"
+
+namespace tamias2d {
+
+struct StateHasher;
+struct BodyStore;
+class ShapeStore;
+
+/// How messages name a joint's kind ("revolute joint", ...).
+const char* joint_kind_name(JointType type);
+
+/// The joint angle now (DD22): B's turn against A since creation, rad.
+double joint_angle_now(const Joint& j, const BodyStore& bodies);
+/// The translation now along a prismatic or wheel joint's axis (DD23), m.
+double joint_translation_now(const Joint& j, const BodyStore& bodies);
+
+/// \srs{DCX_joint} Each anchor of `j` lies within supported::joint_lever_ratio_max radii of
+/// gyration of its body's centre of mass. `at` begins the field's name ("joint." or
+/// "joint[3].").
+void validate_levers(const BodyStore& bodies, const Joint& j, const std::string& at);
+
+class JointStore {
+  public:
+    std::vector<Joint> joints;
+    double inv_h = 0.0;          ///< s^-1, the last step's substep rate (reaction forces)
+    std::vector<JointId> broken; ///< joints the last step broke
+
+    /// The joint of a handle; throws InvalidHandle for a stale or unknown one.
+    Joint& get(JointId id);
+    const Joint& get(JointId id) const { return const_cast<JointStore*>(this)->get(id); }
+    /// The joint of a handle for a reading or setter `call` that applies to the `kinds` only:
+    /// throws InvalidHandle for a stale or unknown handle, WrongKind (saying `rule`) for a joint
+    /// of another kind.
+    Joint& get(JointId id, std::initializer_list<JointType> kinds, const char* call,
+               const char* rule);
+    const Joint& get(JointId id, std::initializer_list<JointType> kinds, const char* call,
+                     const char* rule) const {
+        return const_cast<JointStore*>(this)->get(id, kinds, call, rule);
+    }
+    bool is_valid(JointId id) const;
+    JointId id(std::uint32_t i) const { return {i, joints[i].generation}; }
+    std::uint32_t live() const { return live_; }
+
+    /// A slot for a joint whose fields (bodies, anchors, options) are set; returns its index.
+    std::uint32_t create(const Joint& joint);
+    void destroy(std::uint32_t i);
+    /// Destroys joint i and wakes its bodies. A joint that kept its bodies from colliding
+    /// (DD27) no longer does: the shapes of one of its bodies (B, or A when B is static) are
+    /// touched, so that the broad phase reports their pairs again at the next step (at rest,
+    /// they would not be looked for again).
+    void unjoin(std::uint32_t i, BodyStore& bodies, ShapeStore& shapes);
+    /// The joints of body i (empty when it has none).
+    const std::vector<std::uint32_t>& of_body(std::uint32_t body) const;
+    /// Whether a joint between bodies a and b asks that their shapes not collide.
+    bool filters(std::uint32_t a, std::uint32_t b) const;
+    /// validate_levers for every live joint: a shape added or removed since a joint was made
+    /// moves the centre of mass and changes the inertia its anchors are judged by.
+    void check_levers(const BodyStore& bodies) const;
+
+    /// Before a step's solve, with joints: keeps what the step changes and a refused step
+    /// must give back (each joint's step state, the sleep states the islands may wake, the
+    /// substep rate the reaction forces are read with). The vectors are reused: no allocation
+    /// in a steady state.
+    void guard_step(const BodyStore& bodies, bool sleeping);
+    /// The solve diverged at body i (StepSolver::diverged): gives back what
+    /// guard_step kept and refuses the step naming the body (SolverDivergence). Nothing was
+    /// finalized, so the bodies are as they were.
+    [[noreturn]] void refuse_step(std::uint32_t i, BodyStore& bodies, bool sleeping);
+    /// After the step: a joint whose reaction force exceeded its break force is destroyed
+    /// (unjoin) and listed in `broken`.
+    void break_joints(BodyStore& bodies, ShapeStore& shapes);
+
+    /// Feeds the joints to the state hash (World::state_hash): with any live joint, each
+    /// slot's generation and life, a live joint's definition and impulses.
+    void hash(StateHasher& hs) const;
+
+  private:
+    std::vector<std::uint32_t> free_slots_;
+    std::vector<std::vector<std::uint32_t>> by_body_; ///< per body index: its joints
+    std::uint32_t live_ = 0;
+    // What guard_step keeps: the part of each joint a step writes (the step state alone: whole
+    // joints, twice the bytes, cost an eighth of a 20 000-joint grid's step), the sleep states
+    // and the substep rate.
+    std::vector<JointStepState> step_before_;
+    std::vector<SleepState> sleep_before_;
+    double inv_h_before_ = 0.0;
+};
+
+} // namespace tamias2d

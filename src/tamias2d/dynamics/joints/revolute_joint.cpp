@@ -1,0 +1,52 @@
+#include "tamias2d/dynamics/joints/revolute_joint.hpp"
+
+#include "tamias2d/dynamics/joints/joint_creation.hpp"
+#include "tamias2d/dynamics/joints/joint_solver.hpp"
+#include "tamias2d/dynamics/model_bridge.hpp"
+
+namespace tamias2d {
+
+Joint make_joint(const RevoluteJointDef& def, const Body& a, const Body& b) {
+    Joint j = two_body_joint(JointType::revolute, def.body_a.index, a, def.body_b.index, b,
+                             def.anchor, def.collide_connected, def.break_force);
+    j.enable_limit = def.enable_limit;
+    j.lower_limit = def.lower_angle;
+    j.upper_limit = def.upper_angle;
+    j.enable_motor = def.enable_motor;
+    j.motor_speed = def.motor_speed;
+    j.max_motor = def.max_motor_torque;
+    j.enable_spring = def.enable_spring;
+    j.hertz = def.hertz;
+    j.damping_ratio = def.damping_ratio;
+    return j;
+}
+
+void warm_start_revolute(const Joint& j, std::span<SolverBody> bodies) {
+    SolverBody& a = bodies[j.step.solver_a];
+    SolverBody& b = bodies[j.step.solver_b];
+    bridge::apply_angular_impulse(a, b, reaction_angular_impulse(j));
+    bridge::apply_pin_impulse(a, anchor_a(j), b, anchor_b(j), j.step.linear_impulse);
+}
+
+void solve_revolute(Joint& j, std::span<SolverBody> bodies, const Softness& softness, double h,
+                    bool use_bias) {
+    SolverBody& a = bodies[j.step.solver_a];
+    SolverBody& b = bodies[j.step.solver_b];
+    if (j.enable_spring && use_bias) {
+        // DD22's spring: the joint angle pulled to 0 with the spring's own softness.
+        const Softness soft = make_joint_softness(j.hertz, j.damping_ratio, h);
+        const double rhs = bridge::biased_angular_error(bridge::joint_speed(a, b), soft.bias_rate,
+                                                        current_joint_angle(j, a, b));
+        const double lambda = bridge::angular_impulse(a, b, rhs, soft.mass_scale,
+                                                      soft.impulse_scale, j.step.spring_impulse);
+        j.step.spring_impulse += lambda;
+        bridge::apply_angular_impulse(a, b, lambda);
+    }
+    if (j.enable_motor)
+        solve_angular_motor(j, a, b, h);
+    if (j.enable_limit)
+        solve_angular_limits(j, a, b, softness, h, use_bias);
+    solve_pin(j, a, b, softness, use_bias);
+}
+
+} // namespace tamias2d
