@@ -1,0 +1,86 @@
+// World::Impl, the engine's state behind the public World: a header of its own so that the
+// World's calls can be defined by area (world_*.cpp) while world.cpp keeps creation, stepping and
+// the state hash.
+#pragma once
+
+#include <vector>
+
+#include "tamias2d/dynamics/body_store.hpp"
+#include "tamias2d/dynamics/contacts/contact_manager.hpp"
+#include "tamias2d/dynamics/contacts/sensor_overlaps.hpp"
+#include "tamias2d/dynamics/island_sleep.hpp"
+#include "tamias2d/dynamics/joints/joint_store.hpp"
+#include "tamias2d/dynamics/shape_store.hpp"
+#include "tamias2d/dynamics/step_context.hpp"
+#include "tamias2d/dynamics/step_solver.hpp"
+#include "tamias2d/parallel/step_tasks.hpp"
+#include "tamias2d/world.hpp"
+
+namespace tamias2d {
+
+/// The engine's state and the step's pipeline over its stages (dynamics/): the bodies, the
+/// shapes with the broad phase, the contacts, the joints, the solver, sleeping.
+struct World::Impl {
+    WorldDef def;
+    double time = 0.0;
+    double time_error = 0.0; ///< Kahan compensation: n steps of dt read back as n dt
+    BodyStore bodies;
+    ShapeStore shapes;
+    ContactManager contacts;
+    JointStore joints;
+    SensorOverlaps sensors;
+    StepSolver solver;
+    IslandSleep sleep;
+    StepTasks tasks;         ///< the step's parallel loops (WorldDef::workers, task_system)
+    std::vector<Load> loads; ///< this step's load-function values (empty when none has one)
+
+    explicit Impl(const WorldDef& d) : def(d) {
+        shapes.broad_phase.set_least_margin(d.speculative_distance); // (BroadPhase::fattened)
+    }
+
+    /// The solve diverged (StepSolver::diverged): the joints and sleep states as they were, no
+    /// event of this step, and the step refused naming the body (SolverDivergence). Nothing was
+    /// finalized, so the bodies are as they were; the contacts hold the manifolds of those same
+    /// poses.
+    [[noreturn]] void refuse_diverged() {
+        contacts.begin_events.clear();
+        contacts.end_events.clear();
+        joints.refuse_step(solver.diverged(), bodies, def.enable_sleep);
+    }
+
+    /// The solver bodies and the joints' frames at the step's start.
+    void prepare(const StepContext& step) {
+        solver.prepare_bodies(bodies, step);
+        solver.prepare_joints(joints, bodies);
+    }
+
+    /// A step with some body awake: its stages in one order. Only where the solver bodies are
+    /// prepared depends on sleeping: with sleeping, after the islands (which need this step's
+    /// touching contacts) have woken what they wake; without, before the narrow phase. With
+    /// joints (`guarded`), a diverged solve is refused before anything is finalized.
+    void solve(const StepContext& step, bool guarded) {
+        if (!step.sleeping)
+            prepare(step);
+        contacts.update(bodies, shapes, step);
+        if (step.sleeping) {
+            sleep.wake_islands(bodies, contacts, joints);
+            prepare(step);
+        }
+        solver.solve(contacts, joints, step);
+        if (guarded && solver.diverged() != null_index)
+            refuse_diverged();
+        solver.finalize(bodies, shapes, contacts, joints, step);
+        joints.break_joints(bodies, shapes);
+        if (step.sleeping)
+            sleep.update_sleep(bodies, step);
+    }
+
+    /// A step starts only from a state within supported::state_max (BodyStore::check_state),
+    /// with its joints' anchors within their levers' limit.
+    void check_state() const {
+        bodies.check_state();
+        joints.check_levers(bodies); // (the joints are few: one pass)
+    }
+};
+
+} // namespace tamias2d
