@@ -14,6 +14,7 @@
 #include "tamias2d/memory.hpp"
 #include "tamias2d/shape_def.hpp"
 #include "tamias2d/shapes.hpp"
+#include "tamias2d/snapshot_error.hpp"
 #include "tamias2d/task_system.hpp"
 #include "tamias2d/vec2.hpp"
 #include "tamias2d/version.hpp"

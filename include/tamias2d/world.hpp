@@ -2,6 +2,7 @@
 /// The world: the space in which rigid bodies move and collide (SRS R1).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -18,6 +19,8 @@
 #include "tamias2d/handles.hpp"
 #include "tamias2d/joint_def.hpp"
 #include "tamias2d/shape_def.hpp"
+#include "tamias2d/snapshot_error.hpp"
+#include "tamias2d/task_system.hpp"
 #include "tamias2d/world_def.hpp"
 
 namespace tamias2d {
@@ -262,6 +265,39 @@ class TAMIAS2D_EXPORT World {
     /// to the lower shape index so that the answer is deterministic. Both within the supported
     /// range (DCX_range, |x| <= 1e12 m), so that the answer is never NaN.
     std::optional<RayCastHit> ray_cast(Vec2d origin, Vec2d translation) const;
+
+    // --- snapshot ---
+    // A snapshot is the world's whole state as bytes: the settings, the time, every body,
+    // shape, contact (manifolds and warm-start impulses), joint (impulses), sensor overlap,
+    // sleep timer and the broad phase's trees. A world built or restored from it continues
+    // with the same bits as the world it was taken from, on any number of workers (with the
+    // same library version and build: docs/user-guide.md, "Determinism, snapshots and
+    // replays"). Functions are not data and are not in a snapshot: the custom filter
+    // (set_custom_filter) and the load functions (set_load).
+
+    /// The version of the snapshot format this library writes and reads.
+    static constexpr std::uint32_t snapshot_format_version = 1;
+    /// The world's state as bytes (a versioned header, then little-endian fields and an FNV-1a
+    /// 64 checksum over them): for save games, rollback and bug reports. Call between steps.
+    /// Changes nothing (pending mass updates are done, as a step would do them).
+    std::vector<std::byte> snapshot() const;
+    /// A new world in the state `snapshot` holds, stepping with `workers` workers and
+    /// `task_system` (these are the host's, not in the snapshot). Handles issued by the world
+    /// the snapshot was taken from name the same bodies, shapes and joints in the new world. It
+    /// has no custom filter and no load function: set them again where the original had them.
+    /// Throws SnapshotError for a snapshot that is not one (magic), of another format version,
+    /// truncated, changed (checksum) or inconsistent, naming the byte offset, the field and the
+    /// rule; ValidationError for workers < 1.
+    static World from_snapshot(std::span<const std::byte> snapshot, int workers = 1,
+                               const TaskSystem& task_system = {});
+    /// Puts this world in the state `snapshot` holds (rollback, reload). Handles issued before
+    /// the snapshot was taken stay valid and name the same objects; handles issued after it
+    /// name nothing (or, for a slot the snapshot has in use, what the snapshot has there).
+    /// Kept from this world: its workers and task system, its custom filter, and the load
+    /// function of every body whose handle is valid in both this world and the snapshot and
+    /// which had one when the snapshot was taken (other bodies have none). Throws SnapshotError
+    /// as from_snapshot does, leaving the world exactly as it was.
+    void restore(std::span<const std::byte> snapshot);
 
     /// A hash of the complete simulation state (bit patterns of every double): equal hashes
     /// mean bitwise-equal worlds. Used by the determinism and strong-guarantee tests.

@@ -1,6 +1,9 @@
 #include "tamias2d/collision/broad_phase.hpp"
 
 #include <algorithm>
+#include <string>
+
+#include "tamias2d/dynamics/snapshot_io.hpp"
 
 namespace tamias2d {
 
@@ -128,6 +131,48 @@ void BroadPhase::update_pairs(std::vector<Pair>& out) {
     const auto begin = out.begin() + static_cast<std::ptrdiff_t>(first);
     std::sort(begin, out.end());
     out.erase(std::unique(begin, out.end()), out.end());
+}
+
+// --- snapshot ---
+
+void BroadPhase::write(SnapshotWriter& out) const {
+    out.section("BRPH");
+    out("margin", margin_);
+    out("least_margin", least_margin_);
+    for (const DynamicTree& t : trees_)
+        t.write(out);
+    out.count("move_buffer", move_buffer_.size());
+    for (const int p : move_buffer_)
+        out("move_buffer", p);
+    out.count("moved", moved_.size());
+    for (const std::uint8_t m : moved_)
+        out("moved", m);
+}
+
+void BroadPhase::read(SnapshotReader& in) {
+    in.section("BRPH");
+    in("broad_phase.margin", margin_);
+    in("broad_phase.least_margin", least_margin_);
+    for (DynamicTree& t : trees_)
+        t.read(in);
+    const std::size_t moves = in.count("broad_phase.move_buffer", 4);
+    move_buffer_.resize(moves);
+    std::vector<std::size_t> at(moves);
+    for (std::size_t k = 0; k < moves; ++k) {
+        at[k] = in.offset();
+        in("broad_phase.move_buffer", move_buffer_[k]);
+    }
+    const std::size_t n = in.count("broad_phase.moved", 1);
+    moved_.resize(n);
+    for (std::size_t p = 0; p < n; ++p) {
+        const std::size_t here = in.offset();
+        in("broad_phase.moved", moved_[p]);
+        in.require(moved_[p] == 0 || (moved_[p] == 1 && is_proxy(int(p))), "broad_phase.moved",
+                   "must be 0, or 1 for a proxy (at proxy " + std::to_string(p) + ")", here);
+    }
+    for (std::size_t k = 0; k < moves; ++k)
+        in.require(move_buffer_[k] >= 0 && std::size_t(move_buffer_[k]) < n,
+                   "broad_phase.move_buffer", "must be a proxy id < " + std::to_string(n), at[k]);
 }
 
 } // namespace tamias2d

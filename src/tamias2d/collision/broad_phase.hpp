@@ -15,6 +15,9 @@
 
 namespace tamias2d {
 
+class SnapshotWriter;
+class SnapshotReader;
+
 class BroadPhase {
   public:
     using Pair = std::pair<std::uint32_t, std::uint32_t>;
@@ -80,6 +83,19 @@ class BroadPhase {
     double margin() const { return margin_; }
     const DynamicTree& dynamic_tree() const { return trees_[0]; }
     const DynamicTree& static_tree() const { return trees_[1]; }
+
+    // --- snapshot (dynamics/snapshot_io.hpp) ---
+    /// Writes the margins, both trees node for node, and the proxies moved since the last
+    /// update_pairs (the move buffer and the flags), so that the next update_pairs reports the
+    /// same pairs in the same order.
+    void write(SnapshotWriter& out) const;
+    /// Reads what write wrote into this broad phase; throws SnapshotError for a tree that is
+    /// not one, or a moved flag that names no proxy.
+    void read(SnapshotReader& in);
+    /// Whether `proxy` names a proxy (a leaf of its tree) that has a moved flag.
+    bool is_proxy(int proxy) const {
+        return proxy >= 0 && std::size_t(proxy) < moved_.size() && tree(proxy).is_leaf(node(proxy));
+    }
 
   private:
     // Proxy id = tree node id * 2 + (1 if static): no lookup table, and ids stay small.

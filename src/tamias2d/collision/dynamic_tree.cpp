@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <bit>
+#include <string>
+
+#include "tamias2d/dynamics/snapshot_io.hpp"
 
 namespace tamias2d {
 
@@ -366,6 +369,66 @@ bool DynamicTree::validate() const {
     }
     const int leaves = root_ == null_node ? 0 : (reachable + 1) / 2;
     return reachable + free_count == static_cast<int>(nodes_.size()) && leaves == proxy_count_;
+}
+
+// --- snapshot ---
+
+namespace {
+
+/// Every field of a tree node, in the snapshot's order (the writer and the reader both call it).
+template <class IO, class N> void node_fields(IO& io, N& n) {
+    io("box", n.box);
+    io("parent", n.parent);
+    io("child1", n.child1);
+    io("child2", n.child2);
+    io("height", n.height);
+    io("user", n.user);
+    io("enlarged", n.enlarged);
+    io("marked", n.marked);
+}
+
+} // namespace
+
+void DynamicTree::write(SnapshotWriter& out) const {
+    out.count("nodes", nodes_.size());
+    for (const Node& n : nodes_)
+        node_fields(out, n);
+    out("root", root_);
+    out("free_list", free_list_);
+    out("proxy_count", proxy_count_);
+}
+
+void DynamicTree::read(SnapshotReader& in) {
+    const std::size_t n = in.count("nodes", 56, std::size_t{1} << 30);
+    nodes_.resize(n);
+    const auto link_ok = [n](int v) { return v == null_node || (v >= 0 && std::size_t(v) < n); };
+    for (std::size_t i = 0; i < n; ++i) {
+        in.in("tree.nodes", i);
+        const std::size_t at = in.offset();
+        Node& node = nodes_[i];
+        node_fields(in, node);
+        in.require(link_ok(node.parent) && link_ok(node.child1) && link_ok(node.child2) &&
+                       (node.child1 == null_node) == (node.child2 == null_node) &&
+                       node.height >= -1 && node.height < max_stack / 2,
+                   "",
+                   "links must be -1 or < " + std::to_string(n) +
+                       ", both children or none, height in [-1, " + std::to_string(max_stack / 2) +
+                       ")",
+                   at);
+    }
+    in.in(nullptr);
+    const std::size_t at = in.offset();
+    in("tree.root", root_);
+    in("tree.free_list", free_list_);
+    in("tree.proxy_count", proxy_count_);
+    // The free list ends (null_node) within n links before validate() walks it.
+    int i = link_ok(free_list_) ? free_list_ : null_node;
+    std::size_t free = 0;
+    for (; i != null_node && link_ok(i) && free <= n; i = nodes_[std::size_t(i)].parent)
+        ++free;
+    const bool free_list_ends = link_ok(free_list_) && i == null_node;
+    in.require(link_ok(root_) && free_list_ends && validate(), "tree",
+               "must be a valid tree (links, heights, boxes, free list and leaf count agree)", at);
 }
 
 } // namespace tamias2d

@@ -21,6 +21,9 @@
 
 namespace tamias2d {
 
+class SnapshotWriter;
+class SnapshotReader;
+
 class DynamicTree {
   public:
     static constexpr int null_node = -1;
@@ -81,6 +84,20 @@ class DynamicTree {
     /// Checks parent links, heights, enclosure, that marks reach the root, and the free list
     /// (tests).
     bool validate() const;
+
+    // --- snapshot (dynamics/snapshot_io.hpp) ---
+    /// Writes the nodes as they are (boxes, links, heights, users, marks), the root, the free
+    /// list and the leaf count: a tree read back is the same tree, node for node, so that its
+    /// queries, rebuilds and pair searches continue with the same bits.
+    void write(SnapshotWriter& out) const;
+    /// Reads what write wrote into this tree; throws SnapshotError unless every link is in
+    /// range, the free list ends, and the tree passes validate() (no cycle, heights and boxes
+    /// consistent, no deeper than a query's stack holds).
+    void read(SnapshotReader& in);
+    /// Whether node `id` exists and is a leaf (a proxy).
+    bool is_leaf(int id) const {
+        return id >= 0 && std::size_t(id) < nodes_.size() && nodes_[id].height == 0;
+    }
 
   private:
     /// One cache line each: at 56 bytes most nodes straddled two lines, and a query or an

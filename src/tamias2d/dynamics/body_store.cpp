@@ -5,6 +5,7 @@
 
 #include "tamias2d/dynamics/model_bridge.hpp"
 #include "tamias2d/dynamics/shape_store.hpp"
+#include "tamias2d/dynamics/snapshot_io.hpp"
 #include "tamias2d/dynamics/state_hasher.hpp"
 #include "tamias2d/errors.hpp"
 #include "tamias2d/geometry/mass_properties.hpp"
@@ -299,6 +300,125 @@ void BodyStore::hash(StateHasher& hs, const ShapeStore& shapes, bool sleeping) c
         hs.bytes(set.name.data(), set.name.size());
         for (std::uint32_t s = b.first_shape; s != null_index; s = shapes.shapes[s].next)
             hs(std::uint64_t(s));
+    }
+}
+
+// --- snapshot ---
+
+namespace {
+
+/// Every field of a body slot, in the snapshot's order: the one place a field added to Body,
+/// BodySettings or SleepState is added to snapshots (the writer and the reader both call it).
+/// The load function is not data: only whether there is one.
+template <class IO, class B, class S, class Z>
+void body_fields(IO& io, B& b, S& set, Z& sleep, bool& has_load) {
+    io("alive", b.alive);
+    io.enumeration("type", b.type, BodyType::dynamic);
+    io("loaded", b.loaded);
+    io("damped", b.damped);
+    io.index("first_shape", b.first_shape, 0xFFFFFFFFu, true); // (checked by check_links)
+    io("xf", b.xf);
+    io("angle", b.angle);
+    io("center", b.center);
+    io("local_center", b.local_center);
+    io("v", b.v);
+    io("w", b.w);
+    io("inv_mass", b.inv_mass);
+    io("inv_inertia", b.inv_inertia);
+    io("gravity_scale", b.gravity_scale);
+    io("force", b.force);
+    io("torque", b.torque);
+    io("force_once", b.force_once);
+    io("torque_once", b.torque_once);
+    io("mass", b.mass);
+    io("inertia", b.inertia);
+    io("name", set.name);
+    io("has_load", has_load);
+    io("mass_override", set.mass_override);
+    io("inertia_override", set.inertia_override);
+    io("fixed_rotation", set.fixed_rotation);
+    io("bullet", set.bullet);
+    io("linear_damping", set.linear_damping);
+    io("angular_damping", set.angular_damping);
+    io("sleep_time", sleep.sleep_time);
+    io("awake", sleep.awake);
+    io("sleep_enabled", sleep.enabled);
+    io("movable", sleep.movable);
+}
+
+} // namespace
+
+void BodyStore::write(SnapshotWriter& out) const {
+    out.section("BODY");
+    out.count("bodies", size());
+    for (std::uint32_t i = 0; i < size(); ++i) {
+        out("generation", generation[i]);
+        bool has_load = bool(settings[i].load);
+        body_fields(out, bodies[i], settings[i], sleep_states[i], has_load);
+    }
+    out.count("free_slots", free_slots.size());
+    for (const std::uint32_t f : free_slots)
+        out.index("free_slot", f, size());
+}
+
+void BodyStore::read(SnapshotReader& in, std::vector<std::uint32_t>& had_load) {
+    in.section("BODY");
+    const std::size_t n = in.count("bodies", 150, null_index - 1);
+    bodies.resize(n);
+    settings.resize(n);
+    generation.resize(n);
+    sleep_states.resize(n);
+    for (std::uint32_t i = 0; i < n; ++i) {
+        in.in("bodies", i);
+        in("generation", generation[i]);
+        Body& b = bodies[i];
+        b = Body{};
+        bool has_load = false;
+        const std::size_t at = in.offset();
+        body_fields(in, b, settings[i], sleep_states[i], has_load);
+        in.require(b.alive || (!has_load && b.first_shape == null_index && !sleep_states[i].awake),
+                   "alive", "a dead slot has no shapes, load or wake", at);
+        if (has_load)
+            had_load.push_back(i);
+    }
+    in.in(nullptr);
+    const std::size_t free = in.count("free_slots", 4, n);
+    free_slots.resize(free);
+    for (std::uint32_t& f : free_slots)
+        in.index("free_slot", f, std::uint32_t(n));
+    loaded_bodies = 0;
+}
+
+void BodyStore::check_links(SnapshotReader& in, ShapeStore& shapes) const {
+    const std::uint32_t ns = std::uint32_t(shapes.shapes.size());
+    std::vector<std::uint8_t> seen(ns, 0);
+    shapes.last_of_body.assign(size(), null_index);
+    for (std::uint32_t i = 0; i < size(); ++i) {
+        in.in("bodies", i);
+        const Body& b = bodies[i];
+        for (std::uint32_t s = b.first_shape; s != null_index; s = shapes.shapes[s].next) {
+            if (s >= ns || seen[s] || !shapes.shapes[s].alive() || shapes.shapes[s].body != i)
+                in.fail("first_shape",
+                        "the body's shape list must hold live shapes of this body, each once "
+                        "(at shape " +
+                            std::to_string(s) + ")");
+            seen[s] = 1;
+            shapes.last_of_body[i] = s;
+        }
+    }
+    for (std::uint32_t s = 0; s < ns; ++s) {
+        in.in("shapes", s);
+        const Shape& sh = shapes.shapes[s];
+        if (sh.alive() && (sh.body >= size() || !bodies[sh.body].alive || !seen[s]))
+            in.fail("body", "a live shape must be on the shape list of a live body");
+    }
+    in.in(nullptr);
+    std::vector<std::uint8_t> free(size(), 0);
+    for (const std::uint32_t f : free_slots) {
+        if (bodies[f].alive || free[f])
+            in.fail("bodies.free_slots",
+                    "must list dead slots, each once (slot " + std::to_string(f) + ")");
+        free[f] = 1;
     }
 }
 

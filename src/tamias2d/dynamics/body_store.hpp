@@ -17,6 +17,8 @@ namespace tamias2d {
 
 struct StateHasher;
 class ShapeStore;
+class SnapshotWriter;
+class SnapshotReader;
 
 struct BodyStore {
     LargeArray<Body> bodies;
@@ -103,6 +105,19 @@ struct BodyStore {
     /// life and type, a live body's pose, velocities, loads, masses and settings, its sleep
     /// state with sleeping on, its name and its shapes.
     void hash(StateHasher& hs, const ShapeStore& shapes, bool sleeping) const;
+
+    // --- snapshot (World::snapshot, World::restore; dynamics/snapshot_io.hpp) ---
+    /// Writes every slot (its generation, its Body, settings and sleep state, whether it had a
+    /// load function) and the free slots. Pending masses must be settled first (settle).
+    void write(SnapshotWriter& out) const;
+    /// Reads what write wrote into this empty store. A load function cannot be written: the
+    /// bodies that had one are listed in `had_load` (World::restore gives them the target's).
+    /// Throws SnapshotError for a defect in the bytes (link_shapes checks the shape lists).
+    void read(SnapshotReader& in, std::vector<std::uint32_t>& had_load);
+    /// After both stores are read: each live body's shape list holds live shapes of that body
+    /// (each once, ending in null_index), every live shape is on its body's list, and the free
+    /// slots are dead and distinct. Rebuilds ShapeStore::last_of_body.
+    void check_links(SnapshotReader& in, ShapeStore& shapes) const;
 };
 
 } // namespace tamias2d

@@ -4,11 +4,13 @@
 #include <string>
 
 #include "tamias2d/dynamics/body_store.hpp"
+#include "tamias2d/dynamics/snapshot_io.hpp"
 #include "tamias2d/dynamics/state_hasher.hpp"
 #include "tamias2d/errors.hpp"
 #include "tamias2d/geometry/shape_factory.hpp"
 #include "tamias2d/geometry/shape_queries.hpp"
 #include "tamias2d/math/prefetch.hpp"
+#include "tamias2d/validation.hpp"
 
 namespace tamias2d {
 
@@ -205,6 +207,120 @@ void ShapeStore::hash(StateHasher& hs) const {
                std::uint64_t(d.is_sensor));
         }
     }
+}
+
+// --- snapshot ---
+
+namespace {
+
+/// Every field of a shape definition, in the snapshot's order (the writer and the reader both
+/// call it): the one place a field added to ShapeDef is added to snapshots.
+template <class IO, class D> void shape_def_fields(IO& io, D& d) {
+    auto& g = d.geometry;
+    io.enumeration("geometry.type", g.type, ShapeType::chain_segment);
+    io("circle.center", g.circle.center);
+    io("circle.radius", g.circle.radius);
+    for (auto& v : g.polygon.vertices)
+        io("polygon.vertices", v);
+    for (auto& v : g.polygon.normals)
+        io("polygon.normals", v);
+    io("polygon.centroid", g.polygon.centroid);
+    io("polygon.count", g.polygon.count);
+    io("capsule.center1", g.capsule.center1);
+    io("capsule.center2", g.capsule.center2);
+    io("capsule.radius", g.capsule.radius);
+    io("segment.point1", g.segment.point1);
+    io("segment.point2", g.segment.point2);
+    io("chain_segment.ghost1", g.chain_segment.ghost1);
+    io("chain_segment.point1", g.chain_segment.point1);
+    io("chain_segment.point2", g.chain_segment.point2);
+    io("chain_segment.ghost2", g.chain_segment.ghost2);
+    io("material.density", d.material.density);
+    io("material.restitution", d.material.restitution);
+    io("material.friction", d.material.friction);
+    io("filter.category_bits", d.filter.category_bits);
+    io("filter.mask_bits", d.filter.mask_bits);
+    io("filter.group_index", d.filter.group_index);
+    io("is_sensor", d.is_sensor);
+}
+
+/// Every field of a Shape but its collider (made from the definition), in the snapshot's order.
+template <class IO, class S> void shape_fields(IO& io, S& s) {
+    io("fat_box", s.fat_box);
+    io("body_xf", s.body_xf);
+    io("body_center", s.body_center);
+    io("generation", s.generation);
+    io("body", s.body);
+    io("proxy", s.proxy);
+    io("next", s.next);
+}
+
+} // namespace
+
+void ShapeStore::write(SnapshotWriter& out) const {
+    out.section("SHAP");
+    out.count("shapes", shapes.size());
+    for (std::uint32_t i = 0; i < shapes.size(); ++i) {
+        shape_def_fields(out, defs[i]);
+        shape_fields(out, shapes[i]);
+    }
+    out.count("free_slots", free_slots.size());
+    for (const std::uint32_t f : free_slots)
+        out.index("free_slot", f, std::uint32_t(shapes.size()));
+    broad_phase.write(out);
+}
+
+void ShapeStore::read(SnapshotReader& in) {
+    in.section("SHAP");
+    const std::size_t n = in.count("shapes", 400, null_index - 1);
+    shapes.resize(n);
+    defs.resize(n);
+    std::vector<std::size_t> at(n);
+    for (std::uint32_t i = 0; i < n; ++i) {
+        in.in("shapes", i);
+        at[i] = in.offset();
+        shape_def_fields(in, defs[i]);
+        Shape& s = shapes[i];
+        s = Shape{};
+        shape_fields(in, s);
+        if (!s.alive())
+            continue;
+        in.require(defs[i].geometry.polygon.count >= 0 &&
+                       defs[i].geometry.polygon.count <= max_polygon_vertices,
+                   "polygon.count", "must be in [0, " + std::to_string(max_polygon_vertices) + "]",
+                   at[i]);
+        try {
+            validate(defs[i]);
+        } catch (const ValidationError& e) {
+            in.fail_at(at[i], "", std::string("the definition is refused: ") + e.what());
+        }
+        s.collider = make_collider(defs[i].geometry);
+    }
+    in.in(nullptr);
+    const std::size_t free = in.count("shapes.free_slots", 4, n);
+    free_slots.resize(free);
+    std::vector<std::uint8_t> listed(n, 0);
+    for (std::uint32_t& f : free_slots) {
+        const std::size_t here = in.offset();
+        in.index("shapes.free_slot", f, std::uint32_t(n));
+        in.require(!shapes[f].alive() && !listed[f], "shapes.free_slot",
+                   "must list dead slots, each once", here);
+        listed[f] = 1;
+    }
+    broad_phase.read(in);
+    int live = 0;
+    for (std::uint32_t i = 0; i < n; ++i) {
+        const Shape& s = shapes[i];
+        if (!s.alive())
+            continue;
+        ++live;
+        in.in("shapes", i);
+        if (!broad_phase.is_proxy(s.proxy) || broad_phase.user_data(s.proxy) != i)
+            in.fail_at(at[i], "proxy", "must be a leaf of the broad phase whose user is the shape");
+    }
+    in.in(nullptr);
+    in.require(live == broad_phase.proxy_count(), "broad_phase",
+               "must hold one proxy per live shape (" + std::to_string(live) + ")", in.offset());
 }
 
 } // namespace tamias2d

@@ -19,6 +19,8 @@ namespace tamias2d {
 
 struct BodyStore;
 struct StateHasher;
+class SnapshotWriter;
+class SnapshotReader;
 
 class ShapeStore {
   public:
@@ -102,6 +104,16 @@ class ShapeStore {
     /// Feeds the shapes to the state hash (World::state_hash): each slot's generation and
     /// life, a live shape's body, geometry, material and (when not the default) filter.
     void hash(StateHasher& hs) const;
+
+    // --- snapshot (World::snapshot, World::restore; dynamics/snapshot_io.hpp) ---
+    /// Writes every slot (its definition, generation, body, links, proxy, fat box and pose
+    /// copies), the free slots and the broad phase. The collider is not written: read rebuilds
+    /// it from the definition, as create made it (the same bits).
+    void write(SnapshotWriter& out) const;
+    /// Reads what write wrote into this empty store; throws SnapshotError for a defect (a live
+    /// shape's definition that validate() refuses, a proxy that is not the shape's leaf). The
+    /// shape lists are checked, and last_of_body rebuilt, by BodyStore::check_links.
+    void read(SnapshotReader& in);
 
   private:
     /// The proxies refit_fat_box moved, for one BroadPhase::move_proxies call.

@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <utility>
 
 #include "tamias2d/collision/narrow_phase.hpp"
 #include "tamias2d/dynamics/body_store.hpp"
 #include "tamias2d/dynamics/joints/joint_store.hpp"
 #include "tamias2d/dynamics/shape_store.hpp"
+#include "tamias2d/dynamics/snapshot_io.hpp"
 #include "tamias2d/dynamics/state_hasher.hpp"
 #include "tamias2d/dynamics/step_context.hpp"
 #include "tamias2d/math/prefetch.hpp"
@@ -451,6 +453,147 @@ void ContactManager::hash(StateHasher& hs, bool reuse) const {
             }
         }
     }
+}
+
+// --- snapshot ---
+
+namespace {
+
+/// Every field of a contact and of its entries in the parallel arrays, in the snapshot's order
+/// (the writer and the reader both call it): the one place a field added to them is added to
+/// snapshots.
+template <class IO, class C, class W, class B>
+void contact_fields(IO& io, C& c, W& warm, W& total, B& basis) {
+    io("shape_a", c.shape_a);
+    io("shape_b", c.shape_b);
+    io("body_a", c.body_a);
+    io("body_b", c.body_b);
+    io("friction", c.friction);
+    io("restitution", c.restitution);
+    io("hint.face", c.hint.face);
+    io("hint.on_b", c.hint.on_b);
+    io("touching", c.touching);
+    io("manifold.normal", c.manifold.normal);
+    io("manifold.count", c.manifold.count);
+    for (auto& p : c.manifold.points) {
+        io("point", p.point);
+        io("anchor_a", p.anchor_a);
+        io("anchor_b", p.anchor_b);
+        io("separation", p.separation);
+        io("id.index_a", p.id.index_a);
+        io("id.type_a", p.id.type_a);
+        io("id.index_b", p.id.index_b);
+        io("id.type_b", p.id.type_b);
+    }
+    for (int k = 0; k < 2; ++k) {
+        io("warm.normal", warm.normal[k]);
+        io("warm.tangent", warm.tangent[k]);
+        io("total.normal", total.normal[k]);
+        io("total.tangent", total.tangent[k]);
+    }
+    io("basis.q_a", basis.q_a);
+    io("basis.q_b", basis.q_b);
+    io("basis.b_in_a", basis.b_in_a);
+    for (int k = 0; k < 2; ++k) {
+        io("basis.separation", basis.separation[k]);
+        io("basis.on_a", basis.on_a[k]);
+    }
+    io("basis.arm_a", basis.arm_a);
+    io("basis.arm_b", basis.arm_b);
+}
+
+template <class IO, class E> void edge_input_fields(IO& io, E& e) {
+    io("body_a", e.body_a);
+    io("body_b", e.body_b);
+    io.enumeration("group", e.group, PathGroup::point_by_point);
+    io("touching", e.touching);
+    io("bounces", e.bounces);
+}
+
+template <class IO, class E> void event_fields(IO& io, E& e) {
+    io("shape_a.index", e.shape_a.index);
+    io("shape_a.generation", e.shape_a.generation);
+    io("shape_b.index", e.shape_b.index);
+    io("shape_b.generation", e.shape_b.generation);
+    io("body_a.index", e.body_a.index);
+    io("body_a.generation", e.body_a.generation);
+    io("body_b.index", e.body_b.index);
+    io("body_b.generation", e.body_b.generation);
+}
+
+} // namespace
+
+void ContactManager::write(SnapshotWriter& out) const {
+    out.section("CONT");
+    out.count("contacts", size());
+    for (std::uint32_t i = 0; i < size(); ++i)
+        contact_fields(out, contacts[i], warm_impulses[i], total_impulses[i], bases[i]);
+    out.count("edge_inputs", edge_inputs.size());
+    for (const EdgeInput& e : edge_inputs)
+        edge_input_fields(out, e);
+    for (const auto* events : {&begin_events, &end_events}) {
+        out.count("events", events->size());
+        for (const ContactEvent& e : *events)
+            event_fields(out, e);
+    }
+    out.count("pending_pairs", pending_end_ - pending_begin_);
+    for (std::size_t k = pending_begin_; k < pending_end_; ++k) {
+        out("pending.first", new_pairs_[k].first);
+        out("pending.second", new_pairs_[k].second);
+    }
+}
+
+void ContactManager::read(SnapshotReader& in, const BodyStore& bodies, const ShapeStore& shapes) {
+    in.section("CONT");
+    const std::uint32_t ns = std::uint32_t(shapes.shapes.size());
+    const std::size_t n = in.count("contacts", 300, null_index - 1);
+    contacts.resize(n);
+    warm_impulses.resize(n);
+    total_impulses.resize(n);
+    bases.resize(n);
+    for (std::uint32_t i = 0; i < n; ++i) {
+        in.in("contacts", i);
+        const std::size_t at = in.offset();
+        Contact& c = contacts[i];
+        c = Contact{};
+        contact_fields(in, c, warm_impulses[i], total_impulses[i], bases[i]);
+        const bool shapes_ok =
+            c.shape_a < c.shape_b && c.shape_b < ns && shapes.shapes[c.shape_a].alive() &&
+            shapes.shapes[c.shape_b].alive() && shapes.shapes[c.shape_a].body == c.body_a &&
+            shapes.shapes[c.shape_b].body == c.body_b;
+        in.require(shapes_ok && c.body_a < bodies.size() && c.body_b < bodies.size(), "shape_a",
+                   "must be two live shapes, shape_a < shape_b, of the bodies named", at);
+        in.require(c.manifold.count >= 0 && c.manifold.count <= 2, "manifold.count",
+                   "must be in [0, 2]", at);
+        const std::uint64_t key = Contact::key(c.shape_a, c.shape_b);
+        in.require(!index_.contains(key), "shape_a", "must name a pair of no other contact", at);
+        index_.insert(key, i);
+    }
+    in.in(nullptr);
+    const std::size_t edges = in.count("edge_inputs", 11, n);
+    edge_inputs.resize(edges);
+    for (std::size_t k = 0; k < edges; ++k) {
+        in.in("edge_inputs", k);
+        edge_input_fields(in, edge_inputs[k]);
+    }
+    for (auto* events : {&begin_events, &end_events}) {
+        const std::size_t m = in.count("events", 32);
+        events->resize(m);
+        for (std::size_t k = 0; k < m; ++k) {
+            in.in("contact_events", k);
+            event_fields(in, (*events)[k]);
+        }
+    }
+    in.in(nullptr);
+    const std::size_t pending = in.count("pending_pairs", 8);
+    new_pairs_.resize(pending);
+    for (auto& [a, b] : new_pairs_) {
+        in.index("pending.first", a, ns);
+        in.index("pending.second", b, ns);
+    }
+    pending_begin_ = 0;
+    pending_end_ = pending;
+    infos_stale_ = true;
 }
 
 } // namespace tamias2d

@@ -24,6 +24,8 @@ namespace tamias2d {
 
 struct StateHasher;
 struct BodyStore;
+class SnapshotWriter;
+class SnapshotReader;
 class ShapeStore;
 class JointStore;
 class StepTasks;
@@ -113,6 +115,17 @@ class ContactManager {
     /// manifold points and warm-start impulses, and with manifold reuse on (`reuse`) the
     /// poses its manifold was computed at.
     void hash(StateHasher& hs, bool reuse) const;
+
+    // --- snapshot (World::snapshot, World::restore; dynamics/snapshot_io.hpp) ---
+    /// Writes every contact in storage order with its parallel arrays (edge input, warm-start
+    /// and total impulses, manifold basis), the last step's events and the pairs a bad_alloc
+    /// left pending. The user's filter is not data: it is not written.
+    void write(SnapshotWriter& out) const;
+    /// Reads what write wrote into this empty manager (`shapes` and `bodies` already read) and
+    /// rebuilds the index by shape pair; throws SnapshotError for a contact whose shapes are
+    /// not two live shapes (in order, once) of the bodies it names, or a manifold of more than
+    /// two points.
+    void read(SnapshotReader& in, const BodyStore& bodies, const ShapeStore& shapes);
 
   private:
     void destroy(std::uint32_t i, BodyStore& bodies, const ShapeStore& shapes);

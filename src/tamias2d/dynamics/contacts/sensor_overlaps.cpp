@@ -1,11 +1,13 @@
 #include "tamias2d/dynamics/contacts/sensor_overlaps.hpp"
 
 #include <algorithm>
+#include <string>
 
 #include "tamias2d/collision/narrow_phase.hpp"
 #include "tamias2d/dynamics/body_store.hpp"
 #include "tamias2d/dynamics/contacts/contact_manager.hpp"
 #include "tamias2d/dynamics/shape_store.hpp"
+#include "tamias2d/dynamics/snapshot_io.hpp"
 #include "tamias2d/model/dd28_sensor_overlap.hpp"
 
 namespace tamias2d {
@@ -91,6 +93,71 @@ void SensorOverlaps::update(const BodyStore& bodies, const ShapeStore& shapes,
         }
         sensor.visitors.swap(now_);
     }
+}
+
+// --- snapshot ---
+
+namespace {
+
+template <class IO, class E> void sensor_event_fields(IO& io, E& e) {
+    io("sensor.index", e.sensor.index);
+    io("sensor.generation", e.sensor.generation);
+    io("visitor.index", e.visitor.index);
+    io("visitor.generation", e.visitor.generation);
+    io("sensor_body.index", e.sensor_body.index);
+    io("sensor_body.generation", e.sensor_body.generation);
+    io("visitor_body.index", e.visitor_body.index);
+    io("visitor_body.generation", e.visitor_body.generation);
+}
+
+} // namespace
+
+void SensorOverlaps::write(SnapshotWriter& out) const {
+    out.section("SENS");
+    out.count("sensors", sensors_.size());
+    for (const Sensor& s : sensors_) {
+        out("shape", s.shape);
+        out.count("visitors", s.visitors.size());
+        for (const std::uint32_t v : s.visitors)
+            out("visitor", v);
+    }
+    for (const auto* events : {&begin_events, &end_events}) {
+        out.count("events", events->size());
+        for (const SensorEvent& e : *events)
+            sensor_event_fields(out, e);
+    }
+}
+
+void SensorOverlaps::read(SnapshotReader& in, const ShapeStore& shapes) {
+    in.section("SENS");
+    const std::uint32_t ns = std::uint32_t(shapes.shapes.size());
+    const std::size_t n = in.count("sensors", 12, ns);
+    sensors_.resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        in.in("sensors", k);
+        Sensor& s = sensors_[k];
+        const std::size_t at = in.offset();
+        in.index("shape", s.shape, ns);
+        in.require(shapes.shapes[s.shape].alive() && shapes.defs[s.shape].is_sensor, "shape",
+                   "must be a live sensor shape", at);
+        s.visitors.resize(in.count("visitors", 4, ns));
+        for (std::size_t v = 0; v < s.visitors.size(); ++v) {
+            const std::size_t here = in.offset();
+            in.index("visitor", s.visitors[v], ns);
+            in.require(v == 0 || s.visitors[v - 1] < s.visitors[v], "visitor",
+                       "must be ascending shape indices", here);
+        }
+    }
+    for (auto* events : {&begin_events, &end_events}) {
+        in.in(nullptr);
+        const std::size_t m = in.count("sensor_events", 32);
+        events->resize(m);
+        for (std::size_t k = 0; k < m; ++k) {
+            in.in("sensor_events", k);
+            sensor_event_fields(in, (*events)[k]);
+        }
+    }
+    in.in(nullptr);
 }
 
 } // namespace tamias2d

@@ -15,6 +15,8 @@ namespace tamias2d {
 struct BodyStore;
 class ShapeStore;
 class ContactManager;
+class SnapshotWriter;
+class SnapshotReader;
 
 class SensorOverlaps {
   public:
@@ -30,6 +32,14 @@ class SensorOverlaps {
     /// longer does an end event. Sensors in creation order, visitors in shape order.
     void update(const BodyStore& bodies, const ShapeStore& shapes, const ContactManager& rules);
     bool empty() const { return sensors_.empty(); }
+
+    // --- snapshot (World::snapshot, World::restore; dynamics/snapshot_io.hpp) ---
+    /// Writes each sensor (creation order) with the shapes it overlapped after the last step,
+    /// and the last step's events.
+    void write(SnapshotWriter& out) const;
+    /// Reads what write wrote into this empty set (`shapes` already read); throws SnapshotError
+    /// for a sensor that is not a live sensor shape or visitors that are not ascending shapes.
+    void read(SnapshotReader& in, const ShapeStore& shapes);
 
   private:
     struct Sensor {

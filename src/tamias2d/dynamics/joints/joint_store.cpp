@@ -7,6 +7,7 @@
 #include "tamias2d/dynamics/body_store.hpp"
 #include "tamias2d/dynamics/model_bridge.hpp"
 #include "tamias2d/dynamics/shape_store.hpp"
+#include "tamias2d/dynamics/snapshot_io.hpp"
 #include "tamias2d/dynamics/state_hasher.hpp"
 #include "tamias2d/errors.hpp"
 #include "tamias2d/validation.hpp"
@@ -244,6 +245,150 @@ void JointStore::hash(StateHasher& hs) const {
             hs(j.break_force);
             hs(std::uint64_t(j.collide_connected));
         }
+    }
+}
+
+// --- snapshot ---
+
+namespace {
+
+/// Every field of a joint, in the snapshot's order (the writer and the reader both call it): the
+/// one place a field added to Joint or JointStepState is added to snapshots.
+template <class IO, class J> void joint_fields(IO& io, J& j) {
+    io.enumeration("type", j.type, JointType::filter);
+    io("alive", j.alive);
+    io("collide_connected", j.collide_connected);
+    io("generation", j.generation);
+    io("body_a", j.body_a);
+    io("body_b", j.body_b);
+    io("local_anchor_a", j.local_anchor_a);
+    io("local_anchor_b", j.local_anchor_b);
+    io("break_force", j.break_force);
+    io("length", j.length);
+    io("hertz", j.hertz);
+    io("damping_ratio", j.damping_ratio);
+    io("enable_spring", j.enable_spring);
+    io("local_axis", j.local_axis);
+    io("reference_angle", j.reference_angle);
+    io("enable_limit", j.enable_limit);
+    io("enable_motor", j.enable_motor);
+    io("lower_limit", j.lower_limit);
+    io("upper_limit", j.upper_limit);
+    io("motor_speed", j.motor_speed);
+    io("max_motor", j.max_motor);
+    io("angular_hertz", j.angular_hertz);
+    io("angular_damping_ratio", j.angular_damping_ratio);
+    io("target", j.target);
+    io("max_force", j.max_force);
+    io("max_torque", j.max_torque);
+    io("correction_factor", j.correction_factor);
+    auto& st = j.step;
+    io("step.linear_impulse", st.linear_impulse);
+    io("step.axial_impulse", st.axial_impulse);
+    io("step.axis", st.axis);
+    io("step.motor_impulse", st.motor_impulse);
+    io("step.lower_impulse", st.lower_impulse);
+    io("step.upper_impulse", st.upper_impulse);
+    io("step.spring_impulse", st.spring_impulse);
+    io("step.angular_impulse", st.angular_impulse);
+    io("step.perp_impulse", st.perp_impulse);
+    io("step.solver_a", st.solver_a);
+    io("step.solver_b", st.solver_b);
+    io("step.frame_a", st.frame_a);
+    io("step.frame_b", st.frame_b);
+    io("step.angle_a", st.angle_a);
+    io("step.angle_b", st.angle_b);
+    io("step.center_offset", st.center_offset);
+    io("step.center_b", st.center_b);
+    io("step.q_a", st.q_a);
+    io("step.q_b", st.q_b);
+}
+
+} // namespace
+
+void JointStore::write(SnapshotWriter& out) const {
+    out.section("JOIN");
+    out.count("joints", joints.size());
+    for (const Joint& j : joints)
+        joint_fields(out, j);
+    out.count("free_slots", free_slots_.size());
+    for (const std::uint32_t f : free_slots_)
+        out.index("free_slot", f, std::uint32_t(joints.size()));
+    out.count("by_body", by_body_.size());
+    for (const auto& list : by_body_) {
+        out.count("of_body", list.size());
+        for (const std::uint32_t i : list)
+            out.index("of_body", i, std::uint32_t(joints.size()));
+    }
+    out("inv_h", inv_h);
+    out.count("broken", broken.size());
+    for (const JointId& b : broken) {
+        out("broken.index", b.index);
+        out("broken.generation", b.generation);
+    }
+}
+
+void JointStore::read(SnapshotReader& in, const BodyStore& bodies) {
+    in.section("JOIN");
+    const std::size_t n = in.count("joints", 200, null_index - 1);
+    joints.resize(n);
+    live_ = 0;
+    for (std::uint32_t i = 0; i < n; ++i) {
+        in.in("joints", i);
+        const std::size_t at = in.offset();
+        Joint& j = joints[i];
+        j = Joint{};
+        joint_fields(in, j);
+        if (!j.alive)
+            continue;
+        ++live_;
+        in.require(j.body_a < bodies.size() && j.body_b < bodies.size() &&
+                       bodies.bodies[j.body_a].alive && bodies.bodies[j.body_b].alive,
+                   "body_a", "a live joint's bodies must live", at);
+    }
+    in.in(nullptr);
+    const std::size_t free = in.count("joints.free_slots", 4, n);
+    free_slots_.resize(free);
+    std::vector<std::uint8_t> listed(n, 0);
+    for (std::uint32_t& f : free_slots_) {
+        const std::size_t at = in.offset();
+        in.index("joints.free_slot", f, std::uint32_t(n));
+        in.require(!joints[f].alive && !listed[f], "joints.free_slot",
+                   "must list dead slots, each once", at);
+        listed[f] = 1;
+    }
+    // Each live joint once in its body_a's list and once in its body_b's (twice in one list
+    // when they are the same body): destroy finds it there.
+    std::vector<std::uint8_t> seen(n, 0); // bit 0: under body_a, bit 1: under body_b
+    const std::size_t lists = in.count("joints.by_body", 8, bodies.size());
+    by_body_.resize(lists);
+    for (std::uint32_t body = 0; body < lists; ++body) {
+        in.in("joints.by_body", body);
+        const std::size_t m = in.count("of_body", 4, 2 * n);
+        by_body_[body].resize(m);
+        for (std::uint32_t& i : by_body_[body]) {
+            const std::size_t at = in.offset();
+            in.index("of_body", i, std::uint32_t(n));
+            const Joint& j = joints[i];
+            if (j.alive && j.body_a == body && !(seen[i] & 1))
+                seen[i] |= 1;
+            else if (j.alive && j.body_b == body && !(seen[i] & 2))
+                seen[i] |= 2;
+            else
+                in.fail_at(at, "of_body", "must list a live joint of this body, once");
+        }
+    }
+    in.in(nullptr);
+    for (std::uint32_t i = 0; i < n; ++i)
+        in.require(!joints[i].alive || seen[i] == 3, "joints.by_body",
+                   "must list live joint " + std::to_string(i) + " under both its bodies",
+                   in.offset());
+    in("joints.inv_h", inv_h);
+    const std::size_t nb = in.count("joints.broken", 8);
+    broken.resize(nb);
+    for (JointId& b : broken) {
+        in("broken.index", b.index);
+        in("broken.generation", b.generation);
     }
 }
 

@@ -17,6 +17,8 @@ namespace tamias2d {
 
 struct StateHasher;
 struct BodyStore;
+class SnapshotWriter;
+class SnapshotReader;
 class ShapeStore;
 
 /// How messages name a joint's kind ("revolute joint", ...).
@@ -86,6 +88,16 @@ class JointStore {
     /// Feeds the joints to the state hash (World::state_hash): with any live joint, each
     /// slot's generation and life, a live joint's definition and impulses.
     void hash(StateHasher& hs) const;
+
+    // --- snapshot (World::snapshot, World::restore; dynamics/snapshot_io.hpp) ---
+    /// Writes every slot (definition, generation, step state with its impulses), the free
+    /// slots, each body's joint list in its order, the substep rate and the last step's broken
+    /// joints.
+    void write(SnapshotWriter& out) const;
+    /// Reads what write wrote into this empty store (`bodies` already read); throws
+    /// SnapshotError for a live joint of a body that does not live, or joint lists that do not
+    /// list each live joint once under each of its bodies.
+    void read(SnapshotReader& in, const BodyStore& bodies);
 
   private:
     std::vector<std::uint32_t> free_slots_;

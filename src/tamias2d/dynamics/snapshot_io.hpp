@@ -1,0 +1,249 @@
+// A snapshot's encoding (internal): the writer and the reader each store's snapshot functions
+// use (World::snapshot, World::restore). Every field is written in an explicit little-endian
+// form, whatever the platform: integers byte by byte, doubles as the bits of their IEEE-754
+// binary64 form, bools as one byte 0 or 1, enums as their underlying integer. A store describes
+// each of its records once, in a function template over the writer and the reader alike
+// (`io(name, field)` for every field), so that a field added to a record is added to the
+// snapshot in that one place; counts, indices and the checks of what a record may hold are the
+// store's read function's (beside its hash function, which feeds the state hash the same state).
+//
+// The reader never reads past its bytes: every read is bounds-checked, every count is checked
+// against the bytes left before anything is allocated for it, every index against its range;
+// a defect throws SnapshotError naming the byte offset, the field and the rule.
+#pragma once
+
+#include <bit>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include "tamias2d/aabb.hpp"
+#include "tamias2d/math/vec2d.hpp"
+#include "tamias2d/snapshot_error.hpp"
+
+namespace tamias2d {
+
+/// FNV-1a, 64 bits, over `bytes`: the snapshot's checksum (the state hash's function,
+/// StateHasher, over the payload's bytes).
+inline std::uint64_t fnv1a_64(std::span<const std::byte> bytes) {
+    std::uint64_t h = 1469598103934665603ull;
+    for (const std::byte b : bytes) {
+        h ^= std::uint64_t(b);
+        h *= 1099511628211ull;
+    }
+    return h;
+}
+
+class SnapshotWriter {
+  public:
+    std::vector<std::byte> bytes;
+
+    void u8(std::uint8_t v) { bytes.push_back(std::byte(v)); }
+    void u32(std::uint32_t v) { le(v, 4); }
+    void u64(std::uint64_t v) { le(v, 8); }
+    /// A section's tag, four letters: a reader names the section it expected.
+    void section(const char (&tag)[5]) {
+        for (int k = 0; k < 4; ++k)
+            u8(std::uint8_t(tag[k]));
+    }
+    /// The number of records that follow.
+    void count(const char*, std::size_t n) { u64(n); }
+
+    void operator()(const char*, double v) { u64(std::bit_cast<std::uint64_t>(v)); }
+    void operator()(const char*, bool v) { u8(v ? 1 : 0); }
+    void operator()(const char*, std::uint8_t v) { u8(v); }
+    void operator()(const char*, std::int8_t v) { u8(std::uint8_t(v)); }
+    void operator()(const char*, std::uint16_t v) { le(v, 2); }
+    void operator()(const char*, std::uint32_t v) { u32(v); }
+    void operator()(const char*, std::int32_t v) { u32(std::uint32_t(v)); }
+    void operator()(const char*, std::uint64_t v) { u64(v); }
+    void operator()(const char* f, Vec2d v) {
+        (*this)(f, v.x);
+        (*this)(f, v.y);
+    }
+    void operator()(const char* f, Rot q) {
+        (*this)(f, q.c);
+        (*this)(f, q.s);
+    }
+    void operator()(const char* f, const Transform& t) {
+        (*this)(f, t.p);
+        (*this)(f, t.q);
+    }
+    void operator()(const char* f, const Aabb& b) {
+        for (const double x : {b.min_x, b.min_y, b.max_x, b.max_y})
+            (*this)(f, x);
+    }
+    void operator()(const char* f, const std::optional<double>& v) {
+        (*this)(f, v.has_value());
+        if (v)
+            (*this)(f, *v);
+    }
+    void operator()(const char*, const std::string& s) {
+        u64(s.size());
+        for (const char c : s)
+            u8(std::uint8_t(c));
+    }
+    /// An enum as its underlying integer; `last` is its largest value (the reader's check).
+    template <class E> void enumeration(const char* f, E v, E /*last*/) {
+        (*this)(f, static_cast<std::underlying_type_t<E>>(v));
+    }
+    /// An index (or null_index, with `null` true), checked by the reader against `limit`.
+    void index(const char*, std::uint32_t v, std::uint32_t /*limit*/, bool /*null*/ = false) {
+        u32(v);
+    }
+
+  private:
+    void le(std::uint64_t v, int n) {
+        for (int k = 0; k < n; ++k)
+            u8(std::uint8_t(v >> (8 * k)));
+    }
+};
+
+class SnapshotReader {
+  public:
+    /// The payload `bytes`, which start at byte `base` of the snapshot (for the offsets the
+    /// errors name).
+    SnapshotReader(std::span<const std::byte> bytes, std::size_t base)
+        : bytes_(bytes), base_(base) {}
+
+    /// The record the fields read next belong to, for the errors' field names: "bodies", 3
+    /// makes field "v" "bodies[3].v". A null record: top-level fields.
+    void in(const char* record, std::size_t index = 0) {
+        record_ = record;
+        index_ = index;
+    }
+    std::size_t offset() const { return base_ + at_; }
+    std::size_t left() const { return bytes_.size() - at_; }
+
+    [[noreturn]] void fail(const char* field, const std::string& rule) const {
+        fail_at(offset(), field, rule);
+    }
+    [[noreturn]] void fail_at(std::size_t offset, const char* field,
+                              const std::string& rule) const {
+        std::string name = record_ ? std::string(record_) + "[" + std::to_string(index_) + "]" : "";
+        if (field && *field)
+            name += (name.empty() ? "" : ".") + std::string(field);
+        throw SnapshotError(offset, name, rule);
+    }
+    /// Throws (naming `field` at the offset where its value began) unless `ok`.
+    void require(bool ok, const char* field, const std::string& rule, std::size_t at) const {
+        if (!ok)
+            fail_at(at, field, rule);
+    }
+
+    std::uint8_t u8(const char* f) { return std::uint8_t(le(f, 1)); }
+    std::uint32_t u32(const char* f) { return std::uint32_t(le(f, 4)); }
+    std::uint64_t u64(const char* f) { return le(f, 8); }
+    void section(const char (&tag)[5]) {
+        const std::size_t at = offset();
+        for (int k = 0; k < 4; ++k)
+            if (u8("section") != std::uint8_t(tag[k]))
+                fail_at(at, "section", std::string("must be the section '") + tag + "'");
+    }
+    /// A count of records of at least `bytes_each` bytes each: no more than the bytes left
+    /// can hold (so that a forged count allocates nothing), nor more than `most`.
+    std::size_t count(const char* f, std::size_t bytes_each, std::size_t most = ~std::size_t{0}) {
+        const std::size_t at = offset();
+        const std::uint64_t n = u64(f);
+        if (n > most)
+            fail_at(at, f, "must be <= " + std::to_string(most));
+        if (bytes_each > 0 && n > left() / bytes_each)
+            fail_at(at, f,
+                    "must fit in the " + std::to_string(left()) + " bytes left (" +
+                        std::to_string(bytes_each) + " bytes or more each)");
+        return std::size_t(n);
+    }
+
+    void operator()(const char* f, double& v) { v = std::bit_cast<double>(le(f, 8)); }
+    void operator()(const char* f, bool& v) {
+        const std::size_t at = offset();
+        const std::uint8_t b = u8(f);
+        if (b > 1)
+            fail_at(at, f, "must be 0 or 1 (a bool)");
+        v = b == 1;
+    }
+    void operator()(const char* f, std::uint8_t& v) { v = u8(f); }
+    void operator()(const char* f, std::int8_t& v) { v = std::int8_t(u8(f)); }
+    void operator()(const char* f, std::uint16_t& v) { v = std::uint16_t(le(f, 2)); }
+    void operator()(const char* f, std::uint32_t& v) { v = u32(f); }
+    void operator()(const char* f, std::int32_t& v) { v = std::int32_t(u32(f)); }
+    void operator()(const char* f, std::uint64_t& v) { v = u64(f); }
+    void operator()(const char* f, Vec2d& v) {
+        (*this)(f, v.x);
+        (*this)(f, v.y);
+    }
+    void operator()(const char* f, Rot& q) {
+        (*this)(f, q.c);
+        (*this)(f, q.s);
+    }
+    void operator()(const char* f, Transform& t) {
+        (*this)(f, t.p);
+        (*this)(f, t.q);
+    }
+    void operator()(const char* f, Aabb& b) {
+        for (double* x : {&b.min_x, &b.min_y, &b.max_x, &b.max_y})
+            (*this)(f, *x);
+    }
+    void operator()(const char* f, std::optional<double>& v) {
+        bool has = false;
+        (*this)(f, has);
+        v.reset();
+        if (has) {
+            double x = 0.0;
+            (*this)(f, x);
+            v = x;
+        }
+    }
+    void operator()(const char* f, std::string& s) {
+        const std::size_t n = count(f, 1);
+        s.resize(n);
+        for (std::size_t k = 0; k < n; ++k)
+            s[k] = char(u8(f));
+    }
+    template <class E> void enumeration(const char* f, E& v, E last) {
+        using U = std::underlying_type_t<E>;
+        const std::size_t at = offset();
+        U u{};
+        (*this)(f, u);
+        if (u < U{} || u > static_cast<U>(last))
+            fail_at(at, f, "must be an enum value in [0, " + std::to_string(int(last)) + "]");
+        v = static_cast<E>(u);
+    }
+    /// An index < `limit` (or null_index if `null`).
+    void index(const char* f, std::uint32_t& v, std::uint32_t limit, bool null = false) {
+        const std::size_t at = offset();
+        v = u32(f);
+        if (!(v < limit || (null && v == 0xFFFFFFFFu)))
+            fail_at(at, f,
+                    "must be < " + std::to_string(limit) + (null ? " or null (4294967295)" : ""));
+    }
+    std::uint32_t index(const char* f, std::uint32_t limit, bool null = false) {
+        std::uint32_t v = 0;
+        index(f, v, limit, null);
+        return v;
+    }
+
+  private:
+    std::uint64_t le(const char* f, int n) {
+        if (left() < std::size_t(n))
+            fail(f, "cut short: " + std::to_string(n) + " bytes needed, " + std::to_string(left()) +
+                        " left (truncated)");
+        std::uint64_t v = 0;
+        for (int k = 0; k < n; ++k)
+            v |= std::uint64_t(bytes_[at_ + std::size_t(k)]) << (8 * k);
+        at_ += std::size_t(n);
+        return v;
+    }
+
+    std::span<const std::byte> bytes_;
+    std::size_t base_;
+    std::size_t at_ = 0;
+    const char* record_ = nullptr;
+    std::size_t index_ = 0;
+};
+
+} // namespace tamias2d
