@@ -5,7 +5,7 @@
 //   offset  8: u32 format version (World::snapshot_format_version)
 //   offset 12: u32 library version that wrote it, major << 16 | minor << 8 | patch
 //   offset 16: u64 payload size in bytes
-//   offset 24: u64 FNV-1a 64 of the payload
+//   offset 24: u64 FNV-1a 64 of the header's first 24 bytes and then the payload
 //   offset 32: payload: the world's settings and time, then each store's section (BODY, SHAP
 //              with the broad phase BRPH, CONT, JOIN, SENS), each written and read by the store
 //              itself beside its hash function.
@@ -60,6 +60,12 @@ template <class IO, class D> void world_def_fields(IO& io, D& d) {
     io("angular_sleep_tolerance", d.angular_sleep_tolerance);
 }
 
+/// The checksum of a snapshot whose header is in place: FNV-1a 64 over the header up to the
+/// checksum, then the payload.
+std::uint64_t checksum(std::span<const std::byte> bytes) {
+    return fnv1a_64(bytes.subspan(header_size), fnv1a_64(bytes.first(24)));
+}
+
 std::uint64_t read_le(std::span<const std::byte> b, std::size_t at, int n) {
     std::uint64_t v = 0;
     for (int k = 0; k < n; ++k)
@@ -94,10 +100,9 @@ std::unique_ptr<World::Impl> read_snapshot(std::span<const std::byte> bytes, int
                                 std::to_string(bytes.size() - header_size) +
                                 " bytes follow the header (truncated or extended)");
     const std::span<const std::byte> payload = bytes.subspan(header_size);
-    const std::uint64_t checksum = read_le(bytes, 24, 8);
-    if (fnv1a_64(payload) != checksum)
+    if (checksum(bytes) != read_le(bytes, 24, 8))
         throw SnapshotError(24, "header.checksum",
-                            "the payload's FNV-1a 64 disagrees (the bytes changed since they "
+                            "disagrees with the FNV-1a 64 of the bytes (they changed since they "
                             "were written)");
 
     SnapshotReader in(payload, header_size);
@@ -153,11 +158,11 @@ std::vector<std::byte> World::snapshot() const {
     w.sensors.write(out);
     std::vector<std::byte>& b = out.bytes;
     const std::uint64_t size = b.size() - header_size;
-    const std::uint64_t sum = fnv1a_64(std::span<const std::byte>(b).subspan(header_size));
-    for (int k = 0; k < 8; ++k) {
+    for (int k = 0; k < 8; ++k)
         b[16 + std::size_t(k)] = std::byte(size >> (8 * k));
+    const std::uint64_t sum = checksum(b);
+    for (int k = 0; k < 8; ++k)
         b[24 + std::size_t(k)] = std::byte(sum >> (8 * k));
-    }
     return std::move(out.bytes);
 }
 

@@ -23,6 +23,7 @@
 #include <numbers>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -358,7 +359,7 @@ struct Driver {
     void call() {
         last.str("");
         last.precision(17);
-        switch (r.below(22)) {
+        switch (r.below(24)) {
         case 0:
         case 1: {
             const BodyDef def = body_def();
@@ -507,6 +508,37 @@ struct Driver {
             (void)world.query_aabb(
                 Aabb{any_double(r), any_double(r), any_double(r), any_double(r)});
             (void)world.query_point(vec());
+            break;
+        }
+        // --- snapshot ---
+        case 22:
+        case 23: {
+            // The world's snapshot restored into it changes no bit; with one bit flipped (or cut
+            // short) it is refused with a SnapshotError and changes nothing. A broken promise
+            // is thrown as a logic_error (the driver reports an exception of another kind).
+            const std::uint64_t hash = world.state_hash();
+            std::vector<std::byte> bytes = world.snapshot();
+            const bool cut = r.chance(30);
+            const std::size_t at = r.below(bytes.size());
+            last << "restore(snapshot " << (cut ? "cut to " : "with a bit flipped at byte ") << at
+                 << " of " << bytes.size() << ", then the snapshot itself)";
+            std::vector<std::byte> bad = bytes;
+            if (cut)
+                bad.resize(at);
+            else
+                bad[at] ^= std::byte(1u << r.below(8));
+            try {
+                world.restore(bad);
+                throw std::logic_error("a corrupted snapshot was accepted");
+            } catch (const SnapshotError& e) {
+                if (e.field.empty() || world.state_hash() != hash)
+                    throw std::logic_error(std::string("a refused restore changed the world or "
+                                                       "named no field: ") +
+                                           e.what());
+            }
+            world.restore(bytes);
+            if (world.state_hash() != hash || world.snapshot() != bytes)
+                throw std::logic_error("restoring the world's own snapshot changed it");
             break;
         }
         default: {

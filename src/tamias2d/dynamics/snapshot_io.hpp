@@ -27,13 +27,14 @@
 
 namespace tamias2d {
 
-/// FNV-1a, 64 bits, over `bytes`: the snapshot's checksum (the state hash's function,
-/// StateHasher, over the payload's bytes).
-inline std::uint64_t fnv1a_64(std::span<const std::byte> bytes) {
-    std::uint64_t h = 1469598103934665603ull;
+/// FNV-1a, 64 bits (offset basis 0xcbf29ce484222325, prime 0x100000001b3), over `bytes`,
+/// continuing from `h`: the snapshot's checksum, over its header before the checksum and then
+/// its payload.
+inline std::uint64_t fnv1a_64(std::span<const std::byte> bytes,
+                              std::uint64_t h = 0xcbf29ce484222325ull) {
     for (const std::byte b : bytes) {
         h ^= std::uint64_t(b);
-        h *= 1099511628211ull;
+        h *= 0x100000001b3ull;
     }
     return h;
 }

@@ -345,6 +345,9 @@ void JointStore::read(SnapshotReader& in, const BodyStore& bodies) {
         in.require(j.body_a < bodies.size() && j.body_b < bodies.size() &&
                        bodies.bodies[j.body_a].alive && bodies.bodies[j.body_b].alive,
                    "body_a", "a live joint's bodies must live", at);
+        // A filter joint is never prepared: its solver bodies stay 0 (no constraint to solve).
+        in.require(j.type != JointType::filter || (j.step.solver_a == 0 && j.step.solver_b == 0),
+                   "step.solver_a", "must be 0 for a filter joint (it is never solved)", at);
     }
     in.in(nullptr);
     const std::size_t free = in.count("joints.free_slots", 4, n);

@@ -1,0 +1,117 @@
+// libFuzzer target: the input is a snapshot (World::from_snapshot, World::restore). Its first
+// byte chooses how the rest is read: odd, its checksum is made right first (so that a change
+// reaches the sections' reader, not only the checksum's refusal); even, as it is.
+//
+// Oracle: the library's stated promises (include/tamias2d/world.hpp, "snapshot";
+// docs/user-guide.md, "Determinism, snapshots and replays"): no crash and no sanitizer report;
+// a refused snapshot is a SnapshotError naming a field, and World::restore then leaves the world
+// bitwise as it was (state_hash() and snapshot()); an accepted one is read whole: the world's
+// own snapshot is the same bytes (but the writer's library version and the checksum), restore
+// into another world gives the same state, and a small one steps (or refuses a step with a
+// library error) a few times.
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <exception>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "fuzz/libfuzzer/promise.hpp"
+#include "tamias2d/errors.hpp"
+#include "tamias2d/world.hpp"
+
+using namespace tamias2d;
+using namespace tamias2d::fuzz;
+
+namespace {
+
+constexpr std::size_t max_bodies_stepped = 200;
+
+/// FNV-1a 64 over the header's first 24 bytes and the payload (the snapshot's checksum).
+void fix_checksum(std::vector<std::byte>& b) {
+    if (b.size() < 32)
+        return;
+    std::uint64_t h = 0xcbf29ce484222325ull;
+    for (std::size_t k = 0; k < b.size(); ++k)
+        if (k < 24 || k >= 32)
+            h = (h ^ std::uint64_t(b[k])) * 0x100000001b3ull;
+    for (int k = 0; k < 8; ++k)
+        b[24 + std::size_t(k)] = std::byte(h >> (8 * k));
+}
+
+/// A world to restore into: one body on a ground, stepped once.
+World& target() {
+    static World w = [] {
+        World t;
+        BodyDef ground;
+        ground.type = BodyType::static_body;
+        t.create_shape(t.create_body(ground), box_shape(10.0, 1.0));
+        BodyDef box;
+        box.position = {0.0, 1.0};
+        t.create_shape(t.create_body(box), box_shape(1.0, 1.0));
+        t.step(1.0 / 60.0);
+        return t;
+    }();
+    return w;
+}
+
+bool same_but_version(std::span<const std::byte> a, std::span<const std::byte> b) {
+    if (a.size() != b.size() || a.size() < 32)
+        return false;
+    for (std::size_t k = 0; k < a.size(); ++k)
+        if ((k < 12 || (k >= 16 && k < 24) || k >= 32) && a[k] != b[k])
+            return false;
+    return true;
+}
+
+} // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    if (size == 0)
+        return 0;
+    std::vector<std::byte> bytes(size - 1);
+    for (std::size_t k = 1; k < size; ++k)
+        bytes[k - 1] = std::byte(data[k]);
+    if (data[0] & 1)
+        fix_checksum(bytes);
+
+    World& t = target();
+    const std::uint64_t hash = t.state_hash();
+    const std::vector<std::byte> before = t.snapshot();
+    std::optional<World> w;
+    try {
+        w.emplace(World::from_snapshot(bytes));
+    } catch (const SnapshotError& e) {
+        if (e.field.empty() || std::string(e.what()).empty())
+            broken_promise("SnapshotError without a field or message");
+        try {
+            t.restore(bytes);
+            broken_promise("restore accepted what from_snapshot refused");
+        } catch (const SnapshotError&) {
+        }
+        if (t.state_hash() != hash || t.snapshot() != before)
+            broken_promise("a refused restore changed the world");
+        return 0;
+    } catch (const std::exception& e) {
+        broken_promise(std::string("from_snapshot refused with a non-SnapshotError: ") + e.what());
+    }
+    const std::vector<std::byte> again = w->snapshot();
+    if (!same_but_version(bytes, again))
+        broken_promise("an accepted snapshot does not write back as the same bytes");
+    World other;
+    other.restore(bytes);
+    if (other.state_hash() != w->state_hash())
+        broken_promise("restore and from_snapshot give different worlds");
+    if (w->body_count() <= max_bodies_stepped) {
+        for (int s = 0; s < 3; ++s) {
+            try {
+                w->step(1.0 / 60.0);
+            } catch (const std::exception&) { // a state the step refuses (ValidationError...)
+                break;
+            }
+        }
+    }
+    return 0;
+}

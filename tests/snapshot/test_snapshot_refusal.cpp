@@ -1,0 +1,169 @@
+// A snapshot that is not one, of another format, cut short or changed is refused with a
+// SnapshotError naming the byte offset, the field and the rule, and the world it was to be
+// restored into is left exactly as it was (World::restore's strong guarantee).
+//
+// Oracle: the world's own state_hash() and snapshot() before the refused call (bitwise the
+// same after it), and the corruptions themselves: every single-bit flip of a snapshot changes
+// its checksum (FNV-1a 64 detects every one-bit change), every truncation its length. A
+// guarantee of the library's API, not an SRS item: the `reliability` tag.
+#include <boost/test/unit_test.hpp>
+
+#include <cstdint>
+#include <random>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "fuzz/fuzz_support.hpp"
+#include "snapshot/snapshot_worlds.hpp"
+#include "tamias2d/world.hpp"
+
+namespace utf = boost::unit_test;
+using namespace tamias2d;
+using namespace snapshot_test;
+
+namespace {
+
+/// A snapshot of a random world after some steps: contacts, joints, sensors, free slots.
+std::vector<std::byte> some_snapshot(std::uint64_t seed, int steps) {
+    World w = random_world(seed);
+    for (int s = 0; s < steps; ++s)
+        w.step(1.0 / 60.0);
+    return w.snapshot();
+}
+
+/// Whether restoring `bytes` into `target` is refused with a SnapshotError whose field starts
+/// with `field` (any field when empty) and leaves `target` bitwise as it was.
+bool refused_unchanged(World& target, std::span<const std::byte> bytes,
+                       const std::string& field = "") {
+    const std::uint64_t hash = target.state_hash();
+    const std::vector<std::byte> before = target.snapshot();
+    try {
+        target.restore(bytes);
+    } catch (const SnapshotError& e) {
+        BOOST_TEST_INFO(e.what());
+        BOOST_TEST(e.field.rfind(field, 0) == 0);
+        BOOST_TEST(std::string(e.what()).find(e.field) != std::string::npos);
+        return target.state_hash() == hash && target.snapshot() == before;
+    }
+    return false;
+}
+
+/// FNV-1a 64 (the published algorithm, written here apart from the library's).
+std::uint64_t fnv1a(std::span<const std::byte> bytes, std::uint64_t h) {
+    for (const std::byte b : bytes)
+        h = (h ^ std::uint64_t(b)) * 0x100000001b3ull;
+    return h;
+}
+
+/// The snapshot's checksum (its header's first 24 bytes, then the payload) made right again,
+/// so that a change reaches the reader of the sections.
+void fix_checksum(std::vector<std::byte>& b) {
+    const std::span<const std::byte> all(b);
+    const std::uint64_t h = fnv1a(all.subspan(32), fnv1a(all.first(24), 0xcbf29ce484222325ull));
+    for (int k = 0; k < 8; ++k)
+        b[24 + std::size_t(k)] = std::byte(h >> (8 * k));
+}
+
+void put_u32(std::vector<std::byte>& b, std::size_t at, std::uint32_t v) {
+    for (int k = 0; k < 4; ++k)
+        b[at + std::size_t(k)] = std::byte(v >> (8 * k));
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(snapshot_refusal)
+
+// Every bit flip of a sample (seeded) of positions, header and payload alike.
+BOOST_AUTO_TEST_CASE(a_flipped_bit_is_refused, *utf::label("reliability")) {
+    const std::vector<std::byte> good = some_snapshot(3, 40);
+    World target = random_world(8);
+    target.step(0.01);
+    std::mt19937_64 r(1);
+    for (int k = 0; k < 400; ++k) {
+        // Every bit of the 32-byte header, then bits anywhere.
+        const std::size_t bit = k < 256 ? std::size_t(k) : std::size_t(r() % (8 * good.size()));
+        std::vector<std::byte> bad = good;
+        bad[bit / 8] ^= std::byte(1u << (bit % 8));
+        BOOST_TEST_INFO("bit " << bit % 8 << " of byte " << bit / 8 << " flipped");
+        BOOST_TEST(refused_unchanged(target, bad));
+    }
+    // The good one is accepted (the refusals above were the corruption's).
+    target.restore(good);
+    BOOST_TEST((target.snapshot() == good));
+}
+
+BOOST_AUTO_TEST_CASE(a_truncated_snapshot_is_refused, *utf::label("reliability")) {
+    const std::vector<std::byte> good = some_snapshot(5, 30);
+    World target = random_world(6);
+    std::mt19937_64 r(2);
+    for (int k = 0; k < 300; ++k) {
+        const std::size_t n = k < 64 ? std::size_t(k) : std::size_t(r() % good.size());
+        BOOST_TEST_INFO("cut to " << n << " of " << good.size() << " bytes");
+        BOOST_TEST(refused_unchanged(target, std::span(good).first(n),
+                                     n < 32 ? "header" : "header.payload_size"));
+    }
+    std::vector<std::byte> longer = good;
+    longer.push_back(std::byte{0});
+    BOOST_TEST(refused_unchanged(target, longer, "header.payload_size"));
+}
+
+BOOST_AUTO_TEST_CASE(a_foreign_snapshot_is_refused, *utf::label("reliability")) {
+    World target = random_world(7);
+    const std::string json = R"({"world": {"gravity": [0, -9.81]}, "bodies": []})";
+    std::vector<std::byte> text(json.size());
+    for (std::size_t k = 0; k < json.size(); ++k)
+        text[k] = std::byte(json[k]);
+    BOOST_TEST(refused_unchanged(target, text, "header.magic"));
+    std::mt19937_64 r(3);
+    std::vector<std::byte> noise(4096);
+    for (std::byte& b : noise)
+        b = std::byte(r());
+    BOOST_TEST(refused_unchanged(target, noise, "header.magic"));
+    // Another format version, with a checksum made for it: refused for the version.
+    std::vector<std::byte> future = some_snapshot(9, 5);
+    put_u32(future, 8, World::snapshot_format_version + 1);
+    fix_checksum(future);
+    BOOST_TEST(refused_unchanged(target, future, "header.format_version"));
+    BOOST_CHECK_THROW(World::from_snapshot(noise), SnapshotError);
+    BOOST_CHECK_THROW(World::from_snapshot(some_snapshot(9, 5), 0), ValidationError);
+}
+
+// Changes behind a checksum made right again (as a forged or buggy writer would make them): the
+// sections' reader checks every count, index, flag and link, so it refuses them (the world
+// unchanged) or builds a world that then steps or refuses its step, never reading out of
+// bounds (the ASan/UBSan build runs this too). Seeded: bytes set to random values, to 0xFF,
+// and runs of them zeroed; TAMIAS_FUZZ_ITERATIONS and TAMIAS_FUZZ_SEED run more or others.
+BOOST_AUTO_TEST_CASE(a_forged_snapshot_is_refused_or_read_safely, *utf::label("reliability")) {
+    const long n = fuzz::iterations("TAMIAS_FUZZ_ITERATIONS", 600);
+    const std::uint64_t seed = fuzz::base_seed(4);
+    const std::vector<std::byte> good = some_snapshot(11 + seed, 60);
+    World target = random_world(12);
+    std::mt19937_64 r(seed);
+    int refused = 0;
+    for (long k = 0; k < n; ++k) {
+        std::vector<std::byte> bad = good;
+        const std::size_t at = 32 + std::size_t(r() % (bad.size() - 32));
+        const int kind = int(k % 3);
+        const std::size_t run = kind == 2 ? 1 + std::size_t(r() % 16) : 1;
+        for (std::size_t j = at; j < at + run && j < bad.size(); ++j)
+            bad[j] = kind == 0 ? std::byte(r()) : kind == 1 ? std::byte{0xFF} : std::byte{0};
+        fix_checksum(bad);
+        const std::uint64_t hash = target.state_hash();
+        try {
+            World w = World::from_snapshot(bad);
+            for (int s = 0; s < 3; ++s)
+                w.step(1.0 / 60.0);
+        } catch (const SnapshotError&) {
+            ++refused;
+            BOOST_TEST(refused_unchanged(target, bad));
+        } catch (const std::exception&) { // a state the step refuses (ValidationError, ...)
+        }
+        BOOST_TEST(target.state_hash() == hash);
+    }
+    BOOST_TEST_MESSAGE(refused << " of " << n
+                               << " forged snapshots refused by the sections' reader");
+    BOOST_TEST(refused > 0);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
