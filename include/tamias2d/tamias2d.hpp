@@ -20,3 +20,4 @@
 #include "tamias2d/version.hpp"
 #include "tamias2d/world.hpp"
 #include "tamias2d/world_def.hpp"
+#include "tamias2d/world_definitions.hpp"

@@ -22,6 +22,7 @@
 #include "tamias2d/snapshot_error.hpp"
 #include "tamias2d/task_system.hpp"
 #include "tamias2d/world_def.hpp"
+#include "tamias2d/world_definitions.hpp"
 
 namespace tamias2d {
 
@@ -298,6 +299,18 @@ class TAMIAS2D_EXPORT World {
     /// which had one when the snapshot was taken (other bodies have none). Throws SnapshotError
     /// as from_snapshot does, leaving the world exactly as it was.
     void restore(std::span<const std::byte> snapshot);
+    /// The definitions that build this world as it is now (io::scene_from_world writes them as
+    /// a scene): each live body's BodyDef with its pose, velocities, persistent loads, load
+    /// function and settings now, its shapes' ShapeDefs, each live joint's definition with its
+    /// anchors where they are now, and the settings. Not in them: what a step keeps between
+    /// steps (contacts and their warm-start impulses, joint impulses, sleep timers, the broad
+    /// phase), one-step loads not yet applied, and the custom filter: a world built from them
+    /// starts from this state without that history (a snapshot keeps it). A world built from
+    /// them before its first step steps bit for bit as this one: each anchor is the world point
+    /// that gives the joint's local anchors back bit for bit when one lies within 4 ulps of
+    /// where the anchor is. A joint's reference angle (the zero of its angle and limits) is
+    /// taken again, as at creation, from its bodies' angles now. Throws nothing.
+    WorldDefinitions definitions() const;
 
     /// A hash of the complete simulation state (bit patterns of every double): equal hashes
     /// mean bitwise-equal worlds. Used by the determinism and strong-guarantee tests.

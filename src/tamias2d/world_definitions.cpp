@@ -1,0 +1,221 @@
+// World::definitions: the definitions that build a world as it is now (io::scene_from_world).
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "tamias2d/dynamics/joints/joint_creation.hpp"
+#include "tamias2d/dynamics/joints/joint_store.hpp"
+#include "tamias2d/world.hpp"
+#include "tamias2d/world_impl.hpp"
+
+namespace tamias2d {
+
+namespace {
+
+/// The doubles within `ulps` steps of x, x first, then nearest first.
+std::vector<double> near(double x, int ulps) {
+    std::vector<double> out{x};
+    double up = x, down = x;
+    for (int k = 0; k < ulps; ++k) {
+        up = std::nextafter(up, std::numeric_limits<double>::infinity());
+        down = std::nextafter(down, -std::numeric_limits<double>::infinity());
+        out.push_back(up);
+        out.push_back(down);
+    }
+    return out;
+}
+
+/// The world point that is local point `la` of a body at `xa` (and `lb` of one at `xb`, when
+/// given), bit for bit as joint creation computes the local points (inv_transform_point), if
+/// one lies within 4 ulps per coordinate of transform_point(xa, la) (`exact` then true); that
+/// point when none does.
+Vec2d anchor_of(const Transform& xa, Vec2d la, const Transform* xb = nullptr, Vec2d lb = {},
+                bool* exact = nullptr) {
+    if (exact)
+        *exact = true;
+    const Vec2d w = transform_point(xa, la);
+    for (const double x : near(w.x, 4))
+        for (const double y : near(w.y, 4)) {
+            const Vec2d c{x, y};
+            const Vec2d ca = inv_transform_point(xa, c);
+            if (ca.x != la.x || ca.y != la.y)
+                continue;
+            if (xb) {
+                const Vec2d cb = inv_transform_point(*xb, c);
+                if (cb.x != lb.x || cb.y != lb.y)
+                    continue;
+            }
+            return c;
+        }
+    if (exact)
+        *exact = false;
+    return w;
+}
+
+/// The world-frame axis that gives a prismatic or wheel joint's local axis back bit for bit
+/// (local_axis, as at creation) if one lies within 4 ulps; else the axis rotated to the world.
+Vec2d axis_of(const Transform& xa, Vec2d local) {
+    const Vec2d w = rotate(xa.q, local);
+    for (const double x : near(w.x, 4))
+        for (const double y : near(w.y, 4)) {
+            const Vec2d c = inv_rotate(xa.q, normalize(Vec2d{x, y}));
+            if (c.x == local.x && c.y == local.y)
+                return {x, y};
+        }
+    return w;
+}
+
+/// The definition that makes joint `j` again where it is now. A joint whose bodies moved apart
+/// from where it was made (its anchors no longer one point) is made anew with one anchor, its
+/// angle and translation zero there: its limits are moved by the angle and translation it has
+/// now, so that they stay where they were.
+JointDefinition definition_of(Joint j, BodyId a, BodyId b, const BodyStore& bodies) {
+    const Transform& xa = bodies.bodies[j.body_a].xf;
+    const Transform& xb = bodies.bodies[j.body_b].xf;
+    bool exact = true;
+    const Vec2d anchor = anchor_of(xa, j.local_anchor_a, &xb, j.local_anchor_b, &exact);
+    if (j.type == JointType::revolute) {
+        const double angle = joint_angle_now(j, bodies); // (0 where it was made)
+        j.lower_limit -= angle;
+        j.upper_limit -= angle;
+    } else if (!exact && (j.type == JointType::prismatic || j.type == JointType::wheel)) {
+        const double translation = joint_translation_now(j, bodies);
+        j.lower_limit -= translation;
+        j.upper_limit -= translation;
+    }
+    switch (j.type) {
+    case JointType::revolute:
+        return RevoluteJointDef{a,
+                                b,
+                                anchor,
+                                j.collide_connected,
+                                j.break_force,
+                                j.enable_limit,
+                                j.lower_limit,
+                                j.upper_limit,
+                                j.enable_motor,
+                                j.motor_speed,
+                                j.max_motor,
+                                j.enable_spring,
+                                j.hertz,
+                                j.damping_ratio};
+    case JointType::distance:
+        return DistanceJointDef{a,
+                                b,
+                                anchor_of(xa, j.local_anchor_a),
+                                anchor_of(xb, j.local_anchor_b),
+                                j.length,
+                                j.hertz,
+                                j.damping_ratio,
+                                j.enable_limit,
+                                j.lower_limit,
+                                j.upper_limit,
+                                j.collide_connected,
+                                j.break_force};
+    case JointType::target:
+        return TargetJointDef{b, j.target, j.hertz, j.damping_ratio, j.max_force};
+    case JointType::prismatic:
+        return PrismaticJointDef{a,
+                                 b,
+                                 anchor,
+                                 axis_of(xa, j.local_axis),
+                                 j.collide_connected,
+                                 j.break_force,
+                                 j.enable_limit,
+                                 j.lower_limit,
+                                 j.upper_limit,
+                                 j.enable_motor,
+                                 j.motor_speed,
+                                 j.max_motor,
+                                 j.enable_spring,
+                                 j.hertz,
+                                 j.damping_ratio};
+    case JointType::weld:
+        return WeldJointDef{a,
+                            b,
+                            anchor,
+                            j.hertz,
+                            j.damping_ratio,
+                            j.angular_hertz,
+                            j.angular_damping_ratio,
+                            j.collide_connected,
+                            j.break_force};
+    case JointType::wheel:
+        return WheelJointDef{a,
+                             b,
+                             anchor,
+                             axis_of(xa, j.local_axis),
+                             j.collide_connected,
+                             j.break_force,
+                             j.enable_spring,
+                             j.hertz,
+                             j.damping_ratio,
+                             j.enable_limit,
+                             j.lower_limit,
+                             j.upper_limit,
+                             j.enable_motor,
+                             j.motor_speed,
+                             j.max_motor};
+    case JointType::motor:
+        return MotorJointDef{a,
+                             b,
+                             j.local_anchor_a,
+                             j.reference_angle,
+                             j.max_force,
+                             j.max_torque,
+                             j.correction_factor,
+                             j.collide_connected,
+                             j.break_force};
+    case JointType::filter:
+        break;
+    }
+    return FilterJointDef{a, b};
+}
+
+} // namespace
+
+WorldDefinitions World::definitions() const {
+    const Impl& w = *impl_;
+    w.bodies.settle();
+    WorldDefinitions out;
+    out.world = w.def;
+    for (std::uint32_t i = 0; i < w.bodies.size(); ++i) {
+        const Body& b = w.bodies.bodies[i];
+        if (!b.alive)
+            continue;
+        const BodySettings& set = w.bodies.settings[i];
+        BodyDefinition d;
+        d.id = w.bodies.id(i);
+        d.def.type = b.type;
+        d.def.position = b.xf.p;
+        d.def.angle = b.angle;
+        d.def.linear_velocity = b.v;
+        d.def.angular_velocity = b.w;
+        d.def.force = b.force;
+        d.def.torque = b.torque;
+        d.def.mass = set.mass_override;
+        d.def.inertia = set.inertia_override;
+        d.def.gravity_scale = b.gravity_scale;
+        d.def.linear_damping = set.linear_damping;
+        d.def.angular_damping = set.angular_damping;
+        d.def.fixed_rotation = set.fixed_rotation;
+        d.def.bullet = set.bullet;
+        d.def.enable_sleep = w.bodies.sleep_states[i].enabled;
+        d.def.awake = !w.def.enable_sleep || b.type == BodyType::static_body ||
+                      w.bodies.sleep_states[i].awake;
+        d.def.load = set.load;
+        d.def.name = set.name;
+        for (std::uint32_t s = b.first_shape; s != null_index; s = w.shapes.shapes[s].next)
+            d.shapes.push_back(w.shapes.defs[s]);
+        out.bodies.push_back(std::move(d));
+    }
+    for (const Joint& j : w.joints.joints) {
+        if (!j.alive)
+            continue;
+        out.joints.push_back(
+            definition_of(j, w.bodies.id(j.body_a), w.bodies.id(j.body_b), w.bodies));
+    }
+    return out;
+}
+
+} // namespace tamias2d
