@@ -15,6 +15,7 @@
 #include <bit>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <optional>
 #include <span>
 #include <string>
@@ -98,9 +99,16 @@ class SnapshotWriter {
     }
 
   private:
+    /// The n low bytes of v, least significant first (on a little-endian host, as they lie).
     void le(std::uint64_t v, int n) {
-        for (int k = 0; k < n; ++k)
-            u8(std::uint8_t(v >> (8 * k)));
+        const std::size_t at = bytes.size();
+        bytes.resize(at + std::size_t(n));
+        if constexpr (std::endian::native == std::endian::little) {
+            std::memcpy(bytes.data() + at, &v, std::size_t(n));
+        } else {
+            for (int k = 0; k < n; ++k)
+                bytes[at + std::size_t(k)] = std::byte(v >> (8 * k));
+        }
     }
 };
 
@@ -234,8 +242,12 @@ class SnapshotReader {
             fail(f, "cut short: " + std::to_string(n) + " bytes needed, " + std::to_string(left()) +
                         " left (truncated)");
         std::uint64_t v = 0;
-        for (int k = 0; k < n; ++k)
-            v |= std::uint64_t(bytes_[at_ + std::size_t(k)]) << (8 * k);
+        if constexpr (std::endian::native == std::endian::little) {
+            std::memcpy(&v, bytes_.data() + at_, std::size_t(n));
+        } else {
+            for (int k = 0; k < n; ++k)
+                v |= std::uint64_t(bytes_[at_ + std::size_t(k)]) << (8 * k);
+        }
         at_ += std::size_t(n);
         return v;
     }
