@@ -29,9 +29,9 @@ struct BodyDefinition {
 /// The world's settings, bodies (in handle index order) and joints (in handle index order),
 /// the joints' bodies named by the handles of `bodies`.
 struct WorldDefinitions {
-    WorldDef world;
-    std::vector<BodyDefinition> bodies;
-    std::vector<JointDefinition> joints;
+    WorldDef world;                      ///< the settings (gravity as it is now)
+    std::vector<BodyDefinition> bodies;  ///< the live bodies, in handle index order
+    std::vector<JointDefinition> joints; ///< the live joints, in handle index order
 };
 
 } // namespace tamias2d
