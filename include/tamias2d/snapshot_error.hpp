@@ -6,7 +6,6 @@
 #include <cstddef>
 #include <stdexcept>
 #include <string>
-#include <utility>
 
 #include "tamias2d/export.hpp"
 
@@ -23,10 +22,7 @@ struct TAMIAS2D_EXPORT SnapshotError : std::invalid_argument {
     std::string rule;   ///< what it breaks, e.g. "must be < 12 (the shape count)"
 
     /// what(): "snapshot refused at byte 40, bodies[3].first_shape: must be < 12 (...)".
-    SnapshotError(std::size_t offset_, std::string field_, std::string rule_)
-        : std::invalid_argument("snapshot refused at byte " + std::to_string(offset_) + ", " +
-                                field_ + ": " + rule_),
-          offset(offset_), field(std::move(field_)), rule(std::move(rule_)) {}
+    SnapshotError(std::size_t offset_, std::string field_, std::string rule_);
 };
 
 } // namespace tamias2d
