@@ -80,9 +80,9 @@ std::unique_ptr<World::Impl> read_snapshot(std::span<const std::byte> bytes, int
                                            std::vector<std::uint32_t>& had_load) {
     if (bytes.size() < header_size)
         throw SnapshotError(bytes.size(), "header",
-                            "cut short: a snapshot starts with a " + std::to_string(header_size) +
-                                "-byte header, " + std::to_string(bytes.size()) +
-                                " bytes given (truncated)");
+                            "cut short: a snapshot starts with a " +
+                                decimal(std::uint64_t(header_size)) + "-byte header, " +
+                                decimal(std::uint64_t(bytes.size())) + " bytes given (truncated)");
     for (std::size_t k = 0; k < sizeof magic; ++k)
         if (bytes[k] != std::byte(magic[k]))
             throw SnapshotError(0, "header.magic",
@@ -90,14 +90,14 @@ std::unique_ptr<World::Impl> read_snapshot(std::span<const std::byte> bytes, int
     const auto format = std::uint32_t(read_le(bytes, 8, 4));
     if (format != World::snapshot_format_version)
         throw SnapshotError(8, "header.format_version",
-                            "is " + std::to_string(format) + ", must be " +
-                                std::to_string(World::snapshot_format_version) +
+                            "is " + decimal(std::uint64_t(format)) + ", must be " +
+                                decimal(std::uint64_t(World::snapshot_format_version)) +
                                 " (the format this library reads)");
     const std::uint64_t payload_size = read_le(bytes, 16, 8);
     if (payload_size != bytes.size() - header_size)
         throw SnapshotError(16, "header.payload_size",
-                            "is " + std::to_string(payload_size) + ", but " +
-                                std::to_string(bytes.size() - header_size) +
+                            "is " + decimal(std::uint64_t(payload_size)) + ", but " +
+                                decimal(std::uint64_t(bytes.size() - header_size)) +
                                 " bytes follow the header (truncated or extended)");
     const std::span<const std::byte> payload = bytes.subspan(header_size);
     if (checksum(bytes) != read_le(bytes, 24, 8))
@@ -128,8 +128,8 @@ std::unique_ptr<World::Impl> read_snapshot(std::span<const std::byte> bytes, int
     w->joints.read(in, w->bodies);
     w->sensors.read(in, w->shapes);
     if (in.left() != 0)
-        in.fail("payload",
-                "must end after the last section (" + std::to_string(in.left()) + " bytes more)");
+        in.fail("payload", "must end after the last section (" + decimal(std::uint64_t(in.left())) +
+                               " bytes more)");
     return w;
 }
 

@@ -168,11 +168,13 @@ void BroadPhase::read(SnapshotReader& in) {
         const std::size_t here = in.offset();
         in("broad_phase.moved", moved_[p]);
         in.require(moved_[p] == 0 || (moved_[p] == 1 && is_proxy(int(p))), "broad_phase.moved",
-                   "must be 0, or 1 for a proxy (at proxy " + std::to_string(p) + ")", here);
+                   "must be 0, or 1 for a proxy (at proxy " + decimal(std::uint64_t(p)) + ")",
+                   here);
     }
     for (std::size_t k = 0; k < moves; ++k)
         in.require(move_buffer_[k] >= 0 && std::size_t(move_buffer_[k]) < n,
-                   "broad_phase.move_buffer", "must be a proxy id < " + std::to_string(n), at[k]);
+                   "broad_phase.move_buffer", "must be a proxy id < " + decimal(std::uint64_t(n)),
+                   at[k]);
 }
 
 } // namespace tamias2d

@@ -411,9 +411,9 @@ void DynamicTree::read(SnapshotReader& in) {
                        (node.child1 == null_node) == (node.child2 == null_node) &&
                        node.height >= -1 && node.height < max_stack / 2,
                    "",
-                   "links must be -1 or < " + std::to_string(n) +
-                       ", both children or none, height in [-1, " + std::to_string(max_stack / 2) +
-                       ")",
+                   "links must be -1 or < " + decimal(std::uint64_t(n)) +
+                       ", both children or none, height in [-1, " +
+                       decimal(std::uint64_t(max_stack / 2)) + ")",
                    at);
     }
     in.in(nullptr);

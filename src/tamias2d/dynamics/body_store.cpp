@@ -401,7 +401,7 @@ void BodyStore::check_links(SnapshotReader& in, ShapeStore& shapes) const {
                 in.fail("first_shape",
                         "the body's shape list must hold live shapes of this body, each once "
                         "(at shape " +
-                            std::to_string(s) + ")");
+                            decimal(std::uint64_t(s)) + ")");
             seen[s] = 1;
             shapes.last_of_body[i] = s;
         }
@@ -417,7 +417,7 @@ void BodyStore::check_links(SnapshotReader& in, ShapeStore& shapes) const {
     for (const std::uint32_t f : free_slots) {
         if (bodies[f].alive || free[f])
             in.fail("bodies.free_slots",
-                    "must list dead slots, each once (slot " + std::to_string(f) + ")");
+                    "must list dead slots, each once (slot " + decimal(std::uint64_t(f)) + ")");
         free[f] = 1;
     }
 }

@@ -287,8 +287,8 @@ void ShapeStore::read(SnapshotReader& in) {
             continue;
         in.require(defs[i].geometry.polygon.count >= 0 &&
                        defs[i].geometry.polygon.count <= max_polygon_vertices,
-                   "polygon.count", "must be in [0, " + std::to_string(max_polygon_vertices) + "]",
-                   at[i]);
+                   "polygon.count",
+                   "must be in [0, " + decimal(std::uint64_t(max_polygon_vertices)) + "]", at[i]);
         try {
             validate(defs[i]);
         } catch (const ValidationError& e) {
@@ -320,7 +320,8 @@ void ShapeStore::read(SnapshotReader& in) {
     }
     in.in(nullptr);
     in.require(live == broad_phase.proxy_count(), "broad_phase",
-               "must hold one proxy per live shape (" + std::to_string(live) + ")", in.offset());
+               "must hold one proxy per live shape (" + decimal(std::uint64_t(live)) + ")",
+               in.offset());
 }
 
 } // namespace tamias2d

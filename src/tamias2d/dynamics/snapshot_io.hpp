@@ -40,6 +40,18 @@ inline std::uint64_t fnv1a_64(std::span<const std::byte> bytes,
     return h;
 }
 
+/// n in decimal: the snapshot messages' numbers (a loop of its own, so that no std::to_string
+/// instantiation is emitted out of line and exported from the shared library).
+inline std::string decimal(std::uint64_t n) {
+    char buf[20];
+    int k = 20;
+    do {
+        buf[--k] = char('0' + n % 10);
+        n /= 10;
+    } while (n != 0);
+    return std::string(buf + k, buf + 20);
+}
+
 class SnapshotWriter {
   public:
     std::vector<std::byte> bytes;
@@ -133,7 +145,8 @@ class SnapshotReader {
     }
     [[noreturn]] void fail_at(std::size_t offset, const char* field,
                               const std::string& rule) const {
-        std::string name = record_ ? std::string(record_) + "[" + std::to_string(index_) + "]" : "";
+        std::string name =
+            record_ ? std::string(record_) + "[" + decimal(std::uint64_t(index_)) + "]" : "";
         if (field && *field)
             name += (name.empty() ? "" : ".") + std::string(field);
         throw SnapshotError(offset, name, rule);
@@ -159,11 +172,11 @@ class SnapshotReader {
         const std::size_t at = offset();
         const std::uint64_t n = u64(f);
         if (n > most)
-            fail_at(at, f, "must be <= " + std::to_string(most));
+            fail_at(at, f, "must be <= " + decimal(std::uint64_t(most)));
         if (bytes_each > 0 && n > left() / bytes_each)
             fail_at(at, f,
-                    "must fit in the " + std::to_string(left()) + " bytes left (" +
-                        std::to_string(bytes_each) + " bytes or more each)");
+                    "must fit in the " + decimal(std::uint64_t(left())) + " bytes left (" +
+                        decimal(std::uint64_t(bytes_each)) + " bytes or more each)");
         return std::size_t(n);
     }
 
@@ -219,7 +232,8 @@ class SnapshotReader {
         U u{};
         (*this)(f, u);
         if (u < U{} || u > static_cast<U>(last))
-            fail_at(at, f, "must be an enum value in [0, " + std::to_string(int(last)) + "]");
+            fail_at(at, f,
+                    "must be an enum value in [0, " + decimal(std::uint64_t(int(last))) + "]");
         v = static_cast<E>(u);
     }
     /// An index < `limit` (or null_index if `null`).
@@ -228,7 +242,8 @@ class SnapshotReader {
         v = u32(f);
         if (!(v < limit || (null && v == 0xFFFFFFFFu)))
             fail_at(at, f,
-                    "must be < " + std::to_string(limit) + (null ? " or null (4294967295)" : ""));
+                    "must be < " + decimal(std::uint64_t(limit)) +
+                        (null ? " or null (4294967295)" : ""));
     }
     std::uint32_t index(const char* f, std::uint32_t limit, bool null = false) {
         std::uint32_t v = 0;
@@ -239,8 +254,8 @@ class SnapshotReader {
   private:
     std::uint64_t le(const char* f, int n) {
         if (left() < std::size_t(n))
-            fail(f, "cut short: " + std::to_string(n) + " bytes needed, " + std::to_string(left()) +
-                        " left (truncated)");
+            fail(f, "cut short: " + decimal(std::uint64_t(n)) + " bytes needed, " +
+                        decimal(std::uint64_t(left())) + " left (truncated)");
         std::uint64_t v = 0;
         if constexpr (std::endian::native == std::endian::little) {
             std::memcpy(&v, bytes_.data() + at_, std::size_t(n));

@@ -384,7 +384,7 @@ void JointStore::read(SnapshotReader& in, const BodyStore& bodies) {
     in.in(nullptr);
     for (std::uint32_t i = 0; i < n; ++i)
         in.require(!joints[i].alive || seen[i] == 3, "joints.by_body",
-                   "must list live joint " + std::to_string(i) + " under both its bodies",
+                   "must list live joint " + decimal(std::uint64_t(i)) + " under both its bodies",
                    in.offset());
     in("joints.inv_h", inv_h);
     const std::size_t nb = in.count("joints.broken", 8);
