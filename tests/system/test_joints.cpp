@@ -16,12 +16,13 @@
 #include <gsl/gsl_odeiv2.h>
 #include <gsl/gsl_sf_ellint.h>
 
-#include "system/damped_oscillator.hpp"
+#include "support/damped_oscillator.hpp"
 #include "system/system_support.hpp"
 
 namespace utf = boost::unit_test;
 using namespace tamias2d;
 using namespace tamias2d::system_test;
+using tamias2d::test::DampedOscillator;
 
 namespace {
 
@@ -300,10 +301,8 @@ double spring_error(int steps_per_second, double hertz, double zeta, double stre
 BOOST_AUTO_TEST_CASE(distance_spring_is_a_damped_oscillator,
                      *utf::label("DD20") * utf::label("IM6") * utf::label("LC3")) {
     const double f = 2.0, zeta = 0.1, x0 = 0.2;
-    const double w = 2.0 * std::numbers::pi * f, wd = w * std::sqrt(1.0 - zeta * zeta);
-    const auto exact = [&](double t) {
-        return x0 * std::exp(-zeta * w * t) * (std::cos(wd * t) + zeta * w / wd * std::sin(wd * t));
-    };
+    const DampedOscillator osc{f, zeta};
+    const auto exact = [&](double t) { return osc.from_rest(x0, t); };
     const double e240 = spring_error(240, f, zeta, x0, exact);
     const double e480 = spring_error(480, f, zeta, x0, exact);
     BOOST_TEST_MESSAGE("spring: max deviation " << e240 << " m at 1/240 s, " << e480
