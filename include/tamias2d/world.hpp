@@ -33,8 +33,8 @@ struct RayCastHit {
 
 /// \srs{R1} The space in which all rigid bodies of a simulation interact.
 /// Every mutating call validates its input first (SRS R4) and throws ValidationError,
-/// InvalidHandle or WrongKind (errors.hpp) without changing anything: the world is left exactly
-/// as it was.
+/// InvalidHandle (WrongWorld for a handle of another world) or WrongKind (errors.hpp) without
+/// changing anything: the world is left exactly as it was.
 /// Every real input must be finite (DCX_finite) and within the supported range (DCX_range:
 /// magnitudes up to 1e12 in SI units, sizes from 1e-12; docs/design.md, "Supported ranges").
 class TAMIAS2D_EXPORT World {
@@ -43,13 +43,19 @@ class TAMIAS2D_EXPORT World {
     /// constraint (e.g. substeps < 1, a non-finite gravity).
     explicit World(const WorldDef& def = {});
     ~World();
-    /// Worlds move (handles stay valid in the moved-to world) but are not copied: a copy of a
-    /// whole simulation is rarely meant, and a scene file (io/scene.hpp) rebuilds one.
+    /// Worlds move (handles stay valid in the moved-to world, which keeps the tag) but are not
+    /// copied: a copy of a whole simulation is rarely meant, and a scene file (io/scene.hpp)
+    /// rebuilds one.
     World(World&&) noexcept;
     /// Takes over the other world's bodies, shapes and state.
     World& operator=(World&&) noexcept;
     World(const World&) = delete;
     World& operator=(const World&) = delete;
+
+    /// The world's tag, which every handle it issues carries (BodyId::world): distinct for
+    /// every World of the process and never 0, so that a handle of another world, or a default
+    /// one, names nothing here. Not part of the state hash: equal worlds hash equal.
+    std::uint32_t tag() const;
 
     // --- bodies and shapes (R1, R2, R3) ---
     /// Adds a body (R1, R2) and returns its handle; throws ValidationError naming the field

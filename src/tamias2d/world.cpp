@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -52,12 +53,24 @@ void require_dynamic(const BodyStore& bodies, BodyId id, const Body& b, const ch
                         "forces, torques or impulses)");
 }
 
+/// A tag no World of this process has had (World::tag), never 0.
+std::uint32_t new_world_tag() {
+    static std::atomic<std::uint32_t> last{0};
+    std::uint32_t tag = last.fetch_add(1, std::memory_order_relaxed) + 1;
+    while (tag == 0) // after 2^32 worlds the count wraps; 0 stays "no world"
+        tag = last.fetch_add(1, std::memory_order_relaxed) + 1;
+    return tag;
+}
+
 } // namespace
 
 World::World(const WorldDef& def) {
     validate(def);
-    impl_ = std::make_unique<Impl>(def);
+    impl_ = std::make_unique<Impl>(def, new_world_tag());
     impl_->tasks = StepTasks(def.workers, def.task_system);
+}
+std::uint32_t World::tag() const {
+    return impl_->bodies.slots.world();
 }
 World::~World() = default;
 World::World(World&&) noexcept = default;

@@ -34,7 +34,8 @@ struct World::Impl {
     StepTasks tasks;         ///< the step's parallel loops (WorldDef::workers, task_system)
     std::vector<Load> loads; ///< this step's load-function values (empty when none has one)
 
-    explicit Impl(const WorldDef& d) : def(d) {
+    /// A world tagged `tag` (World::tag).
+    Impl(const WorldDef& d, std::uint32_t tag) : def(d), bodies(tag), shapes(tag), joints(tag) {
         shapes.broad_phase.set_least_margin(d.speculative_distance); // (BroadPhase::fattened)
     }
 

@@ -74,17 +74,17 @@ struct Driver {
     BodyId body() {
         if (bodies.empty() || r.chance(5))
             return BodyId{static_cast<std::uint32_t>(r.below(8)),
-                          static_cast<std::uint32_t>(r.below(3))}; // forged
+                          static_cast<std::uint32_t>(r.below(3)), world.tag()}; // forged
         return bodies[r.below(bodies.size())];
     }
     ShapeId shape() {
         if (shapes.empty() || r.chance(5))
-            return ShapeId{static_cast<std::uint32_t>(r.below(8)), 0};
+            return ShapeId{static_cast<std::uint32_t>(r.below(8)), 0, world.tag()};
         return shapes[r.below(shapes.size())];
     }
     JointId joint() {
         if (joints.empty() || r.chance(5))
-            return JointId{static_cast<std::uint32_t>(r.below(4)), 0};
+            return JointId{static_cast<std::uint32_t>(r.below(4)), 0, world.tag()};
         return joints[r.below(joints.size())];
     }
 

@@ -15,14 +15,8 @@
 
 namespace tamias2d {
 
-/// \srs{R1} A body handle names one body of the world's space, and only while that body lives:
-/// a destroyed body's handle, or one of a recycled slot's earlier generation, is not valid.
 Body& BodyStore::get_for_attach(BodyId id) {
-    if (id.index >= bodies.size() || !bodies[id.index].alive ||
-        generation[id.index] != id.generation) {
-        throw InvalidHandle("stale or unknown BodyId " + std::to_string(id.index) + ":" +
-                            std::to_string(id.generation));
-    }
+    slots.check(id);
     return bodies[id.index];
 }
 
@@ -58,29 +52,17 @@ void BodyStore::settle() const {
     mass_pending_.clear();
 }
 
-bool BodyStore::is_valid(BodyId id) const {
-    return id.index < bodies.size() && bodies[id.index].alive &&
-           generation[id.index] == id.generation;
-}
-
 /// \srs{R2} A new body starts from the state its input gives: position, orientation,
 /// velocities, applied force and torque (a static body never moves, whatever it is given).
 std::uint32_t BodyStore::create(const BodyDef& def, bool sleeping) {
-    std::uint32_t i;
-    if (!free_slots.empty()) {
-        i = free_slots.back();
-        free_slots.pop_back();
-    } else {
-        i = std::uint32_t(bodies.size());
+    const std::uint32_t i = slots.acquire();
+    if (i == bodies.size()) {
         bodies.emplace_back();
         settings.emplace_back();
         sleep_states.emplace_back();
-        generation.push_back(0);
     }
     Body& b = bodies[i];
-    ++generation[i];
     b = Body{};
-    b.alive = true;
     b.type = def.type;
     b.angle = def.angle;
     b.xf = {def.position, Rot::from_angle(def.angle)};
@@ -104,7 +86,6 @@ std::uint32_t BodyStore::create(const BodyDef& def, bool sleeping) {
 void BodyStore::destroy(std::uint32_t i) {
     Body& b = bodies[i];
     b.first_shape = null_index;
-    b.alive = false;
     sleep_states[i] = SleepState{}; // neither awake nor movable
     BodySettings& set = settings[i];
     loaded_bodies -= set.load ? 1 : 0;
@@ -112,7 +93,7 @@ void BodyStore::destroy(std::uint32_t i) {
     // No mass pending (its entry in mass_pending_, if any, is then skipped).
     if (i < mass_pending_flag_.size())
         mass_pending_flag_[i] = false;
-    free_slots.push_back(i);
+    slots.release(i);
 }
 
 /// \srs{R2} The body's mass and moment of inertia: its shapes' (or the input's, where given;
@@ -156,7 +137,7 @@ void BodyStore::evaluate_loads(double time, std::vector<Load>& loads) const {
     for (std::uint32_t i = 0; i < loads.size(); ++i) {
         const Body& b = bodies[i];
         const LoadFunction& load = settings[i].load;
-        if (!b.alive || !load || b.type != BodyType::dynamic)
+        if (!alive(i) || !load || b.type != BodyType::dynamic)
             continue;
         const Load l = load(time);
         require_within("load(t).force", l.force, supported::input_max, "N");
@@ -169,7 +150,7 @@ void BodyStore::check_state() const {
     constexpr double m = supported::state_max;
     for (std::uint32_t i = 0; i < size(); ++i) {
         const Body& b = bodies[i];
-        if (!b.alive || b.type == BodyType::static_body)
+        if (!alive(i) || b.type == BodyType::static_body)
             continue;
         if (std::abs(b.center.x) <= m && std::abs(b.center.y) <= m && std::abs(b.v.x) <= m &&
             std::abs(b.v.y) <= m && std::abs(b.w) <= m && std::abs(b.angle) <= m)
@@ -185,8 +166,9 @@ void BodyStore::check_state() const {
 double BodyStore::kinetic_energy() const {
     namespace u = tamias2d::units;
     double e = 0.0;
-    for (const Body& b : bodies) {
-        if (!b.alive || b.type != BodyType::dynamic)
+    for (std::uint32_t i = 0; i < size(); ++i) {
+        const Body& b = bodies[i];
+        if (!alive(i) || b.type != BodyType::dynamic)
             continue;
         const double inertia = b.inv_inertia > 0.0 ? b.inertia : 0.0;
         e += model::dd15::kinetic_energy(
@@ -200,8 +182,9 @@ double BodyStore::kinetic_energy() const {
 double BodyStore::potential_energy(Vec2d g) const {
     namespace u = tamias2d::units;
     double e = 0.0;
-    for (const Body& b : bodies) {
-        if (!b.alive || b.type != BodyType::dynamic)
+    for (std::uint32_t i = 0; i < size(); ++i) {
+        const Body& b = bodies[i];
+        if (!alive(i) || b.type != BodyType::dynamic)
             continue;
         e += model::dd16::potential_energy(u::from_value<u::Mass>(b.mass),
                                            bridge::typed<u::Acceleration>(b.gravity_scale * g),
@@ -214,8 +197,9 @@ double BodyStore::potential_energy(Vec2d g) const {
 Vec2d BodyStore::linear_momentum() const {
     namespace u = tamias2d::units;
     std::vector<model::gd1::MassVelocity> mv;
-    for (const Body& b : bodies) {
-        if (!b.alive || b.type != BodyType::dynamic)
+    for (std::uint32_t i = 0; i < size(); ++i) {
+        const Body& b = bodies[i];
+        if (!alive(i) || b.type != BodyType::dynamic)
             continue;
         mv.push_back({u::from_value<u::Mass>(b.mass), bridge::typed<u::Velocity>(b.v)});
     }
@@ -225,7 +209,7 @@ Vec2d BodyStore::linear_momentum() const {
 std::vector<BodyId> BodyStore::live_ids() const {
     std::vector<BodyId> out;
     for (std::uint32_t i = 0; i < size(); ++i) {
-        if (bodies[i].alive)
+        if (alive(i))
             out.push_back(id(i));
     }
     return out;
@@ -264,8 +248,9 @@ void BodyStore::hash(StateHasher& hs, const ShapeStore& shapes, bool sleeping) c
     for (std::uint32_t i = 0; i < size(); ++i) {
         const Body& b = bodies[i];
         const BodySettings& set = settings[i];
-        hs(std::uint64_t(generation[i]) << 8 | std::uint64_t(b.alive) << 4 | std::uint64_t(b.type));
-        if (!b.alive)
+        hs(std::uint64_t(slots.generation(i)) << 8 | std::uint64_t(alive(i)) << 4 |
+           std::uint64_t(b.type));
+        if (!alive(i))
             continue;
         hs(b.xf.p);
         hs(b.xf.q.c);

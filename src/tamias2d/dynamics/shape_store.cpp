@@ -12,35 +12,13 @@
 
 namespace tamias2d {
 
-/// \srs{R1} A shape handle names one shape of the world's space, and only while that shape
-/// lives: a destroyed shape's handle, or one of a recycled slot's earlier generation, is not
-/// valid.
-Shape& ShapeStore::get(ShapeId id) {
-    if (id.index >= shapes.size() || !shapes[id.index].alive() ||
-        shapes[id.index].generation != id.generation) {
-        throw InvalidHandle("stale or unknown ShapeId " + std::to_string(id.index) + ":" +
-                            std::to_string(id.generation));
-    }
-    return shapes[id.index];
-}
-
-bool ShapeStore::is_valid(ShapeId id) const {
-    return id.index < shapes.size() && shapes[id.index].alive() &&
-           shapes[id.index].generation == id.generation;
-}
-
 std::uint32_t ShapeStore::create(std::uint32_t body_index, Body& b, const ShapeDef& def) {
-    std::uint32_t i;
-    if (!free_slots.empty()) {
-        i = free_slots.back();
-        free_slots.pop_back();
-    } else {
-        i = std::uint32_t(shapes.size());
+    const std::uint32_t i = slots.acquire();
+    if (i == shapes.size()) {
         shapes.emplace_back();
         defs.emplace_back();
     }
     Shape& s = shapes[i];
-    s.generation += 1;
     s.body = body_index;
     s.next = null_index;
     defs[i] = def;
@@ -74,7 +52,7 @@ void ShapeStore::destroy(std::uint32_t i, Body& b) {
 void ShapeStore::release(std::uint32_t i) {
     broad_phase.destroy_proxy(shapes[i].proxy);
     shapes[i].proxy = -1;
-    free_slots.push_back(i);
+    slots.release(i);
 }
 
 void ShapeStore::sync_poses(const Body& b) {
@@ -172,8 +150,8 @@ void ShapeStore::hash(StateHasher& hs) const {
     hs(std::uint64_t(shapes.size()));
     for (std::uint32_t i = 0; i < shapes.size(); ++i) {
         const Shape& s = shapes[i];
-        hs(std::uint64_t(s.generation) << 1 | std::uint64_t(s.alive()));
-        if (!s.alive())
+        hs(std::uint64_t(slots.generation(i)) << 1 | std::uint64_t(slots.live(i)));
+        if (!slots.live(i))
             continue;
         const ShapeDef& d = defs[i];
         hs(std::uint64_t(s.body));

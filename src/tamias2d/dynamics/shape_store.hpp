@@ -12,6 +12,7 @@
 #include "tamias2d/dynamics/shape.hpp"
 #include "tamias2d/handles.hpp"
 #include "tamias2d/memory/large_array.hpp"
+#include "tamias2d/memory/slot_map.hpp"
 #include "tamias2d/shape_def.hpp"
 #include "tamias2d/world.hpp"
 
@@ -22,17 +23,25 @@ struct StateHasher;
 
 class ShapeStore {
   public:
+    /// The shapes of the world tagged `world` (World::tag).
+    explicit ShapeStore(std::uint32_t world) : slots(world) {}
+
+    /// Which shapes live, their handles' generations and the free slots.
+    SlotMap<ShapeId> slots;
     LargeArray<Shape> shapes;
     std::vector<ShapeDef> defs; ///< per shape, indexed alike: what it was made from
-    std::vector<std::uint32_t> free_slots;
     /// Per body index: its last shape, valid while the body's first_shape is not null_index.
     std::vector<std::uint32_t> last_of_body;
     BroadPhase broad_phase;
 
-    /// The shape of a handle; throws InvalidHandle for a stale or unknown one.
-    Shape& get(ShapeId id);
-    bool is_valid(ShapeId id) const;
-    ShapeId id(std::uint32_t i) const { return {i, shapes[i].generation}; }
+    /// The shape of a handle; throws InvalidHandle for a stale or unknown one, WrongWorld for
+    /// one of another world.
+    Shape& get(ShapeId id) {
+        slots.check(id);
+        return shapes[id.index];
+    }
+    bool is_valid(ShapeId id) const { return slots.is_valid(id); }
+    ShapeId id(std::uint32_t i) const { return slots.id(i); }
 
     /// A new shape on body `body_index` (whose Body is `b`), appended to its list in O(1) (the
     /// list's last shape is kept per body) so that the body's shapes (and the mass summed over

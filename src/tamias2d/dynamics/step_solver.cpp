@@ -26,7 +26,7 @@ constexpr std::size_t parallel_bodies = 2 * body_block;
 /// Whether body i is immovable this step: static, destroyed, or asleep (sleeping on).
 bool immovable(const BodyStore& store, std::uint32_t i, const WorldDef& def) {
     const Body& b = store.bodies[i];
-    return (def.enable_sleep && !store.sleep_states[i].awake) || !b.alive ||
+    return (def.enable_sleep && !store.sleep_states[i].awake) || !store.alive(i) ||
            b.type == BodyType::static_body;
 }
 
@@ -247,10 +247,11 @@ void StepSolver::integrate_positions(double h, std::size_t begin, std::size_t en
 
 namespace {
 
-/// Whether a joint takes part in this step: alive, and not between two immovable bodies
-/// (both asleep, or asleep and static: solver body 0 on both sides).
+/// Whether a joint takes part in this step: not between two immovable bodies (both asleep, or
+/// asleep and static: solver body 0 on both sides). A destroyed joint's solver bodies are both
+/// 0 (JointStore::destroy), and so are a filter joint's (prepare_joints skips it).
 bool solved(const Joint& j) {
-    return j.alive && (j.step.solver_a != 0 || j.step.solver_b != 0);
+    return j.step.solver_a != 0 || j.step.solver_b != 0;
 }
 
 } // namespace
@@ -264,8 +265,9 @@ void StepSolver::prepare_joints(JointStore& joints, const BodyStore& bodies) {
         return;
     joint_rotations_.resize(solver_bodies_.size());
     listed_.resize(solver_bodies_.size()); // all false: the marks are cleared above
-    for (Joint& j : joints.joints) {
-        if (!j.alive || j.type == JointType::filter) // (no constraint: its solver bodies stay 0)
+    for (std::uint32_t i = 0; i < joints.joints.size(); ++i) {
+        Joint& j = joints.joints[i];
+        if (!joints.alive(i) || j.type == JointType::filter) // (no constraint: solver bodies 0)
             continue;
         prepare_joint(j, bodies, solver_index_);
         // An immovable side keeps its rotation all step (solver body 0 never turns); a moving

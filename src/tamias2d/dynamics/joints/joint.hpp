@@ -55,9 +55,7 @@ struct JointStepState {
 
 struct Joint {
     JointType type = JointType::revolute;
-    bool alive = false;
     bool collide_connected = false;
-    std::uint32_t generation = 0;
     std::uint32_t body_a = 0, body_b = 0;     ///< world body indices
     Vec2d local_anchor_a{}, local_anchor_b{}; ///< m, the pin in each body's frame (from origin)
     double break_force = std::numeric_limits<double>::infinity(); ///< N

@@ -83,10 +83,7 @@ void validate_levers(const BodyStore& bodies, const Joint& j, const std::string&
 }
 
 Joint& JointStore::get(JointId id) {
-    if (!is_valid(id)) {
-        throw InvalidHandle("stale or unknown JointId " + std::to_string(id.index) + ":" +
-                            std::to_string(id.generation));
-    }
+    slots.check(id);
     return joints[id.index];
 }
 
@@ -99,30 +96,16 @@ Joint& JointStore::get(JointId id, std::initializer_list<JointType> kinds, const
     return j;
 }
 
-bool JointStore::is_valid(JointId id) const {
-    return id.index < joints.size() && joints[id.index].alive &&
-           joints[id.index].generation == id.generation;
-}
-
 std::uint32_t JointStore::create(const Joint& joint) {
-    std::uint32_t i;
-    if (!free_slots_.empty()) {
-        i = free_slots_.back();
-        free_slots_.pop_back();
-    } else {
-        i = std::uint32_t(joints.size());
+    const std::uint32_t i = slots.acquire();
+    if (i == joints.size())
         joints.emplace_back();
-    }
-    const std::uint32_t generation = joints[i].generation + 1;
     joints[i] = joint;
-    joints[i].generation = generation;
-    joints[i].alive = true;
     const std::uint32_t top = std::max(joint.body_a, joint.body_b);
     if (by_body_.size() <= top)
         by_body_.resize(top + 1);
     by_body_[joint.body_a].push_back(i);
     by_body_[joint.body_b].push_back(i);
-    ++live_;
     return i;
 }
 
@@ -132,9 +115,8 @@ void JointStore::destroy(std::uint32_t i) {
         auto& list = by_body_[body];
         list.erase(std::find(list.begin(), list.end(), i));
     }
-    j.alive = false;
-    free_slots_.push_back(i);
-    --live_;
+    j.step.solver_a = j.step.solver_b = 0;
+    slots.release(i);
 }
 
 void JointStore::unjoin(std::uint32_t i, BodyStore& bodies, ShapeStore& shapes) {
@@ -168,7 +150,7 @@ bool JointStore::filters(std::uint32_t a, std::uint32_t b) const {
 
 void JointStore::check_levers(const BodyStore& bodies) const {
     for (std::uint32_t k = 0; k < joints.size(); ++k) {
-        if (joints[k].alive)
+        if (alive(k))
             validate_levers(bodies, joints[k], "joint[" + std::to_string(k) + "].");
     }
 }
@@ -197,7 +179,7 @@ void JointStore::refuse_step(std::uint32_t i, BodyStore& bodies, bool sleeping) 
 void JointStore::break_joints(BodyStore& bodies, ShapeStore& shapes) {
     for (std::uint32_t i = 0; i < joints.size(); ++i) {
         const Joint& j = joints[i];
-        if (!j.alive ||
+        if (!alive(i) ||
             !(bridge::reaction_force(length(reaction_impulse(j)), inv_h) > j.break_force))
             continue;
         broken.push_back(id(i));
@@ -206,11 +188,11 @@ void JointStore::break_joints(BodyStore& bodies, ShapeStore& shapes) {
 }
 
 void JointStore::hash(StateHasher& hs) const {
-    if (live_ > 0) { // (so that worlds without joints hash as they always did)
+    if (live() > 0) { // (so that worlds without joints hash as they always did)
         for (std::uint32_t i = 0; i < joints.size(); ++i) {
             const Joint& j = joints[i];
-            hs(std::uint64_t(j.generation) << 1 | std::uint64_t(j.alive));
-            if (!j.alive)
+            hs(std::uint64_t(slots.generation(i)) << 1 | std::uint64_t(alive(i)));
+            if (!alive(i))
                 continue;
             hs(std::uint64_t(j.type));
             hs(std::uint64_t(j.body_a) << 32 | j.body_b);

@@ -12,6 +12,7 @@
 #include "tamias2d/dynamics/joints/joint.hpp"
 #include "tamias2d/dynamics/sleep.hpp"
 #include "tamias2d/handles.hpp"
+#include "tamias2d/memory/slot_map.hpp"
 
 namespace tamias2d {
 
@@ -34,11 +35,17 @@ void validate_levers(const BodyStore& bodies, const Joint& j, const std::string&
 
 class JointStore {
   public:
-    std::vector<Joint> joints;
+    /// The joints of the world tagged `world` (World::tag).
+    explicit JointStore(std::uint32_t world) : slots(world) {}
+
+    /// Which joints live, their handles' generations and the free slots.
+    SlotMap<JointId> slots;
+    std::vector<Joint> joints;   ///< per slot
     double inv_h = 0.0;          ///< s^-1, the last step's substep rate (reaction forces)
     std::vector<JointId> broken; ///< joints the last step broke
 
-    /// The joint of a handle; throws InvalidHandle for a stale or unknown one.
+    /// The joint of a handle; throws InvalidHandle for a stale or unknown one, WrongWorld for
+    /// one of another world.
     Joint& get(JointId id);
     const Joint& get(JointId id) const { return const_cast<JointStore*>(this)->get(id); }
     /// The joint of a handle for a reading or setter `call` that applies to the `kinds` only:
@@ -50,12 +57,16 @@ class JointStore {
                      const char* rule) const {
         return const_cast<JointStore*>(this)->get(id, kinds, call, rule);
     }
-    bool is_valid(JointId id) const;
-    JointId id(std::uint32_t i) const { return {i, joints[i].generation}; }
-    std::uint32_t live() const { return live_; }
+    bool is_valid(JointId id) const { return slots.is_valid(id); }
+    JointId id(std::uint32_t i) const { return slots.id(i); }
+    /// Whether slot i holds a joint (a destroyed joint's slot does not, until it is reused).
+    bool alive(std::uint32_t i) const { return slots.live(i); }
+    std::uint32_t live() const { return slots.live_count(); }
 
     /// A slot for a joint whose fields (bodies, anchors, options) are set; returns its index.
     std::uint32_t create(const Joint& joint);
+    /// Frees joint i's slot; its solver bodies are cleared, so that the step, which reads the
+    /// joints' array whole, solves it no more (StepSolver's solved).
     void destroy(std::uint32_t i);
     /// Destroys joint i and wakes its bodies. A joint that kept its bodies from colliding
     /// (DD27) no longer does: the shapes of one of its bodies (B, or A when B is static) are
@@ -88,9 +99,7 @@ class JointStore {
     void hash(StateHasher& hs) const;
 
   private:
-    std::vector<std::uint32_t> free_slots_;
     std::vector<std::vector<std::uint32_t>> by_body_; ///< per body index: its joints
-    std::uint32_t live_ = 0;
     // What guard_step keeps: the part of each joint a step writes (the step state alone: whole
     // joints, twice the bytes, cost an eighth of a 20 000-joint grid's step), the sleep states
     // and the substep rate.
