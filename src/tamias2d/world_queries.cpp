@@ -123,43 +123,48 @@ void walk_cast(const World::Impl& w, const Geometry& shape, Vec2d origin, double
     sweep.c1 = origin + translation;
     sweep.a0 = sweep.a1 = angle;
     const Transform start = sweep.at(0.0);
-    const Aabb a0 = compute_aabb(moving, start);
-    const Aabb a1 = compute_aabb(moving, sweep.at(1.0));
-    const Aabb swept{std::min(a0.min_x, a1.min_x), std::min(a0.min_y, a1.min_y),
-                     std::max(a0.max_x, a1.max_x), std::max(a0.max_y, a1.max_y)};
     const double tau = 1e-6 * cast_scale(moving, translation);
+    // The trees are walked along the cast, clipped at each hit (the box at the start, grown by
+    // the tolerance, so that a shape within it of the path is met whatever the rounding).
+    const Aabb box = inflated(compute_aabb(moving, start), tau);
     const Vec2d centre = transform_point(start, moving.center);
-    double max_fraction = 1.0;
-    st.broad_phase.query(swept, [&](int proxy) {
+    const Vec2d box_centre{0.5 * (box.min_x + box.max_x), 0.5 * (box.min_y + box.max_y)};
+    const Vec2d half{0.5 * (box.max_x - box.min_x), 0.5 * (box.max_y - box.min_y)};
+    st.broad_phase.box_cast(box, translation, [&](int proxy, double max_fraction) -> double {
         const std::uint32_t s = st.broad_phase.user_data(proxy);
         if (st.defs[s].is_sensor || !admits(w, filter, s))
-            return true;
+            return max_fraction;
         const Shape& sh = st.shapes[s];
         const Transform& xf = w.bodies.bodies[sh.body].xf;
         const Collider& other = sh.collider;
         if (other.type == ShapeType::chain_segment &&
             dot(rotate(xf.q, other.normal(0)), centre - transform_point(xf, other.vertex(0))) < 0.0)
-            return true; // one-sided (DD31): a shape starting behind a chain edge passes it
+            return max_fraction; // one-sided (DD31): a shape starting behind a chain edge
+        // The shape's own box (its fat box was the tree's) met by the moving box, before the
+        // conservative advancement: a shape beside the path costs a box test, not a walk of
+        // the advancement up to it.
+        const Aabb own = compute_aabb(other, xf);
+        const Aabb grown{own.min_x - half.x, own.min_y - half.y, own.max_x + half.x,
+                         own.max_y + half.y};
+        if (!detail::segment_crosses(grown, box_centre, translation, max_fraction))
+            return max_fraction;
         // \srs{DD29} One time of impact, the continuous pass's: the gap at the fraction found
         // is at least the target (tau / 2) and at most target + tolerance (tau).
         const ToiResult r = time_of_impact(moving, sweep, other, xf, 0.5 * tau, 0.5 * tau,
                                            max_fraction, cast_iterations);
         if (r.state == ToiState::separated)
-            return true;
+            return max_fraction;
         const Transform at = sweep.at(r.t);
         const ShapeDistance sd = shape_distance(moving, at, other, xf);
         ShapeCastHit hit{st.id(s), w.bodies.id(sh.body), at.p, {}, r.t};
         if (sd.distance > 0.0) { // apart (else overlapping at the start: no direction)
             hit.point = sd.point_b;
-            hit.normal = -1.0 * sd.normal;
+            hit.normal = Vec2d{} - sd.normal; // (0 - x: no negative zero)
         }
         const double v = on_hit(hit);
         if (v < 0.0)
-            return true; // ignored
-        if (v == 0.0)
-            return false;
-        max_fraction = std::min(max_fraction, v);
-        return true;
+            return max_fraction; // ignored
+        return v < max_fraction ? v : max_fraction;
     });
 }
 
