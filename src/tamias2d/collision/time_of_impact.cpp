@@ -226,7 +226,9 @@ ToiResult time_of_impact(const Collider& moving, const Sweep& sweep, const Colli
     ToiResult out;
     const Vec2d dp = sweep.c1 - sweep.c0;
     const double turn = std::abs(sweep.a1 - sweep.a0);
-    const double r = reach(moving, sweep.local_center);
+    // The reach only counts when the body turns (DD29's bound adds turn x reach): a shape
+    // cast, which never turns, skips its square roots.
+    const double r = turn > 0.0 ? reach(moving, sweep.local_center) : 0.0;
     double t = 0.0;
     ShapeDistance sd = shape_distance(moving, sweep.at(0.0), fixed, fixed_xf);
     if (sd.distance <= target + tolerance) {
