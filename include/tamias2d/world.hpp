@@ -17,19 +17,13 @@
 #include "tamias2d/export.hpp"
 #include "tamias2d/handles.hpp"
 #include "tamias2d/joint_def.hpp"
+#include "tamias2d/query_filter.hpp"
+#include "tamias2d/query_results.hpp"
 #include "tamias2d/shape_def.hpp"
+#include "tamias2d/shapes.hpp"
 #include "tamias2d/world_def.hpp"
 
 namespace tamias2d {
-
-/// The first shape a ray meets (World::ray_cast).
-struct RayCastHit {
-    ShapeId shape;         ///< the shape hit
-    BodyId body;           ///< the body carrying it
-    Vec2d point{};         ///< m
-    Vec2d normal{};        ///< unit, outward from the shape
-    double fraction = 0.0; ///< along the ray's translation, in [0, 1]
-};
 
 /// \srs{R1} The space in which all rigid bodies of a simulation interact.
 /// Every mutating call validates its input first (SRS R4) and throws ValidationError,
@@ -268,6 +262,87 @@ class TAMIAS2D_EXPORT World {
     /// to the lower shape index so that the answer is deterministic. Both within the supported
     /// range (DCX_range, |x| <= 1e12 m), so that the answer is never NaN.
     std::optional<RayCastHit> ray_cast(Vec2d origin, Vec2d translation) const;
+
+    // --- queries ---
+    // Every query below walks the broad phase's trees, sees only the shapes its QueryFilter
+    // admits, changes nothing, and throws ValidationError (the world unchanged) for an input
+    // that is not finite or beyond the supported range (DCX_finite, DCX_range: |x| <= 1e12 m).
+    // Rays and shape casts do not see sensors (DD28); the overlap queries do. A ray that
+    // starts inside a solid shape (circle, polygon, capsule), or on its boundary heading
+    // inward, does not hit that shape: it reports the shapes it enters after. Segments and
+    // chain edges have no inside; a chain edge is hit from its solid side's outside (the right
+    // of point1 -> point2) only. Callbacks are called in the trees' order (the same for the
+    // same world) and must not change the world.
+    /// \srs{DD33} The first shape the filter admits on the segment origin -> origin +
+    /// translation (m); ties go to the lower shape index.
+    std::optional<RayCastHit> ray_cast(Vec2d origin, Vec2d translation,
+                                       const QueryFilter& filter) const;
+    /// \srs{DD33} Every shape the filter admits on the segment, ordered by fraction (ties by
+    /// shape index); allocates the vector.
+    std::vector<RayCastHit> ray_cast_all(Vec2d origin, Vec2d translation,
+                                         const QueryFilter& filter = {}) const;
+    /// \srs{DD33} The same without allocating: the nearest out.size() hits, ordered as above,
+    /// are written to `out`; returns how many hits there are in all (more than out.size() when
+    /// some did not fit).
+    std::size_t ray_cast_all(Vec2d origin, Vec2d translation, const QueryFilter& filter,
+                             std::span<RayCastHit> out) const;
+    /// \srs{DD33} Some hit on the segment, the first the walk finds (not the nearest): whether
+    /// a line of sight is blocked. Stops at that hit.
+    std::optional<RayCastHit> ray_cast_any(Vec2d origin, Vec2d translation,
+                                           const QueryFilter& filter = {}) const;
+    /// \srs{DD33} Calls `callback` for hits on the segment as the walk finds them; its return
+    /// value ignores the hit, stops the cast, or clips it (RayCastCallback). Allocates nothing.
+    void ray_cast(Vec2d origin, Vec2d translation, const QueryFilter& filter,
+                  RayCastCallback callback) const;
+    /// \srs{DD33} Where the segment first enters one shape, whatever its filter or sensor
+    /// flag. Throws InvalidHandle for a shape that does not exist, ValidationError as above.
+    std::optional<RayCastHit> ray_cast(ShapeId shape, Vec2d origin, Vec2d translation) const;
+
+    /// \srs{DD29} Sweeps `shape` (body frame about `origin`, turned by `angle` rad) along
+    /// `translation` (m) without turning, and returns the first shape the filter admits that
+    /// it touches: the fraction of the translation where the gap between them first falls
+    /// within DD29's target, found by the conservative advancement the continuous pass uses
+    /// (the pose there leaves a gap of at most cast_tolerance, never an overlap), with the
+    /// point and normal there. A shape overlapping at the start is hit at fraction 0. A chain
+    /// edge whose solid side the shape's centre starts on is passed through. Throws
+    /// ValidationError for a shape the create_shape rules refuse (DCX_shape), or an input not
+    /// finite or out of range.
+    std::optional<ShapeCastHit> shape_cast(const Geometry& shape, Vec2d origin, double angle,
+                                           Vec2d translation, const QueryFilter& filter = {}) const;
+    /// \srs{DD29} The same, calling `callback` for each hit as the walk finds it (returns as
+    /// a RayCastCallback does). Allocates nothing.
+    void shape_cast(const Geometry& shape, Vec2d origin, double angle, Vec2d translation,
+                    const QueryFilter& filter, ShapeCastCallback callback) const;
+    /// The gap (m) a shape cast's pose may leave: the shapes touch within this distance
+    /// (1e-6 of the cast's scale, the shape's size plus the translation's length).
+    static double cast_tolerance(const Geometry& shape, Vec2d translation);
+
+    /// Shapes the filter admits whose bounding boxes overlap `box`, by shape index; throws as
+    /// query_aabb(box) does.
+    std::vector<ShapeId> query_aabb(const Aabb& box, const QueryFilter& filter) const;
+    /// The same without allocating: `callback` for each such shape in the trees' order, until
+    /// it returns false.
+    void query_aabb(const Aabb& box, const QueryFilter& filter, OverlapCallback callback) const;
+    /// Shapes the filter admits that contain `point` (m), by shape index.
+    std::vector<ShapeId> query_point(Vec2d point, const QueryFilter& filter) const;
+    /// The same without allocating, in the trees' order, until `callback` returns false.
+    void query_point(Vec2d point, const QueryFilter& filter, OverlapCallback callback) const;
+    /// \srs{DD34} Shapes the filter admits that share a point with `shape` placed at `origin`
+    /// turned by `angle` rad (exact: the shapes themselves, not their boxes), by shape index.
+    /// Throws ValidationError for a shape the create_shape rules refuse (DCX_shape), or an
+    /// input not finite or out of range.
+    std::vector<ShapeId> overlap_shape(const Geometry& shape, Vec2d origin, double angle,
+                                       const QueryFilter& filter = {}) const;
+    /// The same without allocating, in the trees' order, until `callback` returns false.
+    void overlap_shape(const Geometry& shape, Vec2d origin, double angle, const QueryFilter& filter,
+                       OverlapCallback callback) const;
+    /// \srs{DD34} The closest points of two shapes of the world (point_a on `a`). Throws
+    /// InvalidHandle for a shape that does not exist.
+    ClosestPoints distance(ShapeId a, ShapeId b) const;
+    /// \srs{DD34} The point of `shape` nearest `point` (m), as point_a (point_b is `point`);
+    /// a point inside a solid shape overlaps it. Throws InvalidHandle for a shape that does not
+    /// exist, ValidationError for a point not finite or out of range.
+    ClosestPoints closest_point(ShapeId shape, Vec2d point) const;
 
     /// A hash of the complete simulation state (bit patterns of every double): equal hashes
     /// mean bitwise-equal worlds. Used by the determinism and strong-guarantee tests.

@@ -16,6 +16,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <functional>
@@ -50,6 +51,8 @@ struct Driver {
     Rng kinds;
     /// Hand-made geometry (hand_made), from a third stream for the same reason.
     Rng hand;
+    /// The queries' block (query_block), from a fourth stream.
+    Rng queries;
     /// What the oracle of an accepted hand-made polygon found wrong (empty: nothing).
     std::string shape_problem;
     World world;
@@ -59,7 +62,7 @@ struct Driver {
     long accepted = 0, rejected = 0;
     explicit Driver(std::uint64_t seed)
         : r(seed), kinds(seed ^ 0x9e3779b97f4a7c15u), hand(seed ^ 0xc2b2ae3d27d4eb4fu),
-          world(make_def(r)) {}
+          queries(seed ^ 0x165667b19e3779f9u), world(make_def(r)) {}
 
     static WorldDef make_def(Rng& r) {
         WorldDef d;
@@ -354,8 +357,146 @@ struct Driver {
         return "body#" + std::to_string(b.index) + "." + std::to_string(b.generation);
     }
 
+    // --- queries ---
+    // Before every call, now and then, a query of World's "queries" section with arguments of
+    // its own stream (extreme values, stale handles, invalid shapes among them). A query
+    // changes nothing, so the main stream's calls (and the seeds docs/verification.md replays)
+    // are the same with it: its promises are checked here. A refusal is a named error that
+    // leaves state_hash() unchanged; an answer is finite, its fractions in [0, 1].
+    Vec2d query_vec() {
+        return queries.chance(80) ? Vec2d{queries.between(-30, 30), queries.between(-10, 30)}
+                                  : Vec2d{any_double(queries), any_double(queries)};
+    }
+    QueryFilter query_filter() {
+        QueryFilter f;
+        if (queries.chance(30)) {
+            f.category_bits = std::uint32_t(queries.bits());
+            f.mask_bits = std::uint32_t(queries.bits());
+        }
+        if (queries.chance(20) && !bodies.empty())
+            f.exclude_body = queries.chance(90) ? bodies[queries.below(bodies.size())]
+                                                : BodyId{std::uint32_t(queries.below(8)), 7};
+        return f;
+    }
+    Geometry query_geometry() {
+        Geometry g;
+        switch (queries.below(4)) {
+        case 0:
+            g = circle_shape(positive_size(queries)).geometry;
+            break;
+        case 1:
+            g = box_shape(positive_size(queries), positive_size(queries)).geometry;
+            break;
+        case 2:
+            g.type = ShapeType::capsule;
+            g.capsule = {query_vec(), query_vec(), positive_size(queries)};
+            break;
+        default:
+            g.type = ShapeType::segment;
+            g.segment = {query_vec(), query_vec()};
+            break;
+        }
+        return g;
+    }
+    static bool good(const RayCastHit& h) {
+        return h.fraction >= 0.0 && h.fraction <= 1.0 && finite(h.point) && finite(h.normal);
+    }
+    static bool good(const ShapeCastHit& h) {
+        return h.fraction >= 0.0 && h.fraction <= 1.0 && finite(h.point) && finite(h.normal);
+    }
+    static bool good(const ClosestPoints& c) {
+        return std::isfinite(c.distance) && c.distance >= 0.0 && finite(c.point_a) &&
+               finite(c.point_b) && finite(c.normal);
+    }
+    /// One query; returns what is wrong with its answer (empty: nothing); throws its refusal.
+    std::string query() {
+        const Vec2d o = query_vec(), d = query_vec();
+        const QueryFilter f = query_filter();
+        switch (queries.below(9)) {
+        case 0:
+            if (const auto h = world.ray_cast(o, d, f); h && !good(*h))
+                return "ray_cast (filtered): a hit out of range";
+            return {};
+        case 1:
+            for (const RayCastHit& h : world.ray_cast_all(o, d, f))
+                if (!good(h))
+                    return "ray_cast_all: a hit out of range";
+            return {};
+        case 2: {
+            std::array<RayCastHit, 2> buf{};
+            const std::size_t n = world.ray_cast_all(o, d, f, buf);
+            for (std::size_t i = 0; i < std::min(n, buf.size()); ++i)
+                if (!good(buf[i]))
+                    return "ray_cast_all (span): a hit out of range";
+            if (const auto h = world.ray_cast_any(o, d, f); h && !good(*h))
+                return "ray_cast_any: a hit out of range";
+            return {};
+        }
+        case 3: {
+            bool bad = false;
+            world.ray_cast(o, d, f, [&](const RayCastHit& h) {
+                bad = bad || !good(h);
+                return queries.chance(50) ? h.fraction : 1.0;
+            });
+            return bad ? "ray_cast (callback): a hit out of range" : "";
+        }
+        case 4:
+            if (shapes.empty())
+                return {};
+            if (const auto h = world.ray_cast(shapes[queries.below(shapes.size())], o, d);
+                h && !good(*h))
+                return "ray_cast (shape): a hit out of range";
+            return {};
+        case 5:
+            if (const auto h = world.shape_cast(
+                    query_geometry(), o,
+                    queries.chance(80) ? queries.between(-4, 4) : any_double(queries), d, f);
+                h && !good(*h))
+                return "shape_cast: a hit out of range";
+            return {};
+        case 6:
+            (void)world.overlap_shape(query_geometry(), o, queries.between(-4, 4), f);
+            (void)world.query_aabb(Aabb{o.x, o.y, o.x + d.x, o.y + d.y}, f);
+            (void)world.query_point(o, f);
+            return {};
+        default: {
+            if (shapes.empty())
+                return {};
+            const ShapeId a = shapes[queries.below(shapes.size())];
+            const ShapeId b = shapes[queries.below(shapes.size())];
+            if (!good(world.distance(a, b)))
+                return "distance: not finite";
+            if (!good(world.closest_point(a, o)))
+                return "closest_point: not finite";
+            return {};
+        }
+        }
+    }
+    void query_block() {
+        if (!queries.chance(25))
+            return;
+        const std::uint64_t before = world.state_hash();
+        std::string problem;
+        try {
+            problem = query();
+        } catch (const ValidationError& e) {
+            if (e.field.empty())
+                problem = std::string("a query's ValidationError without a field: ") + e.what();
+        } catch (const InvalidHandle& e) {
+            if (std::string(e.what()).empty())
+                problem = "a query's InvalidHandle with an empty message";
+        } catch (const std::exception& e) {
+            problem = std::string("a query threw an exception of another kind: ") + e.what();
+        }
+        if (problem.empty() && world.state_hash() != before)
+            problem = "a query changed the world";
+        if (!problem.empty())
+            BOOST_ERROR("queries (before " << last.str() << "): " << problem);
+    }
+
     /// One random call; throws what the library throws.
     void call() {
+        query_block();
         last.str("");
         last.precision(17);
         switch (r.below(22)) {
