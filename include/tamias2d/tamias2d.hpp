@@ -9,6 +9,7 @@
 #include "tamias2d/build_info.hpp"
 #include "tamias2d/contact_info.hpp"
 #include "tamias2d/errors.hpp"
+#include "tamias2d/events.hpp"
 #include "tamias2d/handles.hpp"
 #include "tamias2d/joint_def.hpp"
 #include "tamias2d/memory.hpp"
