@@ -93,6 +93,7 @@ void World::set_joint_event_thresholds(JointId joint, double force, double torqu
     validate_event_threshold("joint.torque_threshold", torque, true);
     j.force_threshold = force;
     j.torque_threshold = torque;
+    impl_->events.thresholds_set(j);
 }
 
 double World::joint_force_threshold(JointId joint) const {

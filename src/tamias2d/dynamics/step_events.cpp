@@ -144,7 +144,7 @@ void StepEvents::after_step(const BodyStore& bodies, const ShapeStore& shapes,
              bridge::reaction_force(reaction_impulse(j), joints.inv_h),
              bridge::reaction_torque(reaction_angular_impulse(j), joints.inv_h)});
     }
-    if (joints.live() == 0)
+    if (joints.live() == 0 || !thresholds_used_)
         return;
     for (std::uint32_t i = 0; i < joints.joints.size(); ++i) {
         const Joint& j = joints.joints[i];

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "tamias2d/body_def.hpp"
@@ -50,6 +51,12 @@ class StepEvents {
         return body < move_flag_.size() && move_flag_[body] != 0;
     }
     void set_move_events(std::uint32_t body, bool on);
+    /// Joint j's thresholds were set: once one is finite, each step passes over the joints
+    /// (until then, a world of many joints pays nothing for their events).
+    void thresholds_set(const Joint& j) {
+        thresholds_used_ =
+            thresholds_used_ || j.force_threshold < infinite || j.torque_threshold < infinite;
+    }
     /// A shape's enable_hit_events changed from `was` to `now`.
     void hit_flag_changed(bool was, bool now) {
         hit_shapes_ += std::uint32_t(now) - std::uint32_t(was);
@@ -84,21 +91,25 @@ class StepEvents {
     std::vector<std::uint8_t> move_flag_; ///< per body index: BodyDef::enable_move_events
     std::vector<std::uint8_t> moved_;     ///< per body index: awake during the last solve
     bool moved_known_ = false;            ///< before_sleep ran in this step
-    std::uint32_t move_bodies_ = 0;       ///< live bodies with move events
-    std::uint32_t hit_shapes_ = 0;        ///< live shapes with hit events
+    bool thresholds_used_ = false;        ///< some joint has had a finite threshold
+    static constexpr double infinite = std::numeric_limits<double>::infinity();
+    std::uint32_t move_bodies_ = 0; ///< live bodies with move events
+    std::uint32_t hit_shapes_ = 0;  ///< live shapes with hit events
 };
 
 /// A joint made from `def` with its event thresholds, checked first (validate_event_threshold):
-/// for World::create_joint, before the joint is stored.
-template <class Def> Joint with_event_thresholds(Joint j, const Def& def) {
+/// for World::create_joint, before the joint is stored (`events` then passes over the joints
+/// after each step).
+template <class Def> Joint with_event_thresholds(StepEvents& events, Joint j, const Def& def) {
     validate_event_threshold("joint.force_threshold", def.force_threshold, true);
     validate_event_threshold("joint.torque_threshold", def.torque_threshold, true);
     j.force_threshold = def.force_threshold;
     j.torque_threshold = def.torque_threshold;
+    events.thresholds_set(j);
     return j;
 }
 /// A filter joint carries no force: it has no thresholds.
-inline Joint with_event_thresholds(Joint j, const FilterJointDef&) {
+inline Joint with_event_thresholds(StepEvents&, Joint j, const FilterJointDef&) {
     return j;
 }
 
