@@ -40,6 +40,11 @@ struct RevoluteJointDef {
     bool enable_spring = false;
     double hertz = 0.0;         ///< Hz
     double damping_ratio = 0.0; ///< 1: critically damped
+    /// N, >= 0: after a step in which the joint's reaction force exceeded this, the joint is
+    /// reported (World::joint_events, threshold_exceeded) and kept. Infinite: never.
+    double force_threshold = std::numeric_limits<double>::infinity();
+    /// N m, >= 0: the same for its reaction torque. Infinite: never.
+    double torque_threshold = std::numeric_limits<double>::infinity();
     /// Field by field (a scene's joints compare so after a round trip through JSON).
     friend bool operator==(const RevoluteJointDef&, const RevoluteJointDef&) = default;
 };
@@ -66,6 +71,11 @@ struct DistanceJointDef {
     double max_length = std::numeric_limits<double>::infinity(); ///< m
     bool collide_connected = false; ///< as RevoluteJointDef::collide_connected
     double break_force = std::numeric_limits<double>::infinity(); ///< N, > 0, as for revolute
+    /// N, >= 0: after a step in which the joint's reaction force exceeded this, the joint is
+    /// reported (World::joint_events, threshold_exceeded) and kept. Infinite: never.
+    double force_threshold = std::numeric_limits<double>::infinity();
+    /// N m, >= 0: the same for its reaction torque. Infinite: never.
+    double torque_threshold = std::numeric_limits<double>::infinity();
     /// Field by field (a scene's joints compare so after a round trip through JSON).
     friend bool operator==(const DistanceJointDef&, const DistanceJointDef&) = default;
 };
@@ -81,6 +91,11 @@ struct TargetJointDef {
     /// N, > 0: the largest force the joint applies (infinite: unbounded). A few times the
     /// body's weight drags it firmly without flinging it through walls.
     double max_force = std::numeric_limits<double>::infinity();
+    /// N, >= 0: after a step in which the joint's reaction force exceeded this, the joint is
+    /// reported (World::joint_events, threshold_exceeded) and kept. Infinite: never.
+    double force_threshold = std::numeric_limits<double>::infinity();
+    /// N m, >= 0: the same for its reaction torque. Infinite: never.
+    double torque_threshold = std::numeric_limits<double>::infinity();
     /// Field by field (a scene's joints compare so after a round trip through JSON).
     friend bool operator==(const TargetJointDef&, const TargetJointDef&) = default;
 };
@@ -109,6 +124,11 @@ struct PrismaticJointDef {
     bool enable_spring = false;
     double hertz = 0.0;         ///< Hz
     double damping_ratio = 0.0; ///< 1: critically damped
+    /// N, >= 0: after a step in which the joint's reaction force exceeded this, the joint is
+    /// reported (World::joint_events, threshold_exceeded) and kept. Infinite: never.
+    double force_threshold = std::numeric_limits<double>::infinity();
+    /// N m, >= 0: the same for its reaction torque. Infinite: never.
+    double torque_threshold = std::numeric_limits<double>::infinity();
     /// Field by field (a scene's joints compare so after a round trip through JSON).
     friend bool operator==(const PrismaticJointDef&, const PrismaticJointDef&) = default;
 };
@@ -128,6 +148,11 @@ struct WeldJointDef {
     double angular_damping_ratio = 0.0; ///< >= 0
     bool collide_connected = false;     ///< as RevoluteJointDef::collide_connected
     double break_force = std::numeric_limits<double>::infinity(); ///< N, > 0, as for revolute
+    /// N, >= 0: after a step in which the joint's reaction force exceeded this, the joint is
+    /// reported (World::joint_events, threshold_exceeded) and kept. Infinite: never.
+    double force_threshold = std::numeric_limits<double>::infinity();
+    /// N m, >= 0: the same for its reaction torque. Infinite: never.
+    double torque_threshold = std::numeric_limits<double>::infinity();
     /// Field by field (a scene's joints compare so after a round trip through JSON).
     friend bool operator==(const WeldJointDef&, const WeldJointDef&) = default;
 };
@@ -155,6 +180,11 @@ struct WheelJointDef {
     bool enable_motor = false;
     double motor_speed = 0.0;      ///< rad s^-1
     double max_motor_torque = 0.0; ///< N m, >= 0
+    /// N, >= 0: after a step in which the joint's reaction force exceeded this, the joint is
+    /// reported (World::joint_events, threshold_exceeded) and kept. Infinite: never.
+    double force_threshold = std::numeric_limits<double>::infinity();
+    /// N m, >= 0: the same for its reaction torque. Infinite: never.
+    double torque_threshold = std::numeric_limits<double>::infinity();
     /// Field by field (a scene's joints compare so after a round trip through JSON).
     friend bool operator==(const WheelJointDef&, const WheelJointDef&) = default;
 };
@@ -173,6 +203,11 @@ struct MotorJointDef {
     double correction_factor = 0.3;
     bool collide_connected = false; ///< as RevoluteJointDef::collide_connected
     double break_force = std::numeric_limits<double>::infinity(); ///< N, > 0, as for revolute
+    /// N, >= 0: after a step in which the joint's reaction force exceeded this, the joint is
+    /// reported (World::joint_events, threshold_exceeded) and kept. Infinite: never.
+    double force_threshold = std::numeric_limits<double>::infinity();
+    /// N m, >= 0: the same for its reaction torque. Infinite: never.
+    double torque_threshold = std::numeric_limits<double>::infinity();
     /// Field by field (a scene's joints compare so after a round trip through JSON).
     friend bool operator==(const MotorJointDef&, const MotorJointDef&) = default;
 };

@@ -10,6 +10,7 @@
 #include "tamias2d/contact_info.hpp"
 #include "tamias2d/errors.hpp"
 #include "tamias2d/function_ref.hpp"
+#include "tamias2d/events.hpp"
 #include "tamias2d/handles.hpp"
 #include "tamias2d/joint_def.hpp"
 #include "tamias2d/memory.hpp"

@@ -14,6 +14,7 @@
 #include "tamias2d/body_state.hpp"
 #include "tamias2d/contact_info.hpp"
 #include "tamias2d/errors.hpp"
+#include "tamias2d/events.hpp"
 #include "tamias2d/export.hpp"
 #include "tamias2d/handles.hpp"
 #include "tamias2d/joint_def.hpp"
@@ -343,6 +344,59 @@ class TAMIAS2D_EXPORT World {
     /// a point inside a solid shape overlaps it. Throws InvalidHandle for a shape that does not
     /// exist, ValidationError for a point not finite or out of range.
     ClosestPoints closest_point(ShapeId shape, Vec2d point) const;
+    // --- events ---
+    // What a game reacts to after a step, beside the contact and sensor begin and end events
+    // above (events.hpp). Every list is in a deterministic order that depends only on the
+    // inputs, the same on any number of workers (WorldDef::workers); each is replaced by the
+    // next step's. Switching an event kind on or off changes no body's motion.
+    /// \srs{DD11} The pairs that hit in the last step: touching, pushed, and approaching
+    /// faster than WorldDef::hit_event_threshold (m s^-1) at a manifold point at the step's
+    /// start, one of their shapes with hit events on (ShapeDef::enable_hit_events). In contact
+    /// creation order.
+    std::span<const ContactHitEvent> contact_hit_events() const;
+    /// The bodies with move events on (BodyDef::enable_move_events) that moved in the last
+    /// step (awake and not static), with their pose after it, and those that fell asleep in
+    /// it (BodyMoveEvent::fell_asleep). In body index order.
+    std::span<const BodyMoveEvent> body_move_events() const;
+    /// The joints that exceeded a threshold (force_threshold, torque_threshold) or broke
+    /// (break_force) in the last step, in joint index order (the broken ones first), then those
+    /// destroyed with a body since (JointEventKind::body_destroyed, in the order they went).
+    /// broken_joints() lists the broken ones too.
+    std::span<const JointEvent> joint_events() const;
+    /// \srs{DD28} The shapes overlapping the sensor shape after the last step (less those
+    /// destroyed since), in shape index order: the set that its begin and end events build, one
+    /// by one. Throws InvalidHandle for a stale handle, WrongKind for a shape that is not a
+    /// sensor.
+    std::vector<ShapeId> sensor_overlaps(ShapeId sensor) const;
+    /// Sets WorldDef::hit_event_threshold (m s^-1, finite, >= 0): from the next step. Throws
+    /// ValidationError (rule "events") for a negative or non-finite value. Wakes nothing.
+    void set_hit_event_threshold(double speed);
+    /// Switches a shape's hits on or off (ShapeDef::enable_hit_events), from the next step.
+    /// Throws InvalidHandle for a stale handle. Wakes nothing.
+    void set_hit_events_enabled(ShapeId shape, bool on);
+    bool hit_events_enabled(ShapeId shape) const; ///< ShapeDef::enable_hit_events
+    /// Switches a shape's contact begin and end events on or off (ShapeDef::
+    /// enable_contact_events): the flag is read when a pair begins or ends touching. Throws
+    /// InvalidHandle for a stale handle. Wakes nothing.
+    void set_contact_events_enabled(ShapeId shape, bool on);
+    bool contact_events_enabled(ShapeId shape) const; ///< ShapeDef::enable_contact_events
+    /// \srs{DD28} Switches a shape's part in sensor overlaps on or off (ShapeDef::
+    /// enable_sensor_events). Off, its overlaps end at the next step, with end events, so that
+    /// a set built from the events stays equal to sensor_overlaps(); on, they begin again at
+    /// the next step that finds them. Throws InvalidHandle for a stale handle. Wakes nothing.
+    void set_sensor_events_enabled(ShapeId shape, bool on);
+    bool sensor_events_enabled(ShapeId shape) const; ///< ShapeDef::enable_sensor_events
+    /// Switches a body's move events on or off (BodyDef::enable_move_events), from the next
+    /// step. Throws InvalidHandle for a stale handle. Wakes nothing.
+    void set_move_events_enabled(BodyId body, bool on);
+    bool move_events_enabled(BodyId body) const; ///< BodyDef::enable_move_events
+    /// Sets a joint's event thresholds (N and N m, >= 0, infinite: never; see
+    /// RevoluteJointDef::force_threshold), from the next step. Throws InvalidHandle for a stale
+    /// handle, WrongKind for a filter joint (it carries no force), ValidationError (rule
+    /// "events") for a negative or NaN threshold. Wakes nothing.
+    void set_joint_event_thresholds(JointId joint, double force, double torque);
+    double joint_force_threshold(JointId joint) const;  ///< N (infinite: none)
+    double joint_torque_threshold(JointId joint) const; ///< N m (infinite: none)
 
     /// A hash of the complete simulation state (bit patterns of every double): equal hashes
     /// mean bitwise-equal worlds. Used by the determinism and strong-guarantee tests.

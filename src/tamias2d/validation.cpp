@@ -470,6 +470,7 @@ void validate(const WorldDef& def) {
     non_negative("world.speculative_distance", def.speculative_distance, "m");
     non_negative("world.manifold_reuse_distance", def.manifold_reuse_distance, "m");
     non_negative("world.restitution_threshold", def.restitution_threshold, "m s^-1");
+    validate_event_threshold("world.hit_event_threshold", def.hit_event_threshold, false);
     non_negative("world.time_to_sleep", def.time_to_sleep, "s");
     non_negative("world.linear_sleep_tolerance", def.linear_sleep_tolerance, "m s^-1");
     non_negative("world.angular_sleep_tolerance", def.angular_sleep_tolerance, "rad s^-1");
@@ -482,6 +483,17 @@ void validate(const WorldDef& def) {
     if ((def.task_system.enqueue == nullptr) != (def.task_system.finish == nullptr))
         throw ValidationError("world.task_system", std::nan(""),
                               "needs both enqueue and finish, or neither", "threads");
+}
+
+void validate_event_threshold(std::string_view field, double value, bool may_be_infinite) {
+    const std::string name(field);
+    if (std::isnan(value) || (!may_be_infinite && std::isinf(value)))
+        throw ValidationError(name, value, may_be_infinite ? "must be a number" : "must be finite",
+                              "events");
+    if (!(value >= 0.0))
+        throw ValidationError(name, value, "must be >= 0", "events");
+    if (!may_be_infinite)
+        require_within(field, value, supported::input_max, "m s^-1");
 }
 
 void validate_time_step(double dt) {

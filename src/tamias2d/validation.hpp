@@ -110,5 +110,9 @@ TAMIAS2D_EXPORT void validate_mass(std::string_view field, double mass);
 TAMIAS2D_EXPORT void validate_inertia(std::string_view field, double inertia);
 /// DCX_damping: a damping rate is finite and >= 0 (a negative one would feed energy in).
 TAMIAS2D_EXPORT void validate_damping(std::string_view field, double rate);
+/// An event threshold (events.hpp): a number >= 0; a joint's (N or N m, `may_be_infinite`)
+/// may be infinite for never, the world's hit speed (m s^-1) must be finite and in range.
+/// Not an SRS constraint: "events" names the rule.
+void validate_event_threshold(std::string_view field, double value, bool may_be_infinite);
 
 } // namespace tamias2d

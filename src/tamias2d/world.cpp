@@ -81,12 +81,14 @@ BodyId World::create_body(const BodyDef& def) {
     Impl& w = *impl_;
     const std::uint32_t i = w.bodies.create(def, w.def.enable_sleep);
     w.bodies.update_mass(i, w.shapes);
+    w.events.body_created(i, def);
     return w.bodies.id(i);
 }
 
 void World::destroy_body(BodyId id) {
     Impl& w = *impl_;
     const Body& b = w.bodies.get(id);
+    w.events.body_destroying(id.index, w.bodies, w.shapes, w.joints);
     while (!w.joints.of_body(id.index).empty())
         destroy_joint(w.joints.id(w.joints.of_body(id.index).back()));
     for (std::uint32_t s = b.first_shape; s != null_index;) {
@@ -106,6 +108,7 @@ ShapeId World::create_shape(BodyId body_id, const ShapeDef& def) {
     Body& b = w.bodies.get_for_attach(body_id);
     validate(def);
     const std::uint32_t i = w.shapes.create(body_id.index, b, def);
+    w.events.shape_created(def);
     w.bodies.attach_shape(body_id.index, w.shapes, i);
     if (def.is_sensor)
         w.sensors.add(i);
@@ -126,6 +129,7 @@ std::vector<ShapeId> World::create_chain(BodyId body_id, std::span<const ShapeDe
     out.reserve(segments.size());
     for (const ShapeDef& def : segments) {
         const std::uint32_t last = w.shapes.create(body_id.index, b, def);
+        w.events.shape_created(def);
         if (def.is_sensor)
             w.sensors.add(last);
         out.push_back(w.shapes.id(last));
@@ -159,6 +163,7 @@ void World::set_custom_filter(std::function<bool(ShapeId, ShapeId)> filter) {
 void World::destroy_shape(ShapeId id) {
     Impl& w = *impl_;
     const std::uint32_t body = w.shapes.get(id).body;
+    w.events.shape_destroying(w.shapes.defs[id.index]);
     w.contacts.destroy_of_shape(id.index, w.bodies, w.shapes);
     w.sensors.remove_shape(id.index, w.bodies, w.shapes);
     w.shapes.destroy(id.index, w.bodies.bodies[body]);
@@ -200,7 +205,7 @@ template <class Def> JointId join(World::Impl& w, const Def& def) {
     const Body& a = w.bodies.get(def.body_a);
     const Body& b = w.bodies.get(def.body_b);
     validate(def, joint_body(w.bodies, def.body_a, a), joint_body(w.bodies, def.body_b, b));
-    return add_joint(w, make_joint(def, a, b));
+    return add_joint(w, with_event_thresholds(w.events, make_joint(def, a, b), def));
 }
 
 } // namespace
@@ -230,7 +235,7 @@ JointId World::create_joint(const TargetJointDef& def) {
     Impl& w = *impl_;
     const Body& b = w.bodies.get(def.body);
     validate(def, joint_body(w.bodies, def.body, b));
-    return add_joint(w, make_joint(def, b));
+    return add_joint(w, with_event_thresholds(w.events, make_joint(def, b), def));
 }
 
 void World::set_joint_target(JointId id, Vec2d target) {
@@ -323,6 +328,7 @@ void World::step(double dt) {
     w.contacts.end_events.clear();
     w.sensors.begin_events.clear();
     w.sensors.end_events.clear();
+    w.events.clear();
     const bool guarded = w.joints.live() > 0;
     if (guarded)
         w.joints.guard_step(w.bodies, w.def.enable_sleep);
@@ -344,6 +350,7 @@ void World::step(double dt) {
     const double t = w.time + y;
     w.time_error = (t - w.time) - y;
     w.time = t;
+    w.events.after_step(w.bodies, w.shapes, w.contacts, w.joints, step.sleeping);
     w.contacts.report_stale();
     // The user's filter threw: the step is whole, with the pairs it threw on refused.
     w.contacts.rethrow_filter_error();
@@ -605,6 +612,7 @@ std::uint64_t World::state_hash() const {
     w.shapes.hash(hs);
     w.joints.hash(hs);
     w.contacts.hash(hs, w.def.manifold_reuse_distance > 0.0);
+    w.events.hash(hs, w.shapes, w.joints, w.def.hit_event_threshold);
     return hs.h;
 }
 

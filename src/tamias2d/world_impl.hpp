@@ -12,6 +12,7 @@
 #include "tamias2d/dynamics/joints/joint_store.hpp"
 #include "tamias2d/dynamics/shape_store.hpp"
 #include "tamias2d/dynamics/step_context.hpp"
+#include "tamias2d/dynamics/step_events.hpp"
 #include "tamias2d/dynamics/step_solver.hpp"
 #include "tamias2d/parallel/step_tasks.hpp"
 #include "tamias2d/world.hpp"
@@ -31,6 +32,7 @@ struct World::Impl {
     SensorOverlaps sensors;
     StepSolver solver;
     IslandSleep sleep;
+    StepEvents events;       ///< hits, moves and joint events (events.hpp)
     StepTasks tasks;         ///< the step's parallel loops (WorldDef::workers, task_system)
     std::vector<Load> loads; ///< this step's load-function values (empty when none has one)
 
@@ -67,13 +69,16 @@ struct World::Impl {
             sleep.wake_islands(bodies, contacts, joints);
             prepare(step);
         }
+        events.before_solve(bodies, shapes, contacts, def.hit_event_threshold);
         solver.solve(contacts, joints, step);
         if (guarded && solver.diverged() != null_index)
             refuse_diverged();
         solver.finalize(bodies, shapes, contacts, joints, step);
         joints.break_joints(bodies, shapes);
-        if (step.sleeping)
+        if (step.sleeping) {
+            events.before_sleep(bodies);
             sleep.update_sleep(bodies, step);
+        }
     }
 
     /// A step starts only from a state within supported::state_max (BodyStore::check_state),

@@ -53,6 +53,9 @@ struct Driver {
     Rng hand;
     /// The queries' block (query_block), from a fourth stream.
     Rng queries;
+    /// The event calls (events_call), from a fourth stream: drawn before the main stream's
+    /// choice, they leave its draws as they were.
+    Rng events_stream;
     /// What the oracle of an accepted hand-made polygon found wrong (empty: nothing).
     std::string shape_problem;
     World world;
@@ -62,7 +65,8 @@ struct Driver {
     long accepted = 0, rejected = 0;
     explicit Driver(std::uint64_t seed)
         : r(seed), kinds(seed ^ 0x9e3779b97f4a7c15u), hand(seed ^ 0xc2b2ae3d27d4eb4fu),
-          queries(seed ^ 0x165667b19e3779f9u), world(make_def(r)) {}
+          queries(seed ^ 0x165667b19e3779f9u), events_stream(seed ^ 0x27d4eb2f165667c5u),
+          world(make_def(r)) {}
 
     static WorldDef make_def(Rng& r) {
         WorldDef d;
@@ -492,6 +496,86 @@ struct Driver {
             problem = "a query changed the world";
         if (!problem.empty())
             BOOST_ERROR("queries (before " << last.str() << "): " << problem);
+    // --- events ---
+    /// One in ten calls: an event switch or threshold (any value, stale and forged handles
+    /// among them), or a reading of every event list, whose numbers must be finite (a problem
+    /// goes to shape_problem, which the check after an accepted call reports). All drawn from
+    /// events_stream. Returns whether it made a call; throws what the library throws.
+    bool events_call() {
+        Rng& e = events_stream;
+        if (!e.chance(10))
+            return false;
+        auto pick_body = [&] {
+            return bodies.empty() || e.chance(5)
+                       ? BodyId{std::uint32_t(e.below(8)), std::uint32_t(e.below(3))}
+                       : bodies[e.below(bodies.size())];
+        };
+        auto pick_shape = [&] {
+            return shapes.empty() || e.chance(5) ? ShapeId{std::uint32_t(e.below(8)), 0}
+                                                 : shapes[e.below(shapes.size())];
+        };
+        auto pick_joint = [&] {
+            return joints.empty() || e.chance(5) ? JointId{std::uint32_t(e.below(4)), 0}
+                                                 : joints[e.below(joints.size())];
+        };
+        auto threshold = [&] { return e.chance(60) ? e.between(0.0, 50.0) : any_double(e); };
+        const bool on = e.chance(50);
+        switch (e.below(7)) {
+        case 0: {
+            const double v = threshold();
+            last << "set_hit_event_threshold(" << v << ")";
+            world.set_hit_event_threshold(v);
+            break;
+        }
+        case 1: {
+            const ShapeId s = pick_shape();
+            last << "set_hit_events_enabled(shape#" << s.index << ", " << on << ")";
+            world.set_hit_events_enabled(s, on);
+            break;
+        }
+        case 2: {
+            const ShapeId s = pick_shape();
+            last << "set_contact_events_enabled(shape#" << s.index << ", " << on << ")";
+            world.set_contact_events_enabled(s, on);
+            break;
+        }
+        case 3: {
+            const ShapeId s = pick_shape();
+            last << "set_sensor_events_enabled(shape#" << s.index << ", " << on << ")";
+            world.set_sensor_events_enabled(s, on);
+            break;
+        }
+        case 4: {
+            const BodyId b = pick_body();
+            last << "set_move_events_enabled(" << str(b) << ", " << on << ")";
+            world.set_move_events_enabled(b, on);
+            break;
+        }
+        case 5: {
+            const JointId j = pick_joint();
+            const double force = threshold(), torque = threshold();
+            last << "set_joint_event_thresholds(joint#" << j.index << ", " << force << ", "
+                 << torque << ")";
+            world.set_joint_event_thresholds(j, force, torque);
+            break;
+        }
+        default: { // readings: const, they may refuse (sensor_overlaps), never change the world
+            last << "event lists, sensor_overlaps";
+            (void)world.sensor_overlaps(pick_shape());
+            for (const ContactHitEvent& h : world.contact_hit_events())
+                if (!(std::isfinite(h.approach_speed) && h.approach_speed > 0.0 &&
+                      finite(h.point) && finite(h.normal)))
+                    shape_problem = "a hit event with a non-finite or non-positive number";
+            for (const BodyMoveEvent& m : world.body_move_events())
+                if (!(finite(m.origin) && std::isfinite(m.angle)))
+                    shape_problem = "a move event with a non-finite pose";
+            for (const JointEvent& j : world.joint_events())
+                if (!(finite(j.force) && std::isfinite(j.torque)))
+                    shape_problem = "a joint event with a non-finite force or torque";
+            break;
+        }
+        }
+        return true;
     }
 
     /// One random call; throws what the library throws.
@@ -499,6 +583,8 @@ struct Driver {
         query_block();
         last.str("");
         last.precision(17);
+        if (events_call())
+            return;
         switch (r.below(22)) {
         case 0:
         case 1: {

@@ -43,9 +43,10 @@ void ContactManager::destroy(std::uint32_t i, BodyStore& bodies, const ShapeStor
     if (c.touching) {
         bodies.wake(c.body_a); // what held the other up, or pushed it, is gone
         bodies.wake(c.body_b);
-        end_events.push_back({shapes.id(c.shape_a), shapes.id(c.shape_b),
-                              bodies.id(shapes.shapes[c.shape_a].body),
-                              bodies.id(shapes.shapes[c.shape_b].body)});
+        if (reports_events(shapes, c.shape_a, c.shape_b))
+            end_events.push_back({shapes.id(c.shape_a), shapes.id(c.shape_b),
+                                  bodies.id(shapes.shapes[c.shape_a].body),
+                                  bodies.id(shapes.shapes[c.shape_b].body)});
     }
     index_.erase(Contact::key(c.shape_a, c.shape_b));
     const std::uint32_t last = std::uint32_t(contacts.size() - 1);
@@ -323,6 +324,8 @@ void ContactManager::touch_changed(const Contact& c, BodyStore& bodies, const Sh
         bodies.wake(c.body_a);
         bodies.wake(c.body_b);
     }
+    if (!reports_events(shapes, c.shape_a, c.shape_b))
+        return;
     (c.touching ? begin_events : end_events)
         .push_back({shapes.id(c.shape_a), shapes.id(c.shape_b),
                     bodies.id(shapes.shapes[c.shape_a].body),
@@ -425,6 +428,10 @@ const std::vector<ContactInfo>& ContactManager::report(const BodyStore& bodies,
         infos_.push_back(ci);
     }
     return infos_;
+}
+
+bool ContactManager::reports_events(const ShapeStore& shapes, std::uint32_t sa, std::uint32_t sb) {
+    return shapes.defs[sa].enable_contact_events && shapes.defs[sb].enable_contact_events;
 }
 
 void ContactManager::hash(StateHasher& hs, bool reuse) const {

@@ -114,6 +114,11 @@ class ContactManager {
     /// poses its manifold was computed at.
     void hash(StateHasher& hs, bool reuse) const;
 
+    // --- events ---
+    /// Whether the begin and end events of the pair of shapes sa and sb are reported: both
+    /// shapes allow them (ShapeDef::enable_contact_events).
+    static bool reports_events(const ShapeStore& shapes, std::uint32_t sa, std::uint32_t sb);
+
   private:
     void destroy(std::uint32_t i, BodyStore& bodies, const ShapeStore& shapes);
     /// update's parallel form: the contacts' own work in blocks of `block`, then the rest in

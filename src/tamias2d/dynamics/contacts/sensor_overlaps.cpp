@@ -59,13 +59,16 @@ void SensorOverlaps::update(const BodyStore& bodies, const ShapeStore& shapes,
         const Shape& ss = shapes.shapes[sensor.shape];
         const Body& sb = bodies.bodies[ss.body];
         now_.clear();
+        // A sensor whose events are off detects nothing: its overlaps end, with end events.
+        const bool detects = shapes.defs[sensor.shape].enable_sensor_events;
         shapes.broad_phase.query(compute_aabb(ss.collider, ss.body_xf), [&](int proxy) {
             const std::uint32_t v = shapes.broad_phase.user_data(proxy);
             const Shape& vs = shapes.shapes[v];
             const ShapeDef& vd = shapes.defs[v];
-            // Not itself or its own body, not another sensor, not two static bodies; the
-            // filters (DD27) and the game's filter decide the rest, as for contacts.
-            if (vs.body == ss.body || vd.is_sensor ||
+            // Not itself or its own body, not another sensor, not a shape whose sensor events
+            // are off, not two static bodies; the filters (DD27) and the game's filter decide
+            // the rest, as for contacts.
+            if (!detects || vs.body == ss.body || vd.is_sensor || !vd.enable_sensor_events ||
                 (sb.type == BodyType::static_body &&
                  bodies.bodies[vs.body].type == BodyType::static_body) ||
                 !admits(shapes.defs[sensor.shape].filter, vd.filter) ||
@@ -91,6 +94,15 @@ void SensorOverlaps::update(const BodyStore& bodies, const ShapeStore& shapes,
         }
         sensor.visitors.swap(now_);
     }
+}
+
+const std::vector<std::uint32_t>& SensorOverlaps::visitors(std::uint32_t sensor_shape) const {
+    static const std::vector<std::uint32_t> none;
+    for (const Sensor& sensor : sensors_) {
+        if (sensor.shape == sensor_shape)
+            return sensor.visitors;
+    }
+    return none;
 }
 
 } // namespace tamias2d

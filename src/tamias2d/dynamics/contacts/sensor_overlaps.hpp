@@ -31,6 +31,11 @@ class SensorOverlaps {
     void update(const BodyStore& bodies, const ShapeStore& shapes, const ContactManager& rules);
     bool empty() const { return sensors_.empty(); }
 
+    // --- events ---
+    /// \srs{DD28} The shapes overlapping sensor shape s after the last step (less those
+    /// destroyed since), in shape order: the set its begin and end events build.
+    const std::vector<std::uint32_t>& visitors(std::uint32_t sensor_shape) const;
+
   private:
     struct Sensor {
         std::uint32_t shape;

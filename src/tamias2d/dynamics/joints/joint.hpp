@@ -59,6 +59,9 @@ struct Joint {
     std::uint32_t body_a = 0, body_b = 0;     ///< world body indices
     Vec2d local_anchor_a{}, local_anchor_b{}; ///< m, the pin in each body's frame (from origin)
     double break_force = std::numeric_limits<double>::infinity(); ///< N
+    /// N and N m: above these the joint is reported (World::joint_events); infinite: never.
+    double force_threshold = std::numeric_limits<double>::infinity();
+    double torque_threshold = std::numeric_limits<double>::infinity();
     // A spring (distance, target, revolute, prismatic, wheel; a weld's linear part): hertz 0
     // is rigid (distance, weld) or no spring. A distance joint's rest length.
     double length = 0.0, hertz = 0.0, damping_ratio = 0.0;
