@@ -496,6 +496,8 @@ struct Driver {
             problem = "a query changed the world";
         if (!problem.empty())
             BOOST_ERROR("queries (before " << last.str() << "): " << problem);
+    }
+
     // --- events ---
     /// One in ten calls: an event switch or threshold (any value, stale and forged handles
     /// among them), or a reading of every event list, whose numbers must be finite (a problem

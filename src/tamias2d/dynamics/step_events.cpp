@@ -126,7 +126,7 @@ void StepEvents::after_step(const BodyStore& bodies, const ShapeStore& shapes,
     // Moves: the bodies that were awake in the solve (with sleeping off, every movable one).
     if (move_bodies_ != 0 && (!sleeping || moved_known_)) {
         for (std::uint32_t i = 0; i < bodies.size(); ++i) {
-            if (!move_events(i) || !bodies.bodies[i].alive)
+            if (!move_events(i) || !bodies.alive(i))
                 continue;
             const bool moved = sleeping ? moved_[i] != 0 : bodies.sleep_states[i].awake;
             if (!moved)
@@ -148,7 +148,7 @@ void StepEvents::after_step(const BodyStore& bodies, const ShapeStore& shapes,
         return;
     for (std::uint32_t i = 0; i < joints.joints.size(); ++i) {
         const Joint& j = joints.joints[i];
-        if (!j.alive || (j.force_threshold == std::numeric_limits<double>::infinity() &&
+        if (!joints.alive(i) || (j.force_threshold == std::numeric_limits<double>::infinity() &&
                          j.torque_threshold == std::numeric_limits<double>::infinity()))
             continue;
         const Vec2d force = bridge::reaction_force(reaction_impulse(j), joints.inv_h);
@@ -180,7 +180,7 @@ void StepEvents::hash(StateHasher& hs, const ShapeStore& shapes, const JointStor
     }
     for (std::uint32_t i = 0; i < joints.joints.size(); ++i) {
         const Joint& j = joints.joints[i];
-        if (j.alive && (j.force_threshold != std::numeric_limits<double>::infinity() ||
+        if (joints.alive(i) && (j.force_threshold != std::numeric_limits<double>::infinity() ||
                         j.torque_threshold != std::numeric_limits<double>::infinity())) {
             hs(std::uint64_t(i));
             hs(j.force_threshold);
