@@ -324,8 +324,7 @@ void World::step(double dt) {
     w.bodies.evaluate_loads(w.time, w.loads);
     w.contacts.forget_filter_error(); // (one a step cut short by bad_alloc left)
     w.joints.broken.clear();
-    w.contacts.begin_events.clear();
-    w.contacts.end_events.clear();
+    w.contacts.clear_events();
     w.sensors.begin_events.clear();
     w.sensors.end_events.clear();
     w.events.clear();
@@ -558,10 +557,10 @@ std::span<const ContactInfo> World::contacts() const {
     return impl_->contacts.report(impl_->bodies, impl_->shapes);
 }
 std::span<const ContactEvent> World::contact_begin_events() const {
-    return impl_->contacts.begin_events;
+    return impl_->contacts.begin_events();
 }
 std::span<const ContactEvent> World::contact_end_events() const {
-    return impl_->contacts.end_events;
+    return impl_->contacts.end_events();
 }
 std::span<const SensorEvent> World::sensor_begin_events() const {
     return impl_->sensors.begin_events;

@@ -46,8 +46,7 @@ struct World::Impl {
     /// finalized, so the bodies are as they were; the contacts hold the manifolds of those same
     /// poses.
     [[noreturn]] void refuse_diverged() {
-        contacts.begin_events.clear();
-        contacts.end_events.clear();
+        contacts.clear_events();
         joints.refuse_step(solver.diverged(), bodies, def.enable_sleep);
     }
 

@@ -15,6 +15,18 @@
 
 namespace tamias2d {
 
+namespace {
+
+/// Calls f on every live dynamic body of the store, in index order (the energies, momentum).
+template <class F> void each_dynamic(const BodyStore& store, F f) {
+    for (std::uint32_t i = 0; i < store.size(); ++i) {
+        if (store.alive(i) && store.bodies[i].type == BodyType::dynamic)
+            f(store.bodies[i]);
+    }
+}
+
+} // namespace
+
 Body& BodyStore::get_for_attach(BodyId id) {
     slots.check(id);
     return bodies[id.index];
@@ -166,43 +178,34 @@ void BodyStore::check_state() const {
 double BodyStore::kinetic_energy() const {
     namespace u = tamias2d::units;
     double e = 0.0;
-    for (std::uint32_t i = 0; i < size(); ++i) {
-        const Body& b = bodies[i];
-        if (!alive(i) || b.type != BodyType::dynamic)
-            continue;
+    each_dynamic(*this, [&](const Body& b) {
         const double inertia = b.inv_inertia > 0.0 ? b.inertia : 0.0;
         e += model::dd15::kinetic_energy(
                  u::from_value<u::Mass>(b.mass), bridge::typed<u::Velocity>(b.v),
                  u::from_value<u::MomentOfInertia>(inertia), u::from_value<u::AngularVelocity>(b.w))
                  .value();
-    }
+    });
     return e;
 }
 
 double BodyStore::potential_energy(Vec2d g) const {
     namespace u = tamias2d::units;
     double e = 0.0;
-    for (std::uint32_t i = 0; i < size(); ++i) {
-        const Body& b = bodies[i];
-        if (!alive(i) || b.type != BodyType::dynamic)
-            continue;
+    each_dynamic(*this, [&](const Body& b) {
         e += model::dd16::potential_energy(u::from_value<u::Mass>(b.mass),
                                            bridge::typed<u::Acceleration>(b.gravity_scale * g),
                                            bridge::typed<u::Length>(b.center))
                  .value();
-    }
+    });
     return e;
 }
 
 Vec2d BodyStore::linear_momentum() const {
     namespace u = tamias2d::units;
     std::vector<model::gd1::MassVelocity> mv;
-    for (std::uint32_t i = 0; i < size(); ++i) {
-        const Body& b = bodies[i];
-        if (!alive(i) || b.type != BodyType::dynamic)
-            continue;
+    each_dynamic(*this, [&](const Body& b) {
         mv.push_back({u::from_value<u::Mass>(b.mass), bridge::typed<u::Velocity>(b.v)});
-    }
+    });
     return bridge::plain(model::gd1::total_momentum(mv));
 }
 

@@ -13,7 +13,7 @@ void IslandSleep::wake_islands(BodyStore& store, const ContactManager& contacts,
                                const JointStore& joints) {
     const std::uint32_t n = store.size();
     islands_.reset(n);
-    for (const Contact& c : contacts.contacts) {
+    for (const Contact& c : contacts.contacts()) {
         if (c.touching && store.sleep_states[c.body_a].movable &&
             store.sleep_states[c.body_b].movable)
             islands_.unite(c.body_a, c.body_b);

@@ -19,7 +19,7 @@ namespace tamias2d {
 
 double approach_speed(const ContactManager& contacts, std::uint32_t contact, int j,
                       const BodyStore& bodies) {
-    const Contact& c = contacts.contacts[contact];
+    const Contact& c = contacts.contacts()[contact];
     const ManifoldPoint& mp = c.manifold.points[j];
     const Vec2d n = c.manifold.normal;
     // DD11 along n (IM3's form): the velocity of B's point relative to A's; approaching < 0.
@@ -74,7 +74,7 @@ void StepEvents::before_solve(const BodyStore& bodies, const ShapeStore& shapes,
     if (hit_shapes_ == 0)
         return;
     for (std::uint32_t i = 0; i < contacts.size(); ++i) {
-        const Contact& c = contacts.contacts[i];
+        const Contact& c = contacts.contacts()[i];
         if (!c.touching ||
             !(shapes.defs[c.shape_a].enable_hit_events || shapes.defs[c.shape_b].enable_hit_events))
             continue;
@@ -109,8 +109,8 @@ void StepEvents::after_step(const BodyStore& bodies, const ShapeStore& shapes,
     // Hits: a candidate point counts if it pushed (a speculative point may approach fast and
     // not touch within the step); the fastest such point is the hit's.
     for (const Candidate& k : candidates_) {
-        const Contact& c = contacts.contacts[k.contact];
-        const ContactImpulses& total = contacts.total_impulses[k.contact];
+        const Contact& c = contacts.contacts()[k.contact];
+        const ContactImpulses& total = contacts.total_impulses()[k.contact];
         int best = -1;
         for (int j = 0; j < c.manifold.count; ++j) {
             if (k.speed[j] > 0.0 && total.normal[j] > 0.0 &&

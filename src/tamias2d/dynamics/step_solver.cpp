@@ -323,10 +323,11 @@ void StepSolver::prepare_packs(const ContactManager& contacts, std::size_t begin
                 const std::uint32_t k = order[p + ahead][l];
                 if (k == ConstraintGraph::no_constraint)
                     continue;
-                const char* c = reinterpret_cast<const char*>(&contacts.contacts[edge_contact_[k]]);
+                const char* c =
+                    reinterpret_cast<const char*>(&contacts.contacts()[edge_contact_[k]]);
                 for (std::size_t line = 0; line < sizeof(Contact); line += 64)
                     prefetch(c + line);
-                prefetch(&contacts.warm_impulses[edge_contact_[k]]);
+                prefetch(&contacts.warm_impulses()[edge_contact_[k]]);
             }
         }
         for (int l = 0; l < wide_lanes; ++l) {
@@ -336,7 +337,7 @@ void StepSolver::prepare_packs(const ContactManager& contacts, std::size_t begin
                 continue;
             }
             const std::uint32_t c = edge_contact_[k];
-            set_input_lane(in, l, edges_[k], c, contacts.contacts[c], contacts.warm_impulses[c],
+            set_input_lane(in, l, edges_[k], c, contacts.contacts()[c], contacts.warm_impulses()[c],
                            edge_slot_[k]);
         }
         if (warm_start)
@@ -354,7 +355,7 @@ constexpr std::uint32_t edge_block = 1024;
 } // namespace
 
 std::uint32_t StepSolver::list_edges(const ContactManager& contacts, const StepTasks& tasks) {
-    const auto& inputs = contacts.edge_inputs;
+    const auto& inputs = contacts.edge_inputs();
     const auto n = std::uint32_t(inputs.size());
     // The edge of contact i, or none: not touching, or both bodies asleep or static (only
     // with sleeping on), nothing to solve.
@@ -530,22 +531,24 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
         }
     }
     const std::span<ContactConstraint> bouncers(bouncing_.data(), bounce_count);
+    const ContactManager::ImpulseRecords records = contacts.impulse_records();
     if (tasks.parallel() && pack_count > store_block) {
         auto run = [&](int first, int last) {
-            wide_solver_.store(contacts.warm_impulses, contacts.total_impulses, bouncers,
+            wide_solver_.store(records.warm, records.totals, bouncers,
                                std::size_t(first) * store_block,
                                std::min(pack_count, std::size_t(last) * store_block));
         };
         tasks.for_each_block(blocks_of(pack_count, store_block), run);
     } else {
-        wide_solver_.store(contacts.warm_impulses, contacts.total_impulses, bouncers, 0,
-                           pack_count);
+        wide_solver_.store(records.warm, records.totals, bouncers, 0, pack_count);
     }
     // \srs{R8} Post-collision velocities (and, integrated, positions) of colliding bodies.
     apply_restitution(bouncers, solver_bodies_, st);
+    // A bouncing manifold's normal totals include the restitution pass's impulses: written
+    // here, once (store left them to this pass).
     for (const ContactConstraint& b : bouncers) {
         for (int j = 0; j < b.count; ++j)
-            contacts.total_impulses[b.contact].normal[j] = b.points[j].total_normal_impulse;
+            records.totals[b.contact].normal[j] = b.points[j].total_normal_impulse;
     }
 }
 
