@@ -149,7 +149,7 @@ void StepEvents::after_step(const BodyStore& bodies, const ShapeStore& shapes,
     for (std::uint32_t i = 0; i < joints.joints.size(); ++i) {
         const Joint& j = joints.joints[i];
         if (!joints.alive(i) || (j.force_threshold == std::numeric_limits<double>::infinity() &&
-                         j.torque_threshold == std::numeric_limits<double>::infinity()))
+                                 j.torque_threshold == std::numeric_limits<double>::infinity()))
             continue;
         const Vec2d force = bridge::reaction_force(reaction_impulse(j), joints.inv_h);
         const double torque = bridge::reaction_torque(reaction_angular_impulse(j), joints.inv_h);
@@ -181,7 +181,7 @@ void StepEvents::hash(StateHasher& hs, const ShapeStore& shapes, const JointStor
     for (std::uint32_t i = 0; i < joints.joints.size(); ++i) {
         const Joint& j = joints.joints[i];
         if (joints.alive(i) && (j.force_threshold != std::numeric_limits<double>::infinity() ||
-                        j.torque_threshold != std::numeric_limits<double>::infinity())) {
+                                j.torque_threshold != std::numeric_limits<double>::infinity())) {
             hs(std::uint64_t(i));
             hs(j.force_threshold);
             hs(j.torque_threshold);
