@@ -8,6 +8,7 @@
 #include "tamias2d/body_state.hpp"
 #include "tamias2d/build_info.hpp"
 #include "tamias2d/contact_info.hpp"
+#include "tamias2d/debug_draw.hpp"
 #include "tamias2d/errors.hpp"
 #include "tamias2d/handles.hpp"
 #include "tamias2d/joint_def.hpp"

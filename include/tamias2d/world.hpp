@@ -13,6 +13,7 @@
 #include "tamias2d/body_def.hpp"
 #include "tamias2d/body_state.hpp"
 #include "tamias2d/contact_info.hpp"
+#include "tamias2d/debug_draw.hpp"
 #include "tamias2d/errors.hpp"
 #include "tamias2d/export.hpp"
 #include "tamias2d/handles.hpp"
@@ -262,6 +263,16 @@ class TAMIAS2D_EXPORT World {
     /// to the lower shape index so that the answer is deterministic. Both within the supported
     /// range (DCX_range, |x| <= 1e12 m), so that the answer is never NaN.
     std::optional<RayCastHit> ray_cast(Vec2d origin, Vec2d translation) const;
+
+    // --- debug_draw ---
+    /// Hands the world to `draw` as primitives, in world coordinates (m): each shape filled in
+    /// its state's colour, each broad-phase box, each joint's segments, each touching contact's
+    /// points and normals, each body's centre of mass, as draw's flags select, limited to
+    /// draw.bounds when set (found through the broad phase). Calls only `draw`'s functions,
+    /// from the calling thread, in a fixed order; changes nothing and wakes nothing. Throws
+    /// ValidationError, before any call, for a length of `draw` not finite and > 0 or bounds
+    /// not finite or upside down (min > max).
+    void draw(DebugDraw& draw) const;
 
     /// A hash of the complete simulation state (bit patterns of every double): equal hashes
     /// mean bitwise-equal worlds. Used by the determinism and strong-guarantee tests.
