@@ -13,6 +13,7 @@
 #include "tamias2d/handles.hpp"
 #include "tamias2d/joint_def.hpp"
 #include "tamias2d/memory.hpp"
+#include "tamias2d/profile.hpp"
 #include "tamias2d/shape_def.hpp"
 #include "tamias2d/shapes.hpp"
 #include "tamias2d/task_system.hpp"

@@ -18,6 +18,7 @@
 #include "tamias2d/export.hpp"
 #include "tamias2d/handles.hpp"
 #include "tamias2d/joint_def.hpp"
+#include "tamias2d/profile.hpp"
 #include "tamias2d/shape_def.hpp"
 #include "tamias2d/world_def.hpp"
 
@@ -273,6 +274,21 @@ class TAMIAS2D_EXPORT World {
     /// ValidationError, before any call, for a length of `draw` not finite and > 0 or bounds
     /// not finite or upside down (min > max).
     void draw(DebugDraw& draw) const;
+
+    // --- profile ---
+    /// Turns the timing of each step's stages on or off (off when the world is made). Off,
+    /// a step reads no clock; on or off, no simulated value changes by a bit. Turning it off
+    /// forgets the last step's times. Wakes nothing.
+    void set_profiling(bool on);
+    bool profiling() const; ///< whether set_profiling turned the timing on
+    /// The last step's time per stage (s), measured with profiling on; all zero with it off or
+    /// before the first profiled step. A refused step (an exception from step) leaves the
+    /// previous step's times.
+    StepProfile profile() const;
+    /// What the world holds now: bodies, awake bodies, shapes, joints, pairs, touching pairs
+    /// and their points, islands, the last step's solver packs; counted when asked (O(bodies
+    /// + contacts + joints)), so a world that never asks pays nothing.
+    WorldCounters counters() const;
 
     /// A hash of the complete simulation state (bit patterns of every double): equal hashes
     /// mean bitwise-equal worlds. Used by the determinism and strong-guarantee tests.

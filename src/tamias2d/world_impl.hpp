@@ -12,6 +12,7 @@
 #include "tamias2d/dynamics/joints/joint_store.hpp"
 #include "tamias2d/dynamics/shape_store.hpp"
 #include "tamias2d/dynamics/step_context.hpp"
+#include "tamias2d/dynamics/step_profiler.hpp"
 #include "tamias2d/dynamics/step_solver.hpp"
 #include "tamias2d/parallel/step_tasks.hpp"
 #include "tamias2d/world.hpp"
@@ -33,6 +34,7 @@ struct World::Impl {
     IslandSleep sleep;
     StepTasks tasks;         ///< the step's parallel loops (WorldDef::workers, task_system)
     std::vector<Load> loads; ///< this step's load-function values (empty when none has one)
+    StepProfiler profiler;   ///< the stages' times (World::set_profiling; off: never read)
 
     explicit Impl(const WorldDef& d) : def(d) {
         shapes.broad_phase.set_least_margin(d.speculative_distance); // (BroadPhase::fattened)
@@ -59,20 +61,32 @@ struct World::Impl {
     /// touching contacts) have woken what they wake; without, before the narrow phase. With
     /// joints (`guarded`), a diverged solve is refused before anything is finalized.
     void solve(const StepContext& step, bool guarded) {
-        if (!step.sleeping)
+        if (!step.sleeping) {
             prepare(step);
+            profiler.lap(&StepProfile::prepare);
+        }
         contacts.update(bodies, shapes, step);
+        profiler.lap(&StepProfile::narrow_phase);
         if (step.sleeping) {
             sleep.wake_islands(bodies, contacts, joints);
+            profiler.lap(&StepProfile::sleep);
             prepare(step);
+            profiler.lap(&StepProfile::prepare);
         }
         solver.solve(contacts, joints, step);
         if (guarded && solver.diverged() != null_index)
             refuse_diverged();
-        solver.finalize(bodies, shapes, contacts, joints, step);
+        profiler.lap(&StepProfile::solve);
+        solver.finalize(bodies, shapes, step);
+        profiler.lap(&StepProfile::finalize);
+        solver.continuous(bodies, shapes, contacts, joints, step);
+        profiler.lap(&StepProfile::continuous);
         joints.break_joints(bodies, shapes);
-        if (step.sleeping)
+        profiler.lap(&StepProfile::events);
+        if (step.sleeping) {
             sleep.update_sleep(bodies, step);
+            profiler.lap(&StepProfile::sleep);
+        }
     }
 
     /// A step starts only from a state within supported::state_max (BodyStore::check_state),
