@@ -10,6 +10,7 @@
 #include "tamias2d/contact_info.hpp"
 #include "tamias2d/debug_draw.hpp"
 #include "tamias2d/errors.hpp"
+#include "tamias2d/explosion.hpp"
 #include "tamias2d/handles.hpp"
 #include "tamias2d/joint_def.hpp"
 #include "tamias2d/memory.hpp"

@@ -15,6 +15,7 @@
 #include "tamias2d/contact_info.hpp"
 #include "tamias2d/debug_draw.hpp"
 #include "tamias2d/errors.hpp"
+#include "tamias2d/explosion.hpp"
 #include "tamias2d/export.hpp"
 #include "tamias2d/handles.hpp"
 #include "tamias2d/joint_def.hpp"
@@ -289,6 +290,16 @@ class TAMIAS2D_EXPORT World {
     /// and their points, islands, the last step's solver packs; counted when asked (O(bodies
     /// + contacts + joints)), so a world that never asks pays nothing.
     WorldCounters counters() const;
+
+    // --- explosion ---
+    /// \srs{DD33} Pushes every shape of a dynamic body within def.radius + def.falloff (m) of
+    /// def.position away from it (see ExplosionDef): applies DD33's impulse at the shape's
+    /// nearest point (DD10: dv = J / m, domega = r x J / I) and wakes each body it moves.
+    /// Returns how many bodies it moved. Throws ValidationError naming the field for a
+    /// non-finite or out-of-range position, radius, falloff or impulse (DCX_finite, DCX_range),
+    /// a negative radius or falloff (DD33), and (DCX_range) when a body's resulting velocity
+    /// would exceed the supported range; the world is then unchanged.
+    std::size_t explode(const ExplosionDef& def);
 
     /// A hash of the complete simulation state (bit patterns of every double): equal hashes
     /// mean bitwise-equal worlds. Used by the determinism and strong-guarantee tests.
