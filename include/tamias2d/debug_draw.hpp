@@ -17,9 +17,9 @@ namespace tamias2d {
 /// An sRGB colour, 8 bits a channel: 0xRRGGBB.
 struct Color {
     std::uint32_t rgb = 0; ///< red in bits 16-23, green in 8-15, blue in 0-7
-    constexpr std::uint8_t red() const { return std::uint8_t(rgb >> 16); }
-    constexpr std::uint8_t green() const { return std::uint8_t(rgb >> 8); }
-    constexpr std::uint8_t blue() const { return std::uint8_t(rgb); }
+    constexpr std::uint8_t red() const { return std::uint8_t(rgb >> 16); }  ///< 0-255
+    constexpr std::uint8_t green() const { return std::uint8_t(rgb >> 8); } ///< 0-255
+    constexpr std::uint8_t blue() const { return std::uint8_t(rgb); }       ///< 0-255
     /// Channel by channel.
     friend constexpr bool operator==(Color, Color) = default;
 };
@@ -62,7 +62,7 @@ struct DebugDraw {
     /// broad-phase boxes overlap it (found through the broad phase), joints with an anchor in
     /// it, contact points and centres of mass in it. Empty: everything.
     std::optional<Aabb> bounds;
-    DrawColors colors{};
+    DrawColors colors{}; ///< the colour of each thing drawn, by its state
 
     // --- the primitives ---
     /// A closed polygon outline (a shape's box: 4 vertices, counter-clockwise).
