@@ -1,6 +1,6 @@
 /// \file
 /// An explosion (World::explode): a radial impulse on every dynamic shape within reach of a
-/// point, by SRS DD33.
+/// point, by SRS DD38.
 #pragma once
 
 #include <cstdint>
@@ -9,7 +9,7 @@
 
 namespace tamias2d {
 
-/// \srs{DD33} A blast at `position`: every shape of a dynamic body whose nearest point lies
+/// \srs{DD38} A blast at `position`: every shape of a dynamic body whose nearest point lies
 /// within radius + falloff of it is pushed away from it, at that point, with an impulse of
 /// impulse_per_length times the width the shape shows the blast (its extent across the line
 /// to the blast), full within `radius` and fading linearly to zero over `falloff` beyond it;

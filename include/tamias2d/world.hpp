@@ -292,12 +292,12 @@ class TAMIAS2D_EXPORT World {
     WorldCounters counters() const;
 
     // --- explosion ---
-    /// \srs{DD33} Pushes every shape of a dynamic body within def.radius + def.falloff (m) of
-    /// def.position away from it (see ExplosionDef): applies DD33's impulse at the shape's
+    /// \srs{DD38} Pushes every shape of a dynamic body within def.radius + def.falloff (m) of
+    /// def.position away from it (see ExplosionDef): applies DD38's impulse at the shape's
     /// nearest point (DD10: dv = J / m, domega = r x J / I) and wakes each body it moves.
     /// Returns how many bodies it moved. Throws ValidationError naming the field for a
     /// non-finite or out-of-range position, radius, falloff or impulse (DCX_finite, DCX_range),
-    /// a negative radius or falloff (DD33), and (DCX_range) when a body's resulting velocity
+    /// a negative radius or falloff (DD38), and (DCX_range) when a body's resulting velocity
     /// would exceed the supported range; the world is then unchanged.
     std::size_t explode(const ExplosionDef& def);
 

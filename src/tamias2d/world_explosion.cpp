@@ -1,4 +1,4 @@
-// World::explode: DD33's blast impulse on the dynamic shapes within reach of a point, found
+// World::explode: DD38's blast impulse on the dynamic shapes within reach of a point, found
 // through the broad phase, computed in full before any body changes (strong guarantee).
 #include <algorithm>
 #include <cstdint>
@@ -9,7 +9,7 @@
 #include "tamias2d/errors.hpp"
 #include "tamias2d/explosion.hpp"
 #include "tamias2d/geometry/blast_exposure.hpp"
-#include "tamias2d/model/dd33_explosion_impulse.hpp"
+#include "tamias2d/model/dd38_explosion_impulse.hpp"
 #include "tamias2d/validation.hpp"
 #include "tamias2d/world.hpp"
 #include "tamias2d/world_impl.hpp"
@@ -19,18 +19,18 @@ namespace tamias2d {
 namespace {
 
 namespace u = tamias2d::units;
-namespace dd33 = tamias2d::model::dd33;
+namespace dd38 = tamias2d::model::dd38;
 
-/// \srs{DD33} The definition's fields within their ranges: finite, within the supported range
+/// \srs{DD38} The definition's fields within their ranges: finite, within the supported range
 /// (DCX_range), the radius and the falloff >= 0.
 void validate(const ExplosionDef& def) {
     require_within("explosion.position", def.position, supported::input_max, "m");
     require_within("explosion.radius", def.radius, supported::input_max, "m");
     if (!(def.radius >= 0.0))
-        throw ValidationError("explosion.radius", def.radius, "must be >= 0 (m)", "DD33");
+        throw ValidationError("explosion.radius", def.radius, "must be >= 0 (m)", "DD38");
     require_within("explosion.falloff", def.falloff, supported::input_max, "m");
     if (!(def.falloff >= 0.0))
-        throw ValidationError("explosion.falloff", def.falloff, "must be >= 0 (m)", "DD33");
+        throw ValidationError("explosion.falloff", def.falloff, "must be >= 0 (m)", "DD38");
     require_within("explosion.impulse_per_length", def.impulse_per_length, supported::input_max,
                    "N s m^-1");
     require_within("explosion.impulse_per_body", def.impulse_per_body, supported::input_max, "N s");
@@ -83,9 +83,9 @@ std::size_t World::explode(const ExplosionDef& def) {
         if (!(e.distance <= reach))
             continue;
         const u::Dimensionless scale =
-            dd33::falloff_scale(u::from_value<u::Length>(e.distance), r, f);
-        const double j = dd33::shape_impulse(
-                             scale, u::from_value<dd33::ImpulsePerLength>(def.impulse_per_length),
+            dd38::falloff_scale(u::from_value<u::Length>(e.distance), r, f);
+        const double j = dd38::shape_impulse(
+                             scale, u::from_value<dd38::ImpulsePerLength>(def.impulse_per_length),
                              u::from_value<u::Length>(e.width))
                              .value();
         if (j != 0.0)
@@ -101,7 +101,7 @@ std::size_t World::explode(const ExplosionDef& def) {
     }
     for (const Nearest& n : nearest) {
         const double j =
-            dd33::body_impulse(dd33::falloff_scale(u::from_value<u::Length>(n.distance), r, f),
+            dd38::body_impulse(dd38::falloff_scale(u::from_value<u::Length>(n.distance), r, f),
                                u::from_value<u::Impulse>(def.impulse_per_body))
                 .value();
         if (j != 0.0)

@@ -1,4 +1,4 @@
-// How a placed shape lies towards a point (World::explode, DD33): its nearest point, the
+// How a placed shape lies towards a point (World::explode, DD38): its nearest point, the
 // distance and direction to it, and the width the shape shows along that direction.
 #pragma once
 

@@ -1,5 +1,5 @@
-// World::explode (DD33) against closed forms: a ring of equal discs around the blast each
-// receives the same radial impulse of DD33's magnitude, the ring's momentum sums to zero and
+// World::explode (DD38) against closed forms: a ring of equal discs around the blast each
+// receives the same radial impulse of DD38's magnitude, the ring's momentum sums to zero and
 // no disc turns; the falloff's linear fade; the per-body impulse; a box's exposed width;
 // what the blast leaves alone; the strong guarantee.
 #include <boost/test/unit_test.hpp>
@@ -59,14 +59,14 @@ World empty_world() {
 
 } // namespace
 
-BOOST_AUTO_TEST_SUITE(explosion_dd33)
+BOOST_AUTO_TEST_SUITE(explosion_dd38)
 
-// Oracle: DD33 in closed form for a disc of radius a whose nearest point lies within the
+// Oracle: DD38 in closed form for a disc of radius a whose nearest point lies within the
 // radius: width 2a, J = j_w 2a, radial, at the nearest point (on the line through the disc's
 // centre: no torque); dv = J / m (DD10). Twelve discs at R = 3 m round a blast of radius 4 m,
 // j_w = 2 N s m^-1: J = 1 N s each. A second ring at 6 m (beyond radius + falloff) keeps its
 // state bit for bit.
-BOOST_AUTO_TEST_CASE(ring_of_equal_discs, *utf::label("DD33")) {
+BOOST_AUTO_TEST_CASE(ring_of_equal_discs, *utf::label("DD38")) {
     World w = empty_world();
     const Vec2d centre{1.5, -0.5};
     const std::vector<BodyId> inner = ring(w, centre, 3.0, 12);
@@ -86,10 +86,10 @@ BOOST_AUTO_TEST_CASE(ring_of_equal_discs, *utf::label("DD33")) {
     }
 }
 
-// Oracle: DD33's linear falloff, s = (r + f - d) / f for r < d < r + f: discs at R = 3 m
+// Oracle: DD38's linear falloff, s = (r + f - d) / f for r < d < r + f: discs at R = 3 m
 // (nearest point d = 2.75 m) round a blast of radius 2 m and falloff 2 m take
 // s = 1.25 / 2 = 0.625 of the full J = j_w 2a; the per-body impulse j_b fades alike.
-BOOST_AUTO_TEST_CASE(linear_falloff, *utf::label("DD33")) {
+BOOST_AUTO_TEST_CASE(linear_falloff, *utf::label("DD38")) {
     World w = empty_world();
     const std::vector<BodyId> discs = ring(w, {}, 3.0, 8, 0.1);
     w.explode({.position = {},
@@ -109,11 +109,11 @@ BOOST_AUTO_TEST_CASE(linear_falloff, *utf::label("DD33")) {
     BOOST_TEST(edge.state_hash() == before);
 }
 
-// Oracle: DD33's width for a box face-on to the blast: a 1 m x 0.5 m box (long side along y)
+// Oracle: DD38's width for a box face-on to the blast: a 1 m x 0.5 m box (long side along y)
 // centred 3 m to the right of the blast shows its 1 m side, J = j_w x 1 m along +x; a box at
 // 3 m along +y, turned by pi/2, shows its 1 m side too, J along +y. dv = J / m with
 // m = rho w h (DD1), no turn (the nearest point lies on the box's axis of symmetry).
-BOOST_AUTO_TEST_CASE(box_exposes_its_face, *utf::label("DD33")) {
+BOOST_AUTO_TEST_CASE(box_exposes_its_face, *utf::label("DD38")) {
     World w = empty_world();
     BodyDef d;
     d.position = {3.0, 0.0};
@@ -136,7 +136,7 @@ BOOST_AUTO_TEST_CASE(box_exposes_its_face, *utf::label("DD33")) {
 // Oracle: ExplosionDef's rules: static and kinematic bodies, sensors and shapes whose
 // categories miss the mask are not pushed (their states unchanged bit for bit); a sleeping
 // disc is woken and pushed as an awake one is.
-BOOST_AUTO_TEST_CASE(what_the_blast_leaves_alone, *utf::label("DD33")) {
+BOOST_AUTO_TEST_CASE(what_the_blast_leaves_alone, *utf::label("DD38")) {
     World w(WorldDef{.gravity = {0.0, 0.0}, .enable_sleep = true});
     const auto disc_at = [&](Vec2d p, BodyType type, bool awake, bool sensor,
                              std::uint32_t category) {
@@ -174,7 +174,7 @@ BOOST_AUTO_TEST_CASE(what_the_blast_leaves_alone, *utf::label("DD33")) {
 // ValidationError naming it, and a blast that would push a very light body beyond the
 // supported velocity (1e24 m s^-1) is refused whole, the heavier bodies it would also push
 // untouched. A blast of zero impulse changes no bit.
-BOOST_AUTO_TEST_CASE(bad_input_changes_nothing, *utf::label("DD33")) {
+BOOST_AUTO_TEST_CASE(bad_input_changes_nothing, *utf::label("DD38")) {
     World w = empty_world();
     ring(w, {}, 1.0, 3);
     BodyDef d;
