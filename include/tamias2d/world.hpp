@@ -13,11 +13,14 @@
 #include "tamias2d/body_def.hpp"
 #include "tamias2d/body_state.hpp"
 #include "tamias2d/contact_info.hpp"
+#include "tamias2d/debug_draw.hpp"
 #include "tamias2d/errors.hpp"
 #include "tamias2d/events.hpp"
+#include "tamias2d/explosion.hpp"
 #include "tamias2d/export.hpp"
 #include "tamias2d/handles.hpp"
 #include "tamias2d/joint_def.hpp"
+#include "tamias2d/profile.hpp"
 #include "tamias2d/query_filter.hpp"
 #include "tamias2d/query_results.hpp"
 #include "tamias2d/shape_def.hpp"
@@ -397,6 +400,41 @@ class TAMIAS2D_EXPORT World {
     void set_joint_event_thresholds(JointId joint, double force, double torque);
     double joint_force_threshold(JointId joint) const;  ///< N (infinite: none)
     double joint_torque_threshold(JointId joint) const; ///< N m (infinite: none)
+
+    // --- debug_draw ---
+    /// Hands the world to `draw` as primitives, in world coordinates (m): each shape filled in
+    /// its state's colour, each broad-phase box, each joint's segments, each touching contact's
+    /// points and normals, each body's centre of mass, as draw's flags select, limited to
+    /// draw.bounds when set (found through the broad phase). Calls only `draw`'s functions,
+    /// from the calling thread, in a fixed order; changes nothing and wakes nothing. Throws
+    /// ValidationError, before any call, for a length of `draw` not finite and > 0 or bounds
+    /// not finite or upside down (min > max).
+    void draw(DebugDraw& draw) const;
+
+    // --- profile ---
+    /// Turns the timing of each step's stages on or off (off when the world is made). Off,
+    /// a step reads no clock; on or off, no simulated value changes by a bit. Turning it off
+    /// forgets the last step's times. Wakes nothing.
+    void set_profiling(bool on);
+    bool profiling() const; ///< whether set_profiling turned the timing on
+    /// The last step's time per stage (s), measured with profiling on; all zero with it off or
+    /// before the first profiled step. A refused step (an exception from step) leaves the
+    /// previous step's times.
+    StepProfile profile() const;
+    /// What the world holds now: bodies, awake bodies, shapes, joints, pairs, touching pairs
+    /// and their points, islands, the last step's solver packs; counted when asked (O(bodies
+    /// + contacts + joints)), so a world that never asks pays nothing.
+    WorldCounters counters() const;
+
+    // --- explosion ---
+    /// \srs{DD38} Pushes every shape of a dynamic body within def.radius + def.falloff (m) of
+    /// def.position away from it (see ExplosionDef): applies DD38's impulse at the shape's
+    /// nearest point (DD10: dv = J / m, domega = r x J / I) and wakes each body it moves.
+    /// Returns how many bodies it moved. Throws ValidationError naming the field for a
+    /// non-finite or out-of-range position, radius, falloff or impulse (DCX_finite, DCX_range),
+    /// a negative radius or falloff (DD38), and (DCX_range) when a body's resulting velocity
+    /// would exceed the supported range; the world is then unchanged.
+    std::size_t explode(const ExplosionDef& def);
 
     /// A hash of the complete simulation state (bit patterns of every double): equal hashes
     /// mean bitwise-equal worlds. Used by the determinism and strong-guarantee tests.

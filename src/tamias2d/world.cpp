@@ -319,6 +319,7 @@ std::size_t World::body_count() const {
 void World::step(double dt) {
     validate_time_step(dt);
     Impl& w = *impl_;
+    w.profiler.begin();
     w.bodies.settle(); // the masses attach_shape left pending
     w.check_state();
     w.bodies.evaluate_loads(w.time, w.loads);
@@ -331,19 +332,23 @@ void World::step(double dt) {
     const bool guarded = w.joints.live() > 0;
     if (guarded)
         w.joints.guard_step(w.bodies, w.def.enable_sleep);
+    w.profiler.lap(&StepProfile::prepare);
     w.contacts.find_new(w.bodies, w.shapes, w.joints);
+    w.profiler.lap(&StepProfile::broad_phase);
     w.joints.inv_h = w.def.substeps / dt;
     const StepContext step{w.def, dt, dt / w.def.substeps, w.def.enable_sleep, w.loads, w.tasks};
     if (step.sleeping && !w.bodies.any_awake()) {
         // Every body asleep: every contact is kept as it is (a new one, of a static body moved
         // onto sleeping ones, too) and nothing is solved; the step does only this.
         w.contacts.keep_all();
+        w.profiler.lap(&StepProfile::narrow_phase);
     } else {
         w.solve(step, guarded);
     }
     // DD28: the sensors see the poses this step made.
     if (!w.sensors.empty())
         w.sensors.update(w.bodies, w.shapes, w.contacts);
+    w.profiler.lap(&StepProfile::events);
     // Compensated sum, so that a load switching at t = n dt is seen at step n, not n + 1.
     const double y = dt - w.time_error;
     const double t = w.time + y;
@@ -351,6 +356,7 @@ void World::step(double dt) {
     w.time = t;
     w.events.after_step(w.bodies, w.shapes, w.contacts, w.joints, step.sleeping);
     w.contacts.report_stale();
+    w.profiler.end();
     // The user's filter threw: the step is whole, with the pairs it threw on refused.
     w.contacts.rethrow_filter_error();
 }

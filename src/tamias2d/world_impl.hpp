@@ -13,6 +13,7 @@
 #include "tamias2d/dynamics/shape_store.hpp"
 #include "tamias2d/dynamics/step_context.hpp"
 #include "tamias2d/dynamics/step_events.hpp"
+#include "tamias2d/dynamics/step_profiler.hpp"
 #include "tamias2d/dynamics/step_solver.hpp"
 #include "tamias2d/parallel/step_tasks.hpp"
 #include "tamias2d/world.hpp"
@@ -35,6 +36,7 @@ struct World::Impl {
     StepEvents events;       ///< hits, moves and joint events (events.hpp)
     StepTasks tasks;         ///< the step's parallel loops (WorldDef::workers, task_system)
     std::vector<Load> loads; ///< this step's load-function values (empty when none has one)
+    StepProfiler profiler;   ///< the stages' times (World::set_profiling; off: never read)
 
     /// A world tagged `tag` (World::tag).
     Impl(const WorldDef& d, std::uint32_t tag) : def(d), bodies(tag), shapes(tag), joints(tag) {
@@ -61,22 +63,33 @@ struct World::Impl {
     /// touching contacts) have woken what they wake; without, before the narrow phase. With
     /// joints (`guarded`), a diverged solve is refused before anything is finalized.
     void solve(const StepContext& step, bool guarded) {
-        if (!step.sleeping)
+        if (!step.sleeping) {
             prepare(step);
+            profiler.lap(&StepProfile::prepare);
+        }
         contacts.update(bodies, shapes, step);
+        profiler.lap(&StepProfile::narrow_phase);
         if (step.sleeping) {
             sleep.wake_islands(bodies, contacts, joints);
+            profiler.lap(&StepProfile::sleep);
             prepare(step);
+            profiler.lap(&StepProfile::prepare);
         }
         events.before_solve(bodies, shapes, contacts, def.hit_event_threshold);
         solver.solve(contacts, joints, step);
         if (guarded && solver.diverged() != null_index)
             refuse_diverged();
-        solver.finalize(bodies, shapes, contacts, joints, step);
+        profiler.lap(&StepProfile::solve);
+        solver.finalize(bodies, shapes, step);
+        profiler.lap(&StepProfile::finalize);
+        solver.continuous(bodies, shapes, contacts, joints, step);
+        profiler.lap(&StepProfile::continuous);
         joints.break_joints(bodies, shapes);
+        profiler.lap(&StepProfile::events);
         if (step.sleeping) {
             events.before_sleep(bodies);
             sleep.update_sleep(bodies, step);
+            profiler.lap(&StepProfile::sleep);
         }
     }
 

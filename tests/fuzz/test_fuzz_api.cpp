@@ -56,6 +56,8 @@ struct Driver {
     /// The event calls (events_call), from a fourth stream: drawn before the main stream's
     /// choice, they leave its draws as they were.
     Rng events_stream;
+    /// debug_draw, profile and explosion calls (draw_profile_explode), from a stream of their own.
+    Rng area46;
     /// What the oracle of an accepted hand-made polygon found wrong (empty: nothing).
     std::string shape_problem;
     World world;
@@ -66,7 +68,7 @@ struct Driver {
     explicit Driver(std::uint64_t seed)
         : r(seed), kinds(seed ^ 0x9e3779b97f4a7c15u), hand(seed ^ 0xc2b2ae3d27d4eb4fu),
           queries(seed ^ 0x165667b19e3779f9u), events_stream(seed ^ 0x27d4eb2f165667c5u),
-          world(make_def(r)) {}
+          area46(seed ^ 0x94d049bb133111ebu), world(make_def(r)) {}
 
     static WorldDef make_def(Rng& r) {
         WorldDef d;
@@ -580,6 +582,58 @@ struct Driver {
         return true;
     }
 
+    // --- debug_draw, profile, explosion ---
+    /// A draw (const: may refuse, never changes the world), the profiling switch with the
+    /// profile and the counters read, or an explosion, all drawn from `area46` so that the main
+    /// stream's calls stay those its seeds were found with.
+    void draw_profile_explode() {
+        Rng& a = area46;
+        switch (a.below(4)) {
+        case 0: {
+            struct Null : DebugDraw {};
+            Null d;
+            d.draw_contacts = a.chance(50);
+            d.draw_contact_normals = a.chance(50);
+            d.draw_aabbs = a.chance(50);
+            d.draw_mass_centers = a.chance(50);
+            d.contact_normal_length = a.chance(80) ? 0.25 : any_double(a);
+            d.axis_length = a.chance(80) ? 0.2 : any_double(a);
+            if (a.chance(50))
+                d.bounds = a.chance(70)
+                               ? Aabb{-10.0, -10.0, 10.0, 10.0}
+                               : Aabb{any_double(a), any_double(a), any_double(a), any_double(a)};
+            last << "draw(normal length " << d.contact_normal_length << ", axis length "
+                 << d.axis_length << ")";
+            world.draw(d);
+            break;
+        }
+        case 1: {
+            const bool on = a.chance(50);
+            last << "set_profiling(" << on << "), profile, counters";
+            world.set_profiling(on);
+            (void)world.profile();
+            (void)world.counters();
+            break;
+        }
+        default: {
+            ExplosionDef e;
+            e.position = a.chance(70) ? Vec2d{a.between(-20, 20), a.between(-5, 20)}
+                                      : Vec2d{any_double(a), any_double(a)};
+            e.radius = a.chance(70) ? a.between(0, 10) : any_double(a);
+            e.falloff = a.chance(50) ? 0.0 : (a.chance(70) ? a.between(0, 5) : any_double(a));
+            e.impulse_per_length = a.chance(70) ? a.between(-50, 50) : any_double(a);
+            e.impulse_per_body =
+                a.chance(50) ? 0.0 : (a.chance(70) ? a.between(-50, 50) : any_double(a));
+            e.mask_bits = a.chance(70) ? 0xFFFFFFFFu : std::uint32_t(a.below(1u << 16));
+            last << "explode(" << str(e.position) << ", radius " << e.radius << ", falloff "
+                 << e.falloff << ", per length " << e.impulse_per_length << ", per body "
+                 << e.impulse_per_body << ", mask " << e.mask_bits << ")";
+            (void)world.explode(e);
+            break;
+        }
+        }
+    }
+
     /// One random call; throws what the library throws.
     void call() {
         query_block();
@@ -587,6 +641,10 @@ struct Driver {
         last.precision(17);
         if (events_call())
             return;
+        if (area46.chance(10)) {
+            draw_profile_explode();
+            return;
+        }
         switch (r.below(22)) {
         case 0:
         case 1: {

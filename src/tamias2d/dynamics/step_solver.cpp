@@ -585,8 +585,7 @@ void StepSolver::contact_pass(const StepTasks& tasks, std::uint32_t streams,
     tasks.for_each_block(int(graph.streams()), run);
 }
 
-void StepSolver::finalize(BodyStore& store, ShapeStore& shape_store, const ContactManager& contacts,
-                          const JointStore& joints, const StepContext& step) {
+void StepSolver::finalize(BodyStore& store, ShapeStore& shape_store, const StepContext& step) {
     const WorldDef& def = step.def;
     const StepTasks& tasks = step.tasks;
     const auto body_count = std::uint32_t(store.bodies.size());
@@ -627,7 +626,12 @@ void StepSolver::finalize(BodyStore& store, ShapeStore& shape_store, const Conta
         }
     }
     shape_store.refit_undecided();
-    continuous_.run(store, shape_store, contacts, joints, def);
+}
+
+void StepSolver::continuous(BodyStore& store, ShapeStore& shape_store,
+                            const ContactManager& contacts, const JointStore& joints,
+                            const StepContext& step) {
+    continuous_.run(store, shape_store, contacts, joints, step.def);
 }
 
 template <bool deferred>

@@ -45,8 +45,8 @@ void ContactManager::destroy(std::uint32_t i, BodyStore& bodies, const ShapeStor
         bodies.wake(c.body_b);
         if (reports_events(shapes, c.shape_a, c.shape_b))
             end_events_.push_back({shapes.id(c.shape_a), shapes.id(c.shape_b),
-                                  bodies.id(shapes.shapes[c.shape_a].body),
-                                  bodies.id(shapes.shapes[c.shape_b].body)});
+                                   bodies.id(shapes.shapes[c.shape_a].body),
+                                   bodies.id(shapes.shapes[c.shape_b].body)});
     }
     index_.erase(Contact::key(c.shape_a, c.shape_b));
     const std::uint32_t last = std::uint32_t(contacts_.size() - 1);
