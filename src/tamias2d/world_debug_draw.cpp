@@ -142,9 +142,10 @@ void World::draw(DebugDraw& draw) const {
     }
 
     if (draw.draw_joints) {
-        for (const Joint& j : w.joints.joints) {
-            if (!j.alive)
+        for (std::uint32_t i = 0; i < w.joints.joints.size(); ++i) {
+            if (!w.joints.alive(i))
                 continue;
+            const Joint& j = w.joints.joints[i];
             const Body& a = w.bodies.bodies[j.body_a];
             const Body& b = w.bodies.bodies[j.body_b];
             const Color c = colors.joint;
@@ -195,7 +196,7 @@ void World::draw(DebugDraw& draw) const {
     if (draw.draw_mass_centers) {
         for (std::uint32_t i = 0; i < w.bodies.size(); ++i) {
             const Body& b = w.bodies.bodies[i];
-            if (b.alive && inside(bounds, b.center))
+            if (w.bodies.alive(i) && inside(bounds, b.center))
                 draw.transform(b.center, b.angle, draw.axis_length);
         }
     }

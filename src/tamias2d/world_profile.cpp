@@ -41,7 +41,7 @@ WorldCounters World::counters() const {
     Islands islands;
     islands.reset(n);
     const auto movable = [&](std::uint32_t b) { return w.bodies.sleep_states[b].movable; };
-    for (const Contact& k : w.contacts.contacts) {
+    for (const Contact& k : w.contacts.contacts()) {
         if (!k.touching)
             continue;
         ++c.touching;
@@ -49,8 +49,9 @@ WorldCounters World::counters() const {
         if (movable(k.body_a) && movable(k.body_b))
             islands.unite(k.body_a, k.body_b);
     }
-    for (const Joint& j : w.joints.joints) {
-        if (j.alive && movable(j.body_a) && movable(j.body_b))
+    for (std::uint32_t i = 0; i < w.joints.joints.size(); ++i) {
+        const Joint& j = w.joints.joints[i];
+        if (w.joints.alive(i) && movable(j.body_a) && movable(j.body_b))
             islands.unite(j.body_a, j.body_b);
     }
     for (std::uint32_t i = 0; i < n; ++i) {
