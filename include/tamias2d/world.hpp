@@ -87,6 +87,50 @@ class TAMIAS2D_EXPORT World {
     std::vector<ShapeId> shapes(BodyId body) const; ///< the body's shapes, in creation order
     std::size_t body_count() const;                 ///< bodies that exist
 
+    // --- shape_control ---
+    // Every setter below checks the handle and the value first and throws without changing
+    // anything (InvalidHandle, ValidationError naming the field and the constraint, WrongKind).
+    // A value equal to the current one changes nothing (no wake, no contact touched). A
+    // changed value wakes the shape's body (a static body: the bodies touching it).
+    /// \srs{LC2} Sets the shape's Coulomb friction coefficient (>= 0, DCX_friction); its
+    /// contacts take the new combined value (geometric mean) at once.
+    void set_friction(ShapeId shape, double friction);
+    double friction(ShapeId shape) const; ///< the shape's friction coefficient (LC2)
+    /// \srs{DD12} Sets the shape's coefficient of restitution (in [0, 1], DCI_CR); its contacts
+    /// take the new combined value (the larger of the two) at once.
+    void set_restitution(ShapeId shape, double restitution);
+    double restitution(ShapeId shape) const; ///< the shape's coefficient of restitution (DD12)
+    /// \srs{DD1} Sets the shape's density (kg m^-2, > 0, DCX_density). With update_body_mass
+    /// the body's mass, centre of mass and inertia are recomputed now (DD1, DD14); without, they
+    /// stay until the next mass update (a shape added or removed, or a call with true).
+    /// Throws ValidationError (DCX_joint) if the new mass would put a joint's anchor beyond its
+    /// lever limit.
+    void set_density(ShapeId shape, double density, bool update_body_mass = true);
+    double density(ShapeId shape) const; ///< kg m^-2
+    /// \srs{R3} Replaces the shape's geometry by a circle (m, body frame), checked as
+    /// create_shape checks it (DCX_shape, DCX_range). The body's mass is recomputed (DD1,
+    /// DD14); the shape's contacts end now (with end events) and the pairs of its new outline
+    /// are found by the next step; its broad-phase box is moved. WrongKind for a chain's
+    /// segment (a chain's shape is changed by making the chain again); ValidationError
+    /// (DCX_joint) if the new mass would put a joint's anchor beyond its lever limit.
+    void set_circle(ShapeId shape, const Circle& circle);
+    /// \srs{DD30} As set_circle, with a capsule (DD30's mass).
+    void set_capsule(ShapeId shape, const Capsule& capsule);
+    /// \srs{R3} As set_circle, with a convex polygon (polygon_shape(points).geometry.polygon
+    /// makes one from points).
+    void set_polygon(ShapeId shape, const Polygon& polygon);
+    /// \srs{R3} As set_circle, with a two-sided segment (no area: no mass).
+    void set_segment(ShapeId shape, const Segment& segment);
+    /// The shape's geometry (body frame, m): only the member its `type` names is set.
+    Geometry shape_geometry(ShapeId shape) const;
+    /// \srs{DD28} Makes the shape a sensor (true) or a solid shape (false). A shape becoming a
+    /// sensor loses its contacts now (end events) and, as a visitor of other sensors, its
+    /// overlaps (sensor end events); from the next step it reports the shapes overlapping it.
+    /// A sensor becoming solid ends its overlaps now (sensor end events), and its contacts
+    /// begin from the next step.
+    void set_sensor(ShapeId shape, bool is_sensor);
+    bool is_sensor(ShapeId shape) const; ///< whether the shape is a sensor (DD28)
+
     // --- stepping (R5, R6, R7, R8) ---
     /// Advances by dt (s, in [1e-12, 1e12]). Throws ValidationError (DCX_range), changing
     /// nothing, if a moving body's position, velocity, angle or angular velocity has grown

@@ -114,6 +114,11 @@ class ContactManager {
     /// poses its manifold was computed at.
     void hash(StateHasher& hs, bool reuse) const;
 
+    // --- shape_control ---
+    /// Shape s's material changed: its contacts take the new combined friction and restitution
+    /// now (the manifolds and impulses are kept).
+    void refresh_materials(std::uint32_t s, const ShapeStore& shapes);
+
   private:
     void destroy(std::uint32_t i, BodyStore& bodies, const ShapeStore& shapes);
     /// update's parallel form: the contacts' own work in blocks of `block`, then the rest in
