@@ -11,6 +11,7 @@
 #include "tamias2d/errors.hpp"
 #include "tamias2d/handles.hpp"
 #include "tamias2d/joint_def.hpp"
+#include "tamias2d/joint_kind.hpp"
 #include "tamias2d/memory.hpp"
 #include "tamias2d/shape_def.hpp"
 #include "tamias2d/shapes.hpp"
