@@ -24,7 +24,7 @@ struct RevoluteJointDef {
     /// N, > 0: the joint breaks (is destroyed, and listed by World::broken_joints) after a
     /// step in which the force it carried, |reaction force|, exceeded this. Infinite: never.
     double break_force = std::numeric_limits<double>::infinity();
-    /// \srs{DD34} N m, > 0: the joint breaks after a step in which the magnitude of the torque
+    /// \srs{DD36} N m, > 0: the joint breaks after a step in which the magnitude of the torque
     /// it carried (its reaction torque, World::joint_reaction_torque()) exceeded this (a hinge
     /// that snaps when over-twisted). Infinite: never.
     double break_torque = std::numeric_limits<double>::infinity();
@@ -68,7 +68,7 @@ struct DistanceJointDef {
     bool enable_limit = false;
     double min_length = 0.0;                                     ///< m
     double max_length = std::numeric_limits<double>::infinity(); ///< m
-    /// \srs{DD33} A motor driving the rate of change of the anchors' distance to motor_speed
+    /// \srs{DD35} A motor driving the rate of change of the anchors' distance to motor_speed
     /// (m s^-1, positive: apart) with at most max_motor_force (N, >= 0): a winch, a telescopic
     /// arm. With the motor enabled a rigid rod (hertz 0) gives way to it: the length is the
     /// motor's, bounded by the limits if enabled; with a spring (hertz > 0) both act.

@@ -259,7 +259,7 @@ class TAMIAS2D_EXPORT World {
     /// throttle, an elevator's lever, a winch. WrongKind for another kind of joint.
     void set_joint_motor_speed(JointId joint, double speed);
     /// The joints that broke in the last step (reaction force above break_force, or reaction
-    /// torque above break_torque: DD34): they no longer exist; their handles are listed so that
+    /// torque above break_torque: DD36): they no longer exist; their handles are listed so that
     /// a game can react.
     std::span<const JointId> broken_joints() const;
     std::size_t joint_count() const; ///< joints that exist
@@ -286,7 +286,7 @@ class TAMIAS2D_EXPORT World {
     /// and a distance joint (min_length >= 0, max_length; infinite: no upper bound).
     void set_joint_limits(JointId joint, double lower, double upper);
     JointLimits joint_limits(JointId joint) const; ///< as set_joint_limits takes them
-    /// \srs{DD22} Turns the motor of a revolute, prismatic, wheel or distance joint (DD33) on
+    /// \srs{DD22} Turns the motor of a revolute, prismatic, wheel or distance joint (DD35) on
     /// or off; its speed is set_joint_motor_speed's.
     void enable_joint_motor(JointId joint, bool enable);
     bool is_joint_motor_enabled(JointId joint) const; ///< revolute, prismatic, wheel, distance
@@ -295,7 +295,7 @@ class TAMIAS2D_EXPORT World {
     /// \srs{DD22} N m, >= 0: the largest torque of a revolute or wheel joint's motor.
     void set_joint_max_motor_torque(JointId joint, double torque);
     double joint_max_motor_torque(JointId joint) const; ///< N m (revolute, wheel)
-    /// \srs{DD23} N, >= 0: the largest force of a prismatic or distance joint's motor (DD33).
+    /// \srs{DD23} N, >= 0: the largest force of a prismatic or distance joint's motor (DD35).
     void set_joint_max_motor_force(JointId joint, double force);
     double joint_max_motor_force(JointId joint) const; ///< N (prismatic, distance)
     /// \srs{DD22} Turns the spring of a revolute, prismatic or wheel joint on or off; turning
@@ -330,11 +330,11 @@ class TAMIAS2D_EXPORT World {
     /// would undo, and for a target joint (one body).
     void set_joint_collide_connected(JointId joint, bool collide);
     bool joint_collide_connected(JointId joint) const; ///< whether its two bodies collide
-    /// \srs{DD34} N, > 0 (infinite: never): the joint breaks after a step whose reaction force
+    /// \srs{DD36} N, > 0 (infinite: never): the joint breaks after a step whose reaction force
     /// exceeds it (broken_joints). WrongKind for a target or filter joint.
     void set_joint_break_force(JointId joint, double force);
     double joint_break_force(JointId joint) const; ///< N
-    /// \srs{DD34} N m, > 0 (infinite: never): the joint breaks after a step whose reaction
+    /// \srs{DD36} N m, > 0 (infinite: never): the joint breaks after a step whose reaction
     /// torque (joint_reaction_torque) exceeds it in magnitude. WrongKind for a target, filter
     /// or distance joint (none carries a torque).
     void set_joint_break_torque(JointId joint, double torque);

@@ -1,9 +1,9 @@
 // Run-time changes of a joint (World's joint_control calls) against independent oracles: the
 // limits' bounds (DD22, DD23), a motor's constant-torque and constant-force spin-up (T4, T1)
 // until its speed, a spring's period 1 / f about the target it is given (the harmonic
-// oscillator's closed form), the distance joint's motor (DD33), the break thresholds against a
-// cantilever's static force and torque (DD34), a joint's own soft bias against a spring's
-// static deflection (DD35), and collide_connected's effect on a pair.
+// oscillator's closed form), the distance joint's motor (DD35), the break thresholds against a
+// cantilever's static force and torque (DD36), a joint's own soft bias against a spring's
+// static deflection (DD37), and collide_connected's effect on a pair.
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
@@ -219,7 +219,7 @@ BOOST_AUTO_TEST_CASE(revolute_spring_turns_about_its_target,
 // each body feels F_max, so the distance grows at the rate F_max t (1 / m_A + 1 / m_B) until it
 // reaches 1 m s^-1, then at 1 m s^-1; the total momentum stays zero.
 BOOST_AUTO_TEST_CASE(distance_motor_drives_the_length_at_its_speed_with_at_most_its_force,
-                     *utf::label("DD33") * utf::label("T1") * utf::label("GD1")) {
+                     *utf::label("DD35") * utf::label("T1") * utf::label("GD1")) {
     World w(world_def(0.0));
     const double r = 0.5;
     const BodyId a = disc(w, {0.0, 0.0}, r, 2.0 / (pi * r * r));
@@ -247,10 +247,10 @@ BOOST_AUTO_TEST_CASE(distance_motor_drives_the_length_at_its_speed_with_at_most_
     BOOST_TEST(w.joint_reaction_force(j).x == 0.0, tt::tolerance(1e-9)); // at speed: no force
 }
 
-// Oracle: DD33 with the limits' definition. A motor driving a rigid rod's length apart at
+// Oracle: DD35 with the limits' definition. A motor driving a rigid rod's length apart at
 // 2 m s^-1 with a large force stops at max_length (3 m); switched off with the rod's length
 // set to 2.5 m, the rod pulls the bodies back to 2.5 m.
-BOOST_AUTO_TEST_CASE(distance_motor_stops_at_the_limit, *utf::label("DD33") * utf::label("DD20")) {
+BOOST_AUTO_TEST_CASE(distance_motor_stops_at_the_limit, *utf::label("DD35") * utf::label("DD20")) {
     World w(world_def(0.0));
     const BodyId a = static_body(w);
     const BodyId b = disc(w, {2.0, 0.0}, 0.25);
@@ -282,7 +282,7 @@ BOOST_AUTO_TEST_CASE(distance_motor_stops_at_the_limit, *utf::label("DD33") * ut
 // above both and holds for 2 s; given a break torque 1 % below m g d it breaks at the next
 // step, and so it does with a break force 1 % below m g (each alone).
 BOOST_AUTO_TEST_CASE(weld_breaks_at_the_closed_form_torque_and_force,
-                     *utf::label("DD34") * utf::label("IM6")) {
+                     *utf::label("DD36") * utf::label("IM6")) {
     const double g = 10.0;
     const auto run = [&](double force_factor, double torque_factor) {
         World w(world_def(g));
@@ -327,7 +327,7 @@ BOOST_AUTO_TEST_CASE(weld_breaks_at_the_closed_form_torque_and_force,
 // relax removes the bias's velocity each substep, so the pin creeps to its deflection, with a
 // time constant of about 2.6 s here: 40 s is over 15 of them.)
 BOOST_AUTO_TEST_CASE(a_joints_own_tuning_sags_as_its_spring,
-                     *utf::label("DD35") * utf::label("IM6")) {
+                     *utf::label("DD37") * utf::label("IM6")) {
     const double g = 10.0, f = 3.0;
     World w(world_def(g));
     const BodyId pivot = static_body(w);
@@ -345,9 +345,9 @@ BOOST_AUTO_TEST_CASE(a_joints_own_tuning_sags_as_its_spring,
     BOOST_TEST(-w.position(bob).y == sag, tt::tolerance(1e-4));
 }
 
-// Oracle: DD35's definition: a joint tuned to the world's own values is solved with the same
+// Oracle: DD37's definition: a joint tuned to the world's own values is solved with the same
 // coefficients, so a chain of three such links moves bit for bit as the untuned chain.
-BOOST_AUTO_TEST_CASE(tuning_to_the_worlds_values_changes_no_bit, *utf::label("DD35")) {
+BOOST_AUTO_TEST_CASE(tuning_to_the_worlds_values_changes_no_bit, *utf::label("DD37")) {
     std::vector<std::vector<double>> states;
     for (const bool tuned : {false, true}) {
         World w(world_def(9.81));

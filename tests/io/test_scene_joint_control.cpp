@@ -1,5 +1,5 @@
 // The definition fields the joint_control work added to the scene format: a distance joint's
-// motor (DD33) and a break torque (DD34). Oracles: docs/scene-format.md's joint tables, the
+// motor (DD35) and a break torque (DD36). Oracles: docs/scene-format.md's joint tables, the
 // documented round trip parse_scene(scene_to_json(s)) ~ s, and the same joints made by hand
 // with World::create_joint.
 #include <boost/test/unit_test.hpp>

@@ -25,8 +25,8 @@
 #include "tamias2d/model/dd25_wheel_constraint.hpp"
 #include "tamias2d/model/dd26_motor_constraint.hpp"
 #include "tamias2d/model/dd29_time_of_impact.hpp"
-#include "tamias2d/model/dd33_distance_joint_motor.hpp"
-#include "tamias2d/model/dd34_joint_break.hpp"
+#include "tamias2d/model/dd35_distance_joint_motor.hpp"
+#include "tamias2d/model/dd36_joint_break.hpp"
 #include "tamias2d/model/im1_translational_motion.hpp"
 #include "tamias2d/model/im2_rotational_motion.hpp"
 #include "tamias2d/model/im3_collision_response.hpp"
@@ -493,15 +493,15 @@ inline double axial_spring_error(double translation, double target) {
         .value();
 }
 
-// DD33, DD34: a distance joint's motor, a joint's break thresholds.
+// DD35, DD36: a distance joint's motor, a joint's break thresholds.
 
-/// DD33's accumulated motor impulse (N s) after one iteration of a distance joint's motor:
+/// DD35's accumulated motor impulse (N s) after one iteration of a distance joint's motor:
 /// the anchors' distance rate `length_rate` (m s^-1) driven to `motor_speed` with at most
 /// max_force (N) over the substep h.
 inline double distance_motor_update(const SolverBody& a, double arm_a, const SolverBody& b,
                                     double arm_b, double length_rate, double motor_speed,
                                     double max_force, double h, double accumulated) {
-    return m::dd33::motor_update(
+    return m::dd35::motor_update(
                inverse_inertia(a), inverse_inertia(b), u::from_value<u::Length>(arm_a),
                u::from_value<u::Length>(arm_b), u::from_value<u::Velocity>(length_rate),
                u::from_value<u::Velocity>(motor_speed), u::from_value<u::Force>(max_force),
@@ -509,10 +509,10 @@ inline double distance_motor_update(const SolverBody& a, double arm_a, const Sol
         .value();
 }
 
-/// DD34: whether a joint whose last substep's reaction force has the magnitude `force` (N) and
+/// DD36: whether a joint whose last substep's reaction force has the magnitude `force` (N) and
 /// whose reaction torque is `torque` (N m) breaks at the thresholds break_force, break_torque.
 inline bool joint_breaks(double force, double break_force, double torque, double break_torque) {
-    return m::dd34::breaks(u::from_value<u::Force>(force), u::from_value<u::Force>(break_force),
+    return m::dd36::breaks(u::from_value<u::Force>(force), u::from_value<u::Force>(break_force),
                            u::from_value<u::Torque>(torque),
                            u::from_value<u::Torque>(break_torque));
 }

@@ -4,7 +4,7 @@
 // energy-adding kicks.
 #pragma once
 
-#include "tamias2d/model/dd35_joint_tuning.hpp"
+#include "tamias2d/model/dd37_joint_tuning.hpp"
 #include "tamias2d/model/im6_motion_with_joints.hpp"
 #include "tamias2d/model/im7_soft_contact.hpp"
 
@@ -34,12 +34,12 @@ inline Softness make_joint_softness(double hertz, double damping_ratio, double h
     return {s.bias_rate.value(), s.mass_scale.value(), s.impulse_scale.value()};
 }
 
-/// DD35's softness of a joint with a tuning of its own (hertz, damping ratio), capped as the
+/// DD37's softness of a joint with a tuning of its own (hertz, damping ratio), capped as the
 /// world's is (n substeps of dt, each h), unwrapped; once per step and tuned joint.
 inline Softness make_tuned_joint_softness(double hertz, double damping_ratio, int substeps,
                                           double dt, double h) {
     namespace u = tamias2d::units;
-    const model::im6::Softness s = model::dd35::softness(
+    const model::im6::Softness s = model::dd37::softness(
         {u::from_value<u::Rate>(hertz), u::from_value<u::Dimensionless>(damping_ratio)}, substeps,
         u::from_value<u::Time>(dt), u::from_value<u::Time>(h));
     return {s.bias_rate.value(), s.mass_scale.value(), s.impulse_scale.value()};

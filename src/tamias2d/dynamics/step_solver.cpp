@@ -436,7 +436,7 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
     // IM6: the joints' soft bias, capped like the contacts' at a quarter of the substep rate.
     const Softness joint_softness = make_joint_softness(
         capped_joint_frequency(def.joint_hertz, n, dt), def.joint_damping_ratio, h);
-    // DD35: a joint with a tuning of its own uses it in place of the world's.
+    // DD37: a joint with a tuning of its own uses it in place of the world's.
     for (Joint& j : joints) {
         if (j.tuned && solved(j))
             j.step.tuning =

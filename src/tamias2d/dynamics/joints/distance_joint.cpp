@@ -40,7 +40,7 @@ void warm_start_distance(const Joint& j, std::span<SolverBody> bodies) {
 void solve_distance(Joint& j, std::span<SolverBody> bodies, const Softness& rigid, double h,
                     bool use_bias) {
     const bool spring = j.hertz > 0.0;
-    // A rigid rod holds the length unless the motor drives it (DD33: the rod gives way to the
+    // A rigid rod holds the length unless the motor drives it (DD35: the rod gives way to the
     // motor, a winch). Limits bound a free length's travel (a rigid rod has none to bound); a
     // spring is not relaxed.
     const bool motor = j.enable_motor;

@@ -87,7 +87,7 @@ struct Joint {
     double max_torque = 0.0, correction_factor = 0.0;
     // Set after creation (World's joint_control calls): the value a revolute, prismatic or
     // wheel joint's spring pulls the angle (rad) or translation (m) to; the torque (N m) above
-    // which the joint breaks (DD34); the joint's own soft bias (DD35) in place of the world's.
+    // which the joint breaks (DD36); the joint's own soft bias (DD37) in place of the world's.
     double spring_target = 0.0;
     double break_torque = std::numeric_limits<double>::infinity();
     bool tuned = false;
@@ -120,7 +120,7 @@ inline double reaction_angular_impulse(const Joint& j) {
 }
 
 /// A distance joint's impulse along its axis in the last substep (N s): the rod's or spring's,
-/// the limits', and the motor's while it is enabled (DD33).
+/// the limits', and the motor's while it is enabled (DD35).
 inline double distance_axial_impulse(const Joint& j) {
     const double held = j.step.axial_impulse + j.step.lower_impulse - j.step.upper_impulse;
     return j.enable_motor ? held + j.step.motor_impulse : held;

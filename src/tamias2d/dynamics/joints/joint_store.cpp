@@ -188,7 +188,7 @@ void JointStore::refuse_step(std::uint32_t i, BodyStore& bodies, bool sleeping) 
 void JointStore::break_joints(BodyStore& bodies, ShapeStore& shapes) {
     for (std::uint32_t i = 0; i < joints.size(); ++i) {
         const Joint& j = joints[i];
-        // \srs{DD34} The force's or the torque's threshold crossed.
+        // \srs{DD36} The force's or the torque's threshold crossed.
         if (!j.alive ||
             !bridge::joint_breaks(
                 bridge::reaction_force(length(reaction_impulse(j)), inv_h), j.break_force,

@@ -4,11 +4,11 @@
 #include "tamias2d/model/dd23_line_constraint.hpp"
 #include "tamias2d/units/vec2.hpp"
 
-namespace tamias2d::model::dd33 {
+namespace tamias2d::model::dd35 {
 using namespace tamias2d::units;
 using dd08::InverseInertia;
 
-/// \srs{DD33} A distance joint's motor after one iteration: the rate of change of the anchors'
+/// \srs{DD35} A distance joint's motor after one iteration: the rate of change of the anchors'
 /// distance, Ldot = Cdot (DD20's velocity error along the axis n), driven to the motor speed
 /// v_m by the rigid impulse -(Ldot - v_m) / K (K: DD8's denominator for the anchors' moment
 /// arms), its accumulation over the substep h bounded by the motor's largest force:
@@ -22,4 +22,4 @@ inline Impulse motor_update(InverseInertia A, InverseInertia B, Length arm_A, Le
     return dd23::clamp(accumulated + lambda, dd23::impulse_bound(max_force, h));
 }
 
-} // namespace tamias2d::model::dd33
+} // namespace tamias2d::model::dd35
