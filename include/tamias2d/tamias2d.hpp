@@ -15,6 +15,7 @@
 #include "tamias2d/function_ref.hpp"
 #include "tamias2d/handles.hpp"
 #include "tamias2d/joint_def.hpp"
+#include "tamias2d/joint_kind.hpp"
 #include "tamias2d/memory.hpp"
 #include "tamias2d/profile.hpp"
 #include "tamias2d/query_filter.hpp"

@@ -20,6 +20,7 @@
 #include "tamias2d/export.hpp"
 #include "tamias2d/handles.hpp"
 #include "tamias2d/joint_def.hpp"
+#include "tamias2d/joint_kind.hpp"
 #include "tamias2d/profile.hpp"
 #include "tamias2d/query_filter.hpp"
 #include "tamias2d/query_results.hpp"
@@ -90,6 +91,50 @@ class TAMIAS2D_EXPORT World {
     std::vector<BodyId> bodies() const;             ///< in creation order of their slots
     std::vector<ShapeId> shapes(BodyId body) const; ///< the body's shapes, in creation order
     std::size_t body_count() const;                 ///< bodies that exist
+
+    // --- shape_control ---
+    // Every setter below checks the handle and the value first and throws without changing
+    // anything (InvalidHandle, ValidationError naming the field and the constraint, WrongKind).
+    // A value equal to the current one changes nothing (no wake, no contact touched). A
+    // changed value wakes the shape's body (a static body: the bodies touching it).
+    /// \srs{LC2} Sets the shape's Coulomb friction coefficient (>= 0, DCX_friction); its
+    /// contacts take the new combined value (geometric mean) at once.
+    void set_friction(ShapeId shape, double friction);
+    double friction(ShapeId shape) const; ///< the shape's friction coefficient (LC2)
+    /// \srs{DD12} Sets the shape's coefficient of restitution (in [0, 1], DCI_CR); its contacts
+    /// take the new combined value (the larger of the two) at once.
+    void set_restitution(ShapeId shape, double restitution);
+    double restitution(ShapeId shape) const; ///< the shape's coefficient of restitution (DD12)
+    /// \srs{DD1} Sets the shape's density (kg m^-2, > 0, DCX_density). With update_body_mass
+    /// the body's mass, centre of mass and inertia are recomputed now (DD1, DD14); without, they
+    /// stay until the next mass update (a shape added or removed, or a call with true).
+    /// Throws ValidationError (DCX_joint) if the new mass would put a joint's anchor beyond its
+    /// lever limit.
+    void set_density(ShapeId shape, double density, bool update_body_mass = true);
+    double density(ShapeId shape) const; ///< kg m^-2
+    /// \srs{R3} Replaces the shape's geometry by a circle (m, body frame), checked as
+    /// create_shape checks it (DCX_shape, DCX_range). The body's mass is recomputed (DD1,
+    /// DD14); the shape's contacts end now (with end events) and the pairs of its new outline
+    /// are found by the next step; its broad-phase box is moved. WrongKind for a chain's
+    /// segment (a chain's shape is changed by making the chain again); ValidationError
+    /// (DCX_joint) if the new mass would put a joint's anchor beyond its lever limit.
+    void set_circle(ShapeId shape, const Circle& circle);
+    /// \srs{DD30} As set_circle, with a capsule (DD30's mass).
+    void set_capsule(ShapeId shape, const Capsule& capsule);
+    /// \srs{R3} As set_circle, with a convex polygon (polygon_shape(points).geometry.polygon
+    /// makes one from points).
+    void set_polygon(ShapeId shape, const Polygon& polygon);
+    /// \srs{R3} As set_circle, with a two-sided segment (no area: no mass).
+    void set_segment(ShapeId shape, const Segment& segment);
+    /// The shape's geometry (body frame, m): only the member its `type` names is set.
+    Geometry shape_geometry(ShapeId shape) const;
+    /// \srs{DD28} Makes the shape a sensor (true) or a solid shape (false). A shape becoming a
+    /// sensor loses its contacts now (end events) and, as a visitor of other sensors, its
+    /// overlaps (sensor end events); from the next step it reports the shapes overlapping it.
+    /// A sensor becoming solid ends its overlaps now (sensor end events), and its contacts
+    /// begin from the next step.
+    void set_sensor(ShapeId shape, bool is_sensor);
+    bool is_sensor(ShapeId shape) const; ///< whether the shape is a sensor (DD28)
 
     // --- stepping (R5, R6, R7, R8) ---
     /// Advances by dt (s, in [1e-12, 1e12]). Throws ValidationError (DCX_range), changing
@@ -213,14 +258,91 @@ class TAMIAS2D_EXPORT World {
     /// \srs{DD23} m: a prismatic or wheel joint's translation, the anchors' separation along
     /// the axis (0 at creation); WrongKind for another kind of joint.
     double joint_translation(JointId joint) const;
-    /// Sets the motor speed of a revolute or wheel joint (rad s^-1) or a prismatic joint
-    /// (m s^-1), finite (the motor must be enabled to act), and wakes its bodies: a car's
-    /// throttle, an elevator's lever. WrongKind for another kind of joint.
+    /// Sets the motor speed of a revolute or wheel joint (rad s^-1) or a prismatic or distance
+    /// joint (m s^-1), finite (the motor must be enabled to act), and wakes its bodies: a car's
+    /// throttle, an elevator's lever, a winch. WrongKind for another kind of joint.
     void set_joint_motor_speed(JointId joint, double speed);
-    /// The joints that broke in the last step (reaction force above break_force): they no
-    /// longer exist; their handles are listed so that a game can react.
+    /// The joints that broke in the last step (reaction force above break_force, or reaction
+    /// torque above break_torque: DD36): they no longer exist; their handles are listed so that
+    /// a game can react.
     std::span<const JointId> broken_joints() const;
     std::size_t joint_count() const; ///< joints that exist
+
+    // --- joint_control ---
+    // The joints' settings after creation. Every call checks the handle, the joint's kind and
+    // the values first and throws without changing anything: InvalidHandle for a stale handle,
+    // WrongKind (naming the joint) for a joint of a kind the call does not apply to,
+    // ValidationError (DCX_joint) naming the field for a value out of its range, as the
+    // definition's field is checked at creation. A value equal to the current one changes
+    // nothing; a changed one wakes the joint's bodies.
+    JointKind joint_kind(JointId joint) const; ///< the definition the joint was made from
+    /// The joint's first body (a target joint's body).
+    BodyId joint_body_a(JointId joint) const;
+    /// The joint's second body (a target joint's body, as joint_body_a).
+    BodyId joint_body_b(JointId joint) const;
+    /// \srs{DD22} Turns the limits of a revolute joint's angle, a prismatic or wheel joint's
+    /// translation (DD23) or a distance joint's length (DD20) on or off. A distance joint's
+    /// limits act when its length is free (a spring, hertz > 0, or its motor enabled).
+    void enable_joint_limit(JointId joint, bool enable);
+    bool is_joint_limit_enabled(JointId joint) const; ///< revolute, prismatic, wheel, distance
+    /// \srs{DD22} Sets the limits lower <= upper: rad for a revolute joint (lower_angle,
+    /// upper_angle), m for a prismatic or wheel joint (lower_translation, upper_translation)
+    /// and a distance joint (min_length >= 0, max_length; infinite: no upper bound).
+    void set_joint_limits(JointId joint, double lower, double upper);
+    JointLimits joint_limits(JointId joint) const; ///< as set_joint_limits takes them
+    /// \srs{DD22} Turns the motor of a revolute, prismatic, wheel or distance joint (DD35) on
+    /// or off; its speed is set_joint_motor_speed's.
+    void enable_joint_motor(JointId joint, bool enable);
+    bool is_joint_motor_enabled(JointId joint) const; ///< revolute, prismatic, wheel, distance
+    /// rad s^-1 (revolute, wheel) or m s^-1 (prismatic, distance): the motor's target speed.
+    double joint_motor_speed(JointId joint) const;
+    /// \srs{DD22} N m, >= 0: the largest torque of a revolute or wheel joint's motor.
+    void set_joint_max_motor_torque(JointId joint, double torque);
+    double joint_max_motor_torque(JointId joint) const; ///< N m (revolute, wheel)
+    /// \srs{DD23} N, >= 0: the largest force of a prismatic or distance joint's motor (DD35).
+    void set_joint_max_motor_force(JointId joint, double force);
+    double joint_max_motor_force(JointId joint) const; ///< N (prismatic, distance)
+    /// \srs{DD22} Turns the spring of a revolute, prismatic or wheel joint on or off; turning
+    /// it on needs hertz > 0 (set_joint_spring). A distance joint's spring is on while its
+    /// hertz is > 0 (WrongKind here).
+    void enable_joint_spring(JointId joint, bool enable);
+    bool is_joint_spring_enabled(JointId joint) const; ///< a distance joint's: hertz > 0
+    /// \srs{IM6} Sets a joint's spring: natural frequency (Hz) and damping ratio (>= 0) of a
+    /// revolute, prismatic or wheel joint's spring (hertz > 0 while it is enabled), a distance
+    /// joint's (hertz 0: a rigid rod) or a target joint's (hertz > 0).
+    void set_joint_spring(JointId joint, double hertz, double damping_ratio);
+    double joint_spring_hertz(JointId joint) const;         ///< Hz
+    double joint_spring_damping_ratio(JointId joint) const; ///< 1: critically damped
+    /// \srs{DD22} The value a revolute joint's spring pulls its angle to (rad), or a prismatic
+    /// or wheel joint's its translation (m, DD23); 0 (the pose at creation) until set.
+    void set_joint_spring_target(JointId joint, double target);
+    double joint_spring_target(JointId joint) const; ///< rad or m
+    /// \srs{DD20} m, > 0: a distance joint's rest length (the rod's, or the spring's).
+    void set_distance_joint_length(JointId joint, double length);
+    double distance_joint_length(JointId joint) const; ///< m
+    /// \srs{IM6} This joint's soft bias (hertz > 0, damping ratio > 0, as WorldDef::joint_hertz
+    /// and joint_damping_ratio are checked) in place of the world's, capped as the world's is.
+    /// The same values as the world's give the same motion, bit for bit. WrongKind for a
+    /// target or motor joint (held by their own spring and correction factor) and a filter
+    /// joint (nothing to solve).
+    void set_constraint_tuning(JointId joint, double hertz, double damping_ratio);
+    /// The joint's own tuning, or the world's if it has none.
+    ConstraintTuning constraint_tuning(JointId joint) const;
+    /// \srs{DD27} Whether the joint's two bodies collide with each other. Turned off, their
+    /// contacts end now (end events); turned on, their pairs are found by the next step (unless
+    /// another joint keeps them apart). WrongKind for a filter joint, whose only effect it
+    /// would undo, and for a target joint (one body).
+    void set_joint_collide_connected(JointId joint, bool collide);
+    bool joint_collide_connected(JointId joint) const; ///< whether its two bodies collide
+    /// \srs{DD36} N, > 0 (infinite: never): the joint breaks after a step whose reaction force
+    /// exceeds it (broken_joints). WrongKind for a target or filter joint.
+    void set_joint_break_force(JointId joint, double force);
+    double joint_break_force(JointId joint) const; ///< N
+    /// \srs{DD36} N m, > 0 (infinite: never): the joint breaks after a step whose reaction
+    /// torque (joint_reaction_torque) exceeds it in magnitude. WrongKind for a target, filter
+    /// or distance joint (none carries a torque).
+    void set_joint_break_torque(JointId joint, double torque);
+    double joint_break_torque(JointId joint) const; ///< N m
 
     // --- sleeping (WorldDef::enable_sleep) ---
     /// Every call above that changes a body's transform, velocities or loads wakes it, and with

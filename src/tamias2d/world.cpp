@@ -284,10 +284,14 @@ double World::joint_translation(JointId id) const {
 
 void World::set_joint_motor_speed(JointId id, double speed) {
     Joint& j = impl_->joints.get(
-        id, {JointType::revolute, JointType::prismatic, JointType::wheel}, "set_joint_motor_speed",
-        "must be a revolute, prismatic or wheel joint (the kinds with a motor)");
+        id, {JointType::revolute, JointType::prismatic, JointType::wheel, JointType::distance},
+        "set_joint_motor_speed",
+        "must be a revolute, prismatic, wheel or distance joint (the kinds with a motor)");
     require_within("joint.motor_speed", speed, supported::input_max,
-                   j.type == JointType::prismatic ? "m s^-1" : "rad s^-1");
+                   j.type == JointType::prismatic || j.type == JointType::distance ? "m s^-1"
+                                                                                   : "rad s^-1");
+    if (j.motor_speed == speed)
+        return; // the same speed: nothing woken (a game may set it every frame)
     j.motor_speed = speed;
     impl_->bodies.wake(j.body_a);
     impl_->bodies.wake(j.body_b);

@@ -68,7 +68,8 @@ struct Driver {
     explicit Driver(std::uint64_t seed)
         : r(seed), kinds(seed ^ 0x9e3779b97f4a7c15u), hand(seed ^ 0xc2b2ae3d27d4eb4fu),
           queries(seed ^ 0x165667b19e3779f9u), events_stream(seed ^ 0x27d4eb2f165667c5u),
-          area46(seed ^ 0x94d049bb133111ebu), world(make_def(r)) {}
+          area46(seed ^ 0x94d049bb133111ebu), world(make_def(r)),
+          control(seed ^ 0x5851f42d4c957f2du) {}
 
     static WorldDef make_def(Rng& r) {
         WorldDef d;
@@ -634,6 +635,141 @@ struct Driver {
         }
     }
 
+    // --- shape_control, joint_control ---
+    /// The run-time changes of shapes and joints, drawn from a stream of their own (so that the
+    /// main stream's calls stay those the seeds of docs/verification.md replay) one call in
+    /// five, none with TAMIAS_FUZZ_SHAPES=classic. Values: in range mostly, any double else.
+    Rng control;
+    double control_value(double lo, double hi) {
+        return control.chance(80) ? control.between(lo, hi) : any_double(control);
+    }
+    JointId control_joint() {
+        if (joints.empty() || control.chance(5))
+            return JointId{static_cast<std::uint32_t>(control.below(4)), 0};
+        return joints[control.below(joints.size())];
+    }
+    ShapeId control_shape() {
+        if (shapes.empty() || control.chance(5))
+            return ShapeId{static_cast<std::uint32_t>(control.below(8)), 0};
+        return shapes[control.below(shapes.size())];
+    }
+    Vec2d control_point() { return {control_value(-1.0, 1.0), control_value(-1.0, 1.0)}; }
+    /// One run-time change; true if one was made (throws what the library throws).
+    bool control_call() {
+        if (classic_only() || !control.chance(20))
+            return false;
+        const ShapeId s = control_shape();
+        const JointId j = control_joint();
+        const bool on = control.chance(50);
+        const double a = control_value(-2.0, 2.0), b = control_value(-2.0, 4.0);
+        last << "control " << s.index << "." << s.generation << " joint " << j.index << "."
+             << j.generation << " (" << on << ", " << a << ", " << b << "): ";
+        switch (control.below(26)) {
+        case 0:
+            last << "set_friction";
+            return world.set_friction(s, std::abs(a)), true;
+        case 1:
+            last << "set_restitution";
+            return world.set_restitution(s, std::abs(a) / 2.0), true;
+        case 2:
+            last << "set_density";
+            return world.set_density(s, b, on), true;
+        case 3:
+            last << "set_circle";
+            return world.set_circle(s, Circle{control_point(), b}), true;
+        case 4:
+            last << "set_capsule";
+            return world.set_capsule(s, Capsule{control_point(), control_point(), b}), true;
+        case 5: {
+            last << "set_polygon";
+            std::vector<Vec2d> pts;
+            for (std::size_t k = 0, n = 3 + control.below(4); k < n; ++k)
+                pts.push_back(control_point());
+            ShapeDef def;
+            try {
+                def = polygon_shape(pts);
+            } catch (const ValidationError&) {
+                def = box_shape(std::abs(a) + 0.1, std::abs(b) + 0.1);
+            }
+            return world.set_polygon(s, def.geometry.polygon), true;
+        }
+        case 6:
+            last << "set_segment";
+            return world.set_segment(s, Segment{control_point(), control_point()}), true;
+        case 7:
+            last << "set_sensor";
+            return world.set_sensor(s, on), true;
+        case 8:
+            last << "enable_joint_limit";
+            return world.enable_joint_limit(j, on), true;
+        case 9:
+            last << "set_joint_limits";
+            return world.set_joint_limits(j, a, b), true;
+        case 10:
+            last << "enable_joint_motor";
+            return world.enable_joint_motor(j, on), true;
+        case 11:
+            last << "set_joint_motor_speed";
+            return world.set_joint_motor_speed(j, a), true;
+        case 12:
+            last << "set_joint_max_motor_torque";
+            return world.set_joint_max_motor_torque(j, b), true;
+        case 13:
+            last << "set_joint_max_motor_force";
+            return world.set_joint_max_motor_force(j, b), true;
+        case 14:
+            last << "enable_joint_spring";
+            return world.enable_joint_spring(j, on), true;
+        case 15:
+            last << "set_joint_spring";
+            return world.set_joint_spring(j, b, std::abs(a)), true;
+        case 16:
+            last << "set_joint_spring_target";
+            return world.set_joint_spring_target(j, a), true;
+        case 17:
+            last << "set_distance_joint_length";
+            return world.set_distance_joint_length(j, b), true;
+        case 18:
+            last << "set_constraint_tuning";
+            return world.set_constraint_tuning(j, b * 20.0, std::abs(a)), true;
+        case 19:
+            last << "set_joint_collide_connected";
+            return world.set_joint_collide_connected(j, on), true;
+        case 20:
+            last << "set_joint_break_force";
+            return world.set_joint_break_force(j, b * 50.0), true;
+        case 21:
+            last << "set_joint_break_torque";
+            return world.set_joint_break_torque(j, b * 50.0), true;
+        case 22: { // getters are const: they may refuse, never change the world
+            last << "joint getters";
+            (void)world.joint_kind(j);
+            (void)world.joint_body_a(j);
+            (void)world.constraint_tuning(j);
+            (void)world.joint_limits(j);
+            return true;
+        }
+        case 23:
+            last << "shape getters";
+            (void)world.shape_geometry(s);
+            (void)world.friction(s);
+            return (void)world.is_sensor(s), true;
+        default: {
+            DistanceJointDef d; // a distance joint with a motor, for the calls above
+            d.body_a = body();
+            d.body_b = body();
+            d.anchor_a = control_point();
+            d.anchor_b = control_point() + Vec2d{1.0, 0.0};
+            d.enable_motor = on;
+            d.motor_speed = a;
+            d.max_motor_force = b;
+            last << "create_joint(distance with a motor)";
+            joints.push_back(world.create_joint(d));
+            return true;
+        }
+        }
+    }
+
     /// One random call; throws what the library throws.
     void call() {
         query_block();
@@ -645,6 +781,8 @@ struct Driver {
             draw_profile_explode();
             return;
         }
+        if (control_call())
+            return;
         switch (r.below(22)) {
         case 0:
         case 1: {

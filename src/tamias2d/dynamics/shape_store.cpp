@@ -185,4 +185,19 @@ void ShapeStore::hash(StateHasher& hs) const {
     }
 }
 
+// --- shape_control ---
+
+void ShapeStore::reshape(std::uint32_t i, const Geometry& geometry) {
+    defs[i].geometry = canonical(geometry); // unused members carry nothing
+    shapes[i].collider = make_collider(defs[i].geometry);
+}
+
+void ShapeStore::refit_proxy(std::uint32_t i, const Body& b) {
+    Shape& sh = shapes[i];
+    sh.fat_box = broad_phase.fattened(box(sh, b));
+    const BroadPhase::ProxyMove move{sh.proxy, sh.fat_box};
+    broad_phase.move_proxies({&move, 1});
+    broad_phase.touch_proxy(sh.proxy);
+}
+
 } // namespace tamias2d

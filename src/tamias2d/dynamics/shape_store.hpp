@@ -112,6 +112,15 @@ class ShapeStore {
     /// life, a live shape's body, geometry, material and (when not the default) filter.
     void hash(StateHasher& hs) const;
 
+    // --- shape_control ---
+    /// Gives shape i a new (validated) geometry, stored canonical, and its collider. Its
+    /// proxy, contacts and body's mass are the caller's to bring up to date.
+    void reshape(std::uint32_t i, const Geometry& geometry);
+    /// Shape i's proxy refitted to its geometry now on body `b`: a new fat box around the
+    /// tight one (smaller too, where move_proxy keeps one that contains it), marked moved so
+    /// that the next step finds its pairs.
+    void refit_proxy(std::uint32_t i, const Body& b);
+
   private:
     /// The proxies refit_fat_box moved, for one BroadPhase::move_proxies call.
     std::vector<BroadPhase::ProxyMove> proxy_moves_;

@@ -439,6 +439,15 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
     // IM6: the joints' soft bias, capped like the contacts' at a quarter of the substep rate.
     const Softness joint_softness = make_joint_softness(
         capped_joint_frequency(def.joint_hertz, n, dt), def.joint_damping_ratio, h);
+    // DD37: a joint with a tuning of its own uses it in place of the world's.
+    for (Joint& j : joints) {
+        if (j.tuned && solved(j))
+            j.step.tuning =
+                make_tuned_joint_softness(j.tuning_hertz, j.tuning_damping_ratio, n, dt, h);
+    }
+    const auto softness_of = [&joint_softness](const Joint& j) -> const Softness& {
+        return j.tuned ? j.step.tuning : joint_softness;
+    };
     // The touching manifolds in creation order, as the colouring sees them; those that can
     // bounce get a slot for the restitution pass's copy, also in creation order.
     const std::uint32_t bounce_count = list_edges(contacts, tasks);
@@ -503,14 +512,14 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
         }
         for (Joint& j : joints) {
             if (solved(j))
-                solve_joint(j, solver_bodies_, joint_softness, h, true);
+                solve_joint(j, solver_bodies_, softness_of(j), h, true);
         }
         contact_pass(tasks, streams, &st, true);
         integrate_positions(h, tasks);
         turn_joints(joints);
         for (Joint& j : joints) {
             if (solved(j))
-                solve_joint(j, solver_bodies_, joint_softness, h, false);
+                solve_joint(j, solver_bodies_, softness_of(j), h, false);
         }
         contact_pass(tasks, streams, &st, false);
     }

@@ -35,6 +35,15 @@ ContactManager::EdgeInput edge_input(const Contact& c) {
     return {c.body_a, c.body_b, group, c.touching, c.restitution > 0.0};
 }
 
+/// The contact's friction and restitution from its shapes' materials. Combination rules
+/// (docs/design.md): friction geometric mean, restitution max.
+void combine_materials(Contact& c, const ShapeStore& shapes) {
+    const Material& ma = shapes.defs[c.shape_a].material;
+    const Material& mb = shapes.defs[c.shape_b].material;
+    c.friction = std::sqrt(ma.friction * mb.friction);
+    c.restitution = std::max(ma.restitution, mb.restitution);
+}
+
 } // namespace
 
 void ContactManager::destroy(std::uint32_t i, BodyStore& bodies, const ShapeStore& shapes) {
@@ -186,11 +195,7 @@ void ContactManager::find_new(const BodyStore& bodies, ShapeStore& shapes,
         c.shape_b = sb;
         c.body_a = shapes.shapes[sa].body;
         c.body_b = shapes.shapes[sb].body;
-        // Combination rules (docs/design.md): friction geometric mean, restitution max.
-        const Material& ma = shapes.defs[sa].material;
-        const Material& mb = shapes.defs[sb].material;
-        c.friction = std::sqrt(ma.friction * mb.friction);
-        c.restitution = std::max(ma.restitution, mb.restitution);
+        combine_materials(c, shapes);
         // All the memory first, so that a bad_alloc leaves the parallel arrays and the index
         // agreeing.
         contacts_.reserve_more(1);
@@ -458,6 +463,20 @@ void ContactManager::hash(StateHasher& hs, bool reuse) const {
             }
         }
     }
+}
+
+// --- shape_control ---
+
+void ContactManager::refresh_materials(std::uint32_t s, const ShapeStore& shapes) {
+    for (std::uint32_t i = 0; i < contacts.size(); ++i) {
+        Contact& c = contacts[i];
+        if (c.shape_a != s && c.shape_b != s)
+            continue;
+        combine_materials(c, shapes);
+        if (i < edge_inputs.size())
+            edge_inputs[i].bounces = c.restitution > 0.0;
+    }
+    infos_stale_ = true;
 }
 
 } // namespace tamias2d

@@ -132,6 +132,10 @@ class ContactManager {
     /// Whether the begin and end events of the pair of shapes sa and sb are reported: both
     /// shapes allow them (ShapeDef::enable_contact_events).
     static bool reports_events(const ShapeStore& shapes, std::uint32_t sa, std::uint32_t sb);
+    // --- shape_control ---
+    /// Shape s's material changed: its contacts take the new combined friction and restitution
+    /// now (the manifolds and impulses are kept).
+    void refresh_materials(std::uint32_t s, const ShapeStore& shapes);
 
   private:
     /// Tests fill the arrays of their own contacts (tests/support).

@@ -89,11 +89,7 @@ Joint& JointStore::get(JointId id) {
 
 Joint& JointStore::get(JointId id, std::initializer_list<JointType> kinds, const char* call,
                        const char* rule) {
-    Joint& j = get(id);
-    if (std::find(kinds.begin(), kinds.end(), j.type) == kinds.end())
-        throw WrongKind(call, "joint[" + std::to_string(id.index) + "]", joint_kind_name(j.type),
-                        rule);
-    return j;
+    return get_of(id, std::span<const JointType>(kinds.begin(), kinds.size()), call, rule);
 }
 
 std::uint32_t JointStore::create(const Joint& joint) {
@@ -123,13 +119,8 @@ void JointStore::unjoin(std::uint32_t i, BodyStore& bodies, ShapeStore& shapes) 
     const Joint& j = joints[i];
     bodies.wake(j.body_a);
     bodies.wake(j.body_b);
-    if (!j.collide_connected) {
-        const std::uint32_t body =
-            bodies.bodies[j.body_b].type == BodyType::static_body ? j.body_a : j.body_b;
-        for (std::uint32_t s = bodies.bodies[body].first_shape; s != null_index;
-             s = shapes.shapes[s].next)
-            shapes.broad_phase.touch_proxy(shapes.shapes[s].proxy);
-    }
+    if (!j.collide_connected)
+        touch_pairs(j, bodies, shapes);
     destroy(i);
 }
 
@@ -179,8 +170,11 @@ void JointStore::refuse_step(std::uint32_t i, BodyStore& bodies, bool sleeping) 
 void JointStore::break_joints(BodyStore& bodies, ShapeStore& shapes) {
     for (std::uint32_t i = 0; i < joints.size(); ++i) {
         const Joint& j = joints[i];
+        // \srs{DD36} The force's or the torque's threshold crossed.
         if (!alive(i) ||
-            !(bridge::reaction_force(length(reaction_impulse(j)), inv_h) > j.break_force))
+            !bridge::joint_breaks(
+                bridge::reaction_force(length(reaction_impulse(j)), inv_h), j.break_force,
+                bridge::reaction_torque(reaction_angular_impulse(j), inv_h), j.break_torque))
             continue;
         broken.push_back(id(i));
         unjoin(i, bodies, shapes);
@@ -225,8 +219,39 @@ void JointStore::hash(StateHasher& hs) const {
             hs(j.correction_factor);
             hs(j.break_force);
             hs(std::uint64_t(j.collide_connected));
+            hash_controls(hs, j);
         }
     }
+}
+
+// --- joint_control ---
+
+Joint& JointStore::get_of(JointId id, std::span<const JointType> kinds, const char* call,
+                          const char* rule) {
+    Joint& j = get(id);
+    if (std::find(kinds.begin(), kinds.end(), j.type) == kinds.end())
+        throw WrongKind(call, "joint[" + std::to_string(id.index) + "]", joint_kind_name(j.type),
+                        rule);
+    return j;
+}
+
+void JointStore::touch_pairs(const Joint& j, const BodyStore& bodies, ShapeStore& shapes) {
+    const std::uint32_t body =
+        bodies.bodies[j.body_b].type == BodyType::static_body ? j.body_a : j.body_b;
+    for (std::uint32_t s = bodies.bodies[body].first_shape; s != null_index;
+         s = shapes.shapes[s].next)
+        shapes.broad_phase.touch_proxy(shapes.shapes[s].proxy);
+}
+
+void JointStore::hash_controls(StateHasher& hs, const Joint& j) {
+    // Only when one differs from its default: joints never set so hash as they always did.
+    if (j.spring_target == 0.0 && !j.tuned && j.break_torque == Joint{}.break_torque)
+        return;
+    hs(j.spring_target);
+    hs(j.break_torque);
+    hs(std::uint64_t(j.tuned));
+    hs(j.tuning_hertz);
+    hs(j.tuning_damping_ratio);
 }
 
 } // namespace tamias2d

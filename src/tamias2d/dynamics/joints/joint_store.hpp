@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <initializer_list>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -97,6 +98,21 @@ class JointStore {
     /// Feeds the joints to the state hash (World::state_hash): with any live joint, each
     /// slot's generation and life, a live joint's definition and impulses.
     void hash(StateHasher& hs) const;
+
+    // --- joint_control ---
+    /// get's kind check for a list of kinds kept by the caller (WrongKind saying `rule`).
+    Joint& get_of(JointId id, std::span<const JointType> kinds, const char* call, const char* rule);
+    const Joint& get_of(JointId id, std::span<const JointType> kinds, const char* call,
+                        const char* rule) const {
+        return const_cast<JointStore*>(this)->get_of(id, kinds, call, rule);
+    }
+    /// Marks the shapes of one of joint j's bodies (B, or A when B is static) moved, so that
+    /// the broad phase reports their pairs again at the next step: a pair the joint kept from
+    /// colliding (at rest, it would not be looked for again) may now collide.
+    static void touch_pairs(const Joint& j, const BodyStore& bodies, ShapeStore& shapes);
+    /// Feeds what the joint_control calls set to the state hash, when any differs from its
+    /// default (a spring target, a break torque, a tuning of the joint's own).
+    static void hash_controls(StateHasher& hs, const Joint& j);
 
   private:
     std::vector<std::vector<std::uint32_t>> by_body_; ///< per body index: its joints
