@@ -468,13 +468,13 @@ void ContactManager::hash(StateHasher& hs, bool reuse) const {
 // --- shape_control ---
 
 void ContactManager::refresh_materials(std::uint32_t s, const ShapeStore& shapes) {
-    for (std::uint32_t i = 0; i < contacts.size(); ++i) {
-        Contact& c = contacts[i];
+    for (std::uint32_t i = 0; i < contacts_.size(); ++i) {
+        Contact& c = contacts_[i];
         if (c.shape_a != s && c.shape_b != s)
             continue;
         combine_materials(c, shapes);
-        if (i < edge_inputs.size())
-            edge_inputs[i].bounces = c.restitution > 0.0;
+        if (i < edge_inputs_.size())
+            edge_inputs_[i].bounces = c.restitution > 0.0;
     }
     infos_stale_ = true;
 }
