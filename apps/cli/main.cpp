@@ -5,6 +5,7 @@
 //   tamias2d validate <scene.json | ->
 //   tamias2d view <scene.json | -> [--steps N] [--every K] [-o FILE] [--workers N]
 //                (view_command.cpp)
+//   tamias2d draw <scene.json | -> [--steps N] [--out FILE.svg] [...] (draw_command.cpp)
 //   tamias2d info
 //   tamias2d help [COMMAND] | --help | --version
 //
@@ -28,6 +29,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "draw_command.hpp"
 #include "tamias2d/build_info.hpp"
 #include "tamias2d/errors.hpp"
 #include "tamias2d/io/scene.hpp"
@@ -43,6 +45,8 @@ constexpr const char* usage = R"(Usage:
                [--workers N]
   tamias2d validate <scene.json | ->
   tamias2d view <scene.json | -> [--steps N] [--every K] [-o FILE.html] [--workers N]
+  tamias2d draw <scene.json | -> [--steps N] [--out FILE.svg] [--contacts] [--aabbs]
+               [--centers] [--no-joints] [--bounds X0,Y0,X1,Y1] [--width PX] [--workers N]
   tamias2d info
   tamias2d help [COMMAND]
   tamias2d --help | --version
@@ -51,6 +55,7 @@ Commands:
   run        Simulate a scene and write the bodies' states (SI units).
   validate   Parse and check a scene without running it; print a one-line summary.
   view       Simulate a scene and write a self-contained HTML page that plays the run.
+  draw       Simulate a scene and draw its last state as an SVG picture (World::draw).
   info       Print the version, the solver's instruction set on this machine and the build.
   help       Print this text, or a command's own (also: tamias2d COMMAND --help).
 
@@ -112,6 +117,8 @@ const char* usage_of(std::string_view command) {
         return info_usage;
     if (command == "view")
         return cli::view_usage;
+    if (command == "draw")
+        return cli::draw_usage;
     return nullptr;
 }
 
@@ -141,21 +148,21 @@ int parse_count(std::string_view option, std::string_view text) {
 Options parse_args(const std::vector<std::string_view>& args) {
     Options o;
     if (args.empty())
-        throw UsageError("missing command (run, validate, view, info or help)");
+        throw UsageError("missing command (run, validate, view, draw, info or help)");
     o.command = args[0];
     if (o.command == "help") {
         if (args.size() > 2)
             throw UsageError("help takes at most one command");
         if (args.size() == 2 && usage_of(args[1]) == nullptr)
             throw UsageError("no help for '" + std::string(args[1]) +
-                             "' (commands: run, validate, view, info)");
+                             "' (commands: run, validate, view, draw, info)");
         o.help = true;
         o.command = args.size() == 2 ? std::string(args[1]) : std::string{};
         return o;
     }
     if (usage_of(o.command) == nullptr)
         throw UsageError("unknown command '" + o.command +
-                         "' (expected run, validate, view or info)");
+                         "' (expected run, validate, view, draw or info)");
     for (std::size_t i = 1; i < args.size(); ++i) {
         const std::string_view a = args[i];
         const auto value = [&]() -> std::string_view {
@@ -398,6 +405,8 @@ int main(int argc, char** argv) {
     try {
         if (!args.empty() && args[0] == "view") // its own options (view_command.cpp)
             return cli::view_command(std::span(args).subspan(1), {load, display_name});
+        if (!args.empty() && args[0] == "draw") // its own options (draw_command.cpp)
+            return cli::draw_command(std::span(args).subspan(1), {load, display_name});
         return run(parse_args(args));
     } catch (const UsageError& e) {
         std::cerr << "tamias2d: error: " << one_line(e.what()) << " (see tamias2d --help)\n";

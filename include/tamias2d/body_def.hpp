@@ -68,7 +68,11 @@ struct BodyDef {
     /// With the world's sleeping on (WorldDef::enable_sleep): whether this body may sleep (a
     /// body that may not keeps every body touching it awake), and whether it starts awake.
     bool enable_sleep = true;
-    bool awake = true;   ///< starts awake (false: asleep, e.g. a stack built at rest)
+    bool awake = true; ///< starts awake (false: asleep, e.g. a stack built at rest)
+    /// Whether the body's pose is reported after each step in which it moves
+    /// (World::body_move_events), and the step in which it falls asleep. Off by default (the
+    /// report costs a pass over the bodies per step while any body asks).
+    bool enable_move_events = false;
     LoadFunction load{}; ///< optional F(t), tau(t), added to the persistent loads
     std::string name{};  ///< free text, for scene files and reports
 };

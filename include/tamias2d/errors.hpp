@@ -5,6 +5,7 @@
 #pragma once
 
 #include <charconv>
+#include <cstdint>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -60,6 +61,20 @@ struct TAMIAS2D_EXPORT ValidationError : std::invalid_argument {
 /// an error instead of a crash).
 struct TAMIAS2D_EXPORT InvalidHandle : std::invalid_argument {
     using std::invalid_argument::invalid_argument;
+};
+
+/// A handle that another World issued (its tag, BodyId::world, is not this world's): refused as
+/// the mistake it is instead of naming whatever lives in the same slot of this world. Thrown
+/// before anything changes. An InvalidHandle, so that code catching those catches it too.
+struct TAMIAS2D_EXPORT WrongWorld : InvalidHandle {
+    std::string handle;         ///< the handle, e.g. "BodyId 0:1"
+    std::uint32_t handle_world; ///< the tag of the world that issued it
+    std::uint32_t world;        ///< the tag of the world it was used with
+    /// what(): "BodyId 0:1 was issued by world 3, not by this world (world 4)".
+    WrongWorld(std::string handle_, std::uint32_t handle_world_, std::uint32_t world_)
+        : InvalidHandle(handle_ + " was issued by world " + std::to_string(handle_world_) +
+                        ", not by this world (world " + std::to_string(world_) + ")"),
+          handle(std::move(handle_)), handle_world(handle_world_), world(world_) {}
 };
 
 /// A call that does not apply to what a valid handle names: a one-step force, torque or

@@ -24,6 +24,10 @@ struct RevoluteJointDef {
     /// N, > 0: the joint breaks (is destroyed, and listed by World::broken_joints) after a
     /// step in which the force it carried, |reaction force|, exceeded this. Infinite: never.
     double break_force = std::numeric_limits<double>::infinity();
+    /// \srs{DD36} N m, > 0: the joint breaks after a step in which the magnitude of the torque
+    /// it carried (its reaction torque, World::joint_reaction_torque()) exceeded this (a hinge
+    /// that snaps when over-twisted). Infinite: never.
+    double break_torque = std::numeric_limits<double>::infinity();
     /// \srs{DD22} Limits of the joint angle (B's turn against A since creation, rad, CCW
     /// positive), lower <= upper: a door's hinge, an elbow.
     bool enable_limit = false;
@@ -40,6 +44,11 @@ struct RevoluteJointDef {
     bool enable_spring = false;
     double hertz = 0.0;         ///< Hz
     double damping_ratio = 0.0; ///< 1: critically damped
+    /// N, >= 0: after a step in which the joint's reaction force exceeded this, the joint is
+    /// reported (World::joint_events, threshold_exceeded) and kept. Infinite: never.
+    double force_threshold = std::numeric_limits<double>::infinity();
+    /// N m, >= 0: the same for its reaction torque. Infinite: never.
+    double torque_threshold = std::numeric_limits<double>::infinity();
     /// Field by field (a scene's joints compare so after a round trip through JSON).
     friend bool operator==(const RevoluteJointDef&, const RevoluteJointDef&) = default;
 };
@@ -58,14 +67,26 @@ struct DistanceJointDef {
     /// distance is held by a spring of this natural frequency for the joint's effective mass.
     double hertz = 0.0;
     double damping_ratio = 0.0; ///< >= 0: the spring's damping ratio (1: critically damped)
-    /// With a spring (hertz > 0): hard bounds on the anchors' distance, 0 <= min_length <=
-    /// max_length (m), so that a soft link cannot stretch or shrink without end. A rigid rod
-    /// keeps its length and needs none.
+    /// With a spring (hertz > 0) or the motor: hard bounds on the anchors' distance, 0 <=
+    /// min_length <= max_length (m), so that a soft or driven link cannot stretch or shrink
+    /// without end. A rigid rod keeps its length and needs none.
     bool enable_limit = false;
     double min_length = 0.0;                                     ///< m
     double max_length = std::numeric_limits<double>::infinity(); ///< m
+    /// \srs{DD35} A motor driving the rate of change of the anchors' distance to motor_speed
+    /// (m s^-1, positive: apart) with at most max_motor_force (N, >= 0): a winch, a telescopic
+    /// arm. With the motor enabled a rigid rod (hertz 0) gives way to it: the length is the
+    /// motor's, bounded by the limits if enabled; with a spring (hertz > 0) both act.
+    bool enable_motor = false;
+    double motor_speed = 0.0;       ///< m s^-1
+    double max_motor_force = 0.0;   ///< N, >= 0
     bool collide_connected = false; ///< as RevoluteJointDef::collide_connected
     double break_force = std::numeric_limits<double>::infinity(); ///< N, > 0, as for revolute
+    /// N, >= 0: after a step in which the joint's reaction force exceeded this, the joint is
+    /// reported (World::joint_events, threshold_exceeded) and kept. Infinite: never.
+    double force_threshold = std::numeric_limits<double>::infinity();
+    /// N m, >= 0: the same for its reaction torque. Infinite: never.
+    double torque_threshold = std::numeric_limits<double>::infinity();
     /// Field by field (a scene's joints compare so after a round trip through JSON).
     friend bool operator==(const DistanceJointDef&, const DistanceJointDef&) = default;
 };
@@ -81,6 +102,11 @@ struct TargetJointDef {
     /// N, > 0: the largest force the joint applies (infinite: unbounded). A few times the
     /// body's weight drags it firmly without flinging it through walls.
     double max_force = std::numeric_limits<double>::infinity();
+    /// N, >= 0: after a step in which the joint's reaction force exceeded this, the joint is
+    /// reported (World::joint_events, threshold_exceeded) and kept. Infinite: never.
+    double force_threshold = std::numeric_limits<double>::infinity();
+    /// N m, >= 0: the same for its reaction torque. Infinite: never.
+    double torque_threshold = std::numeric_limits<double>::infinity();
     /// Field by field (a scene's joints compare so after a round trip through JSON).
     friend bool operator==(const TargetJointDef&, const TargetJointDef&) = default;
 };
@@ -94,7 +120,8 @@ struct PrismaticJointDef {
     Vec2d anchor{};       ///< m, world frame: a point taken as fixed on both bodies at creation
     Vec2d axis{1.0, 0.0}; ///< world frame at creation, any non-zero length (it is normalised)
     bool collide_connected = false; ///< as RevoluteJointDef::collide_connected
-    double break_force = std::numeric_limits<double>::infinity(); ///< N, > 0, as for revolute
+    double break_force = std::numeric_limits<double>::infinity();  ///< N, > 0, as for revolute
+    double break_torque = std::numeric_limits<double>::infinity(); ///< N m, > 0, as for revolute
     /// Limits of the translation (m), lower <= upper: the piston's stroke.
     bool enable_limit = false;
     double lower_translation = 0.0; ///< m
@@ -109,6 +136,11 @@ struct PrismaticJointDef {
     bool enable_spring = false;
     double hertz = 0.0;         ///< Hz
     double damping_ratio = 0.0; ///< 1: critically damped
+    /// N, >= 0: after a step in which the joint's reaction force exceeded this, the joint is
+    /// reported (World::joint_events, threshold_exceeded) and kept. Infinite: never.
+    double force_threshold = std::numeric_limits<double>::infinity();
+    /// N m, >= 0: the same for its reaction torque. Infinite: never.
+    double torque_threshold = std::numeric_limits<double>::infinity();
     /// Field by field (a scene's joints compare so after a round trip through JSON).
     friend bool operator==(const PrismaticJointDef&, const PrismaticJointDef&) = default;
 };
@@ -127,7 +159,13 @@ struct WeldJointDef {
     double angular_hertz = 0.0;
     double angular_damping_ratio = 0.0; ///< >= 0
     bool collide_connected = false;     ///< as RevoluteJointDef::collide_connected
-    double break_force = std::numeric_limits<double>::infinity(); ///< N, > 0, as for revolute
+    double break_force = std::numeric_limits<double>::infinity();  ///< N, > 0, as for revolute
+    double break_torque = std::numeric_limits<double>::infinity(); ///< N m, > 0, as for revolute
+    /// N, >= 0: after a step in which the joint's reaction force exceeded this, the joint is
+    /// reported (World::joint_events, threshold_exceeded) and kept. Infinite: never.
+    double force_threshold = std::numeric_limits<double>::infinity();
+    /// N m, >= 0: the same for its reaction torque. Infinite: never.
+    double torque_threshold = std::numeric_limits<double>::infinity();
     /// Field by field (a scene's joints compare so after a round trip through JSON).
     friend bool operator==(const WeldJointDef&, const WeldJointDef&) = default;
 };
@@ -141,7 +179,8 @@ struct WheelJointDef {
     Vec2d anchor{};                 ///< m, world frame: usually the wheel's centre
     Vec2d axis{0.0, 1.0};           ///< world frame at creation: the suspension's travel, non-zero
     bool collide_connected = false; ///< as RevoluteJointDef::collide_connected
-    double break_force = std::numeric_limits<double>::infinity(); ///< N, > 0, as for revolute
+    double break_force = std::numeric_limits<double>::infinity();  ///< N, > 0, as for revolute
+    double break_torque = std::numeric_limits<double>::infinity(); ///< N m, > 0, as for revolute
     /// The suspension spring (translation pulled back to 0): natural frequency hertz (> 0 when
     /// enabled) for the axis's effective mass, damping ratio >= 0.
     bool enable_spring = true;
@@ -155,6 +194,11 @@ struct WheelJointDef {
     bool enable_motor = false;
     double motor_speed = 0.0;      ///< rad s^-1
     double max_motor_torque = 0.0; ///< N m, >= 0
+    /// N, >= 0: after a step in which the joint's reaction force exceeded this, the joint is
+    /// reported (World::joint_events, threshold_exceeded) and kept. Infinite: never.
+    double force_threshold = std::numeric_limits<double>::infinity();
+    /// N m, >= 0: the same for its reaction torque. Infinite: never.
+    double torque_threshold = std::numeric_limits<double>::infinity();
     /// Field by field (a scene's joints compare so after a round trip through JSON).
     friend bool operator==(const WheelJointDef&, const WheelJointDef&) = default;
 };
@@ -172,7 +216,13 @@ struct MotorJointDef {
     /// In [0, 1]: the share of the pose error the joint asks to remove per substep.
     double correction_factor = 0.3;
     bool collide_connected = false; ///< as RevoluteJointDef::collide_connected
-    double break_force = std::numeric_limits<double>::infinity(); ///< N, > 0, as for revolute
+    double break_force = std::numeric_limits<double>::infinity();  ///< N, > 0, as for revolute
+    double break_torque = std::numeric_limits<double>::infinity(); ///< N m, > 0, as for revolute
+    /// N, >= 0: after a step in which the joint's reaction force exceeded this, the joint is
+    /// reported (World::joint_events, threshold_exceeded) and kept. Infinite: never.
+    double force_threshold = std::numeric_limits<double>::infinity();
+    /// N m, >= 0: the same for its reaction torque. Infinite: never.
+    double torque_threshold = std::numeric_limits<double>::infinity();
     /// Field by field (a scene's joints compare so after a round trip through JSON).
     friend bool operator==(const MotorJointDef&, const MotorJointDef&) = default;
 };

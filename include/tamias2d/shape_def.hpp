@@ -40,6 +40,18 @@ struct ShapeDef {
     /// that begin and end overlapping it (World::sensor_begin_events), a pickup or a trigger.
     /// Sensors do not detect each other. Its density still counts in its body's mass.
     bool is_sensor = false;
+    /// Whether this shape's contacts begin and end events are reported
+    /// (World::contact_begin_events): a pair's events are reported when both its shapes
+    /// allow them, so that debris switched off has none. On by default.
+    bool enable_contact_events = true;
+    /// \srs{DD28} Whether this shape takes part in sensor overlaps: a sensor that does not
+    /// detects nothing, a shape that does not is seen by no sensor (World::sensor_overlaps, and
+    /// so no begin or end event). On by default.
+    bool enable_sensor_events = true;
+    /// Whether this shape's hard hits are reported (World::contact_hit_events): a pair's hits
+    /// are reported when either shape asks. Off by default (the check costs a pass over the
+    /// contacts per step while any shape asks).
+    bool enable_hit_events = false;
 };
 
 /// A rectangle w x h (m) centred on the body origin (or on `center`, rotated by `angle`).

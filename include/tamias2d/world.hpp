@@ -14,11 +14,19 @@
 #include "tamias2d/body_def.hpp"
 #include "tamias2d/body_state.hpp"
 #include "tamias2d/contact_info.hpp"
+#include "tamias2d/debug_draw.hpp"
 #include "tamias2d/errors.hpp"
+#include "tamias2d/events.hpp"
+#include "tamias2d/explosion.hpp"
 #include "tamias2d/export.hpp"
 #include "tamias2d/handles.hpp"
 #include "tamias2d/joint_def.hpp"
+#include "tamias2d/joint_kind.hpp"
+#include "tamias2d/profile.hpp"
+#include "tamias2d/query_filter.hpp"
+#include "tamias2d/query_results.hpp"
 #include "tamias2d/shape_def.hpp"
+#include "tamias2d/shapes.hpp"
 #include "tamias2d/snapshot_error.hpp"
 #include "tamias2d/task_system.hpp"
 #include "tamias2d/world_def.hpp"
@@ -26,19 +34,10 @@
 
 namespace tamias2d {
 
-/// The first shape a ray meets (World::ray_cast).
-struct RayCastHit {
-    ShapeId shape;         ///< the shape hit
-    BodyId body;           ///< the body carrying it
-    Vec2d point{};         ///< m
-    Vec2d normal{};        ///< unit, outward from the shape
-    double fraction = 0.0; ///< along the ray's translation, in [0, 1]
-};
-
 /// \srs{R1} The space in which all rigid bodies of a simulation interact.
 /// Every mutating call validates its input first (SRS R4) and throws ValidationError,
-/// InvalidHandle or WrongKind (errors.hpp) without changing anything: the world is left exactly
-/// as it was.
+/// InvalidHandle (WrongWorld for a handle of another world) or WrongKind (errors.hpp) without
+/// changing anything: the world is left exactly as it was.
 /// Every real input must be finite (DCX_finite) and within the supported range (DCX_range:
 /// magnitudes up to 1e12 in SI units, sizes from 1e-12; docs/design.md, "Supported ranges").
 class TAMIAS2D_EXPORT World {
@@ -47,13 +46,19 @@ class TAMIAS2D_EXPORT World {
     /// constraint (e.g. substeps < 1, a non-finite gravity).
     explicit World(const WorldDef& def = {});
     ~World();
-    /// Worlds move (handles stay valid in the moved-to world) but are not copied: a copy of a
-    /// whole simulation is rarely meant, and a scene file (io/scene.hpp) rebuilds one.
+    /// Worlds move (handles stay valid in the moved-to world, which keeps the tag) but are not
+    /// copied: a copy of a whole simulation is rarely meant, and a scene file (io/scene.hpp)
+    /// rebuilds one.
     World(World&&) noexcept;
     /// Takes over the other world's bodies, shapes and state.
     World& operator=(World&&) noexcept;
     World(const World&) = delete;
     World& operator=(const World&) = delete;
+
+    /// The world's tag, which every handle it issues carries (BodyId::world): distinct for
+    /// every World of the process and never 0, so that a handle of another world, or a default
+    /// one, names nothing here. Not part of the state hash: equal worlds hash equal.
+    std::uint32_t tag() const;
 
     // --- bodies and shapes (R1, R2, R3) ---
     /// Adds a body (R1, R2) and returns its handle; throws ValidationError naming the field
@@ -90,6 +95,50 @@ class TAMIAS2D_EXPORT World {
     std::vector<BodyId> bodies() const;             ///< in creation order of their slots
     std::vector<ShapeId> shapes(BodyId body) const; ///< the body's shapes, in creation order
     std::size_t body_count() const;                 ///< bodies that exist
+
+    // --- shape_control ---
+    // Every setter below checks the handle and the value first and throws without changing
+    // anything (InvalidHandle, ValidationError naming the field and the constraint, WrongKind).
+    // A value equal to the current one changes nothing (no wake, no contact touched). A
+    // changed value wakes the shape's body (a static body: the bodies touching it).
+    /// \srs{LC2} Sets the shape's Coulomb friction coefficient (>= 0, DCX_friction); its
+    /// contacts take the new combined value (geometric mean) at once.
+    void set_friction(ShapeId shape, double friction);
+    double friction(ShapeId shape) const; ///< the shape's friction coefficient (LC2)
+    /// \srs{DD12} Sets the shape's coefficient of restitution (in [0, 1], DCI_CR); its contacts
+    /// take the new combined value (the larger of the two) at once.
+    void set_restitution(ShapeId shape, double restitution);
+    double restitution(ShapeId shape) const; ///< the shape's coefficient of restitution (DD12)
+    /// \srs{DD1} Sets the shape's density (kg m^-2, > 0, DCX_density). With update_body_mass
+    /// the body's mass, centre of mass and inertia are recomputed now (DD1, DD14); without, they
+    /// stay until the next mass update (a shape added or removed, or a call with true).
+    /// Throws ValidationError (DCX_joint) if the new mass would put a joint's anchor beyond its
+    /// lever limit.
+    void set_density(ShapeId shape, double density, bool update_body_mass = true);
+    double density(ShapeId shape) const; ///< kg m^-2
+    /// \srs{R3} Replaces the shape's geometry by a circle (m, body frame), checked as
+    /// create_shape checks it (DCX_shape, DCX_range). The body's mass is recomputed (DD1,
+    /// DD14); the shape's contacts end now (with end events) and the pairs of its new outline
+    /// are found by the next step; its broad-phase box is moved. WrongKind for a chain's
+    /// segment (a chain's shape is changed by making the chain again); ValidationError
+    /// (DCX_joint) if the new mass would put a joint's anchor beyond its lever limit.
+    void set_circle(ShapeId shape, const Circle& circle);
+    /// \srs{DD30} As set_circle, with a capsule (DD30's mass).
+    void set_capsule(ShapeId shape, const Capsule& capsule);
+    /// \srs{R3} As set_circle, with a convex polygon (polygon_shape(points).geometry.polygon
+    /// makes one from points).
+    void set_polygon(ShapeId shape, const Polygon& polygon);
+    /// \srs{R3} As set_circle, with a two-sided segment (no area: no mass).
+    void set_segment(ShapeId shape, const Segment& segment);
+    /// The shape's geometry (body frame, m): only the member its `type` names is set.
+    Geometry shape_geometry(ShapeId shape) const;
+    /// \srs{DD28} Makes the shape a sensor (true) or a solid shape (false). A shape becoming a
+    /// sensor loses its contacts now (end events) and, as a visitor of other sensors, its
+    /// overlaps (sensor end events); from the next step it reports the shapes overlapping it.
+    /// A sensor becoming solid ends its overlaps now (sensor end events), and its contacts
+    /// begin from the next step.
+    void set_sensor(ShapeId shape, bool is_sensor);
+    bool is_sensor(ShapeId shape) const; ///< whether the shape is a sensor (DD28)
 
     // --- stepping (R5, R6, R7, R8) ---
     /// Advances by dt (s, in [1e-12, 1e12]). Throws ValidationError (DCX_range), changing
@@ -213,14 +262,91 @@ class TAMIAS2D_EXPORT World {
     /// \srs{DD23} m: a prismatic or wheel joint's translation, the anchors' separation along
     /// the axis (0 at creation); WrongKind for another kind of joint.
     double joint_translation(JointId joint) const;
-    /// Sets the motor speed of a revolute or wheel joint (rad s^-1) or a prismatic joint
-    /// (m s^-1), finite (the motor must be enabled to act), and wakes its bodies: a car's
-    /// throttle, an elevator's lever. WrongKind for another kind of joint.
+    /// Sets the motor speed of a revolute or wheel joint (rad s^-1) or a prismatic or distance
+    /// joint (m s^-1), finite (the motor must be enabled to act), and wakes its bodies: a car's
+    /// throttle, an elevator's lever, a winch. WrongKind for another kind of joint.
     void set_joint_motor_speed(JointId joint, double speed);
-    /// The joints that broke in the last step (reaction force above break_force): they no
-    /// longer exist; their handles are listed so that a game can react.
+    /// The joints that broke in the last step (reaction force above break_force, or reaction
+    /// torque above break_torque: DD36): they no longer exist; their handles are listed so that
+    /// a game can react.
     std::span<const JointId> broken_joints() const;
     std::size_t joint_count() const; ///< joints that exist
+
+    // --- joint_control ---
+    // The joints' settings after creation. Every call checks the handle, the joint's kind and
+    // the values first and throws without changing anything: InvalidHandle for a stale handle,
+    // WrongKind (naming the joint) for a joint of a kind the call does not apply to,
+    // ValidationError (DCX_joint) naming the field for a value out of its range, as the
+    // definition's field is checked at creation. A value equal to the current one changes
+    // nothing; a changed one wakes the joint's bodies.
+    JointKind joint_kind(JointId joint) const; ///< the definition the joint was made from
+    /// The joint's first body (a target joint's body).
+    BodyId joint_body_a(JointId joint) const;
+    /// The joint's second body (a target joint's body, as joint_body_a).
+    BodyId joint_body_b(JointId joint) const;
+    /// \srs{DD22} Turns the limits of a revolute joint's angle, a prismatic or wheel joint's
+    /// translation (DD23) or a distance joint's length (DD20) on or off. A distance joint's
+    /// limits act when its length is free (a spring, hertz > 0, or its motor enabled).
+    void enable_joint_limit(JointId joint, bool enable);
+    bool is_joint_limit_enabled(JointId joint) const; ///< revolute, prismatic, wheel, distance
+    /// \srs{DD22} Sets the limits lower <= upper: rad for a revolute joint (lower_angle,
+    /// upper_angle), m for a prismatic or wheel joint (lower_translation, upper_translation)
+    /// and a distance joint (min_length >= 0, max_length; infinite: no upper bound).
+    void set_joint_limits(JointId joint, double lower, double upper);
+    JointLimits joint_limits(JointId joint) const; ///< as set_joint_limits takes them
+    /// \srs{DD22} Turns the motor of a revolute, prismatic, wheel or distance joint (DD35) on
+    /// or off; its speed is set_joint_motor_speed's.
+    void enable_joint_motor(JointId joint, bool enable);
+    bool is_joint_motor_enabled(JointId joint) const; ///< revolute, prismatic, wheel, distance
+    /// rad s^-1 (revolute, wheel) or m s^-1 (prismatic, distance): the motor's target speed.
+    double joint_motor_speed(JointId joint) const;
+    /// \srs{DD22} N m, >= 0: the largest torque of a revolute or wheel joint's motor.
+    void set_joint_max_motor_torque(JointId joint, double torque);
+    double joint_max_motor_torque(JointId joint) const; ///< N m (revolute, wheel)
+    /// \srs{DD23} N, >= 0: the largest force of a prismatic or distance joint's motor (DD35).
+    void set_joint_max_motor_force(JointId joint, double force);
+    double joint_max_motor_force(JointId joint) const; ///< N (prismatic, distance)
+    /// \srs{DD22} Turns the spring of a revolute, prismatic or wheel joint on or off; turning
+    /// it on needs hertz > 0 (set_joint_spring). A distance joint's spring is on while its
+    /// hertz is > 0 (WrongKind here).
+    void enable_joint_spring(JointId joint, bool enable);
+    bool is_joint_spring_enabled(JointId joint) const; ///< a distance joint's: hertz > 0
+    /// \srs{IM6} Sets a joint's spring: natural frequency (Hz) and damping ratio (>= 0) of a
+    /// revolute, prismatic or wheel joint's spring (hertz > 0 while it is enabled), a distance
+    /// joint's (hertz 0: a rigid rod) or a target joint's (hertz > 0).
+    void set_joint_spring(JointId joint, double hertz, double damping_ratio);
+    double joint_spring_hertz(JointId joint) const;         ///< Hz
+    double joint_spring_damping_ratio(JointId joint) const; ///< 1: critically damped
+    /// \srs{DD22} The value a revolute joint's spring pulls its angle to (rad), or a prismatic
+    /// or wheel joint's its translation (m, DD23); 0 (the pose at creation) until set.
+    void set_joint_spring_target(JointId joint, double target);
+    double joint_spring_target(JointId joint) const; ///< rad or m
+    /// \srs{DD20} m, > 0: a distance joint's rest length (the rod's, or the spring's).
+    void set_distance_joint_length(JointId joint, double length);
+    double distance_joint_length(JointId joint) const; ///< m
+    /// \srs{IM6} This joint's soft bias (hertz > 0, damping ratio > 0, as WorldDef::joint_hertz
+    /// and joint_damping_ratio are checked) in place of the world's, capped as the world's is.
+    /// The same values as the world's give the same motion, bit for bit. WrongKind for a
+    /// target or motor joint (held by their own spring and correction factor) and a filter
+    /// joint (nothing to solve).
+    void set_constraint_tuning(JointId joint, double hertz, double damping_ratio);
+    /// The joint's own tuning, or the world's if it has none.
+    ConstraintTuning constraint_tuning(JointId joint) const;
+    /// \srs{DD27} Whether the joint's two bodies collide with each other. Turned off, their
+    /// contacts end now (end events); turned on, their pairs are found by the next step (unless
+    /// another joint keeps them apart). WrongKind for a filter joint, whose only effect it
+    /// would undo, and for a target joint (one body).
+    void set_joint_collide_connected(JointId joint, bool collide);
+    bool joint_collide_connected(JointId joint) const; ///< whether its two bodies collide
+    /// \srs{DD36} N, > 0 (infinite: never): the joint breaks after a step whose reaction force
+    /// exceeds it (broken_joints). WrongKind for a target or filter joint.
+    void set_joint_break_force(JointId joint, double force);
+    double joint_break_force(JointId joint) const; ///< N
+    /// \srs{DD36} N m, > 0 (infinite: never): the joint breaks after a step whose reaction
+    /// torque (joint_reaction_torque) exceeds it in magnitude. WrongKind for a target, filter
+    /// or distance joint (none carries a torque).
+    void set_joint_break_torque(JointId joint, double torque);
+    double joint_break_torque(JointId joint) const; ///< N m
 
     // --- sleeping (WorldDef::enable_sleep) ---
     /// Every call above that changes a body's transform, velocities or loads wakes it, and with
@@ -283,9 +409,11 @@ class TAMIAS2D_EXPORT World {
     /// Changes nothing (pending mass updates are done, as a step would do them).
     std::vector<std::byte> snapshot() const;
     /// A new world in the state `snapshot` holds, stepping with `workers` workers and
-    /// `task_system` (these are the host's, not in the snapshot). Handles issued by the world
-    /// the snapshot was taken from name the same bodies, shapes and joints in the new world. It
-    /// has no custom filter and no load function: set them again where the original had them.
+    /// `task_system` (these are the host's, not in the snapshot). The new world has a tag of
+    /// its own (tag()): a handle the world the snapshot was taken from issued is not valid in
+    /// it, but the same index and generation with the new world's tag name the same body,
+    /// shape or joint. It has no custom filter, no load function and profiling off: set them
+    /// again where the original had them.
     /// Throws SnapshotError for a snapshot that is not one (magic), of another format version,
     /// truncated, changed (checksum) or inconsistent, naming the byte offset, the field and the
     /// rule; ValidationError for workers < 1.
@@ -294,7 +422,8 @@ class TAMIAS2D_EXPORT World {
     /// Puts this world in the state `snapshot` holds (rollback, reload). Handles issued before
     /// the snapshot was taken stay valid and name the same objects; handles issued after it
     /// name nothing (or, for a slot the snapshot has in use, what the snapshot has there).
-    /// Kept from this world: its workers and task system, its custom filter, and the load
+    /// Kept from this world: its workers and task system, its custom filter, whether it
+    /// profiles its steps (set_profiling), and the load
     /// function of every body whose handle is valid in both this world and the snapshot and
     /// which had one when the snapshot was taken (other bodies have none). Throws SnapshotError
     /// as from_snapshot does, leaving the world exactly as it was.
@@ -311,6 +440,174 @@ class TAMIAS2D_EXPORT World {
     /// where the anchor is. A joint's reference angle (the zero of its angle and limits) is
     /// taken again, as at creation, from its bodies' angles now. Throws nothing.
     WorldDefinitions definitions() const;
+    // --- queries ---
+    // Every query below walks the broad phase's trees, sees only the shapes its QueryFilter
+    // admits, changes nothing, and throws ValidationError (the world unchanged) for an input
+    // that is not finite or beyond the supported range (DCX_finite, DCX_range: |x| <= 1e12 m).
+    // Rays and shape casts do not see sensors (DD28); the overlap queries do. A ray that
+    // starts inside a solid shape (circle, polygon, capsule), or on its boundary heading
+    // inward, does not hit that shape: it reports the shapes it enters after. Segments and
+    // chain edges have no inside; a chain edge is hit from its solid side's outside (the right
+    // of point1 -> point2) only. Callbacks are called in the trees' order (the same for the
+    // same world) and must not change the world.
+    /// \srs{DD33} The first shape the filter admits on the segment origin -> origin +
+    /// translation (m); ties go to the lower shape index.
+    std::optional<RayCastHit> ray_cast(Vec2d origin, Vec2d translation,
+                                       const QueryFilter& filter) const;
+    /// \srs{DD33} Every shape the filter admits on the segment, ordered by fraction (ties by
+    /// shape index); allocates the vector.
+    std::vector<RayCastHit> ray_cast_all(Vec2d origin, Vec2d translation,
+                                         const QueryFilter& filter = {}) const;
+    /// \srs{DD33} The same without allocating: the nearest out.size() hits, ordered as above,
+    /// are written to `out`; returns how many hits there are in all (more than out.size() when
+    /// some did not fit).
+    std::size_t ray_cast_all(Vec2d origin, Vec2d translation, const QueryFilter& filter,
+                             std::span<RayCastHit> out) const;
+    /// \srs{DD33} Some hit on the segment, the first the walk finds (not the nearest): whether
+    /// a line of sight is blocked. Stops at that hit.
+    std::optional<RayCastHit> ray_cast_any(Vec2d origin, Vec2d translation,
+                                           const QueryFilter& filter = {}) const;
+    /// \srs{DD33} Calls `callback` for hits on the segment as the walk finds them; its return
+    /// value ignores the hit, stops the cast, or clips it (RayCastCallback). Allocates nothing.
+    void ray_cast(Vec2d origin, Vec2d translation, const QueryFilter& filter,
+                  RayCastCallback callback) const;
+    /// \srs{DD33} Where the segment first enters one shape, whatever its filter or sensor
+    /// flag. Throws InvalidHandle for a shape that does not exist, ValidationError as above.
+    std::optional<RayCastHit> ray_cast(ShapeId shape, Vec2d origin, Vec2d translation) const;
+
+    /// \srs{DD29} Sweeps `shape` (body frame about `origin`, turned by `angle` rad) along
+    /// `translation` (m) without turning, and returns the first shape the filter admits that
+    /// it touches: the fraction of the translation where the gap between them first falls
+    /// within DD29's target, found by the conservative advancement the continuous pass uses
+    /// (the pose there leaves a gap of at most cast_tolerance, never an overlap), with the
+    /// point and normal there. A shape overlapping at the start is hit at fraction 0. A chain
+    /// edge whose solid side the shape's centre starts on is passed through. Throws
+    /// ValidationError for a shape the create_shape rules refuse (DCX_shape), or an input not
+    /// finite or out of range.
+    std::optional<ShapeCastHit> shape_cast(const Geometry& shape, Vec2d origin, double angle,
+                                           Vec2d translation, const QueryFilter& filter = {}) const;
+    /// \srs{DD29} The same, calling `callback` for each hit as the walk finds it (returns as
+    /// a RayCastCallback does). Allocates nothing.
+    void shape_cast(const Geometry& shape, Vec2d origin, double angle, Vec2d translation,
+                    const QueryFilter& filter, ShapeCastCallback callback) const;
+    /// The gap (m) a shape cast's pose may leave: the shapes touch within this distance
+    /// (1e-6 of the cast's scale, the shape's size plus the translation's length).
+    static double cast_tolerance(const Geometry& shape, Vec2d translation);
+
+    /// Shapes the filter admits whose bounding boxes overlap `box`, by shape index; throws as
+    /// query_aabb(box) does.
+    std::vector<ShapeId> query_aabb(const Aabb& box, const QueryFilter& filter) const;
+    /// The same without allocating: `callback` for each such shape in the trees' order, until
+    /// it returns false.
+    void query_aabb(const Aabb& box, const QueryFilter& filter, OverlapCallback callback) const;
+    /// Shapes the filter admits that contain `point` (m), by shape index.
+    std::vector<ShapeId> query_point(Vec2d point, const QueryFilter& filter) const;
+    /// The same without allocating, in the trees' order, until `callback` returns false.
+    void query_point(Vec2d point, const QueryFilter& filter, OverlapCallback callback) const;
+    /// \srs{DD34} Shapes the filter admits that share a point with `shape` placed at `origin`
+    /// turned by `angle` rad (exact: the shapes themselves, not their boxes), by shape index.
+    /// Throws ValidationError for a shape the create_shape rules refuse (DCX_shape), or an
+    /// input not finite or out of range.
+    std::vector<ShapeId> overlap_shape(const Geometry& shape, Vec2d origin, double angle,
+                                       const QueryFilter& filter = {}) const;
+    /// The same without allocating, in the trees' order, until `callback` returns false.
+    void overlap_shape(const Geometry& shape, Vec2d origin, double angle, const QueryFilter& filter,
+                       OverlapCallback callback) const;
+    /// \srs{DD34} The closest points of two shapes of the world (point_a on `a`). Throws
+    /// InvalidHandle for a shape that does not exist.
+    ClosestPoints distance(ShapeId a, ShapeId b) const;
+    /// \srs{DD34} The point of `shape` nearest `point` (m), as point_a (point_b is `point`);
+    /// a point inside a solid shape overlaps it. Throws InvalidHandle for a shape that does not
+    /// exist, ValidationError for a point not finite or out of range.
+    ClosestPoints closest_point(ShapeId shape, Vec2d point) const;
+    // --- events ---
+    // What a game reacts to after a step, beside the contact and sensor begin and end events
+    // above (events.hpp). Every list is in a deterministic order that depends only on the
+    // inputs, the same on any number of workers (WorldDef::workers); each is replaced by the
+    // next step's. Switching an event kind on or off changes no body's motion.
+    /// \srs{DD11} The pairs that hit in the last step: touching, pushed, and approaching
+    /// faster than WorldDef::hit_event_threshold (m s^-1) at a manifold point at the step's
+    /// start, one of their shapes with hit events on (ShapeDef::enable_hit_events). In contact
+    /// creation order.
+    std::span<const ContactHitEvent> contact_hit_events() const;
+    /// The bodies with move events on (BodyDef::enable_move_events) that moved in the last
+    /// step (awake and not static), with their pose after it, and those that fell asleep in
+    /// it (BodyMoveEvent::fell_asleep). In body index order.
+    std::span<const BodyMoveEvent> body_move_events() const;
+    /// The joints that exceeded a threshold (force_threshold, torque_threshold) or broke
+    /// (break_force) in the last step, in joint index order (the broken ones first), then those
+    /// destroyed with a body since (JointEventKind::body_destroyed, in the order they went).
+    /// broken_joints() lists the broken ones too.
+    std::span<const JointEvent> joint_events() const;
+    /// \srs{DD28} The shapes overlapping the sensor shape after the last step (less those
+    /// destroyed since), in shape index order: the set that its begin and end events build, one
+    /// by one. Throws InvalidHandle for a stale handle, WrongKind for a shape that is not a
+    /// sensor.
+    std::vector<ShapeId> sensor_overlaps(ShapeId sensor) const;
+    /// Sets WorldDef::hit_event_threshold (m s^-1, finite, >= 0): from the next step. Throws
+    /// ValidationError (rule "events") for a negative or non-finite value. Wakes nothing.
+    void set_hit_event_threshold(double speed);
+    /// Switches a shape's hits on or off (ShapeDef::enable_hit_events), from the next step.
+    /// Throws InvalidHandle for a stale handle. Wakes nothing.
+    void set_hit_events_enabled(ShapeId shape, bool on);
+    bool hit_events_enabled(ShapeId shape) const; ///< ShapeDef::enable_hit_events
+    /// Switches a shape's contact begin and end events on or off (ShapeDef::
+    /// enable_contact_events): the flag is read when a pair begins or ends touching. Throws
+    /// InvalidHandle for a stale handle. Wakes nothing.
+    void set_contact_events_enabled(ShapeId shape, bool on);
+    bool contact_events_enabled(ShapeId shape) const; ///< ShapeDef::enable_contact_events
+    /// \srs{DD28} Switches a shape's part in sensor overlaps on or off (ShapeDef::
+    /// enable_sensor_events). Off, its overlaps end at the next step, with end events, so that
+    /// a set built from the events stays equal to sensor_overlaps(); on, they begin again at
+    /// the next step that finds them. Throws InvalidHandle for a stale handle. Wakes nothing.
+    void set_sensor_events_enabled(ShapeId shape, bool on);
+    bool sensor_events_enabled(ShapeId shape) const; ///< ShapeDef::enable_sensor_events
+    /// Switches a body's move events on or off (BodyDef::enable_move_events), from the next
+    /// step. Throws InvalidHandle for a stale handle. Wakes nothing.
+    void set_move_events_enabled(BodyId body, bool on);
+    bool move_events_enabled(BodyId body) const; ///< BodyDef::enable_move_events
+    /// Sets a joint's event thresholds (N and N m, >= 0, infinite: never; see
+    /// RevoluteJointDef::force_threshold), from the next step. Throws InvalidHandle for a stale
+    /// handle, WrongKind for a filter joint (it carries no force), ValidationError (rule
+    /// "events") for a negative or NaN threshold. Wakes nothing.
+    void set_joint_event_thresholds(JointId joint, double force, double torque);
+    double joint_force_threshold(JointId joint) const;  ///< N (infinite: none)
+    double joint_torque_threshold(JointId joint) const; ///< N m (infinite: none)
+
+    // --- debug_draw ---
+    /// Hands the world to `draw` as primitives, in world coordinates (m): each shape filled in
+    /// its state's colour, each broad-phase box, each joint's segments, each touching contact's
+    /// points and normals, each body's centre of mass, as draw's flags select, limited to
+    /// draw.bounds when set (found through the broad phase). Calls only `draw`'s functions,
+    /// from the calling thread, in a fixed order; changes nothing and wakes nothing. Throws
+    /// ValidationError, before any call, for a length of `draw` not finite and > 0 or bounds
+    /// not finite or upside down (min > max).
+    void draw(DebugDraw& draw) const;
+
+    // --- profile ---
+    /// Turns the timing of each step's stages on or off (off when the world is made). Off,
+    /// a step reads no clock; on or off, no simulated value changes by a bit. Turning it off
+    /// forgets the last step's times. Wakes nothing.
+    void set_profiling(bool on);
+    bool profiling() const; ///< whether set_profiling turned the timing on
+    /// The last step's time per stage (s), measured with profiling on; all zero with it off or
+    /// before the first profiled step. A refused step (an exception from step) leaves the
+    /// previous step's times.
+    StepProfile profile() const;
+    /// What the world holds now: bodies, awake bodies, shapes, joints, pairs, touching pairs
+    /// and their points, islands, the last step's solver packs; counted when asked (O(bodies
+    /// + contacts + joints)), so a world that never asks pays nothing.
+    WorldCounters counters() const;
+
+    // --- explosion ---
+    /// \srs{DD38} Pushes every shape of a dynamic body within def.radius + def.falloff (m) of
+    /// def.position away from it (see ExplosionDef): applies DD38's impulse at the shape's
+    /// nearest point (DD10: dv = J / m, domega = r x J / I) and wakes each body it moves.
+    /// Returns how many bodies it moved. Throws ValidationError naming the field for a
+    /// non-finite or out-of-range position, radius, falloff or impulse (DCX_finite, DCX_range),
+    /// a negative radius or falloff (DD38), and (DCX_range) when a body's resulting velocity
+    /// would exceed the supported range; the world is then unchanged.
+    std::size_t explode(const ExplosionDef& def);
 
     /// A hash of the complete simulation state (bit patterns of every double): equal hashes
     /// mean bitwise-equal worlds. Used by the determinism and strong-guarantee tests.

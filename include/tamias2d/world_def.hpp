@@ -66,6 +66,10 @@ struct WorldDef {
     bool enable_continuous = true;
     /// Restitution (DD12) applies when the bodies approach faster than this (m s^-1).
     double restitution_threshold = 0.0;
+    /// A touching pair is reported as a hit (World::contact_hit_events) when its bodies
+    /// approach faster than this (m s^-1, >= 0) and one of its shapes has
+    /// ShapeDef::enable_hit_events. Changed at run time by World::set_hit_event_threshold.
+    double hit_event_threshold = 1.0;
     /// Sleeping (dynamics/sleep.hpp): a group of touching bodies that has stayed slower than
     /// both tolerances for time_to_sleep (s) is held still, and its bodies and contacts take no
     /// solver or narrow-phase work, until something wakes it (an awake body touches one of

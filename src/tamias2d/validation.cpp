@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <tuple>
 #include <utility>
 
 #include "tamias2d/errors.hpp"
@@ -347,6 +348,7 @@ void validate(const DistanceJointDef& def, const JointBody& a, const JointBody& 
                               "DCX_joint");
     if (std::isfinite(def.max_length)) // the limit multiplies its error: a finite one is bounded
         require_within("joint.max_length", def.max_length, supported::input_max, "m");
+    validate_motor(def.motor_speed, "m s^-1", "joint.max_motor_force", def.max_motor_force);
 }
 
 void validate(const TargetJointDef& def, const JointBody& body) {
@@ -386,6 +388,7 @@ void validate_joint_lever(std::string_view field, Vec2d r, double inv_mass, doub
 
 void validate(const RevoluteJointDef& def, const JointBody& a, const JointBody& b) {
     validate_joint_bodies(a, b, def.break_force);
+    validate_break_torque(def.break_torque);
     point("joint.anchor", def.anchor);
     validate_limits("joint.lower_angle", def.lower_angle, "joint.upper_angle", def.upper_angle,
                     "rad");
@@ -395,6 +398,7 @@ void validate(const RevoluteJointDef& def, const JointBody& a, const JointBody& 
 
 void validate(const PrismaticJointDef& def, const JointBody& a, const JointBody& b) {
     validate_joint_bodies(a, b, def.break_force);
+    validate_break_torque(def.break_torque);
     point("joint.anchor", def.anchor);
     validate_axis(def.axis);
     validate_limits("joint.lower_translation", def.lower_translation, "joint.upper_translation",
@@ -405,6 +409,7 @@ void validate(const PrismaticJointDef& def, const JointBody& a, const JointBody&
 
 void validate(const WeldJointDef& def, const JointBody& a, const JointBody& b) {
     validate_joint_bodies(a, b, def.break_force);
+    validate_break_torque(def.break_torque);
     point("joint.anchor", def.anchor);
     non_negative("joint.linear_hertz", def.linear_hertz, "Hz");
     frequency("joint.linear_hertz", def.linear_hertz);
@@ -416,6 +421,7 @@ void validate(const WeldJointDef& def, const JointBody& a, const JointBody& b) {
 
 void validate(const WheelJointDef& def, const JointBody& a, const JointBody& b) {
     validate_joint_bodies(a, b, def.break_force);
+    validate_break_torque(def.break_torque);
     point("joint.anchor", def.anchor);
     validate_axis(def.axis);
     validate_spring(def.enable_spring, def.hertz, def.damping_ratio);
@@ -426,6 +432,7 @@ void validate(const WheelJointDef& def, const JointBody& a, const JointBody& b) 
 
 void validate(const MotorJointDef& def, const JointBody& a, const JointBody& b) {
     validate_joint_bodies(a, b, def.break_force);
+    validate_break_torque(def.break_torque);
     point("joint.linear_offset", def.linear_offset);
     require_within("joint.angular_offset", def.angular_offset, supported::input_max, "rad");
     if (!(def.max_force >= 0.0))
@@ -470,6 +477,7 @@ void validate(const WorldDef& def) {
     non_negative("world.speculative_distance", def.speculative_distance, "m");
     non_negative("world.manifold_reuse_distance", def.manifold_reuse_distance, "m");
     non_negative("world.restitution_threshold", def.restitution_threshold, "m s^-1");
+    validate_event_threshold("world.hit_event_threshold", def.hit_event_threshold, false);
     non_negative("world.time_to_sleep", def.time_to_sleep, "s");
     non_negative("world.linear_sleep_tolerance", def.linear_sleep_tolerance, "m s^-1");
     non_negative("world.angular_sleep_tolerance", def.angular_sleep_tolerance, "rad s^-1");
@@ -484,11 +492,90 @@ void validate(const WorldDef& def) {
                               "needs both enqueue and finish, or neither", "threads");
 }
 
+void validate_event_threshold(std::string_view field, double value, bool may_be_infinite) {
+    const std::string name(field);
+    if (std::isnan(value) || (!may_be_infinite && std::isinf(value)))
+        throw ValidationError(name, value, may_be_infinite ? "must be a number" : "must be finite",
+                              "events");
+    if (!(value >= 0.0))
+        throw ValidationError(name, value, "must be >= 0", "events");
+    if (!may_be_infinite)
+        require_within(field, value, supported::input_max, "m s^-1");
+}
+
 void validate_time_step(double dt) {
     require_finite("dt", dt);
     if (!(dt > 0.0))
         throw ValidationError("dt", dt, "must be > 0", "DCX_dt");
     require_scale("dt", dt, supported::input_min, supported::input_max, "s");
+}
+
+// --- joint_control: the definitions' rules, a field at a time, for the joints' setters ---
+
+void validate_break_torque(double torque) {
+    if (!(torque > 0.0))
+        throw ValidationError("joint.break_torque", torque, "must be > 0", "DCX_joint");
+}
+
+void validate_break_force(double force) {
+    if (!(force > 0.0))
+        throw ValidationError("joint.break_force", force, "must be > 0", "DCX_joint");
+}
+
+void validate_joint_limits(const char* lower_field, double lower, const char* upper_field,
+                           double upper, std::string_view unit) {
+    validate_limits(lower_field, lower, upper_field, upper, unit);
+}
+
+void validate_length_range(double min_length, double max_length) {
+    non_negative("joint.min_length", min_length, "m");
+    if (!(max_length >= min_length))
+        throw ValidationError("joint.max_length", max_length, "must be >= min_length", "DCX_joint");
+    if (std::isfinite(max_length))
+        require_within("joint.max_length", max_length, supported::input_max, "m");
+}
+
+void validate_joint_max_motor(const char* field, double max) {
+    if (!(max >= 0.0))
+        throw ValidationError(field, max, "must be >= 0", "DCX_joint");
+}
+
+void validate_joint_spring(bool enabled, double hertz, double damping_ratio) {
+    validate_spring(enabled, hertz, damping_ratio);
+}
+
+void validate_distance_spring(double hertz, double damping_ratio) {
+    non_negative("joint.hertz", hertz, "Hz");
+    frequency("joint.hertz", hertz);
+    non_negative("joint.damping_ratio", damping_ratio);
+}
+
+void validate_target_spring(double hertz, double damping_ratio) {
+    require_finite("joint.hertz", hertz);
+    if (!(hertz > 0.0))
+        throw ValidationError("joint.hertz", hertz, "must be > 0", "DCX_joint");
+    frequency("joint.hertz", hertz);
+    non_negative("joint.damping_ratio", damping_ratio);
+}
+
+void validate_rest_length(double length) {
+    require_finite("joint.length", length);
+    if (!(length > 0.0))
+        throw ValidationError("joint.length", length, "must be > 0", "DCX_joint");
+    require_within("joint.length", length, supported::input_max, "m");
+}
+
+void validate_constraint_tuning(double hertz, double damping_ratio) {
+    // As WorldDef::joint_hertz and joint_damping_ratio are checked (validate(WorldDef)).
+    for (const auto& [field, v, unit] :
+         {std::tuple{"joint.tuning_hertz", hertz, "Hz"},
+          std::tuple{"joint.tuning_damping_ratio", damping_ratio, ""}}) {
+        require_finite(field, v);
+        if (!(v > 0.0))
+            throw ValidationError(field, v, "must be > 0", "DCX_joint");
+        require_within(field, v, supported::input_max, unit);
+    }
+    frequency("joint.tuning_hertz", hertz);
 }
 
 } // namespace tamias2d

@@ -102,6 +102,32 @@ void validate(const FilterJointDef& def, const JointBody& a, const JointBody& b)
 void validate_joint_lever(std::string_view field, Vec2d r, double inv_mass, double inv_inertia);
 /// Whether validate_joint_lever accepts (for a check that names the field only on failure).
 bool joint_lever_fits(Vec2d r, double inv_mass, double inv_inertia);
+// --- joint_control: the definitions' rules, a field at a time, for the joints' setters ---
+/// \srs{DCX_joint} A break torque > 0 (N m; infinite: never), named joint.break_torque.
+void validate_break_torque(double torque);
+/// DCX_joint: a break force > 0 (N; infinite: never), named joint.break_force.
+void validate_break_force(double force);
+/// DCX_joint: limits lower <= upper, both finite and within the supported range, named as the
+/// definition names them (`unit`: rad or m).
+void validate_joint_limits(const char* lower_field, double lower, const char* upper_field,
+                           double upper, std::string_view unit);
+/// DCX_joint: a distance joint's 0 <= min_length <= max_length (m; max infinite: no bound).
+void validate_length_range(double min_length, double max_length);
+/// DCX_joint: a motor's largest force or torque >= 0 (infinite: unbounded).
+void validate_joint_max_motor(const char* field, double max);
+/// DCX_joint: a revolute, prismatic or wheel joint's spring: hertz > 0 when enabled, damping
+/// ratio >= 0.
+void validate_joint_spring(bool enabled, double hertz, double damping_ratio);
+/// DCX_joint: a distance joint's spring: hertz >= 0 (0: rigid), damping ratio >= 0.
+void validate_distance_spring(double hertz, double damping_ratio);
+/// DCX_joint: a target joint's spring: hertz > 0, damping ratio >= 0.
+void validate_target_spring(double hertz, double damping_ratio);
+/// DCX_joint: a distance joint's rest length > 0 (m), within the supported range.
+void validate_rest_length(double length);
+/// DCX_joint: a joint's own soft bias, hertz and damping ratio > 0, as WorldDef::joint_hertz
+/// and joint_damping_ratio (named joint.tuning_hertz, joint.tuning_damping_ratio).
+void validate_constraint_tuning(double hertz, double damping_ratio);
+
 /// DCX_dt: the time step is finite and > 0; DCX_range: in [input_min, input_max] s.
 TAMIAS2D_EXPORT void validate_time_step(double dt);
 /// DCI_m: a mass given for a dynamic body is > 0 (the SRS's m >= 0 would divide by zero in IM1).
@@ -110,5 +136,9 @@ TAMIAS2D_EXPORT void validate_mass(std::string_view field, double mass);
 TAMIAS2D_EXPORT void validate_inertia(std::string_view field, double inertia);
 /// DCX_damping: a damping rate is finite and >= 0 (a negative one would feed energy in).
 TAMIAS2D_EXPORT void validate_damping(std::string_view field, double rate);
+/// An event threshold (events.hpp): a number >= 0; a joint's (N or N m, `may_be_infinite`)
+/// may be infinite for never, the world's hit speed (m s^-1) must be finite and in range.
+/// Not an SRS constraint: "events" names the rule.
+void validate_event_threshold(std::string_view field, double value, bool may_be_infinite);
 
 } // namespace tamias2d

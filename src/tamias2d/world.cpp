@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -52,12 +53,24 @@ void require_dynamic(const BodyStore& bodies, BodyId id, const Body& b, const ch
                         "forces, torques or impulses)");
 }
 
+/// A tag no World of this process has had (World::tag), never 0.
+std::uint32_t new_world_tag() {
+    static std::atomic<std::uint32_t> last{0};
+    std::uint32_t tag = last.fetch_add(1, std::memory_order_relaxed) + 1;
+    while (tag == 0) // after 2^32 worlds the count wraps; 0 stays "no world"
+        tag = last.fetch_add(1, std::memory_order_relaxed) + 1;
+    return tag;
+}
+
 } // namespace
 
 World::World(const WorldDef& def) {
     validate(def);
-    impl_ = std::make_unique<Impl>(def);
+    impl_ = std::make_unique<Impl>(def, new_world_tag());
     impl_->tasks = StepTasks(def.workers, def.task_system);
+}
+std::uint32_t World::tag() const {
+    return impl_->bodies.slots.world();
 }
 World::~World() = default;
 World::World(World&&) noexcept = default;
@@ -68,12 +81,14 @@ BodyId World::create_body(const BodyDef& def) {
     Impl& w = *impl_;
     const std::uint32_t i = w.bodies.create(def, w.def.enable_sleep);
     w.bodies.update_mass(i, w.shapes);
+    w.events.body_created(i, def);
     return w.bodies.id(i);
 }
 
 void World::destroy_body(BodyId id) {
     Impl& w = *impl_;
     const Body& b = w.bodies.get(id);
+    w.events.body_destroying(id.index, w.bodies, w.shapes, w.joints);
     while (!w.joints.of_body(id.index).empty())
         destroy_joint(w.joints.id(w.joints.of_body(id.index).back()));
     for (std::uint32_t s = b.first_shape; s != null_index;) {
@@ -93,6 +108,7 @@ ShapeId World::create_shape(BodyId body_id, const ShapeDef& def) {
     Body& b = w.bodies.get_for_attach(body_id);
     validate(def);
     const std::uint32_t i = w.shapes.create(body_id.index, b, def);
+    w.events.shape_created(def);
     w.bodies.attach_shape(body_id.index, w.shapes, i);
     if (def.is_sensor)
         w.sensors.add(i);
@@ -113,6 +129,7 @@ std::vector<ShapeId> World::create_chain(BodyId body_id, std::span<const ShapeDe
     out.reserve(segments.size());
     for (const ShapeDef& def : segments) {
         const std::uint32_t last = w.shapes.create(body_id.index, b, def);
+        w.events.shape_created(def);
         if (def.is_sensor)
             w.sensors.add(last);
         out.push_back(w.shapes.id(last));
@@ -146,6 +163,7 @@ void World::set_custom_filter(std::function<bool(ShapeId, ShapeId)> filter) {
 void World::destroy_shape(ShapeId id) {
     Impl& w = *impl_;
     const std::uint32_t body = w.shapes.get(id).body;
+    w.events.shape_destroying(w.shapes.defs[id.index]);
     w.contacts.destroy_of_shape(id.index, w.bodies, w.shapes);
     w.sensors.remove_shape(id.index, w.bodies, w.shapes);
     w.shapes.destroy(id.index, w.bodies.bodies[body]);
@@ -187,7 +205,7 @@ template <class Def> JointId join(World::Impl& w, const Def& def) {
     const Body& a = w.bodies.get(def.body_a);
     const Body& b = w.bodies.get(def.body_b);
     validate(def, joint_body(w.bodies, def.body_a, a), joint_body(w.bodies, def.body_b, b));
-    return add_joint(w, make_joint(def, a, b));
+    return add_joint(w, with_event_thresholds(w.events, make_joint(def, a, b), def));
 }
 
 } // namespace
@@ -217,7 +235,7 @@ JointId World::create_joint(const TargetJointDef& def) {
     Impl& w = *impl_;
     const Body& b = w.bodies.get(def.body);
     validate(def, joint_body(w.bodies, def.body, b));
-    return add_joint(w, make_joint(def, b));
+    return add_joint(w, with_event_thresholds(w.events, make_joint(def, b), def));
 }
 
 void World::set_joint_target(JointId id, Vec2d target) {
@@ -266,10 +284,14 @@ double World::joint_translation(JointId id) const {
 
 void World::set_joint_motor_speed(JointId id, double speed) {
     Joint& j = impl_->joints.get(
-        id, {JointType::revolute, JointType::prismatic, JointType::wheel}, "set_joint_motor_speed",
-        "must be a revolute, prismatic or wheel joint (the kinds with a motor)");
+        id, {JointType::revolute, JointType::prismatic, JointType::wheel, JointType::distance},
+        "set_joint_motor_speed",
+        "must be a revolute, prismatic, wheel or distance joint (the kinds with a motor)");
     require_within("joint.motor_speed", speed, supported::input_max,
-                   j.type == JointType::prismatic ? "m s^-1" : "rad s^-1");
+                   j.type == JointType::prismatic || j.type == JointType::distance ? "m s^-1"
+                                                                                   : "rad s^-1");
+    if (j.motor_speed == speed)
+        return; // the same speed: nothing woken (a game may set it every frame)
     j.motor_speed = speed;
     impl_->bodies.wake(j.body_a);
     impl_->bodies.wake(j.body_b);
@@ -301,37 +323,44 @@ std::size_t World::body_count() const {
 void World::step(double dt) {
     validate_time_step(dt);
     Impl& w = *impl_;
+    w.profiler.begin();
     w.bodies.settle(); // the masses attach_shape left pending
     w.check_state();
     w.bodies.evaluate_loads(w.time, w.loads);
     w.contacts.forget_filter_error(); // (one a step cut short by bad_alloc left)
     w.joints.broken.clear();
-    w.contacts.begin_events.clear();
-    w.contacts.end_events.clear();
+    w.contacts.clear_events();
     w.sensors.begin_events.clear();
     w.sensors.end_events.clear();
+    w.events.clear();
     const bool guarded = w.joints.live() > 0;
     if (guarded)
         w.joints.guard_step(w.bodies, w.def.enable_sleep);
+    w.profiler.lap(&StepProfile::prepare);
     w.contacts.find_new(w.bodies, w.shapes, w.joints);
+    w.profiler.lap(&StepProfile::broad_phase);
     w.joints.inv_h = w.def.substeps / dt;
     const StepContext step{w.def, dt, dt / w.def.substeps, w.def.enable_sleep, w.loads, w.tasks};
     if (step.sleeping && !w.bodies.any_awake()) {
         // Every body asleep: every contact is kept as it is (a new one, of a static body moved
         // onto sleeping ones, too) and nothing is solved; the step does only this.
         w.contacts.keep_all();
+        w.profiler.lap(&StepProfile::narrow_phase);
     } else {
         w.solve(step, guarded);
     }
     // DD28: the sensors see the poses this step made.
     if (!w.sensors.empty())
         w.sensors.update(w.bodies, w.shapes, w.contacts);
+    w.profiler.lap(&StepProfile::events);
     // Compensated sum, so that a load switching at t = n dt is seen at step n, not n + 1.
     const double y = dt - w.time_error;
     const double t = w.time + y;
     w.time_error = (t - w.time) - y;
     w.time = t;
+    w.events.after_step(w.bodies, w.shapes, w.contacts, w.joints, step.sleeping);
     w.contacts.report_stale();
+    w.profiler.end();
     // The user's filter threw: the step is whole, with the pairs it threw on refused.
     w.contacts.rethrow_filter_error();
 }
@@ -538,10 +567,10 @@ std::span<const ContactInfo> World::contacts() const {
     return impl_->contacts.report(impl_->bodies, impl_->shapes);
 }
 std::span<const ContactEvent> World::contact_begin_events() const {
-    return impl_->contacts.begin_events;
+    return impl_->contacts.begin_events();
 }
 std::span<const ContactEvent> World::contact_end_events() const {
-    return impl_->contacts.end_events;
+    return impl_->contacts.end_events();
 }
 std::span<const SensorEvent> World::sensor_begin_events() const {
     return impl_->sensors.begin_events;
@@ -592,6 +621,7 @@ std::uint64_t World::state_hash() const {
     w.shapes.hash(hs);
     w.joints.hash(hs);
     w.contacts.hash(hs, w.def.manifold_reuse_distance > 0.0);
+    w.events.hash(hs, w.shapes, w.joints, w.def.hit_event_threshold);
     return hs.h;
 }
 

@@ -83,89 +83,105 @@ JointDefinition definition_of(Joint j, BodyId a, BodyId b, const BodyStore& bodi
         j.lower_limit -= translation;
         j.upper_limit -= translation;
     }
+    // The fields every kind but the filter joint has (a target joint has no break force and
+    // no break torque; distance joints no break torque).
+    const auto common = [&](auto& d) {
+        d.collide_connected = j.collide_connected;
+        d.break_force = j.break_force;
+        d.force_threshold = j.force_threshold;
+        d.torque_threshold = j.torque_threshold;
+    };
     switch (j.type) {
-    case JointType::revolute:
-        return RevoluteJointDef{a,
-                                b,
-                                anchor,
-                                j.collide_connected,
-                                j.break_force,
-                                j.enable_limit,
-                                j.lower_limit,
-                                j.upper_limit,
-                                j.enable_motor,
-                                j.motor_speed,
-                                j.max_motor,
-                                j.enable_spring,
-                                j.hertz,
-                                j.damping_ratio};
-    case JointType::distance:
-        return DistanceJointDef{a,
-                                b,
-                                anchor_of(xa, j.local_anchor_a),
-                                anchor_of(xb, j.local_anchor_b),
-                                j.length,
-                                j.hertz,
-                                j.damping_ratio,
-                                j.enable_limit,
-                                j.lower_limit,
-                                j.upper_limit,
-                                j.collide_connected,
-                                j.break_force};
-    case JointType::target:
-        return TargetJointDef{b, j.target, j.hertz, j.damping_ratio, j.max_force};
-    case JointType::prismatic:
-        return PrismaticJointDef{a,
-                                 b,
-                                 anchor,
-                                 axis_of(xa, j.local_axis),
-                                 j.collide_connected,
-                                 j.break_force,
-                                 j.enable_limit,
-                                 j.lower_limit,
-                                 j.upper_limit,
-                                 j.enable_motor,
-                                 j.motor_speed,
-                                 j.max_motor,
-                                 j.enable_spring,
-                                 j.hertz,
-                                 j.damping_ratio};
-    case JointType::weld:
-        return WeldJointDef{a,
-                            b,
-                            anchor,
-                            j.hertz,
-                            j.damping_ratio,
-                            j.angular_hertz,
-                            j.angular_damping_ratio,
-                            j.collide_connected,
-                            j.break_force};
-    case JointType::wheel:
-        return WheelJointDef{a,
-                             b,
-                             anchor,
-                             axis_of(xa, j.local_axis),
-                             j.collide_connected,
-                             j.break_force,
-                             j.enable_spring,
-                             j.hertz,
-                             j.damping_ratio,
-                             j.enable_limit,
-                             j.lower_limit,
-                             j.upper_limit,
-                             j.enable_motor,
-                             j.motor_speed,
-                             j.max_motor};
-    case JointType::motor:
-        return MotorJointDef{a,
-                             b,
-                             j.local_anchor_a,
-                             j.reference_angle,
-                             j.max_force,
-                             j.max_torque,
-                             j.correction_factor,
-                             j.collide_connected,
-                             j.break_force};
+    case JointType::revolute: {
+        RevoluteJointDef d{.body_a = a, .body_b = b, .anchor = anchor};
+        common(d);
+        d.break_torque = j.break_torque;
+        d.enable_limit = j.enable_limit;
+        d.lower_angle = j.lower_limit;
+        d.upper_angle = j.upper_limit;
+        d.enable_motor = j.enable_motor;
+        d.motor_speed = j.motor_speed;
+        d.max_motor_torque = j.max_motor;
+        d.enable_spring = j.enable_spring;
+        d.hertz = j.hertz;
+        d.damping_ratio = j.damping_ratio;
+        return d;
+    }
+    case JointType::distance: {
+        DistanceJointDef d{.body_a = a,
+                           .body_b = b,
+                           .anchor_a = anchor_of(xa, j.local_anchor_a),
+                           .anchor_b = anchor_of(xb, j.local_anchor_b)};
+        common(d);
+        d.length = j.length;
+        d.hertz = j.hertz;
+        d.damping_ratio = j.damping_ratio;
+        d.enable_limit = j.enable_limit;
+        d.min_length = j.lower_limit;
+        d.max_length = j.upper_limit;
+        d.enable_motor = j.enable_motor;
+        d.motor_speed = j.motor_speed;
+        d.max_motor_force = j.max_motor;
+        return d;
+    }
+    case JointType::target: {
+        TargetJointDef d{b, j.target, j.hertz, j.damping_ratio, j.max_force};
+        d.force_threshold = j.force_threshold;
+        d.torque_threshold = j.torque_threshold;
+        return d;
+    }
+    case JointType::prismatic: {
+        PrismaticJointDef d{
+            .body_a = a, .body_b = b, .anchor = anchor, .axis = axis_of(xa, j.local_axis)};
+        common(d);
+        d.break_torque = j.break_torque;
+        d.enable_limit = j.enable_limit;
+        d.lower_translation = j.lower_limit;
+        d.upper_translation = j.upper_limit;
+        d.enable_motor = j.enable_motor;
+        d.motor_speed = j.motor_speed;
+        d.max_motor_force = j.max_motor;
+        d.enable_spring = j.enable_spring;
+        d.hertz = j.hertz;
+        d.damping_ratio = j.damping_ratio;
+        return d;
+    }
+    case JointType::weld: {
+        WeldJointDef d{.body_a = a, .body_b = b, .anchor = anchor};
+        common(d);
+        d.break_torque = j.break_torque;
+        d.linear_hertz = j.hertz;
+        d.linear_damping_ratio = j.damping_ratio;
+        d.angular_hertz = j.angular_hertz;
+        d.angular_damping_ratio = j.angular_damping_ratio;
+        return d;
+    }
+    case JointType::wheel: {
+        WheelJointDef d{
+            .body_a = a, .body_b = b, .anchor = anchor, .axis = axis_of(xa, j.local_axis)};
+        common(d);
+        d.break_torque = j.break_torque;
+        d.enable_spring = j.enable_spring;
+        d.hertz = j.hertz;
+        d.damping_ratio = j.damping_ratio;
+        d.enable_limit = j.enable_limit;
+        d.lower_translation = j.lower_limit;
+        d.upper_translation = j.upper_limit;
+        d.enable_motor = j.enable_motor;
+        d.motor_speed = j.motor_speed;
+        d.max_motor_torque = j.max_motor;
+        return d;
+    }
+    case JointType::motor: {
+        MotorJointDef d{.body_a = a, .body_b = b, .linear_offset = j.local_anchor_a};
+        common(d);
+        d.break_torque = j.break_torque;
+        d.angular_offset = j.reference_angle;
+        d.max_force = j.max_force;
+        d.max_torque = j.max_torque;
+        d.correction_factor = j.correction_factor;
+        return d;
+    }
     case JointType::filter:
         break;
     }
@@ -180,9 +196,9 @@ WorldDefinitions World::definitions() const {
     WorldDefinitions out;
     out.world = w.def;
     for (std::uint32_t i = 0; i < w.bodies.size(); ++i) {
-        const Body& b = w.bodies.bodies[i];
-        if (!b.alive)
+        if (!w.bodies.alive(i))
             continue;
+        const Body& b = w.bodies.bodies[i];
         const BodySettings& set = w.bodies.settings[i];
         BodyDefinition d;
         d.id = w.bodies.id(i);
@@ -205,13 +221,15 @@ WorldDefinitions World::definitions() const {
                       w.bodies.sleep_states[i].awake;
         d.def.load = set.load;
         d.def.name = set.name;
+        d.def.enable_move_events = w.events.move_events(i);
         for (std::uint32_t s = b.first_shape; s != null_index; s = w.shapes.shapes[s].next)
             d.shapes.push_back(w.shapes.defs[s]);
         out.bodies.push_back(std::move(d));
     }
-    for (const Joint& j : w.joints.joints) {
-        if (!j.alive)
+    for (std::uint32_t i = 0; i < w.joints.joints.size(); ++i) {
+        if (!w.joints.alive(i))
             continue;
+        const Joint& j = w.joints.joints[i];
         out.joints.push_back(
             definition_of(j, w.bodies.id(j.body_a), w.bodies.id(j.body_b), w.bodies));
     }

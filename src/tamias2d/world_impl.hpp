@@ -12,6 +12,8 @@
 #include "tamias2d/dynamics/joints/joint_store.hpp"
 #include "tamias2d/dynamics/shape_store.hpp"
 #include "tamias2d/dynamics/step_context.hpp"
+#include "tamias2d/dynamics/step_events.hpp"
+#include "tamias2d/dynamics/step_profiler.hpp"
 #include "tamias2d/dynamics/step_solver.hpp"
 #include "tamias2d/parallel/step_tasks.hpp"
 #include "tamias2d/world.hpp"
@@ -31,10 +33,13 @@ struct World::Impl {
     SensorOverlaps sensors;
     StepSolver solver;
     IslandSleep sleep;
+    StepEvents events;       ///< hits, moves and joint events (events.hpp)
     StepTasks tasks;         ///< the step's parallel loops (WorldDef::workers, task_system)
     std::vector<Load> loads; ///< this step's load-function values (empty when none has one)
+    StepProfiler profiler;   ///< the stages' times (World::set_profiling; off: never read)
 
-    explicit Impl(const WorldDef& d) : def(d) {
+    /// A world tagged `tag` (World::tag).
+    Impl(const WorldDef& d, std::uint32_t tag) : def(d), bodies(tag), shapes(tag), joints(tag) {
         shapes.broad_phase.set_least_margin(d.speculative_distance); // (BroadPhase::fattened)
     }
 
@@ -43,8 +48,7 @@ struct World::Impl {
     /// finalized, so the bodies are as they were; the contacts hold the manifolds of those same
     /// poses.
     [[noreturn]] void refuse_diverged() {
-        contacts.begin_events.clear();
-        contacts.end_events.clear();
+        contacts.clear_events();
         joints.refuse_step(solver.diverged(), bodies, def.enable_sleep);
     }
 
@@ -59,20 +63,34 @@ struct World::Impl {
     /// touching contacts) have woken what they wake; without, before the narrow phase. With
     /// joints (`guarded`), a diverged solve is refused before anything is finalized.
     void solve(const StepContext& step, bool guarded) {
-        if (!step.sleeping)
+        if (!step.sleeping) {
             prepare(step);
+            profiler.lap(&StepProfile::prepare);
+        }
         contacts.update(bodies, shapes, step);
+        profiler.lap(&StepProfile::narrow_phase);
         if (step.sleeping) {
             sleep.wake_islands(bodies, contacts, joints);
+            profiler.lap(&StepProfile::sleep);
             prepare(step);
+            profiler.lap(&StepProfile::prepare);
         }
+        events.before_solve(bodies, shapes, contacts, def.hit_event_threshold);
         solver.solve(contacts, joints, step);
         if (guarded && solver.diverged() != null_index)
             refuse_diverged();
-        solver.finalize(bodies, shapes, contacts, joints, step);
+        profiler.lap(&StepProfile::solve);
+        solver.finalize(bodies, shapes, step);
+        profiler.lap(&StepProfile::finalize);
+        solver.continuous(bodies, shapes, contacts, joints, step);
+        profiler.lap(&StepProfile::continuous);
         joints.break_joints(bodies, shapes);
-        if (step.sleeping)
+        profiler.lap(&StepProfile::events);
+        if (step.sleeping) {
+            events.before_sleep(bodies);
             sleep.update_sleep(bodies, step);
+            profiler.lap(&StepProfile::sleep);
+        }
     }
 
     /// A step starts only from a state within supported::state_max (BodyStore::check_state),

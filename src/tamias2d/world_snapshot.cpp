@@ -7,8 +7,8 @@
 //   offset 16: u64 payload size in bytes
 //   offset 24: u64 FNV-1a 64 of the header's first 24 bytes and then the payload
 //   offset 32: payload: the world's settings and time, then each store's section (BODY, SHAP
-//              with the broad phase BRPH, CONT, JOIN, SENS), each written and read by the store
-//              itself beside its hash function.
+//              with the broad phase BRPH, CONT, JOIN, SENS, EVNT), each written and read by the
+//              store itself beside its hash function.
 //
 // All little-endian (dynamics/snapshot_io.hpp). A snapshot is read into a new engine state
 // first; only a snapshot read whole replaces the world's, so that a refused one changes nothing.
@@ -54,6 +54,7 @@ template <class IO, class D> void world_def_fields(IO& io, D& d) {
     io("contact_regions", d.contact_regions);
     io("enable_continuous", d.enable_continuous);
     io("restitution_threshold", d.restitution_threshold);
+    io("hit_event_threshold", d.hit_event_threshold);
     io("enable_sleep", d.enable_sleep);
     io("time_to_sleep", d.time_to_sleep);
     io("linear_sleep_tolerance", d.linear_sleep_tolerance);
@@ -73,10 +74,11 @@ std::uint64_t read_le(std::span<const std::byte> b, std::size_t at, int n) {
     return v;
 }
 
-/// The engine state a snapshot describes, read whole, with the host's workers and task system;
-/// the bodies that had a load function listed in `had_load`. Throws SnapshotError.
+/// The engine state a snapshot describes, read whole, with the host's workers and task system,
+/// its handles tagged `tag` (the world's it is read into, World::tag); the bodies that had a
+/// load function listed in `had_load`. Throws SnapshotError.
 std::unique_ptr<World::Impl> read_snapshot(std::span<const std::byte> bytes, int workers,
-                                           const TaskSystem& task_system,
+                                           const TaskSystem& task_system, std::uint32_t tag,
                                            std::vector<std::uint32_t>& had_load) {
     if (bytes.size() < header_size)
         throw SnapshotError(bytes.size(), "header",
@@ -105,7 +107,7 @@ std::unique_ptr<World::Impl> read_snapshot(std::span<const std::byte> bytes, int
                             "disagrees with the FNV-1a 64 of the bytes (they changed since they "
                             "were written)");
 
-    SnapshotReader in(payload, header_size);
+    SnapshotReader in(payload, header_size, tag);
     in.section("WRLD");
     WorldDef def;
     const std::size_t def_at = in.offset();
@@ -117,7 +119,7 @@ std::unique_ptr<World::Impl> read_snapshot(std::span<const std::byte> bytes, int
     } catch (const ValidationError& e) {
         in.fail_at(def_at, "world", std::string("the settings are refused: ") + e.what());
     }
-    auto w = std::make_unique<World::Impl>(def);
+    auto w = std::make_unique<World::Impl>(def, tag);
     w->tasks = StepTasks(def.workers, def.task_system);
     in("time", w->time);
     in("time_error", w->time_error);
@@ -127,6 +129,7 @@ std::unique_ptr<World::Impl> read_snapshot(std::span<const std::byte> bytes, int
     w->contacts.read(in, w->bodies, w->shapes);
     w->joints.read(in, w->bodies);
     w->sensors.read(in, w->shapes);
+    w->events.read(in, w->bodies, w->shapes);
     if (in.left() != 0)
         in.fail("payload", "must end after the last section (" + decimal(std::uint64_t(in.left())) +
                                " bytes more)");
@@ -156,6 +159,7 @@ std::vector<std::byte> World::snapshot() const {
     w.contacts.write(out);
     w.joints.write(out);
     w.sensors.write(out);
+    w.events.write(out);
     std::vector<std::byte>& b = out.bytes;
     const std::uint64_t size = b.size() - header_size;
     for (int k = 0; k < 8; ++k)
@@ -173,15 +177,15 @@ World World::from_snapshot(std::span<const std::byte> snapshot, int workers,
     host.workers = workers;
     host.task_system = task_system;
     World world(host); // (validates the workers and the task system)
-    world.impl_ = read_snapshot(snapshot, workers, task_system, had_load);
+    world.impl_ = read_snapshot(snapshot, workers, task_system, world.tag(), had_load);
     return world;
 }
 
 void World::restore(std::span<const std::byte> snapshot) {
     Impl& old = *impl_;
     std::vector<std::uint32_t> had_load;
-    std::unique_ptr<Impl> w =
-        read_snapshot(snapshot, old.def.workers, old.def.task_system, had_load);
+    std::unique_ptr<Impl> w = read_snapshot(snapshot, old.def.workers, old.def.task_system,
+                                            old.bodies.slots.world(), had_load);
     // Nothing below throws: the world changes only now.
     // A body that had a load function keeps the one its handle names in this world, if any.
     for (const std::uint32_t i : had_load) {
@@ -192,6 +196,7 @@ void World::restore(std::span<const std::byte> snapshot) {
     }
     w->contacts.custom_filter = std::move(old.contacts.custom_filter);
     w->tasks = std::move(old.tasks);
+    w->profiler.enabled = old.profiler.enabled;
     impl_ = std::move(w);
 }
 

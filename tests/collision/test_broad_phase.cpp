@@ -4,7 +4,6 @@
 #include <boost/test/unit_test.hpp>
 
 #include <algorithm>
-#include <atomic>
 #include <cstdlib>
 #include <new>
 #include <random>
@@ -12,29 +11,11 @@
 #include <vector>
 
 #include "oracles.hpp"
+#include "support/replaced_new.hpp"
 #include "tamias2d/collision/broad_phase.hpp"
 #include "tamias2d/collision/narrow_phase.hpp"
 #include "tamias2d/geometry/shape_aabb.hpp"
 #include "tamias2d/model/im4_aabb_overlap.hpp"
-
-// Counts heap allocations in this test binary (replaceable global operator new). GCC 12
-// misreads the malloc/free pair inside the replaced operators as mismatched: silence it here.
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-namespace {
-std::atomic<long> allocations{0};
-}
-void* operator new(std::size_t n) {
-    ++allocations;
-    if (void* p = std::malloc(n == 0 ? 1 : n))
-        return p;
-    throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept {
-    std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-    std::free(p);
-}
 
 namespace utf = boost::unit_test;
 using namespace tamias2d;
@@ -311,15 +292,15 @@ BOOST_AUTO_TEST_CASE(steady_state_allocation_free) {
     for (int k = 0; k < 5; ++k)
         round(4.0); // warm-up: every proxy moves, buffers reach their size
     out.reserve(out.capacity() * 2);
-    const long before = allocations.load();
+    const long before = tamias2d::test::allocation_count();
     for (int k = 0; k < 20; ++k)
         round(1.0);
-    const long during = allocations.load() - before;
+    const long during = tamias2d::test::allocation_count() - before;
     // Positive control: the counter does see an allocation. Both counts are read before any
     // BOOST_TEST, whose logging (e.g. the JUnit logger at level all) allocates.
     void* volatile p = ::operator new(16);
     ::operator delete(p);
-    const long control = allocations.load() - before - during;
+    const long control = tamias2d::test::allocation_count() - before - during;
     BOOST_TEST(during == 0);
     BOOST_TEST(control == 1);
 }

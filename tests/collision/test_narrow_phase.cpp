@@ -9,22 +9,17 @@
 #include <set>
 
 #include "oracles.hpp"
+#include "support/collide_input.hpp"
 #include "tamias2d/collision/narrow_phase.hpp"
 #include "tamias2d/geometry/shape_factory.hpp"
 
 namespace utf = boost::unit_test;
 namespace tt = boost::test_tools;
 using namespace tamias2d;
+using tamias2d::test::at;
+using tamias2d::test::input;
 
 namespace {
-
-Transform at(double x, double y, double angle = 0.0) {
-    return {{x, y}, angle == 0.0 ? Rot{} : Rot::from_angle(angle)};
-}
-
-CollideInput input(const Transform& a, const Transform& b, double margin = 0.0) {
-    return {a, a.p, b, b.p, margin};
-}
 
 /// Support gap along n: min over B of n.x minus max over A of n.x (positive: n separates).
 double support_gap(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb,

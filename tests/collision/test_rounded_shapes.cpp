@@ -7,22 +7,17 @@
 #include <random>
 
 #include "oracles.hpp"
+#include "support/collide_input.hpp"
 #include "tamias2d/collision/narrow_phase.hpp"
 #include "tamias2d/geometry/shape_factory.hpp"
 
 namespace utf = boost::unit_test;
 namespace tt = boost::test_tools;
 using namespace tamias2d;
+using tamias2d::test::at;
+using tamias2d::test::input;
 
 namespace {
-
-Transform at(double x, double y, double angle = 0.0) {
-    return {{x, y}, angle == 0.0 ? Rot{} : Rot::from_angle(angle)};
-}
-
-CollideInput input(const Transform& a, const Transform& b, double margin = 0.0) {
-    return {a, a.p, b, b.p, margin};
-}
 
 double deepest(const Manifold& m) {
     double d = INFINITY;

@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Checks that docs/user-guide.md agrees with itself and with the code it describes.
 
-    check_user_guide.py GUIDE WORLD_DEF_HPP EXAMPLE_CPP
-    check_user_guide.py --self-test GUIDE WORLD_DEF_HPP EXAMPLE_CPP
+    check_user_guide.py GUIDE WORLD_DEF_HPP EXAMPLE_CPP WORLD_HPP
+    check_user_guide.py --self-test GUIDE WORLD_DEF_HPP EXAMPLE_CPP WORLD_HPP
 
   * Its "Contents:" paragraph links every `##` section (outside code blocks), in the order of
     the sections, each by the anchor GitHub gives the heading and with the heading's words, and
@@ -12,10 +12,13 @@
     initialised there with a plain number or boolean has that default in its row.
   * Its first program ("A first program") is EXAMPLE_CPP, which CTest builds and runs
     (example.two_bodies), and has as many lines of code as it says.
+  * Its "API at a glance" tables have a row naming every public call of `class World` in
+    WORLD_HPP (constructors and operators included) and name no call World lacks.
 
 --self-test damages a copy of the guide in each way the checks must catch (a section left out
 of the contents, one named that does not exist, two swapped, a table row removed, a default
-changed, a line of the listing changed) and fails unless each is reported.
+changed, a line of the listing changed, a World call's row removed, a row naming a call World
+lacks) and fails unless each is reported.
 Exit status: 0 when every check passes, 1 when one fails, 2 for a bad command line.
 """
 from __future__ import annotations
@@ -167,11 +170,47 @@ def check_first_program(guide, example):
     return problems
 
 
-def check(guide, header, example):
-    return check_contents(guide) + check_world_table(guide, header) + check_first_program(guide, example)
+def world_calls(world_hpp):
+    """The names of class World's public member functions ("World" for its constructors; the
+    destructor is no call)."""
+    body = re.search(r"class TAMIAS2D_EXPORT World \{\n  public:\n(.*?)\n  private:", world_hpp, re.S)
+    if not body:
+        raise SystemExit("check_user_guide: no class World with a public part in the header")
+    names = []
+    for line in body.group(1).split("\\cond INTERNAL")[0].splitlines():
+        code = line.split("//")[0]
+        m = re.search(r"(operator=|~?\w+)\s*\(", code)
+        if (m and not m.group(1).startswith("~") and not code.lstrip().startswith(("struct", "#"))
+                and m.group(1) not in names):
+            names.append(m.group(1))
+    return names
 
 
-def self_test(guide, header, example):
+def check_api_table(guide, world_hpp):
+    """Every World call has a row in "API at a glance", and every row names World calls only."""
+    if "## API at a glance" not in guide:
+        return ["no section \"API at a glance\""]
+    named = set()
+    for line in section_text(guide, "API at a glance").splitlines():
+        cells = [c.strip() for c in line.strip().strip("|").split("|")]
+        if not line.startswith("|") or len(cells) < 4 or not cells[0].startswith("`"):
+            continue  # not a row, or a table's head
+        for code in re.findall(r"`([^`]+)`", cells[0]):
+            called = re.findall(r"(operator=|\w+)\s*\(", code)
+            named.update(called if called else re.findall(r"^\w+$", code))
+    calls = world_calls(world_hpp)
+    problems = [f"World::{c} has no row in \"API at a glance\"" for c in calls if c not in named]
+    problems += [f"\"API at a glance\" names {n}, which is no call of World" for n in sorted(named)
+                 if n not in calls]
+    return problems
+
+
+def check(guide, header, example, world_hpp):
+    return (check_contents(guide) + check_world_table(guide, header) +
+            check_first_program(guide, example) + check_api_table(guide, world_hpp))
+
+
+def self_test(guide, header, example, world_hpp):
     """Each damage must be reported; the undamaged guide must pass."""
     contents = re.search(r"^Contents:.*?\n\n", guide, re.S | re.M).group(0)
     heads = sections(guide)
@@ -191,14 +230,18 @@ def self_test(guide, header, example):
             re.sub(r"^(\| `substeps` \| )4 ", r"\g<1>8 ", guide, flags=re.M),
         "the first program's listing changed":
             guide.replace("world.step(1.0 / 60.0);\n        if (step % 20", "world.step(1.0 / 30.0);\n        if (step % 20", 1),
+        "a World call's row removed":
+            re.sub(r"^\| `query_point\(point\)` \|.*\n", "", guide, flags=re.M),
+        "a row naming a call World lacks":
+            guide.replace("| `time()` |", "| `clock()` |", 1),
     }
     failures = []
-    if check(guide, header, example):
+    if check(guide, header, example, world_hpp):
         failures.append("the guide as it is fails the checks")
     for what, damaged in damages.items():
         if damaged == guide:
             failures.append(f"{what}: the damage did not apply")
-        elif not check(damaged, header, example):
+        elif not check(damaged, header, example, world_hpp):
             failures.append(f"{what}: not reported")
         else:
             print(f"self-test: {what}: reported")
@@ -210,17 +253,18 @@ def main(argv):
     test = args[:1] == ["--self-test"]
     if test:
         args = args[1:]
-    if len(args) != 3:
+    if len(args) != 4:
         print(__doc__, file=sys.stderr)
         return 2
-    guide, header, example = (open(p, encoding="utf-8").read() for p in args)
-    problems = self_test(guide, header, example) if test else check(guide, header, example)
+    guide, header, example, world_hpp = (open(p, encoding="utf-8").read() for p in args)
+    problems = (self_test(guide, header, example, world_hpp) if test
+                else check(guide, header, example, world_hpp))
     for p in problems:
         print(f"check_user_guide: {p}")
     if problems:
         return 1
     print(f"check_user_guide: {'self-test passed' if test else 'OK'}: {len(sections(guide))} sections, "
-          f"{len(world_def_fields(header))} WorldDef fields")
+          f"{len(world_def_fields(header))} WorldDef fields, {len(world_calls(world_hpp))} World calls")
     return 0
 
 

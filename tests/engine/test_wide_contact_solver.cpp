@@ -10,6 +10,7 @@
 #include <set>
 #include <vector>
 
+#include "support/contact_manager_access.hpp"
 #include "support/random_contacts.hpp"
 #include "support/sequential_pass.hpp"
 #include "tamias2d/dynamics/constraint_graph.hpp"
@@ -284,8 +285,8 @@ BOOST_AUTO_TEST_CASE(a_lane_from_the_contact_is_the_lane_from_its_constraint) {
             p.anchor_b = {u(rng), u(rng)};
             p.separation = 0.01 * u(rng);
         }
-        contacts.contacts.push_back(c);
-        contacts.warm_impulses.push_back({{u(rng), u(rng)}, {u(rng), u(rng)}});
+        const double n0 = u(rng), n1 = u(rng), t0 = u(rng), t1 = u(rng); // (in draw order)
+        ContactManagerAccess::add(contacts, c, {{n0, n1}, {t0, t1}});
     }
     WideManifoldInput staged, direct;
     for (std::uint32_t k = 0; k < 12; ++k) {
@@ -295,7 +296,8 @@ BOOST_AUTO_TEST_CASE(a_lane_from_the_contact_is_the_lane_from_its_constraint) {
         ContactConstraint cc;
         contacts.unprepared_constraint(cc, edge, k);
         set_input_lane(staged, l, cc, slot);
-        set_input_lane(direct, l, edge, k, contacts.contacts[k], contacts.warm_impulses[k], slot);
+        set_input_lane(direct, l, edge, k, contacts.contacts()[k], contacts.warm_impulses()[k],
+                       slot);
         BOOST_TEST(direct.body_a[l] == staged.body_a[l]);
         BOOST_TEST(direct.body_b[l] == staged.body_b[l]);
         BOOST_TEST(direct.contact[l] == staged.contact[l]);

@@ -49,9 +49,10 @@ BOOST_AUTO_TEST_CASE(stale_handles_are_errors, *utf::label("R1")) {
     BOOST_CHECK_THROW(world.position(a), InvalidHandle);
     BOOST_CHECK_THROW(world.destroy_body(a), InvalidHandle);
     BOOST_CHECK_THROW(world.create_shape(a, circle_shape(1.0)), InvalidHandle);
-    BOOST_CHECK_THROW(world.position(BodyId{42, 1}), InvalidHandle);
-    BOOST_CHECK_THROW(world.position(BodyId{a.index + 1, 1}), InvalidHandle); // one past the end
-    BOOST_TEST(!world.is_valid(BodyId{a.index + 1, 1}));
+    BOOST_CHECK_THROW(world.position(BodyId{42, 1, world.tag()}), InvalidHandle);
+    BOOST_CHECK_THROW(world.position(BodyId{a.index + 1, 1, world.tag()}),
+                      InvalidHandle); // one past the end
+    BOOST_TEST(!world.is_valid(BodyId{a.index + 1, 1, world.tag()}));
     const BodyId b = world.create_body({});
     BOOST_TEST(b.index == a.index);
     BOOST_TEST(b.generation != a.generation);
@@ -357,8 +358,8 @@ BOOST_AUTO_TEST_CASE(stale_shape_handles_are_errors, *utf::label("R1")) {
     BOOST_TEST(world.is_valid(t)); // ...under a new generation
     BOOST_TEST(!world.is_valid(s));
     BOOST_CHECK_THROW(world.destroy_shape(s), InvalidHandle);
-    BOOST_TEST(!world.is_valid(ShapeId{42, 1}));
-    BOOST_TEST(!world.is_valid(ShapeId{t.index + 1, 1})); // one past the last slot
+    BOOST_TEST(!world.is_valid(ShapeId{42, 1, world.tag()}));
+    BOOST_TEST(!world.is_valid(ShapeId{t.index + 1, 1, world.tag()})); // one past the last slot
 }
 
 // Oracle: the events' stated meaning (world.hpp): the begin events of a step are exactly the

@@ -28,7 +28,7 @@
 
 #include "fuzz/fuzz_support.hpp"
 #include "fuzz/soak_busy.hpp"
-#include "reliability/reliability_support.hpp"
+#include "support/reliability_support.hpp"
 #include "tamias2d/io/scene.hpp"
 #include "tamias2d/memory.hpp"
 #include "tamias2d/world.hpp"

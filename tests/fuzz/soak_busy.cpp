@@ -25,7 +25,7 @@
 #include <vector>
 
 #include "fuzz/fuzz_support.hpp"
-#include "reliability/reliability_support.hpp"
+#include "support/reliability_support.hpp"
 #include "tamias2d/memory.hpp"
 #include "tamias2d/world.hpp"
 

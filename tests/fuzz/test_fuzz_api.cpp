@@ -16,6 +16,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <functional>
@@ -51,6 +52,13 @@ struct Driver {
     Rng kinds;
     /// Hand-made geometry (hand_made), from a third stream for the same reason.
     Rng hand;
+    /// The queries' block (query_block), from a fourth stream.
+    Rng queries;
+    /// The event calls (events_call), from a fourth stream: drawn before the main stream's
+    /// choice, they leave its draws as they were.
+    Rng events_stream;
+    /// debug_draw, profile and explosion calls (draw_profile_explode), from a stream of their own.
+    Rng area46;
     /// What the oracle of an accepted hand-made polygon found wrong (empty: nothing).
     std::string shape_problem;
     World world;
@@ -60,7 +68,9 @@ struct Driver {
     long accepted = 0, rejected = 0;
     explicit Driver(std::uint64_t seed)
         : r(seed), kinds(seed ^ 0x9e3779b97f4a7c15u), hand(seed ^ 0xc2b2ae3d27d4eb4fu),
-          world(make_def(r)) {}
+          queries(seed ^ 0x165667b19e3779f9u), events_stream(seed ^ 0x27d4eb2f165667c5u),
+          area46(seed ^ 0x94d049bb133111ebu), world(make_def(r)),
+          control(seed ^ 0x5851f42d4c957f2du) {}
 
     static WorldDef make_def(Rng& r) {
         WorldDef d;
@@ -75,17 +85,17 @@ struct Driver {
     BodyId body() {
         if (bodies.empty() || r.chance(5))
             return BodyId{static_cast<std::uint32_t>(r.below(8)),
-                          static_cast<std::uint32_t>(r.below(3))}; // forged
+                          static_cast<std::uint32_t>(r.below(3)), world.tag()}; // forged
         return bodies[r.below(bodies.size())];
     }
     ShapeId shape() {
         if (shapes.empty() || r.chance(5))
-            return ShapeId{static_cast<std::uint32_t>(r.below(8)), 0};
+            return ShapeId{static_cast<std::uint32_t>(r.below(8)), 0, world.tag()};
         return shapes[r.below(shapes.size())];
     }
     JointId joint() {
         if (joints.empty() || r.chance(5))
-            return JointId{static_cast<std::uint32_t>(r.below(4)), 0};
+            return JointId{static_cast<std::uint32_t>(r.below(4)), 0, world.tag()};
         return joints[r.below(joints.size())];
     }
 
@@ -355,10 +365,425 @@ struct Driver {
         return "body#" + std::to_string(b.index) + "." + std::to_string(b.generation);
     }
 
+    // --- queries ---
+    // Before every call, now and then, a query of World's "queries" section with arguments of
+    // its own stream (extreme values, stale handles, invalid shapes among them). A query
+    // changes nothing, so the main stream's calls (and the seeds docs/verification.md replays)
+    // are the same with it: its promises are checked here. A refusal is a named error that
+    // leaves state_hash() unchanged; an answer is finite, its fractions in [0, 1].
+    Vec2d query_vec() {
+        return queries.chance(80) ? Vec2d{queries.between(-30, 30), queries.between(-10, 30)}
+                                  : Vec2d{any_double(queries), any_double(queries)};
+    }
+    QueryFilter query_filter() {
+        QueryFilter f;
+        if (queries.chance(30)) {
+            f.category_bits = std::uint32_t(queries.bits());
+            f.mask_bits = std::uint32_t(queries.bits());
+        }
+        if (queries.chance(20) && !bodies.empty())
+            f.exclude_body = queries.chance(90) ? bodies[queries.below(bodies.size())]
+                                                : BodyId{std::uint32_t(queries.below(8)), 7};
+        return f;
+    }
+    Geometry query_geometry() {
+        Geometry g;
+        switch (queries.below(4)) {
+        case 0:
+            g = circle_shape(positive_size(queries)).geometry;
+            break;
+        case 1:
+            g = box_shape(positive_size(queries), positive_size(queries)).geometry;
+            break;
+        case 2:
+            g.type = ShapeType::capsule;
+            g.capsule = {query_vec(), query_vec(), positive_size(queries)};
+            break;
+        default:
+            g.type = ShapeType::segment;
+            g.segment = {query_vec(), query_vec()};
+            break;
+        }
+        return g;
+    }
+    static bool good(const RayCastHit& h) {
+        return h.fraction >= 0.0 && h.fraction <= 1.0 && finite(h.point) && finite(h.normal);
+    }
+    static bool good(const ShapeCastHit& h) {
+        return h.fraction >= 0.0 && h.fraction <= 1.0 && finite(h.point) && finite(h.normal);
+    }
+    static bool good(const ClosestPoints& c) {
+        return std::isfinite(c.distance) && c.distance >= 0.0 && finite(c.point_a) &&
+               finite(c.point_b) && finite(c.normal);
+    }
+    /// One query; returns what is wrong with its answer (empty: nothing); throws its refusal.
+    std::string query() {
+        const Vec2d o = query_vec(), d = query_vec();
+        const QueryFilter f = query_filter();
+        switch (queries.below(9)) {
+        case 0:
+            if (const auto h = world.ray_cast(o, d, f); h && !good(*h))
+                return "ray_cast (filtered): a hit out of range";
+            return {};
+        case 1:
+            for (const RayCastHit& h : world.ray_cast_all(o, d, f))
+                if (!good(h))
+                    return "ray_cast_all: a hit out of range";
+            return {};
+        case 2: {
+            std::array<RayCastHit, 2> buf{};
+            const std::size_t n = world.ray_cast_all(o, d, f, buf);
+            for (std::size_t i = 0; i < std::min(n, buf.size()); ++i)
+                if (!good(buf[i]))
+                    return "ray_cast_all (span): a hit out of range";
+            if (const auto h = world.ray_cast_any(o, d, f); h && !good(*h))
+                return "ray_cast_any: a hit out of range";
+            return {};
+        }
+        case 3: {
+            bool bad = false;
+            world.ray_cast(o, d, f, [&](const RayCastHit& h) {
+                bad = bad || !good(h);
+                return queries.chance(50) ? h.fraction : 1.0;
+            });
+            return bad ? "ray_cast (callback): a hit out of range" : "";
+        }
+        case 4:
+            if (shapes.empty())
+                return {};
+            if (const auto h = world.ray_cast(shapes[queries.below(shapes.size())], o, d);
+                h && !good(*h))
+                return "ray_cast (shape): a hit out of range";
+            return {};
+        case 5:
+            if (const auto h = world.shape_cast(
+                    query_geometry(), o,
+                    queries.chance(80) ? queries.between(-4, 4) : any_double(queries), d, f);
+                h && !good(*h))
+                return "shape_cast: a hit out of range";
+            return {};
+        case 6:
+            (void)world.overlap_shape(query_geometry(), o, queries.between(-4, 4), f);
+            (void)world.query_aabb(Aabb{o.x, o.y, o.x + d.x, o.y + d.y}, f);
+            (void)world.query_point(o, f);
+            return {};
+        default: {
+            if (shapes.empty())
+                return {};
+            const ShapeId a = shapes[queries.below(shapes.size())];
+            const ShapeId b = shapes[queries.below(shapes.size())];
+            if (!good(world.distance(a, b)))
+                return "distance: not finite";
+            if (!good(world.closest_point(a, o)))
+                return "closest_point: not finite";
+            return {};
+        }
+        }
+    }
+    void query_block() {
+        if (!queries.chance(25))
+            return;
+        const std::uint64_t before = world.state_hash();
+        std::string problem;
+        try {
+            problem = query();
+        } catch (const ValidationError& e) {
+            if (e.field.empty())
+                problem = std::string("a query's ValidationError without a field: ") + e.what();
+        } catch (const InvalidHandle& e) {
+            if (std::string(e.what()).empty())
+                problem = "a query's InvalidHandle with an empty message";
+        } catch (const std::exception& e) {
+            problem = std::string("a query threw an exception of another kind: ") + e.what();
+        }
+        if (problem.empty() && world.state_hash() != before)
+            problem = "a query changed the world";
+        if (!problem.empty())
+            BOOST_ERROR("queries (before " << last.str() << "): " << problem);
+    }
+
+    // --- events ---
+    /// One in ten calls: an event switch or threshold (any value, stale and forged handles
+    /// among them), or a reading of every event list, whose numbers must be finite (a problem
+    /// goes to shape_problem, which the check after an accepted call reports). All drawn from
+    /// events_stream. Returns whether it made a call; throws what the library throws.
+    bool events_call() {
+        Rng& e = events_stream;
+        if (!e.chance(10))
+            return false;
+        auto pick_body = [&] {
+            return bodies.empty() || e.chance(5)
+                       ? BodyId{std::uint32_t(e.below(8)), std::uint32_t(e.below(3))}
+                       : bodies[e.below(bodies.size())];
+        };
+        auto pick_shape = [&] {
+            return shapes.empty() || e.chance(5) ? ShapeId{std::uint32_t(e.below(8)), 0}
+                                                 : shapes[e.below(shapes.size())];
+        };
+        auto pick_joint = [&] {
+            return joints.empty() || e.chance(5) ? JointId{std::uint32_t(e.below(4)), 0}
+                                                 : joints[e.below(joints.size())];
+        };
+        auto threshold = [&] { return e.chance(60) ? e.between(0.0, 50.0) : any_double(e); };
+        const bool on = e.chance(50);
+        switch (e.below(7)) {
+        case 0: {
+            const double v = threshold();
+            last << "set_hit_event_threshold(" << v << ")";
+            world.set_hit_event_threshold(v);
+            break;
+        }
+        case 1: {
+            const ShapeId s = pick_shape();
+            last << "set_hit_events_enabled(shape#" << s.index << ", " << on << ")";
+            world.set_hit_events_enabled(s, on);
+            break;
+        }
+        case 2: {
+            const ShapeId s = pick_shape();
+            last << "set_contact_events_enabled(shape#" << s.index << ", " << on << ")";
+            world.set_contact_events_enabled(s, on);
+            break;
+        }
+        case 3: {
+            const ShapeId s = pick_shape();
+            last << "set_sensor_events_enabled(shape#" << s.index << ", " << on << ")";
+            world.set_sensor_events_enabled(s, on);
+            break;
+        }
+        case 4: {
+            const BodyId b = pick_body();
+            last << "set_move_events_enabled(" << str(b) << ", " << on << ")";
+            world.set_move_events_enabled(b, on);
+            break;
+        }
+        case 5: {
+            const JointId j = pick_joint();
+            const double force = threshold(), torque = threshold();
+            last << "set_joint_event_thresholds(joint#" << j.index << ", " << force << ", "
+                 << torque << ")";
+            world.set_joint_event_thresholds(j, force, torque);
+            break;
+        }
+        default: { // readings: const, they may refuse (sensor_overlaps), never change the world
+            last << "event lists, sensor_overlaps";
+            (void)world.sensor_overlaps(pick_shape());
+            for (const ContactHitEvent& h : world.contact_hit_events())
+                if (!(std::isfinite(h.approach_speed) && h.approach_speed > 0.0 &&
+                      finite(h.point) && finite(h.normal)))
+                    shape_problem = "a hit event with a non-finite or non-positive number";
+            for (const BodyMoveEvent& m : world.body_move_events())
+                if (!(finite(m.origin) && std::isfinite(m.angle)))
+                    shape_problem = "a move event with a non-finite pose";
+            for (const JointEvent& j : world.joint_events())
+                if (!(finite(j.force) && std::isfinite(j.torque)))
+                    shape_problem = "a joint event with a non-finite force or torque";
+            break;
+        }
+        }
+        return true;
+    }
+
+    // --- debug_draw, profile, explosion ---
+    /// A draw (const: may refuse, never changes the world), the profiling switch with the
+    /// profile and the counters read, or an explosion, all drawn from `area46` so that the main
+    /// stream's calls stay those its seeds were found with.
+    void draw_profile_explode() {
+        Rng& a = area46;
+        switch (a.below(4)) {
+        case 0: {
+            struct Null : DebugDraw {};
+            Null d;
+            d.draw_contacts = a.chance(50);
+            d.draw_contact_normals = a.chance(50);
+            d.draw_aabbs = a.chance(50);
+            d.draw_mass_centers = a.chance(50);
+            d.contact_normal_length = a.chance(80) ? 0.25 : any_double(a);
+            d.axis_length = a.chance(80) ? 0.2 : any_double(a);
+            if (a.chance(50))
+                d.bounds = a.chance(70)
+                               ? Aabb{-10.0, -10.0, 10.0, 10.0}
+                               : Aabb{any_double(a), any_double(a), any_double(a), any_double(a)};
+            last << "draw(normal length " << d.contact_normal_length << ", axis length "
+                 << d.axis_length << ")";
+            world.draw(d);
+            break;
+        }
+        case 1: {
+            const bool on = a.chance(50);
+            last << "set_profiling(" << on << "), profile, counters";
+            world.set_profiling(on);
+            (void)world.profile();
+            (void)world.counters();
+            break;
+        }
+        default: {
+            ExplosionDef e;
+            e.position = a.chance(70) ? Vec2d{a.between(-20, 20), a.between(-5, 20)}
+                                      : Vec2d{any_double(a), any_double(a)};
+            e.radius = a.chance(70) ? a.between(0, 10) : any_double(a);
+            e.falloff = a.chance(50) ? 0.0 : (a.chance(70) ? a.between(0, 5) : any_double(a));
+            e.impulse_per_length = a.chance(70) ? a.between(-50, 50) : any_double(a);
+            e.impulse_per_body =
+                a.chance(50) ? 0.0 : (a.chance(70) ? a.between(-50, 50) : any_double(a));
+            e.mask_bits = a.chance(70) ? 0xFFFFFFFFu : std::uint32_t(a.below(1u << 16));
+            last << "explode(" << str(e.position) << ", radius " << e.radius << ", falloff "
+                 << e.falloff << ", per length " << e.impulse_per_length << ", per body "
+                 << e.impulse_per_body << ", mask " << e.mask_bits << ")";
+            (void)world.explode(e);
+            break;
+        }
+        }
+    }
+
+    // --- shape_control, joint_control ---
+    /// The run-time changes of shapes and joints, drawn from a stream of their own (so that the
+    /// main stream's calls stay those the seeds of docs/verification.md replay) one call in
+    /// five, none with TAMIAS_FUZZ_SHAPES=classic. Values: in range mostly, any double else.
+    Rng control;
+    double control_value(double lo, double hi) {
+        return control.chance(80) ? control.between(lo, hi) : any_double(control);
+    }
+    JointId control_joint() {
+        if (joints.empty() || control.chance(5))
+            return JointId{static_cast<std::uint32_t>(control.below(4)), 0};
+        return joints[control.below(joints.size())];
+    }
+    ShapeId control_shape() {
+        if (shapes.empty() || control.chance(5))
+            return ShapeId{static_cast<std::uint32_t>(control.below(8)), 0};
+        return shapes[control.below(shapes.size())];
+    }
+    Vec2d control_point() { return {control_value(-1.0, 1.0), control_value(-1.0, 1.0)}; }
+    /// One run-time change; true if one was made (throws what the library throws).
+    bool control_call() {
+        if (classic_only() || !control.chance(20))
+            return false;
+        const ShapeId s = control_shape();
+        const JointId j = control_joint();
+        const bool on = control.chance(50);
+        const double a = control_value(-2.0, 2.0), b = control_value(-2.0, 4.0);
+        last << "control " << s.index << "." << s.generation << " joint " << j.index << "."
+             << j.generation << " (" << on << ", " << a << ", " << b << "): ";
+        switch (control.below(26)) {
+        case 0:
+            last << "set_friction";
+            return world.set_friction(s, std::abs(a)), true;
+        case 1:
+            last << "set_restitution";
+            return world.set_restitution(s, std::abs(a) / 2.0), true;
+        case 2:
+            last << "set_density";
+            return world.set_density(s, b, on), true;
+        case 3:
+            last << "set_circle";
+            return world.set_circle(s, Circle{control_point(), b}), true;
+        case 4:
+            last << "set_capsule";
+            return world.set_capsule(s, Capsule{control_point(), control_point(), b}), true;
+        case 5: {
+            last << "set_polygon";
+            std::vector<Vec2d> pts;
+            for (std::size_t k = 0, n = 3 + control.below(4); k < n; ++k)
+                pts.push_back(control_point());
+            ShapeDef def;
+            try {
+                def = polygon_shape(pts);
+            } catch (const ValidationError&) {
+                def = box_shape(std::abs(a) + 0.1, std::abs(b) + 0.1);
+            }
+            return world.set_polygon(s, def.geometry.polygon), true;
+        }
+        case 6:
+            last << "set_segment";
+            return world.set_segment(s, Segment{control_point(), control_point()}), true;
+        case 7:
+            last << "set_sensor";
+            return world.set_sensor(s, on), true;
+        case 8:
+            last << "enable_joint_limit";
+            return world.enable_joint_limit(j, on), true;
+        case 9:
+            last << "set_joint_limits";
+            return world.set_joint_limits(j, a, b), true;
+        case 10:
+            last << "enable_joint_motor";
+            return world.enable_joint_motor(j, on), true;
+        case 11:
+            last << "set_joint_motor_speed";
+            return world.set_joint_motor_speed(j, a), true;
+        case 12:
+            last << "set_joint_max_motor_torque";
+            return world.set_joint_max_motor_torque(j, b), true;
+        case 13:
+            last << "set_joint_max_motor_force";
+            return world.set_joint_max_motor_force(j, b), true;
+        case 14:
+            last << "enable_joint_spring";
+            return world.enable_joint_spring(j, on), true;
+        case 15:
+            last << "set_joint_spring";
+            return world.set_joint_spring(j, b, std::abs(a)), true;
+        case 16:
+            last << "set_joint_spring_target";
+            return world.set_joint_spring_target(j, a), true;
+        case 17:
+            last << "set_distance_joint_length";
+            return world.set_distance_joint_length(j, b), true;
+        case 18:
+            last << "set_constraint_tuning";
+            return world.set_constraint_tuning(j, b * 20.0, std::abs(a)), true;
+        case 19:
+            last << "set_joint_collide_connected";
+            return world.set_joint_collide_connected(j, on), true;
+        case 20:
+            last << "set_joint_break_force";
+            return world.set_joint_break_force(j, b * 50.0), true;
+        case 21:
+            last << "set_joint_break_torque";
+            return world.set_joint_break_torque(j, b * 50.0), true;
+        case 22: { // getters are const: they may refuse, never change the world
+            last << "joint getters";
+            (void)world.joint_kind(j);
+            (void)world.joint_body_a(j);
+            (void)world.constraint_tuning(j);
+            (void)world.joint_limits(j);
+            return true;
+        }
+        case 23:
+            last << "shape getters";
+            (void)world.shape_geometry(s);
+            (void)world.friction(s);
+            return (void)world.is_sensor(s), true;
+        default: {
+            DistanceJointDef d; // a distance joint with a motor, for the calls above
+            d.body_a = body();
+            d.body_b = body();
+            d.anchor_a = control_point();
+            d.anchor_b = control_point() + Vec2d{1.0, 0.0};
+            d.enable_motor = on;
+            d.motor_speed = a;
+            d.max_motor_force = b;
+            last << "create_joint(distance with a motor)";
+            joints.push_back(world.create_joint(d));
+            return true;
+        }
+        }
+    }
+
     /// One random call; throws what the library throws.
     void call() {
+        query_block();
         last.str("");
         last.precision(17);
+        if (events_call())
+            return;
+        if (area46.chance(10)) {
+            draw_profile_explode();
+            return;
+        }
+        if (control_call())
+            return;
         switch (r.below(24)) {
         case 0:
         case 1: {

@@ -18,7 +18,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "reliability/reliability_support.hpp"
+#include "support/reliability_support.hpp"
 #include "tamias2d/world.hpp"
 
 namespace utf = boost::unit_test;

@@ -4,8 +4,13 @@
 // Oracle: the rules as the guide states them.
 #include <boost/test/unit_test.hpp>
 
+#include <string>
+#include <unordered_map>
+#include <unordered_set>
 #include <utility>
+#include <vector>
 
+#include "tamias2d/errors.hpp"
 #include "tamias2d/world.hpp"
 
 namespace utf = boost::unit_test;
@@ -69,18 +74,96 @@ BOOST_AUTO_TEST_CASE(handles_follow_a_moved_world_and_the_moved_from_world_can_b
     BOOST_CHECK_THROW(w.position(b), InvalidHandle);
 }
 
-BOOST_AUTO_TEST_CASE(a_foreign_handle_is_not_detected_it_names_the_same_slot,
+BOOST_AUTO_TEST_CASE(a_foreign_handle_is_refused_as_one_of_another_world,
                      *utf::label("reliability")) {
-    // Handles carry no world: the first body of every world is the same handle.
+    // The first body of every world has the same index and generation; the tag tells them apart.
     World w1, w2;
     const BodyId in_w1 = add_ball(w1, {1.0, 0.0});
     const BodyId in_w2 = add_ball(w2, {7.0, 0.0});
-    BOOST_TEST((in_w1 == in_w2));
-    BOOST_TEST(w2.position(in_w1).x == 7.0); // w2's body, not w1's
-    // With no body in that slot and generation, the foreign handle is rejected.
-    const BodyId second_in_w1 = add_ball(w1, {3.0, 0.0});
-    BOOST_TEST(!w2.is_valid(second_in_w1));
-    BOOST_CHECK_THROW(w2.position(second_in_w1), InvalidHandle);
+    BOOST_TEST(w1.tag() != w2.tag());
+    BOOST_TEST(w1.tag() != 0u);
+    BOOST_TEST((in_w1.index == in_w2.index && in_w1.generation == in_w2.generation));
+    BOOST_TEST(!(in_w1 == in_w2));
+    BOOST_TEST(!w2.is_valid(in_w1));
+    const std::uint64_t before = w2.state_hash();
+    try {
+        w2.set_velocity(in_w1, {1.0, 0.0});
+        BOOST_FAIL("a handle of another world was taken");
+    } catch (const WrongWorld& e) {
+        BOOST_TEST(e.handle == "BodyId 0:1");
+        BOOST_TEST(e.handle_world == w1.tag());
+        BOOST_TEST(e.world == w2.tag());
+        const std::string what = e.what();
+        BOOST_TEST(what.find("BodyId 0:1") != std::string::npos);
+        BOOST_TEST(what.find(std::to_string(w1.tag())) != std::string::npos);
+        BOOST_TEST(what.find(std::to_string(w2.tag())) != std::string::npos);
+    }
+    BOOST_TEST(w2.state_hash() == before); // refused before anything changed
+    BOOST_TEST(w2.velocity(in_w2).x == 0.0);
+    const ShapeId shape_w1 = w1.shapes(in_w1).front();
+    BOOST_CHECK_THROW(w2.destroy_shape(shape_w1), WrongWorld);
+    BOOST_TEST(w2.shapes(in_w2).size() == 1u);
+}
+
+BOOST_AUTO_TEST_CASE(a_default_handle_names_nothing_in_any_world, *utf::label("reliability")) {
+    World w;
+    add_ball(w, {0.0, 0.0});
+    BOOST_TEST(!w.is_valid(BodyId{}));
+    BOOST_TEST(!w.is_valid(ShapeId{}));
+    BOOST_TEST(!w.is_valid(JointId{}));
+    // A handle of no world (tag 0) is an unknown handle, not another world's.
+    const BodyId untagged{0, 1, 0};
+    BOOST_TEST(!w.is_valid(untagged));
+    try {
+        (void)w.position(untagged);
+        BOOST_FAIL("an untagged handle was taken");
+    } catch (const WrongWorld&) {
+        BOOST_FAIL("an untagged handle was called another world's");
+    } catch (const InvalidHandle&) {
+    }
+}
+
+BOOST_AUTO_TEST_CASE(a_moved_world_keeps_its_tag_and_equal_worlds_hash_equal,
+                     *utf::label("reliability")) {
+    // Oracle: the state hash covers the simulation, not the world's identity (World::tag).
+    World a, b;
+    const BodyId in_a = add_ball(a, {1.0, 2.0});
+    add_ball(b, {1.0, 2.0});
+    BOOST_TEST(a.tag() != b.tag());
+    BOOST_TEST(a.state_hash() == b.state_hash());
+    const std::uint32_t tag = a.tag();
+    World moved = std::move(a);
+    BOOST_TEST(moved.tag() == tag);
+    BOOST_TEST(in_a.world == tag);
+    BOOST_TEST(moved.is_valid(in_a));
+}
+
+BOOST_AUTO_TEST_CASE(handles_key_unordered_maps, *utf::label("reliability")) {
+    // Oracle: std::unordered_map's contract (equal keys find one entry), checked against a
+    // plain search of the handles.
+    World w1, w2;
+    std::vector<BodyId> ids;
+    for (int k = 0; k < 40; ++k)
+        ids.push_back(add_ball(k % 2 == 0 ? w1 : w2, {double(k), 0.0}));
+    w1.destroy_body(ids[0]);
+    ids.push_back(add_ball(w1, {-1.0, 0.0})); // same slot as ids[0], a new generation
+    std::unordered_map<BodyId, int> of_body;
+    for (std::size_t k = 0; k < ids.size(); ++k)
+        of_body[ids[k]] = int(k);
+    BOOST_TEST(of_body.size() == ids.size()); // no two handles collide as keys
+    for (std::size_t k = 0; k < ids.size(); ++k)
+        BOOST_TEST(of_body.at(ids[k]) == int(k));
+    BOOST_TEST((std::hash<BodyId>{}(ids[1]) == std::hash<BodyId>{}(BodyId(ids[1]))));
+    std::unordered_set<ShapeId> shapes;
+    for (const BodyId b : {ids[1], ids[2]})
+        shapes.insert((b.world == w1.tag() ? w1 : w2).shapes(b).front());
+    BOOST_TEST(shapes.size() == 2u);
+    World w3;
+    const BodyId j_a = add_ball(w3, {0.0, 0.0}), j_b = add_ball(w3, {1.0, 0.0});
+    std::unordered_map<JointId, BodyId> joints;
+    joints[w3.create_joint(RevoluteJointDef{.body_a = j_a, .body_b = j_b, .anchor = {0.5, 0.0}})] =
+        j_a;
+    BOOST_TEST(joints.size() == 1u);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -14,8 +14,8 @@
 #include <thread>
 #include <vector>
 
-#include "reliability/reliability_support.hpp"
 #include "support/pyramid.hpp"
+#include "support/reliability_support.hpp"
 #include "tamias2d/errors.hpp"
 #include "tamias2d/world.hpp"
 

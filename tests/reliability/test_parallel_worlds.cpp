@@ -14,7 +14,7 @@
 #include <thread>
 #include <vector>
 
-#include "reliability/reliability_support.hpp"
+#include "support/reliability_support.hpp"
 #include "tamias2d/memory.hpp"
 #include "tamias2d/world.hpp"
 

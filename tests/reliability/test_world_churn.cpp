@@ -15,7 +15,7 @@
 #include <cstddef>
 #include <cstdio>
 
-#include "reliability/reliability_support.hpp"
+#include "support/reliability_support.hpp"
 #include "tamias2d/memory.hpp"
 #include "tamias2d/world.hpp"
 

@@ -18,7 +18,7 @@
 // Tolerance. Up to the horizon the error model is the bound: at each step the largest errors
 // of the centres (over L) and of the angles stay below eps at the horizon; and halving the step
 // shrinks the centres', the angles' and the energy's largest errors at least as first order
-// does (ratio >= 1.8, as in test_joints.cpp). The steps are 1/120, 1/240 and 1/480 s (4
+// does (ratio >= 1.8, as in the joint tests). The steps are 1/120, 1/240 and 1/480 s (4
 // substeps): from 1/60 s, the default, to 1/120 s the chain's angle error does not yet halve
 // (the step is not yet small enough for first order to dominate).
 #include <boost/test/unit_test.hpp>

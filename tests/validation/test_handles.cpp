@@ -51,9 +51,10 @@ void expect_invalid_handle(World& w, const std::function<void()>& call) {
 
 BOOST_AUTO_TEST_SUITE(handles)
 
-// Oracle: the handle contract in handles.hpp (index + generation) and World's documentation:
-// a destroyed body's handle, one with a wrong generation, one never issued and the null
-// handle are all rejected by every call that takes a BodyId, and is_valid says false.
+// Oracle: the handle contract in handles.hpp (index, generation, world tag) and World's
+// documentation: a destroyed body's handle, one with a wrong generation, one never issued, one
+// of another world (naming a live slot of this one) and the null handle are all rejected by
+// every call that takes a BodyId, and is_valid says false.
 BOOST_AUTO_TEST_CASE(stale_and_unknown_body_handles_are_rejected, *utf::label("R4")) {
     MovingWorld m;
     BodyDef d;
@@ -64,10 +65,13 @@ BOOST_AUTO_TEST_CASE(stale_and_unknown_body_handles_are_rejected, *utf::label("R
     const BodyId reused = m.world.create_body(BodyDef{}); // may recycle dead's slot
     m.world.step(1.0 / 60.0);
 
+    const World other;
+    const std::uint32_t tag = m.world.tag();
     const std::vector<std::pair<std::string, BodyId>> bad = {
         {"destroyed", dead},
-        {"wrong generation", BodyId{m.box.index, m.box.generation + 1}},
-        {"never issued", BodyId{12345, 1}},
+        {"wrong generation", BodyId{m.box.index, m.box.generation + 1, tag}},
+        {"never issued", BodyId{12345, 1, tag}},
+        {"another world's", BodyId{m.box.index, m.box.generation, other.tag()}},
         {"null", BodyId{}},
     };
     for (const auto& [what, id] : bad) {
@@ -86,8 +90,8 @@ BOOST_AUTO_TEST_CASE(stale_and_unknown_body_handles_are_rejected, *utf::label("R
     BOOST_CHECK_NO_THROW(m.world.state(reused));
 }
 
-// Oracle: as above, for ShapeId: destroying a shape twice, a wrong generation and a never
-// issued handle are rejected by destroy_shape, and is_valid says false.
+// Oracle: as above, for ShapeId: destroying a shape twice, a wrong generation, a never issued
+// handle and one of another world are rejected by destroy_shape, and is_valid says false.
 BOOST_AUTO_TEST_CASE(stale_and_unknown_shape_handles_are_rejected, *utf::label("R4")) {
     MovingWorld m;
     const ShapeId extra = m.world.create_shape(m.box, circle_shape(0.25));
@@ -95,8 +99,9 @@ BOOST_AUTO_TEST_CASE(stale_and_unknown_shape_handles_are_rejected, *utf::label("
     const ShapeId live = m.world.shapes(m.box).front();
     const std::vector<std::pair<std::string, ShapeId>> bad = {
         {"destroyed", extra},
-        {"wrong generation", ShapeId{live.index, live.generation + 1}},
-        {"never issued", ShapeId{9999, 1}},
+        {"wrong generation", ShapeId{live.index, live.generation + 1, live.world}},
+        {"never issued", ShapeId{9999, 1, live.world}},
+        {"another world's", ShapeId{live.index, live.generation, live.world + 1}},
         {"null", ShapeId{}},
     };
     for (const auto& [what, id] : bad) {

@@ -108,9 +108,9 @@ BOOST_AUTO_TEST_CASE(one_step_loads_on_a_body_no_load_moves_are_refused,
 
 // Oracle: World's contract (world.hpp, "joints"): joint_angle applies to the revolute,
 // prismatic, weld and wheel joints, joint_translation to the prismatic and wheel joints,
-// set_joint_motor_speed to the revolute, prismatic and wheel joints, set_joint_target to the
-// target joint and set_motor_joint_offsets to the motor joint; asked of another kind, each names
-// the joint and its kind and leaves the world unchanged.
+// set_joint_motor_speed to the revolute, prismatic, wheel and distance joints, set_joint_target
+// to the target joint and set_motor_joint_offsets to the motor joint; asked of another kind,
+// each names the joint and its kind and leaves the world unchanged.
 BOOST_AUTO_TEST_CASE(a_joint_call_on_a_joint_of_another_kind_is_refused,
                      *utf::label("reliability")) {
     MovingWorld m;
@@ -131,8 +131,8 @@ BOOST_AUTO_TEST_CASE(a_joint_call_on_a_joint_of_another_kind_is_refused,
         "kinds with an axis)");
     expect_wrong_kind(
         m.world, [&] { m.world.set_joint_motor_speed(drag, 1.0); }, "joint[2]",
-        "set_joint_motor_speed: joint[2] is a target joint: must be a revolute, prismatic or wheel "
-        "joint (the kinds with a motor)");
+        "set_joint_motor_speed: joint[2] is a target joint: must be a revolute, prismatic, wheel "
+        "or distance joint (the kinds with a motor)");
     expect_wrong_kind(
         m.world,
         [&] {

@@ -87,6 +87,30 @@ class TamiasEngine final : public Engine {
         return {{p.x, p.y}, {v.x, v.y}, world_.angular_velocity(id), world_.orientation(id)};
     }
     std::uint64_t state_hash() const override { return world_.state_hash(); }
+    QueryTimes timed_queries(const QueryLoad& load) override {
+        QueryTimes t;
+        const tamias2d::QueryFilter all{};
+        const double r0 = cpu_ms();
+        for (const Cast& c : load.rays)
+            t.ray_hits +=
+                world_.ray_cast({c.origin.x, c.origin.y}, {c.translation.x, c.translation.y}, all)
+                    .has_value();
+        const double r1 = cpu_ms();
+        const tamias2d::Geometry disc = tamias2d::circle_shape(cast_radius).geometry;
+        const tamias2d::Geometry square =
+            tamias2d::box_shape(2.0 * cast_half_side, 2.0 * cast_half_side).geometry;
+        for (std::size_t i = 0; i < load.casts.size(); ++i) {
+            const Cast& c = load.casts[i];
+            t.cast_hits += world_
+                               .shape_cast(i % 2 == 0 ? disc : square, {c.origin.x, c.origin.y},
+                                           0.0, {c.translation.x, c.translation.y}, all)
+                               .has_value();
+        }
+        const double r2 = cpu_ms();
+        t.ray_ms = r1 - r0;
+        t.cast_ms = r2 - r1;
+        return t;
+    }
 
   private:
     static tamias2d::WorldDef world_def(const SceneDesc& s, int workers, double manifold_reuse,

@@ -16,10 +16,12 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 
 #include "bench_scenes.hpp"
+#include "query_bench.hpp"
 #include "thread_cpu_time.hpp"
 
 namespace tamias_bench {
@@ -69,6 +71,12 @@ class Engine {
     virtual Probe probe(int index) const = 0;
     /// World::state_hash() for Tamias2D (equal hashes: bitwise-equal worlds); 0 for the peers.
     virtual std::uint64_t state_hash() const { return 0; }
+    /// Casts the workload's rays, then its shapes (query_bench.hpp), each pass timed by the
+    /// thread that casts: Tamias2D and Box2D v3 only (the others throw).
+    virtual QueryTimes timed_queries(const QueryLoad& load) {
+        (void)load;
+        throw std::runtime_error("no query benchmark for this engine");
+    }
     /// Steps `n` times, timed by the thread that steps: an engine in another process times its
     /// steps there, so the pipe to it is never in the time.
     virtual StepTimes timed_steps(int n) {

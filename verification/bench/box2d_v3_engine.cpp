@@ -1,5 +1,6 @@
 #include "box2d_v3_engine.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <vector>
@@ -7,6 +8,7 @@
 #include <box2d/box2d.h>
 
 #include "joint_drift.hpp"
+#include "thread_cpu_time.hpp"
 
 namespace tamias_bench {
 
@@ -83,7 +85,49 @@ class Box2DV3Engine final : public Engine {
         return {{p.x, p.y}, {v.x, v.y}, b2Body_GetAngularVelocity(b), std::atan2(q.s, q.c)};
     }
 
+    QueryTimes timed_queries(const QueryLoad& load) override {
+        QueryTimes t;
+        const b2QueryFilter all = b2DefaultQueryFilter();
+        const double r0 = cpu_ms();
+        for (const Cast& c : load.rays)
+            t.ray_hits +=
+                b2Shape_IsValid(
+                    b2World_CastRayClosest(world_, pos(c.origin), vec(c.translation), all).shapeId)
+                    ? 1
+                    : 0;
+        const double r1 = cpu_ms();
+        const b2Vec2 centre{0.0f, 0.0f};
+        const b2ShapeProxy disc = b2MakeProxy(&centre, 1, f32(cast_radius));
+        const float h = f32(cast_half_side);
+        const b2Vec2 corners[4] = {{-h, -h}, {h, -h}, {h, h}, {-h, h}};
+        const b2ShapeProxy square = b2MakeProxy(corners, 4, 0.0f);
+        for (std::size_t i = 0; i < load.casts.size(); ++i) {
+            const Cast& c = load.casts[i];
+            float closest = 2.0f; // the callback clips the cast at each hit: the closest stays
+            b2World_CastShape(world_, pos(c.origin), i % 2 == 0 ? &disc : &square,
+                              vec(c.translation), all, clip_at_hit, &closest);
+            t.cast_hits += closest <= 1.0f ? 1 : 0;
+        }
+        const double r2 = cpu_ms();
+        t.ray_ms = r1 - r0;
+        t.cast_ms = r2 - r1;
+        return t;
+    }
+
   private:
+    static b2Pos pos(V2 v) {
+        b2Pos p;
+        p.x = f32(v.x);
+        p.y = f32(v.y);
+        return p;
+    }
+    /// b2CastResultFcn: keeps the nearest fraction and clips the cast there.
+    static float clip_at_hit(b2ShapeId, b2Pos, b2Vec2, float fraction, void* context) {
+        float& closest = *static_cast<float*>(context);
+        closest = std::min(closest, fraction);
+        return fraction;
+    }
+
     float dt_;
     int substeps_;
     b2WorldId world_{};

@@ -72,6 +72,13 @@ void run(wire::Op op, wire::Reader& in, wire::Writer& results, std::unique_ptr<E
             results.put(e.probe(int(i)));
         return;
     }
+    case wire::Op::queries: {
+        const int rays = in.get<std::int32_t>();
+        const int casts = in.get<std::int32_t>();
+        const auto seed = in.get<std::uint64_t>();
+        results.put(engine_ref().timed_queries(make_query_load(scene, rays, casts, seed)));
+        return;
+    }
     case wire::Op::release:
         engine.reset();
         return;

@@ -5,7 +5,7 @@
 // (remote_engine.hpp).
 //
 //   tamias_bench [<out_dir>] [--scenes a,b,...] [--reps N] [--quick] [--engines a,b]
-//                [--budget-seconds S] [--no-typing]
+//                [--budget-seconds S] [--no-typing] [--no-queries]
 // Scenes: elastic2 pyramid20 pyramid40 large_pyramid rain rain_1k rain_2k rain_4k rain_8k
 // rain_16k ("scaling" names the rain_* series) pyramid40_sleep many_pyramids, and the joint
 // scenes joint_grid chain heavy_chain_100 heavy_chain_1000 ("joints" names them); engines:
@@ -21,6 +21,8 @@
 //     times the whole run of `steps` steps (the build is never timed).
 // The joint scenes also measure drift (joint_drift.hpp) in one more run per engine, untimed,
 // sampling every joint after every step.
+// Queries (--no-queries leaves them out): on large_pyramid and rain, 10 000 closest-hit rays and
+// 1 000 closest-hit shape casts per repetition in Tamias2D and Box2D v3 (run_queries).
 #include <malloc.h>
 
 #include <algorithm>
@@ -289,6 +291,7 @@ struct Options {
     int reps = 5;
     bool quick = false;
     bool typing = true;
+    bool queries = true;         ///< the query benchmark on large_pyramid and rain
     double budget_seconds = 0.0; ///< > 0: overrides every scene's CPU budget
 };
 
@@ -573,7 +576,7 @@ TypingResult measure_typing() {
               << "usage: tamias_bench [<out_dir>] [--scenes a,b] [--reps N] [--quick]\n"
               << "                    [--engines tamias,chipmunk,box2d,v3_sse2,v3_avx2]\n"
               << "                    [--budget-seconds S]\n"
-              << "                    [--no-typing]\n";
+              << "                    [--no-typing] [--no-queries]\n";
     std::exit(2);
 }
 
@@ -597,6 +600,8 @@ Options parse(int argc, char** argv) {
             o.quick = true;
         } else if (a == "--no-typing") {
             o.typing = false;
+        } else if (a == "--no-queries") {
+            o.queries = false;
         } else if (a == "--budget-seconds") {
             o.budget_seconds = std::atof(value().c_str());
         } else if (a == "--engines") {
@@ -626,6 +631,88 @@ Options parse(int argc, char** argv) {
         }
     }
     return o;
+}
+
+// ------------------------------------------------------------------------------ queries
+// The query benchmark (docs/performance.md, "Queries"): on large_pyramid and rain, each
+// engine that has one (Tamias2D, Box2D v3) builds the scene, steps it (large_pyramid: its
+// warm-up; rain: 300 steps, the boxes falling into the pile), then casts the workload
+// (query_bench.hpp) once per repetition, the engines alternating as for the steps.
+constexpr int query_rays = 10000;
+constexpr int query_casts = 1000;
+constexpr std::uint64_t query_seed = 46;
+
+struct QueryResult {
+    std::string scene;
+    int settle_steps = 0;
+    std::array<std::vector<QueryTimes>, engine_count> runs{};
+    std::array<std::string, engine_count> error{};
+    std::array<bool, engine_count> ran{};
+    double med(EngineId e, double QueryTimes::*field) const {
+        std::vector<double> v;
+        for (const QueryTimes& t : runs[std::size_t(e)])
+            v.push_back(t.*field);
+        return v.empty() ? NAN : median(v);
+    }
+};
+
+std::vector<QueryResult> run_queries(const std::vector<const SceneSpec*>& chosen,
+                                     const Options& opt) {
+    std::vector<QueryResult> out;
+    if (!opt.queries)
+        return out;
+    std::vector<EngineId> engines;
+    for (EngineId id : opt.engines)
+        if (id == EngineId::tamias || is_remote(id))
+            engines.push_back(id);
+    for (const SceneSpec* spec : chosen) {
+        if (spec->name != "large_pyramid" && spec->name != "rain")
+            continue;
+        const SceneDesc scene = spec->make();
+        QueryResult res;
+        res.scene = spec->name;
+        res.settle_steps = spec->steady ? spec->warmup : 300;
+        const QueryLoad load = make_query_load(scene, query_rays, query_casts, query_seed);
+        std::array<std::unique_ptr<Engine>, engine_count> eng;
+        for (EngineId id : engines) {
+            const auto k = std::size_t(id);
+            res.ran[k] = true;
+            try {
+                eng[k] = build_engine(id, scene);
+                for (int i = 0; i < res.settle_steps; ++i)
+                    eng[k]->step();
+            } catch (const std::exception& ex) {
+                res.error[k] = std::string("failed: ") + ex.what();
+                eng[k].reset();
+            }
+        }
+        for (int rep = 0; rep < opt.reps; ++rep) {
+            for (EngineId id : rotated(engines, rep)) {
+                const auto k = std::size_t(id);
+                if (!eng[k])
+                    continue;
+                try {
+                    res.runs[k].push_back(eng[k]->timed_queries(load));
+                } catch (const std::exception& ex) {
+                    res.error[k] = std::string("failed: ") + ex.what();
+                    eng[k].reset();
+                }
+            }
+        }
+        std::printf("\nqueries on %s (after %d steps): %d rays, %d shape casts\n",
+                    res.scene.c_str(), res.settle_steps, query_rays, query_casts);
+        for (EngineId id : engines) {
+            const auto k = std::size_t(id);
+            const QueryTimes last = res.runs[k].empty() ? QueryTimes{} : res.runs[k].back();
+            std::printf("  %-13s rays %9.3f ms (%d hit), casts %9.3f ms (%d hit) %s\n",
+                        std::string(engine_name(id)).c_str(), res.med(id, &QueryTimes::ray_ms),
+                        last.ray_hits, res.med(id, &QueryTimes::cast_ms), last.cast_hits,
+                        res.error[k].c_str());
+        }
+        std::fflush(stdout);
+        out.push_back(std::move(res));
+    }
+    return out;
 }
 
 /// The commit the engine was built from, and whether src/ had uncommitted changes (run time:
@@ -721,6 +808,7 @@ int main(int argc, char** argv) {
         results.push_back(r);
     }
 
+    const std::vector<QueryResult> query_results = run_queries(chosen, opt);
     stop_remote_engines();
 
     std::optional<TypingResult> typing_result;
@@ -933,6 +1021,39 @@ int main(int argc, char** argv) {
               {"scene", "dynamic bodies", "timed steps x reps", "Tamias2D", "Chipmunk 7",
                "Box2D 2.4", "Box2D v3 SSE2", "Box2D v3 AVX2", "speed-up vs Chipmunk 7",
                "speed-up vs Box2D 2.4", "Tamias2D / v3 SSE2", "Tamias2D / v3 AVX2"}},
+             {"rows", rows}});
+    }
+    if (!query_results.empty()) {
+        json rows = json::array();
+        for (const QueryResult& q : query_results) {
+            const double tr = q.med(EngineId::tamias, &QueryTimes::ray_ms);
+            const double tc = q.med(EngineId::tamias, &QueryTimes::cast_ms);
+            for (std::size_t k = 0; k < engine_count; ++k) {
+                if (!q.ran[k])
+                    continue;
+                const EngineId id = EngineId(k);
+                const double r = q.med(id, &QueryTimes::ray_ms);
+                const double c = q.med(id, &QueryTimes::cast_ms);
+                const QueryTimes last = q.runs[k].empty() ? QueryTimes{} : q.runs[k].back();
+                rows.push_back({q.scene, engine_name(id), num(r), num(c), last.ray_hits,
+                                last.cast_hits, num(tr / r, 3), num(tc / c, 3),
+                                int(q.runs[k].size()), q.error[k]});
+            }
+        }
+        tables.push_back(
+            {{"name", "Queries: CPU ms for " + std::to_string(query_rays) +
+                          " closest-hit rays and for " + std::to_string(query_casts) +
+                          " closest-hit shape casts (a 0.25 m disc and a 0.5 m square, "
+                          "alternately) from points drawn in the scene, after the scene's "
+                          "warm-up (large_pyramid) or 300 steps (rain); median of the "
+                          "repetitions, engines alternating. Tamias2D: World::ray_cast with a "
+                          "QueryFilter, World::shape_cast; Box2D v3: b2World_CastRayClosest, "
+                          "b2World_CastShape clipping at each hit. The ratios are Tamias2D's "
+                          "time over the engine's: above 1, Tamias2D is slower"},
+             {"columns",
+              {"scene", "engine", "rays (ms)", "shape casts (ms)", "rays that hit",
+               "casts that hit", "Tamias2D / engine, rays", "Tamias2D / engine, casts", "reps",
+               "note"}},
              {"rows", rows}});
     }
     {
@@ -1176,13 +1297,34 @@ int main(int argc, char** argv) {
         raw[r.name] = {{"steps", r.steps}, {"dynamic_bodies", r.dynamic_bodies}, {"engines", e}};
     }
 
+    for (const QueryResult& q : query_results) {
+        json e = json::object();
+        for (std::size_t k = 0; k < engine_count; ++k) {
+            if (!q.ran[k])
+                continue;
+            json ray = json::array(), cast = json::array();
+            for (const QueryTimes& t : q.runs[k]) {
+                ray.push_back(t.ray_ms);
+                cast.push_back(t.cast_ms);
+            }
+            e[std::string(engine_name(EngineId(k)))] = {
+                {"ray_ms", ray}, {"cast_ms", cast}, {"error", q.error[k]}};
+        }
+        raw["queries_" + q.scene] = {{"rays", query_rays},
+                                     {"casts", query_casts},
+                                     {"seed", query_seed},
+                                     {"settle_steps", q.settle_steps},
+                                     {"engines", e}};
+    }
+
     json doc = {{"program", "benchmark"},
                 {"description",
                  "Tamias2D against Chipmunk 7.0.3 and Box2D 2.4.1 on identical scenes in one "
                  "process (NFR1), and Box2D v3 (SSE2 and AVX2 builds) in the same run from "
                  "worker processes when built with it, with a quality check per scene and "
                  "engine (R7, R8), the cost "
-                 "of unit typing, the scaling of a rain of boxes, and joint scenes (time and "
+                 "of unit typing, closest-hit ray and shape casts beside Box2D v3's, the scaling "
+                 "of a rain of boxes, and joint scenes (time and "
                  "drift, no check). Method: docs/performance.md."},
                 {"provenance", tamias2d::evidence::provenance()},
                 {"checks", checks},

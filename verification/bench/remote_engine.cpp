@@ -165,6 +165,14 @@ class RemoteEngine final : public Engine {
         probes_.clear();
         return t;
     }
+    /// The worker draws the same workload from its copy of the scene and the seed.
+    QueryTimes timed_queries(const QueryLoad& load) override {
+        wire::Writer c = command(wire::Op::queries);
+        c.put(std::int32_t(load.ray_count));
+        c.put(std::int32_t(load.cast_count));
+        c.put(load.seed);
+        return worker_.call(c).get<QueryTimes>();
+    }
     /// Every body's state comes over in one reply, fetched at the first probe after a step.
     Probe probe(int index) const override {
         if (probes_.empty()) {

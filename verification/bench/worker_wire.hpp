@@ -29,6 +29,9 @@ enum class Op : std::uint8_t {
     release = 'R', ///< () -> (): destroys the engine
     /// int32 n -> (): the substeps of the engines built from now on (0: the benchmark's 4)
     substeps = 'N',
+    /// int32 rays, int32 casts, uint64 seed -> QueryTimes: the query workload
+    /// (query_bench.hpp) drawn from the worker's scene, timed in the worker
+    queries = 'Q',
 };
 
 /// Collects a message and sends it in one go.

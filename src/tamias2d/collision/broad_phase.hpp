@@ -79,6 +79,11 @@ class BroadPhase {
     /// DynamicTree::ray_cast for the meaning of the return value.
     template <class F> void ray_cast(Vec2d origin, Vec2d translation, F&& f) const;
 
+    /// Calls f(proxy, max_fraction) -> double for proxies whose fat boxes the box `box` meets
+    /// as it moves along `translation` (DynamicTree::box_cast), dynamic tree first; f returns
+    /// as for ray_cast.
+    template <class F> void box_cast(const Aabb& box, Vec2d translation, F&& f) const;
+
     int proxy_count() const { return trees_[0].proxy_count() + trees_[1].proxy_count(); }
     double margin() const { return margin_; }
     const DynamicTree& dynamic_tree() const { return trees_[0]; }
@@ -143,6 +148,18 @@ template <class F> void BroadPhase::ray_cast(Vec2d origin, Vec2d translation, F&
         // The second tree casts the ray as clipped by the first: rescale its fractions.
         const double scale = best;
         trees_[t].ray_cast(origin, scale * translation, [&](int id, double tree_max) {
+            const double v = f(id * 2 + t, tree_max * scale);
+            best = v < best ? v : best;
+            return v / scale;
+        });
+    }
+}
+
+template <class F> void BroadPhase::box_cast(const Aabb& box, Vec2d translation, F&& f) const {
+    double best = 1.0; // as ray_cast: the second tree's cast clipped by the first's
+    for (int t = 0; t < 2 && best > 0.0; ++t) {
+        const double scale = best;
+        trees_[t].box_cast(box, scale * translation, [&](int id, double tree_max) {
             const double v = f(id * 2 + t, tree_max * scale);
             best = v < best ? v : best;
             return v / scale;

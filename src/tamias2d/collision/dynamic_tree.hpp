@@ -74,6 +74,12 @@ class DynamicTree {
     /// (the hit fraction clips the ray, max_fraction continues, 0 stops).
     template <class F> void ray_cast(Vec2d origin, Vec2d translation, F&& f) const;
 
+    /// Calls f(id, max_fraction) -> double for every leaf whose box the box `box` moved along
+    /// origin... translation (its centre from the box's centre to centre + max_fraction *
+    /// translation) meets: the segment of its centre against the leaves' boxes grown by its
+    /// half extents (their Minkowski sum). f returns as for ray_cast: the shape casts' walk.
+    template <class F> void box_cast(const Aabb& box, Vec2d translation, F&& f) const;
+
     int proxy_count() const { return proxy_count_; }
     int height() const { return root_ == null_node ? 0 : nodes_[root_].height; }
     /// The height rebuilds and insertions leave the tree within, far below max_stack: beyond
@@ -269,6 +275,33 @@ template <class F> void DynamicTree::ray_cast(Vec2d origin, Vec2d translation, F
     while (top > 0) {
         const Node& n = nodes_[stack[--top]];
         if (!detail::segment_crosses(n.box, origin, translation, max_fraction))
+            continue;
+        if (n.leaf()) {
+            const double v = f(static_cast<int>(&n - nodes_.data()), max_fraction);
+            if (v <= 0.0)
+                return;
+            if (v < max_fraction)
+                max_fraction = v;
+        } else {
+            stack[top++] = n.child1;
+            stack[top++] = n.child2;
+        }
+    }
+}
+
+template <class F> void DynamicTree::box_cast(const Aabb& box, Vec2d translation, F&& f) const {
+    if (root_ == null_node)
+        return;
+    const Vec2d centre{0.5 * (box.min_x + box.max_x), 0.5 * (box.min_y + box.max_y)};
+    const double hx = 0.5 * (box.max_x - box.min_x), hy = 0.5 * (box.max_y - box.min_y);
+    double max_fraction = 1.0;
+    std::array<int, max_stack> stack;
+    int top = 0;
+    stack[top++] = root_;
+    while (top > 0) {
+        const Node& n = nodes_[stack[--top]];
+        const Aabb grown{n.box.min_x - hx, n.box.min_y - hy, n.box.max_x + hx, n.box.max_y + hy};
+        if (!detail::segment_crosses(grown, centre, translation, max_fraction))
             continue;
         if (n.leaf()) {
             const double v = f(static_cast<int>(&n - nodes_.data()), max_fraction);

@@ -2,13 +2,24 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "tamias2d/collision/segment_distance.hpp"
 #include "tamias2d/model/dd29_time_of_impact.hpp"
+#include "tamias2d/model/dd34_shape_distance.hpp"
 
 namespace tamias2d {
 
 namespace {
+
+/// \srs{DD34} The gap of two rounded cores whose closest points are `core_distance` apart.
+double rounded_gap(double core_distance, double radius_a, double radius_b) {
+    namespace u = tamias2d::units;
+    return model::dd34::rounded_gap(u::Length::from_value(core_distance),
+                                    u::Length::from_value(radius_a),
+                                    u::Length::from_value(radius_b))
+        .value();
+}
 
 /// A collider's polygon in the world frame (vertices and outward normals).
 struct WorldPolygon {
@@ -56,10 +67,12 @@ ShapeDistance circle_polygon(Vec2d c, double r, const WorldPolygon& p) {
             closest = sd.closest1;
         }
     }
-    const double d = std::sqrt(best) - r;
+    const double d = rounded_gap(std::sqrt(best), r, 0.0);
     if (d > 0.0) {
         out.distance = d;
         out.normal = normalize(closest - c);
+        out.point_a = c + r * out.normal;
+        out.point_b = closest;
     }
     return out;
 }
@@ -85,6 +98,8 @@ ShapeDistance polygon_polygon(const WorldPolygon& a, const WorldPolygon& b) {
     if (best > 0.0) {
         out.distance = std::sqrt(best);
         out.normal = normalize(to - from);
+        out.point_a = from;
+        out.point_b = to;
     }
     return out;
 }
@@ -155,10 +170,12 @@ ShapeDistance rounded_distance(const WorldCore& a, const WorldCore& b) {
             }
         }
     }
-    const double d = std::sqrt(best) - a.radius - b.radius;
+    const double d = rounded_gap(std::sqrt(best), a.radius, b.radius);
     if (d > 0.0) {
         out.distance = d;
         out.normal = normalize(to - from);
+        out.point_a = from + a.radius * out.normal;
+        out.point_b = to - b.radius * out.normal;
     }
     return out;
 }
@@ -173,10 +190,12 @@ ShapeDistance shape_distance(const Collider& a, const Transform& xa, const Colli
     if (ca && cb) {
         const Vec2d pa = transform_point(xa, a.center), pb = transform_point(xb, b.center);
         ShapeDistance out;
-        const double d = length(pb - pa) - a.radius - b.radius;
+        const double d = rounded_gap(length(pb - pa), a.radius, b.radius);
         if (d > 0.0) {
             out.distance = d;
             out.normal = normalize(pb - pa);
+            out.point_a = pa + a.radius * out.normal;
+            out.point_b = pb - b.radius * out.normal;
         }
         return out;
     }
@@ -185,6 +204,7 @@ ShapeDistance shape_distance(const Collider& a, const Transform& xa, const Colli
     if (cb) {
         ShapeDistance out = circle_polygon(transform_point(xb, b.center), b.radius, place(a, xa));
         out.normal = -1.0 * out.normal;
+        std::swap(out.point_a, out.point_b);
         return out;
     }
     return polygon_polygon(place(a, xa), place(b, xb));
@@ -206,7 +226,9 @@ ToiResult time_of_impact(const Collider& moving, const Sweep& sweep, const Colli
     ToiResult out;
     const Vec2d dp = sweep.c1 - sweep.c0;
     const double turn = std::abs(sweep.a1 - sweep.a0);
-    const double r = reach(moving, sweep.local_center);
+    // The reach only counts when the body turns (DD29's bound adds turn x reach): a shape
+    // cast, which never turns, skips its square roots.
+    const double r = turn > 0.0 ? reach(moving, sweep.local_center) : 0.0;
     double t = 0.0;
     ShapeDistance sd = shape_distance(moving, sweep.at(0.0), fixed, fixed_xf);
     if (sd.distance <= target + tolerance) {

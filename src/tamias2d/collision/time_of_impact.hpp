@@ -13,9 +13,12 @@ namespace tamias2d {
 struct ShapeDistance {
     double distance = 0.0; ///< m: 0 when they overlap or touch, else the true gap (to rounding)
     Vec2d normal{};        ///< unit, from the first shape towards the second (when apart)
+    Vec2d point_a{};       ///< m: the first shape's point nearest the second (when apart)
+    Vec2d point_b{};       ///< m: the second shape's point nearest the first (when apart)
 };
 
-/// The distance between collider a placed by xa and collider b placed by xb. Apart, it is the
+/// \srs{DD34} The distance between collider a placed by xa and collider b placed by xb, with
+/// the closest points (World::distance and the queries read them). Apart, it is the
 /// least distance between their boundaries: between a polygon's edges and the other's edges
 /// (segment to segment), or from a circle's centre, less its radius. Overlapping is decided
 /// first (separating axes, or a circle's centre inside), so the distance is never an edge

@@ -19,7 +19,6 @@ namespace tamias2d {
 /// four or five). A step reads the first two; the third, the applied loads and the masses, only
 /// for a body that `loaded` says may carry a load (rain_16k: a third less to stream per pass).
 struct alignas(64) Body {
-    bool alive = false;
     BodyType type = BodyType::dynamic;
     /// False only if force, torque, force_once and torque_once are all zero: then the step
     /// reads none of them, nor the masses (with no load, a = g and alpha = 0 whatever m and I).

@@ -16,14 +16,20 @@
 
 namespace tamias2d {
 
-/// \srs{R1} A body handle names one body of the world's space, and only while that body lives:
-/// a destroyed body's handle, or one of a recycled slot's earlier generation, is not valid.
-Body& BodyStore::get_for_attach(BodyId id) {
-    if (id.index >= bodies.size() || !bodies[id.index].alive ||
-        generation[id.index] != id.generation) {
-        throw InvalidHandle("stale or unknown BodyId " + std::to_string(id.index) + ":" +
-                            std::to_string(id.generation));
+namespace {
+
+/// Calls f on every live dynamic body of the store, in index order (the energies, momentum).
+template <class F> void each_dynamic(const BodyStore& store, F f) {
+    for (std::uint32_t i = 0; i < store.size(); ++i) {
+        if (store.alive(i) && store.bodies[i].type == BodyType::dynamic)
+            f(store.bodies[i]);
     }
+}
+
+} // namespace
+
+Body& BodyStore::get_for_attach(BodyId id) {
+    slots.check(id);
     return bodies[id.index];
 }
 
@@ -59,29 +65,17 @@ void BodyStore::settle() const {
     mass_pending_.clear();
 }
 
-bool BodyStore::is_valid(BodyId id) const {
-    return id.index < bodies.size() && bodies[id.index].alive &&
-           generation[id.index] == id.generation;
-}
-
 /// \srs{R2} A new body starts from the state its input gives: position, orientation,
 /// velocities, applied force and torque (a static body never moves, whatever it is given).
 std::uint32_t BodyStore::create(const BodyDef& def, bool sleeping) {
-    std::uint32_t i;
-    if (!free_slots.empty()) {
-        i = free_slots.back();
-        free_slots.pop_back();
-    } else {
-        i = std::uint32_t(bodies.size());
+    const std::uint32_t i = slots.acquire();
+    if (i == bodies.size()) {
         bodies.emplace_back();
         settings.emplace_back();
         sleep_states.emplace_back();
-        generation.push_back(0);
     }
     Body& b = bodies[i];
-    ++generation[i];
     b = Body{};
-    b.alive = true;
     b.type = def.type;
     b.angle = def.angle;
     b.xf = {def.position, Rot::from_angle(def.angle)};
@@ -105,7 +99,6 @@ std::uint32_t BodyStore::create(const BodyDef& def, bool sleeping) {
 void BodyStore::destroy(std::uint32_t i) {
     Body& b = bodies[i];
     b.first_shape = null_index;
-    b.alive = false;
     sleep_states[i] = SleepState{}; // neither awake nor movable
     BodySettings& set = settings[i];
     loaded_bodies -= set.load ? 1 : 0;
@@ -113,7 +106,7 @@ void BodyStore::destroy(std::uint32_t i) {
     // No mass pending (its entry in mass_pending_, if any, is then skipped).
     if (i < mass_pending_flag_.size())
         mass_pending_flag_[i] = false;
-    free_slots.push_back(i);
+    slots.release(i);
 }
 
 /// \srs{R2} The body's mass and moment of inertia: its shapes' (or the input's, where given;
@@ -157,7 +150,7 @@ void BodyStore::evaluate_loads(double time, std::vector<Load>& loads) const {
     for (std::uint32_t i = 0; i < loads.size(); ++i) {
         const Body& b = bodies[i];
         const LoadFunction& load = settings[i].load;
-        if (!b.alive || !load || b.type != BodyType::dynamic)
+        if (!alive(i) || !load || b.type != BodyType::dynamic)
             continue;
         const Load l = load(time);
         require_within("load(t).force", l.force, supported::input_max, "N");
@@ -170,7 +163,7 @@ void BodyStore::check_state() const {
     constexpr double m = supported::state_max;
     for (std::uint32_t i = 0; i < size(); ++i) {
         const Body& b = bodies[i];
-        if (!b.alive || b.type == BodyType::static_body)
+        if (!alive(i) || b.type == BodyType::static_body)
             continue;
         if (std::abs(b.center.x) <= m && std::abs(b.center.y) <= m && std::abs(b.v.x) <= m &&
             std::abs(b.v.y) <= m && std::abs(b.w) <= m && std::abs(b.angle) <= m)
@@ -186,47 +179,41 @@ void BodyStore::check_state() const {
 double BodyStore::kinetic_energy() const {
     namespace u = tamias2d::units;
     double e = 0.0;
-    for (const Body& b : bodies) {
-        if (!b.alive || b.type != BodyType::dynamic)
-            continue;
+    each_dynamic(*this, [&](const Body& b) {
         const double inertia = b.inv_inertia > 0.0 ? b.inertia : 0.0;
         e += model::dd15::kinetic_energy(
                  u::from_value<u::Mass>(b.mass), bridge::typed<u::Velocity>(b.v),
                  u::from_value<u::MomentOfInertia>(inertia), u::from_value<u::AngularVelocity>(b.w))
                  .value();
-    }
+    });
     return e;
 }
 
 double BodyStore::potential_energy(Vec2d g) const {
     namespace u = tamias2d::units;
     double e = 0.0;
-    for (const Body& b : bodies) {
-        if (!b.alive || b.type != BodyType::dynamic)
-            continue;
+    each_dynamic(*this, [&](const Body& b) {
         e += model::dd16::potential_energy(u::from_value<u::Mass>(b.mass),
                                            bridge::typed<u::Acceleration>(b.gravity_scale * g),
                                            bridge::typed<u::Length>(b.center))
                  .value();
-    }
+    });
     return e;
 }
 
 Vec2d BodyStore::linear_momentum() const {
     namespace u = tamias2d::units;
     std::vector<model::gd1::MassVelocity> mv;
-    for (const Body& b : bodies) {
-        if (!b.alive || b.type != BodyType::dynamic)
-            continue;
+    each_dynamic(*this, [&](const Body& b) {
         mv.push_back({u::from_value<u::Mass>(b.mass), bridge::typed<u::Velocity>(b.v)});
-    }
+    });
     return bridge::plain(model::gd1::total_momentum(mv));
 }
 
 std::vector<BodyId> BodyStore::live_ids() const {
     std::vector<BodyId> out;
     for (std::uint32_t i = 0; i < size(); ++i) {
-        if (bodies[i].alive)
+        if (alive(i))
             out.push_back(id(i));
     }
     return out;
@@ -265,8 +252,9 @@ void BodyStore::hash(StateHasher& hs, const ShapeStore& shapes, bool sleeping) c
     for (std::uint32_t i = 0; i < size(); ++i) {
         const Body& b = bodies[i];
         const BodySettings& set = settings[i];
-        hs(std::uint64_t(generation[i]) << 8 | std::uint64_t(b.alive) << 4 | std::uint64_t(b.type));
-        if (!b.alive)
+        hs(std::uint64_t(slots.generation(i)) << 8 | std::uint64_t(alive(i)) << 4 |
+           std::uint64_t(b.type));
+        if (!alive(i))
             continue;
         hs(b.xf.p);
         hs(b.xf.q.c);
@@ -312,7 +300,6 @@ namespace {
 /// The load function is not data: only whether there is one.
 template <class IO, class B, class S, class Z>
 void body_fields(IO& io, B& b, S& set, Z& sleep, bool& has_load) {
-    io("alive", b.alive);
     io.enumeration("type", b.type, BodyType::dynamic);
     io("loaded", b.loaded);
     io("damped", b.damped);
@@ -350,42 +337,35 @@ void body_fields(IO& io, B& b, S& set, Z& sleep, bool& has_load) {
 
 void BodyStore::write(SnapshotWriter& out) const {
     out.section("BODY");
-    out.count("bodies", size());
+    slots.write(out);
     for (std::uint32_t i = 0; i < size(); ++i) {
-        out("generation", generation[i]);
         bool has_load = bool(settings[i].load);
         body_fields(out, bodies[i], settings[i], sleep_states[i], has_load);
     }
-    out.count("free_slots", free_slots.size());
-    for (const std::uint32_t f : free_slots)
-        out.index("free_slot", f, size());
 }
 
 void BodyStore::read(SnapshotReader& in, std::vector<std::uint32_t>& had_load) {
     in.section("BODY");
-    const std::size_t n = in.count("bodies", 150, null_index - 1);
+    in.in("bodies");
+    slots.read(in);
+    const std::size_t n = slots.size();
+    in.require(n <= null_index - 1, "slots", "must be fewer than 4294967295", in.offset());
     bodies.resize(n);
     settings.resize(n);
-    generation.resize(n);
     sleep_states.resize(n);
     for (std::uint32_t i = 0; i < n; ++i) {
         in.in("bodies", i);
-        in("generation", generation[i]);
         Body& b = bodies[i];
         b = Body{};
         bool has_load = false;
         const std::size_t at = in.offset();
         body_fields(in, b, settings[i], sleep_states[i], has_load);
-        in.require(b.alive || (!has_load && b.first_shape == null_index && !sleep_states[i].awake),
-                   "alive", "a dead slot has no shapes, load or wake", at);
+        in.require(alive(i) || (!has_load && b.first_shape == null_index && !sleep_states[i].awake),
+                   "first_shape", "a dead slot has no shapes, load or wake", at);
         if (has_load)
             had_load.push_back(i);
     }
     in.in(nullptr);
-    const std::size_t free = in.count("free_slots", 4, n);
-    free_slots.resize(free);
-    for (std::uint32_t& f : free_slots)
-        in.index("free_slot", f, std::uint32_t(n));
     loaded_bodies = 0;
 }
 
@@ -409,17 +389,10 @@ void BodyStore::check_links(SnapshotReader& in, ShapeStore& shapes) const {
     for (std::uint32_t s = 0; s < ns; ++s) {
         in.in("shapes", s);
         const Shape& sh = shapes.shapes[s];
-        if (sh.alive() && (sh.body >= size() || !bodies[sh.body].alive || !seen[s]))
+        if (sh.alive() && (sh.body >= size() || !alive(sh.body) || !seen[s]))
             in.fail("body", "a live shape must be on the shape list of a live body");
     }
     in.in(nullptr);
-    std::vector<std::uint8_t> free(size(), 0);
-    for (const std::uint32_t f : free_slots) {
-        if (bodies[f].alive || free[f])
-            in.fail("bodies.free_slots",
-                    "must list dead slots, each once (slot " + decimal(std::uint64_t(f)) + ")");
-        free[f] = 1;
-    }
 }
 
 } // namespace tamias2d

@@ -12,6 +12,7 @@
 #include "tamias2d/dynamics/sleep.hpp"
 #include "tamias2d/handles.hpp"
 #include "tamias2d/memory/large_array.hpp"
+#include "tamias2d/memory/slot_map.hpp"
 
 namespace tamias2d {
 
@@ -21,12 +22,15 @@ class SnapshotWriter;
 class SnapshotReader;
 
 struct BodyStore {
+    /// The bodies of the world tagged `world` (World::tag).
+    explicit BodyStore(std::uint32_t world) : slots(world) {}
+
+    /// Which bodies live, their handles' generations and the free slots (only handle checks and
+    /// the hash read the generations, so they are kept out of Body, which a step streams three
+    /// times).
+    SlotMap<BodyId> slots;
     LargeArray<Body> bodies;
     std::vector<BodySettings> settings; ///< per body, indexed alike
-    /// Per body, indexed alike: its handles' generation (only handle checks read it, so it is
-    /// kept out of Body, which a step streams three times).
-    std::vector<std::uint32_t> generation;
-    std::vector<std::uint32_t> free_slots;
     /// Per body, indexed alike: awake or asleep, and for how long at rest (read by the step only
     /// with sleeping on, WorldDef::enable_sleep).
     std::vector<SleepState> sleep_states;
@@ -42,16 +46,18 @@ struct BodyStore {
 
   public:
     /// The body of a handle, its mass brought up to date (settle); throws InvalidHandle for a
-    /// stale or unknown one.
+    /// stale or unknown one, WrongWorld for one of another world.
     Body& get(BodyId id);
     const Body& get(BodyId id) const { return const_cast<BodyStore*>(this)->get(id); }
     /// As get, but a mass left pending by attach_shape stays pending: for adding a shape, so that
     /// N shapes added to one body cost O(N), not N mass updates of O(N) each.
     Body& get_for_attach(BodyId id);
-    bool is_valid(BodyId id) const;
-    BodyId id(std::uint32_t i) const { return {i, generation[i]}; }
+    bool is_valid(BodyId id) const { return slots.is_valid(id); }
+    BodyId id(std::uint32_t i) const { return slots.id(i); }
+    /// Whether slot i holds a body (a destroyed body's slot does not, until it is reused).
+    bool alive(std::uint32_t i) const { return slots.live(i); }
     std::uint32_t size() const { return std::uint32_t(bodies.size()); }
-    std::size_t count() const { return bodies.size() - free_slots.size(); }
+    std::size_t count() const { return slots.live_count(); }
     /// The handles of the live bodies, in index order.
     std::vector<BodyId> live_ids() const;
     /// How messages name body i: "body[3]", or "body[3 'slider']" when it has a name.

@@ -13,13 +13,15 @@ void IslandSleep::wake_islands(BodyStore& store, const ContactManager& contacts,
                                const JointStore& joints) {
     const std::uint32_t n = store.size();
     islands_.reset(n);
-    for (const Contact& c : contacts.contacts) {
+    for (const Contact& c : contacts.contacts()) {
         if (c.touching && store.sleep_states[c.body_a].movable &&
             store.sleep_states[c.body_b].movable)
             islands_.unite(c.body_a, c.body_b);
     }
-    for (const Joint& j : joints.joints) {
-        if (j.alive && store.sleep_states[j.body_a].movable && store.sleep_states[j.body_b].movable)
+    for (std::uint32_t k = 0; k < joints.joints.size(); ++k) {
+        const Joint& j = joints.joints[k];
+        if (joints.alive(k) && store.sleep_states[j.body_a].movable &&
+            store.sleep_states[j.body_b].movable)
             islands_.unite(j.body_a, j.body_b);
     }
     island_awake_.assign(n, 0);

@@ -25,6 +25,8 @@
 #include "tamias2d/model/dd25_wheel_constraint.hpp"
 #include "tamias2d/model/dd26_motor_constraint.hpp"
 #include "tamias2d/model/dd29_time_of_impact.hpp"
+#include "tamias2d/model/dd35_distance_joint_motor.hpp"
+#include "tamias2d/model/dd36_joint_break.hpp"
 #include "tamias2d/model/im1_translational_motion.hpp"
 #include "tamias2d/model/im2_rotational_motion.hpp"
 #include "tamias2d/model/im3_collision_response.hpp"
@@ -476,6 +478,43 @@ inline std::pair<double, double> block_impulse(const SolverBody& a, const Solver
 inline double clamp_axial_impulse(double accumulated, double max) {
     return m::dd23::clamp(u::from_value<u::Impulse>(accumulated), u::from_value<u::Impulse>(max))
         .value();
+}
+
+/// DD22's spring error of a revolute joint: its angle (rad) against the spring's target.
+inline double angular_spring_error(double joint_angle, double target) {
+    return m::dd22::spring_error(u::from_value<u::Angle>(joint_angle),
+                                 u::from_value<u::Angle>(target))
+        .value();
+}
+/// DD23's spring error of a prismatic or wheel joint: its translation (m) against the target.
+inline double axial_spring_error(double translation, double target) {
+    return m::dd23::spring_error(u::from_value<u::Length>(translation),
+                                 u::from_value<u::Length>(target))
+        .value();
+}
+
+// DD35, DD36: a distance joint's motor, a joint's break thresholds.
+
+/// DD35's accumulated motor impulse (N s) after one iteration of a distance joint's motor:
+/// the anchors' distance rate `length_rate` (m s^-1) driven to `motor_speed` with at most
+/// max_force (N) over the substep h.
+inline double distance_motor_update(const SolverBody& a, double arm_a, const SolverBody& b,
+                                    double arm_b, double length_rate, double motor_speed,
+                                    double max_force, double h, double accumulated) {
+    return m::dd35::motor_update(
+               inverse_inertia(a), inverse_inertia(b), u::from_value<u::Length>(arm_a),
+               u::from_value<u::Length>(arm_b), u::from_value<u::Velocity>(length_rate),
+               u::from_value<u::Velocity>(motor_speed), u::from_value<u::Force>(max_force),
+               u::from_value<u::Time>(h), u::from_value<u::Impulse>(accumulated))
+        .value();
+}
+
+/// DD36: whether a joint whose last substep's reaction force has the magnitude `force` (N) and
+/// whose reaction torque is `torque` (N m) breaks at the thresholds break_force, break_torque.
+inline bool joint_breaks(double force, double break_force, double torque, double break_torque) {
+    return m::dd36::breaks(u::from_value<u::Force>(force), u::from_value<u::Force>(break_force),
+                           u::from_value<u::Torque>(torque),
+                           u::from_value<u::Torque>(break_torque));
 }
 
 // DD24-DD26: the weld's angle, the wheel's line, the motor joint's rows.

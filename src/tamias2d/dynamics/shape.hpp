@@ -23,7 +23,6 @@ struct alignas(64) Shape {
     /// wherever those change): a contact reads its two shapes' lines instead of two bodies.
     Transform body_xf{};
     Vec2d body_center{};
-    std::uint32_t generation = 0;
     std::uint32_t body = 0;
     int proxy = -1;                  ///< its broad-phase proxy; -1 once destroyed
     std::uint32_t next = null_index; ///< the body's next shape (null_index: the last)

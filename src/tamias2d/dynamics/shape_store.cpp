@@ -14,35 +14,13 @@
 
 namespace tamias2d {
 
-/// \srs{R1} A shape handle names one shape of the world's space, and only while that shape
-/// lives: a destroyed shape's handle, or one of a recycled slot's earlier generation, is not
-/// valid.
-Shape& ShapeStore::get(ShapeId id) {
-    if (id.index >= shapes.size() || !shapes[id.index].alive() ||
-        shapes[id.index].generation != id.generation) {
-        throw InvalidHandle("stale or unknown ShapeId " + std::to_string(id.index) + ":" +
-                            std::to_string(id.generation));
-    }
-    return shapes[id.index];
-}
-
-bool ShapeStore::is_valid(ShapeId id) const {
-    return id.index < shapes.size() && shapes[id.index].alive() &&
-           shapes[id.index].generation == id.generation;
-}
-
 std::uint32_t ShapeStore::create(std::uint32_t body_index, Body& b, const ShapeDef& def) {
-    std::uint32_t i;
-    if (!free_slots.empty()) {
-        i = free_slots.back();
-        free_slots.pop_back();
-    } else {
-        i = std::uint32_t(shapes.size());
+    const std::uint32_t i = slots.acquire();
+    if (i == shapes.size()) {
         shapes.emplace_back();
         defs.emplace_back();
     }
     Shape& s = shapes[i];
-    s.generation += 1;
     s.body = body_index;
     s.next = null_index;
     defs[i] = def;
@@ -76,7 +54,7 @@ void ShapeStore::destroy(std::uint32_t i, Body& b) {
 void ShapeStore::release(std::uint32_t i) {
     broad_phase.destroy_proxy(shapes[i].proxy);
     shapes[i].proxy = -1;
-    free_slots.push_back(i);
+    slots.release(i);
 }
 
 void ShapeStore::sync_poses(const Body& b) {
@@ -174,8 +152,8 @@ void ShapeStore::hash(StateHasher& hs) const {
     hs(std::uint64_t(shapes.size()));
     for (std::uint32_t i = 0; i < shapes.size(); ++i) {
         const Shape& s = shapes[i];
-        hs(std::uint64_t(s.generation) << 1 | std::uint64_t(s.alive()));
-        if (!s.alive())
+        hs(std::uint64_t(slots.generation(i)) << 1 | std::uint64_t(slots.live(i)));
+        if (!slots.live(i))
             continue;
         const ShapeDef& d = defs[i];
         hs(std::uint64_t(s.body));
@@ -242,6 +220,9 @@ template <class IO, class D> void shape_def_fields(IO& io, D& d) {
     io("filter.mask_bits", d.filter.mask_bits);
     io("filter.group_index", d.filter.group_index);
     io("is_sensor", d.is_sensor);
+    io("enable_contact_events", d.enable_contact_events);
+    io("enable_sensor_events", d.enable_sensor_events);
+    io("enable_hit_events", d.enable_hit_events);
 }
 
 /// Every field of a Shape but its collider (made from the definition), in the snapshot's order.
@@ -249,7 +230,6 @@ template <class IO, class S> void shape_fields(IO& io, S& s) {
     io("fat_box", s.fat_box);
     io("body_xf", s.body_xf);
     io("body_center", s.body_center);
-    io("generation", s.generation);
     io("body", s.body);
     io("proxy", s.proxy);
     io("next", s.next);
@@ -259,20 +239,20 @@ template <class IO, class S> void shape_fields(IO& io, S& s) {
 
 void ShapeStore::write(SnapshotWriter& out) const {
     out.section("SHAP");
-    out.count("shapes", shapes.size());
+    slots.write(out);
     for (std::uint32_t i = 0; i < shapes.size(); ++i) {
         shape_def_fields(out, defs[i]);
         shape_fields(out, shapes[i]);
     }
-    out.count("free_slots", free_slots.size());
-    for (const std::uint32_t f : free_slots)
-        out.index("free_slot", f, std::uint32_t(shapes.size()));
     broad_phase.write(out);
 }
 
 void ShapeStore::read(SnapshotReader& in) {
     in.section("SHAP");
-    const std::size_t n = in.count("shapes", 400, null_index - 1);
+    in.in("shapes");
+    slots.read(in);
+    const std::size_t n = slots.size();
+    in.require(n <= null_index - 1, "slots", "must be fewer than 4294967295", in.offset());
     shapes.resize(n);
     defs.resize(n);
     std::vector<std::size_t> at(n);
@@ -283,6 +263,8 @@ void ShapeStore::read(SnapshotReader& in) {
         Shape& s = shapes[i];
         s = Shape{};
         shape_fields(in, s);
+        in.require(s.alive() == slots.live(i), "proxy",
+                   "must be a proxy for a live slot and -1 for a dead one", at[i]);
         if (!s.alive())
             continue;
         in.require(defs[i].geometry.polygon.count >= 0 &&
@@ -297,16 +279,6 @@ void ShapeStore::read(SnapshotReader& in) {
         s.collider = make_collider(defs[i].geometry);
     }
     in.in(nullptr);
-    const std::size_t free = in.count("shapes.free_slots", 4, n);
-    free_slots.resize(free);
-    std::vector<std::uint8_t> listed(n, 0);
-    for (std::uint32_t& f : free_slots) {
-        const std::size_t here = in.offset();
-        in.index("shapes.free_slot", f, std::uint32_t(n));
-        in.require(!shapes[f].alive() && !listed[f], "shapes.free_slot",
-                   "must list dead slots, each once", here);
-        listed[f] = 1;
-    }
     broad_phase.read(in);
     int live = 0;
     for (std::uint32_t i = 0; i < n; ++i) {
@@ -322,6 +294,21 @@ void ShapeStore::read(SnapshotReader& in) {
     in.require(live == broad_phase.proxy_count(), "broad_phase",
                "must hold one proxy per live shape (" + decimal(std::uint64_t(live)) + ")",
                in.offset());
+}
+
+// --- shape_control ---
+
+void ShapeStore::reshape(std::uint32_t i, const Geometry& geometry) {
+    defs[i].geometry = canonical(geometry); // unused members carry nothing
+    shapes[i].collider = make_collider(defs[i].geometry);
+}
+
+void ShapeStore::refit_proxy(std::uint32_t i, const Body& b) {
+    Shape& sh = shapes[i];
+    sh.fat_box = broad_phase.fattened(box(sh, b));
+    const BroadPhase::ProxyMove move{sh.proxy, sh.fat_box};
+    broad_phase.move_proxies({&move, 1});
+    broad_phase.touch_proxy(sh.proxy);
 }
 
 } // namespace tamias2d

@@ -12,6 +12,7 @@
 #include "tamias2d/dynamics/shape.hpp"
 #include "tamias2d/handles.hpp"
 #include "tamias2d/memory/large_array.hpp"
+#include "tamias2d/memory/slot_map.hpp"
 #include "tamias2d/shape_def.hpp"
 #include "tamias2d/world.hpp"
 
@@ -24,17 +25,25 @@ class SnapshotReader;
 
 class ShapeStore {
   public:
+    /// The shapes of the world tagged `world` (World::tag).
+    explicit ShapeStore(std::uint32_t world) : slots(world) {}
+
+    /// Which shapes live, their handles' generations and the free slots.
+    SlotMap<ShapeId> slots;
     LargeArray<Shape> shapes;
     std::vector<ShapeDef> defs; ///< per shape, indexed alike: what it was made from
-    std::vector<std::uint32_t> free_slots;
     /// Per body index: its last shape, valid while the body's first_shape is not null_index.
     std::vector<std::uint32_t> last_of_body;
     BroadPhase broad_phase;
 
-    /// The shape of a handle; throws InvalidHandle for a stale or unknown one.
-    Shape& get(ShapeId id);
-    bool is_valid(ShapeId id) const;
-    ShapeId id(std::uint32_t i) const { return {i, shapes[i].generation}; }
+    /// The shape of a handle; throws InvalidHandle for a stale or unknown one, WrongWorld for
+    /// one of another world.
+    Shape& get(ShapeId id) {
+        slots.check(id);
+        return shapes[id.index];
+    }
+    bool is_valid(ShapeId id) const { return slots.is_valid(id); }
+    ShapeId id(std::uint32_t i) const { return slots.id(i); }
 
     /// A new shape on body `body_index` (whose Body is `b`), appended to its list in O(1) (the
     /// list's last shape is kept per body) so that the body's shapes (and the mass summed over
@@ -114,6 +123,14 @@ class ShapeStore {
     /// shape's definition that validate() refuses, a proxy that is not the shape's leaf). The
     /// shape lists are checked, and last_of_body rebuilt, by BodyStore::check_links.
     void read(SnapshotReader& in);
+    // --- shape_control ---
+    /// Gives shape i a new (validated) geometry, stored canonical, and its collider. Its
+    /// proxy, contacts and body's mass are the caller's to bring up to date.
+    void reshape(std::uint32_t i, const Geometry& geometry);
+    /// Shape i's proxy refitted to its geometry now on body `b`: a new fat box around the
+    /// tight one (smaller too, where move_proxy keeps one that contains it), marked moved so
+    /// that the next step finds its pairs.
+    void refit_proxy(std::uint32_t i, const Body& b);
 
   private:
     /// The proxies refit_fat_box moved, for one BroadPhase::move_proxies call.

@@ -109,6 +109,12 @@ class SnapshotWriter {
     void index(const char*, std::uint32_t v, std::uint32_t /*limit*/, bool /*null*/ = false) {
         u32(v);
     }
+    /// A handle (BodyId, ShapeId, JointId) as its index and generation: its world tag is the
+    /// world's, not the simulation's (the reader gives it the reading world's).
+    template <class Id> void handle(const char*, const Id& id) {
+        u32(id.index);
+        u32(id.generation);
+    }
 
   private:
     /// The n low bytes of v, least significant first (on a little-endian host, as they lie).
@@ -128,8 +134,8 @@ class SnapshotReader {
   public:
     /// The payload `bytes`, which start at byte `base` of the snapshot (for the offsets the
     /// errors name).
-    SnapshotReader(std::span<const std::byte> bytes, std::size_t base)
-        : bytes_(bytes), base_(base) {}
+    SnapshotReader(std::span<const std::byte> bytes, std::size_t base, std::uint32_t world)
+        : world_(world), bytes_(bytes), base_(base) {}
 
     /// The record the fields read next belong to, for the errors' field names: "bodies", 3
     /// makes field "v" "bodies[3].v". A null record: top-level fields.
@@ -250,6 +256,12 @@ class SnapshotReader {
         index(f, v, limit, null);
         return v;
     }
+    /// A handle written by SnapshotWriter::handle, tagged with the reading world's tag.
+    template <class Id> void handle(const char* f, Id& id) {
+        id.index = u32(f);
+        id.generation = u32(f);
+        id.world = world_;
+    }
 
   private:
     std::uint64_t le(const char* f, int n) {
@@ -267,6 +279,7 @@ class SnapshotReader {
         return v;
     }
 
+    std::uint32_t world_; ///< the tag of the world read into (its handles')
     std::span<const std::byte> bytes_;
     std::size_t base_;
     std::size_t at_ = 0;

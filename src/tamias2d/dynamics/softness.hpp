@@ -4,6 +4,7 @@
 // energy-adding kicks.
 #pragma once
 
+#include "tamias2d/model/dd37_joint_tuning.hpp"
 #include "tamias2d/model/im6_motion_with_joints.hpp"
 #include "tamias2d/model/im7_soft_contact.hpp"
 
@@ -30,6 +31,17 @@ inline Softness make_joint_softness(double hertz, double damping_ratio, double h
     const model::im6::Softness s = model::im6::softness(
         u::from_value<u::Rate>(hertz), u::from_value<u::Dimensionless>(damping_ratio),
         u::from_value<u::Time>(h));
+    return {s.bias_rate.value(), s.mass_scale.value(), s.impulse_scale.value()};
+}
+
+/// DD37's softness of a joint with a tuning of its own (hertz, damping ratio), capped as the
+/// world's is (n substeps of dt, each h), unwrapped; once per step and tuned joint.
+inline Softness make_tuned_joint_softness(double hertz, double damping_ratio, int substeps,
+                                          double dt, double h) {
+    namespace u = tamias2d::units;
+    const model::im6::Softness s = model::dd37::softness(
+        {u::from_value<u::Rate>(hertz), u::from_value<u::Dimensionless>(damping_ratio)}, substeps,
+        u::from_value<u::Time>(dt), u::from_value<u::Time>(h));
     return {s.bias_rate.value(), s.mass_scale.value(), s.impulse_scale.value()};
 }
 

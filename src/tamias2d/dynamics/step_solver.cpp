@@ -26,7 +26,7 @@ constexpr std::size_t parallel_bodies = 2 * body_block;
 /// Whether body i is immovable this step: static, destroyed, or asleep (sleeping on).
 bool immovable(const BodyStore& store, std::uint32_t i, const WorldDef& def) {
     const Body& b = store.bodies[i];
-    return (def.enable_sleep && !store.sleep_states[i].awake) || !b.alive ||
+    return (def.enable_sleep && !store.sleep_states[i].awake) || !store.alive(i) ||
            b.type == BodyType::static_body;
 }
 
@@ -247,10 +247,11 @@ void StepSolver::integrate_positions(double h, std::size_t begin, std::size_t en
 
 namespace {
 
-/// Whether a joint takes part in this step: alive, and not between two immovable bodies
-/// (both asleep, or asleep and static: solver body 0 on both sides).
+/// Whether a joint takes part in this step: not between two immovable bodies (both asleep, or
+/// asleep and static: solver body 0 on both sides). A destroyed joint's solver bodies are both
+/// 0 (JointStore::destroy), and so are a filter joint's (prepare_joints skips it).
 bool solved(const Joint& j) {
-    return j.alive && (j.step.solver_a != 0 || j.step.solver_b != 0);
+    return j.step.solver_a != 0 || j.step.solver_b != 0;
 }
 
 } // namespace
@@ -264,8 +265,9 @@ void StepSolver::prepare_joints(JointStore& joints, const BodyStore& bodies) {
         return;
     joint_rotations_.resize(solver_bodies_.size());
     listed_.resize(solver_bodies_.size()); // all false: the marks are cleared above
-    for (Joint& j : joints.joints) {
-        if (!j.alive || j.type == JointType::filter) // (no constraint: its solver bodies stay 0)
+    for (std::uint32_t i = 0; i < joints.joints.size(); ++i) {
+        Joint& j = joints.joints[i];
+        if (!joints.alive(i) || j.type == JointType::filter) // (no constraint: solver bodies 0)
             continue;
         prepare_joint(j, bodies, solver_index_);
         // An immovable side keeps its rotation all step (solver body 0 never turns); a moving
@@ -321,10 +323,11 @@ void StepSolver::prepare_packs(const ContactManager& contacts, std::size_t begin
                 const std::uint32_t k = order[p + ahead][l];
                 if (k == ConstraintGraph::no_constraint)
                     continue;
-                const char* c = reinterpret_cast<const char*>(&contacts.contacts[edge_contact_[k]]);
+                const char* c =
+                    reinterpret_cast<const char*>(&contacts.contacts()[edge_contact_[k]]);
                 for (std::size_t line = 0; line < sizeof(Contact); line += 64)
                     prefetch(c + line);
-                prefetch(&contacts.warm_impulses[edge_contact_[k]]);
+                prefetch(&contacts.warm_impulses()[edge_contact_[k]]);
             }
         }
         for (int l = 0; l < wide_lanes; ++l) {
@@ -334,7 +337,7 @@ void StepSolver::prepare_packs(const ContactManager& contacts, std::size_t begin
                 continue;
             }
             const std::uint32_t c = edge_contact_[k];
-            set_input_lane(in, l, edges_[k], c, contacts.contacts[c], contacts.warm_impulses[c],
+            set_input_lane(in, l, edges_[k], c, contacts.contacts()[c], contacts.warm_impulses()[c],
                            edge_slot_[k]);
         }
         if (warm_start)
@@ -352,7 +355,7 @@ constexpr std::uint32_t edge_block = 1024;
 } // namespace
 
 std::uint32_t StepSolver::list_edges(const ContactManager& contacts, const StepTasks& tasks) {
-    const auto& inputs = contacts.edge_inputs;
+    const auto& inputs = contacts.edge_inputs();
     const auto n = std::uint32_t(inputs.size());
     // The edge of contact i, or none: not touching, or both bodies asleep or static (only
     // with sleeping on), nothing to solve.
@@ -436,6 +439,15 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
     // IM6: the joints' soft bias, capped like the contacts' at a quarter of the substep rate.
     const Softness joint_softness = make_joint_softness(
         capped_joint_frequency(def.joint_hertz, n, dt), def.joint_damping_ratio, h);
+    // DD37: a joint with a tuning of its own uses it in place of the world's.
+    for (Joint& j : joints) {
+        if (j.tuned && solved(j))
+            j.step.tuning =
+                make_tuned_joint_softness(j.tuning_hertz, j.tuning_damping_ratio, n, dt, h);
+    }
+    const auto softness_of = [&joint_softness](const Joint& j) -> const Softness& {
+        return j.tuned ? j.step.tuning : joint_softness;
+    };
     // The touching manifolds in creation order, as the colouring sees them; those that can
     // bounce get a slot for the restitution pass's copy, also in creation order.
     const std::uint32_t bounce_count = list_edges(contacts, tasks);
@@ -500,14 +512,14 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
         }
         for (Joint& j : joints) {
             if (solved(j))
-                solve_joint(j, solver_bodies_, joint_softness, h, true);
+                solve_joint(j, solver_bodies_, softness_of(j), h, true);
         }
         contact_pass(tasks, streams, &st, true);
         integrate_positions(h, tasks);
         turn_joints(joints);
         for (Joint& j : joints) {
             if (solved(j))
-                solve_joint(j, solver_bodies_, joint_softness, h, false);
+                solve_joint(j, solver_bodies_, softness_of(j), h, false);
         }
         contact_pass(tasks, streams, &st, false);
     }
@@ -528,22 +540,24 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
         }
     }
     const std::span<ContactConstraint> bouncers(bouncing_.data(), bounce_count);
+    const ContactManager::ImpulseRecords records = contacts.impulse_records();
     if (tasks.parallel() && pack_count > store_block) {
         auto run = [&](int first, int last) {
-            wide_solver_.store(contacts.warm_impulses, contacts.total_impulses, bouncers,
+            wide_solver_.store(records.warm, records.totals, bouncers,
                                std::size_t(first) * store_block,
                                std::min(pack_count, std::size_t(last) * store_block));
         };
         tasks.for_each_block(blocks_of(pack_count, store_block), run);
     } else {
-        wide_solver_.store(contacts.warm_impulses, contacts.total_impulses, bouncers, 0,
-                           pack_count);
+        wide_solver_.store(records.warm, records.totals, bouncers, 0, pack_count);
     }
     // \srs{R8} Post-collision velocities (and, integrated, positions) of colliding bodies.
     apply_restitution(bouncers, solver_bodies_, st);
+    // A bouncing manifold's normal totals include the restitution pass's impulses: written
+    // here, once (store left them to this pass).
     for (const ContactConstraint& b : bouncers) {
         for (int j = 0; j < b.count; ++j)
-            contacts.total_impulses[b.contact].normal[j] = b.points[j].total_normal_impulse;
+            records.totals[b.contact].normal[j] = b.points[j].total_normal_impulse;
     }
 }
 
@@ -580,8 +594,7 @@ void StepSolver::contact_pass(const StepTasks& tasks, std::uint32_t streams,
     tasks.for_each_block(int(graph.streams()), run);
 }
 
-void StepSolver::finalize(BodyStore& store, ShapeStore& shape_store, const ContactManager& contacts,
-                          const JointStore& joints, const StepContext& step) {
+void StepSolver::finalize(BodyStore& store, ShapeStore& shape_store, const StepContext& step) {
     const WorldDef& def = step.def;
     const StepTasks& tasks = step.tasks;
     const auto body_count = std::uint32_t(store.bodies.size());
@@ -622,7 +635,12 @@ void StepSolver::finalize(BodyStore& store, ShapeStore& shape_store, const Conta
         }
     }
     shape_store.refit_undecided();
-    continuous_.run(store, shape_store, contacts, joints, def);
+}
+
+void StepSolver::continuous(BodyStore& store, ShapeStore& shape_store,
+                            const ContactManager& contacts, const JointStore& joints,
+                            const StepContext& step) {
+    continuous_.run(store, shape_store, contacts, joints, step.def);
 }
 
 template <bool deferred>

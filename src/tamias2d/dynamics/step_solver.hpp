@@ -47,13 +47,18 @@ class StepSolver {
     /// The body (index in the body store) of the first solver body the last solve left
     /// non-finite, or null_index: the step must then be refused, nothing finalized.
     std::uint32_t diverged() const { return diverged_; }
+    /// The packs of up to four manifolds the last solve ran (World::counters).
+    std::size_t pack_count() const { return wide_solver_.order().size(); }
     /// The new velocities and poses into the bodies, and the shapes' copies and fat boxes
-    /// after them (the broad phase's proxies moved); then, with def.enable_continuous, the
-    /// continuous pass (DD29) over the dynamic bodies that moved far.
+    /// after them (the broad phase's proxies moved), listing the dynamic bodies that moved far
+    /// for continuous(), which must follow.
     /// With more than one worker the bodies are written back in parallel blocks, and the lists
     /// that follow body order (continuous pass, undecided shapes) are gathered after them.
-    void finalize(BodyStore& bodies, ShapeStore& shapes, const ContactManager& contacts,
-                  const JointStore& joints, const StepContext& step);
+    void finalize(BodyStore& bodies, ShapeStore& shapes, const StepContext& step);
+    /// After finalize: with def.enable_continuous, the continuous pass (DD29) over the bodies
+    /// finalize listed. (A stage of its own, so that World::profile can time it.)
+    void continuous(BodyStore& bodies, ShapeStore& shapes, const ContactManager& contacts,
+                    const JointStore& joints, const StepContext& step);
 
   private:
     /// prepare_bodies' parallel form; `across` is the axis the contact regions are cut across.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tamias2d/model/dd33_ray_intersection.hpp"
 #include "tamias2d/model/t5_collision_detection.hpp"
 
 namespace tamias2d {
@@ -14,6 +15,14 @@ bool contains(const Circle& c, Vec2d local) {
 
 bool contains(const Polygon& p, Vec2d local) {
     return model::t5::contains(p.vertices.data(), p.normals.data(), p.count, local);
+}
+
+namespace u = tamias2d::units;
+
+/// \srs{DD33} The face crossing t = num / den on plain SI values.
+double plane_crossing(double num, double den) {
+    return model::dd33::plane_crossing(u::Length::from_value(num), u::Length::from_value(den))
+        .value();
 }
 
 /// The point of segment a -> b nearest p.
@@ -28,7 +37,7 @@ bool contains(const Capsule& c, Vec2d local) {
     return model::t5::contains(nearest_on_segment(c.center1, c.center2, local), c.radius, local);
 }
 
-/// Ray in the shape's body frame.
+/// \srs{DD33} Ray in the shape's body frame.
 std::optional<RayHit> cast(const Circle& c, Vec2d o, Vec2d d) {
     const double len = length(d);
     if (!(len > 0.0))
@@ -42,7 +51,8 @@ std::optional<RayHit> cast(const Circle& c, Vec2d o, Vec2d d) {
     const double h2 = c.radius * c.radius - dot(closest, closest);
     if (h2 < 0.0)
         return std::nullopt;
-    const double t = t_mid - std::sqrt(h2);
+    const double t =
+        model::dd33::circle_entry(u::Length::from_value(t_mid), u::Area::from_value(h2)).value();
     if (t < 0.0 || t > len)
         return std::nullopt; // starts inside, points away, or too short
     RayHit hit;
@@ -66,10 +76,10 @@ std::optional<RayHit> cast(const Polygon& p, Vec2d o, Vec2d d) {
             if (num < 0.0)
                 return std::nullopt; // parallel and outside this face
         } else if (den < 0.0 && num < lower * den) {
-            lower = num / den; // entering through face i later than before
+            lower = plane_crossing(num, den); // entering through face i later than before
             entry = i;
         } else if (den > 0.0 && num < upper * den) {
-            upper = num / den; // leaving through face i earlier than before
+            upper = plane_crossing(num, den); // leaving through face i earlier than before
         }
         if (upper < lower)
             return std::nullopt;
@@ -94,7 +104,7 @@ std::optional<RayHit> cast_segment(Vec2d a, Vec2d b, Vec2d o, Vec2d d, bool two_
             return std::nullopt; // from behind a one-sided segment
         n = -n;
     }
-    const double t = dot(n, a - o) / dot(n, d);
+    const double t = plane_crossing(dot(n, a - o), dot(n, d));
     if (!(t >= 0.0 && t <= 1.0))
         return std::nullopt;
     const Vec2d p = o + t * d;
@@ -145,6 +155,7 @@ bool test_point(const Geometry& g, const Transform& xf, Vec2d p) {
     return false;
 }
 
+/// \srs{DD33} The first entry of the segment into one placed shape.
 std::optional<RayHit> ray_cast(const Geometry& g, const Transform& xf, Vec2d origin,
                                Vec2d translation) {
     const Vec2d o = inv_transform_point(xf, origin);

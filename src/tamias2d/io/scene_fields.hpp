@@ -95,6 +95,9 @@ template <class V> void joint_fields(DistanceJointDef& d, V&& v) {
     v("enable_limit", d.enable_limit, false);
     v("min_length", d.min_length, false);
     v("max_length", d.max_length, false);
+    v("enable_motor", d.enable_motor, false); // DD35
+    v("motor_speed", d.motor_speed, false);
+    v("max_motor_force", d.max_motor_force, false);
 }
 template <class V> void joint_fields(PrismaticJointDef& d, V&& v) {
     v("anchor", d.anchor, true);
@@ -138,11 +141,13 @@ template <class V> void joint_fields(MotorJointDef& d, V&& v) {
 }
 /// A filter joint has no field beyond its bodies (it never collides them and never breaks).
 template <class V> void all_joint_fields(FilterJointDef&, V&&) {}
-/// The fields every two-body joint has.
+/// The fields every two-body joint has, and a break torque (DD36) where the kind carries one.
 template <class Def, class V> void all_joint_fields(Def& d, V&& v) {
     joint_fields(d, v);
     v("collide_connected", d.collide_connected, false);
     v("break_force", d.break_force, false);
+    if constexpr (requires { d.break_torque; })
+        v("break_torque", d.break_torque, false);
 }
 
 /// The "type" names, in SceneJoint::Definition's order.

@@ -57,4 +57,10 @@ inline void apply(Velocities& A, Velocities& B, InverseInertia a, InverseInertia
     B.omega += im3::angular_velocity_change(b.inv_I, lambda);
 }
 
+/// \srs{DD22} The error a revolute joint's spring pulls to zero: the joint angle theta against
+/// the spring's target theta_t (0, the pose at creation, unless set), theta - theta_t.
+inline Angle spring_error(Angle joint_angle, Angle target) {
+    return joint_angle - target;
+}
+
 } // namespace tamias2d::model::dd22

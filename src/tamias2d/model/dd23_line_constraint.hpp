@@ -71,4 +71,10 @@ inline Impulse clamp(Impulse accumulated, Impulse max) {
     return std::clamp(accumulated, -max, max);
 }
 
+/// \srs{DD23} The error a prismatic (or wheel, DD25) joint's spring pulls to zero: the
+/// translation s against the spring's target s_t (0 unless set), s - s_t.
+inline Length spring_error(Length translation, Length target) {
+    return translation - target;
+}
+
 } // namespace tamias2d::model::dd23

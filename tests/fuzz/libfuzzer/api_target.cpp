@@ -37,8 +37,8 @@ constexpr int max_steps = 48;
 constexpr std::size_t max_bodies = 48;
 constexpr std::size_t max_chain_points = 12;
 
-/// The world under test, a foreign world whose handles it must refuse or take as its own
-/// (the handles do not name their world), and every handle made (destroyed ones kept).
+/// The world under test, a foreign world whose handles it must refuse (WrongWorld, an
+/// InvalidHandle), and every handle made (destroyed ones kept).
 struct Session {
     ByteSource& in;
     World world;
@@ -61,6 +61,7 @@ struct Session {
         Id id;
         id.index = in.flag() ? in.byte() % 8u : null_index - in.byte() % 2u;
         id.generation = in.byte() % 4u;
+        id.world = world.tag(); // forged for this world: the slot and generation checks decide
         return id;
     }
 

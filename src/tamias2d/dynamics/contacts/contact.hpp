@@ -18,7 +18,7 @@ namespace tamias2d {
 struct alignas(64) Contact {
     std::uint32_t shape_a = 0, shape_b = 0; ///< shape_a < shape_b
     std::uint32_t body_a = 0, body_b = 0;   ///< their bodies (a shape never changes body)
-    double friction = 0.0;                  ///< combined once: materials are fixed at creation
+    double friction = 0.0; ///< combined at creation and when a shape's material changes
     double restitution = 0.0;
     SeparationHint hint{}; ///< narrow-phase shortcut for pairs that stay apart
     bool touching = false;

@@ -37,45 +37,55 @@ ContactManager::EdgeInput edge_input(const Contact& c) {
     return {c.body_a, c.body_b, group, c.touching, c.restitution > 0.0};
 }
 
+/// The contact's friction and restitution from its shapes' materials. Combination rules
+/// (docs/design.md): friction geometric mean, restitution max.
+void combine_materials(Contact& c, const ShapeStore& shapes) {
+    const Material& ma = shapes.defs[c.shape_a].material;
+    const Material& mb = shapes.defs[c.shape_b].material;
+    c.friction = std::sqrt(ma.friction * mb.friction);
+    c.restitution = std::max(ma.restitution, mb.restitution);
+}
+
 } // namespace
 
 void ContactManager::destroy(std::uint32_t i, BodyStore& bodies, const ShapeStore& shapes) {
     infos_stale_ = true; // a destroyed body's or shape's contacts leave the report at once
-    Contact& c = contacts[i];
+    Contact& c = contacts_[i];
     if (c.touching) {
         bodies.wake(c.body_a); // what held the other up, or pushed it, is gone
         bodies.wake(c.body_b);
-        end_events.push_back({shapes.id(c.shape_a), shapes.id(c.shape_b),
-                              bodies.id(shapes.shapes[c.shape_a].body),
-                              bodies.id(shapes.shapes[c.shape_b].body)});
+        if (reports_events(shapes, c.shape_a, c.shape_b))
+            end_events_.push_back({shapes.id(c.shape_a), shapes.id(c.shape_b),
+                                   bodies.id(shapes.shapes[c.shape_a].body),
+                                   bodies.id(shapes.shapes[c.shape_b].body)});
     }
     index_.erase(Contact::key(c.shape_a, c.shape_b));
-    const std::uint32_t last = std::uint32_t(contacts.size() - 1);
+    const std::uint32_t last = std::uint32_t(contacts_.size() - 1);
     if (i != last) {
-        contacts[i] = contacts[last];
-        warm_impulses[i] = warm_impulses[last];
-        total_impulses[i] = total_impulses[last];
-        bases[i] = bases[last];
-        edge_inputs[i] = edge_inputs[last];
-        index_.assign(Contact::key(contacts[i].shape_a, contacts[i].shape_b), i);
+        contacts_[i] = contacts_[last];
+        warm_impulses_[i] = warm_impulses_[last];
+        total_impulses_[i] = total_impulses_[last];
+        bases_[i] = bases_[last];
+        edge_inputs_[i] = edge_inputs_[last];
+        index_.assign(Contact::key(contacts_[i].shape_a, contacts_[i].shape_b), i);
     }
-    contacts.pop_back();
-    warm_impulses.pop_back();
-    total_impulses.pop_back();
-    bases.pop_back();
-    edge_inputs.pop_back();
+    contacts_.pop_back();
+    warm_impulses_.pop_back();
+    total_impulses_.pop_back();
+    bases_.pop_back();
+    edge_inputs_.pop_back();
 }
 
 void ContactManager::destroy_of_shape(std::uint32_t s, BodyStore& bodies,
                                       const ShapeStore& shapes) {
-    for (std::uint32_t i = std::uint32_t(contacts.size()); i-- > 0;) {
-        if (contacts[i].shape_a == s || contacts[i].shape_b == s)
+    for (std::uint32_t i = std::uint32_t(contacts_.size()); i-- > 0;) {
+        if (contacts_[i].shape_a == s || contacts_[i].shape_b == s)
             destroy(i, bodies, shapes);
     }
 }
 
 void ContactManager::wake_touching(std::uint32_t i, BodyStore& bodies) const {
-    for (const Contact& c : contacts) {
+    for (const Contact& c : contacts_) {
         if (c.touching && (c.body_a == i || c.body_b == i)) {
             bodies.wake(c.body_a);
             bodies.wake(c.body_b);
@@ -85,8 +95,8 @@ void ContactManager::wake_touching(std::uint32_t i, BodyStore& bodies) const {
 
 void ContactManager::destroy_between(std::uint32_t a, std::uint32_t b, BodyStore& bodies,
                                      const ShapeStore& shapes) {
-    for (std::uint32_t i = std::uint32_t(contacts.size()); i-- > 0;) {
-        const Contact& c = contacts[i];
+    for (std::uint32_t i = std::uint32_t(contacts_.size()); i-- > 0;) {
+        const Contact& c = contacts_[i];
         if ((c.body_a == a && c.body_b == b) || (c.body_a == b && c.body_b == a))
             destroy(i, bodies, shapes);
     }
@@ -135,8 +145,8 @@ void ContactManager::refilter(std::uint32_t s, BodyStore& bodies, const ShapeSto
     // Every answer first, then the destructions: a filter that throws changes nothing.
     forget_filter_error();
     doomed_.clear();
-    for (std::uint32_t i = std::uint32_t(contacts.size()); i-- > 0;) {
-        const Contact& c = contacts[i];
+    for (std::uint32_t i = std::uint32_t(contacts_.size()); i-- > 0;) {
+        const Contact& c = contacts_[i];
         if ((c.shape_a == s || c.shape_b == s) &&
             !should_collide(bodies, shapes, joints, c.shape_a, c.shape_b))
             doomed_.push_back(i);
@@ -187,22 +197,18 @@ void ContactManager::find_new(const BodyStore& bodies, ShapeStore& shapes,
         c.shape_b = sb;
         c.body_a = shapes.shapes[sa].body;
         c.body_b = shapes.shapes[sb].body;
-        // Combination rules (docs/design.md): friction geometric mean, restitution max.
-        const Material& ma = shapes.defs[sa].material;
-        const Material& mb = shapes.defs[sb].material;
-        c.friction = std::sqrt(ma.friction * mb.friction);
-        c.restitution = std::max(ma.restitution, mb.restitution);
+        combine_materials(c, shapes);
         // All the memory first, so that a bad_alloc leaves the parallel arrays and the index
         // agreeing.
-        contacts.reserve_more(1);
-        warm_impulses.reserve_more(1);
-        total_impulses.reserve_more(1);
-        bases.reserve_more(1);
-        index_.insert(key, std::uint32_t(contacts.size()));
-        contacts.push_back(c);
-        warm_impulses.emplace_back();
-        total_impulses.emplace_back();
-        bases.emplace_back();
+        contacts_.reserve_more(1);
+        warm_impulses_.reserve_more(1);
+        total_impulses_.reserve_more(1);
+        bases_.reserve_more(1);
+        index_.insert(key, std::uint32_t(contacts_.size()));
+        contacts_.push_back(c);
+        warm_impulses_.emplace_back();
+        total_impulses_.emplace_back();
+        bases_.emplace_back();
     }
     pending_begin_ = pending_end_ = 0;
 }
@@ -286,8 +292,8 @@ void ContactManager::update(BodyStore& bodies, const ShapeStore& shapes, const S
     const double reuse_distance = step.def.manifold_reuse_distance;
     const StepTasks& tasks = step.tasks;
     doomed_.clear();
-    const auto count = std::uint32_t(contacts.size()); // the loop adds and removes none
-    edge_inputs.resize(count);
+    const auto count = std::uint32_t(contacts_.size()); // the loop adds and removes none
+    edge_inputs_.resize(count);
     constexpr std::uint32_t block = 128; // contacts: ~5 us of work
     if (tasks.parallel() && count > block) {
         update_in_blocks(bodies, shapes, sleeping, speculative_distance, reuse_distance, tasks,
@@ -297,16 +303,16 @@ void ContactManager::update(BodyStore& bodies, const ShapeStore& shapes, const S
         constexpr std::uint32_t ahead = 6; // contacts: the shapes' lines arrive before use
         for (std::uint32_t i = 0; i < count; ++i) {
             if (i + ahead < count) {
-                const Contact& next = contacts[i + ahead];
+                const Contact& next = contacts_[i + ahead];
                 // (A contact kept as it is, below, reads no shape.)
                 if (!sleeping || bodies.active(next.body_a) || bodies.active(next.body_b))
                     prefetch_shapes(next, shape);
             }
-            Contact& c = contacts[i];
+            Contact& c = contacts_[i];
             if (sleeping && !bodies.active(c.body_a) && !bodies.active(c.body_b))
                 continue; // its edge input stands too, from its last update
             const Narrowed r =
-                narrow_contact(c, warm_impulses[i], bases[i], edge_inputs[i], shape[c.shape_a],
+                narrow_contact(c, warm_impulses_[i], bases_[i], edge_inputs_[i], shape[c.shape_a],
                                shape[c.shape_b], speculative_distance, reuse_distance);
             if (r == Narrowed::separated)
                 doomed_.push_back(i);
@@ -325,7 +331,9 @@ void ContactManager::touch_changed(const Contact& c, BodyStore& bodies, const Sh
         bodies.wake(c.body_a);
         bodies.wake(c.body_b);
     }
-    (c.touching ? begin_events : end_events)
+    if (!reports_events(shapes, c.shape_a, c.shape_b))
+        return;
+    (c.touching ? begin_events_ : end_events_)
         .push_back({shapes.id(c.shape_a), shapes.id(c.shape_b),
                     bodies.id(shapes.shapes[c.shape_a].body),
                     bodies.id(shapes.shapes[c.shape_b].body)});
@@ -340,7 +348,7 @@ void ContactManager::update_in_blocks(BodyStore& bodies, const ShapeStore& shape
                                       double speculative_distance, double reuse_distance,
                                       const StepTasks& tasks, std::uint32_t block) {
     const auto& shape = shapes.shapes;
-    const auto count = std::uint32_t(contacts.size());
+    const auto count = std::uint32_t(contacts_.size());
     if (outcomes_.size() < count)
         outcomes_.resize(count); // only while the scene grows
     auto run = [&](int first, int last) {
@@ -349,28 +357,28 @@ void ContactManager::update_in_blocks(BodyStore& bodies, const ShapeStore& shape
         constexpr std::uint32_t ahead = 6;
         for (std::uint32_t i = begin; i < end; ++i) {
             if (i + ahead < end) {
-                const Contact& next = contacts[i + ahead];
+                const Contact& next = contacts_[i + ahead];
                 if (!sleeping || bodies.active(next.body_a) || bodies.active(next.body_b))
                     prefetch_shapes(next, shape);
             }
-            Contact& c = contacts[i];
+            Contact& c = contacts_[i];
             if (sleeping && !bodies.active(c.body_a) && !bodies.active(c.body_b)) {
                 outcomes_[i] = std::uint8_t(Narrowed::kept);
                 continue;
             }
             outcomes_[i] = std::uint8_t(
-                narrow_contact(c, warm_impulses[i], bases[i], edge_inputs[i], shape[c.shape_a],
+                narrow_contact(c, warm_impulses_[i], bases_[i], edge_inputs_[i], shape[c.shape_a],
                                shape[c.shape_b], speculative_distance, reuse_distance));
         }
     };
     tasks.for_each_block(blocks_of(count, block), run);
     for (std::uint32_t i = 0; i < count; ++i) {
         auto r = Narrowed(outcomes_[i]);
-        Contact& c = contacts[i];
+        Contact& c = contacts_[i];
         if (r == Narrowed::kept) {
             if (!bodies.active(c.body_a) && !bodies.active(c.body_b))
                 continue;
-            r = narrow_contact(c, warm_impulses[i], bases[i], edge_inputs[i], shape[c.shape_a],
+            r = narrow_contact(c, warm_impulses_[i], bases_[i], edge_inputs_[i], shape[c.shape_a],
                                shape[c.shape_b], speculative_distance, reuse_distance);
         }
         if (r == Narrowed::separated)
@@ -382,8 +390,8 @@ void ContactManager::update_in_blocks(BodyStore& bodies, const ShapeStore& shape
 
 void ContactManager::unprepared_constraint(ContactConstraint& cc, const GraphEdge& edge,
                                            std::uint32_t contact) const {
-    const Contact& c = contacts[contact];
-    const ContactImpulses& warm = warm_impulses[contact];
+    const Contact& c = contacts_[contact];
+    const ContactImpulses& warm = warm_impulses_[contact];
     cc.body_a = edge.body_a;
     cc.body_b = edge.body_b;
     cc.contact = contact;
@@ -408,11 +416,11 @@ const std::vector<ContactInfo>& ContactManager::report(const BodyStore& bodies,
         return infos_;
     infos_stale_ = false;
     infos_.clear();
-    for (std::size_t i = 0; i < contacts.size(); ++i) {
-        const Contact& c = contacts[i];
+    for (std::size_t i = 0; i < contacts_.size(); ++i) {
+        const Contact& c = contacts_[i];
         if (!c.touching)
             continue;
-        const ContactImpulses& total = total_impulses[i];
+        const ContactImpulses& total = total_impulses_[i];
         ContactInfo ci;
         ci.shape_a = shapes.id(c.shape_a);
         ci.shape_b = shapes.id(c.shape_b);
@@ -429,21 +437,25 @@ const std::vector<ContactInfo>& ContactManager::report(const BodyStore& bodies,
     return infos_;
 }
 
+bool ContactManager::reports_events(const ShapeStore& shapes, std::uint32_t sa, std::uint32_t sb) {
+    return shapes.defs[sa].enable_contact_events && shapes.defs[sb].enable_contact_events;
+}
+
 void ContactManager::hash(StateHasher& hs, bool reuse) const {
     hs(std::uint64_t(size()));
     for (std::size_t i = 0; i < size(); ++i) {
-        const Contact& c = contacts[i];
+        const Contact& c = contacts_[i];
         hs(std::uint64_t(c.shape_a) << 32 | c.shape_b);
         hs(std::uint64_t(c.manifold.count));
         for (int j = 0; j < c.manifold.count; ++j) {
             hs(c.manifold.points[j].point);
             hs(c.manifold.points[j].separation);
-            hs(warm_impulses[i].normal[j]);
-            hs(warm_impulses[i].tangent[j]);
+            hs(warm_impulses_[i].normal[j]);
+            hs(warm_impulses_[i].tangent[j]);
         }
         if (reuse && c.manifold.count > 0) {
             // What a reused manifold is computed from (manifold_reuse.hpp).
-            const ManifoldBasis& b = bases[i];
+            const ManifoldBasis& b = bases_[i];
             for (const double x : {b.q_a.c, b.q_a.s, b.q_b.c, b.q_b.s})
                 hs(x);
             hs(b.b_in_a);
@@ -511,14 +523,10 @@ template <class IO, class E> void edge_input_fields(IO& io, E& e) {
 }
 
 template <class IO, class E> void event_fields(IO& io, E& e) {
-    io("shape_a.index", e.shape_a.index);
-    io("shape_a.generation", e.shape_a.generation);
-    io("shape_b.index", e.shape_b.index);
-    io("shape_b.generation", e.shape_b.generation);
-    io("body_a.index", e.body_a.index);
-    io("body_a.generation", e.body_a.generation);
-    io("body_b.index", e.body_b.index);
-    io("body_b.generation", e.body_b.generation);
+    io.handle("shape_a", e.shape_a);
+    io.handle("shape_b", e.shape_b);
+    io.handle("body_a", e.body_a);
+    io.handle("body_b", e.body_b);
 }
 
 } // namespace
@@ -527,11 +535,11 @@ void ContactManager::write(SnapshotWriter& out) const {
     out.section("CONT");
     out.count("contacts", size());
     for (std::uint32_t i = 0; i < size(); ++i)
-        contact_fields(out, contacts[i], warm_impulses[i], total_impulses[i], bases[i]);
-    out.count("edge_inputs", edge_inputs.size());
-    for (const EdgeInput& e : edge_inputs)
+        contact_fields(out, contacts_[i], warm_impulses_[i], total_impulses_[i], bases_[i]);
+    out.count("edge_inputs", edge_inputs_.size());
+    for (const EdgeInput& e : edge_inputs_)
         edge_input_fields(out, e);
-    for (const auto* events : {&begin_events, &end_events}) {
+    for (const auto* events : {&begin_events_, &end_events_}) {
         out.count("events", events->size());
         for (const ContactEvent& e : *events)
             event_fields(out, e);
@@ -547,16 +555,16 @@ void ContactManager::read(SnapshotReader& in, const BodyStore& bodies, const Sha
     in.section("CONT");
     const std::uint32_t ns = std::uint32_t(shapes.shapes.size());
     const std::size_t n = in.count("contacts", 300, null_index - 1);
-    contacts.resize(n);
-    warm_impulses.resize(n);
-    total_impulses.resize(n);
-    bases.resize(n);
+    contacts_.resize(n);
+    warm_impulses_.resize(n);
+    total_impulses_.resize(n);
+    bases_.resize(n);
     for (std::uint32_t i = 0; i < n; ++i) {
         in.in("contacts", i);
         const std::size_t at = in.offset();
-        Contact& c = contacts[i];
+        Contact& c = contacts_[i];
         c = Contact{};
-        contact_fields(in, c, warm_impulses[i], total_impulses[i], bases[i]);
+        contact_fields(in, c, warm_impulses_[i], total_impulses_[i], bases_[i]);
         const bool shapes_ok =
             c.shape_a < c.shape_b && c.shape_b < ns && shapes.shapes[c.shape_a].alive() &&
             shapes.shapes[c.shape_b].alive() && shapes.shapes[c.shape_a].body == c.body_a &&
@@ -571,12 +579,12 @@ void ContactManager::read(SnapshotReader& in, const BodyStore& bodies, const Sha
     }
     in.in(nullptr);
     const std::size_t edges = in.count("edge_inputs", 11, n);
-    edge_inputs.resize(edges);
+    edge_inputs_.resize(edges);
     for (std::size_t k = 0; k < edges; ++k) {
         in.in("edge_inputs", k);
-        edge_input_fields(in, edge_inputs[k]);
+        edge_input_fields(in, edge_inputs_[k]);
     }
-    for (auto* events : {&begin_events, &end_events}) {
+    for (auto* events : {&begin_events_, &end_events_}) {
         const std::size_t m = in.count("events", 32);
         events->resize(m);
         for (std::size_t k = 0; k < m; ++k) {
@@ -593,6 +601,20 @@ void ContactManager::read(SnapshotReader& in, const BodyStore& bodies, const Sha
     }
     pending_begin_ = 0;
     pending_end_ = pending;
+    infos_stale_ = true;
+}
+
+// --- shape_control ---
+
+void ContactManager::refresh_materials(std::uint32_t s, const ShapeStore& shapes) {
+    for (std::uint32_t i = 0; i < contacts_.size(); ++i) {
+        Contact& c = contacts_[i];
+        if (c.shape_a != s && c.shape_b != s)
+            continue;
+        combine_materials(c, shapes);
+        if (i < edge_inputs_.size())
+            edge_inputs_[i].bounces = c.restitution > 0.0;
+    }
     infos_stale_ = true;
 }
 

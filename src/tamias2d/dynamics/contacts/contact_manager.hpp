@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <exception>
 #include <functional>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -45,14 +46,27 @@ class ContactManager {
         bool touching, bounces;
     };
 
-    LargeArray<Contact> contacts;
-    std::vector<EdgeInput> edge_inputs;
-    /// Per contact, indexed alike: the accumulated impulses (warm start) and the last step's
-    /// totals (contact report).
-    LargeArray<ContactImpulses> warm_impulses, total_impulses;
-    /// Per contact, indexed alike: the poses its manifold was computed at (manifold reuse).
-    LargeArray<ManifoldBasis> bases;
-    std::vector<ContactEvent> begin_events, end_events;
+    /// The contacts and the arrays indexed alike, read-only: the step's solver, the islands
+    /// and the hash read them; only this class adds, moves and removes their entries.
+    const LargeArray<Contact>& contacts() const { return contacts_; }
+    const std::vector<EdgeInput>& edge_inputs() const { return edge_inputs_; }
+    const LargeArray<ContactImpulses>& warm_impulses() const { return warm_impulses_; }
+    /// Each contact's impulses summed over the last step (its hit, its push).
+    const LargeArray<ContactImpulses>& total_impulses() const { return total_impulses_; }
+    /// The impulse records as the step's solver writes them (WideContactSolver::store), the one
+    /// writer from outside: the accumulated impulses and the step's totals, per contact.
+    struct ImpulseRecords {
+        std::span<ContactImpulses> warm, totals;
+    };
+    ImpulseRecords impulse_records() { return {warm_impulses_, total_impulses_}; }
+    /// The contacts that began and stopped touching in the last step, in the order found.
+    const std::vector<ContactEvent>& begin_events() const { return begin_events_; }
+    const std::vector<ContactEvent>& end_events() const { return end_events_; }
+    /// A step's events start empty (and a refused step reports none).
+    void clear_events() {
+        begin_events_.clear();
+        end_events_.clear();
+    }
     /// The user's filter, asked for each new pair the rules admit (empty: none).
     std::function<bool(ShapeId, ShapeId)> custom_filter;
     /// The user's filter's answer for shapes a and b (true when there is none). An exception
@@ -69,7 +83,7 @@ class ContactManager {
     bool should_collide(const BodyStore& bodies, const ShapeStore& shapes, const JointStore& joints,
                         std::uint32_t sa, std::uint32_t sb) const;
 
-    std::uint32_t size() const { return std::uint32_t(contacts.size()); }
+    std::uint32_t size() const { return std::uint32_t(contacts_.size()); }
 
     /// New contacts for the pairs the broad phase found since the last step (creation order),
     /// except between two shapes of one body, two immovable bodies, or bodies a joint keeps
@@ -86,7 +100,7 @@ class ContactManager {
     /// distance is its speculative_distance.)
     void update(BodyStore& bodies, const ShapeStore& shapes, const StepContext& step);
     /// Every body asleep: every contact stands as it is, its edge input included.
-    void keep_all() { edge_inputs.resize(contacts.size()); }
+    void keep_all() { edge_inputs_.resize(contacts_.size()); }
     /// Destroys every contact of shape s (its end events and wakes included).
     void destroy_of_shape(std::uint32_t s, BodyStore& bodies, const ShapeStore& shapes);
     /// Destroys every contact between bodies a and b (a joint now keeps them apart).
@@ -126,8 +140,28 @@ class ContactManager {
     /// not two live shapes (in order, once) of the bodies it names, or a manifold of more than
     /// two points.
     void read(SnapshotReader& in, const BodyStore& bodies, const ShapeStore& shapes);
+    // --- events ---
+    /// Whether the begin and end events of the pair of shapes sa and sb are reported: both
+    /// shapes allow them (ShapeDef::enable_contact_events).
+    static bool reports_events(const ShapeStore& shapes, std::uint32_t sa, std::uint32_t sb);
+    // --- shape_control ---
+    /// Shape s's material changed: its contacts take the new combined friction and restitution
+    /// now (the manifolds and impulses are kept).
+    void refresh_materials(std::uint32_t s, const ShapeStore& shapes);
 
   private:
+    /// Tests fill the arrays of their own contacts (tests/support).
+    friend struct ContactManagerAccess;
+
+    LargeArray<Contact> contacts_;
+    std::vector<EdgeInput> edge_inputs_;
+    /// Per contact, indexed alike: the accumulated impulses (warm start) and the last step's
+    /// totals (contact report).
+    LargeArray<ContactImpulses> warm_impulses_, total_impulses_;
+    /// Per contact, indexed alike: the poses its manifold was computed at (manifold reuse).
+    LargeArray<ManifoldBasis> bases_;
+    std::vector<ContactEvent> begin_events_, end_events_;
+
     void destroy(std::uint32_t i, BodyStore& bodies, const ShapeStore& shapes);
     /// update's parallel form: the contacts' own work in blocks of `block`, then the rest in
     /// contact order.

@@ -61,13 +61,16 @@ void SensorOverlaps::update(const BodyStore& bodies, const ShapeStore& shapes,
         const Shape& ss = shapes.shapes[sensor.shape];
         const Body& sb = bodies.bodies[ss.body];
         now_.clear();
+        // A sensor whose events are off detects nothing: its overlaps end, with end events.
+        const bool detects = shapes.defs[sensor.shape].enable_sensor_events;
         shapes.broad_phase.query(compute_aabb(ss.collider, ss.body_xf), [&](int proxy) {
             const std::uint32_t v = shapes.broad_phase.user_data(proxy);
             const Shape& vs = shapes.shapes[v];
             const ShapeDef& vd = shapes.defs[v];
-            // Not itself or its own body, not another sensor, not two static bodies; the
-            // filters (DD27) and the game's filter decide the rest, as for contacts.
-            if (vs.body == ss.body || vd.is_sensor ||
+            // Not itself or its own body, not another sensor, not a shape whose sensor events
+            // are off, not two static bodies; the filters (DD27) and the game's filter decide
+            // the rest, as for contacts.
+            if (!detects || vs.body == ss.body || vd.is_sensor || !vd.enable_sensor_events ||
                 (sb.type == BodyType::static_body &&
                  bodies.bodies[vs.body].type == BodyType::static_body) ||
                 !admits(shapes.defs[sensor.shape].filter, vd.filter) ||
@@ -100,14 +103,10 @@ void SensorOverlaps::update(const BodyStore& bodies, const ShapeStore& shapes,
 namespace {
 
 template <class IO, class E> void sensor_event_fields(IO& io, E& e) {
-    io("sensor.index", e.sensor.index);
-    io("sensor.generation", e.sensor.generation);
-    io("visitor.index", e.visitor.index);
-    io("visitor.generation", e.visitor.generation);
-    io("sensor_body.index", e.sensor_body.index);
-    io("sensor_body.generation", e.sensor_body.generation);
-    io("visitor_body.index", e.visitor_body.index);
-    io("visitor_body.generation", e.visitor_body.generation);
+    io.handle("sensor", e.sensor);
+    io.handle("visitor", e.visitor);
+    io.handle("sensor_body", e.sensor_body);
+    io.handle("visitor_body", e.visitor_body);
 }
 
 } // namespace
@@ -138,7 +137,7 @@ void SensorOverlaps::read(SnapshotReader& in, const ShapeStore& shapes) {
         Sensor& s = sensors_[k];
         const std::size_t at = in.offset();
         in.index("shape", s.shape, ns);
-        in.require(shapes.shapes[s.shape].alive() && shapes.defs[s.shape].is_sensor, "shape",
+        in.require(shapes.slots.live(s.shape) && shapes.defs[s.shape].is_sensor, "shape",
                    "must be a live sensor shape", at);
         s.visitors.resize(in.count("visitors", 4, ns));
         for (std::size_t v = 0; v < s.visitors.size(); ++v) {
@@ -158,6 +157,15 @@ void SensorOverlaps::read(SnapshotReader& in, const ShapeStore& shapes) {
         }
     }
     in.in(nullptr);
+}
+
+const std::vector<std::uint32_t>& SensorOverlaps::visitors(std::uint32_t sensor_shape) const {
+    static const std::vector<std::uint32_t> none;
+    for (const Sensor& sensor : sensors_) {
+        if (sensor.shape == sensor_shape)
+            return sensor.visitors;
+    }
+    return none;
 }
 
 } // namespace tamias2d

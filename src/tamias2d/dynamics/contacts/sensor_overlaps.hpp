@@ -40,6 +40,10 @@ class SensorOverlaps {
     /// Reads what write wrote into this empty set (`shapes` already read); throws SnapshotError
     /// for a sensor that is not a live sensor shape or visitors that are not ascending shapes.
     void read(SnapshotReader& in, const ShapeStore& shapes);
+    // --- events ---
+    /// \srs{DD28} The shapes overlapping sensor shape s after the last step (less those
+    /// destroyed since), in shape order: the set its begin and end events build.
+    const std::vector<std::uint32_t>& visitors(std::uint32_t sensor_shape) const;
 
   private:
     struct Sensor {

@@ -283,9 +283,10 @@ void WideContactSolver::store(std::span<ContactImpulses> warm, std::span<Contact
                 const WideContactConstraintPoint& q = w.points[j];
                 accumulated.normal[j] = q.normal_impulse[l];
                 accumulated.tangent[j] = q.tangent_impulse[l];
-                total.normal[j] = q.total_normal_impulse[l];
                 total.tangent[j] = q.total_tangent_impulse[l];
-                if (w.restitution_slot[l] != no_slot)
+                if (w.restitution_slot[l] == no_slot)
+                    total.normal[j] = q.total_normal_impulse[l];
+                else // the normal total after the restitution pass, from its copy
                     copy_out(q, l, bouncing[w.restitution_slot[l]].points[j]);
             }
         }

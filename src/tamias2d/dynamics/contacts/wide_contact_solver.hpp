@@ -74,8 +74,9 @@ class WideContactSolver {
     /// Copies the impulses into the persistent contacts' records, indexed like the contacts: the
     /// accumulated ones into `warm` (warm start next step), the step's totals into `totals`
     /// (contact report); and, for the manifolds that can bounce, into the restitution pass's
-    /// copies (by slot). Packs [begin, end): each contact and slot is written by one pack, so
-    /// disjoint ranges may be stored on different threads.
+    /// copies (by slot), whose normal totals the caller writes after that pass. Packs [begin, end):
+    /// each contact and slot is written by one pack, so disjoint ranges may be stored on different
+    /// threads.
     void store(std::span<ContactImpulses> warm, std::span<ContactImpulses> totals,
                std::span<ContactConstraint> bouncing, std::size_t begin, std::size_t end) const;
 

@@ -19,6 +19,9 @@ Joint make_joint(const DistanceJointDef& def, const Body& a, const Body& b) {
     j.enable_limit = def.enable_limit;
     j.lower_limit = def.min_length;
     j.upper_limit = def.max_length;
+    j.enable_motor = def.enable_motor;
+    j.motor_speed = def.motor_speed;
+    j.max_motor = def.max_motor_force;
     j.collide_connected = def.collide_connected;
     j.break_force = def.break_force;
     return j;
@@ -31,15 +34,18 @@ void warm_start_distance(const Joint& j, std::span<SolverBody> bodies) {
     const Vec2d r_b = anchor_b(j);
     bridge::apply_axial_impulse(a, bridge::moment_arm(r_a, j.step.axis), b,
                                 bridge::moment_arm(r_b, j.step.axis), j.step.axis,
-                                j.step.axial_impulse + j.step.lower_impulse - j.step.upper_impulse);
+                                distance_axial_impulse(j));
 }
 
 void solve_distance(Joint& j, std::span<SolverBody> bodies, const Softness& rigid, double h,
                     bool use_bias) {
     const bool spring = j.hertz > 0.0;
-    // Limits bound a spring's travel (a rigid rod has none to bound); a spring is not relaxed.
-    const bool limits = spring && j.enable_limit;
-    if (spring && !use_bias && !limits)
+    // A rigid rod holds the length unless the motor drives it (DD35: the rod gives way to the
+    // motor, a winch). Limits bound a free length's travel (a rigid rod has none to bound); a
+    // spring is not relaxed.
+    const bool motor = j.enable_motor;
+    const bool limits = (spring || motor) && j.enable_limit;
+    if (spring && !use_bias && !limits && !motor)
         return;
     SolverBody& a = bodies[j.step.solver_a];
     SolverBody& b = bodies[j.step.solver_b];
@@ -50,7 +56,7 @@ void solve_distance(Joint& j, std::span<SolverBody> bodies, const Softness& rigi
     bridge::distance_axis(j.step.center_offset + (b.dp - a.dp) + (r_b - r_a), length, j.step.axis);
     const double arm_a = bridge::moment_arm(r_a, j.step.axis),
                  arm_b = bridge::moment_arm(r_b, j.step.axis);
-    if (!spring || use_bias) {
+    if (spring ? use_bias : !motor) {
         double rhs = bridge::axial_velocity_error(a, arm_a, b, arm_b, j.step.axis);
         double mass_scale = 1.0, impulse_scale = 0.0;
         if (use_bias) {
@@ -64,6 +70,14 @@ void solve_distance(Joint& j, std::span<SolverBody> bodies, const Softness& rigi
                                                     impulse_scale, j.step.axial_impulse);
         j.step.axial_impulse += lambda;
         bridge::apply_axial_impulse(a, arm_a, b, arm_b, j.step.axis, lambda);
+    }
+    if (motor) {
+        const double rate = bridge::axial_velocity_error(a, arm_a, b, arm_b, j.step.axis);
+        const double updated = bridge::distance_motor_update(
+            a, arm_a, b, arm_b, rate, j.motor_speed, j.max_motor, h, j.step.motor_impulse);
+        bridge::apply_axial_impulse(a, arm_a, b, arm_b, j.step.axis,
+                                    updated - j.step.motor_impulse);
+        j.step.motor_impulse = updated;
     }
     if (limits)
         solve_axial_limits(j, a, b, arm_a, arm_b, j.step.axis, length, rigid, h, use_bias);

@@ -1,7 +1,7 @@
 // The distance joint (internal), made from its definition and solved in the soft step: DD20's
 // constraint along the anchors' axis, rigid (IM6's soft bias, relaxed like the revolute joint) or a
 // spring-damper (the joint's own softness, in the biased iteration only: a spring is a force, not
-// an error to relax).
+// an error to relax), and DD35's motor on the length's rate.
 #pragma once
 
 #include <span>

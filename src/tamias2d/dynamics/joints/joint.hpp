@@ -8,6 +8,7 @@
 #include <limits>
 #include <type_traits>
 
+#include "tamias2d/dynamics/softness.hpp"
 #include "tamias2d/math/vec2d.hpp"
 
 namespace tamias2d {
@@ -51,16 +52,19 @@ struct JointStepState {
     /// write-back will place them: the step solver updates them after each position half, one
     /// cosine and sine per body rather than per joint and pass.
     Rot q_a{}, q_b{};
+    /// The joint's own soft bias for this step (Joint::tuned), set by the step solver.
+    Softness tuning{};
 };
 
 struct Joint {
     JointType type = JointType::revolute;
-    bool alive = false;
     bool collide_connected = false;
-    std::uint32_t generation = 0;
     std::uint32_t body_a = 0, body_b = 0;     ///< world body indices
     Vec2d local_anchor_a{}, local_anchor_b{}; ///< m, the pin in each body's frame (from origin)
     double break_force = std::numeric_limits<double>::infinity(); ///< N
+    /// N and N m: above these the joint is reported (World::joint_events); infinite: never.
+    double force_threshold = std::numeric_limits<double>::infinity();
+    double torque_threshold = std::numeric_limits<double>::infinity();
     // A spring (distance, target, revolute, prismatic, wheel; a weld's linear part): hertz 0
     // is rigid (distance, weld) or no spring. A distance joint's rest length.
     double length = 0.0, hertz = 0.0, damping_ratio = 0.0;
@@ -82,6 +86,13 @@ struct Joint {
     Vec2d target{};
     double max_force = std::numeric_limits<double>::infinity();
     double max_torque = 0.0, correction_factor = 0.0;
+    // Set after creation (World's joint_control calls): the value a revolute, prismatic or
+    // wheel joint's spring pulls the angle (rad) or translation (m) to; the torque (N m) above
+    // which the joint breaks (DD36); the joint's own soft bias (DD37) in place of the world's.
+    double spring_target = 0.0;
+    double break_torque = std::numeric_limits<double>::infinity();
+    bool tuned = false;
+    double tuning_hertz = 0.0, tuning_damping_ratio = 0.0;
 
     JointStepState step; ///< what a step writes (copied by value to refuse a diverged step)
 };
@@ -109,12 +120,19 @@ inline double reaction_angular_impulse(const Joint& j) {
     return 0.0;
 }
 
+/// A distance joint's impulse along its axis in the last substep (N s): the rod's or spring's,
+/// the limits', and the motor's while it is enabled (DD35).
+inline double distance_axial_impulse(const Joint& j) {
+    const double held = j.step.axial_impulse + j.step.lower_impulse - j.step.upper_impulse;
+    return j.enable_motor ? held + j.step.motor_impulse : held;
+}
+
 /// The impulse (N s) the joint applied to body B in the last substep: over the substep's
 /// length, its reaction force.
 inline Vec2d reaction_impulse(const Joint& j) {
     switch (j.type) {
     case JointType::distance:
-        return (j.step.axial_impulse + j.step.lower_impulse - j.step.upper_impulse) * j.step.axis;
+        return distance_axial_impulse(j) * j.step.axis;
     case JointType::prismatic:
         return j.step.perp_impulse * left_perp(j.step.axis) +
                (j.step.spring_impulse + j.step.motor_impulse + j.step.lower_impulse -

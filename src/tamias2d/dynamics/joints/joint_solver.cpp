@@ -101,8 +101,9 @@ void solve_axial_limits(Joint& j, SolverBody& a, SolverBody& b, double arm_a, do
 void solve_axial_spring(Joint& j, SolverBody& a, SolverBody& b, double arm_a, double arm_b, Vec2d n,
                         double value, double h) {
     const Softness soft = make_joint_softness(j.hertz, j.damping_ratio, h);
-    const double rhs = bridge::biased_error(bridge::axial_velocity_error(a, arm_a, b, arm_b, n),
-                                            soft.bias_rate, value);
+    const double rhs =
+        bridge::biased_error(bridge::axial_velocity_error(a, arm_a, b, arm_b, n), soft.bias_rate,
+                             bridge::axial_spring_error(value, j.spring_target));
     const double lambda = bridge::axial_impulse(a, arm_a, b, arm_b, rhs, soft.mass_scale,
                                                 soft.impulse_scale, j.step.spring_impulse);
     j.step.spring_impulse += lambda;

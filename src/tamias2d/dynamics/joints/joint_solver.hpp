@@ -56,7 +56,8 @@ void solve_angular_limits(Joint& j, SolverBody& a, SolverBody& b, const Softness
 /// arms.
 void solve_axial_limits(Joint& j, SolverBody& a, SolverBody& b, double arm_a, double arm_b, Vec2d n,
                         double value, const Softness& softness, double h, bool use_bias);
-/// DD23: a spring along the axis n pulling `value` to 0 (soft solve only).
+/// DD23: a spring along the axis n pulling `value` to the joint's spring target (soft solve
+/// only).
 void solve_axial_spring(Joint& j, SolverBody& a, SolverBody& b, double arm_a, double arm_b, Vec2d n,
                         double value, double h);
 

@@ -84,46 +84,25 @@ void validate_levers(const BodyStore& bodies, const Joint& j, const std::string&
 }
 
 Joint& JointStore::get(JointId id) {
-    if (!is_valid(id)) {
-        throw InvalidHandle("stale or unknown JointId " + std::to_string(id.index) + ":" +
-                            std::to_string(id.generation));
-    }
+    slots.check(id);
     return joints[id.index];
 }
 
 Joint& JointStore::get(JointId id, std::initializer_list<JointType> kinds, const char* call,
                        const char* rule) {
-    Joint& j = get(id);
-    if (std::find(kinds.begin(), kinds.end(), j.type) == kinds.end())
-        throw WrongKind(call, "joint[" + std::to_string(id.index) + "]", joint_kind_name(j.type),
-                        rule);
-    return j;
-}
-
-bool JointStore::is_valid(JointId id) const {
-    return id.index < joints.size() && joints[id.index].alive &&
-           joints[id.index].generation == id.generation;
+    return get_of(id, std::span<const JointType>(kinds.begin(), kinds.size()), call, rule);
 }
 
 std::uint32_t JointStore::create(const Joint& joint) {
-    std::uint32_t i;
-    if (!free_slots_.empty()) {
-        i = free_slots_.back();
-        free_slots_.pop_back();
-    } else {
-        i = std::uint32_t(joints.size());
+    const std::uint32_t i = slots.acquire();
+    if (i == joints.size())
         joints.emplace_back();
-    }
-    const std::uint32_t generation = joints[i].generation + 1;
     joints[i] = joint;
-    joints[i].generation = generation;
-    joints[i].alive = true;
     const std::uint32_t top = std::max(joint.body_a, joint.body_b);
     if (by_body_.size() <= top)
         by_body_.resize(top + 1);
     by_body_[joint.body_a].push_back(i);
     by_body_[joint.body_b].push_back(i);
-    ++live_;
     return i;
 }
 
@@ -133,22 +112,16 @@ void JointStore::destroy(std::uint32_t i) {
         auto& list = by_body_[body];
         list.erase(std::find(list.begin(), list.end(), i));
     }
-    j.alive = false;
-    free_slots_.push_back(i);
-    --live_;
+    j.step.solver_a = j.step.solver_b = 0;
+    slots.release(i);
 }
 
 void JointStore::unjoin(std::uint32_t i, BodyStore& bodies, ShapeStore& shapes) {
     const Joint& j = joints[i];
     bodies.wake(j.body_a);
     bodies.wake(j.body_b);
-    if (!j.collide_connected) {
-        const std::uint32_t body =
-            bodies.bodies[j.body_b].type == BodyType::static_body ? j.body_a : j.body_b;
-        for (std::uint32_t s = bodies.bodies[body].first_shape; s != null_index;
-             s = shapes.shapes[s].next)
-            shapes.broad_phase.touch_proxy(shapes.shapes[s].proxy);
-    }
+    if (!j.collide_connected)
+        touch_pairs(j, bodies, shapes);
     destroy(i);
 }
 
@@ -169,7 +142,7 @@ bool JointStore::filters(std::uint32_t a, std::uint32_t b) const {
 
 void JointStore::check_levers(const BodyStore& bodies) const {
     for (std::uint32_t k = 0; k < joints.size(); ++k) {
-        if (joints[k].alive)
+        if (alive(k))
             validate_levers(bodies, joints[k], "joint[" + std::to_string(k) + "].");
     }
 }
@@ -198,8 +171,11 @@ void JointStore::refuse_step(std::uint32_t i, BodyStore& bodies, bool sleeping) 
 void JointStore::break_joints(BodyStore& bodies, ShapeStore& shapes) {
     for (std::uint32_t i = 0; i < joints.size(); ++i) {
         const Joint& j = joints[i];
-        if (!j.alive ||
-            !(bridge::reaction_force(length(reaction_impulse(j)), inv_h) > j.break_force))
+        // \srs{DD36} The force's or the torque's threshold crossed.
+        if (!alive(i) ||
+            !bridge::joint_breaks(
+                bridge::reaction_force(length(reaction_impulse(j)), inv_h), j.break_force,
+                bridge::reaction_torque(reaction_angular_impulse(j), inv_h), j.break_torque))
             continue;
         broken.push_back(id(i));
         unjoin(i, bodies, shapes);
@@ -207,11 +183,11 @@ void JointStore::break_joints(BodyStore& bodies, ShapeStore& shapes) {
 }
 
 void JointStore::hash(StateHasher& hs) const {
-    if (live_ > 0) { // (so that worlds without joints hash as they always did)
+    if (live() > 0) { // (so that worlds without joints hash as they always did)
         for (std::uint32_t i = 0; i < joints.size(); ++i) {
             const Joint& j = joints[i];
-            hs(std::uint64_t(j.generation) << 1 | std::uint64_t(j.alive));
-            if (!j.alive)
+            hs(std::uint64_t(slots.generation(i)) << 1 | std::uint64_t(alive(i)));
+            if (!alive(i))
                 continue;
             hs(std::uint64_t(j.type));
             hs(std::uint64_t(j.body_a) << 32 | j.body_b);
@@ -244,6 +220,7 @@ void JointStore::hash(StateHasher& hs) const {
             hs(j.correction_factor);
             hs(j.break_force);
             hs(std::uint64_t(j.collide_connected));
+            hash_controls(hs, j);
         }
     }
 }
@@ -256,14 +233,14 @@ namespace {
 /// one place a field added to Joint or JointStepState is added to snapshots.
 template <class IO, class J> void joint_fields(IO& io, J& j) {
     io.enumeration("type", j.type, JointType::filter);
-    io("alive", j.alive);
     io("collide_connected", j.collide_connected);
-    io("generation", j.generation);
     io("body_a", j.body_a);
     io("body_b", j.body_b);
     io("local_anchor_a", j.local_anchor_a);
     io("local_anchor_b", j.local_anchor_b);
     io("break_force", j.break_force);
+    io("force_threshold", j.force_threshold);
+    io("torque_threshold", j.torque_threshold);
     io("length", j.length);
     io("hertz", j.hertz);
     io("damping_ratio", j.damping_ratio);
@@ -282,6 +259,11 @@ template <class IO, class J> void joint_fields(IO& io, J& j) {
     io("max_force", j.max_force);
     io("max_torque", j.max_torque);
     io("correction_factor", j.correction_factor);
+    io("spring_target", j.spring_target);
+    io("break_torque", j.break_torque);
+    io("tuned", j.tuned);
+    io("tuning_hertz", j.tuning_hertz);
+    io("tuning_damping_ratio", j.tuning_damping_ratio);
     auto& st = j.step;
     io("step.linear_impulse", st.linear_impulse);
     io("step.axial_impulse", st.axial_impulse);
@@ -302,18 +284,18 @@ template <class IO, class J> void joint_fields(IO& io, J& j) {
     io("step.center_b", st.center_b);
     io("step.q_a", st.q_a);
     io("step.q_b", st.q_b);
+    io("step.tuning.bias_rate", st.tuning.bias_rate);
+    io("step.tuning.mass_scale", st.tuning.mass_scale);
+    io("step.tuning.impulse_scale", st.tuning.impulse_scale);
 }
 
 } // namespace
 
 void JointStore::write(SnapshotWriter& out) const {
     out.section("JOIN");
-    out.count("joints", joints.size());
+    slots.write(out);
     for (const Joint& j : joints)
         joint_fields(out, j);
-    out.count("free_slots", free_slots_.size());
-    for (const std::uint32_t f : free_slots_)
-        out.index("free_slot", f, std::uint32_t(joints.size()));
     out.count("by_body", by_body_.size());
     for (const auto& list : by_body_) {
         out.count("of_body", list.size());
@@ -322,44 +304,33 @@ void JointStore::write(SnapshotWriter& out) const {
     }
     out("inv_h", inv_h);
     out.count("broken", broken.size());
-    for (const JointId& b : broken) {
-        out("broken.index", b.index);
-        out("broken.generation", b.generation);
-    }
+    for (const JointId& b : broken)
+        out.handle("broken", b);
 }
 
 void JointStore::read(SnapshotReader& in, const BodyStore& bodies) {
     in.section("JOIN");
-    const std::size_t n = in.count("joints", 200, null_index - 1);
+    in.in("joints");
+    slots.read(in);
+    const std::size_t n = slots.size();
+    in.require(n <= null_index - 1, "slots", "must be fewer than 4294967295", in.offset());
     joints.resize(n);
-    live_ = 0;
     for (std::uint32_t i = 0; i < n; ++i) {
         in.in("joints", i);
         const std::size_t at = in.offset();
         Joint& j = joints[i];
         j = Joint{};
         joint_fields(in, j);
-        if (!j.alive)
+        if (!alive(i))
             continue;
-        ++live_;
-        in.require(j.body_a < bodies.size() && j.body_b < bodies.size() &&
-                       bodies.bodies[j.body_a].alive && bodies.bodies[j.body_b].alive,
+        in.require(j.body_a < bodies.size() && j.body_b < bodies.size() && bodies.alive(j.body_a) &&
+                       bodies.alive(j.body_b),
                    "body_a", "a live joint's bodies must live", at);
         // A filter joint is never prepared: its solver bodies stay 0 (no constraint to solve).
         in.require(j.type != JointType::filter || (j.step.solver_a == 0 && j.step.solver_b == 0),
                    "step.solver_a", "must be 0 for a filter joint (it is never solved)", at);
     }
     in.in(nullptr);
-    const std::size_t free = in.count("joints.free_slots", 4, n);
-    free_slots_.resize(free);
-    std::vector<std::uint8_t> listed(n, 0);
-    for (std::uint32_t& f : free_slots_) {
-        const std::size_t at = in.offset();
-        in.index("joints.free_slot", f, std::uint32_t(n));
-        in.require(!joints[f].alive && !listed[f], "joints.free_slot",
-                   "must list dead slots, each once", at);
-        listed[f] = 1;
-    }
     // Each live joint once in its body_a's list and once in its body_b's (twice in one list
     // when they are the same body): destroy finds it there.
     std::vector<std::uint8_t> seen(n, 0); // bit 0: under body_a, bit 1: under body_b
@@ -373,9 +344,9 @@ void JointStore::read(SnapshotReader& in, const BodyStore& bodies) {
             const std::size_t at = in.offset();
             in.index("of_body", i, std::uint32_t(n));
             const Joint& j = joints[i];
-            if (j.alive && j.body_a == body && !(seen[i] & 1))
+            if (alive(i) && j.body_a == body && !(seen[i] & 1))
                 seen[i] |= 1;
-            else if (j.alive && j.body_b == body && !(seen[i] & 2))
+            else if (alive(i) && j.body_b == body && !(seen[i] & 2))
                 seen[i] |= 2;
             else
                 in.fail_at(at, "of_body", "must list a live joint of this body, once");
@@ -383,16 +354,44 @@ void JointStore::read(SnapshotReader& in, const BodyStore& bodies) {
     }
     in.in(nullptr);
     for (std::uint32_t i = 0; i < n; ++i)
-        in.require(!joints[i].alive || seen[i] == 3, "joints.by_body",
+        in.require(!alive(i) || seen[i] == 3, "joints.by_body",
                    "must list live joint " + decimal(std::uint64_t(i)) + " under both its bodies",
                    in.offset());
     in("joints.inv_h", inv_h);
     const std::size_t nb = in.count("joints.broken", 8);
     broken.resize(nb);
-    for (JointId& b : broken) {
-        in("broken.index", b.index);
-        in("broken.generation", b.generation);
-    }
+    for (JointId& b : broken)
+        in.handle("broken", b);
+}
+
+// --- joint_control ---
+
+Joint& JointStore::get_of(JointId id, std::span<const JointType> kinds, const char* call,
+                          const char* rule) {
+    Joint& j = get(id);
+    if (std::find(kinds.begin(), kinds.end(), j.type) == kinds.end())
+        throw WrongKind(call, "joint[" + std::to_string(id.index) + "]", joint_kind_name(j.type),
+                        rule);
+    return j;
+}
+
+void JointStore::touch_pairs(const Joint& j, const BodyStore& bodies, ShapeStore& shapes) {
+    const std::uint32_t body =
+        bodies.bodies[j.body_b].type == BodyType::static_body ? j.body_a : j.body_b;
+    for (std::uint32_t s = bodies.bodies[body].first_shape; s != null_index;
+         s = shapes.shapes[s].next)
+        shapes.broad_phase.touch_proxy(shapes.shapes[s].proxy);
+}
+
+void JointStore::hash_controls(StateHasher& hs, const Joint& j) {
+    // Only when one differs from its default: joints never set so hash as they always did.
+    if (j.spring_target == 0.0 && !j.tuned && j.break_torque == Joint{}.break_torque)
+        return;
+    hs(j.spring_target);
+    hs(j.break_torque);
+    hs(std::uint64_t(j.tuned));
+    hs(j.tuning_hertz);
+    hs(j.tuning_damping_ratio);
 }
 
 } // namespace tamias2d

@@ -6,12 +6,14 @@
 
 #include <cstdint>
 #include <initializer_list>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "tamias2d/dynamics/joints/joint.hpp"
 #include "tamias2d/dynamics/sleep.hpp"
 #include "tamias2d/handles.hpp"
+#include "tamias2d/memory/slot_map.hpp"
 
 namespace tamias2d {
 
@@ -36,11 +38,17 @@ void validate_levers(const BodyStore& bodies, const Joint& j, const std::string&
 
 class JointStore {
   public:
-    std::vector<Joint> joints;
+    /// The joints of the world tagged `world` (World::tag).
+    explicit JointStore(std::uint32_t world) : slots(world) {}
+
+    /// Which joints live, their handles' generations and the free slots.
+    SlotMap<JointId> slots;
+    std::vector<Joint> joints;   ///< per slot
     double inv_h = 0.0;          ///< s^-1, the last step's substep rate (reaction forces)
     std::vector<JointId> broken; ///< joints the last step broke
 
-    /// The joint of a handle; throws InvalidHandle for a stale or unknown one.
+    /// The joint of a handle; throws InvalidHandle for a stale or unknown one, WrongWorld for
+    /// one of another world.
     Joint& get(JointId id);
     const Joint& get(JointId id) const { return const_cast<JointStore*>(this)->get(id); }
     /// The joint of a handle for a reading or setter `call` that applies to the `kinds` only:
@@ -52,12 +60,16 @@ class JointStore {
                      const char* rule) const {
         return const_cast<JointStore*>(this)->get(id, kinds, call, rule);
     }
-    bool is_valid(JointId id) const;
-    JointId id(std::uint32_t i) const { return {i, joints[i].generation}; }
-    std::uint32_t live() const { return live_; }
+    bool is_valid(JointId id) const { return slots.is_valid(id); }
+    JointId id(std::uint32_t i) const { return slots.id(i); }
+    /// Whether slot i holds a joint (a destroyed joint's slot does not, until it is reused).
+    bool alive(std::uint32_t i) const { return slots.live(i); }
+    std::uint32_t live() const { return slots.live_count(); }
 
     /// A slot for a joint whose fields (bodies, anchors, options) are set; returns its index.
     std::uint32_t create(const Joint& joint);
+    /// Frees joint i's slot; its solver bodies are cleared, so that the step, which reads the
+    /// joints' array whole, solves it no more (StepSolver's solved).
     void destroy(std::uint32_t i);
     /// Destroys joint i and wakes its bodies. A joint that kept its bodies from colliding
     /// (DD27) no longer does: the shapes of one of its bodies (B, or A when B is static) are
@@ -98,11 +110,23 @@ class JointStore {
     /// SnapshotError for a live joint of a body that does not live, or joint lists that do not
     /// list each live joint once under each of its bodies.
     void read(SnapshotReader& in, const BodyStore& bodies);
+    // --- joint_control ---
+    /// get's kind check for a list of kinds kept by the caller (WrongKind saying `rule`).
+    Joint& get_of(JointId id, std::span<const JointType> kinds, const char* call, const char* rule);
+    const Joint& get_of(JointId id, std::span<const JointType> kinds, const char* call,
+                        const char* rule) const {
+        return const_cast<JointStore*>(this)->get_of(id, kinds, call, rule);
+    }
+    /// Marks the shapes of one of joint j's bodies (B, or A when B is static) moved, so that
+    /// the broad phase reports their pairs again at the next step: a pair the joint kept from
+    /// colliding (at rest, it would not be looked for again) may now collide.
+    static void touch_pairs(const Joint& j, const BodyStore& bodies, ShapeStore& shapes);
+    /// Feeds what the joint_control calls set to the state hash, when any differs from its
+    /// default (a spring target, a break torque, a tuning of the joint's own).
+    static void hash_controls(StateHasher& hs, const Joint& j);
 
   private:
-    std::vector<std::uint32_t> free_slots_;
     std::vector<std::vector<std::uint32_t>> by_body_; ///< per body index: its joints
-    std::uint32_t live_ = 0;
     // What guard_step keeps: the part of each joint a step writes (the step state alone: whole
     // joints, twice the bytes, cost an eighth of a 20 000-joint grid's step), the sleep states
     // and the substep rate.

@@ -20,6 +20,7 @@ Joint make_joint(const MotorJointDef& def, const Body&, const Body&) {
     j.correction_factor = def.correction_factor;
     j.collide_connected = def.collide_connected;
     j.break_force = def.break_force;
+    j.break_torque = def.break_torque;
     return j;
 }
 

@@ -17,6 +17,7 @@ Joint make_joint(const PrismaticJointDef& def, const Body& a, const Body& b) {
     j.enable_motor = def.enable_motor;
     j.motor_speed = def.motor_speed;
     j.max_motor = def.max_motor_force;
+    j.break_torque = def.break_torque;
     j.enable_spring = def.enable_spring;
     j.hertz = def.hertz;
     j.damping_ratio = def.damping_ratio;

@@ -18,6 +18,7 @@ Joint make_joint(const RevoluteJointDef& def, const Body& a, const Body& b) {
     j.enable_spring = def.enable_spring;
     j.hertz = def.hertz;
     j.damping_ratio = def.damping_ratio;
+    j.break_torque = def.break_torque;
     return j;
 }
 
@@ -33,10 +34,11 @@ void solve_revolute(Joint& j, std::span<SolverBody> bodies, const Softness& soft
     SolverBody& a = bodies[j.step.solver_a];
     SolverBody& b = bodies[j.step.solver_b];
     if (j.enable_spring && use_bias) {
-        // DD22's spring: the joint angle pulled to 0 with the spring's own softness.
+        // DD22's spring: the joint angle pulled to its target with the spring's own softness.
         const Softness soft = make_joint_softness(j.hertz, j.damping_ratio, h);
-        const double rhs = bridge::biased_angular_error(bridge::joint_speed(a, b), soft.bias_rate,
-                                                        current_joint_angle(j, a, b));
+        const double rhs = bridge::biased_angular_error(
+            bridge::joint_speed(a, b), soft.bias_rate,
+            bridge::angular_spring_error(current_joint_angle(j, a, b), j.spring_target));
         const double lambda = bridge::angular_impulse(a, b, rhs, soft.mass_scale,
                                                       soft.impulse_scale, j.step.spring_impulse);
         j.step.spring_impulse += lambda;

@@ -13,6 +13,7 @@ Joint make_joint(const WeldJointDef& def, const Body& a, const Body& b) {
     j.damping_ratio = def.linear_damping_ratio;
     j.angular_hertz = def.angular_hertz;
     j.angular_damping_ratio = def.angular_damping_ratio;
+    j.break_torque = def.break_torque;
     return j;
 }
 

@@ -20,6 +20,7 @@ Joint make_joint(const WheelJointDef& def, const Body& a, const Body& b) {
     j.enable_motor = def.enable_motor;
     j.motor_speed = def.motor_speed;
     j.max_motor = def.max_motor_torque;
+    j.break_torque = def.break_torque;
     return j;
 }
 

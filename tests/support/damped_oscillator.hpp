@@ -1,12 +1,13 @@
 // The underdamped harmonic oscillator x'' = -omega^2 x - 2 zeta omega x' (omega = 2 pi f,
 // 0 <= zeta < 1) in closed form: the oracle of every spring test (joint springs are
-// spring-dampers of exactly this law for their effective mass, SRS IM6).
+// spring-dampers of exactly this law for their effective mass, SRS IM6), shared by the joint
+// tests of every kind.
 #pragma once
 
 #include <cmath>
 #include <numbers>
 
-namespace tamias2d::system_test {
+namespace tamias2d::test {
 
 struct DampedOscillator {
     double hertz, zeta;
@@ -23,4 +24,4 @@ struct DampedOscillator {
     }
 };
 
-} // namespace tamias2d::system_test
+} // namespace tamias2d::test

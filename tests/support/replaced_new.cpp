@@ -1,6 +1,6 @@
-// The replaceable global allocation functions ([new.delete]) for reliability_oom_tests, on
-// malloc and aligned_alloc, failing on demand (failing_new.hpp).
-#include "reliability/failing_new.hpp"
+// The replaceable global allocation functions ([new.delete]) on malloc and aligned_alloc,
+// counted and failing on demand (replaced_new.hpp).
+#include "support/replaced_new.hpp"
 
 #include <atomic>
 #include <cstddef>
@@ -16,7 +16,7 @@ namespace {
 
 std::atomic<long> left{-1}; ///< allocations before the failure; -1: never fail
 std::atomic<bool> failed{false}, fail_once{false};
-std::atomic<long> count{0};
+std::atomic<long> count{0}, released{0};
 
 void* allocate(std::size_t n, std::size_t align) noexcept {
     count.fetch_add(1, std::memory_order_relaxed);
@@ -38,9 +38,15 @@ void* allocate_or_throw(std::size_t n, std::size_t align) {
     throw std::bad_alloc();
 }
 
+void release(void* p) noexcept {
+    if (p)
+        released.fetch_add(1, std::memory_order_relaxed);
+    std::free(p);
+}
+
 } // namespace
 
-namespace tamias2d::reliability {
+namespace tamias2d::test {
 void fail_allocation_after(long n, bool once) {
     failed.store(false);
     fail_once.store(once);
@@ -55,7 +61,10 @@ bool allocation_failed() {
 long allocation_count() {
     return count.load();
 }
-} // namespace tamias2d::reliability
+long deallocation_count() {
+    return released.load();
+}
+} // namespace tamias2d::test
 
 void* operator new(std::size_t n) {
     return allocate_or_throw(n, 0);
@@ -82,38 +91,38 @@ void* operator new[](std::size_t n, std::align_val_t a, const std::nothrow_t&) n
     return allocate(n, static_cast<std::size_t>(a));
 }
 void operator delete(void* p) noexcept {
-    std::free(p);
+    release(p);
 }
 void operator delete[](void* p) noexcept {
-    std::free(p);
+    release(p);
 }
 void operator delete(void* p, std::size_t) noexcept {
-    std::free(p);
+    release(p);
 }
 void operator delete[](void* p, std::size_t) noexcept {
-    std::free(p);
+    release(p);
 }
 void operator delete(void* p, std::align_val_t) noexcept {
-    std::free(p);
+    release(p);
 }
 void operator delete[](void* p, std::align_val_t) noexcept {
-    std::free(p);
+    release(p);
 }
 void operator delete(void* p, std::size_t, std::align_val_t) noexcept {
-    std::free(p);
+    release(p);
 }
 void operator delete[](void* p, std::size_t, std::align_val_t) noexcept {
-    std::free(p);
+    release(p);
 }
 void operator delete(void* p, const std::nothrow_t&) noexcept {
-    std::free(p);
+    release(p);
 }
 void operator delete[](void* p, const std::nothrow_t&) noexcept {
-    std::free(p);
+    release(p);
 }
 void operator delete(void* p, std::align_val_t, const std::nothrow_t&) noexcept {
-    std::free(p);
+    release(p);
 }
 void operator delete[](void* p, std::align_val_t, const std::nothrow_t&) noexcept {
-    std::free(p);
+    release(p);
 }

@@ -14,8 +14,8 @@
 #include <new>
 #include <vector>
 
-#include "reliability/failing_new.hpp"
-#include "reliability/reliability_support.hpp"
+#include "support/reliability_support.hpp"
+#include "support/replaced_new.hpp"
 #include "tamias2d/world.hpp"
 
 namespace utf = boost::unit_test;
@@ -44,13 +44,13 @@ void sweep(int before, bool once) {
         const std::vector<BodyId> bodies = w.bodies();
         const std::uint64_t hash = w.state_hash();
         bool threw = false;
-        reliability::fail_allocation_after(n, once);
+        test::fail_allocation_after(n, once);
         try {
             w.step(1.0 / 60.0);
         } catch (const std::bad_alloc&) {
             threw = true;
         }
-        reliability::stop_failing();
+        test::stop_failing();
         if (!threw) {
             BOOST_TEST_MESSAGE("step " << before + 1 << (once ? ", one failure: " : ": ")
                                        << failures << " failure points, " << unchanged
@@ -78,14 +78,14 @@ void sweep(int before, bool once) {
 
 /// The steps (0-based: how many steps come before) among the first 240 that allocate: the
 /// first, when everything is sized, and those where the striker's impact makes new contacts and
-/// the arrays grow. (A settled world allocates nothing: tests/bench/test_no_allocation.cpp.)
+/// the arrays grow. (A settled world allocates nothing: test_no_allocation.cpp.)
 std::vector<int> allocating_steps() {
     std::vector<int> out;
     World w = reliability::busy_world();
     for (int s = 0; s < 240; ++s) {
-        const long before = reliability::allocation_count();
+        const long before = test::allocation_count();
         w.step(1.0 / 60.0);
-        if (reliability::allocation_count() != before)
+        if (test::allocation_count() != before)
             out.push_back(s);
     }
     BOOST_TEST_MESSAGE("steps that allocate (0-based): " << out.size());

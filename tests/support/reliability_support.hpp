@@ -1,6 +1,7 @@
-// Shared pieces of the reliability tests: the process's resident set, whether a sanitizer that
-// keeps freed memory (and so makes resident-set bounds meaningless) is in this build, and a
-// small busy world built without scene files.
+// Shared pieces of the reliability tests (tests/reliability, tests/memory, the soaks of
+// tests/fuzz): the process's resident set, whether a sanitizer that keeps freed memory (and so
+// makes resident-set bounds meaningless) is in this build, and a small busy world built without
+// scene files.
 #pragma once
 
 #include <cstddef>

@@ -6,12 +6,13 @@
 #include <algorithm>
 #include <cmath>
 
-#include "system/damped_oscillator.hpp"
+#include "support/damped_oscillator.hpp"
 #include "system/system_support.hpp"
 
 namespace utf = boost::unit_test;
 using namespace tamias2d;
 using namespace tamias2d::system_test;
+using tamias2d::test::DampedOscillator;
 
 BOOST_AUTO_TEST_SUITE(weld_joint)
 

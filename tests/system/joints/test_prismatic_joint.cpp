@@ -8,12 +8,13 @@
 #include <cmath>
 #include <numbers>
 
-#include "system/damped_oscillator.hpp"
+#include "support/damped_oscillator.hpp"
 #include "system/system_support.hpp"
 
 namespace utf = boost::unit_test;
 using namespace tamias2d;
 using namespace tamias2d::system_test;
+using tamias2d::test::DampedOscillator;
 
 namespace {
 

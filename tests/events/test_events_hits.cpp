@@ -1,0 +1,172 @@
+// Contact hit events (World::contact_hit_events): the approach speed of a dropped ball against
+// the closed-form impact speed, the threshold and the per-shape switch.
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+#include <vector>
+
+#include "tamias2d/world.hpp"
+
+namespace utf = boost::unit_test;
+using namespace tamias2d;
+
+namespace {
+
+constexpr double g = 10.0, dt = 1.0 / 60.0, radius = 0.25;
+constexpr int substeps = 4;
+
+/// A ball of radius 0.25 m whose lowest point is `height` above a static ground (top face
+/// y = 0), at rest, in gravity g, without sleeping.
+struct Drop {
+    World world{WorldDef{.gravity = {0.0, -g}, .substeps = substeps, .enable_sleep = false}};
+    BodyId ground, ball;
+    ShapeId ground_shape, ball_shape;
+    explicit Drop(double height, bool ball_hits = true, bool ground_hits = false) {
+        BodyDef gd;
+        gd.type = BodyType::static_body;
+        gd.position = {0.0, -0.5};
+        ground = world.create_body(gd);
+        ShapeDef floor = box_shape(20.0, 1.0);
+        floor.enable_hit_events = ground_hits;
+        ground_shape = world.create_shape(ground, floor);
+        BodyDef bd;
+        bd.position = {0.0, height + radius};
+        ball = world.create_body(bd);
+        ShapeDef disc = circle_shape(radius);
+        disc.enable_hit_events = ball_hits;
+        ball_shape = world.create_shape(ball, disc);
+    }
+    /// Steps until the first hit event (or `max_steps`); the number of hit events seen in all.
+    int run(int max_steps, ContactHitEvent* first = nullptr, int* first_step = nullptr) {
+        int seen = 0;
+        for (int s = 1; s <= max_steps; ++s) {
+            world.step(dt);
+            const auto hits = world.contact_hit_events();
+            if (!hits.empty() && seen == 0) {
+                if (first)
+                    *first = hits[0];
+                if (first_step)
+                    *first_step = s;
+            }
+            seen += int(hits.size());
+        }
+        return seen;
+    }
+};
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(events_hits)
+
+// Oracle: free fall, closed form. A ball whose lowest point falls from height h reaches the
+// ground at v = sqrt(2 g h). The event reports the approach speed at the start of the step in
+// which the contact pushed, before the solver acts, so it differs from v by what the steps'
+// granularity allows. Below: the impact happens within the reporting step, in which gravity adds
+// at most g dt; and the semi-implicit substeps (h_s = dt / 4) reach a given depth with at most
+// g h_s less speed than the exact fall (after n substeps the speed is n g h_s, the distance
+// fallen g h_s^2 n (n + 1) / 2). Above: the contact exists only within the speculative distance,
+// so a ball may enter the ground by up to one step's travel before it is pushed, gaining at most
+// g dt of speed (v dv = g ds over a depth of at most v dt). Hence
+// |approach_speed - sqrt(2 g h)| <= g (dt + h_s). The normal points from the ground (shape_a,
+// created first) up into the ball; the point lies at the ball's bottom.
+BOOST_AUTO_TEST_CASE(approach_speed_of_a_dropped_ball_is_sqrt_2_g_h, *utf::label("DD11")) {
+    for (const double h : {0.5, 1.0, 2.0, 5.0}) {
+        Drop drop(h);
+        ContactHitEvent hit{};
+        int step = 0;
+        const int count = drop.run(int(std::ceil(std::sqrt(2.0 * h / g) / dt)) + 10, &hit, &step);
+        BOOST_TEST_REQUIRE(count >= 1);
+        const double exact = std::sqrt(2.0 * g * h);
+        const double slack = g * (dt + dt / substeps);
+        BOOST_TEST_MESSAGE("h = " << h << " m: approach " << hit.approach_speed
+                                  << " m/s, sqrt(2 g h) = " << exact << " m/s, at step " << step);
+        BOOST_TEST(hit.approach_speed <= exact + slack);
+        BOOST_TEST(hit.approach_speed >= exact - slack);
+        BOOST_TEST((hit.shape_a == drop.ground_shape && hit.shape_b == drop.ball_shape));
+        BOOST_TEST((hit.body_a == drop.ground && hit.body_b == drop.ball));
+        BOOST_TEST(hit.normal.x == 0.0);
+        BOOST_TEST(hit.normal.y == 1.0);
+        BOOST_TEST(std::abs(hit.point.x) < 1e-9);
+        BOOST_TEST(std::abs(hit.point.y) < 0.02); // the ground's face, within the speculative gap
+        // A ball that does not bounce (restitution 0) hits once: afterwards it rests, its
+        // approach below the 1 m s^-1 threshold.
+        BOOST_TEST(count == 1);
+    }
+}
+
+// Oracle: the threshold's definition. A drop from h hits at about sqrt(2 g h) (above): with the
+// threshold above that speed there is no event, below it there is one; the threshold is changed
+// at run time.
+BOOST_AUTO_TEST_CASE(threshold_selects_the_hits) {
+    const double h = 1.0, exact = std::sqrt(2.0 * g * h); // 4.47 m/s
+    {
+        Drop drop(h);
+        drop.world.set_hit_event_threshold(exact + 0.5);
+        BOOST_TEST(drop.world.settings().hit_event_threshold == exact + 0.5);
+        BOOST_TEST(drop.run(60) == 0);
+    }
+    {
+        Drop drop(h);
+        drop.world.set_hit_event_threshold(exact - 1.0);
+        BOOST_TEST(drop.run(60) == 1);
+    }
+    {
+        World w(WorldDef{.hit_event_threshold = 3.0});
+        BOOST_TEST(w.settings().hit_event_threshold == 3.0);
+    }
+}
+
+// Oracle: the switch's rule (either shape asks). No shape asks: no event; the ground alone, or
+// the ball alone (switched on at run time): one each.
+BOOST_AUTO_TEST_CASE(hits_are_reported_when_either_shape_asks) {
+    {
+        Drop drop(1.0, false, false);
+        BOOST_TEST(!drop.world.hit_events_enabled(drop.ball_shape));
+        BOOST_TEST(drop.run(60) == 0);
+    }
+    {
+        Drop drop(1.0, false, true);
+        BOOST_TEST(drop.run(60) == 1);
+    }
+    {
+        Drop drop(1.0, false, false);
+        drop.world.set_hit_events_enabled(drop.ball_shape, true);
+        BOOST_TEST(drop.world.hit_events_enabled(drop.ball_shape));
+        BOOST_TEST(drop.run(60) == 1);
+    }
+    {
+        Drop drop(1.0, true, false);
+        drop.world.set_hit_events_enabled(drop.ball_shape, false);
+        BOOST_TEST(drop.run(60) == 0);
+    }
+}
+
+// Oracle: free fall again. A ball that bounces (restitution 0.5) hits again: each rebound
+// leaves at C_R times the speed it came with (DD12), so each hit is slower than the last, the
+// first within g (dt + h_s) of sqrt(2 g h) (above).
+BOOST_AUTO_TEST_CASE(a_bouncing_ball_hits_ever_slower) {
+    World world(WorldDef{.gravity = {0.0, -g}, .enable_sleep = false});
+    BodyDef gd;
+    gd.type = BodyType::static_body;
+    gd.position = {0.0, -0.5};
+    world.create_shape(world.create_body(gd), box_shape(20.0, 1.0));
+    BodyDef bd;
+    bd.position = {0.0, 2.0 + radius};
+    const BodyId ball = world.create_body(bd);
+    ShapeDef disc = circle_shape(radius, Material{1.0, 0.5, 0.0});
+    disc.enable_hit_events = true;
+    world.create_shape(ball, disc);
+    std::vector<double> speeds;
+    for (int s = 0; s < 300; ++s) {
+        world.step(dt);
+        for (const ContactHitEvent& e : world.contact_hit_events())
+            speeds.push_back(e.approach_speed);
+    }
+    BOOST_TEST_REQUIRE(speeds.size() >= 2u);
+    BOOST_TEST(std::abs(speeds[0] - std::sqrt(2.0 * g * 2.0)) <= g * (dt + dt / substeps));
+    for (std::size_t k = 1; k < speeds.size(); ++k)
+        BOOST_TEST(speeds[k] < speeds[k - 1]);
+    BOOST_TEST(speeds.back() > 1.0); // the threshold
+}
+
+BOOST_AUTO_TEST_SUITE_END()
