@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 
+#include "tamias2d/user_data.hpp"
 #include "tamias2d/vec2.hpp"
 
 namespace tamias2d {
@@ -68,9 +69,10 @@ struct BodyDef {
     /// With the world's sleeping on (WorldDef::enable_sleep): whether this body may sleep (a
     /// body that may not keeps every body touching it awake), and whether it starts awake.
     bool enable_sleep = true;
-    bool awake = true;   ///< starts awake (false: asleep, e.g. a stack built at rest)
-    LoadFunction load{}; ///< optional F(t), tau(t), added to the persistent loads
-    std::string name{};  ///< free text, for scene files and reports
+    bool awake = true;      ///< starts awake (false: asleep, e.g. a stack built at rest)
+    LoadFunction load{};    ///< optional F(t), tau(t), added to the persistent loads
+    std::string name{};     ///< free text, for scene files and reports
+    UserData user_data = 0; ///< the game's own value (user_data.hpp), not simulation state
 };
 
 } // namespace tamias2d

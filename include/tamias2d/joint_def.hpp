@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "tamias2d/handles.hpp"
+#include "tamias2d/user_data.hpp"
 #include "tamias2d/vec2.hpp"
 
 namespace tamias2d {
@@ -40,6 +41,7 @@ struct RevoluteJointDef {
     bool enable_spring = false;
     double hertz = 0.0;         ///< Hz
     double damping_ratio = 0.0; ///< 1: critically damped
+    UserData user_data = 0;     ///< the game's own value (user_data.hpp), not simulation state
     /// Field by field (a scene's joints compare so after a round trip through JSON).
     friend bool operator==(const RevoluteJointDef&, const RevoluteJointDef&) = default;
 };
@@ -66,6 +68,7 @@ struct DistanceJointDef {
     double max_length = std::numeric_limits<double>::infinity(); ///< m
     bool collide_connected = false; ///< as RevoluteJointDef::collide_connected
     double break_force = std::numeric_limits<double>::infinity(); ///< N, > 0, as for revolute
+    UserData user_data = 0; ///< the game's own value (user_data.hpp), not simulation state
     /// Field by field (a scene's joints compare so after a round trip through JSON).
     friend bool operator==(const DistanceJointDef&, const DistanceJointDef&) = default;
 };
@@ -81,6 +84,7 @@ struct TargetJointDef {
     /// N, > 0: the largest force the joint applies (infinite: unbounded). A few times the
     /// body's weight drags it firmly without flinging it through walls.
     double max_force = std::numeric_limits<double>::infinity();
+    UserData user_data = 0; ///< the game's own value (user_data.hpp), not simulation state
     /// Field by field (a scene's joints compare so after a round trip through JSON).
     friend bool operator==(const TargetJointDef&, const TargetJointDef&) = default;
 };
@@ -109,6 +113,7 @@ struct PrismaticJointDef {
     bool enable_spring = false;
     double hertz = 0.0;         ///< Hz
     double damping_ratio = 0.0; ///< 1: critically damped
+    UserData user_data = 0;     ///< the game's own value (user_data.hpp), not simulation state
     /// Field by field (a scene's joints compare so after a round trip through JSON).
     friend bool operator==(const PrismaticJointDef&, const PrismaticJointDef&) = default;
 };
@@ -128,6 +133,7 @@ struct WeldJointDef {
     double angular_damping_ratio = 0.0; ///< >= 0
     bool collide_connected = false;     ///< as RevoluteJointDef::collide_connected
     double break_force = std::numeric_limits<double>::infinity(); ///< N, > 0, as for revolute
+    UserData user_data = 0; ///< the game's own value (user_data.hpp), not simulation state
     /// Field by field (a scene's joints compare so after a round trip through JSON).
     friend bool operator==(const WeldJointDef&, const WeldJointDef&) = default;
 };
@@ -155,6 +161,7 @@ struct WheelJointDef {
     bool enable_motor = false;
     double motor_speed = 0.0;      ///< rad s^-1
     double max_motor_torque = 0.0; ///< N m, >= 0
+    UserData user_data = 0;        ///< the game's own value (user_data.hpp), not simulation state
     /// Field by field (a scene's joints compare so after a round trip through JSON).
     friend bool operator==(const WheelJointDef&, const WheelJointDef&) = default;
 };
@@ -173,6 +180,7 @@ struct MotorJointDef {
     double correction_factor = 0.3;
     bool collide_connected = false; ///< as RevoluteJointDef::collide_connected
     double break_force = std::numeric_limits<double>::infinity(); ///< N, > 0, as for revolute
+    UserData user_data = 0; ///< the game's own value (user_data.hpp), not simulation state
     /// Field by field (a scene's joints compare so after a round trip through JSON).
     friend bool operator==(const MotorJointDef&, const MotorJointDef&) = default;
 };
@@ -182,8 +190,9 @@ struct MotorJointDef {
 /// being pinned, a bullet that passes its gun. It applies no force and never breaks; destroying
 /// it lets the two collide again.
 struct FilterJointDef {
-    BodyId body_a{}; ///< the first body
-    BodyId body_b{}; ///< the second body; not body_a
+    BodyId body_a{};        ///< the first body
+    BodyId body_b{};        ///< the second body; not body_a
+    UserData user_data = 0; ///< the game's own value (user_data.hpp), not simulation state
     /// Field by field (a scene's joints compare so after a round trip through JSON).
     friend bool operator==(const FilterJointDef&, const FilterJointDef&) = default;
 };

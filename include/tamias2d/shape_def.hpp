@@ -8,6 +8,7 @@
 
 #include "tamias2d/export.hpp"
 #include "tamias2d/shapes.hpp"
+#include "tamias2d/user_data.hpp"
 
 namespace tamias2d {
 
@@ -40,6 +41,7 @@ struct ShapeDef {
     /// that begin and end overlapping it (World::sensor_begin_events), a pickup or a trigger.
     /// Sensors do not detect each other. Its density still counts in its body's mass.
     bool is_sensor = false;
+    UserData user_data = 0; ///< the game's own value (user_data.hpp), not simulation state
 };
 
 /// A rectangle w x h (m) centred on the body origin (or on `center`, rotated by `angle`).

@@ -17,7 +17,9 @@
 #include "tamias2d/export.hpp"
 #include "tamias2d/handles.hpp"
 #include "tamias2d/joint_def.hpp"
+#include "tamias2d/joint_kind.hpp"
 #include "tamias2d/shape_def.hpp"
+#include "tamias2d/user_data.hpp"
 #include "tamias2d/world_def.hpp"
 
 namespace tamias2d {
@@ -262,6 +264,40 @@ class TAMIAS2D_EXPORT World {
     /// to the lower shape index so that the answer is deterministic. Both within the supported
     /// range (DCX_range, |x| <= 1e12 m), so that the answer is never NaN.
     std::optional<RayCastHit> ray_cast(Vec2d origin, Vec2d translation) const;
+
+    // --- identity ---
+    // What a game needs to tie its objects to the world's and to walk from one to another. None
+    // of these calls changes the simulation: user data is not state (state_hash does not see
+    // it), and it survives every other call (a type change, a step, a refused call). Each
+    // throws InvalidHandle for a handle that names nothing, and changes nothing then.
+    void set_user_data(UserData data);              ///< the world's own value (WorldDef::user_data)
+    UserData user_data() const;                     ///< the world's value, 0 unless set
+    void set_user_data(BodyId body, UserData data); ///< BodyDef::user_data, after creation
+    UserData user_data(BodyId body) const;          ///< the body's value, 0 unless set
+    void set_user_data(ShapeId shape, UserData data); ///< ShapeDef::user_data, after creation
+    UserData user_data(ShapeId shape) const;          ///< the shape's value, 0 unless set
+    void set_user_data(JointId joint, UserData data); ///< the joint definition's user_data
+    UserData user_data(JointId joint) const;          ///< the joint's value, 0 unless set
+    BodyId body(ShapeId shape) const;                 ///< the body carrying the shape
+    ShapeType shape_type(ShapeId shape) const;        ///< circle, polygon, capsule, ...
+    /// The shape's geometry in its body's frame (m), as stored: only the member its type
+    /// names is set (a box is a polygon of four vertices).
+    Geometry geometry(ShapeId shape) const;
+    /// m, world frame: the shape's tight bounding box at its body's pose now.
+    Aabb shape_aabb(ShapeId shape) const;
+    /// m, world frame: the union of the body's shapes' tight boxes; a body without shapes
+    /// gives the box of its origin alone (zero width and height).
+    Aabb body_aabb(BodyId body) const;
+    /// The joints holding the body (as body_a or body_b), oldest first.
+    std::vector<JointId> joints(BodyId body) const;
+    /// The body's touching pairs after the last step (as contacts() lists them, in its order):
+    /// those with one of its shapes as shape_a or shape_b.
+    std::vector<ContactInfo> contacts(BodyId body) const;
+    JointKind joint_kind(JointId joint) const; ///< which definition the joint was made from
+    /// The joint's first body (the definition's body_a; a target joint's `body`).
+    BodyId joint_body_a(JointId joint) const;
+    /// The joint's second body (the definition's body_b; a target joint's `body` again).
+    BodyId joint_body_b(JointId joint) const;
 
     /// A hash of the complete simulation state (bit patterns of every double): equal hashes
     /// mean bitwise-equal worlds. Used by the determinism and strong-guarantee tests.

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "tamias2d/task_system.hpp"
+#include "tamias2d/user_data.hpp"
 #include "tamias2d/vec2.hpp"
 
 namespace tamias2d {
@@ -88,6 +89,7 @@ struct WorldDef {
     /// both callbacks or neither; used only when workers > 1, which must then be the number of
     /// worker numbers it hands out.
     TaskSystem task_system{};
+    UserData user_data = 0; ///< the game's own value (user_data.hpp), not simulation state
 };
 
 } // namespace tamias2d

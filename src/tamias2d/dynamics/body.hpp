@@ -68,6 +68,7 @@ struct BodySettings {
     bool fixed_rotation = false;
     bool bullet = false;                                ///< swept against dynamic bodies too (DD29)
     double linear_damping = 0.0, angular_damping = 0.0; ///< s^-1 (DD17, DD18)
+    UserData user_data = 0; ///< the game's own value: never hashed, never read
 };
 
 } // namespace tamias2d

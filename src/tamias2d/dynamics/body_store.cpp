@@ -92,6 +92,7 @@ std::uint32_t BodyStore::create(const BodyDef& def, bool sleeping) {
     b.gravity_scale = def.gravity_scale;
     settings[i] = {def.name,           def.load,   def.mass,           def.inertia,
                    def.fixed_rotation, def.bullet, def.linear_damping, def.angular_damping};
+    settings[i].user_data = def.user_data;
     // \srs{IM5} A dynamic body with either damping coefficient non-zero moves by IM5.
     b.damped =
         def.type == BodyType::dynamic && (def.linear_damping != 0.0 || def.angular_damping != 0.0);

@@ -9,6 +9,7 @@
 #include <type_traits>
 
 #include "tamias2d/math/vec2d.hpp"
+#include "tamias2d/user_data.hpp"
 
 namespace tamias2d {
 
@@ -82,6 +83,8 @@ struct Joint {
     Vec2d target{};
     double max_force = std::numeric_limits<double>::infinity();
     double max_torque = 0.0, correction_factor = 0.0;
+
+    UserData user_data = 0; ///< the game's own value: never hashed, never read
 
     JointStepState step; ///< what a step writes (copied by value to refuse a diverged step)
 };
