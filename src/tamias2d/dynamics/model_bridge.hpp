@@ -25,6 +25,8 @@
 #include "tamias2d/model/dd25_wheel_constraint.hpp"
 #include "tamias2d/model/dd26_motor_constraint.hpp"
 #include "tamias2d/model/dd29_time_of_impact.hpp"
+#include "tamias2d/model/dd33_motion_locks.hpp"
+#include "tamias2d/model/dd35_mass_change.hpp"
 #include "tamias2d/model/im1_translational_motion.hpp"
 #include "tamias2d/model/im2_rotational_motion.hpp"
 #include "tamias2d/model/im3_collision_response.hpp"
@@ -585,5 +587,14 @@ struct Model {
         return {x.x1.value(), x.x2.value()};
     }
 };
+
+// Run-time control: motion locks (DD33), a mass change (DD35).
+inline Vec2d locked_velocity(Vec2d v, bool lock_x, bool lock_y) {
+    return plain(m::dd33::projected_velocity(typed<u::Velocity>(v), lock_x, lock_y));
+}
+inline Vec2d shifted_center_velocity(Vec2d v, double w, Vec2d shift) {
+    return plain(m::dd35::center_velocity(
+        typed<u::Velocity>(v), u::from_value<u::AngularVelocity>(w), typed<u::Length>(shift)));
+}
 
 } // namespace tamias2d::bridge

@@ -103,6 +103,11 @@ class ShapeStore {
     /// life, a live shape's body, geometry, material and (when not the default) filter.
     void hash(StateHasher& hs) const;
 
+    // --- run-time control (World::set_body_type, set_enabled) ---
+    /// Body b's shapes' proxies moved to the tree of its type now (static or not) when they
+    /// are in the other, else marked moved: the next step's broad phase reports their pairs.
+    void refile_proxies(const Body& b);
+
   private:
     /// The proxies refit_fat_box moved, for one BroadPhase::move_proxies call.
     std::vector<BroadPhase::ProxyMove> proxy_moves_;

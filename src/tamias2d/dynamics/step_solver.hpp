@@ -89,6 +89,15 @@ class StepSolver {
                       const ContactSolverSettings* settings, bool use_bias);
     /// The joints' body rotations after a position half (Joint::q_a, q_b).
     void turn_joints(std::vector<Joint>& joints);
+    /// DD33 before a position half (and at the step's end): the locked velocity components
+    /// zeroed. Nothing without a lock.
+    void constrain_velocities();
+    /// The moving bodies with a linear lock this step (DD33), from prepare_bodies.
+    struct LockedBody {
+        std::uint32_t solver;
+        bool x, y;
+    };
+    std::vector<LockedBody> locked_;
 
     LargeArray<SolverBody> solver_bodies_;
     std::vector<Vec2d> accelerations_;

@@ -87,6 +87,14 @@ class JointStore {
     /// slot's generation and life, a live joint's definition and impulses.
     void hash(StateHasher& hs) const;
 
+    // --- run-time control (World::set_body_type, set_enabled) ---
+    /// Wakes the bodies of every joint of body i.
+    void wake_joined(std::uint32_t i, BodyStore& bodies) const;
+    /// Zeroes the impulses (the warm start and the reaction) of every joint of body i: a
+    /// joint that stops being solved must not keep the last ones, to break with or to warm
+    /// start from when it is solved again.
+    void clear_impulses(std::uint32_t i);
+
   private:
     std::vector<std::uint32_t> free_slots_;
     std::vector<std::vector<std::uint32_t>> by_body_; ///< per body index: its joints
