@@ -363,6 +363,31 @@ class TAMIAS2D_EXPORT World {
     /// holds them up may be about to go (a platform the game will remove).
     void wake_touching(BodyId body);
 
+    // --- world_settings ---
+    // The settings of WorldDef that a game may change between steps. Each validates as
+    // WorldDef does (ValidationError naming "world.<field>" and its constraint) and changes
+    // nothing when it throws; setting a value the world already has changes no bit.
+    /// \srs{DD29} WorldDef::enable_continuous.
+    void set_continuous(bool enabled);
+    /// WorldDef::enable_sleep. Off: every sleeping body wakes (its time at rest zero); on: bodies
+    /// start counting their time at rest at the next step.
+    void set_sleeping(bool enabled);
+    /// \srs{IM7} WorldDef::contact_hertz (Hz, > 0), contact_damping_ratio (> 0) and
+    /// contact_push_max_velocity (m s^-1, > 0), from the next step on.
+    void set_contact_tuning(double hertz, double damping_ratio, double push_max_velocity);
+    /// \srs{IM6} WorldDef::joint_hertz (Hz, > 0) and joint_damping_ratio (> 0).
+    void set_joint_tuning(double hertz, double damping_ratio);
+    /// \srs{DD12} WorldDef::restitution_threshold (m s^-1, >= 0).
+    void set_restitution_threshold(double speed);
+    /// \srs{DD34} WorldDef::maximum_linear_speed (m s^-1, > 0; infinite: no limit). A body
+    /// faster than a new, lower limit is slowed to it by the next step.
+    void set_maximum_linear_speed(double speed);
+    /// WorldDef::workers ([1, 256]): the World's own pool is replaced (with a task system,
+    /// its number of worker numbers). The results stay bitwise those of one worker.
+    void set_workers(int workers);
+    /// Bodies awake now (with sleeping off, every enabled body that is not static).
+    std::size_t awake_body_count() const;
+
     /// A hash of the complete simulation state (bit patterns of every double): equal hashes
     /// mean bitwise-equal worlds. Used by the determinism and strong-guarantee tests.
     std::uint64_t state_hash() const;

@@ -2,6 +2,8 @@
 /// World settings. Defaults suit games in metres, kilograms and seconds.
 #pragma once
 
+#include <limits>
+
 #include "tamias2d/task_system.hpp"
 #include "tamias2d/user_data.hpp"
 #include "tamias2d/vec2.hpp"
@@ -67,6 +69,11 @@ struct WorldDef {
     bool enable_continuous = true;
     /// Restitution (DD12) applies when the bodies approach faster than this (m s^-1).
     double restitution_threshold = 0.0;
+    /// \srs{DD34} m s^-1, > 0: no body's centre moves faster; a faster one is slowed to it
+    /// along its direction at each substep (a guard against a game's runaway body, not
+    /// physics: it breaks IM1 while it acts). Infinite, the default: no limit, and IM1 as
+    /// the SRS states it; a game in metres might choose 100 to 400.
+    double maximum_linear_speed = std::numeric_limits<double>::infinity();
     /// Sleeping (dynamics/sleep.hpp): a group of touching bodies that has stayed slower than
     /// both tolerances for time_to_sleep (s) is held still, and its bodies and contacts take no
     /// solver or narrow-phase work, until something wakes it (an awake body touches one of

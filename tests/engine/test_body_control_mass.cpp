@@ -266,6 +266,7 @@ BOOST_AUTO_TEST_CASE(a_bodys_sleep_threshold_replaces_the_worlds) {
     for (int i = 0; i < 60; ++i)
         w.step(dt);
     BOOST_TEST(w.is_awake(b));
+    BOOST_TEST(w.awake_body_count() == 1u);
     w.set_sleep_threshold(b, 1.0);
     BOOST_TEST(w.sleep_threshold(b) == 1.0);
     int steps = 0;
@@ -275,6 +276,7 @@ BOOST_AUTO_TEST_CASE(a_bodys_sleep_threshold_replaces_the_worlds) {
     }
     BOOST_TEST(!w.is_awake(b));
     BOOST_TEST(steps <= 31);
+    BOOST_TEST(w.awake_body_count() == 0u);
     const std::uint64_t before = w.state_hash();
     BOOST_CHECK_THROW(w.set_sleep_threshold(b, -1.0), ValidationError);
     BOOST_CHECK_THROW(w.set_sleep_threshold(b, std::nan("")), ValidationError);

@@ -190,6 +190,8 @@ PERTURBATIONS = [
       "R(phi) turned clockwise (sin phi negated)"),
     P("dd33_motion_locks.hpp", "projected_velocity", "return {lock_x ? zero : v.x, lock_y ? zero : v.y};",
       "return {lock_y ? zero : v.x, lock_x ? zero : v.y};", "the x and y locks swapped"),
+    P("dd34_maximum_linear_speed.hpp", "limited_velocity", "return (v_max / norm(v)) * v;",
+      "return (2.0 * v_max / norm(v)) * v;", "the speed limited to twice v_max"),
     P("dd35_mass_change.hpp", "center_velocity",
       "return dd09::point_velocity<double>(v, omega, center_shift);",
       "return dd09::point_velocity<double>(v, -omega, center_shift);",

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 
 #include "tamias2d/dynamics/body_store.hpp"
 #include "tamias2d/dynamics/contacts/contact_manager.hpp"
@@ -523,7 +524,7 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
                 solve_joint(j, solver_bodies_, joint_softness, h, true);
         }
         contact_pass(tasks, streams, &st, true);
-        constrain_velocities();
+        constrain_velocities(def.maximum_linear_speed, tasks);
         integrate_positions(h, tasks);
         turn_joints(joints);
         for (Joint& j : joints) {
@@ -566,15 +567,21 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
         for (int j = 0; j < b.count; ++j)
             contacts.total_impulses[b.contact].normal[j] = b.points[j].total_normal_impulse;
     }
-    // The velocities the step leaves keep the locks too (DD33).
-    constrain_velocities();
+    // The velocities the step leaves keep the locks and the limit too (DD33, DD34).
+    constrain_velocities(def.maximum_linear_speed, tasks);
 }
 
-void StepSolver::constrain_velocities() {
+void StepSolver::constrain_velocities(double max_speed, const StepTasks& tasks) {
     for (const LockedBody& l : locked_) {
         SolverBody& sb = solver_bodies_[l.solver];
         sb.v = bridge::locked_velocity(sb.v, l.x, l.y);
     }
+    if (!(max_speed < std::numeric_limits<double>::infinity()))
+        return;
+    over_solver_bodies(solver_bodies_.size(), tasks, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t k = begin; k < end; ++k)
+            solver_bodies_[k].v = bridge::limited_velocity(solver_bodies_[k].v, max_speed);
+    });
 }
 
 void StepSolver::contact_pass(const StepTasks& tasks, std::uint32_t streams,
