@@ -50,6 +50,9 @@ struct Driver {
     Rng kinds;
     /// Hand-made geometry (hand_made), from a third stream for the same reason.
     Rng hand;
+    /// The run-time control and identity calls (control_call), from a fourth stream for the
+    /// same reason.
+    Rng control;
     /// What the oracle of an accepted hand-made polygon found wrong (empty: nothing).
     std::string shape_problem;
     World world;
@@ -59,7 +62,7 @@ struct Driver {
     long accepted = 0, rejected = 0;
     explicit Driver(std::uint64_t seed)
         : r(seed), kinds(seed ^ 0x9e3779b97f4a7c15u), hand(seed ^ 0xc2b2ae3d27d4eb4fu),
-          world(make_def(r)) {}
+          control(seed ^ 0x165667b19e3779f9u), world(make_def(r)) {}
 
     static WorldDef make_def(Rng& r) {
         WorldDef d;
@@ -354,10 +357,165 @@ struct Driver {
         return "body#" + std::to_string(b.index) + "." + std::to_string(b.generation);
     }
 
+    // --- body_control, world_settings, identity: their calls, drawn from `control` ---
+    BodyId control_body() {
+        if (bodies.empty() || control.chance(5))
+            return BodyId{static_cast<std::uint32_t>(control.below(8)),
+                          static_cast<std::uint32_t>(control.below(3))};
+        return bodies[control.below(bodies.size())];
+    }
+    ShapeId control_shape() {
+        if (shapes.empty() || control.chance(5))
+            return ShapeId{static_cast<std::uint32_t>(control.below(8)), 0};
+        return shapes[control.below(shapes.size())];
+    }
+    JointId control_joint() {
+        if (joints.empty() || control.chance(5))
+            return JointId{static_cast<std::uint32_t>(control.below(4)), 0};
+        return joints[control.below(joints.size())];
+    }
+    double control_value(double lo, double hi) {
+        return control.chance(75) ? control.between(lo, hi) : any_double(control);
+    }
+    void control_call() {
+        const BodyId b = control_body();
+        switch (control.below(14)) {
+        case 0: {
+            const auto type = static_cast<BodyType>(control.below(4)); // 3: out of the enum
+            last << "set_body_type(" << str(b) << ", " << static_cast<int>(type) << ")";
+            world.set_body_type(b, type);
+            break;
+        }
+        case 1: {
+            const bool on = control.chance(60);
+            last << "set_enabled(" << str(b) << ", " << on << ")";
+            world.set_enabled(b, on);
+            break;
+        }
+        case 2: {
+            const double scale = control_value(-2.0, 2.0);
+            last << "set_gravity_scale(" << str(b) << ", " << scale << ")";
+            world.set_gravity_scale(b, scale);
+            break;
+        }
+        case 3: {
+            const bool on = control.chance(50);
+            last << "set_bullet(" << str(b) << ", " << on << ")";
+            world.set_bullet(b, on);
+            break;
+        }
+        case 4: {
+            const MotionLocks locks{control.chance(30), control.chance(30), control.chance(30)};
+            last << "set_motion_locks(" << str(b) << ", " << locks.linear_x << locks.linear_y
+                 << locks.angular << ")";
+            world.set_motion_locks(b, locks);
+            break;
+        }
+        case 5: {
+            const double inertia = control_value(0.01, 10.0);
+            const Vec2d center{control_value(-1.0, 1.0), control_value(-1.0, 1.0)};
+            const double mass = control_value(0.01, 10.0);
+            last << "set_mass_data(" << str(b) << ", " << mass << ", " << str(center) << ", "
+                 << inertia << ")";
+            world.set_mass_data(b, BodyMassData{mass, center, inertia});
+            break;
+        }
+        case 6:
+            last << "reset_mass_data(" << str(b) << ")";
+            world.reset_mass_data(b);
+            break;
+        case 7: {
+            const double speed = control_value(0.0, 2.0);
+            last << "set_sleep_threshold(" << str(b) << ", " << speed << ")";
+            world.set_sleep_threshold(b, speed);
+            break;
+        }
+        case 8:
+            last << "wake_touching(" << str(b) << ")";
+            world.wake_touching(b);
+            break;
+        case 9: {
+            const auto data = static_cast<UserData>(control.bits());
+            const ShapeId s = control_shape();
+            const JointId j = control_joint();
+            last << "set_user_data(" << str(b) << ", shape#" << s.index << ", joint#" << j.index
+                 << ")";
+            world.set_user_data(data);
+            world.set_user_data(b, data);
+            world.set_user_data(s, data);
+            world.set_user_data(j, data);
+            break;
+        }
+        case 10: { // the identity readings are const: they may refuse, never change the world
+            const ShapeId s = control_shape();
+            const JointId j = control_joint();
+            last << "identity readings(" << str(b) << ", shape#" << s.index << ", joint#" << j.index
+                 << ")";
+            (void)world.body_aabb(b);
+            (void)world.joints(b);
+            (void)world.contacts(b);
+            (void)world.mass_data(b);
+            (void)world.motion_locks(b);
+            (void)world.body(s);
+            (void)world.shape_aabb(s);
+            (void)world.geometry(s);
+            (void)world.joint_kind(j);
+            (void)world.joint_body_a(j);
+            break;
+        }
+        case 11: {
+            const double speed = control.chance(20) ? inf : control_value(0.1, 50.0);
+            last << "set_maximum_linear_speed(" << speed << ")";
+            world.set_maximum_linear_speed(speed);
+            break;
+        }
+        case 12: {
+            const double push = control_value(0.1, 5.0), zeta = control_value(0.1, 20.0);
+            const double hertz = control_value(1.0, 60.0);
+            last << "set_contact_tuning(" << hertz << ", " << zeta << ", " << push << ")";
+            world.set_contact_tuning(hertz, zeta, push);
+            break;
+        }
+        default: // one setting per call, so that a refusal is the whole call's
+            switch (control.below(4)) {
+            case 0: {
+                const int workers =
+                    control.chance(90) ? 1 + int(control.below(4)) : int(control.below(400)) - 100;
+                last << "set_workers(" << workers << ")";
+                world.set_workers(workers);
+                break;
+            }
+            case 1: {
+                const bool on = control.chance(50);
+                last << "set_sleeping(" << on << ")";
+                world.set_sleeping(on);
+                break;
+            }
+            case 2: {
+                const bool on = control.chance(80);
+                last << "set_continuous(" << on << ")";
+                world.set_continuous(on);
+                break;
+            }
+            default: {
+                const double threshold = control_value(0.0, 2.0);
+                last << "set_restitution_threshold(" << threshold << ")";
+                world.set_restitution_threshold(threshold);
+                break;
+            }
+            }
+            break;
+        }
+    }
+
     /// One random call; throws what the library throws.
     void call() {
         last.str("");
         last.precision(17);
+        if (control.chance(15)) {
+            control_call();
+            return;
+        }
         switch (r.below(22)) {
         case 0:
         case 1: {
