@@ -311,7 +311,9 @@ class TAMIAS2D_EXPORT World {
     /// found again by the next step; its mass follows the new type (R2: none for static and
     /// kinematic bodies; its shapes' or its overrides' for a dynamic one). A body made static
     /// stops (velocities and one-step loads zero); one made kinematic or dynamic keeps its
-    /// velocities. The body and the bodies its joints hold are woken. A joint none of whose
+    /// motion (DD35: every point its velocity, though the centre of mass moves with the mass).
+    /// The body and the bodies its joints hold are woken; its joints start their next solve
+    /// without a warm start. A joint none of whose
     /// bodies is dynamic stays but is not solved. Throws ValidationError (R2) for a type outside
     /// the enumeration and (DCX_joint) when the new mass would put a joint's anchor beyond its
     /// lever limit.
