@@ -4,7 +4,7 @@
 
 namespace tamias2d {
 
-/// \srs{DD33} A locked motion is held at zero velocity: a platformer's hero that never tips
+/// \srs{DD39} A locked motion is held at zero velocity: a platformer's hero that never tips
 /// (angular), a piston that moves only up and down (linear_x), a door that only slides
 /// sideways (linear_y). Locks act on dynamic bodies; others keep them unused.
 struct MotionLocks {

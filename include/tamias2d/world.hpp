@@ -311,7 +311,7 @@ class TAMIAS2D_EXPORT World {
     /// found again by the next step; its mass follows the new type (R2: none for static and
     /// kinematic bodies; its shapes' or its overrides' for a dynamic one). A body made static
     /// stops (velocities and one-step loads zero); one made kinematic or dynamic keeps its
-    /// motion (DD35: every point its velocity, though the centre of mass moves with the mass).
+    /// motion (DD41: every point its velocity, though the centre of mass moves with the mass).
     /// The body and the bodies its joints hold are woken; its joints start their next solve
     /// without a warm start. A joint none of whose
     /// bodies is dynamic stays but is not solved. Throws ValidationError (R2) for a type outside
@@ -333,7 +333,7 @@ class TAMIAS2D_EXPORT World {
     /// \srs{DD29} Whether the body is swept against dynamic bodies too (BodyDef::bullet).
     void set_bullet(BodyId body, bool bullet);
     bool is_bullet(BodyId body) const; ///< BodyDef::bullet or the last set
-    /// \srs{DD33} Locks motions of a dynamic body: a locked linear axis's velocity is held at
+    /// \srs{DD39} Locks motions of a dynamic body: a locked linear axis's velocity is held at
     /// zero at every substep; the angular lock (BodyDef::fixed_rotation) gives the body an
     /// infinite moment of inertia (DD14's I no longer resists: nothing turns it). A motion
     /// locked now is stopped now (its velocity component zero); the body is woken.
@@ -342,7 +342,7 @@ class TAMIAS2D_EXPORT World {
     /// set_motion_locks with only the angular lock changed (BodyDef::fixed_rotation).
     void set_fixed_rotation(BodyId body, bool fixed);
     bool fixed_rotation(BodyId body) const; ///< the angular lock
-    /// \srs{DD35} Overrides a dynamic body's mass (kg, > 0), centre of mass (m, body frame)
+    /// \srs{DD41} Overrides a dynamic body's mass (kg, > 0), centre of mass (m, body frame)
     /// and moment of inertia about it (kg m^2, > 0), all finite and within DCX_range. The
     /// body's origin stays; its centre moves to the new one, which keeps the velocity it had as
     /// a point of the body (DD9): the body's motion is unchanged, so its momentum changes by
@@ -352,7 +352,7 @@ class TAMIAS2D_EXPORT World {
     /// (DCX_joint) when a joint's anchor would be beyond its lever limit.
     void set_mass_data(BodyId body, const BodyMassData& data);
     BodyMassData mass_data(BodyId body) const; ///< mass, local_center and inertia now
-    /// \srs{DD35} Forgets every override of the mass, centre and inertia (BodyDef::mass,
+    /// \srs{DD41} Forgets every override of the mass, centre and inertia (BodyDef::mass,
     /// BodyDef::inertia, set_mass_data) and computes them from the shapes (DD1, DD14), with
     /// set_mass_data's rule for the velocities. Wakes the body. Any body type (a static or
     /// kinematic body keeps no mass, R2; the overrides are forgotten all the same).
@@ -381,7 +381,7 @@ class TAMIAS2D_EXPORT World {
     void set_joint_tuning(double hertz, double damping_ratio);
     /// \srs{DD12} WorldDef::restitution_threshold (m s^-1, >= 0).
     void set_restitution_threshold(double speed);
-    /// \srs{DD34} WorldDef::maximum_linear_speed (m s^-1, > 0; infinite: no limit). A body
+    /// \srs{DD40} WorldDef::maximum_linear_speed (m s^-1, > 0; infinite: no limit). A body
     /// faster than a new, lower limit is slowed to it by the next step.
     void set_maximum_linear_speed(double speed);
     /// WorldDef::workers ([1, 256]): the World's own pool is replaced (with a task system,

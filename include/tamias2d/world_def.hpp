@@ -69,7 +69,7 @@ struct WorldDef {
     bool enable_continuous = true;
     /// Restitution (DD12) applies when the bodies approach faster than this (m s^-1).
     double restitution_threshold = 0.0;
-    /// \srs{DD34} m s^-1, > 0: no body's centre moves faster; a faster one is slowed to it
+    /// \srs{DD40} m s^-1, > 0: no body's centre moves faster; a faster one is slowed to it
     /// along its direction at each substep (a guard against a game's runaway body, not
     /// physics: it breaks IM1 while it acts). Infinite, the default: no limit, and IM1 as
     /// the SRS states it; a game in metres might choose 100 to 400.

@@ -117,7 +117,7 @@ bool World::is_bullet(BodyId id) const {
     return impl_->bodies.settings[id.index].bullet;
 }
 
-/// \srs{DD33} Locks set at run time: a locked motion stops now and stays stopped.
+/// \srs{DD39} Locks set at run time: a locked motion stops now and stays stopped.
 void World::set_motion_locks(BodyId id, MotionLocks locks) {
     Impl& w = *impl_;
     w.bodies.get(id); // handle check
@@ -150,7 +150,7 @@ bool World::fixed_rotation(BodyId id) const {
     return motion_locks(id).angular;
 }
 
-/// \srs{DD35} The mass data overridden at run time: the rigid motion kept.
+/// \srs{DD41} The mass data overridden at run time: the rigid motion kept.
 void World::set_mass_data(BodyId id, const BodyMassData& data) {
     Impl& w = *impl_;
     const Body& b = w.bodies.get(id);

@@ -1,5 +1,5 @@
 // A body's definition changed at run time: type, enabled state, gravity scale, bullet flag,
-// motion locks (DD33), mass data (DD35), sleep threshold and wake_touching. Each call is tested
+// motion locks (DD39), mass data (DD41), sleep threshold and wake_touching. Each call is tested
 // for its effect against a closed form, the rule it states or a world built with the setting
 // from the start, and for its strong guarantee (a refused call leaves state_hash() unchanged;
 // a value the body already has changes no bit of what follows).

@@ -1,4 +1,4 @@
-// Motion locks (DD33), mass data changed at run time (DD35), the per-body sleep threshold and
+// Motion locks (DD39), mass data changed at run time (DD41), the per-body sleep threshold and
 // wake_touching: their effects against closed forms and the rules they state, and their strong
 // guarantee (a refused call leaves state_hash() unchanged).
 #include <boost/test/unit_test.hpp>
@@ -43,15 +43,15 @@ BodyId slope(World& w, double theta, Material m) {
 
 BOOST_AUTO_TEST_SUITE(body_control_mass)
 
-// ----------------------------------------------------------------------------- DD33
+// ----------------------------------------------------------------------------- DD39
 
 // Oracle: closed forms on an incline of theta = 30 degrees with friction mu = 0.5. A disc free
 // to turn rolls without slipping (mu >= tan(theta) / 3): a = g sin(theta) / (1 + I / (m r^2))
-// = 2/3 g sin(theta). Its rotation locked (DD33), it slides: a = g (sin(theta) - mu
+// = 2/3 g sin(theta). Its rotation locked (DD39), it slides: a = g (sin(theta) - mu
 // cos(theta)), a fifth of that, and does not turn at all. Measured as the change of speed along the
 // slope over 1 s of steady motion.
 BOOST_AUTO_TEST_CASE(a_disc_with_its_rotation_locked_slides_instead_of_rolling,
-                     *utf::label("DD33") * utf::label("LC2")) {
+                     *utf::label("DD39") * utf::label("LC2")) {
     const double theta = std::numbers::pi / 6.0, mu = 0.5, g = 10.0;
     for (const bool locked : {false, true}) {
         World w(WorldDef{.gravity = {0.0, -g}});
@@ -90,11 +90,11 @@ BOOST_AUTO_TEST_CASE(a_disc_with_its_rotation_locked_slides_instead_of_rolling,
     }
 }
 
-// Oracle: DD33's projection and IM1's free fall: under gravity (3, -10), a box locked along x
+// Oracle: DD39's projection and IM1's free fall: under gravity (3, -10), a box locked along x
 // keeps its x to the bit while it falls (y per IM1 from rest), lands on a 30-degree slope
 // whose contact pushes it sideways, and is struck sideways; unlocked, the slope moves it.
 BOOST_AUTO_TEST_CASE(a_linear_lock_holds_its_axis_exactly,
-                     *utf::label("DD33") * utf::label("IM1")) {
+                     *utf::label("DD39") * utf::label("IM1")) {
     World w(WorldDef{.gravity = {3.0, -10.0}});
     slope(w, std::numbers::pi / 6.0, Material{1.0, 0.0, 0.0});
     BodyDef d;
@@ -127,9 +127,9 @@ BOOST_AUTO_TEST_CASE(a_linear_lock_holds_its_axis_exactly,
     BOOST_TEST(w.position(b).x > 0.1);
 }
 
-// Oracle: the rule: a lock set now stops its motion now (DD33), and the angular lock's inertia
+// Oracle: the rule: a lock set now stops its motion now (DD39), and the angular lock's inertia
 // (DD14) returns when it is lifted.
-BOOST_AUTO_TEST_CASE(locks_stop_their_motion_at_once, *utf::label("DD33") * utf::label("DD14")) {
+BOOST_AUTO_TEST_CASE(locks_stop_their_motion_at_once, *utf::label("DD39") * utf::label("DD14")) {
     World w(WorldDef{.gravity = {0.0, 0.0}});
     const BodyId b = w.create_body(BodyDef{.linear_velocity = {1.0, 2.0}, .angular_velocity = 3.0});
     w.create_shape(b, box_shape(2.0, 1.0, Material{1.5, 0.0, 0.0}));
@@ -153,14 +153,14 @@ BOOST_AUTO_TEST_CASE(locks_stop_their_motion_at_once, *utf::label("DD33") * utf:
     BOOST_TEST(w.state_hash() == before);
 }
 
-// ----------------------------------------------------------------------------- DD35
+// ----------------------------------------------------------------------------- DD41
 
-// Oracle: DD35's closed form. A 2 x 1 box (3 kg) moving at v = (1, 2) and turning at omega =
+// Oracle: DD41's closed form. A 2 x 1 box (3 kg) moving at v = (1, 2) and turning at omega =
 // 3 rad/s without gravity gets mass 6 kg, centre (0.5, 0) in its frame and inertia 4: its new
 // centre is at origin + R(phi) (0.5, 0) and moves at v + omega x d (d = R(phi) (0.5, 0)); omega
 // stays; the momentum becomes 6 (v + omega x d), not 3 v (GD1 gives no rule for it).
 BOOST_AUTO_TEST_CASE(mass_data_changed_mid_flight_keeps_the_rigid_motion,
-                     *utf::label("DD35") * utf::label("DD9") * utf::label("GD1")) {
+                     *utf::label("DD41") * utf::label("DD9") * utf::label("GD1")) {
     World w(WorldDef{.gravity = {0.0, 0.0}});
     const BodyId b = w.create_body(
         BodyDef{.angle = 0.3, .linear_velocity = {1.0, 2.0}, .angular_velocity = 3.0});

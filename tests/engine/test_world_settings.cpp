@@ -1,4 +1,4 @@
-// World settings changed between steps, and the maximum linear speed (DD34). Oracles: the
+// World settings changed between steps, and the maximum linear speed (DD40). Oracles: the
 // closed form of a free fall under a speed limit; a world created with the setting from the
 // start (a setting changed before the first step must give the same bits, and one changed later
 // the same bits from then on as its own definition); the sleeping rule; the constructor's
@@ -52,12 +52,12 @@ bool same_history(World& a, World& b, int n) {
 
 BOOST_AUTO_TEST_SUITE(world_settings)
 
-// Oracle: DD34's closed form for a free fall from rest under IM1 per substep h: the speed after
+// Oracle: DD40's closed form for a free fall from rest under IM1 per substep h: the speed after
 // k substeps is min(k g h, v_max) (the limit applied before each position update), the
 // position the sum of those speeds times h; the speed never exceeds v_max, and first equals it
 // at the substep k* = ceil(v_max / (g h)).
 BOOST_AUTO_TEST_CASE(a_falling_body_reaches_the_speed_limit_and_keeps_it,
-                     *utf::label("DD34") * utf::label("IM1")) {
+                     *utf::label("DD40") * utf::label("IM1")) {
     const double g = 9.81, v_max = 2.5, h = dt / 4.0;
     World w(WorldDef{.gravity = {0.0, -g}, .maximum_linear_speed = v_max});
     const BodyId b = w.create_body(BodyDef{.position = {0.0, 100.0}});
@@ -82,9 +82,9 @@ BOOST_AUTO_TEST_CASE(a_falling_body_reaches_the_speed_limit_and_keeps_it,
     BOOST_TEST(w.settings().maximum_linear_speed == v_max);
 }
 
-// Oracle: DD34 acts along the velocity's own direction: a body thrown at 10 m/s along (3, 4)
+// Oracle: DD40 acts along the velocity's own direction: a body thrown at 10 m/s along (3, 4)
 // without gravity under a 1 m/s limit moves at (0.6, 0.8) m/s.
-BOOST_AUTO_TEST_CASE(the_speed_limit_keeps_the_direction, *utf::label("DD34")) {
+BOOST_AUTO_TEST_CASE(the_speed_limit_keeps_the_direction, *utf::label("DD40")) {
     World w(WorldDef{.gravity = {0.0, 0.0}});
     const BodyId b = w.create_body(BodyDef{.linear_velocity = {6.0, 8.0}});
     w.create_shape(b, circle_shape(0.5));

@@ -347,7 +347,7 @@ void BodyStore::set_disabled(std::uint32_t i, bool disabled) {
     st.sleep_time = 0.0;
 }
 
-/// \srs{DD33} A linear lock set now stops the body along its axis at once.
+/// \srs{DD39} A linear lock set now stops the body along its axis at once.
 void BodyStore::set_linear_locks(std::uint32_t i, bool x, bool y) {
     const bool before = linearly_locked(i);
     settings[i].lock_linear_x = x;
@@ -358,7 +358,7 @@ void BodyStore::set_linear_locks(std::uint32_t i, bool x, bool y) {
         b.v = bridge::locked_velocity(b.v, x, y);
 }
 
-/// \srs{DD35} The body's new centre keeps the velocity it had as a point of the body; the
+/// \srs{DD41} The body's new centre keeps the velocity it had as a point of the body; the
 /// angular velocity stays (zero under the angular lock, which nothing may turn).
 void BodyStore::update_mass_keeping_motion(std::uint32_t i, ShapeStore& shapes) {
     Body& b = bodies[i];

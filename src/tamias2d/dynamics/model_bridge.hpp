@@ -25,9 +25,9 @@
 #include "tamias2d/model/dd25_wheel_constraint.hpp"
 #include "tamias2d/model/dd26_motor_constraint.hpp"
 #include "tamias2d/model/dd29_time_of_impact.hpp"
-#include "tamias2d/model/dd33_motion_locks.hpp"
-#include "tamias2d/model/dd34_maximum_linear_speed.hpp"
-#include "tamias2d/model/dd35_mass_change.hpp"
+#include "tamias2d/model/dd39_motion_locks.hpp"
+#include "tamias2d/model/dd40_maximum_linear_speed.hpp"
+#include "tamias2d/model/dd41_mass_change.hpp"
 #include "tamias2d/model/im1_translational_motion.hpp"
 #include "tamias2d/model/im2_rotational_motion.hpp"
 #include "tamias2d/model/im3_collision_response.hpp"
@@ -589,16 +589,16 @@ struct Model {
     }
 };
 
-// Run-time control: motion locks (DD33), the speed limit (DD34), a mass change (DD35).
+// Run-time control: motion locks (DD39), the speed limit (DD40), a mass change (DD41).
 inline Vec2d locked_velocity(Vec2d v, bool lock_x, bool lock_y) {
-    return plain(m::dd33::projected_velocity(typed<u::Velocity>(v), lock_x, lock_y));
+    return plain(m::dd39::projected_velocity(typed<u::Velocity>(v), lock_x, lock_y));
 }
 inline Vec2d limited_velocity(Vec2d v, double v_max) {
     return plain(
-        m::dd34::limited_velocity(typed<u::Velocity>(v), u::from_value<u::Velocity>(v_max)));
+        m::dd40::limited_velocity(typed<u::Velocity>(v), u::from_value<u::Velocity>(v_max)));
 }
 inline Vec2d shifted_center_velocity(Vec2d v, double w, Vec2d shift) {
-    return plain(m::dd35::center_velocity(
+    return plain(m::dd41::center_velocity(
         typed<u::Velocity>(v), u::from_value<u::AngularVelocity>(w), typed<u::Length>(shift)));
 }
 

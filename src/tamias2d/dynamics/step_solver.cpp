@@ -76,7 +76,7 @@ void StepSolver::prepare_bodies(const BodyStore& store, const StepContext& step)
     const bool regions = def.contact_regions > 1;
     const double g = length(def.gravity);
     const Vec2d across = g > 0.0 ? Vec2d{-def.gravity.y / g, def.gravity.x / g} : Vec2d{1.0, 0.0};
-    // DD33: the moving dynamic bodies with a linear lock (none in most worlds: no pass).
+    // DD39: the moving dynamic bodies with a linear lock (none in most worlds: no pass).
     const auto list_locked = [&] {
         locked_.clear();
         for (std::uint32_t i = 0; store.locked_bodies > 0 && i < bodies.size(); ++i) {
@@ -567,7 +567,7 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
         for (int j = 0; j < b.count; ++j)
             contacts.total_impulses[b.contact].normal[j] = b.points[j].total_normal_impulse;
     }
-    // The velocities the step leaves keep the locks and the limit too (DD33, DD34).
+    // The velocities the step leaves keep the locks and the limit too (DD39, DD40).
     constrain_velocities(def.maximum_linear_speed, tasks);
 }
 
