@@ -254,4 +254,22 @@ void JointStore::hash_controls(StateHasher& hs, const Joint& j) {
     hs(j.tuning_damping_ratio);
 }
 
+// --- run-time control ---
+
+void JointStore::wake_joined(std::uint32_t i, BodyStore& bodies) const {
+    for (const std::uint32_t k : of_body(i)) {
+        bodies.wake(joints[k].body_a);
+        bodies.wake(joints[k].body_b);
+    }
+}
+
+void JointStore::clear_impulses(std::uint32_t i) {
+    for (const std::uint32_t k : of_body(i)) {
+        JointStepState& st = joints[k].step;
+        st.linear_impulse = {};
+        st.axial_impulse = st.motor_impulse = st.lower_impulse = st.upper_impulse = 0.0;
+        st.spring_impulse = st.angular_impulse = st.perp_impulse = 0.0;
+    }
+}
+
 } // namespace tamias2d
