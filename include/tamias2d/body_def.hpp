@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 
+#include "tamias2d/user_data.hpp"
 #include "tamias2d/vec2.hpp"
 
 namespace tamias2d {
@@ -73,8 +74,9 @@ struct BodyDef {
     /// (World::body_move_events), and the step in which it falls asleep. Off by default (the
     /// report costs a pass over the bodies per step while any body asks).
     bool enable_move_events = false;
-    LoadFunction load{}; ///< optional F(t), tau(t), added to the persistent loads
-    std::string name{};  ///< free text, for scene files and reports
+    LoadFunction load{};    ///< optional F(t), tau(t), added to the persistent loads
+    std::string name{};     ///< free text, for scene files and reports
+    UserData user_data = 0; ///< the game's own value (user_data.hpp), not simulation state
 };
 
 } // namespace tamias2d

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "tamias2d/handles.hpp"
+#include "tamias2d/user_data.hpp"
 #include "tamias2d/vec2.hpp"
 
 namespace tamias2d {
@@ -49,6 +50,7 @@ struct RevoluteJointDef {
     double force_threshold = std::numeric_limits<double>::infinity();
     /// N m, >= 0: the same for its reaction torque. Infinite: never.
     double torque_threshold = std::numeric_limits<double>::infinity();
+    UserData user_data = 0; ///< the game's own value (user_data.hpp), not simulation state
     /// Field by field (a scene's joints compare so after a round trip through JSON).
     friend bool operator==(const RevoluteJointDef&, const RevoluteJointDef&) = default;
 };
@@ -87,6 +89,7 @@ struct DistanceJointDef {
     double force_threshold = std::numeric_limits<double>::infinity();
     /// N m, >= 0: the same for its reaction torque. Infinite: never.
     double torque_threshold = std::numeric_limits<double>::infinity();
+    UserData user_data = 0; ///< the game's own value (user_data.hpp), not simulation state
     /// Field by field (a scene's joints compare so after a round trip through JSON).
     friend bool operator==(const DistanceJointDef&, const DistanceJointDef&) = default;
 };
@@ -107,6 +110,7 @@ struct TargetJointDef {
     double force_threshold = std::numeric_limits<double>::infinity();
     /// N m, >= 0: the same for its reaction torque. Infinite: never.
     double torque_threshold = std::numeric_limits<double>::infinity();
+    UserData user_data = 0; ///< the game's own value (user_data.hpp), not simulation state
     /// Field by field (a scene's joints compare so after a round trip through JSON).
     friend bool operator==(const TargetJointDef&, const TargetJointDef&) = default;
 };
@@ -141,6 +145,7 @@ struct PrismaticJointDef {
     double force_threshold = std::numeric_limits<double>::infinity();
     /// N m, >= 0: the same for its reaction torque. Infinite: never.
     double torque_threshold = std::numeric_limits<double>::infinity();
+    UserData user_data = 0; ///< the game's own value (user_data.hpp), not simulation state
     /// Field by field (a scene's joints compare so after a round trip through JSON).
     friend bool operator==(const PrismaticJointDef&, const PrismaticJointDef&) = default;
 };
@@ -166,6 +171,7 @@ struct WeldJointDef {
     double force_threshold = std::numeric_limits<double>::infinity();
     /// N m, >= 0: the same for its reaction torque. Infinite: never.
     double torque_threshold = std::numeric_limits<double>::infinity();
+    UserData user_data = 0; ///< the game's own value (user_data.hpp), not simulation state
     /// Field by field (a scene's joints compare so after a round trip through JSON).
     friend bool operator==(const WeldJointDef&, const WeldJointDef&) = default;
 };
@@ -199,6 +205,7 @@ struct WheelJointDef {
     double force_threshold = std::numeric_limits<double>::infinity();
     /// N m, >= 0: the same for its reaction torque. Infinite: never.
     double torque_threshold = std::numeric_limits<double>::infinity();
+    UserData user_data = 0; ///< the game's own value (user_data.hpp), not simulation state
     /// Field by field (a scene's joints compare so after a round trip through JSON).
     friend bool operator==(const WheelJointDef&, const WheelJointDef&) = default;
 };
@@ -223,6 +230,7 @@ struct MotorJointDef {
     double force_threshold = std::numeric_limits<double>::infinity();
     /// N m, >= 0: the same for its reaction torque. Infinite: never.
     double torque_threshold = std::numeric_limits<double>::infinity();
+    UserData user_data = 0; ///< the game's own value (user_data.hpp), not simulation state
     /// Field by field (a scene's joints compare so after a round trip through JSON).
     friend bool operator==(const MotorJointDef&, const MotorJointDef&) = default;
 };
@@ -232,8 +240,9 @@ struct MotorJointDef {
 /// being pinned, a bullet that passes its gun. It applies no force and never breaks; destroying
 /// it lets the two collide again.
 struct FilterJointDef {
-    BodyId body_a{}; ///< the first body
-    BodyId body_b{}; ///< the second body; not body_a
+    BodyId body_a{};        ///< the first body
+    BodyId body_b{};        ///< the second body; not body_a
+    UserData user_data = 0; ///< the game's own value (user_data.hpp), not simulation state
     /// Field by field (a scene's joints compare so after a round trip through JSON).
     friend bool operator==(const FilterJointDef&, const FilterJointDef&) = default;
 };

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string_view>
 
 namespace tamias2d {
 
@@ -17,6 +18,29 @@ enum class JointKind : std::uint8_t {
     motor,     ///< MotorJointDef (DD26)
     filter     ///< FilterJointDef (DD27)
 };
+
+/// A joint kind's name as messages spell it ("revolute", ...); "" outside the enumeration.
+constexpr std::string_view to_string(JointKind kind) noexcept {
+    switch (kind) {
+    case JointKind::revolute:
+        return "revolute";
+    case JointKind::distance:
+        return "distance";
+    case JointKind::target:
+        return "target";
+    case JointKind::prismatic:
+        return "prismatic";
+    case JointKind::weld:
+        return "weld";
+    case JointKind::wheel:
+        return "wheel";
+    case JointKind::motor:
+        return "motor";
+    case JointKind::filter:
+        return "filter";
+    }
+    return "";
+}
 
 /// A joint's limits (World::joint_limits): rad for a revolute joint's angle, m for a prismatic
 /// or wheel joint's translation and a distance joint's length.

@@ -8,6 +8,7 @@
 
 #include "tamias2d/export.hpp"
 #include "tamias2d/shapes.hpp"
+#include "tamias2d/user_data.hpp"
 
 namespace tamias2d {
 
@@ -52,6 +53,7 @@ struct ShapeDef {
     /// are reported when either shape asks. Off by default (the check costs a pass over the
     /// contacts per step while any shape asks).
     bool enable_hit_events = false;
+    UserData user_data = 0; ///< the game's own value (user_data.hpp), not simulation state
 };
 
 /// A rectangle w x h (m) centred on the body origin (or on `center`, rotated by `angle`).

@@ -22,6 +22,8 @@
 #include "tamias2d/handles.hpp"
 #include "tamias2d/joint_def.hpp"
 #include "tamias2d/joint_kind.hpp"
+#include "tamias2d/mass_data.hpp"
+#include "tamias2d/motion_locks.hpp"
 #include "tamias2d/profile.hpp"
 #include "tamias2d/query_filter.hpp"
 #include "tamias2d/query_results.hpp"
@@ -29,6 +31,7 @@
 #include "tamias2d/shapes.hpp"
 #include "tamias2d/snapshot_error.hpp"
 #include "tamias2d/task_system.hpp"
+#include "tamias2d/user_data.hpp"
 #include "tamias2d/world_def.hpp"
 #include "tamias2d/world_definitions.hpp"
 
@@ -400,7 +403,10 @@ class TAMIAS2D_EXPORT World {
     // with the same bits as the world it was taken from, on any number of workers (with the
     // same library version and build: docs/user-guide.md, "Determinism, snapshots and
     // replays"). Functions are not data and are not in a snapshot: the custom filter
-    // (set_custom_filter) and the load functions (set_load).
+    // (set_custom_filter) and the load functions (set_load). User data (the world's, bodies',
+    // shapes' and joints') is not simulation state but is in a snapshot, as 64 bits: a world
+    // built or restored from it has the values it had when the snapshot was taken (a pointer
+    // held there means something only in the process that took the snapshot).
 
     /// The version of the snapshot format this library writes and reads.
     static constexpr std::uint32_t snapshot_format_version = 1;
@@ -608,6 +614,126 @@ class TAMIAS2D_EXPORT World {
     /// a negative radius or falloff (DD38), and (DCX_range) when a body's resulting velocity
     /// would exceed the supported range; the world is then unchanged.
     std::size_t explode(const ExplosionDef& def);
+
+    // --- identity ---
+    // What a game needs to tie its objects to the world's and to walk from one to another. None
+    // of these calls changes the simulation: user data is not state (state_hash does not see
+    // it), and it survives every other call (a type change, a step, a refused call). Each
+    // throws InvalidHandle for a handle that names nothing, and changes nothing then.
+    void set_user_data(UserData data);              ///< the world's own value (WorldDef::user_data)
+    UserData user_data() const;                     ///< the world's value, 0 unless set
+    void set_user_data(BodyId body, UserData data); ///< BodyDef::user_data, after creation
+    UserData user_data(BodyId body) const;          ///< the body's value, 0 unless set
+    void set_user_data(ShapeId shape, UserData data); ///< ShapeDef::user_data, after creation
+    UserData user_data(ShapeId shape) const;          ///< the shape's value, 0 unless set
+    void set_user_data(JointId joint, UserData data); ///< the joint definition's user_data
+    UserData user_data(JointId joint) const;          ///< the joint's value, 0 unless set
+    BodyId body(ShapeId shape) const;                 ///< the body carrying the shape
+    ShapeType shape_type(ShapeId shape) const;        ///< circle, polygon, capsule, ...
+    /// The shape's geometry in its body's frame (m), as stored: only the member its type
+    /// names is set (a box is a polygon of four vertices).
+    Geometry geometry(ShapeId shape) const;
+    /// m, world frame: the shape's tight bounding box at its body's pose now.
+    Aabb shape_aabb(ShapeId shape) const;
+    /// m, world frame: the union of the body's shapes' tight boxes; a body without shapes
+    /// gives the box of its origin alone (zero width and height).
+    Aabb body_aabb(BodyId body) const;
+    /// The joints holding the body (as body_a or body_b), oldest first.
+    std::vector<JointId> joints(BodyId body) const;
+    /// The body's touching pairs after the last step (as contacts() lists them, in its order):
+    /// those with one of its shapes as shape_a or shape_b.
+    std::vector<ContactInfo> contacts(BodyId body) const;
+    // (a joint's kind and bodies: joint_kind, joint_body_a, joint_body_b, with the joints'
+    // controls)
+
+    // --- body_control ---
+    // A body's definition changed after creation. Each call checks its handle and its values
+    // first and throws InvalidHandle or ValidationError (naming the field and the constraint)
+    // without changing anything; setting a value a body already has changes no bit of the
+    // simulation (nothing is woken).
+    /// Changes the body's type, keeping its handle, shapes, joints, settings and user data.
+    /// Its contacts are removed (with their end events, the bodies they touched woken) and
+    /// found again by the next step; its mass follows the new type (R2: none for static and
+    /// kinematic bodies; its shapes' or its overrides' for a dynamic one). A body made static
+    /// stops (velocities and one-step loads zero); one made kinematic or dynamic keeps its
+    /// motion (DD41: every point its velocity, though the centre of mass moves with the mass).
+    /// The body and the bodies its joints hold are woken; its joints start their next solve
+    /// without a warm start. A joint none of whose
+    /// bodies is dynamic stays but is not solved. Throws ValidationError (R2) for a type outside
+    /// the enumeration and (DCX_joint) when the new mass would put a joint's anchor beyond its
+    /// lever limit.
+    void set_body_type(BodyId body, BodyType type);
+    /// Disables (false) or enables a body. A disabled body keeps its pose, velocities, loads and
+    /// settings but takes no part in the world: the step does not move it, its contacts and
+    /// sensor overlaps are removed (with their end events, the bodies it touched woken), no
+    /// pair, sensor, query or ray cast finds its shapes, and its joints are not solved (the
+    /// bodies they hold move freely). Enabling wakes it and the bodies its joints hold; its
+    /// pairs are found by the next step.
+    void set_enabled(BodyId body, bool enabled);
+    bool is_enabled(BodyId body) const; ///< true unless set_enabled(body, false)
+    /// Multiplies the world's gravity for this body (BodyDef::gravity_scale; finite, |s| <=
+    /// 1e12: DCX_range) and wakes it. Acts on a dynamic body.
+    void set_gravity_scale(BodyId body, double scale);
+    double gravity_scale(BodyId body) const; ///< BodyDef::gravity_scale or the last set
+    /// \srs{DD29} Whether the body is swept against dynamic bodies too (BodyDef::bullet).
+    void set_bullet(BodyId body, bool bullet);
+    bool is_bullet(BodyId body) const; ///< BodyDef::bullet or the last set
+    /// \srs{DD39} Locks motions of a dynamic body: a locked linear axis's velocity is held at
+    /// zero at every substep; the angular lock (BodyDef::fixed_rotation) gives the body an
+    /// infinite moment of inertia (DD14's I no longer resists: nothing turns it). A motion
+    /// locked now is stopped now (its velocity component zero); the body is woken.
+    void set_motion_locks(BodyId body, MotionLocks locks);
+    MotionLocks motion_locks(BodyId body) const; ///< as set; angular is fixed_rotation
+    /// set_motion_locks with only the angular lock changed (BodyDef::fixed_rotation).
+    void set_fixed_rotation(BodyId body, bool fixed);
+    bool fixed_rotation(BodyId body) const; ///< the angular lock
+    /// \srs{DD41} Overrides a dynamic body's mass (kg, > 0), centre of mass (m, body frame)
+    /// and moment of inertia about it (kg m^2, > 0), all finite and within DCX_range. The
+    /// body's origin stays; its centre moves to the new one, which keeps the velocity it had as
+    /// a point of the body (DD9): the body's motion is unchanged, so its momentum changes by
+    /// the change of mass (GD1 does not hold across the call: it is the game's act, not a
+    /// force). Wakes the body. Throws WrongKind for a static or kinematic body (they have no
+    /// mass, R2), ValidationError (DCI_m, DCI_I, DCX_range) for a value out of range, and
+    /// (DCX_joint) when a joint's anchor would be beyond its lever limit.
+    void set_mass_data(BodyId body, const BodyMassData& data);
+    BodyMassData mass_data(BodyId body) const; ///< mass, local_center and inertia now
+    /// \srs{DD41} Forgets every override of the mass, centre and inertia (BodyDef::mass,
+    /// BodyDef::inertia, set_mass_data) and computes them from the shapes (DD1, DD14), with
+    /// set_mass_data's rule for the velocities. Wakes the body. Any body type (a static or
+    /// kinematic body keeps no mass, R2; the overrides are forgotten all the same).
+    void reset_mass_data(BodyId body);
+    /// m s^-1, >= 0 and finite: the body rests (and may sleep, WorldDef::enable_sleep) below
+    /// this speed instead of WorldDef::linear_sleep_tolerance. Wakes the body.
+    void set_sleep_threshold(BodyId body, double speed);
+    double sleep_threshold(BodyId body) const; ///< m s^-1: its own, or the world's tolerance
+    /// Wakes every body touching this one, and with it their islands at the next step: what
+    /// holds them up may be about to go (a platform the game will remove).
+    void wake_touching(BodyId body);
+
+    // --- world_settings ---
+    // The settings of WorldDef that a game may change between steps. Each validates as
+    // WorldDef does (ValidationError naming "world.<field>" and its constraint) and changes
+    // nothing when it throws; setting a value the world already has changes no bit.
+    /// \srs{DD29} WorldDef::enable_continuous.
+    void set_continuous(bool enabled);
+    /// WorldDef::enable_sleep. Off: every sleeping body wakes (its time at rest zero); on: bodies
+    /// start counting their time at rest at the next step.
+    void set_sleeping(bool enabled);
+    /// \srs{IM7} WorldDef::contact_hertz (Hz, > 0), contact_damping_ratio (> 0) and
+    /// contact_push_max_velocity (m s^-1, > 0), from the next step on.
+    void set_contact_tuning(double hertz, double damping_ratio, double push_max_velocity);
+    /// \srs{IM6} WorldDef::joint_hertz (Hz, > 0) and joint_damping_ratio (> 0).
+    void set_joint_tuning(double hertz, double damping_ratio);
+    /// \srs{DD12} WorldDef::restitution_threshold (m s^-1, >= 0).
+    void set_restitution_threshold(double speed);
+    /// \srs{DD40} WorldDef::maximum_linear_speed (m s^-1, > 0; infinite: no limit). A body
+    /// faster than a new, lower limit is slowed to it by the next step.
+    void set_maximum_linear_speed(double speed);
+    /// WorldDef::workers ([1, 256]): the World's own pool is replaced (with a task system,
+    /// its number of worker numbers). The results stay bitwise those of one worker.
+    void set_workers(int workers);
+    /// Bodies awake now (with sleeping off, every enabled body that is not static).
+    std::size_t awake_body_count() const;
 
     /// A hash of the complete simulation state (bit patterns of every double): equal hashes
     /// mean bitwise-equal worlds. Used by the determinism and strong-guarantee tests.

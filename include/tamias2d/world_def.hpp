@@ -2,7 +2,10 @@
 /// World settings. Defaults suit games in metres, kilograms and seconds.
 #pragma once
 
+#include <limits>
+
 #include "tamias2d/task_system.hpp"
+#include "tamias2d/user_data.hpp"
 #include "tamias2d/vec2.hpp"
 
 namespace tamias2d {
@@ -70,6 +73,11 @@ struct WorldDef {
     /// approach faster than this (m s^-1, >= 0) and one of its shapes has
     /// ShapeDef::enable_hit_events. Changed at run time by World::set_hit_event_threshold.
     double hit_event_threshold = 1.0;
+    /// \srs{DD40} m s^-1, > 0: no body's centre moves faster; a faster one is slowed to it
+    /// along its direction at each substep (a guard against a game's runaway body, not
+    /// physics: it breaks IM1 while it acts). Infinite, the default: no limit, and IM1 as
+    /// the SRS states it; a game in metres might choose 100 to 400.
+    double maximum_linear_speed = std::numeric_limits<double>::infinity();
     /// Sleeping (dynamics/sleep.hpp): a group of touching bodies that has stayed slower than
     /// both tolerances for time_to_sleep (s) is held still, and its bodies and contacts take no
     /// solver or narrow-phase work, until something wakes it (an awake body touches one of
@@ -92,6 +100,7 @@ struct WorldDef {
     /// both callbacks or neither; used only when workers > 1, which must then be the number of
     /// worker numbers it hands out.
     TaskSystem task_system{};
+    UserData user_data = 0; ///< the game's own value (user_data.hpp), not simulation state
 };
 
 } // namespace tamias2d

@@ -478,6 +478,10 @@ void validate(const WorldDef& def) {
     non_negative("world.manifold_reuse_distance", def.manifold_reuse_distance, "m");
     non_negative("world.restitution_threshold", def.restitution_threshold, "m s^-1");
     validate_event_threshold("world.hit_event_threshold", def.hit_event_threshold, false);
+    // \srs{DD40} A speed limit: any speed > 0, infinite for none.
+    if (!(def.maximum_linear_speed > 0.0))
+        throw ValidationError("world.maximum_linear_speed", def.maximum_linear_speed,
+                              "must be > 0 (infinite: no limit)", "DD40");
     non_negative("world.time_to_sleep", def.time_to_sleep, "s");
     non_negative("world.linear_sleep_tolerance", def.linear_sleep_tolerance, "m s^-1");
     non_negative("world.angular_sleep_tolerance", def.angular_sleep_tolerance, "rad s^-1");

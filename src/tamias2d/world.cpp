@@ -205,7 +205,9 @@ template <class Def> JointId join(World::Impl& w, const Def& def) {
     const Body& a = w.bodies.get(def.body_a);
     const Body& b = w.bodies.get(def.body_b);
     validate(def, joint_body(w.bodies, def.body_a, a), joint_body(w.bodies, def.body_b, b));
-    return add_joint(w, with_event_thresholds(w.events, make_joint(def, a, b), def));
+    Joint j = make_joint(def, a, b);
+    j.user_data = def.user_data;
+    return add_joint(w, with_event_thresholds(w.events, j, def));
 }
 
 } // namespace
@@ -235,7 +237,9 @@ JointId World::create_joint(const TargetJointDef& def) {
     Impl& w = *impl_;
     const Body& b = w.bodies.get(def.body);
     validate(def, joint_body(w.bodies, def.body, b));
-    return add_joint(w, with_event_thresholds(w.events, make_joint(def, b), def));
+    Joint j = make_joint(def, b);
+    j.user_data = def.user_data;
+    return add_joint(w, with_event_thresholds(w.events, j, def));
 }
 
 void World::set_joint_target(JointId id, Vec2d target) {

@@ -86,6 +86,7 @@ JointDefinition definition_of(Joint j, BodyId a, BodyId b, const BodyStore& bodi
     // The fields every kind but the filter joint has (a target joint has no break force and
     // no break torque; distance joints no break torque).
     const auto common = [&](auto& d) {
+        d.user_data = j.user_data;
         d.collide_connected = j.collide_connected;
         d.break_force = j.break_force;
         d.force_threshold = j.force_threshold;
@@ -128,6 +129,7 @@ JointDefinition definition_of(Joint j, BodyId a, BodyId b, const BodyStore& bodi
         TargetJointDef d{b, j.target, j.hertz, j.damping_ratio, j.max_force};
         d.force_threshold = j.force_threshold;
         d.torque_threshold = j.torque_threshold;
+        d.user_data = j.user_data;
         return d;
     }
     case JointType::prismatic: {
@@ -185,7 +187,9 @@ JointDefinition definition_of(Joint j, BodyId a, BodyId b, const BodyStore& bodi
     case JointType::filter:
         break;
     }
-    return FilterJointDef{a, b};
+    FilterJointDef d{.body_a = a, .body_b = b};
+    d.user_data = j.user_data;
+    return d;
 }
 
 } // namespace
@@ -222,6 +226,7 @@ WorldDefinitions World::definitions() const {
         d.def.load = set.load;
         d.def.name = set.name;
         d.def.enable_move_events = w.events.move_events(i);
+        d.def.user_data = set.user_data;
         for (std::uint32_t s = b.first_shape; s != null_index; s = w.shapes.shapes[s].next)
             d.shapes.push_back(w.shapes.defs[s]);
         out.bodies.push_back(std::move(d));

@@ -59,6 +59,8 @@ template <class IO, class D> void world_def_fields(IO& io, D& d) {
     io("time_to_sleep", d.time_to_sleep);
     io("linear_sleep_tolerance", d.linear_sleep_tolerance);
     io("angular_sleep_tolerance", d.angular_sleep_tolerance);
+    io("maximum_linear_speed", d.maximum_linear_speed);
+    io.user_data("user_data", d.user_data);
 }
 
 /// The checksum of a snapshot whose header is in place: FNV-1a 64 over the header up to the

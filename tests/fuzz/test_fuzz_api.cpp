@@ -59,6 +59,9 @@ struct Driver {
     Rng events_stream;
     /// debug_draw, profile and explosion calls (draw_profile_explode), from a stream of their own.
     Rng area46;
+    /// The bodies' and world's run-time control and identity calls (body_world_call), from a
+    /// stream of their own for the same reason.
+    Rng body_world;
     /// What the oracle of an accepted hand-made polygon found wrong (empty: nothing).
     std::string shape_problem;
     World world;
@@ -69,8 +72,8 @@ struct Driver {
     explicit Driver(std::uint64_t seed)
         : r(seed), kinds(seed ^ 0x9e3779b97f4a7c15u), hand(seed ^ 0xc2b2ae3d27d4eb4fu),
           queries(seed ^ 0x165667b19e3779f9u), events_stream(seed ^ 0x27d4eb2f165667c5u),
-          area46(seed ^ 0x94d049bb133111ebu), world(make_def(r)),
-          control(seed ^ 0x5851f42d4c957f2du) {}
+          area46(seed ^ 0x94d049bb133111ebu), body_world(seed ^ 0xbf58476d1ce4e5b9u),
+          world(make_def(r)), control(seed ^ 0x5851f42d4c957f2du) {}
 
     static WorldDef make_def(Rng& r) {
         WorldDef d;
@@ -771,6 +774,158 @@ struct Driver {
         }
     }
 
+    // --- body_control, world_settings, identity: their calls, drawn from `body_world` ---
+    BodyId body_world_body() {
+        if (bodies.empty() || body_world.chance(5))
+            return BodyId{static_cast<std::uint32_t>(body_world.below(8)),
+                          static_cast<std::uint32_t>(body_world.below(3))};
+        return bodies[body_world.below(bodies.size())];
+    }
+    ShapeId body_world_shape() {
+        if (shapes.empty() || body_world.chance(5))
+            return ShapeId{static_cast<std::uint32_t>(body_world.below(8)), 0};
+        return shapes[body_world.below(shapes.size())];
+    }
+    JointId body_world_joint() {
+        if (joints.empty() || body_world.chance(5))
+            return JointId{static_cast<std::uint32_t>(body_world.below(4)), 0};
+        return joints[body_world.below(joints.size())];
+    }
+    double body_world_value(double lo, double hi) {
+        return body_world.chance(75) ? body_world.between(lo, hi) : any_double(control);
+    }
+    void body_world_call() {
+        const BodyId b = body_world_body();
+        switch (body_world.below(14)) {
+        case 0: {
+            const auto type = static_cast<BodyType>(body_world.below(4)); // 3: out of the enum
+            last << "set_body_type(" << str(b) << ", " << static_cast<int>(type) << ")";
+            world.set_body_type(b, type);
+            break;
+        }
+        case 1: {
+            const bool on = body_world.chance(60);
+            last << "set_enabled(" << str(b) << ", " << on << ")";
+            world.set_enabled(b, on);
+            break;
+        }
+        case 2: {
+            const double scale = body_world_value(-2.0, 2.0);
+            last << "set_gravity_scale(" << str(b) << ", " << scale << ")";
+            world.set_gravity_scale(b, scale);
+            break;
+        }
+        case 3: {
+            const bool on = body_world.chance(50);
+            last << "set_bullet(" << str(b) << ", " << on << ")";
+            world.set_bullet(b, on);
+            break;
+        }
+        case 4: {
+            const MotionLocks locks{body_world.chance(30), body_world.chance(30),
+                                    body_world.chance(30)};
+            last << "set_motion_locks(" << str(b) << ", " << locks.linear_x << locks.linear_y
+                 << locks.angular << ")";
+            world.set_motion_locks(b, locks);
+            break;
+        }
+        case 5: {
+            const double inertia = body_world_value(0.01, 10.0);
+            const Vec2d center{body_world_value(-1.0, 1.0), body_world_value(-1.0, 1.0)};
+            const double mass = body_world_value(0.01, 10.0);
+            last << "set_mass_data(" << str(b) << ", " << mass << ", " << str(center) << ", "
+                 << inertia << ")";
+            world.set_mass_data(b, BodyMassData{mass, center, inertia});
+            break;
+        }
+        case 6:
+            last << "reset_mass_data(" << str(b) << ")";
+            world.reset_mass_data(b);
+            break;
+        case 7: {
+            const double speed = body_world_value(0.0, 2.0);
+            last << "set_sleep_threshold(" << str(b) << ", " << speed << ")";
+            world.set_sleep_threshold(b, speed);
+            break;
+        }
+        case 8:
+            last << "wake_touching(" << str(b) << ")";
+            world.wake_touching(b);
+            break;
+        case 9: {
+            const auto data = static_cast<UserData>(body_world.bits());
+            const ShapeId s = body_world_shape();
+            const JointId j = body_world_joint();
+            last << "set_user_data(" << str(b) << ", shape#" << s.index << ", joint#" << j.index
+                 << ")";
+            world.set_user_data(data);
+            world.set_user_data(b, data);
+            world.set_user_data(s, data);
+            world.set_user_data(j, data);
+            break;
+        }
+        case 10: { // the identity readings are const: they may refuse, never change the world
+            const ShapeId s = body_world_shape();
+            const JointId j = body_world_joint();
+            last << "identity readings(" << str(b) << ", shape#" << s.index << ", joint#" << j.index
+                 << ")";
+            (void)world.body_aabb(b);
+            (void)world.joints(b);
+            (void)world.contacts(b);
+            (void)world.mass_data(b);
+            (void)world.motion_locks(b);
+            (void)world.body(s);
+            (void)world.shape_aabb(s);
+            (void)world.geometry(s);
+            (void)world.joint_kind(j);
+            (void)world.joint_body_a(j);
+            break;
+        }
+        case 11: {
+            const double speed = body_world.chance(20) ? inf : body_world_value(0.1, 50.0);
+            last << "set_maximum_linear_speed(" << speed << ")";
+            world.set_maximum_linear_speed(speed);
+            break;
+        }
+        case 12: {
+            const double push = body_world_value(0.1, 5.0), zeta = body_world_value(0.1, 20.0);
+            const double hertz = body_world_value(1.0, 60.0);
+            last << "set_contact_tuning(" << hertz << ", " << zeta << ", " << push << ")";
+            world.set_contact_tuning(hertz, zeta, push);
+            break;
+        }
+        default: // one setting per call, so that a refusal is the whole call's
+            switch (body_world.below(4)) {
+            case 0: {
+                const int workers = body_world.chance(90) ? 1 + int(body_world.below(4))
+                                                          : int(body_world.below(400)) - 100;
+                last << "set_workers(" << workers << ")";
+                world.set_workers(workers);
+                break;
+            }
+            case 1: {
+                const bool on = body_world.chance(50);
+                last << "set_sleeping(" << on << ")";
+                world.set_sleeping(on);
+                break;
+            }
+            case 2: {
+                const bool on = body_world.chance(80);
+                last << "set_continuous(" << on << ")";
+                world.set_continuous(on);
+                break;
+            }
+            default: {
+                const double threshold = body_world_value(0.0, 2.0);
+                last << "set_restitution_threshold(" << threshold << ")";
+                world.set_restitution_threshold(threshold);
+                break;
+            }
+            }
+            break;
+        }
+    }
+
     /// One random call; throws what the library throws.
     void call() {
         query_block();
@@ -784,6 +939,10 @@ struct Driver {
         }
         if (control_call())
             return;
+        if (body_world.chance(15)) {
+            body_world_call();
+            return;
+        }
         switch (r.below(24)) {
         case 0:
         case 1: {

@@ -47,16 +47,28 @@ inline int pick(std::mt19937_64& r, int n) {
 
 /// A random world of `seed`: a ground, 6 to 30 bodies of every shape kind (some bullets, some
 /// damped, some kinematic), joints of every kind between them, sensors, a few bodies and shapes
-/// destroyed (their slots free), loads, filters; sleeping on for odd seeds.
+/// destroyed (their slots free), loads, filters; sleeping on for odd seeds. From a stream of
+/// their own, the settings changed after creation, each of which changes later steps (so a
+/// snapshot that lost one would not continue with the same bits): joints' break torques,
+/// thresholds, own tuning, spring targets, limits and a distance joint's motor; shapes with hit
+/// events and bodies with move events (the events of the step after the snapshot are part of
+/// its state); bodies' gravity scales, motion locks, enabled flags, mass data and sleep
+/// thresholds; the world's hit threshold and maximum linear speed; user data everywhere.
 inline World random_world(std::uint64_t seed, int workers = 1) {
     std::mt19937_64 r(seed);
+    std::mt19937_64 c(seed * 104729 + 17); // the controls' stream
     WorldDef def;
     def.enable_sleep = (seed & 1) != 0;
     def.workers = workers;
     def.substeps = 1 + pick(r, 4);
     if (pick(r, 3) == 0)
         def.manifold_reuse_distance = 0.0;
+    if (pick(c, 2) == 0)
+        def.hit_event_threshold = uniform(c, 0.1, 1.0);
     World w(def);
+    w.set_user_data(UserData(seed));
+    if (pick(c, 2) == 0)
+        w.set_maximum_linear_speed(uniform(c, 2.0, 6.0));
     BodyDef ground_def;
     ground_def.type = BodyType::static_body;
     const BodyId ground = w.create_body(ground_def);
@@ -82,6 +94,8 @@ inline World random_world(std::uint64_t seed, int workers = 1) {
             b.force = {uniform(r, -5.0, 5.0), 0.0};
         if (pick(r, 3) == 0)
             b.name = std::string("b").append(std::to_string(i));
+        b.enable_move_events = pick(c, 3) == 0;
+        b.user_data = UserData(1000 + i);
         const BodyId id = w.create_body(b);
         const Material m{uniform(r, 0.5, 2.0), pick(r, 3) == 0 ? uniform(r, 0.0, 0.8) : 0.0,
                          uniform(r, 0.0, 0.9)};
@@ -106,6 +120,13 @@ inline World random_world(std::uint64_t seed, int workers = 1) {
             sensor.is_sensor = true;
             w.create_shape(id, sensor);
         }
+        if (pick(c, 3) == 0) { // a shape with hit events, another with contact events off
+            ShapeDef hit = circle_shape(0.15, m, {-0.3, 0.0});
+            hit.enable_hit_events = true;
+            hit.enable_contact_events = pick(c, 2) == 0;
+            hit.user_data = UserData(2000 + i);
+            w.create_shape(id, hit);
+        }
         bodies.push_back(id);
     }
     // Joints of every kind, between neighbours (so that they hold, and some pile up).
@@ -115,37 +136,62 @@ inline World random_world(std::uint64_t seed, int workers = 1) {
             continue;
         const Vec2d pa = w.position(a), pb = w.position(b);
         const Vec2d mid = 0.5 * (pa + pb);
+        JointId j{};
         switch (pick(r, 8)) {
         case 0:
-            w.create_joint(RevoluteJointDef{.body_a = a, .body_b = b, .anchor = mid});
+            j = w.create_joint(RevoluteJointDef{.body_a = a, .body_b = b, .anchor = mid});
             break;
         case 1:
-            w.create_joint(DistanceJointDef{
+            j = w.create_joint(DistanceJointDef{
                 .body_a = a, .body_b = b, .anchor_a = pa, .anchor_b = pb, .hertz = 2.0});
             break;
         case 2:
-            w.create_joint(WeldJointDef{.body_a = a, .body_b = b, .anchor = mid});
+            j = w.create_joint(WeldJointDef{.body_a = a, .body_b = b, .anchor = mid});
             break;
         case 3:
-            w.create_joint(PrismaticJointDef{.body_a = a,
-                                             .body_b = b,
-                                             .anchor = mid,
-                                             .enable_limit = true,
-                                             .lower_translation = -1.0,
-                                             .upper_translation = 1.0});
+            j = w.create_joint(PrismaticJointDef{.body_a = a,
+                                                 .body_b = b,
+                                                 .anchor = mid,
+                                                 .enable_limit = true,
+                                                 .lower_translation = -1.0,
+                                                 .upper_translation = 1.0});
             break;
         case 4:
-            w.create_joint(WheelJointDef{.body_a = a, .body_b = b, .anchor = pb});
+            j = w.create_joint(WheelJointDef{.body_a = a, .body_b = b, .anchor = pb});
             break;
         case 5:
-            w.create_joint(MotorJointDef{.body_a = a, .body_b = b, .linear_offset = {1.0, 0.0}});
+            j = w.create_joint(
+                MotorJointDef{.body_a = a, .body_b = b, .linear_offset = {1.0, 0.0}});
             break;
         case 6:
-            w.create_joint(FilterJointDef{.body_a = a, .body_b = b});
+            j = w.create_joint(FilterJointDef{.body_a = a, .body_b = b});
             break;
         default:
             if (w.type(b) == BodyType::dynamic)
-                w.create_joint(TargetJointDef{.body = b, .target = pb + Vec2d{0.5, 0.5}});
+                j = w.create_joint(TargetJointDef{.body = b, .target = pb + Vec2d{0.5, 0.5}});
+        }
+        if (!w.is_valid(j))
+            continue;
+        // The joint's settings changed after creation, from the controls' stream.
+        const JointKind kind = w.joint_kind(j);
+        w.set_user_data(j, UserData(3000 + i));
+        if (kind == JointKind::filter)
+            continue;
+        if (kind != JointKind::target && kind != JointKind::motor && pick(c, 3) == 0)
+            w.set_constraint_tuning(j, uniform(c, 5.0, 40.0), uniform(c, 0.2, 2.0));
+        if (kind != JointKind::distance && kind != JointKind::target && pick(c, 3) == 0)
+            w.set_joint_break_torque(j, uniform(c, 5.0, 60.0));
+        if (pick(c, 3) == 0)
+            w.set_joint_event_thresholds(j, uniform(c, 1.0, 20.0), uniform(c, 1.0, 20.0));
+        if (kind == JointKind::distance) {
+            w.enable_joint_motor(j, true);
+            w.set_joint_motor_speed(j, uniform(c, -1.0, 1.0));
+            w.set_joint_max_motor_force(j, uniform(c, 1.0, 30.0));
+            w.set_joint_limits(j, 0.5, 3.0);
+        }
+        if ((kind == JointKind::revolute || kind == JointKind::prismatic) && pick(c, 2) == 0) {
+            w.set_joint_spring(j, uniform(c, 1.0, 5.0), 0.5);
+            w.set_joint_spring_target(j, uniform(c, -0.5, 0.5));
         }
     }
     // Free slots: a few bodies and shapes destroyed, a filter changed.
@@ -164,6 +210,19 @@ inline World random_world(std::uint64_t seed, int workers = 1) {
             w.set_filter(shapes.front(), Filter{2, 0xFFFFFFFD, 0});
         if (w.type(b) == BodyType::dynamic && pick(r, 9) == 0)
             w.apply_force(b, {1.0, 2.0}, w.position(b) + Vec2d{0.1, 0.0});
+        // Body controls, from the controls' stream.
+        if (pick(c, 4) == 0)
+            w.set_gravity_scale(b, uniform(c, -0.5, 2.0));
+        if (pick(c, 6) == 0)
+            w.set_motion_locks(b, MotionLocks{pick(c, 2) == 0, pick(c, 2) == 0, pick(c, 3) == 0});
+        if (pick(c, 10) == 0)
+            w.set_enabled(b, false);
+        if (w.type(b) == BodyType::dynamic && pick(c, 6) == 0)
+            w.set_mass_data(b, BodyMassData{uniform(c, 0.5, 3.0),
+                                            {uniform(c, -0.2, 0.2), uniform(c, -0.2, 0.2)},
+                                            uniform(c, 0.2, 1.0)});
+        if (pick(c, 5) == 0)
+            w.set_sleep_threshold(b, uniform(c, 0.01, 0.5));
     }
     return w;
 }

@@ -138,11 +138,16 @@ BOOST_AUTO_TEST_CASE(random_worlds_continue_with_the_same_bits, *utf::label("det
             BOOST_TEST(restored.state_hash() == hash_at);
             BOOST_TEST((restored.snapshot() == bytes));
             BOOST_TEST(first_difference(expected, run(restored, dt, 90)) == 0);
+            // User data is not simulation state (not hashed) but is in the snapshot.
+            BOOST_TEST(restored.user_data() == UserData(seed));
+            for (const BodyId b : original.bodies())
+                BOOST_TEST(restored.user_data(in_world(restored, b)) == original.user_data(b));
         }
         World other = random_world(seed + 1000, 2);
         other.restore(bytes);
         BOOST_TEST_INFO("seed " << seed << " restored into another world");
         BOOST_TEST(other.state_hash() == hash_at);
+        BOOST_TEST(other.user_data() == UserData(seed)); // the snapshot's, not the world's own
         BOOST_TEST(first_difference(expected, run(other, dt, 90)) == 0);
     }
 }

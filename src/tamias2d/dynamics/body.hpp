@@ -67,6 +67,11 @@ struct BodySettings {
     bool fixed_rotation = false;
     bool bullet = false;                                ///< swept against dynamic bodies too (DD29)
     double linear_damping = 0.0, angular_damping = 0.0; ///< s^-1 (DD17, DD18)
+    UserData user_data = 0; ///< the game's own value: never hashed, never read
+    // Run-time control (World::set_motion_locks, set_mass_data, set_sleep_threshold).
+    bool lock_linear_x = false, lock_linear_y = false; ///< DD39's linear locks
+    std::optional<Vec2d> center_override{};            ///< m, body frame (set_mass_data)
+    std::optional<double> sleep_threshold{};           ///< m s^-1; none: the world's
 };
 
 } // namespace tamias2d

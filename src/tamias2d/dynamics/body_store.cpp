@@ -87,6 +87,7 @@ std::uint32_t BodyStore::create(const BodyDef& def, bool sleeping) {
     b.gravity_scale = def.gravity_scale;
     settings[i] = {def.name,           def.load,   def.mass,           def.inertia,
                    def.fixed_rotation, def.bullet, def.linear_damping, def.angular_damping};
+    settings[i].user_data = def.user_data;
     // \srs{IM5} A dynamic body with either damping coefficient non-zero moves by IM5.
     b.damped =
         def.type == BodyType::dynamic && (def.linear_damping != 0.0 || def.angular_damping != 0.0);
@@ -98,6 +99,8 @@ std::uint32_t BodyStore::create(const BodyDef& def, bool sleeping) {
 
 void BodyStore::destroy(std::uint32_t i) {
     Body& b = bodies[i];
+    disabled_bodies -= sleep_states[i].disabled ? 1 : 0;
+    locked_bodies -= linearly_locked(i) ? 1 : 0;
     b.first_shape = null_index;
     sleep_states[i] = SleepState{}; // neither awake nor movable
     BodySettings& set = settings[i];
@@ -127,7 +130,7 @@ void BodyStore::update_mass(std::uint32_t i, ShapeStore& shapes) {
         MassData md{};
         if (!parts.empty())
             md = combine(parts);
-        b.local_center = md.center;
+        b.local_center = set.center_override.value_or(md.center);
         const double shape_mass = md.mass;
         // No shape, or only shapes of no area (segments, chains): the shapeless default.
         b.mass = set.mass_override.value_or(shape_mass > 0.0 ? shape_mass : 1.0);
@@ -276,6 +279,15 @@ void BodyStore::hash(StateHasher& hs, const ShapeStore& shapes, bool sleeping) c
         hs(std::uint64_t(set.fixed_rotation) << 1 | std::uint64_t(bool(set.load)));
         if (set.bullet) // (other bodies hash as they always did)
             hs(std::uint64_t(1) << 2);
+        // The run-time controls, each only when set (so that other bodies hash as before).
+        if (sleep_states[i].disabled)
+            hs(std::uint64_t(1) << 3);
+        if (set.lock_linear_x || set.lock_linear_y)
+            hs(std::uint64_t(set.lock_linear_x) << 4 | std::uint64_t(set.lock_linear_y) << 5);
+        if (set.center_override)
+            hs(*set.center_override);
+        if (set.sleep_threshold)
+            hs(*set.sleep_threshold);
         if (b.damped) { // (so that undamped worlds hash as they always did)
             hs(set.linear_damping);
             hs(set.angular_damping);
@@ -327,10 +339,16 @@ void body_fields(IO& io, B& b, S& set, Z& sleep, bool& has_load) {
     io("bullet", set.bullet);
     io("linear_damping", set.linear_damping);
     io("angular_damping", set.angular_damping);
+    io.user_data("user_data", set.user_data);
+    io("lock_linear_x", set.lock_linear_x);
+    io("lock_linear_y", set.lock_linear_y);
+    io("center_override", set.center_override);
+    io("sleep_threshold", set.sleep_threshold);
     io("sleep_time", sleep.sleep_time);
     io("awake", sleep.awake);
     io("sleep_enabled", sleep.enabled);
     io("movable", sleep.movable);
+    io("disabled", sleep.disabled);
 }
 
 } // namespace
@@ -362,8 +380,12 @@ void BodyStore::read(SnapshotReader& in, std::vector<std::uint32_t>& had_load) {
         body_fields(in, b, settings[i], sleep_states[i], has_load);
         in.require(alive(i) || (!has_load && b.first_shape == null_index && !sleep_states[i].awake),
                    "first_shape", "a dead slot has no shapes, load or wake", at);
+        in.require(alive(i) || !sleep_states[i].disabled, "disabled", "a dead slot is not disabled",
+                   at);
         if (has_load)
             had_load.push_back(i);
+        disabled_bodies += sleep_states[i].disabled ? 1 : 0;
+        locked_bodies += alive(i) && linearly_locked(i) ? 1 : 0;
     }
     in.in(nullptr);
     loaded_bodies = 0;
@@ -393,6 +415,67 @@ void BodyStore::check_links(SnapshotReader& in, ShapeStore& shapes) const {
             in.fail("body", "a live shape must be on the shape list of a live body");
     }
     in.in(nullptr);
+}
+
+// --- run-time control ---
+
+void BodyStore::change_type(std::uint32_t i, BodyType type, ShapeStore& shapes) {
+    Body& b = bodies[i];
+    b.type = type;
+    if (type == BodyType::static_body) { // a static body never moves (R2)
+        b.v = {};
+        b.w = 0.0;
+        b.force_once = {};
+        b.torque_once = 0.0;
+        b.loaded = !b.unloaded();
+    }
+    const BodySettings& set = settings[i];
+    b.damped =
+        type == BodyType::dynamic && (set.linear_damping != 0.0 || set.angular_damping != 0.0);
+    update_mass_keeping_motion(i, shapes);
+    SleepState& st = sleep_states[i];
+    st.movable = type != BodyType::static_body && !st.disabled;
+    st.awake = st.movable;
+    st.sleep_time = 0.0;
+}
+
+void BodyStore::set_disabled(std::uint32_t i, bool disabled) {
+    SleepState& st = sleep_states[i];
+    if (st.disabled == disabled)
+        return;
+    st.disabled = disabled;
+    disabled_bodies += disabled ? 1 : std::uint32_t(-1);
+    st.movable = !disabled && bodies[i].type != BodyType::static_body;
+    st.awake = st.movable;
+    st.sleep_time = 0.0;
+}
+
+/// \srs{DD39} A linear lock set now stops the body along its axis at once.
+void BodyStore::set_linear_locks(std::uint32_t i, bool x, bool y) {
+    const bool before = linearly_locked(i);
+    settings[i].lock_linear_x = x;
+    settings[i].lock_linear_y = y;
+    locked_bodies += std::uint32_t(linearly_locked(i)) - std::uint32_t(before);
+    Body& b = bodies[i];
+    if (b.type == BodyType::dynamic)
+        b.v = bridge::locked_velocity(b.v, x, y);
+}
+
+/// \srs{DD41} The body's new centre keeps the velocity it had as a point of the body; the
+/// angular velocity stays (zero under the angular lock, which nothing may turn).
+void BodyStore::update_mass_keeping_motion(std::uint32_t i, ShapeStore& shapes) {
+    Body& b = bodies[i];
+    const Vec2d center_before = b.center;
+    update_mass(i, shapes);
+    if (b.type == BodyType::static_body)
+        return;
+    const Vec2d shift = b.center - center_before;
+    if (shift.x != 0.0 || shift.y != 0.0) // (else v + 0 could turn a -0 into +0)
+        b.v = bridge::shifted_center_velocity(b.v, b.w, shift);
+    if (b.type == BodyType::dynamic && settings[i].fixed_rotation)
+        b.w = 0.0;
+    if (b.type == BodyType::dynamic)
+        b.v = bridge::locked_velocity(b.v, settings[i].lock_linear_x, settings[i].lock_linear_y);
 }
 
 } // namespace tamias2d

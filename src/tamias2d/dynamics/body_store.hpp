@@ -124,6 +124,27 @@ struct BodyStore {
     /// (each once, ending in null_index), every live shape is on its body's list, and the free
     /// slots are dead and distinct. Rebuilds ShapeStore::last_of_body.
     void check_links(SnapshotReader& in, ShapeStore& shapes) const;
+    // --- run-time control (World::set_body_type, set_enabled, set_motion_locks, ...) ---
+    std::uint32_t disabled_bodies = 0; ///< live bodies disabled (World::set_enabled)
+    std::uint32_t locked_bodies = 0;   ///< live bodies with a linear motion lock (DD39)
+    /// Whether body i is disabled: one flag read only while some body is.
+    bool disabled(std::uint32_t i) const { return disabled_bodies > 0 && sleep_states[i].disabled; }
+    /// Whether body i has a linear lock (DD39).
+    bool linearly_locked(std::uint32_t i) const {
+        return settings[i].lock_linear_x || settings[i].lock_linear_y;
+    }
+    /// Body i's type becomes `type`: velocities and one-step loads zero for a static body, the
+    /// mass recomputed (update_mass), the damping flag and the sleep state to match (woken if
+    /// movable and enabled; neither awake nor movable if static).
+    void change_type(std::uint32_t i, BodyType type, ShapeStore& shapes);
+    /// Body i disabled or enabled (the counts, the flags; enabled and movable: woken).
+    void set_disabled(std::uint32_t i, bool disabled);
+    /// Body i's linear locks (the count kept); the locked velocity components zeroed.
+    void set_linear_locks(std::uint32_t i, bool x, bool y);
+    /// Body i's mass recomputed with set_mass_data's rule: the origin stays, the centre moves
+    /// with the body's rigid motion (DD41: it keeps the velocity it had as a point of the
+    /// body), the angular velocity stays (zero if the rotation is now locked).
+    void update_mass_keeping_motion(std::uint32_t i, ShapeStore& shapes);
 };
 
 } // namespace tamias2d

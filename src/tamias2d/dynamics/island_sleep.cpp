@@ -49,7 +49,9 @@ void IslandSleep::update_sleep(BodyStore& store, const StepContext& step) {
             b.force.x != 0.0 || b.force.y != 0.0 || b.torque != 0.0 || bool(store.settings[i].load);
         const bool rest =
             st.enabled && !loaded &&
-            at_rest(b.v, b.w, def.linear_sleep_tolerance, def.angular_sleep_tolerance);
+            at_rest(b.v, b.w,
+                    store.settings[i].sleep_threshold.value_or(def.linear_sleep_tolerance),
+                    def.angular_sleep_tolerance);
         st.sleep_time = rest ? st.sleep_time + dt : 0.0;
         double& island = island_rest_[islands_.find(i)];
         island = std::min(island, rest ? st.sleep_time : -1.0); // -1: not at rest now

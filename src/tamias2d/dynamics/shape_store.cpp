@@ -102,7 +102,7 @@ std::vector<ShapeId> ShapeStore::overlapping(const Aabb& box, const BodyStore& b
     broad_phase.query(box, [&](int proxy) {
         const std::uint32_t s = broad_phase.user_data(proxy);
         const Shape& sh = shapes[s];
-        if (overlaps(this->box(sh, bodies.bodies[sh.body]), box))
+        if (!bodies.disabled(sh.body) && overlaps(this->box(sh, bodies.bodies[sh.body]), box))
             out.push_back(id(s));
         return true;
     });
@@ -116,7 +116,7 @@ std::vector<ShapeId> ShapeStore::containing(Vec2d p, const BodyStore& bodies) co
     broad_phase.query(box, [&](int proxy) {
         const std::uint32_t s = broad_phase.user_data(proxy);
         const Shape& sh = shapes[s];
-        if (test_point(defs[s].geometry, bodies.bodies[sh.body].xf, p))
+        if (!bodies.disabled(sh.body) && test_point(defs[s].geometry, bodies.bodies[sh.body].xf, p))
             out.push_back(id(s));
         return true;
     });
@@ -134,7 +134,8 @@ std::optional<RayCastHit> ShapeStore::ray_cast(Vec2d origin, Vec2d translation,
     std::optional<RayCastHit> best;
     broad_phase.ray_cast(origin, translation, [&](int proxy, double max_fraction) {
         const std::uint32_t s = broad_phase.user_data(proxy);
-        if (!defs[s].is_sensor) { // a sensor is not there for rays (DD28)
+        // A sensor is not there for rays (DD28), nor a disabled body's shape.
+        if (!defs[s].is_sensor && !bodies.disabled(shapes[s].body)) {
             const Shape& sh = shapes[s];
             const auto hit = tamias2d::ray_cast(defs[s].geometry, bodies.bodies[sh.body].xf, origin,
                                                 translation);
@@ -223,6 +224,7 @@ template <class IO, class D> void shape_def_fields(IO& io, D& d) {
     io("enable_contact_events", d.enable_contact_events);
     io("enable_sensor_events", d.enable_sensor_events);
     io("enable_hit_events", d.enable_hit_events);
+    io.user_data("user_data", d.user_data);
 }
 
 /// Every field of a Shape but its collider (made from the definition), in the snapshot's order.
@@ -309,6 +311,22 @@ void ShapeStore::refit_proxy(std::uint32_t i, const Body& b) {
     const BroadPhase::ProxyMove move{sh.proxy, sh.fat_box};
     broad_phase.move_proxies({&move, 1});
     broad_phase.touch_proxy(sh.proxy);
+}
+
+// --- run-time control ---
+
+void ShapeStore::refile_proxies(const Body& b) {
+    const bool is_static = b.type == BodyType::static_body;
+    for (std::uint32_t s = b.first_shape; s != null_index; s = shapes[s].next) {
+        Shape& sh = shapes[s];
+        if (broad_phase.is_static(sh.proxy) == is_static) {
+            broad_phase.touch_proxy(sh.proxy);
+            continue;
+        }
+        broad_phase.destroy_proxy(sh.proxy);
+        sh.proxy = broad_phase.create_proxy(box(sh, b), s, is_static); // (counts as moved)
+        sh.fat_box = broad_phase.fat_aabb(sh.proxy);
+    }
 }
 
 } // namespace tamias2d

@@ -131,6 +131,10 @@ class ShapeStore {
     /// tight one (smaller too, where move_proxy keeps one that contains it), marked moved so
     /// that the next step finds its pairs.
     void refit_proxy(std::uint32_t i, const Body& b);
+    // --- run-time control (World::set_body_type, set_enabled) ---
+    /// Body b's shapes' proxies moved to the tree of its type now (static or not) when they
+    /// are in the other, else marked moved: the next step's broad phase reports their pairs.
+    void refile_proxies(const Body& b);
 
   private:
     /// The proxies refit_fat_box moved, for one BroadPhase::move_proxies call.

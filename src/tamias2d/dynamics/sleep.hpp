@@ -20,7 +20,8 @@ struct SleepState {
     double sleep_time = 0.0; ///< s at rest without a break (0 while it may not sleep)
     bool awake = false;      ///< only a movable body is ever awake
     bool enabled = true;     ///< BodyDef::enable_sleep
-    bool movable = false;    ///< alive and not static
+    bool movable = false;    ///< alive, not static and not disabled
+    bool disabled = false;   ///< World::set_enabled(false): the step skips it
 };
 
 /// At rest: slower than both tolerances (m s^-1, rad s^-1).

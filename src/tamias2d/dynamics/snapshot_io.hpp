@@ -16,6 +16,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <optional>
 #include <span>
 #include <string>
@@ -96,6 +97,13 @@ class SnapshotWriter {
         if (v)
             (*this)(f, *v);
     }
+    void operator()(const char* f, const std::optional<Vec2d>& v) {
+        (*this)(f, v.has_value());
+        if (v)
+            (*this)(f, *v);
+    }
+    /// A UserData (pointer-sized) as 64 bits.
+    void user_data(const char*, std::uintptr_t v) { u64(std::uint64_t(v)); }
     void operator()(const char*, const std::string& s) {
         u64(s.size());
         for (const char c : s)
@@ -225,6 +233,24 @@ class SnapshotReader {
             (*this)(f, x);
             v = x;
         }
+    }
+    void operator()(const char* f, std::optional<Vec2d>& v) {
+        bool has = false;
+        (*this)(f, has);
+        v.reset();
+        if (has) {
+            Vec2d x{};
+            (*this)(f, x);
+            v = x;
+        }
+    }
+    /// A UserData written as 64 bits; refused if it does not fit this platform's UserData.
+    void user_data(const char* f, std::uintptr_t& v) {
+        const std::size_t at = offset();
+        const std::uint64_t u = u64(f);
+        if (u > std::uint64_t(std::numeric_limits<std::uintptr_t>::max()))
+            fail_at(at, f, "must fit in a UserData (std::uintptr_t) of this platform");
+        v = std::uintptr_t(u);
     }
     void operator()(const char* f, std::string& s) {
         const std::size_t n = count(f, 1);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 
 #include "tamias2d/dynamics/body_store.hpp"
 #include "tamias2d/dynamics/contacts/contact_manager.hpp"
@@ -23,11 +24,13 @@ constexpr std::size_t body_block = 512;
 // A loop over fewer bodies runs on the calling thread: waking the others costs more.
 constexpr std::size_t parallel_bodies = 2 * body_block;
 
-/// Whether body i is immovable this step: static, destroyed, or asleep (sleeping on).
+/// Whether body i is immovable this step: static, destroyed, asleep (sleeping on) or disabled
+/// (World::set_enabled: a disabled body is never awake; with sleeping off every other movable
+/// body is).
 bool immovable(const BodyStore& store, std::uint32_t i, const WorldDef& def) {
     const Body& b = store.bodies[i];
-    return (def.enable_sleep && !store.sleep_states[i].awake) || !store.alive(i) ||
-           b.type == BodyType::static_body;
+    return ((def.enable_sleep || store.disabled_bodies > 0) && !store.sleep_states[i].awake) ||
+           !store.alive(i) || b.type == BodyType::static_body;
 }
 
 /// A moving body's accelerations from gravity and its loads (IM1, IM2).
@@ -73,8 +76,19 @@ void StepSolver::prepare_bodies(const BodyStore& store, const StepContext& step)
     const bool regions = def.contact_regions > 1;
     const double g = length(def.gravity);
     const Vec2d across = g > 0.0 ? Vec2d{-def.gravity.y / g, def.gravity.x / g} : Vec2d{1.0, 0.0};
+    // DD39: the moving dynamic bodies with a linear lock (none in most worlds: no pass).
+    const auto list_locked = [&] {
+        locked_.clear();
+        for (std::uint32_t i = 0; store.locked_bodies > 0 && i < bodies.size(); ++i) {
+            if (solver_index_[i] != 0 && bodies[i].type == BodyType::dynamic &&
+                store.linearly_locked(i))
+                locked_.push_back({solver_index_[i], store.settings[i].lock_linear_x,
+                                   store.settings[i].lock_linear_y});
+        }
+    };
     if (tasks.parallel() && bodies.size() >= parallel_bodies) {
         prepare_bodies_in_blocks(store, loads, def, h, across, tasks);
+        list_locked();
         return;
     }
     // Solver body 0 is the shared immovable body standing in for every static body.
@@ -111,6 +125,7 @@ void StepSolver::prepare_bodies(const BodyStore& store, const StepContext& step)
                                               : 1.0);
         }
     }
+    list_locked();
 }
 
 // Two passes over the same blocks of bodies: each block numbers its moving bodies and notes
@@ -270,6 +285,12 @@ void StepSolver::prepare_joints(JointStore& joints, const BodyStore& bodies) {
         if (!joints.alive(i) || j.type == JointType::filter) // (no constraint: solver bodies 0)
             continue;
         prepare_joint(j, bodies, solver_index_);
+        // A joint none of whose bodies is dynamic, or one holding a disabled body, is not
+        // solved (World::set_body_type, set_enabled): both sides immovable this step.
+        if ((bodies.bodies[j.body_a].type != BodyType::dynamic &&
+             bodies.bodies[j.body_b].type != BodyType::dynamic) ||
+            bodies.disabled(j.body_a) || bodies.disabled(j.body_b))
+            j.step.solver_a = j.step.solver_b = 0;
         // An immovable side keeps its rotation all step (solver body 0 never turns); a moving
         // side's is its body's, turned once per body below rather than once per joint.
         if (j.step.solver_a == 0)
@@ -515,6 +536,7 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
                 solve_joint(j, solver_bodies_, softness_of(j), h, true);
         }
         contact_pass(tasks, streams, &st, true);
+        constrain_velocities(def.maximum_linear_speed, tasks);
         integrate_positions(h, tasks);
         turn_joints(joints);
         for (Joint& j : joints) {
@@ -559,6 +581,21 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
         for (int j = 0; j < b.count; ++j)
             records.totals[b.contact].normal[j] = b.points[j].total_normal_impulse;
     }
+    // The velocities the step leaves keep the locks and the limit too (DD39, DD40).
+    constrain_velocities(def.maximum_linear_speed, tasks);
+}
+
+void StepSolver::constrain_velocities(double max_speed, const StepTasks& tasks) {
+    for (const LockedBody& l : locked_) {
+        SolverBody& sb = solver_bodies_[l.solver];
+        sb.v = bridge::locked_velocity(sb.v, l.x, l.y);
+    }
+    if (!(max_speed < std::numeric_limits<double>::infinity()))
+        return;
+    over_solver_bodies(solver_bodies_.size(), tasks, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t k = begin; k < end; ++k)
+            solver_bodies_[k].v = bridge::limited_velocity(solver_bodies_[k].v, max_speed);
+    });
 }
 
 void StepSolver::contact_pass(const StepTasks& tasks, std::uint32_t streams,

@@ -94,6 +94,16 @@ class StepSolver {
                       const ContactSolverSettings* settings, bool use_bias);
     /// The joints' body rotations after a position half (Joint::q_a, q_b).
     void turn_joints(std::vector<Joint>& joints);
+    /// DD39 and DD40 before a position half (and at the step's end): the locked velocity
+    /// components zeroed, then a speed above `max_speed` slowed to it. Nothing without a lock
+    /// and with an infinite limit.
+    void constrain_velocities(double max_speed, const StepTasks& tasks);
+    /// The moving bodies with a linear lock this step (DD39), from prepare_bodies.
+    struct LockedBody {
+        std::uint32_t solver;
+        bool x, y;
+    };
+    std::vector<LockedBody> locked_;
 
     LargeArray<SolverBody> solver_bodies_;
     std::vector<Vec2d> accelerations_;

@@ -112,6 +112,8 @@ bool ContactManager::should_collide(const BodyStore& bodies, const ShapeStore& s
         return false;
     if (a.type != BodyType::dynamic && b.type != BodyType::dynamic)
         return false;
+    if (bodies.disabled(ia) || bodies.disabled(ib)) // (World::set_enabled)
+        return false;
     if (joints.live() != 0 && joints.filters(ia, ib))
         return false;
     const ShapeDef& da = shapes.defs[sa];

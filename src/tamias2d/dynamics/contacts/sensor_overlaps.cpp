@@ -61,16 +61,18 @@ void SensorOverlaps::update(const BodyStore& bodies, const ShapeStore& shapes,
         const Shape& ss = shapes.shapes[sensor.shape];
         const Body& sb = bodies.bodies[ss.body];
         now_.clear();
-        // A sensor whose events are off detects nothing: its overlaps end, with end events.
+        // A sensor whose events are off, or a disabled body's (World::set_enabled), detects
+        // nothing: its overlaps end, with end events.
         const bool detects = shapes.defs[sensor.shape].enable_sensor_events;
-        shapes.broad_phase.query(compute_aabb(ss.collider, ss.body_xf), [&](int proxy) {
+        const auto visit = [&](int proxy) {
             const std::uint32_t v = shapes.broad_phase.user_data(proxy);
             const Shape& vs = shapes.shapes[v];
             const ShapeDef& vd = shapes.defs[v];
             // Not itself or its own body, not another sensor, not a shape whose sensor events
-            // are off, not two static bodies; the filters (DD27) and the game's filter decide
-            // the rest, as for contacts.
-            if (!detects || vs.body == ss.body || vd.is_sensor || !vd.enable_sensor_events ||
+            // are off, not a disabled body's, not two static bodies; the filters (DD27) and the
+            // game's filter decide the rest, as for contacts.
+            if (vs.body == ss.body || vd.is_sensor || !vd.enable_sensor_events ||
+                bodies.disabled(vs.body) ||
                 (sb.type == BodyType::static_body &&
                  bodies.bodies[vs.body].type == BodyType::static_body) ||
                 !admits(shapes.defs[sensor.shape].filter, vd.filter) ||
@@ -79,7 +81,9 @@ void SensorOverlaps::update(const BodyStore& bodies, const ShapeStore& shapes,
             if (overlap(ss, vs))
                 now_.push_back(v);
             return true;
-        });
+        };
+        if (detects && !bodies.disabled(ss.body))
+            shapes.broad_phase.query(compute_aabb(ss.collider, ss.body_xf), visit);
         std::sort(now_.begin(), now_.end());
         // Both lists ascending: one merge finds who came and who went.
         auto before = sensor.visitors.begin();

@@ -10,6 +10,7 @@
 
 #include "tamias2d/dynamics/softness.hpp"
 #include "tamias2d/math/vec2d.hpp"
+#include "tamias2d/user_data.hpp"
 
 namespace tamias2d {
 
@@ -93,6 +94,8 @@ struct Joint {
     double break_torque = std::numeric_limits<double>::infinity();
     bool tuned = false;
     double tuning_hertz = 0.0, tuning_damping_ratio = 0.0;
+
+    UserData user_data = 0; ///< the game's own value: never hashed, never read
 
     JointStepState step; ///< what a step writes (copied by value to refuse a diverged step)
 };

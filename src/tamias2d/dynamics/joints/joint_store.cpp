@@ -264,6 +264,7 @@ template <class IO, class J> void joint_fields(IO& io, J& j) {
     io("tuned", j.tuned);
     io("tuning_hertz", j.tuning_hertz);
     io("tuning_damping_ratio", j.tuning_damping_ratio);
+    io.user_data("user_data", j.user_data);
     auto& st = j.step;
     io("step.linear_impulse", st.linear_impulse);
     io("step.axial_impulse", st.axial_impulse);
@@ -392,6 +393,24 @@ void JointStore::hash_controls(StateHasher& hs, const Joint& j) {
     hs(std::uint64_t(j.tuned));
     hs(j.tuning_hertz);
     hs(j.tuning_damping_ratio);
+}
+
+// --- run-time control ---
+
+void JointStore::wake_joined(std::uint32_t i, BodyStore& bodies) const {
+    for (const std::uint32_t k : of_body(i)) {
+        bodies.wake(joints[k].body_a);
+        bodies.wake(joints[k].body_b);
+    }
+}
+
+void JointStore::clear_impulses(std::uint32_t i) {
+    for (const std::uint32_t k : of_body(i)) {
+        JointStepState& st = joints[k].step;
+        st.linear_impulse = {};
+        st.axial_impulse = st.motor_impulse = st.lower_impulse = st.upper_impulse = 0.0;
+        st.spring_impulse = st.angular_impulse = st.perp_impulse = 0.0;
+    }
 }
 
 } // namespace tamias2d

@@ -124,6 +124,13 @@ class JointStore {
     /// Feeds what the joint_control calls set to the state hash, when any differs from its
     /// default (a spring target, a break torque, a tuning of the joint's own).
     static void hash_controls(StateHasher& hs, const Joint& j);
+    // --- run-time control (World::set_body_type, set_enabled) ---
+    /// Wakes the bodies of every joint of body i.
+    void wake_joined(std::uint32_t i, BodyStore& bodies) const;
+    /// Zeroes the impulses (the warm start and the reaction) of every joint of body i: a
+    /// joint that stops being solved must not keep the last ones, to break with or to warm
+    /// start from when it is solved again.
+    void clear_impulses(std::uint32_t i);
 
   private:
     std::vector<std::vector<std::uint32_t>> by_body_; ///< per body index: its joints

@@ -1,0 +1,384 @@
+// A body's definition changed at run time: type, enabled state, gravity scale, bullet flag,
+// motion locks (DD39), mass data (DD41), sleep threshold and wake_touching. Each call is tested
+// for its effect against a closed form, the rule it states or a world built with the setting
+// from the start, and for its strong guarantee (a refused call leaves state_hash() unchanged;
+// a value the body already has changes no bit of what follows).
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+#include <vector>
+
+#include "tamias2d/errors.hpp"
+#include "tamias2d/world.hpp"
+
+namespace utf = boost::unit_test;
+using namespace tamias2d;
+
+namespace {
+
+constexpr double dt = 1.0 / 60.0;
+constexpr int substeps = 4; // WorldDef's default
+constexpr double h = dt / substeps;
+
+double rel_err(double got, double want) {
+    return std::abs(got - want) / std::max(1.0, std::abs(want));
+}
+
+/// The symplectic Euler free fall from rest that IM1 integrates per substep: after k substeps
+/// of h under acceleration a, v = k a h and the displacement is a h^2 k (k + 1) / 2.
+double fall_velocity(double a, int k) {
+    return k * a * h;
+}
+double fall_displacement(double a, int k) {
+    return a * h * h * k * (k + 1) / 2.0;
+}
+
+/// A static ground 40 m wide whose top face is y = 0.
+BodyId ground(World& w, Material m = {}) {
+    BodyDef g;
+    g.type = BodyType::static_body;
+    g.position = {0.0, -0.5};
+    g.name = "ground";
+    const BodyId id = w.create_body(g);
+    w.create_shape(id, box_shape(40.0, 1.0, m));
+    return id;
+}
+
+/// A unit box (1 kg) with its centre at (x, y).
+BodyId box(World& w, double x, double y, BodyDef d = {}) {
+    d.position = {x, y};
+    const BodyId id = w.create_body(d);
+    w.create_shape(id, box_shape(1.0, 1.0));
+    return id;
+}
+
+/// Runs `n` steps of two worlds side by side; whether their hashes stayed equal.
+bool same_history(World& a, World& b, int n) {
+    for (int i = 0; i < n; ++i) {
+        a.step(dt);
+        b.step(dt);
+        if (a.state_hash() != b.state_hash())
+            return false;
+    }
+    return true;
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(body_control)
+
+// ----------------------------------------------------------------------------- body type
+
+// Oracle: R2 (a static body does not move and has no mass; a kinematic body moves with its
+// velocity and is not pushed; a dynamic body's mass is its shapes', 1 kg for a unit box of
+// density 1) and IM1's free fall from rest per substep.
+BOOST_AUTO_TEST_CASE(type_changes_follow_r2, *utf::label("R2") * utf::label("IM1")) {
+    World w(WorldDef{.gravity = {0.0, -10.0}});
+    const BodyId b = box(w, 0.0, 10.0, BodyDef{.linear_velocity = {2.0, 0.0}});
+    for (int i = 0; i < 10; ++i)
+        w.step(dt);
+    // Static: stopped, massless, and still for good.
+    w.set_body_type(b, BodyType::static_body);
+    BOOST_TEST((w.type(b) == BodyType::static_body));
+    BOOST_TEST(w.mass(b) == 0.0);
+    BOOST_TEST(w.velocity(b).x == 0.0);
+    BOOST_TEST(w.velocity(b).y == 0.0);
+    BOOST_TEST(!w.is_awake(b));
+    const Vec2d held = w.position(b);
+    for (int i = 0; i < 30; ++i)
+        w.step(dt);
+    BOOST_TEST(w.position(b).x == held.x);
+    BOOST_TEST(w.position(b).y == held.y);
+    // Dynamic again: its shapes' mass, and a free fall from rest.
+    w.set_body_type(b, BodyType::dynamic);
+    BOOST_TEST(w.mass(b) == 1.0);
+    BOOST_TEST(w.inertia(b) == 1.0 / 6.0, boost::test_tools::tolerance(1e-15));
+    for (int n = 1; n <= 30; ++n) {
+        w.step(dt);
+        BOOST_TEST(rel_err(w.velocity(b).y, fall_velocity(-10.0, n * substeps)) < 1e-12);
+        BOOST_TEST(rel_err(w.position(b).y, held.y + fall_displacement(-10.0, n * substeps)) <
+                   1e-12);
+        BOOST_TEST(w.position(b).x == held.x);
+    }
+    // Kinematic: keeps its velocity, ignores gravity, moves on a straight line.
+    const Vec2d v = w.velocity(b);
+    const Vec2d p = w.position(b);
+    w.set_body_type(b, BodyType::kinematic);
+    BOOST_TEST(w.mass(b) == 0.0);
+    BOOST_TEST(w.velocity(b).y == v.y);
+    for (int n = 1; n <= 30; ++n) {
+        w.step(dt);
+        BOOST_TEST(w.velocity(b).y == v.y);
+        BOOST_TEST(rel_err(w.position(b).y, p.y + v.y * n * dt) < 1e-12);
+    }
+}
+
+// Oracle: the handles, user data, joints and settings given before the change, and the rule
+// that the body's contacts go (with an end event) and come back with the next step.
+BOOST_AUTO_TEST_CASE(type_changes_keep_handles_joints_and_find_contacts_again) {
+    World w(WorldDef{.gravity = {0.0, -10.0}});
+    const BodyId g = ground(w);
+    const BodyId b = box(w, 0.0, 0.5, BodyDef{.user_data = 42});
+    const ShapeId s = w.shapes(b).front();
+    const BodyId bob = w.create_body(BodyDef{.position = {5.0, 3.0}});
+    w.create_shape(bob, circle_shape(0.25));
+    RevoluteJointDef r;
+    r.body_a = b;
+    r.body_b = bob;
+    r.anchor = {5.0, 3.0};
+    const JointId j = w.create_joint(r);
+    for (int i = 0; i < 10; ++i)
+        w.step(dt);
+    BOOST_TEST_REQUIRE(w.contacts(b).size() == 1u);
+    w.set_body_type(b, BodyType::kinematic);
+    BOOST_TEST(w.contacts(b).empty());
+    BOOST_TEST_REQUIRE(w.contact_end_events().size() == 1u);
+    BOOST_TEST((w.contact_end_events()[0].shape_b == s));
+    w.step(dt);
+    // Kinematic against static: no pair (R7 needs a dynamic body).
+    BOOST_TEST(w.contacts(b).empty());
+    w.set_body_type(b, BodyType::dynamic);
+    w.step(dt);
+    BOOST_TEST(w.contacts(b).size() == 1u);
+    BOOST_TEST(w.contact_begin_events().size() == 1u);
+    BOOST_TEST(w.is_valid(b));
+    BOOST_TEST(w.is_valid(s));
+    BOOST_TEST(w.is_valid(j));
+    BOOST_TEST(w.user_data(b) == 42u);
+    BOOST_TEST((w.joints(b) == std::vector<JointId>{j}));
+    BOOST_TEST((w.body(s) == b));
+    (void)g;
+}
+
+// Oracle: a joint none of whose bodies is dynamic is not solved: a kinematic body pinned to a
+// static one moves on with its velocity (a straight line, no NaN); made dynamic again, the
+// joint pulls its pin back together and the bob swings on its 1 m lever.
+BOOST_AUTO_TEST_CASE(a_joint_without_a_dynamic_body_is_not_solved) {
+    World w(WorldDef{.gravity = {0.0, -10.0}});
+    const BodyId anchor = w.create_body(BodyDef{.type = BodyType::static_body});
+    const BodyId bob = w.create_body(BodyDef{.position = {1.0, 0.0}});
+    w.create_shape(bob, circle_shape(0.1));
+    RevoluteJointDef r;
+    r.body_a = anchor;
+    r.body_b = bob;
+    r.anchor = {0.0, 0.0};
+    w.create_joint(r);
+    w.set_body_type(bob, BodyType::kinematic);
+    w.set_velocity(bob, {0.0, 1.0});
+    for (int n = 1; n <= 60; ++n) {
+        w.step(dt);
+        BOOST_TEST_REQUIRE(rel_err(w.position(bob).y, n * dt) < 1e-12);
+        BOOST_TEST_REQUIRE(w.position(bob).x == 1.0);
+    }
+    w.set_body_type(bob, BodyType::dynamic);
+    for (int n = 1; n <= 120; ++n)
+        w.step(dt);
+    const Vec2d p = w.position(bob);
+    // The pin holds the bob's point 1 m left of its centre at the origin again: the centre
+    // swings on the circle of radius 1 m about it, within the joint's softness (1 cm).
+    BOOST_TEST(std::abs(std::hypot(p.x, p.y) - 1.0) < 1e-2);
+}
+
+// Oracle: R4's strong guarantee (state_hash unchanged after a refusal); the same type changes
+// no bit of the simulation (a twin world, step by step).
+BOOST_AUTO_TEST_CASE(type_refusals_change_nothing_and_the_same_type_changes_no_bit) {
+    World a(WorldDef{.gravity = {0.0, -10.0}, .enable_sleep = true});
+    World b(WorldDef{.gravity = {0.0, -10.0}, .enable_sleep = true});
+    for (World* w : {&a, &b}) {
+        ground(*w);
+        box(*w, 0.0, 0.5);
+        box(*w, 0.2, 1.5);
+    }
+    const BodyId moving = a.bodies()[1];
+    const std::uint64_t before = a.state_hash();
+    BOOST_CHECK_THROW(a.set_body_type(moving, static_cast<BodyType>(7)), ValidationError);
+    BOOST_CHECK_THROW(a.set_body_type(BodyId{9, 1}, BodyType::dynamic), InvalidHandle);
+    BOOST_TEST(a.state_hash() == before);
+    for (int i = 0; i < 120; ++i) {
+        a.set_body_type(moving, BodyType::dynamic);
+        a.set_body_type(a.bodies()[0], BodyType::static_body);
+        a.set_enabled(moving, true);
+        a.set_gravity_scale(moving, 1.0);
+        a.set_bullet(moving, false);
+        a.set_motion_locks(moving, MotionLocks{});
+        a.reset_mass_data(moving);
+        a.step(dt);
+        b.step(dt);
+        BOOST_TEST_REQUIRE(a.state_hash() == b.state_hash());
+    }
+    BOOST_TEST(!a.is_awake(moving)); // slept through all of it
+}
+
+// Oracle: DCX_joint's lever limit, judged with the new mass: a tiny disc pinned 1000 m from its
+// centre may be static (no mass: no lever) but not dynamic; the refusal changes nothing.
+BOOST_AUTO_TEST_CASE(a_type_change_that_breaks_a_joint_lever_is_refused) {
+    World w;
+    const BodyId tiny = w.create_body(BodyDef{.type = BodyType::static_body});
+    w.create_shape(tiny, circle_shape(0.001));
+    const BodyId far = w.create_body(BodyDef{.position = {1000.0, 0.0}});
+    w.create_shape(far, box_shape(1.0, 1.0));
+    RevoluteJointDef r;
+    r.body_a = tiny;
+    r.body_b = far;
+    r.anchor = {1000.0, 0.0};
+    w.create_joint(r);
+    const std::uint64_t before = w.state_hash();
+    try {
+        w.set_body_type(tiny, BodyType::dynamic);
+        BOOST_ERROR("accepted");
+    } catch (const ValidationError& e) {
+        BOOST_TEST(e.constraint == "DCX_joint");
+    }
+    BOOST_TEST(w.state_hash() == before);
+    BOOST_TEST((w.type(tiny) == BodyType::static_body));
+}
+
+// ----------------------------------------------------------------------------- enabled
+
+// Oracle: the rule stated by set_enabled: a disabled body keeps its state and does not move;
+// nothing collides with it (a box falls through a disabled platform as in free fall), no query
+// or ray finds it; enabled again, it moves on from the velocity it kept.
+BOOST_AUTO_TEST_CASE(a_disabled_body_is_out_of_the_world, *utf::label("IM1")) {
+    World w(WorldDef{.gravity = {0.0, -10.0}});
+    BodyDef pd;
+    pd.type = BodyType::static_body;
+    pd.position = {0.0, 0.0};
+    const BodyId platform = w.create_body(pd);
+    w.create_shape(platform, box_shape(4.0, 0.2));
+    const BodyId faller = box(w, 0.0, 3.0);
+    const BodyId flyer = box(w, 10.0, 10.0, BodyDef{.linear_velocity = {1.0, 2.0}});
+    w.set_enabled(platform, false);
+    w.set_enabled(flyer, false);
+    BOOST_TEST(!w.is_enabled(platform));
+    BOOST_TEST(!w.is_awake(flyer));
+    BOOST_TEST(w.query_point({0.0, 0.0}).empty());
+    BOOST_TEST(w.query_aabb(Aabb{9.0, 9.0, 11.0, 11.0}).empty());
+    BOOST_TEST(!w.ray_cast({0.0, 2.0}, {0.0, -10.0}).has_value()); // (below the faller)
+    for (int n = 1; n <= 60; ++n) {
+        w.step(dt);
+        BOOST_TEST_REQUIRE(
+            rel_err(w.position(faller).y, 3.0 + fall_displacement(-10.0, n * substeps)) < 1e-12);
+        BOOST_TEST_REQUIRE(w.position(flyer).x == 10.0);
+        BOOST_TEST_REQUIRE(w.position(flyer).y == 10.0);
+    }
+    BOOST_TEST(w.velocity(flyer).x == 1.0);
+    BOOST_TEST(w.velocity(flyer).y == 2.0);
+    BOOST_TEST(w.contacts().empty());
+    w.set_enabled(flyer, true);
+    BOOST_TEST(w.is_awake(flyer));
+    w.step(dt);
+    // One step from (10, 10) at (1, 2) under g: x + 1 dt, and the fall's share in y.
+    BOOST_TEST(rel_err(w.position(flyer).x, 10.0 + dt) < 1e-12);
+    BOOST_TEST(rel_err(w.position(flyer).y, 10.0 + 2.0 * dt + fall_displacement(-10.0, substeps)) <
+               1e-12);
+}
+
+// Oracle: the rule: disabling removes the body's contacts now (with their end events) and
+// makes its joints inactive (a bob pinned to a disabled anchor falls freely); enabling finds
+// its pairs at the next step and the joint holds again.
+BOOST_AUTO_TEST_CASE(disabling_ends_contacts_and_deactivates_joints, *utf::label("IM1")) {
+    World w(WorldDef{.gravity = {0.0, -10.0}});
+    ground(w);
+    const BodyId resting = box(w, 0.0, 0.5);
+    for (int i = 0; i < 10; ++i)
+        w.step(dt);
+    BOOST_TEST_REQUIRE(w.contacts().size() == 1u);
+    w.set_enabled(resting, false);
+    BOOST_TEST(w.contacts().empty());
+    BOOST_TEST(w.contact_end_events().size() == 1u);
+    w.set_enabled(resting, true);
+    w.step(dt);
+    BOOST_TEST(w.contacts().size() == 1u);
+
+    const BodyId anchor =
+        w.create_body(BodyDef{.type = BodyType::static_body, .position = {10.0, 10.0}});
+    const BodyId bob = w.create_body(BodyDef{.position = {11.0, 10.0}});
+    w.create_shape(bob, circle_shape(0.1));
+    RevoluteJointDef r;
+    r.body_a = anchor;
+    r.body_b = bob;
+    r.anchor = {10.0, 10.0};
+    w.create_joint(r);
+    w.set_enabled(anchor, false);
+    for (int n = 1; n <= 30; ++n) {
+        w.step(dt);
+        BOOST_TEST_REQUIRE(
+            rel_err(w.position(bob).y, 10.0 + fall_displacement(-10.0, n * substeps)) < 1e-12);
+        BOOST_TEST_REQUIRE(w.position(bob).x == 11.0);
+    }
+}
+
+// Oracle: DD28's rule with the disabled body out of the world: a sensor reports a visitor
+// that is disabled as leaving at the next step, and again as entering once it is enabled.
+BOOST_AUTO_TEST_CASE(a_disabled_visitor_leaves_a_sensor, *utf::label("DD28")) {
+    World w(WorldDef{.gravity = {0.0, 0.0}});
+    const BodyId zone = w.create_body(BodyDef{.type = BodyType::static_body});
+    ShapeDef sensor = box_shape(4.0, 4.0);
+    sensor.is_sensor = true;
+    w.create_shape(zone, sensor);
+    const BodyId visitor = box(w, 0.0, 0.0);
+    w.step(dt);
+    BOOST_TEST_REQUIRE(w.sensor_begin_events().size() == 1u);
+    w.set_enabled(visitor, false);
+    w.step(dt);
+    BOOST_TEST(w.sensor_end_events().size() == 1u);
+    w.set_enabled(visitor, true);
+    w.step(dt);
+    BOOST_TEST(w.sensor_begin_events().size() == 1u);
+}
+
+// ----------------------------------------------------------------------------- gravity scale
+
+// Oracle: IM1's free fall with the body's share of gravity, s g, per substep.
+BOOST_AUTO_TEST_CASE(gravity_scale_scales_the_fall, *utf::label("IM1") * utf::label("GD2")) {
+    World w(WorldDef{.gravity = {0.0, -10.0}});
+    const BodyId b = box(w, 0.0, 100.0);
+    w.set_gravity_scale(b, 0.25);
+    BOOST_TEST(w.gravity_scale(b) == 0.25);
+    for (int n = 1; n <= 60; ++n) {
+        w.step(dt);
+        BOOST_TEST_REQUIRE(rel_err(w.velocity(b).y, fall_velocity(-2.5, n * substeps)) < 1e-12);
+        BOOST_TEST_REQUIRE(rel_err(w.position(b).y, 100.0 + fall_displacement(-2.5, n * substeps)) <
+                           1e-12);
+    }
+    const std::uint64_t before = w.state_hash();
+    BOOST_CHECK_THROW(w.set_gravity_scale(b, std::nan("")), ValidationError);
+    BOOST_CHECK_THROW(w.set_gravity_scale(b, 1e13), ValidationError);
+    BOOST_TEST(w.state_hash() == before);
+    try {
+        w.set_gravity_scale(b, std::numeric_limits<double>::infinity());
+    } catch (const ValidationError& e) {
+        BOOST_TEST(e.field == "gravity_scale");
+    }
+}
+
+// ----------------------------------------------------------------------------- bullet
+
+// Oracle: a world whose body was made a bullet by its definition (BodyDef::bullet): the same
+// bits, step by step, for a fast box shot at a thin moving plate.
+BOOST_AUTO_TEST_CASE(set_bullet_equals_a_bullet_definition, *utf::label("DD29")) {
+    auto scene = [](bool by_definition) {
+        World w(WorldDef{.gravity = {0.0, 0.0}});
+        const BodyId plate = w.create_body(BodyDef{.position = {5.0, 0.0}});
+        w.create_shape(plate, box_shape(0.05, 4.0));
+        BodyDef shot;
+        shot.position = {0.0, 0.0};
+        shot.linear_velocity = {400.0, 0.0};
+        shot.bullet = by_definition;
+        const BodyId b = w.create_body(shot);
+        w.create_shape(b, circle_shape(0.1));
+        if (!by_definition)
+            w.set_bullet(b, true);
+        return w;
+    };
+    World a = scene(true);
+    World b = scene(false);
+    BOOST_TEST(b.is_bullet(b.bodies()[1]));
+    BOOST_TEST(same_history(a, b, 30));
+    // A bullet does not pass through the plate (DD29): it stays on the plate's left.
+    BOOST_TEST(b.position(b.bodies()[1]).x < b.position(b.bodies()[0]).x);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
