@@ -582,4 +582,22 @@ void validate_constraint_tuning(double hertz, double damping_ratio) {
     frequency("joint.tuning_hertz", hertz);
 }
 
+void validate_query_box(const Aabb& box, const std::string& name) {
+    // A box upside down on an axis (min > max) or with a NaN side contains nothing: answering
+    // it with no shapes would hide the caller's mistake (corners swapped, a size for a corner).
+    require_finite(name + ".min_x", box.min_x);
+    require_finite(name + ".min_y", box.min_y);
+    require_finite(name + ".max_x", box.max_x);
+    require_finite(name + ".max_y", box.max_y);
+    // The query's own rule, not an SRS data constraint: "query" names it.
+    if (!(box.min_x <= box.max_x))
+        throw ValidationError(
+            name + ".max_x", box.max_x,
+            "must be >= " + name + ".min_x (" + detail::format_value(box.min_x) + " m)", "query");
+    if (!(box.min_y <= box.max_y))
+        throw ValidationError(
+            name + ".max_y", box.max_y,
+            "must be >= " + name + ".min_y (" + detail::format_value(box.min_y) + " m)", "query");
+}
+
 } // namespace tamias2d

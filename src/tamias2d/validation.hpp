@@ -10,6 +10,7 @@
 #include <string>
 #include <string_view>
 
+#include "tamias2d/aabb.hpp"
 #include "tamias2d/body_def.hpp"
 #include "tamias2d/export.hpp"
 #include "tamias2d/joint_def.hpp"
@@ -140,5 +141,8 @@ TAMIAS2D_EXPORT void validate_damping(std::string_view field, double rate);
 /// may be infinite for never, the world's hit speed (m s^-1) must be finite and in range.
 /// Not an SRS constraint: "events" names the rule.
 void validate_event_threshold(std::string_view field, double value, bool may_be_infinite);
+
+/// A query's box (`name`: "box", "draw.bounds"): finite sides, min <= max on each axis.
+void validate_query_box(const Aabb& box, const std::string& name);
 
 } // namespace tamias2d

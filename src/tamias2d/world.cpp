@@ -584,21 +584,7 @@ std::span<const SensorEvent> World::sensor_end_events() const {
 }
 
 std::vector<ShapeId> World::query_aabb(const Aabb& box) const {
-    // A box upside down on an axis (min > max) or with a NaN side contains nothing: answering
-    // it with no shapes would hide the caller's mistake (corners swapped, a size for a corner).
-    require_finite("box.min_x", box.min_x);
-    require_finite("box.min_y", box.min_y);
-    require_finite("box.max_x", box.max_x);
-    require_finite("box.max_y", box.max_y);
-    // The query's own rule, not an SRS data constraint: "query" names it.
-    if (!(box.min_x <= box.max_x))
-        throw ValidationError("box.max_x", box.max_x,
-                              "must be >= box.min_x (" + detail::format_value(box.min_x) + " m)",
-                              "query");
-    if (!(box.min_y <= box.max_y))
-        throw ValidationError("box.max_y", box.max_y,
-                              "must be >= box.min_y (" + detail::format_value(box.min_y) + " m)",
-                              "query");
+    validate_query_box(box, "box");
     return impl_->shapes.overlapping(box, impl_->bodies);
 }
 

@@ -2,8 +2,8 @@
 // motion locks, mass data and sleep threshold changed after creation. Each checks everything
 // before it changes anything (or, where the check needs the change made, undoes it before it
 // throws), and a value a body already has changes nothing.
-#include <bit>
 #include <cstdint>
+#include <cstring>
 #include <string>
 
 #include "tamias2d/dynamics/model_bridge.hpp"
@@ -18,7 +18,7 @@ namespace {
 
 /// The same bits: 0 and -0 differ, as they do to the state hash.
 bool same(double a, double b) {
-    return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+    return std::memcmp(&a, &b, sizeof a) == 0; // (no std::bit_cast in the WebAssembly libc++)
 }
 bool same(const std::optional<double>& a, const std::optional<double>& b) {
     return a.has_value() == b.has_value() && (!a || same(*a, *b));

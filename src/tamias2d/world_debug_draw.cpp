@@ -32,19 +32,7 @@ void validate_draw(const DebugDraw& draw) {
         throw ValidationError("draw.axis_length", draw.axis_length, "must be > 0 (m)", "draw");
     if (!draw.bounds)
         return;
-    const Aabb& box = *draw.bounds;
-    require_finite("draw.bounds.min_x", box.min_x);
-    require_finite("draw.bounds.min_y", box.min_y);
-    require_finite("draw.bounds.max_x", box.max_x);
-    require_finite("draw.bounds.max_y", box.max_y);
-    if (!(box.min_x <= box.max_x))
-        throw ValidationError(
-            "draw.bounds.max_x", box.max_x,
-            "must be >= draw.bounds.min_x (" + detail::format_value(box.min_x) + " m)", "query");
-    if (!(box.min_y <= box.max_y))
-        throw ValidationError(
-            "draw.bounds.max_y", box.max_y,
-            "must be >= draw.bounds.min_y (" + detail::format_value(box.min_y) + " m)", "query");
+    validate_query_box(*draw.bounds, "draw.bounds");
 }
 
 bool inside(const std::optional<Aabb>& bounds, Vec2d p) {

@@ -17,13 +17,6 @@ namespace {
 
 using T = JointType;
 
-static_assert(int(JointKind::revolute) == int(T::revolute) &&
-              int(JointKind::distance) == int(T::distance) &&
-              int(JointKind::target) == int(T::target) &&
-              int(JointKind::prismatic) == int(T::prismatic) &&
-              int(JointKind::weld) == int(T::weld) && int(JointKind::wheel) == int(T::wheel) &&
-              int(JointKind::motor) == int(T::motor) && int(JointKind::filter) == int(T::filter));
-
 // The kinds each group of calls applies to, with the rule WrongKind states.
 constexpr const char* limited_rule =
     "must be a revolute, prismatic, wheel or distance joint (the kinds with limits)";
@@ -80,7 +73,7 @@ double plain_zero(double v) {
 } // namespace
 
 JointKind World::joint_kind(JointId id) const {
-    return JointKind(impl_->joints.get(id).type);
+    return impl_->joints.get(id).type;
 }
 
 BodyId World::joint_body_a(JointId id) const {

@@ -55,22 +55,6 @@ void check_ray(Vec2d origin, Vec2d translation) {
     require_within("translation", translation, supported::input_max, "m");
 }
 
-/// query_aabb(box)'s rules for its box (world.cpp states why): finite sides, min <= max.
-void check_box(const Aabb& box) {
-    require_finite("box.min_x", box.min_x);
-    require_finite("box.min_y", box.min_y);
-    require_finite("box.max_x", box.max_x);
-    require_finite("box.max_y", box.max_y);
-    if (!(box.min_x <= box.max_x))
-        throw ValidationError("box.max_x", box.max_x,
-                              "must be >= box.min_x (" + detail::format_value(box.min_x) + " m)",
-                              "query");
-    if (!(box.min_y <= box.max_y))
-        throw ValidationError("box.max_y", box.max_y,
-                              "must be >= box.min_y (" + detail::format_value(box.min_y) + " m)",
-                              "query");
-}
-
 /// A shape given to a query: the create_shape rules (DCX_shape), a pose within range.
 void check_shape(const Geometry& shape, Vec2d origin, double angle) {
     ShapeDef def;
@@ -310,7 +294,7 @@ std::vector<ShapeId> World::query_aabb(const Aabb& box, const QueryFilter& filte
 }
 
 void World::query_aabb(const Aabb& box, const QueryFilter& filter, OverlapCallback callback) const {
-    check_box(box);
+    validate_query_box(box, "box");
     check_filter(*impl_, filter);
     const Impl& w = *impl_;
     w.shapes.broad_phase.query(box, [&](int proxy) {

@@ -61,7 +61,7 @@ Scene make_scene(bool tagged) {
 
 } // namespace
 
-BOOST_AUTO_TEST_SUITE(identity)
+BOOST_AUTO_TEST_SUITE(identity, *boost::unit_test::label("reliability"))
 
 // Oracle: the values given in the definitions and to the setters.
 BOOST_AUTO_TEST_CASE(user_data_is_kept_from_the_definitions_and_the_setters) {

@@ -1,115 +1,15 @@
 // A world in steady state steps without touching the heap with its events off, the default,
 // and with every kind on once the lists have grown: the events' passes and lists reuse their
-// memory (a performance design rule, tagged `performance`, as tests/bench/test_no_allocation.cpp
+// memory (a performance design rule, tagged `performance`, as tests/memory/test_no_allocation.cpp
 // is for the step itself). The global operator new and delete of this executable are replaced
-// by counting versions.
+// by the counting versions of support/replaced_new.cpp.
 #include <boost/test/unit_test.hpp>
 
-#include <atomic>
 #include <cstddef>
-#include <cstdlib>
-#include <new>
 
 #include "support/pyramid.hpp"
+#include "support/replaced_new.hpp"
 #include "tamias2d/world.hpp"
-
-// The replaced operator new/delete below are built on malloc/free; once inlined (-O1 and up)
-// GCC cannot see that they pair up and warns about free() on memory from "new".
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-
-namespace {
-
-std::atomic<bool> counting{false};
-std::atomic<std::size_t> allocations{0};
-std::atomic<std::size_t> deallocations{0};
-
-void* allocate(std::size_t n, std::size_t align) {
-    if (counting.load(std::memory_order_relaxed))
-        allocations.fetch_add(1);
-    if (n == 0)
-        n = 1;
-    void* p = nullptr;
-    if (align <= alignof(std::max_align_t)) {
-        p = std::malloc(n);
-    } else {
-        p = std::aligned_alloc(align, (n + align - 1) / align * align);
-    }
-    return p;
-}
-
-void release(void* p) noexcept {
-    if (p && counting.load(std::memory_order_relaxed))
-        deallocations.fetch_add(1);
-    std::free(p);
-}
-
-} // namespace
-
-// The replaceable allocation functions ([new.delete]); the others forward to these.
-void* operator new(std::size_t n) {
-    if (void* p = allocate(n, 0))
-        return p;
-    throw std::bad_alloc();
-}
-void* operator new[](std::size_t n) {
-    return ::operator new(n);
-}
-void* operator new(std::size_t n, std::align_val_t a) {
-    if (void* p = allocate(n, static_cast<std::size_t>(a)))
-        return p;
-    throw std::bad_alloc();
-}
-void* operator new[](std::size_t n, std::align_val_t a) {
-    return ::operator new(n, a);
-}
-void* operator new(std::size_t n, const std::nothrow_t&) noexcept {
-    return allocate(n, 0);
-}
-void* operator new[](std::size_t n, const std::nothrow_t&) noexcept {
-    return allocate(n, 0);
-}
-void* operator new(std::size_t n, std::align_val_t a, const std::nothrow_t&) noexcept {
-    return allocate(n, static_cast<std::size_t>(a));
-}
-void* operator new[](std::size_t n, std::align_val_t a, const std::nothrow_t&) noexcept {
-    return allocate(n, static_cast<std::size_t>(a));
-}
-void operator delete(void* p) noexcept {
-    release(p);
-}
-void operator delete[](void* p) noexcept {
-    release(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-    release(p);
-}
-void operator delete[](void* p, std::size_t) noexcept {
-    release(p);
-}
-void operator delete(void* p, std::align_val_t) noexcept {
-    release(p);
-}
-void operator delete[](void* p, std::align_val_t) noexcept {
-    release(p);
-}
-void operator delete(void* p, std::size_t, std::align_val_t) noexcept {
-    release(p);
-}
-void operator delete[](void* p, std::size_t, std::align_val_t) noexcept {
-    release(p);
-}
-void operator delete(void* p, const std::nothrow_t&) noexcept {
-    release(p);
-}
-void operator delete[](void* p, const std::nothrow_t&) noexcept {
-    release(p);
-}
-void operator delete(void* p, std::align_val_t, const std::nothrow_t&) noexcept {
-    release(p);
-}
-void operator delete[](void* p, std::align_val_t, const std::nothrow_t&) noexcept {
-    release(p);
-}
 
 namespace {
 
@@ -121,12 +21,9 @@ struct Counted {
 };
 
 template <class F> Counted count_heap(F&& f) {
-    allocations = 0;
-    deallocations = 0;
-    counting = true;
+    const long a = test::allocation_count(), d = test::deallocation_count();
     f();
-    counting = false;
-    return {allocations.load(), deallocations.load()};
+    return {std::size_t(test::allocation_count() - a), std::size_t(test::deallocation_count() - d)};
 }
 
 /// A base-10 pyramid with a sensor zone over it and a pendulum, stepped 300 times at 60 Hz;

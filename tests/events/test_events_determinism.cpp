@@ -120,7 +120,7 @@ Hashes run(int workers, int regions) {
 
 } // namespace
 
-BOOST_AUTO_TEST_SUITE(events_determinism)
+BOOST_AUTO_TEST_SUITE(events_determinism, *boost::unit_test::label("determinism"))
 
 // Oracle: the one-worker run (WorldDef::workers' promise: the same bits on any number of
 // threads). The hashes of every event list, step by step, and of the final state are equal on

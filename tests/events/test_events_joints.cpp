@@ -38,7 +38,7 @@ struct Hanging {
 
 } // namespace
 
-BOOST_AUTO_TEST_SUITE(events_joints)
+BOOST_AUTO_TEST_SUITE(events_joints, *boost::unit_test::label("reliability"))
 
 // Oracle: statics, closed form. A body hanging at rest from a pin through its centre of mass
 // is held by a force equal to its weight m g (Newton's second law with a = 0), and by no
@@ -46,7 +46,8 @@ BOOST_AUTO_TEST_SUITE(events_joints)
 // load is carried (from the first step: the warm-started pin carries it at once, within the
 // soft joint's few percent), with its reaction force; at 1.1 m g, never; the torque threshold
 // 0.1 N m is never reached. The joint stays (it is not broken).
-BOOST_AUTO_TEST_CASE(a_force_threshold_below_the_weight_reports_every_step) {
+BOOST_AUTO_TEST_CASE(a_force_threshold_below_the_weight_reports_every_step,
+                     *boost::unit_test::label("IM6")) {
     Hanging low(RevoluteJointDef{.force_threshold = 0.9 * 10.0, .torque_threshold = 0.1});
     Hanging high(RevoluteJointDef{.force_threshold = 1.1 * 10.0, .torque_threshold = 0.1});
     BOOST_TEST_REQUIRE(low.weight == 10.0);
@@ -78,7 +79,8 @@ BOOST_AUTO_TEST_CASE(a_force_threshold_below_the_weight_reports_every_step) {
 // its centre of mass L = 1 m from the weld: the weld holds the torque m g L = 10 N m. A torque
 // threshold of 9 N m is exceeded in every step once the load is carried (after a transient of
 // 30 steps, in which the torque settles within 5 % of m g L); 11 N m never.
-BOOST_AUTO_TEST_CASE(a_torque_threshold_below_the_moment_reports) {
+BOOST_AUTO_TEST_CASE(a_torque_threshold_below_the_moment_reports,
+                     *boost::unit_test::label("DD22")) {
     for (const double threshold : {9.0, 11.0}) {
         World world(WorldDef{.gravity = {0.0, -g}, .enable_sleep = false});
         BodyDef sd;

@@ -16,7 +16,7 @@ constexpr double dt = 1.0 / 60.0;
 
 } // namespace
 
-BOOST_AUTO_TEST_SUITE(events_moves)
+BOOST_AUTO_TEST_SUITE(events_moves, *boost::unit_test::label("reliability"))
 
 // Oracle: the state getters (origin, orientation, is_awake, type) after the same step. A falling
 // box, a kinematic platform and a static ground with move events, a box without: the events

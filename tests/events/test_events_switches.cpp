@@ -62,7 +62,7 @@ std::vector<double> motion(const World& w) {
 
 } // namespace
 
-BOOST_AUTO_TEST_SUITE(events_switches)
+BOOST_AUTO_TEST_SUITE(events_switches, *boost::unit_test::label("reliability"))
 
 // Oracle: the switch's stated rule (a pair's begin and end events are reported when both its
 // shapes allow them). Two discs meet and part: one begin and one end event with both on; none

@@ -9,21 +9,13 @@
 #include <type_traits>
 
 #include "tamias2d/dynamics/softness.hpp"
+#include "tamias2d/joint_kind.hpp"
 #include "tamias2d/math/vec2d.hpp"
 #include "tamias2d/user_data.hpp"
 
 namespace tamias2d {
 
-enum class JointType : std::uint8_t {
-    revolute,
-    distance,
-    target,
-    prismatic,
-    weld,
-    wheel,
-    motor,
-    filter
-};
+using JointType = JointKind; // the engine's name for the public kinds (joint_kind.hpp)
 
 /// The part of a joint that a step writes: the impulses (the warm start of the next substep and
 /// the reaction force) and the step's preparation. The World keeps a copy of this part alone to

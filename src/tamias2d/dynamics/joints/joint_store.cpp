@@ -10,6 +10,7 @@
 #include "tamias2d/dynamics/snapshot_io.hpp"
 #include "tamias2d/dynamics/state_hasher.hpp"
 #include "tamias2d/errors.hpp"
+#include "tamias2d/joint_kind.hpp"
 #include "tamias2d/validation.hpp"
 
 namespace tamias2d {
@@ -32,26 +33,9 @@ std::pair<const char*, const char*> anchor_fields(JointType type) {
 
 } // namespace
 
-const char* joint_kind_name(JointType type) {
-    switch (type) {
-    case JointType::revolute:
-        return "revolute joint";
-    case JointType::distance:
-        return "distance joint";
-    case JointType::target:
-        return "target joint";
-    case JointType::prismatic:
-        return "prismatic joint";
-    case JointType::weld:
-        return "weld joint";
-    case JointType::wheel:
-        return "wheel joint";
-    case JointType::motor:
-        return "motor joint";
-    case JointType::filter:
-        return "filter joint";
-    }
-    return "joint of no known kind";
+std::string joint_kind_name(JointType type) {
+    // One name per kind, the public JointKind's (joint_kind.hpp lists the kinds in this order).
+    return std::string(to_string(type)) + " joint";
 }
 
 double joint_angle_now(const Joint& j, const BodyStore& bodies) {

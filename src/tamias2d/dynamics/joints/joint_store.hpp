@@ -24,7 +24,7 @@ class SnapshotReader;
 class ShapeStore;
 
 /// How messages name a joint's kind ("revolute joint", ...).
-const char* joint_kind_name(JointType type);
+std::string joint_kind_name(JointType type);
 
 /// The joint angle now (DD22): B's turn against A since creation, rad.
 double joint_angle_now(const Joint& j, const BodyStore& bodies);
