@@ -167,14 +167,15 @@ void BroadPhase::read(SnapshotReader& in) {
     for (std::size_t p = 0; p < n; ++p) {
         const std::size_t here = in.offset();
         in("broad_phase.moved", moved_[p]);
-        in.require(moved_[p] == 0 || (moved_[p] == 1 && is_proxy(int(p))), "broad_phase.moved",
-                   "must be 0, or 1 for a proxy (at proxy " + decimal(std::uint64_t(p)) + ")",
-                   here);
+        if (!(moved_[p] == 0 || (moved_[p] == 1 && is_proxy(int(p))))) // (message built to fail)
+            in.fail_at(here, "broad_phase.moved",
+                       "must be 0, or 1 for a proxy (at proxy " + decimal(std::uint64_t(p)) + ")");
     }
-    for (std::size_t k = 0; k < moves; ++k)
-        in.require(move_buffer_[k] >= 0 && std::size_t(move_buffer_[k]) < n,
-                   "broad_phase.move_buffer", "must be a proxy id < " + decimal(std::uint64_t(n)),
-                   at[k]);
+    for (std::size_t k = 0; k < moves; ++k) {
+        if (!(move_buffer_[k] >= 0 && std::size_t(move_buffer_[k]) < n))
+            in.fail_at(at[k], "broad_phase.move_buffer",
+                       "must be a proxy id < " + decimal(std::uint64_t(n)));
+    }
 }
 
 } // namespace tamias2d

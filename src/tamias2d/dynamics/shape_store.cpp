@@ -269,10 +269,10 @@ void ShapeStore::read(SnapshotReader& in) {
                    "must be a proxy for a live slot and -1 for a dead one", at[i]);
         if (!s.alive())
             continue;
-        in.require(defs[i].geometry.polygon.count >= 0 &&
-                       defs[i].geometry.polygon.count <= max_polygon_vertices,
-                   "polygon.count",
-                   "must be in [0, " + decimal(std::uint64_t(max_polygon_vertices)) + "]", at[i]);
+        const int count = defs[i].geometry.polygon.count;
+        if (!(count >= 0 && count <= max_polygon_vertices)) // (message built only to fail)
+            in.fail_at(at[i], "polygon.count",
+                       "must be in [0, " + decimal(std::uint64_t(max_polygon_vertices)) + "]");
         try {
             validate(defs[i]);
         } catch (const ValidationError& e) {

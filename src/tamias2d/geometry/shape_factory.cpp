@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "tamias2d/errors.hpp"
@@ -14,20 +15,36 @@
 namespace tamias2d {
 namespace {
 
-void require_finite(double v, const std::string& field) {
+// Field names are made into strings only for a message: these checks run on every shape made
+// and every snapshot read, where a string per vertex was most of the time they took.
+
+void require_finite(double v, std::string_view field) {
     if (!std::isfinite(v))
-        throw ValidationError(field, v, "must be finite", "DCX_finite");
+        throw ValidationError(std::string(field), v, "must be finite", "DCX_finite");
 }
 
-void require_finite(Vec2d v, const std::string& field) {
-    require_finite(v.x, field + ".x");
-    require_finite(v.y, field + ".y");
+void require_finite(Vec2d v, std::string_view field) {
+    if (std::isfinite(v.x) && std::isfinite(v.y))
+        return;
+    require_finite(v.x, std::string(field) + ".x");
+    require_finite(v.y, std::string(field) + ".y");
 }
 
-void require_positive(double v, const std::string& field) {
+/// "array[i]".
+std::string element(const char* array, std::size_t i) {
+    return std::string(array) + "[" + std::to_string(i) + "]";
+}
+
+/// require_finite on array[i], named only if it fails.
+void require_finite_element(Vec2d v, const char* array, std::size_t i) {
+    if (!(std::isfinite(v.x) && std::isfinite(v.y)))
+        require_finite(v, element(array, i));
+}
+
+void require_positive(double v, std::string_view field) {
     require_finite(v, field);
     if (!(v > 0.0))
-        throw ValidationError(field, v, "must be > 0", "DCX_shape");
+        throw ValidationError(std::string(field), v, "must be > 0", "DCX_shape");
 }
 
 /// Distance from p to the line through a and b (a != b).
@@ -88,7 +105,7 @@ Polygon make_polygon(std::span<const Vec2d> points) {
         throw ValidationError("polygon.points.size", double(points.size()), "must be >= 3",
                               "DCX_shape");
     for (std::size_t i = 0; i < points.size(); ++i)
-        require_finite(points[i], "polygon.points[" + std::to_string(i) + "]");
+        require_finite_element(points[i], "polygon.points", i);
 
     // Andrew's monotone chain: O(n log n), no recursion, deterministic for a given input set.
     std::vector<Vec2d> pts(points.begin(), points.end());
@@ -164,9 +181,9 @@ Circle make_circle(double radius, Vec2d center) {
 
 namespace {
 
-void require_distinct(Vec2d a, Vec2d b, const std::string& field) {
+void require_distinct(Vec2d a, Vec2d b, std::string_view field) {
     if (!(length(b - a) > 0.0))
-        throw ValidationError(field + ".length", length(b - a),
+        throw ValidationError(std::string(field) + ".length", length(b - a),
                               "must be > 0 (the two ends coincide)", "DCX_shape");
 }
 
@@ -192,11 +209,12 @@ std::vector<ChainSegment> make_chain(std::span<const Vec2d> points, bool loop) {
                               "must be >= " + std::to_string(least) + (loop ? " (a loop)" : ""),
                               "DCX_shape");
     for (std::size_t i = 0; i < n; ++i)
-        require_finite(points[i], "chain.points[" + std::to_string(i) + "]");
+        require_finite_element(points[i], "chain.points", i);
     const std::size_t edges = loop ? n : n - 1;
-    for (std::size_t i = 0; i < edges; ++i)
-        require_distinct(points[i], points[(i + 1) % n],
-                         "chain.points[" + std::to_string((i + 1) % n) + "]");
+    for (std::size_t i = 0; i < edges; ++i) {
+        if (!(length(points[(i + 1) % n] - points[i]) > 0.0))
+            require_distinct(points[i], points[(i + 1) % n], element("chain.points", (i + 1) % n));
+    }
     std::vector<ChainSegment> out(edges);
     for (std::size_t i = 0; i < edges; ++i) {
         ChainSegment& s = out[i];
@@ -281,8 +299,8 @@ void validate(const Polygon& p) {
                               "must be in [3, " + std::to_string(max_polygon_vertices) + "]",
                               "DCX_shape");
     for (int i = 0; i < p.count; ++i) {
-        require_finite(p.vertices[i], "polygon.vertices[" + std::to_string(i) + "]");
-        require_finite(p.normals[i], "polygon.normals[" + std::to_string(i) + "]");
+        require_finite_element(p.vertices[i], "polygon.vertices", std::size_t(i));
+        require_finite_element(p.normals[i], "polygon.normals", std::size_t(i));
     }
     require_finite(p.centroid, "polygon.centroid");
     int wraps = 0; // the times the edge direction passes angle 0 going round (see below)
@@ -290,10 +308,11 @@ void validate(const Polygon& p) {
         const Vec2d a = p.vertices[i];
         const Vec2d b = p.vertices[(i + 1) % p.count];
         const Vec2d c = p.vertices[(i + 2) % p.count];
-        const std::string at = "polygon.vertices[" + std::to_string((i + 1) % p.count) + "]";
         const double turn = cross(b - a, c - b);
         if (!(turn > 0.0))
-            throw ValidationError(at + ".turn", turn, "must be > 0 (convex, CCW)", "DCX_shape");
+            throw ValidationError(element("polygon.vertices", std::size_t((i + 1) % p.count)) +
+                                      ".turn",
+                                  turn, "must be > 0 (convex, CCW)", "DCX_shape");
         if (direction_before(c - b, b - a))
             ++wraps;
         const Vec2d n = normalize(right_perp(b - a));
