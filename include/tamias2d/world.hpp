@@ -410,10 +410,14 @@ class TAMIAS2D_EXPORT World {
 
     /// The version of the snapshot format this library writes and reads.
     static constexpr std::uint32_t snapshot_format_version = 1;
-    /// The world's state as bytes (a versioned header, then little-endian fields and an FNV-1a
-    /// 64 checksum over them): for save games, rollback and bug reports. Call between steps.
+    /// The world's state as bytes (a versioned header with an XXH64 checksum, then
+    /// little-endian fields): for save games, rollback and bug reports. Call between steps.
     /// Changes nothing (pending mass updates are done, as a step would do them).
     std::vector<std::byte> snapshot() const;
+    /// The same bytes written into `bytes`, reusing its memory (what it held is replaced): for
+    /// a snapshot every frame (rollback), where a new vector would be allocated and zeroed each
+    /// time. If it throws (std::bad_alloc), what `bytes` holds is unspecified.
+    void snapshot(std::vector<std::byte>& bytes) const;
     /// A new world in the state `snapshot` holds, stepping with `workers` workers and
     /// `task_system` (these are the host's, not in the snapshot). The new world has a tag of
     /// its own (tag()): a handle the world the snapshot was taken from issued is not valid in

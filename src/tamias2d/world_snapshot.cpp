@@ -5,7 +5,8 @@
 //   offset  8: u32 format version (World::snapshot_format_version)
 //   offset 12: u32 library version that wrote it, major << 16 | minor << 8 | patch
 //   offset 16: u64 payload size in bytes
-//   offset 24: u64 FNV-1a 64 of the header's first 24 bytes and then the payload
+//   offset 24: u64 checksum: XXH64 of the payload, seeded with the XXH64 (seed 0) of the
+//              header's first 24 bytes
 //   offset 32: payload: the world's settings and time, then each store's section (BODY, SHAP
 //              with the broad phase BRPH, CONT, JOIN, SENS, EVNT), each written and read by the
 //              store itself beside its hash function.
@@ -21,6 +22,7 @@
 #include <vector>
 
 #include "tamias2d/dynamics/snapshot_io.hpp"
+#include "tamias2d/math/xxh64.hpp"
 #include "tamias2d/snapshot_error.hpp"
 #include "tamias2d/validation.hpp"
 #include "tamias2d/version.hpp"
@@ -63,10 +65,10 @@ template <class IO, class D> void world_def_fields(IO& io, D& d) {
     io.user_data("user_data", d.user_data);
 }
 
-/// The checksum of a snapshot whose header is in place: FNV-1a 64 over the header up to the
-/// checksum, then the payload.
+/// The checksum of a snapshot whose header is in place: XXH64 of the payload, seeded with the
+/// XXH64 of the header up to the checksum.
 std::uint64_t checksum(std::span<const std::byte> bytes) {
-    return fnv1a_64(bytes.subspan(header_size), fnv1a_64(bytes.first(24)));
+    return xxh64(bytes.subspan(header_size), xxh64(bytes.first(24)));
 }
 
 std::uint64_t read_le(std::span<const std::byte> b, std::size_t at, int n) {
@@ -106,7 +108,7 @@ std::unique_ptr<World::Impl> read_snapshot(std::span<const std::byte> bytes, int
     const std::span<const std::byte> payload = bytes.subspan(header_size);
     if (checksum(bytes) != read_le(bytes, 24, 8))
         throw SnapshotError(24, "header.checksum",
-                            "disagrees with the FNV-1a 64 of the bytes (they changed since they "
+                            "disagrees with the XXH64 of the bytes (they changed since they "
                             "were written)");
 
     SnapshotReader in(payload, header_size, tag);
@@ -141,11 +143,19 @@ std::unique_ptr<World::Impl> read_snapshot(std::span<const std::byte> bytes, int
 } // namespace
 
 std::vector<std::byte> World::snapshot() const {
+    std::vector<std::byte> bytes;
+    snapshot(bytes);
+    return bytes;
+}
+
+void World::snapshot(std::vector<std::byte>& bytes) const {
     const Impl& w = *impl_;
     w.bodies.settle(); // (the same bits as when the next step would settle them)
-    SnapshotWriter out;
-    out.bytes.reserve(header_size + 512 * (w.bodies.size() + w.shapes.shapes.size()) +
-                      320 * std::size_t(w.contacts.size()));
+    SnapshotWriter out(std::move(bytes));
+    // About 25 % above the bytes a body with its shape and a contact take, so that the buffer
+    // is not grown (a doubling and a copy) for typical worlds; the slack stays with the bytes.
+    out.reserve(header_size + 640 * (w.bodies.size() + w.shapes.shapes.size()) +
+                400 * std::size_t(w.contacts.size()));
     for (const char c : magic)
         out.u8(std::uint8_t(c));
     out.u32(World::snapshot_format_version);
@@ -162,14 +172,14 @@ std::vector<std::byte> World::snapshot() const {
     w.joints.write(out);
     w.sensors.write(out);
     w.events.write(out);
-    std::vector<std::byte>& b = out.bytes;
+    std::vector<std::byte>& b = bytes;
+    b = out.finish();
     const std::uint64_t size = b.size() - header_size;
     for (int k = 0; k < 8; ++k)
         b[16 + std::size_t(k)] = std::byte(size >> (8 * k));
     const std::uint64_t sum = checksum(b);
     for (int k = 0; k < 8; ++k)
         b[24 + std::size_t(k)] = std::byte(sum >> (8 * k));
-    return std::move(out.bytes);
 }
 
 World World::from_snapshot(std::span<const std::byte> snapshot, int workers,

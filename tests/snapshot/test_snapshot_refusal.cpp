@@ -4,7 +4,8 @@
 //
 // Oracle: the world's own state_hash() and snapshot() before the refused call (bitwise the
 // same after it), and the corruptions themselves: every single-bit flip of a snapshot changes
-// its checksum (FNV-1a 64 detects every one-bit change), every truncation its length. A
+// its checksum (XXH64, computed here by the xxHash project's own library: a one-bit change
+// leaves it equal with probability 2^-64), every truncation its length. A
 // guarantee of the library's API, not an SRS item: the `reliability` tag.
 #include <boost/test/unit_test.hpp>
 
@@ -16,6 +17,7 @@
 
 #include "fuzz/fuzz_support.hpp"
 #include "snapshot/snapshot_worlds.hpp"
+#include "support/reference_xxh64.hpp"
 #include "tamias2d/world.hpp"
 
 namespace utf = boost::unit_test;
@@ -49,18 +51,12 @@ bool refused_unchanged(World& target, std::span<const std::byte> bytes,
     return false;
 }
 
-/// FNV-1a 64 (the published algorithm, written here apart from the library's).
-std::uint64_t fnv1a(std::span<const std::byte> bytes, std::uint64_t h) {
-    for (const std::byte b : bytes)
-        h = (h ^ std::uint64_t(b)) * 0x100000001b3ull;
-    return h;
-}
-
 /// The snapshot's checksum (its header's first 24 bytes, then the payload) made right again,
 /// so that a change reaches the reader of the sections.
 void fix_checksum(std::vector<std::byte>& b) {
     const std::span<const std::byte> all(b);
-    const std::uint64_t h = fnv1a(all.subspan(32), fnv1a(all.first(24), 0xcbf29ce484222325ull));
+    const std::uint64_t h = tamias_test::reference_xxh64(
+        all.subspan(32), tamias_test::reference_xxh64(all.first(24), 0));
     for (int k = 0; k < 8; ++k)
         b[24 + std::size_t(k)] = std::byte(h >> (8 * k));
 }

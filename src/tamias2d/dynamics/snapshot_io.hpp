@@ -12,6 +12,7 @@
 // a defect throws SnapshotError naming the byte offset, the field and the rule.
 #pragma once
 
+#include <algorithm>
 #include <bit>
 #include <cstddef>
 #include <cstdint>
@@ -21,6 +22,7 @@
 #include <span>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "tamias2d/aabb.hpp"
@@ -28,18 +30,6 @@
 #include "tamias2d/snapshot_error.hpp"
 
 namespace tamias2d {
-
-/// FNV-1a, 64 bits (offset basis 0xcbf29ce484222325, prime 0x100000001b3), over `bytes`,
-/// continuing from `h`: the snapshot's checksum, over its header before the checksum and then
-/// its payload.
-inline std::uint64_t fnv1a_64(std::span<const std::byte> bytes,
-                              std::uint64_t h = 0xcbf29ce484222325ull) {
-    for (const std::byte b : bytes) {
-        h ^= std::uint64_t(b);
-        h *= 0x100000001b3ull;
-    }
-    return h;
-}
 
 /// n in decimal: the snapshot messages' numbers (a loop of its own, so that no std::to_string
 /// instantiation is emitted out of line and exported from the shared library).
@@ -55,9 +45,26 @@ inline std::string decimal(std::uint64_t n) {
 
 class SnapshotWriter {
   public:
-    std::vector<std::byte> bytes;
+    /// A writer into `storage`'s memory (its contents are overwritten): a caller that takes
+    /// snapshots again and again (rollback) hands the last one's vector back, so that its pages
+    /// are written, not allocated and zeroed anew.
+    explicit SnapshotWriter(std::vector<std::byte> storage = {}) : buffer_(std::move(storage)) {
+        buffer_.resize(buffer_.capacity());
+    }
+    /// Room for `n` bytes in all, so that a writer that knows about how much it writes grows
+    /// its buffer once.
+    void reserve(std::size_t n) {
+        if (n > buffer_.size())
+            buffer_.resize(n);
+    }
+    /// The bytes written, handed over; the writer is empty after it.
+    std::vector<std::byte> finish() {
+        buffer_.resize(used_);
+        used_ = 0;
+        return std::move(buffer_);
+    }
 
-    void u8(std::uint8_t v) { bytes.push_back(std::byte(v)); }
+    void u8(std::uint8_t v) { le(v, 1); }
     void u32(std::uint32_t v) { le(v, 4); }
     void u64(std::uint64_t v) { le(v, 8); }
     /// A section's tag, four letters: a reader names the section it expected.
@@ -126,16 +133,26 @@ class SnapshotWriter {
 
   private:
     /// The n low bytes of v, least significant first (on a little-endian host, as they lie).
+    /// Every field passes here: a cursor into a buffer grown by doubling, so that a write is a
+    /// comparison and a store (a vector's resize per field was most of a snapshot's time).
     void le(std::uint64_t v, int n) {
-        const std::size_t at = bytes.size();
-        bytes.resize(at + std::size_t(n));
+        if (buffer_.size() - used_ < std::size_t(n)) [[unlikely]]
+            grow(std::size_t(n));
+        std::byte* at = buffer_.data() + used_;
         if constexpr (std::endian::native == std::endian::little) {
-            std::memcpy(bytes.data() + at, &v, std::size_t(n));
+            std::memcpy(at, &v, std::size_t(n));
         } else {
             for (int k = 0; k < n; ++k)
-                bytes[at + std::size_t(k)] = std::byte(v >> (8 * k));
+                at[k] = std::byte(v >> (8 * k));
         }
+        used_ += std::size_t(n);
     }
+    [[gnu::noinline]] void grow(std::size_t n) {
+        buffer_.resize(std::max({2 * buffer_.size(), used_ + n, std::size_t{4096}}));
+    }
+
+    std::vector<std::byte> buffer_; ///< written bytes, then room
+    std::size_t used_ = 0;          ///< bytes written
 };
 
 class SnapshotReader {
@@ -168,6 +185,12 @@ class SnapshotReader {
     /// Throws (naming `field` at the offset where its value began) unless `ok`.
     void require(bool ok, const char* field, const std::string& rule, std::size_t at) const {
         if (!ok)
+            fail_at(at, field, rule);
+    }
+    /// The same for a rule that is a literal: no string is made unless it fails (the checks
+    /// run per record).
+    void require(bool ok, const char* field, const char* rule, std::size_t at) const {
+        if (!ok) [[unlikely]]
             fail_at(at, field, rule);
     }
 
@@ -291,9 +314,8 @@ class SnapshotReader {
 
   private:
     std::uint64_t le(const char* f, int n) {
-        if (left() < std::size_t(n))
-            fail(f, "cut short: " + decimal(std::uint64_t(n)) + " bytes needed, " +
-                        decimal(std::uint64_t(left())) + " left (truncated)");
+        if (left() < std::size_t(n)) [[unlikely]]
+            cut_short(f, n);
         std::uint64_t v = 0;
         if constexpr (std::endian::native == std::endian::little) {
             std::memcpy(&v, bytes_.data() + at_, std::size_t(n));
@@ -303,6 +325,12 @@ class SnapshotReader {
         }
         at_ += std::size_t(n);
         return v;
+    }
+
+    /// Out of line, so that every field's read stays a bounds check and a load.
+    [[noreturn, gnu::cold, gnu::noinline]] void cut_short(const char* f, int n) const {
+        fail(f, "cut short: " + decimal(std::uint64_t(n)) + " bytes needed, " +
+                    decimal(std::uint64_t(left())) + " left (truncated)");
     }
 
     std::uint32_t world_; ///< the tag of the world read into (its handles')

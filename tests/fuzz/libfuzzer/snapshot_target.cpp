@@ -20,6 +20,7 @@
 
 #include "fuzz/libfuzzer/promise.hpp"
 #include "tamias2d/errors.hpp"
+#include "tamias2d/math/xxh64.hpp"
 #include "tamias2d/world.hpp"
 
 using namespace tamias2d;
@@ -29,14 +30,13 @@ namespace {
 
 constexpr std::size_t max_bodies_stepped = 200;
 
-/// FNV-1a 64 over the header's first 24 bytes and the payload (the snapshot's checksum).
+/// The snapshot's checksum made right: XXH64 of the payload seeded with that of the header's
+/// first 24 bytes.
 void fix_checksum(std::vector<std::byte>& b) {
     if (b.size() < 32)
         return;
-    std::uint64_t h = 0xcbf29ce484222325ull;
-    for (std::size_t k = 0; k < b.size(); ++k)
-        if (k < 24 || k >= 32)
-            h = (h ^ std::uint64_t(b[k])) * 0x100000001b3ull;
+    const std::span<const std::byte> all(b);
+    const std::uint64_t h = tamias2d::xxh64(all.subspan(32), tamias2d::xxh64(all.first(24)));
     for (int k = 0; k < 8; ++k)
         b[24 + std::size_t(k)] = std::byte(h >> (8 * k));
 }
