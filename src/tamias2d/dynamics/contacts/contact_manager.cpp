@@ -321,7 +321,7 @@ void ContactManager::update(BodyStore& bodies, const ShapeStore& shapes, const S
             Narrowed r =
                 narrow_contact(c, warm_impulses_[i], bases_[i], edge_inputs_[i], shape[c.shape_a],
                                shape[c.shape_b], speculative_distance, reuse_distance);
-            if (pre_solve && c.touching)
+            if (pre_solve && r != Narrowed::separated && c.touching)
                 r = Narrowed(pre_solved(i, std::uint8_t(r), bodies, shapes));
             if (r == Narrowed::separated)
                 doomed_.push_back(i);
