@@ -18,6 +18,9 @@ struct Material {
     double restitution = 0.0; ///< C_R (DD12), in [0, 1]
     /// Coulomb friction coefficient, >= 0. Default 0: the SRS assumes no friction (A6); LC2.
     double friction = 0.0;
+    /// The game's own material id, handed to the friction and restitution mixing functions
+    /// (World::set_friction_mixing, DD42): ice against rubber. Not used by the default rules.
+    std::uint64_t user_material_id = 0;
 };
 
 /// \srs{DD27} Which shapes a shape collides with: it belongs to the categories set in

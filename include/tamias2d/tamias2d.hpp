@@ -7,6 +7,7 @@
 #include "tamias2d/body_def.hpp"
 #include "tamias2d/body_state.hpp"
 #include "tamias2d/build_info.hpp"
+#include "tamias2d/contact_hooks.hpp"
 #include "tamias2d/contact_info.hpp"
 #include "tamias2d/debug_draw.hpp"
 #include "tamias2d/errors.hpp"

@@ -13,6 +13,7 @@
 #include "tamias2d/aabb.hpp"
 #include "tamias2d/body_def.hpp"
 #include "tamias2d/body_state.hpp"
+#include "tamias2d/contact_hooks.hpp"
 #include "tamias2d/contact_info.hpp"
 #include "tamias2d/debug_draw.hpp"
 #include "tamias2d/errors.hpp"
@@ -713,6 +714,40 @@ class TAMIAS2D_EXPORT World {
     /// Wakes every body touching this one, and with it their islands at the next step: what
     /// holds them up may be about to go (a platform the game will remove).
     void wake_touching(BodyId body);
+
+    // --- contact_hooks ---
+    // The game's say in how contacts are solved. The functions are not data: a snapshot holds
+    // none of them, and state_hash does not see them. Each runs on the thread that calls step,
+    // never on a worker, so none needs to be thread-safe; each must answer the same for the
+    // same input (the step stays deterministic only if it does) and must not call the World.
+    /// Sets the pre-solve callback (empty: none), asked once per step for every touching pair
+    /// whose bodies are awake, after the narrow phase and before the solver, serially in the
+    /// contacts' storage order (the same on any number of workers). It returns whether the
+    /// contact is solved this step; false empties its manifold for this step (the pair counts
+    /// as not touching: no force, no begin event, an end event if it touched). A one-way
+    /// platform refuses contacts whose normal does not push the body up. Cost: one call per
+    /// touching pair per step, on one thread, only while a callback is set. An exception it
+    /// throws counts as `true` (the step finishes whole) and step() then rethrows the first.
+    void set_pre_solve(PreSolveFunction callback);
+    /// \srs{DD42} Replaces the friction rule mu = sqrt(mu_a mu_b) (empty: back to it) by
+    /// f(mu_a, user_material_a, mu_b, user_material_b). Every contact's friction is mixed
+    /// again now, each value checked before any is written: a value that is not finite and
+    /// >= 0 throws ValidationError naming "friction_mixing" (DCX_friction), as does anything
+    /// the function throws, and the world and the old function stay. The bodies of a touching
+    /// contact whose friction changed are woken. A new contact whose mixed value is refused
+    /// during a step is not made (the pair is not solved) and step() throws that
+    /// ValidationError after finishing the step.
+    void set_friction_mixing(MaterialMixFunction mix);
+    /// \srs{DD42} As set_friction_mixing for the restitution rule C_R = max(C_R,a, C_R,b):
+    /// values outside [0, 1] (or NaN) throw ValidationError naming "restitution_mixing"
+    /// (DCI_CR).
+    void set_restitution_mixing(MaterialMixFunction mix);
+    /// \srs{DD42} Sets the shape's Material::user_material_id, which the mixing functions
+    /// receive; its contacts are mixed again now (set_friction's rules: a refused value throws
+    /// ValidationError naming the function, the world unchanged). A changed id wakes the
+    /// shape's body. InvalidHandle for a handle that names no shape.
+    void set_user_material(ShapeId shape, std::uint64_t id);
+    std::uint64_t user_material(ShapeId shape) const; ///< Material::user_material_id
 
     // --- world_settings ---
     // The settings of WorldDef that a game may change between steps. Each validates as

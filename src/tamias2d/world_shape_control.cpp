@@ -113,8 +113,7 @@ void World::set_friction(ShapeId id, double friction) {
     validate(m);
     if (w.shapes.defs[id.index].material.friction == friction)
         return;
-    w.shapes.defs[id.index].material.friction = friction;
-    w.contacts.refresh_materials(id.index, w.shapes);
+    w.contacts.rematerial(id.index, w.shapes, m);
     wake_shape(w, sh.body);
 }
 
@@ -131,8 +130,7 @@ void World::set_restitution(ShapeId id, double restitution) {
     validate(m);
     if (w.shapes.defs[id.index].material.restitution == restitution)
         return;
-    w.shapes.defs[id.index].material.restitution = restitution;
-    w.contacts.refresh_materials(id.index, w.shapes);
+    w.contacts.rematerial(id.index, w.shapes, m);
     wake_shape(w, sh.body);
 }
 

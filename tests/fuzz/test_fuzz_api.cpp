@@ -62,6 +62,8 @@ struct Driver {
     /// The bodies' and world's run-time control and identity calls (body_world_call), from a
     /// stream of their own for the same reason.
     Rng body_world;
+    /// The contact hooks' calls (contact_hooks_call), from a stream of their own.
+    Rng hooks;
     /// What the oracle of an accepted hand-made polygon found wrong (empty: nothing).
     std::string shape_problem;
     World world;
@@ -73,7 +75,8 @@ struct Driver {
         : r(seed), kinds(seed ^ 0x9e3779b97f4a7c15u), hand(seed ^ 0xc2b2ae3d27d4eb4fu),
           queries(seed ^ 0x165667b19e3779f9u), events_stream(seed ^ 0x27d4eb2f165667c5u),
           area46(seed ^ 0x94d049bb133111ebu), body_world(seed ^ 0xbf58476d1ce4e5b9u),
-          world(make_def(r)), control(seed ^ 0x5851f42d4c957f2du) {}
+          hooks(seed ^ 0xd6e8feb86659fd93u), world(make_def(r)),
+          control(seed ^ 0x5851f42d4c957f2du) {}
 
     static WorldDef make_def(Rng& r) {
         WorldDef d;
@@ -926,6 +929,76 @@ struct Driver {
         }
     }
 
+    // --- contact_hooks ---
+    // A shape's user material id, the mixing functions (valid rules, and values no friction or
+    // restitution is: refused when a contact meets them, removed at once when none does, so
+    // that no later step throws) and the pre-solve callback, from the hooks' own stream.
+    void contact_hooks_call() {
+        switch (hooks.below(4)) {
+        case 0: {
+            const ShapeId s = shapes.empty() || hooks.chance(5)
+                                  ? ShapeId{std::uint32_t(hooks.below(8)), 0, world.tag()}
+                                  : shapes[hooks.below(shapes.size())];
+            const std::uint64_t id = hooks.chance(50) ? hooks.below(4) : hooks.bits();
+            last << "set_user_material(shape#" << s.index << "." << s.generation << ", " << id
+                 << ")";
+            world.set_user_material(s, id);
+            break;
+        }
+        case 1:
+        case 2: {
+            const bool friction = hooks.below(2) == 0;
+            const int rule = int(hooks.below(5));
+            const double bad = any_double(hooks);
+            last << (friction ? "set_friction_mixing(" : "set_restitution_mixing(") << rule << ", "
+                 << bad << ")";
+            MaterialMixFunction mix;
+            switch (rule) {
+            case 0:
+                break; // the default rule
+            case 1:
+                mix = [](double a, std::uint64_t, double b, std::uint64_t) {
+                    return std::min(a, b);
+                };
+                break;
+            case 2:
+                mix = [](double a, std::uint64_t ia, double b, std::uint64_t ib) {
+                    return (ia ^ ib) % 2 == 0 ? std::max(a, b) : 0.5 * (a + b);
+                };
+                break;
+            default:
+                mix = [bad](double, std::uint64_t, double, std::uint64_t) { return bad; };
+                break;
+            }
+            const bool valid = rule < 3 || (friction ? std::isfinite(bad) && bad >= 0.0
+                                                     : bad >= 0.0 && bad <= 1.0);
+            if (friction)
+                world.set_friction_mixing(mix);
+            else
+                world.set_restitution_mixing(mix);
+            if (!valid) { // accepted: no contact met it; a step would
+                if (friction)
+                    world.set_friction_mixing({});
+                else
+                    world.set_restitution_mixing({});
+            }
+            break;
+        }
+        default: {
+            const int rule = int(hooks.below(3));
+            last << "set_pre_solve(" << rule << ")";
+            if (rule == 0)
+                world.set_pre_solve({});
+            else
+                world.set_pre_solve([rule](const PreSolveContact& c) {
+                    return rule == 1 ? c.normal.y > -0.5
+                                     : (c.shape_a.index + c.shape_b.index) % 3 != 0;
+                });
+            break;
+        }
+        }
+    }
+
     /// One random call; throws what the library throws.
     void call() {
         query_block();
@@ -941,6 +1014,10 @@ struct Driver {
             return;
         if (body_world.chance(15)) {
             body_world_call();
+            return;
+        }
+        if (hooks.chance(6)) {
+            contact_hooks_call();
             return;
         }
         switch (r.below(24)) {

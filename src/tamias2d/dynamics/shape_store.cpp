@@ -180,6 +180,8 @@ void ShapeStore::hash(StateHasher& hs) const {
         hs(d.material.density);
         hs(d.material.restitution);
         hs(d.material.friction);
+        if (d.material.user_material_id != 0) // (DD42; default shapes hash as they always did)
+            hs(d.material.user_material_id);
         if (!(d.filter == Filter{}) || d.is_sensor) { // (default shapes hash as they always did)
             hs(std::uint64_t(d.filter.category_bits) << 32 | d.filter.mask_bits);
             hs(std::uint64_t(std::uint32_t(d.filter.group_index)) << 1 |
@@ -217,6 +219,7 @@ template <class IO, class D> void shape_def_fields(IO& io, D& d) {
     io("material.density", d.material.density);
     io("material.restitution", d.material.restitution);
     io("material.friction", d.material.friction);
+    io("material.user_material_id", d.material.user_material_id);
     io("filter.category_bits", d.filter.category_bits);
     io("filter.mask_bits", d.filter.mask_bits);
     io("filter.group_index", d.filter.group_index);

@@ -3,6 +3,7 @@
 // violation reported at the key it concerns.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <utility>
 
 #include "box_polygon.hpp"
@@ -18,10 +19,18 @@ namespace tamias2d::io::scene_detail {
 
 Material parse_material_object(const Ctx& ctx, const ojson& v, const std::string& ptr, Material m) {
     require_object(ctx, v, ptr, "material", "a material object or a material name");
-    check_keys(ctx, v, ptr, {"density", "restitution", "friction"}, "a material");
+    check_keys(ctx, v, ptr, {"density", "restitution", "friction", "user_material_id"},
+               "a material");
     opt_number(ctx, v, ptr, "density", m.density);
     opt_number(ctx, v, ptr, "restitution", m.restitution);
     opt_number(ctx, v, ptr, "friction", m.friction);
+    if (const auto id = v.find("user_material_id"); id != v.end()) { // DD42
+        // (JSON reads a non-negative integer as unsigned: anything else is no id.)
+        if (!id->is_number_unsigned())
+            fail(ctx, child(ptr, "user_material_id"), "user_material_id",
+                 "must be an integer in [0, 2^64 - 1]", format_rule);
+        m.user_material_id = id->get<std::uint64_t>();
+    }
     if (!(m.density > 0.0))
         fail_value(ctx, child(ptr, "density"), "density", m.density, "must be > 0", "DCX_density");
     if (!(m.restitution >= 0.0 && m.restitution <= 1.0))

@@ -26,6 +26,8 @@ ojson material_json(const Material& m) {
     j["density"] = m.density;
     j["restitution"] = m.restitution;
     j["friction"] = m.friction;
+    if (m.user_material_id != 0) // (DD42; scenes without one are written as before)
+        j["user_material_id"] = m.user_material_id;
     return j;
 }
 

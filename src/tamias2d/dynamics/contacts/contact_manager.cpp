@@ -12,11 +12,16 @@
 #include "tamias2d/dynamics/snapshot_io.hpp"
 #include "tamias2d/dynamics/state_hasher.hpp"
 #include "tamias2d/dynamics/step_context.hpp"
+#include "tamias2d/errors.hpp"
 #include "tamias2d/math/prefetch.hpp"
 #include "tamias2d/model/dd27_collision_filter.hpp"
+#include "tamias2d/model/dd42_material_mixing.hpp"
 #include "tamias2d/parallel/step_tasks.hpp"
+#include "tamias2d/units/quantities.hpp"
 
 namespace tamias2d {
+
+namespace u = tamias2d::units;
 
 /// DD27's rule on two shapes' filters.
 bool admits(const Filter& a, const Filter& b) {
@@ -35,15 +40,6 @@ ContactManager::EdgeInput edge_input(const Contact& c) {
         n == 2 ? path_group(n, c.manifold.points[0].separation, c.manifold.points[1].separation)
                : path_group(n, 0.0, 0.0);
     return {c.body_a, c.body_b, group, c.touching, c.restitution > 0.0};
-}
-
-/// The contact's friction and restitution from its shapes' materials. Combination rules
-/// (docs/design.md): friction geometric mean, restitution max.
-void combine_materials(Contact& c, const ShapeStore& shapes) {
-    const Material& ma = shapes.defs[c.shape_a].material;
-    const Material& mb = shapes.defs[c.shape_b].material;
-    c.friction = std::sqrt(ma.friction * mb.friction);
-    c.restitution = std::max(ma.restitution, mb.restitution);
 }
 
 } // namespace
@@ -199,7 +195,16 @@ void ContactManager::find_new(const BodyStore& bodies, ShapeStore& shapes,
         c.shape_b = sb;
         c.body_a = shapes.shapes[sa].body;
         c.body_b = shapes.shapes[sb].body;
-        combine_materials(c, shapes);
+        try { // \srs{DD42}
+            const Mixed m = mix(shapes, sa, sb, friction_mixing, restitution_mixing);
+            c.friction = m.friction;
+            c.restitution = m.restitution;
+        } catch (...) {
+            // As a filter's exception: the pair is refused, the step finishes and rethrows.
+            if (!filter_error_)
+                filter_error_ = std::current_exception();
+            continue;
+        }
         // All the memory first, so that a bad_alloc leaves the parallel arrays and the index
         // agreeing.
         contacts_.reserve_more(1);
@@ -313,9 +318,11 @@ void ContactManager::update(BodyStore& bodies, const ShapeStore& shapes, const S
             Contact& c = contacts_[i];
             if (sleeping && !bodies.active(c.body_a) && !bodies.active(c.body_b))
                 continue; // its edge input stands too, from its last update
-            const Narrowed r =
+            Narrowed r =
                 narrow_contact(c, warm_impulses_[i], bases_[i], edge_inputs_[i], shape[c.shape_a],
                                shape[c.shape_b], speculative_distance, reuse_distance);
+            if (pre_solve && r != Narrowed::separated && c.touching)
+                r = Narrowed(pre_solved(i, std::uint8_t(r), bodies, shapes));
             if (r == Narrowed::separated)
                 doomed_.push_back(i);
             else if (r == Narrowed::changed)
@@ -383,6 +390,8 @@ void ContactManager::update_in_blocks(BodyStore& bodies, const ShapeStore& shape
             r = narrow_contact(c, warm_impulses_[i], bases_[i], edge_inputs_[i], shape[c.shape_a],
                                shape[c.shape_b], speculative_distance, reuse_distance);
         }
+        if (pre_solve && r != Narrowed::separated && c.touching)
+            r = Narrowed(pre_solved(i, std::uint8_t(r), bodies, shapes));
         if (r == Narrowed::separated)
             doomed_.push_back(i);
         else if (r == Narrowed::changed)
@@ -609,15 +618,125 @@ void ContactManager::read(SnapshotReader& in, const BodyStore& bodies, const Sha
 // --- shape_control ---
 
 void ContactManager::refresh_materials(std::uint32_t s, const ShapeStore& shapes) {
+    // Every value first (a mixing function may refuse one), then the writes.
+    remixed_.clear();
+    for (std::uint32_t i = 0; i < contacts_.size(); ++i) {
+        const Contact& c = contacts_[i];
+        if (c.shape_a == s || c.shape_b == s)
+            remixed_.push_back(
+                mix(shapes, c.shape_a, c.shape_b, friction_mixing, restitution_mixing));
+    }
+    std::size_t k = 0;
     for (std::uint32_t i = 0; i < contacts_.size(); ++i) {
         Contact& c = contacts_[i];
         if (c.shape_a != s && c.shape_b != s)
             continue;
-        combine_materials(c, shapes);
+        c.friction = remixed_[k].friction;
+        c.restitution = remixed_[k].restitution;
+        ++k;
         if (i < edge_inputs_.size())
             edge_inputs_[i].bounces = c.restitution > 0.0;
     }
     infos_stale_ = true;
+}
+
+void ContactManager::rematerial(std::uint32_t s, ShapeStore& shapes, const Material& m) {
+    Material& stored = shapes.defs[s].material;
+    const Material old = stored;
+    stored = m;
+    try {
+        refresh_materials(s, shapes); // writes nothing when it throws
+    } catch (...) {
+        stored = old;
+        throw;
+    }
+}
+
+// --- contact_hooks ---
+
+ContactManager::Mixed ContactManager::mix(const ShapeStore& shapes, std::uint32_t sa,
+                                          std::uint32_t sb, const MaterialMixFunction& friction,
+                                          const MaterialMixFunction& restitution) {
+    namespace dd42 = model::dd42;
+    using u::Dimensionless;
+    const Material& ma = shapes.defs[sa].material;
+    const Material& mb = shapes.defs[sb].material;
+    Mixed m;
+    m.friction = friction
+                     ? friction(ma.friction, ma.user_material_id, mb.friction, mb.user_material_id)
+                     : dd42::mixed_friction(u::from_value<Dimensionless>(ma.friction),
+                                            u::from_value<Dimensionless>(mb.friction))
+                           .value();
+    if (!dd42::valid_friction(u::from_value<Dimensionless>(m.friction)))
+        throw ValidationError("friction_mixing", m.friction, "must return a finite friction >= 0",
+                              "DCX_friction");
+    m.restitution =
+        restitution
+            ? restitution(ma.restitution, ma.user_material_id, mb.restitution, mb.user_material_id)
+            : dd42::mixed_restitution(u::from_value<Dimensionless>(ma.restitution),
+                                      u::from_value<Dimensionless>(mb.restitution))
+                  .value();
+    if (!dd42::valid_restitution(u::from_value<Dimensionless>(m.restitution)))
+        throw ValidationError("restitution_mixing", m.restitution,
+                              "must return a restitution in [0, 1]", "DCI_CR");
+    return m;
+}
+
+void ContactManager::remix(const ShapeStore& shapes, BodyStore& bodies,
+                           MaterialMixFunction friction, MaterialMixFunction restitution) {
+    remixed_.clear();
+    remixed_.reserve(contacts_.size());
+    for (std::uint32_t i = 0; i < contacts_.size(); ++i)
+        remixed_.push_back(
+            mix(shapes, contacts_[i].shape_a, contacts_[i].shape_b, friction, restitution));
+    friction_mixing = std::move(friction);
+    restitution_mixing = std::move(restitution);
+    for (std::uint32_t i = 0; i < contacts_.size(); ++i) {
+        Contact& c = contacts_[i];
+        const Mixed& m = remixed_[i];
+        if (c.friction == m.friction && c.restitution == m.restitution)
+            continue; // (the same bits: nothing changes, nothing wakes)
+        c.friction = m.friction;
+        c.restitution = m.restitution;
+        if (i < edge_inputs_.size())
+            edge_inputs_[i].bounces = c.restitution > 0.0;
+        if (c.touching) {
+            bodies.wake(c.body_a);
+            bodies.wake(c.body_b);
+        }
+    }
+    infos_stale_ = true;
+}
+
+std::uint8_t ContactManager::pre_solved(std::uint32_t i, std::uint8_t r, const BodyStore& bodies,
+                                        const ShapeStore& shapes) {
+    Contact& c = contacts_[i];
+    PreSolveContact pc;
+    pc.shape_a = shapes.id(c.shape_a);
+    pc.shape_b = shapes.id(c.shape_b);
+    pc.body_a = bodies.id(c.body_a);
+    pc.body_b = bodies.id(c.body_b);
+    pc.normal = c.manifold.normal;
+    pc.point_count = c.manifold.count;
+    for (int j = 0; j < c.manifold.count; ++j)
+        pc.points[j] = {c.manifold.points[j].point, c.manifold.points[j].separation};
+    bool solved = true;
+    try {
+        solved = pre_solve(pc);
+    } catch (...) {
+        // As a filter's exception: the step finishes (this contact solved) and rethrows.
+        if (!filter_error_)
+            filter_error_ = std::current_exception();
+    }
+    if (solved)
+        return r;
+    // Off for this step: no points, not touching (the next narrow phase computes it afresh,
+    // with no warm start: no point keeps an id).
+    const bool was = Narrowed(r) == Narrowed::changed ? false : true;
+    c.manifold.count = 0;
+    c.touching = false;
+    edge_inputs_[i] = edge_input(c);
+    return std::uint8_t(was ? Narrowed::changed : Narrowed::same);
 }
 
 } // namespace tamias2d

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "tamias2d/collision/manifold_reuse.hpp"
+#include "tamias2d/contact_hooks.hpp"
 #include "tamias2d/contact_info.hpp"
 #include "tamias2d/dynamics/constraint_graph.hpp"
 #include "tamias2d/dynamics/contacts/contact.hpp"
@@ -148,8 +149,43 @@ class ContactManager {
     /// Shape s's material changed: its contacts take the new combined friction and restitution
     /// now (the manifolds and impulses are kept).
     void refresh_materials(std::uint32_t s, const ShapeStore& shapes);
+    /// Gives shape s the material m (validated by the caller) and its contacts the values
+    /// mixed from it (refresh_materials), all or nothing: a mixing function's refusal restores
+    /// the shape's material and throws.
+    void rematerial(std::uint32_t s, ShapeStore& shapes, const Material& m);
+
+    // --- contact_hooks ---
+    /// The user's pre-solve callback (World::set_pre_solve; empty: none).
+    PreSolveFunction pre_solve;
+    /// The user's mixing functions (World::set_friction_mixing, set_restitution_mixing; empty:
+    /// DD42's default rules).
+    MaterialMixFunction friction_mixing, restitution_mixing;
+    /// A contact's friction and restitution.
+    struct Mixed {
+        double friction = 0.0, restitution = 0.0;
+    };
+    /// \srs{DD42} The friction and restitution of a contact between shapes sa and sb, by the
+    /// given functions (empty: DD42's defaults). Throws ValidationError naming the function
+    /// ("friction_mixing", "restitution_mixing") for a value that is not a friction (finite,
+    /// >= 0: DCX_friction) or a restitution ([0, 1]: DCI_CR); what a function throws passes.
+    static Mixed mix(const ShapeStore& shapes, std::uint32_t sa, std::uint32_t sb,
+                     const MaterialMixFunction& friction, const MaterialMixFunction& restitution);
+    /// Every contact's materials mixed again by new mixing functions, all or none: each is
+    /// computed (and checked, mix) before the first is written, so a refusal changes nothing.
+    /// The functions are then kept; the bodies of a touching contact whose value changed are
+    /// woken.
+    void remix(const ShapeStore& shapes, BodyStore& bodies, MaterialMixFunction friction,
+               MaterialMixFunction restitution);
 
   private:
+    /// Contact i, touching after its narrow phase (`r`), handed to the pre-solve callback: a
+    /// refusal empties its manifold for this step (not touching). Returns what the narrow
+    /// phase then found. An exception of the callback is kept (filter_error_) and the contact
+    /// is solved.
+    std::uint8_t pre_solved(std::uint32_t i, std::uint8_t r, const BodyStore& bodies,
+                            const ShapeStore& shapes);
+    std::vector<Mixed> remixed_; ///< remix's values, all computed before any is written
+
     /// Tests fill the arrays of their own contacts (tests/support).
     friend struct ContactManagerAccess;
 
@@ -172,7 +208,8 @@ class ContactManager {
     void touch_changed(const Contact& c, BodyStore& bodies, const ShapeStore& shapes,
                        bool sleeping);
 
-    /// The first exception of the user's filter (custom_admits), for the step to rethrow.
+    /// The first exception of the user's filter (custom_admits), of the pre-solve callback or
+    /// of a mixing function (a bad value included), for the step to rethrow.
     mutable std::exception_ptr filter_error_;
 
     PairMap index_; ///< contact by Contact::key of its shapes

@@ -1,0 +1,165 @@
+// The pre-solve callback (World::set_pre_solve) on a one-way platform: a box rising through it
+// from below passes, a box falling onto it rests on it at the closed-form height; what the
+// callback sees, its exception, and equal results on 1 to 4 workers.
+#include <boost/test/unit_test.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+#include <stdexcept>
+#include <vector>
+
+#include "support/pyramid.hpp"
+#include "tamias2d/world.hpp"
+
+using namespace tamias2d;
+namespace utf = boost::unit_test;
+
+namespace {
+
+constexpr double dt = 1.0 / 60.0;
+constexpr double g = 9.81;
+constexpr double platform_top = 3.1; // m: a 4 m x 0.2 m platform centred at y = 3
+constexpr double half_height = 0.25; // m: the 0.5 m box
+
+/// A static floor (top y = 0), a static platform above it, and a box under the platform.
+struct Level {
+    World world;
+    ShapeId platform;
+    BodyId box;
+    explicit Level(WorldDef def = {}) : world(def) {
+        BodyDef sd;
+        sd.type = BodyType::static_body;
+        sd.position = {0.0, -0.5};
+        world.create_shape(world.create_body(sd), box_shape(20.0, 1.0));
+        sd.position = {0.0, 3.0};
+        platform = world.create_shape(world.create_body(sd), box_shape(4.0, 0.2));
+        BodyDef bd;
+        bd.position = {0.0, half_height};
+        box = world.create_body(bd);
+        world.create_shape(box, box_shape(0.5, 0.5, Material{1.0, 0.0, 0.5}));
+    }
+    /// The one-way rule: a contact with the platform is solved only when its normal pushes the
+    /// other body up (the normal runs from shape_a into shape_b).
+    void make_one_way() {
+        world.set_pre_solve([p = platform](const PreSolveContact& c) {
+            if (c.shape_a == p)
+                return c.normal.y > 0.7;
+            if (c.shape_b == p)
+                return c.normal.y < -0.7;
+            return true;
+        });
+    }
+};
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(contact_hooks_pre_solve, *utf::label("reliability"))
+
+// Oracle: closed form. The box leaves the floor at 10 m/s: free, it would rise to
+// 0.25 + 10^2 / (2 g) = 5.35 m, above the platform's top, so it passes through and its bottom
+// rises above the top (3.1 m); it falls back and rests on the platform with its centre at
+// top + half height = 3.35 m. The soft contact holds it within its static overlap,
+// g / (2 pi f)^2 with f = 45 Hz (WorldDef::contact_hertz; 1.2e-4 m), plus the linear slop (0 by
+// default): 2e-4 m bounds it. Without the callback the platform stops it from below.
+BOOST_AUTO_TEST_CASE(one_way_platform_passes_from_below_and_holds_from_above) {
+    Level level;
+    level.make_one_way();
+    level.world.set_velocity(level.box, {0.0, 10.0});
+    double highest = 0.0;
+    for (int i = 0; i < 300; ++i) {
+        level.world.step(dt);
+        highest = std::max(highest, level.world.position(level.box).y);
+    }
+    BOOST_TEST(highest - half_height > platform_top);                         // it passed
+    BOOST_TEST(std::abs(highest - (half_height + 100.0 / (2.0 * g))) < 0.05); // unhindered
+    const double rest = platform_top + half_height;
+    const double overlap = g / std::pow(2.0 * std::numbers::pi * 45.0, 2);
+    BOOST_TEST(std::abs(level.world.position(level.box).y - rest) <= 2.0 * overlap);
+    BOOST_TEST(std::abs(level.world.velocity(level.box).y) < 1e-6);
+
+    Level two_way; // the control: no callback
+    two_way.world.set_velocity(two_way.box, {0.0, 10.0});
+    double top_reached = 0.0;
+    for (int i = 0; i < 300; ++i) {
+        two_way.world.step(dt);
+        top_reached = std::max(top_reached, two_way.world.position(two_way.box).y);
+    }
+    BOOST_TEST(top_reached < 3.0); // its centre never reached the platform's
+    BOOST_TEST(std::abs(two_way.world.position(two_way.box).y - half_height) <= 2.0 * overlap);
+}
+
+// Oracle: the callback's stated input: touching pairs only, unit normal from shape_a into
+// shape_b, 1 or 2 points; for the box resting on the floor, the normal is (0, +-1) and its two
+// points lie on the floor's top face (y = 0, within the soft contact's overlap).
+BOOST_AUTO_TEST_CASE(the_callback_sees_the_manifold) {
+    Level level;
+    std::vector<PreSolveContact> seen;
+    level.world.set_pre_solve([&](const PreSolveContact& c) {
+        seen.push_back(c);
+        return true;
+    });
+    for (int i = 0; i < 30; ++i)
+        level.world.step(dt);
+    BOOST_TEST_REQUIRE(!seen.empty());
+    const PreSolveContact& c = seen.back();
+    BOOST_TEST(c.point_count == 2);
+    BOOST_TEST(std::abs(std::abs(c.normal.y) - 1.0) < 1e-12);
+    BOOST_TEST((c.body_a == level.box || c.body_b == level.box));
+    for (int j = 0; j < c.point_count; ++j)
+        BOOST_TEST(std::abs(c.points[j].point.y) < 1e-3);
+    // A callback that always answers true changes no bit.
+    Level plain;
+    for (int i = 0; i < 30; ++i)
+        plain.world.step(dt);
+    BOOST_TEST(plain.world.state_hash() == level.world.state_hash());
+}
+
+// Oracle: the stated rule for an exception of the callback: the step finishes with the
+// contact solved (as a true) and then rethrows it.
+BOOST_AUTO_TEST_CASE(an_exception_is_rethrown_after_a_whole_step) {
+    Level level, plain;
+    for (int i = 0; i < 5; ++i) {
+        level.world.step(dt);
+        plain.world.step(dt);
+    }
+    level.world.set_pre_solve(
+        [](const PreSolveContact&) -> bool { throw std::runtime_error("game bug"); });
+    BOOST_CHECK_THROW(level.world.step(dt), std::runtime_error);
+    plain.world.step(dt);
+    BOOST_TEST(level.world.state_hash() == plain.world.state_hash());
+    level.world.set_pre_solve({});
+    level.world.step(dt); // and the next step runs without it
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+BOOST_AUTO_TEST_SUITE(contact_hooks_pre_solve_workers, *utf::label("determinism"))
+
+// Oracle: the determinism requirement: a pyramid whose every third box is let fall through
+// the ground by the callback gives the same state hash on 1, 2, 3 and 4 workers, step by step;
+// and the callback changes the run.
+BOOST_AUTO_TEST_CASE(equal_on_one_to_four_workers) {
+    std::uint64_t reference[90];
+    for (int workers = 1; workers <= 4; ++workers) {
+        World w{WorldDef{.workers = workers}};
+        test::build_pyramid(w, 10);
+        w.set_pre_solve(
+            [](const PreSolveContact& c) { return (c.body_a.index + c.body_b.index) % 3 != 0; });
+        for (int i = 0; i < 90; ++i) {
+            w.step(dt);
+            if (workers == 1)
+                reference[i] = w.state_hash();
+            else
+                BOOST_TEST_REQUIRE(w.state_hash() == reference[i]);
+        }
+    }
+    World plain{WorldDef{}};
+    test::build_pyramid(plain, 10);
+    for (int i = 0; i < 90; ++i)
+        plain.step(dt);
+    BOOST_TEST(plain.state_hash() != reference[89]);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
