@@ -24,7 +24,7 @@ if __package__ in (None, ""):
 
 from traceability import SCHEMA_VERSION  # noqa: E402
 from traceability import analysis, builds, evidence, graphs, links, render_html, render_md, srsdata, vvdata  # noqa: E402
-from traceability import fingerprints, reproducible, reqif, review  # noqa: E402
+from traceability import bench_records, fingerprints, reproducible, reqif, review  # noqa: E402
 
 
 def parse_args(argv):
@@ -171,6 +171,8 @@ def build(args, log=print):
             c["status"] = ("error" if p.get("refused") else "passed" if c.get("passed") is True
                            else "target-missed" if c.get("target") else "failed")
     vvdata.render_plots(programs, out, warnings)
+    # The dated benchmark records of the checkout (verification/bench/results/), beside its own.
+    records = bench_records.render(bench_records.collect(source, warnings), out, warnings)
 
     res = analysis.analyse(srs, code_sites, tests, config, warnings)
     # Fingerprints of both ends of each link, compared with the review records.
@@ -242,6 +244,7 @@ def build(args, log=print):
         "checker": checker,
         "graphs": gr,
         "verification": programs,
+        "bench_records": records,
         "builds": builds.evidence_builds(build_dir, build_prov, programs +
                                          ([{"program": "coverage", "provenance": coverage["provenance"]}]
                                           if coverage and coverage.get("provenance") else [])),

@@ -116,6 +116,7 @@ ul.compact{margin:4px 0;padding-left:20px}
 .plots{display:flex;flex-wrap:wrap;gap:14px}
 .plots figure{margin:0;border:1px solid var(--line);border-radius:6px;padding:6px;background:#fff}
 .plots img{width:560px;max-width:100%}
+.plots img.wide{width:1280px}
 .orphan{color:var(--fail);font-weight:600}
 .player-frame{width:100%;height:640px;border:1px solid var(--line);border-radius:6px;background:#fff}
 table.data td img.thumb{width:210px;border:1px solid var(--line);border-radius:4px;display:block}
@@ -742,8 +743,33 @@ say how the figure is measured:<ul>{"".join(rows)}</ul></div>""")
                 self.w('<div class="plots">' + "".join(
                     f'<figure><img src="{E(s["svg"])}" alt="{E(str(s.get("name")))}"><figcaption class="small">'
                     f'{E(str(s.get("name")))}</figcaption></figure>' for s in figs) + '</div>')
+            if p["program"] == "benchmark":
+                self.bench_records()
+        if not any(p["program"] == "benchmark" for p in progs):
+            self.bench_records()
         self.players()
         self.w('</section>')
+
+    def bench_records(self):
+        """The dated records of verification/bench/results/ (traceability/bench_records.py)."""
+        br = self.r.get("bench_records") or {}
+        pts = br.get("points") or []
+        self.w('<h3 id="bench-records">Dated benchmark records</h3>')
+        self.w('<p class="small">Step times of <code>tamias_bench</code> runs kept in '
+               '<code>verification/bench/results/&lt;machine&gt;/</code> (thread CPU time, one thread, '
+               'each engine\'s defaults): each point is true of its commit, machine and date only, '
+               'and two machines, or one shared machine hours apart, do not compare one to one. '
+               'A point of several runs is their median, its bar their range. '
+               f'{len(pts)} points from {br.get("records", 0)} record file(s)'
+               + (f'; {br["left_out"]} cell(s) that are not one number left out' if br.get("left_out") else "")
+               + (f'; data: <a href="{E(br["csv"])}"><code>{E(br["csv"])}</code></a>' if br.get("csv") else "")
+               + '.</p>')
+        if br.get("svg"):
+            self.w(f'<div class="plots"><figure><img class="wide" src="{E(br["svg"])}" '
+                   'alt="ms/step by date per scene and engine"><figcaption class="small">ms/step by '
+                   'date and commit, per scene and engine</figcaption></figure></div>')
+        elif not pts:
+            self.w('<p class="note">No dated benchmark record with step times.</p>')
 
     # Scenes whose motion the V&V evidence refers to, shown first in the player (IM3's
     # collision, the elastic pair, the pyramid, the rain).

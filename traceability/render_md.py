@@ -180,6 +180,13 @@ def render(r):
         for s_ in p["series"]:
             if s_.get("svg"):
                 w(f"![{s_.get('name')}]({s_['svg']})\n")
+    br = r.get("bench_records") or {}
+    w("### Dated benchmark records\n")
+    w(f"{len(br.get('points') or [])} step times of tamias_bench runs from {br.get('records', 0)} "
+      "record file(s) under verification/bench/results/, each true of its commit, machine and date "
+      f"only; data: {br.get('csv') or 'none'}.\n")
+    if br.get("svg"):
+        w(f"![ms/step by date and commit, per scene and engine]({br['svg']})\n")
     w("## 8. Coverage\n")
     cov = r["coverage"]
     if cov:

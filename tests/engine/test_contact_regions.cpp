@@ -14,6 +14,7 @@
 
 #include "support/random_contacts.hpp"
 #include "support/sequential_pass.hpp"
+#include "support/wide_solver_access.hpp"
 #include "tamias2d/dynamics/constraint_graph.hpp"
 #include "tamias2d/dynamics/contacts/contact_iteration.hpp"
 #include "tamias2d/dynamics/contacts/pack_streams.hpp"
@@ -159,7 +160,7 @@ BOOST_AUTO_TEST_CASE(regions_reproduce_the_sequential_pass_in_their_order, *utf:
 
                 Scene stored = scene;
                 WideContactSolver solver;
-                solver.load(stored.constraints, stored.bodies, regions, cut);
+                test::load(solver, stored.constraints, stored.bodies, regions, cut);
                 BOOST_TEST_REQUIRE(solver.graph().streams() == regions + 1);
                 const ContactSolverSettings st = iteration_settings();
                 for (int round = 0; round < 3; ++round) {
@@ -167,16 +168,16 @@ BOOST_AUTO_TEST_CASE(regions_reproduce_the_sequential_pass_in_their_order, *utf:
                     solver.solve(stored.bodies, st, true);
                     solver.solve(stored.bodies, st, false);
                 }
-                solver.store(stored.constraints);
+                test::store(solver, stored.constraints);
                 check_same_pass(stored, seq);
 
                 for (int threads = 1; threads <= 3; ++threads) {
                     BOOST_TEST_CONTEXT(threads << " threads") {
                         Scene run = scene;
                         WideContactSolver streamed;
-                        streamed.load(run.constraints, run.bodies, regions, cut);
+                        test::load(streamed, run.constraints, run.bodies, regions, cut);
                         threaded_passes(streamed, run.bodies, threads);
-                        streamed.store(run.constraints);
+                        test::store(streamed, run.constraints);
                         check_same_pass(run, seq);
                     }
                 }
@@ -199,7 +200,7 @@ BOOST_AUTO_TEST_CASE(streams_keep_the_order_and_wait_for_their_predecessors) {
         const std::vector<double> cut = random_places(seed, scene.bodies.size());
         std::vector<GraphEdge> edges;
         for (const ContactConstraint& c : scene.constraints)
-            edges.push_back({c.body_a, c.body_b, path_group(c.count, 0.0, 0.0, c.use_block)});
+            edges.push_back(test::prepared_edge(c));
         for (std::uint32_t regions = 2; regions <= 5; ++regions) {
             BOOST_TEST_CONTEXT("seed " << seed << ", " << regions << " regions") {
                 const RegionOrder order = region_order(scene, cut, regions);
@@ -277,7 +278,7 @@ BOOST_AUTO_TEST_CASE(one_region_is_one_stream_without_waits) {
     const Scene scene = random_scene(7, 12, 120);
     std::vector<GraphEdge> edges;
     for (const ContactConstraint& c : scene.constraints)
-        edges.push_back({c.body_a, c.body_b, path_group(c.count, 0.0, 0.0, c.use_block)});
+        edges.push_back(test::prepared_edge(c));
     ConstraintGraph with_places, without;
     with_places.colour(edges, scene.bodies.size(), 1, random_places(7, scene.bodies.size()));
     without.colour(edges, scene.bodies.size());

@@ -13,6 +13,7 @@
 #include "support/contact_manager_access.hpp"
 #include "support/random_contacts.hpp"
 #include "support/sequential_pass.hpp"
+#include "support/wide_solver_access.hpp"
 #include "tamias2d/dynamics/constraint_graph.hpp"
 #include "tamias2d/dynamics/contacts/contact_iteration.hpp"
 #include "tamias2d/dynamics/contacts/contact_manager.hpp"
@@ -58,13 +59,13 @@ BOOST_AUTO_TEST_CASE(packs_reproduce_the_sequential_pass, *utf::label("IM7")) {
 
         Scene wide = scene;
         WideContactSolver solver;
-        solver.load(wide.constraints, wide.bodies);
+        test::load(solver, wide.constraints, wide.bodies);
         for (int pass = 0; pass < 3; ++pass) {
             solver.warm_start(wide.bodies);
             solver.solve(wide.bodies, st, true);
             solver.solve(wide.bodies, st, false);
         }
-        solver.store(wide.constraints);
+        test::store(solver, wide.constraints);
 
         check_same_pass(wide, seq);
         for (const ContactConstraint& c : scene.constraints)
@@ -105,21 +106,21 @@ BOOST_AUTO_TEST_CASE(kept_packs_reproduce_the_sequential_pass, *utf::label("inte
         }
         Scene wide = scene;
         WideContactSolver solver;
-        solver.load(earlier.constraints, earlier.bodies);
+        test::load(solver, earlier.constraints, earlier.bodies);
         const std::vector<ConstraintGraph::Pack> before(solver.graph().packs().begin(),
                                                         solver.graph().packs().end());
-        solver.load(wide.constraints, wide.bodies);
+        test::load(solver, wide.constraints, wide.bodies);
         const std::vector<ConstraintGraph::Pack> after(solver.graph().packs().begin(),
                                                        solver.graph().packs().end());
         BOOST_TEST(after == before); // kept, so this is the case under test
         WideContactSolver afresh;
-        afresh.load(scene.constraints, scene.bodies);
+        test::load(afresh, scene.constraints, scene.bodies);
         regrouped += !std::equal(after.begin(), after.end(), afresh.graph().packs().begin(),
                                  afresh.graph().packs().end());
         solver.warm_start(wide.bodies);
         solver.solve(wide.bodies, st, true);
         solver.solve(wide.bodies, st, false);
-        solver.store(wide.constraints);
+        test::store(solver, wide.constraints);
 
         check_same_pass(wide, seq);
     }
@@ -135,7 +136,7 @@ BOOST_AUTO_TEST_CASE(levels_separate_bodies_and_keep_their_order) {
         const Scene scene = random_scene(seed, 4 + int(seed % 13), 60);
         std::vector<GraphEdge> edges;
         for (const ContactConstraint& c : scene.constraints)
-            edges.push_back({c.body_a, c.body_b, path_group(c.count, 0.0, 0.0, c.use_block)});
+            edges.push_back(test::prepared_edge(c));
         ConstraintGraph graph;
         graph.colour(edges, scene.bodies.size());
         std::vector<int> position(scene.constraints.size(), -1);
@@ -266,7 +267,7 @@ BOOST_AUTO_TEST_CASE(packs_are_kept_only_while_the_bodies_and_most_groups_stay) 
 }
 
 // Oracle: the lane filled through a ContactConstraint (ContactManager::unprepared_constraint,
-// then set_input_lane from it, which load() uses and the IM7 tests above check against the
+// then set_input_lane from it, which test::load uses and the IM7 tests above check against the
 // sequential pass). The world's path fills the lane from the contact directly; every field of
 // the lane must come out the same, over one- and two-point manifolds, filled over a lane that
 // held another manifold before.

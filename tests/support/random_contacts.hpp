@@ -8,8 +8,8 @@
 #include <random>
 #include <vector>
 
+#include "support/wide_solver_access.hpp"
 #include "tamias2d/dynamics/contacts/contact_constraint.hpp"
-#include "tamias2d/dynamics/contacts/restitution.hpp"
 #include "tamias2d/dynamics/softness.hpp"
 #include "tamias2d/dynamics/solver_body.hpp"
 #include "tamias2d/dynamics/solver_settings.hpp"

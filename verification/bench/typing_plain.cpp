@@ -1,7 +1,7 @@
 // The plain-double instantiation of the typing kernel, and its data.
 #include "typing_kernel.hpp"
 
-#include "tamias2d/dynamics/contacts/restitution.hpp"
+#include "support/wide_solver_access.hpp"
 #include "tamias2d/dynamics/contacts/wide_contact_solver.hpp"
 
 namespace tamias_bench::typing {
@@ -67,10 +67,11 @@ KernelData make_kernel_data(int base) {
         }
     }
     // Prepared and packed by the engine itself, as World::solve does each step.
-    tamias2d::prepare_contacts(constraints, d.bodies);
+    tamias2d::test::prepare_contacts(constraints, d.bodies);
     tamias2d::WideContactSolver solver;
-    solver.load(constraints, d.bodies);
-    d.packs.assign(solver.packs().begin(), solver.packs().end());
+    tamias2d::test::load(solver, constraints, d.bodies);
+    const auto packs = tamias2d::WideContactSolverAccess::packs(solver);
+    d.packs.assign(packs.begin(), packs.end());
     d.constraints = int(constraints.size());
     return d;
 }

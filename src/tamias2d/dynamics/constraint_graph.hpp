@@ -45,11 +45,10 @@ enum class PathGroup : std::uint8_t {
 };
 inline constexpr std::uint32_t path_groups = 3;
 
-/// The group of a manifold of `count` points with separations s1, s2 (m) at preparation; a
-/// two-point manifold too ill-conditioned for the block (block_capable false) goes point by
-/// point. Apart at preparation predicts speculative in the soft iteration (rigid targets).
-inline PathGroup path_group(int count, double s1, double s2, bool block_capable = true) {
-    if (count != 2 || !block_capable)
+/// The group of a manifold of `count` points with separations s1, s2 (m) at preparation. Apart
+/// at preparation predicts speculative in the soft iteration (rigid targets).
+inline PathGroup path_group(int count, double s1, double s2) {
+    if (count != 2)
         return PathGroup::point_by_point;
     return s1 > 0.0 && s2 > 0.0 ? PathGroup::block_always : PathGroup::block_rigid;
 }

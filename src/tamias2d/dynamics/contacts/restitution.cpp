@@ -83,12 +83,6 @@ bool restitute(ContactConstraint& c, std::span<SolverBody> bodies,
 
 } // namespace
 
-void prepare_contacts(std::span<ContactConstraint> constraints,
-                      std::span<const SolverBody> bodies) {
-    for (ContactConstraint& c : constraints)
-        prepare_contact(c, bodies);
-}
-
 void prepare_contact(ContactConstraint& c, std::span<const SolverBody> bodies) {
     const SolverBody& a = bodies[c.body_a];
     const SolverBody& b = bodies[c.body_b];

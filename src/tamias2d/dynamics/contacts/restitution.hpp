@@ -13,12 +13,10 @@
 
 namespace tamias2d {
 
-/// Effective masses (DD8), block matrices and the pre-step normal velocities. The constraint's
-/// bodies, normal, friction, restitution, count and its points' anchors, separations and
-/// warm-start impulses must be filled in; everything else is set here (points past count are
-/// never read).
-void prepare_contacts(std::span<ContactConstraint> constraints, std::span<const SolverBody> bodies);
-/// The same for one constraint (the world prepares each as it builds it).
+/// Effective masses (DD8), block matrices and the pre-step normal velocities of one constraint
+/// (the world prepares each as it builds it). The constraint's bodies, normal, friction,
+/// restitution, count and its points' anchors, separations and warm-start impulses must be
+/// filled in; everything else is set here (points past count are never read).
 void prepare_contact(ContactConstraint& c, std::span<const SolverBody> bodies);
 /// DD12: where bodies approached (v_n < -threshold) and pushed, drive v_n to -C_R v_n(before),
 /// solved on the step's total impulses over all manifolds (a few Gauss-Seidel passes) with

@@ -188,30 +188,6 @@ void WideContactSolver::prefetch_pack_after(std::size_t i) const {
         prefetch_for_write(p + line);
 }
 
-void WideContactSolver::load(std::span<const ContactConstraint> constraints,
-                             std::span<const SolverBody> bodies, std::uint32_t regions,
-                             std::span<const double> cut) {
-    edges_.clear();
-    for (const ContactConstraint& c : constraints) {
-        edges_.push_back(
-            {c.body_a, c.body_b,
-             path_group(c.count, c.points[0].base_separation, c.points[1].base_separation)});
-    }
-    colour(edges_, bodies.size(), regions, cut);
-    const auto lanes = order();
-    WideManifoldInput in; // one for all packs, as the world's lane filling uses it
-    for (std::size_t i = 0; i < lanes.size(); ++i) {
-        for (int l = 0; l < wide_lanes; ++l) {
-            const std::uint32_t k = lanes[i][l];
-            if (k == ConstraintGraph::no_constraint)
-                clear_input_lane(in, l);
-            else
-                set_input_lane(in, l, constraints[k], no_slot);
-        }
-        prepare_pack(i, in, bodies);
-    }
-}
-
 void WideContactSolver::warm_start(std::span<SolverBody> bodies) {
     warm_start_packs(packs_.data(), packs_.size(), bodies.data());
 }
@@ -245,17 +221,6 @@ inline void copy_out(const WideContactConstraintPoint& q, int l, ContactConstrai
 }
 
 } // namespace
-
-void WideContactSolver::store(std::span<ContactConstraint> constraints) const {
-    const auto order = graph_.packs();
-    for (std::size_t i = 0; i < order.size(); ++i) {
-        const WideContactConstraint& w = packs_[i];
-        for (int l = 0; l < wide_lanes; ++l) {
-            for (int j = 0; j < w.count[l]; ++j)
-                copy_out(w.points[j], l, constraints[order[i][l]].points[j]);
-        }
-    }
-}
 
 void WideContactSolver::store(std::span<ContactImpulses> warm, std::span<ContactImpulses> totals,
                               std::span<ContactConstraint> bouncing, std::size_t begin,

@@ -5,7 +5,6 @@
 
 #include <array>
 #include <span>
-#include <vector>
 
 #include "tamias2d/dynamics/constraint_graph.hpp"
 #include "tamias2d/dynamics/contacts/contact.hpp"
@@ -53,10 +52,6 @@ class WideContactSolver {
     /// impulses in the same order), without a second pass over the packs.
     void prepare_pack_and_warm_start(std::size_t i, const WideManifoldInput& in,
                                      std::span<SolverBody> bodies);
-    /// colour and prepare_pack for constraints given as an array (tests, benchmarks): their
-    /// bodies, normals, friction, anchors, separations and warm-start impulses are read.
-    void load(std::span<const ContactConstraint> constraints, std::span<const SolverBody> bodies,
-              std::uint32_t regions = 1, std::span<const double> cut = {});
 
     /// Re-applies the accumulated impulses (they carry the previous substep's solution forward).
     void warm_start(std::span<SolverBody> bodies);
@@ -69,8 +64,6 @@ class WideContactSolver {
     void solve_run(std::size_t first, std::size_t count, std::uint32_t stream,
                    std::span<SolverBody> bodies, const ContactSolverSettings& settings,
                    bool use_bias);
-    /// Copies the impulses back into the constraints given to load.
-    void store(std::span<ContactConstraint> constraints) const;
     /// Copies the impulses into the persistent contacts' records, indexed like the contacts: the
     /// accumulated ones into `warm` (warm start next step), the step's totals into `totals`
     /// (contact report); and, for the manifolds that can bounce, into the restitution pass's
@@ -80,8 +73,6 @@ class WideContactSolver {
     void store(std::span<ContactImpulses> warm, std::span<ContactImpulses> totals,
                std::span<ContactConstraint> bouncing, std::size_t begin, std::size_t end) const;
 
-    /// The packs in solve order (the benchmark runs its own instantiation of the loops on them).
-    std::span<WideContactConstraint> packs() { return packs_; }
     /// The clone the packs run with here: "x86-64-v4" or "avx2", or nullptr for the baseline
     /// (SSE2 on x86-64; also in unoptimised builds). The results are equal.
     static const char* instruction_set();
@@ -93,8 +84,10 @@ class WideContactSolver {
     /// (rain_16k: 3-5 % faster per step; a pyramid, whose packs stay in cache, unchanged).
     void prefetch_pack_after(std::size_t i) const;
 
+    /// Tests and the typing benchmark read the packs (tests/support/wide_solver_access.hpp).
+    friend struct WideContactSolverAccess;
+
     ConstraintGraph graph_;
-    std::vector<GraphEdge> edges_; ///< load's scratch
     /// Per stream: where its lanes naming the static body write (never read), a line each.
     struct alignas(64) Sink {
         SolverBody body;
