@@ -620,4 +620,11 @@ void ContactManager::refresh_materials(std::uint32_t s, const ShapeStore& shapes
     infos_stale_ = true;
 }
 
+// --- definitions ---
+
+void ContactManager::forget_warm_starts() {
+    for (std::size_t i = 0; i < warm_impulses_.size(); ++i)
+        warm_impulses_[i] = ContactImpulses{};
+}
+
 } // namespace tamias2d

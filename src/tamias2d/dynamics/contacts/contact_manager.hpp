@@ -148,6 +148,10 @@ class ContactManager {
     /// Shape s's material changed: its contacts take the new combined friction and restitution
     /// now (the manifolds and impulses are kept).
     void refresh_materials(std::uint32_t s, const ShapeStore& shapes);
+    // --- definitions (WorldDef::enable_warm_starting) ---
+    /// Zeroes every contact's accumulated impulses, so that the step's solve starts from none
+    /// (warm starting off).
+    void forget_warm_starts();
 
   private:
     /// Tests fill the arrays of their own contacts (tests/support).
