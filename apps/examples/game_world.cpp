@@ -38,12 +38,12 @@ void promise(bool ok, const char* what) {
 }
 
 constexpr double dt = 1.0 / 60.0;
-constexpr double g = 9.81;
 
 } // namespace
 
 int main() {
     World world(WorldDef{.enable_sleep = true});
+    const double g = -world.gravity().y; // m/s^2, the default gravity's magnitude
     std::unordered_map<BodyId, Entity> entities;
     // The game's object for a body: kept in the map, and tied to the body through user data.
     const auto add = [&](BodyId body, const char* name) {
