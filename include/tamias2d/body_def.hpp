@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 
+#include "tamias2d/motion_locks.hpp"
 #include "tamias2d/user_data.hpp"
 #include "tamias2d/vec2.hpp"
 
@@ -61,7 +62,13 @@ struct BodyDef {
     double linear_damping = 0.0;
     /// \srs{DD18} s^-1, >= 0: viscous damping of the angular velocity, as linear_damping.
     double angular_damping = 0.0;
-    bool fixed_rotation = false; ///< no rotation: infinite moment of inertia
+    /// No rotation: infinite moment of inertia, and a dynamic body's angular velocity zero from
+    /// the start (DD39's angular lock, as World::set_fixed_rotation sets it).
+    bool fixed_rotation = false;
+    /// \srs{DD39} Motions held at zero velocity from the start (World::set_motion_locks):
+    /// linear_x, linear_y, and angular, which is fixed_rotation's lock (either one set locks
+    /// the rotation; World::definitions gives both). Act on a dynamic body.
+    MotionLocks motion_locks{};
     /// \srs{DD29} A fast dynamic body (a projectile) swept over each step against the other
     /// dynamic bodies too (at their end poses), not only against static shapes, so it cannot
     /// pass through a thin moving body. Costs a sweep per fast step; meant for a few bodies.
@@ -70,6 +77,13 @@ struct BodyDef {
     /// body that may not keeps every body touching it awake), and whether it starts awake.
     bool enable_sleep = true;
     bool awake = true; ///< starts awake (false: asleep, e.g. a stack built at rest)
+    /// m s^-1, finite and >= 0: the body rests (and may sleep) below this speed instead of
+    /// WorldDef::linear_sleep_tolerance (World::set_sleep_threshold). Unset: the world's.
+    std::optional<double> sleep_threshold{};
+    /// False: the body is made disabled (World::set_enabled): it keeps its definition but
+    /// takes no part in the world (no motion, contacts, sensor overlaps, queries or joint
+    /// solves) until enabled.
+    bool enabled = true;
     /// Whether the body's pose is reported after each step in which it moves
     /// (World::body_move_events), and the step in which it falls asleep. Off by default (the
     /// report costs a pass over the bodies per step while any body asks).

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "tamias2d/handles.hpp"
+#include "tamias2d/joint_kind.hpp"
 #include "tamias2d/user_data.hpp"
 #include "tamias2d/vec2.hpp"
 
@@ -45,6 +46,13 @@ struct RevoluteJointDef {
     bool enable_spring = false;
     double hertz = 0.0;         ///< Hz
     double damping_ratio = 0.0; ///< 1: critically damped
+    /// \srs{DD22} rad: the value the spring pulls the joint angle to
+    /// (World::set_joint_spring_target); 0, the default, is the pose at creation.
+    double spring_target = 0.0;
+    /// \srs{IM6} This joint's own soft bias in place of the world's (WorldDef::joint_hertz and
+    /// joint_damping_ratio; World::set_constraint_tuning): hertz > 0, damping ratio > 0. Unset:
+    /// the world's.
+    std::optional<ConstraintTuning> constraint_tuning{};
     /// N, >= 0: after a step in which the joint's reaction force exceeded this, the joint is
     /// reported (World::joint_events, threshold_exceeded) and kept. Infinite: never.
     double force_threshold = std::numeric_limits<double>::infinity();
@@ -84,6 +92,10 @@ struct DistanceJointDef {
     double max_motor_force = 0.0;   ///< N, >= 0
     bool collide_connected = false; ///< as RevoluteJointDef::collide_connected
     double break_force = std::numeric_limits<double>::infinity(); ///< N, > 0, as for revolute
+    /// \srs{IM6} This joint's own soft bias in place of the world's (WorldDef::joint_hertz and
+    /// joint_damping_ratio; World::set_constraint_tuning): hertz > 0, damping ratio > 0. Unset:
+    /// the world's.
+    std::optional<ConstraintTuning> constraint_tuning{};
     /// N, >= 0: after a step in which the joint's reaction force exceeded this, the joint is
     /// reported (World::joint_events, threshold_exceeded) and kept. Infinite: never.
     double force_threshold = std::numeric_limits<double>::infinity();
@@ -140,6 +152,13 @@ struct PrismaticJointDef {
     bool enable_spring = false;
     double hertz = 0.0;         ///< Hz
     double damping_ratio = 0.0; ///< 1: critically damped
+    /// \srs{DD22} m: the value the spring pulls the translation to
+    /// (World::set_joint_spring_target); 0, the default, is the pose at creation.
+    double spring_target = 0.0;
+    /// \srs{IM6} This joint's own soft bias in place of the world's (WorldDef::joint_hertz and
+    /// joint_damping_ratio; World::set_constraint_tuning): hertz > 0, damping ratio > 0. Unset:
+    /// the world's.
+    std::optional<ConstraintTuning> constraint_tuning{};
     /// N, >= 0: after a step in which the joint's reaction force exceeded this, the joint is
     /// reported (World::joint_events, threshold_exceeded) and kept. Infinite: never.
     double force_threshold = std::numeric_limits<double>::infinity();
@@ -166,6 +185,10 @@ struct WeldJointDef {
     bool collide_connected = false;     ///< as RevoluteJointDef::collide_connected
     double break_force = std::numeric_limits<double>::infinity();  ///< N, > 0, as for revolute
     double break_torque = std::numeric_limits<double>::infinity(); ///< N m, > 0, as for revolute
+    /// \srs{IM6} This joint's own soft bias in place of the world's (WorldDef::joint_hertz and
+    /// joint_damping_ratio; World::set_constraint_tuning): hertz > 0, damping ratio > 0. Unset:
+    /// the world's.
+    std::optional<ConstraintTuning> constraint_tuning{};
     /// N, >= 0: after a step in which the joint's reaction force exceeded this, the joint is
     /// reported (World::joint_events, threshold_exceeded) and kept. Infinite: never.
     double force_threshold = std::numeric_limits<double>::infinity();
@@ -192,6 +215,13 @@ struct WheelJointDef {
     bool enable_spring = true;
     double hertz = 1.0;         ///< Hz
     double damping_ratio = 0.7; ///< 1: critically damped
+    /// \srs{DD22} m: the value the spring pulls the suspension's translation to
+    /// (World::set_joint_spring_target); 0, the default, is the pose at creation.
+    double spring_target = 0.0;
+    /// \srs{IM6} This joint's own soft bias in place of the world's (WorldDef::joint_hertz and
+    /// joint_damping_ratio; World::set_constraint_tuning): hertz > 0, damping ratio > 0. Unset:
+    /// the world's.
+    std::optional<ConstraintTuning> constraint_tuning{};
     /// Limits of the suspension's travel (m), lower <= upper.
     bool enable_limit = false;
     double lower_translation = 0.0; ///< m

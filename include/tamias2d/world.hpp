@@ -774,6 +774,17 @@ class TAMIAS2D_EXPORT World {
     /// Bodies awake now (with sleeping off, every enabled body that is not static).
     std::size_t awake_body_count() const;
 
+    // --- definitions ---
+    // What a definition sets that a game may change later: the body's controls (BodyDef::
+    // enabled, motion_locks, sleep_threshold), the joints' (spring_target, constraint_tuning)
+    // and this setting of WorldDef.
+    /// \srs{IM7} WorldDef::enable_warm_starting, from the next step: off, each step's solve
+    /// starts from zero impulses (Box2D v3's b2World_EnableWarmStarting). On, the default, the
+    /// step is bit for bit what it was before the setting existed. Setting the value the world
+    /// has changes nothing. Throws nothing; wakes nothing.
+    void set_warm_starting(bool enabled);
+    bool warm_starting() const; ///< WorldDef::enable_warm_starting, as set
+
     /// A hash of the complete simulation state (bit patterns of every double): equal hashes
     /// mean bitwise-equal worlds. Used by the determinism and strong-guarantee tests.
     std::uint64_t state_hash() const;

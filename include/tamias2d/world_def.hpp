@@ -67,6 +67,14 @@ struct WorldDef {
     /// body whose core already overlaps a static shape at the step's start. Off: bodies move as
     /// the solver leaves them, and a fast one can tunnel.
     bool enable_continuous = true;
+    /// Warm starting (IM7): each contact and joint starts a substep's solve by applying the
+    /// impulses it accumulated in the last one, the last step's for the first substep (Box2D
+    /// v3's enableWarmStarting). Off, as Box2D v3 does it: each step starts from zero impulses
+    /// and no substep applies the last one's first, so a contact must build its impulse again
+    /// within each substep's single iteration: a stack sinks deeper into its supports and takes
+    /// longer to come to rest. For comparing solvers and finding a warm start's faults, not for
+    /// games. Changed at run time by World::set_warm_starting.
+    bool enable_warm_starting = true;
     /// Restitution (DD12) applies when the bodies approach faster than this (m s^-1).
     double restitution_threshold = 0.0;
     /// A touching pair is reported as a hit (World::contact_hit_events) when its bodies

@@ -148,6 +148,15 @@ void validate(const BodyDef& def) {
         validate_mass("body.mass", *def.mass);
     if (def.inertia)
         validate_inertia("body.inertia", *def.inertia);
+    if (def.sleep_threshold)
+        validate_sleep_threshold("body.sleep_threshold", *def.sleep_threshold);
+}
+
+void validate_sleep_threshold(std::string_view field, double speed) {
+    require_finite(field, speed);
+    if (!(speed >= 0.0))
+        throw ValidationError(std::string(field), speed, "must be >= 0", "DCX_finite");
+    require_within(field, speed, supported::input_max, "m s^-1");
 }
 
 void validate(const Material& material) {
@@ -336,6 +345,19 @@ void validate_axis(Vec2d axis) {
 }
 } // namespace
 
+namespace {
+/// The fields a joint's definition shares with its run-time setters (World::
+/// set_joint_spring_target, set_constraint_tuning), checked as those check them.
+template <class Def> void validate_definition_controls(const Def& def, const char* target_unit) {
+    if constexpr (requires { def.spring_target; })
+        require_within("joint.spring_target", def.spring_target, supported::input_max, target_unit);
+    if (def.constraint_tuning)
+        validate_constraint_tuning(
+            def.constraint_tuning->hertz, def.constraint_tuning->damping_ratio,
+            "joint.constraint_tuning.hertz", "joint.constraint_tuning.damping_ratio");
+}
+} // namespace
+
 void validate(const DistanceJointDef& def, const JointBody& a, const JointBody& b) {
     validate_joint_bodies(a, b, def.break_force);
     point("joint.anchor_a", def.anchor_a);
@@ -358,6 +380,7 @@ void validate(const DistanceJointDef& def, const JointBody& a, const JointBody& 
     if (std::isfinite(def.max_length)) // the limit multiplies its error: a finite one is bounded
         require_within("joint.max_length", def.max_length, supported::input_max, "m");
     validate_motor(def.motor_speed, "m s^-1", "joint.max_motor_force", def.max_motor_force);
+    validate_definition_controls(def, "m");
 }
 
 void validate(const TargetJointDef& def, const JointBody& body) {
@@ -403,6 +426,7 @@ void validate(const RevoluteJointDef& def, const JointBody& a, const JointBody& 
                     "rad");
     validate_motor(def.motor_speed, "rad s^-1", "joint.max_motor_torque", def.max_motor_torque);
     validate_spring(def.enable_spring, def.hertz, def.damping_ratio);
+    validate_definition_controls(def, "rad");
 }
 
 void validate(const PrismaticJointDef& def, const JointBody& a, const JointBody& b) {
@@ -414,6 +438,7 @@ void validate(const PrismaticJointDef& def, const JointBody& a, const JointBody&
                     def.upper_translation, "m");
     validate_motor(def.motor_speed, "m s^-1", "joint.max_motor_force", def.max_motor_force);
     validate_spring(def.enable_spring, def.hertz, def.damping_ratio);
+    validate_definition_controls(def, "m");
 }
 
 void validate(const WeldJointDef& def, const JointBody& a, const JointBody& b) {
@@ -426,6 +451,7 @@ void validate(const WeldJointDef& def, const JointBody& a, const JointBody& b) {
     non_negative("joint.angular_hertz", def.angular_hertz, "Hz");
     frequency("joint.angular_hertz", def.angular_hertz);
     non_negative("joint.angular_damping_ratio", def.angular_damping_ratio);
+    validate_definition_controls(def, "");
 }
 
 void validate(const WheelJointDef& def, const JointBody& a, const JointBody& b) {
@@ -437,6 +463,7 @@ void validate(const WheelJointDef& def, const JointBody& a, const JointBody& b) 
     validate_limits("joint.lower_translation", def.lower_translation, "joint.upper_translation",
                     def.upper_translation, "m");
     validate_motor(def.motor_speed, "rad s^-1", "joint.max_motor_torque", def.max_motor_torque);
+    validate_definition_controls(def, "m");
 }
 
 void validate(const MotorJointDef& def, const JointBody& a, const JointBody& b) {
@@ -579,16 +606,21 @@ void validate_rest_length(double length) {
 }
 
 void validate_constraint_tuning(double hertz, double damping_ratio) {
+    validate_constraint_tuning(hertz, damping_ratio, "joint.tuning_hertz",
+                               "joint.tuning_damping_ratio");
+}
+
+void validate_constraint_tuning(double hertz, double damping_ratio, const char* hertz_field,
+                                const char* ratio_field) {
     // As WorldDef::joint_hertz and joint_damping_ratio are checked (validate(WorldDef)).
     for (const auto& [field, v, unit] :
-         {std::tuple{"joint.tuning_hertz", hertz, "Hz"},
-          std::tuple{"joint.tuning_damping_ratio", damping_ratio, ""}}) {
+         {std::tuple{hertz_field, hertz, "Hz"}, std::tuple{ratio_field, damping_ratio, ""}}) {
         require_finite(field, v);
         if (!(v > 0.0))
             throw ValidationError(field, v, "must be > 0", "DCX_joint");
         require_within(field, v, supported::input_max, unit);
     }
-    frequency("joint.tuning_hertz", hertz);
+    frequency(hertz_field, hertz);
 }
 
 void validate_query_box(const Aabb& box, const std::string& name) {

@@ -128,6 +128,9 @@ void validate_rest_length(double length);
 /// DCX_joint: a joint's own soft bias, hertz and damping ratio > 0, as WorldDef::joint_hertz
 /// and joint_damping_ratio (named joint.tuning_hertz, joint.tuning_damping_ratio).
 void validate_constraint_tuning(double hertz, double damping_ratio);
+/// The same, naming the two fields as given (a definition's joint.constraint_tuning.hertz).
+void validate_constraint_tuning(double hertz, double damping_ratio, const char* hertz_field,
+                                const char* ratio_field);
 
 /// DCX_dt: the time step is finite and > 0; DCX_range: in [input_min, input_max] s.
 TAMIAS2D_EXPORT void validate_time_step(double dt);
@@ -135,6 +138,9 @@ TAMIAS2D_EXPORT void validate_time_step(double dt);
 TAMIAS2D_EXPORT void validate_mass(std::string_view field, double mass);
 /// DCI_I: a moment of inertia given is > 0 (the SRS's I >= 0 would divide by zero in IM2).
 TAMIAS2D_EXPORT void validate_inertia(std::string_view field, double inertia);
+/// A body's sleep threshold (m s^-1; BodyDef::sleep_threshold, World::set_sleep_threshold):
+/// finite, >= 0 and within the supported range.
+TAMIAS2D_EXPORT void validate_sleep_threshold(std::string_view field, double speed);
 /// DCX_damping: a damping rate is finite and >= 0 (a negative one would feed energy in).
 TAMIAS2D_EXPORT void validate_damping(std::string_view field, double rate);
 /// An event threshold (events.hpp): a number >= 0; a joint's (N or N m, `may_be_infinite`)

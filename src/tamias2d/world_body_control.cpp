@@ -197,10 +197,7 @@ void World::reset_mass_data(BodyId id) {
 void World::set_sleep_threshold(BodyId id, double speed) {
     Impl& w = *impl_;
     w.bodies.get(id); // handle check
-    require_finite("sleep_threshold", speed);
-    if (!(speed >= 0.0))
-        throw ValidationError("sleep_threshold", speed, "must be >= 0", "DCX_finite");
-    require_within("sleep_threshold", speed, supported::input_max, "m s^-1");
+    validate_sleep_threshold("sleep_threshold", speed);
     std::optional<double>& threshold = w.bodies.settings[id.index].sleep_threshold;
     if (same(threshold, speed))
         return;

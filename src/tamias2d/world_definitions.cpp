@@ -1,4 +1,5 @@
-// World::definitions: the definitions that build a world as it is now (io::scene_from_world).
+// World::definitions: the definitions that build a world as it is now (io::scene_from_world);
+// World::set_warm_starting: WorldDef::enable_warm_starting changed at run time.
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -78,10 +79,12 @@ JointDefinition definition_of(Joint j, BodyId a, BodyId b, const BodyStore& bodi
         const double angle = joint_angle_now(j, bodies); // (0 where it was made)
         j.lower_limit -= angle;
         j.upper_limit -= angle;
+        j.spring_target -= angle;
     } else if (!exact && (j.type == JointType::prismatic || j.type == JointType::wheel)) {
         const double translation = joint_translation_now(j, bodies);
         j.lower_limit -= translation;
         j.upper_limit -= translation;
+        j.spring_target -= translation;
     }
     // The fields every kind but the filter joint has (a target joint has no break force and
     // no break torque; distance joints no break torque).
@@ -91,6 +94,12 @@ JointDefinition definition_of(Joint j, BodyId a, BodyId b, const BodyStore& bodi
         d.break_force = j.break_force;
         d.force_threshold = j.force_threshold;
         d.torque_threshold = j.torque_threshold;
+        if constexpr (requires { d.spring_target; })
+            d.spring_target = j.spring_target;
+        if constexpr (requires { d.constraint_tuning; }) {
+            if (j.tuned)
+                d.constraint_tuning = ConstraintTuning{j.tuning_hertz, j.tuning_damping_ratio};
+        }
     };
     switch (j.type) {
     case JointType::revolute: {
@@ -219,6 +228,9 @@ WorldDefinitions World::definitions() const {
         d.def.linear_damping = set.linear_damping;
         d.def.angular_damping = set.angular_damping;
         d.def.fixed_rotation = set.fixed_rotation;
+        d.def.motion_locks = {set.lock_linear_x, set.lock_linear_y, set.fixed_rotation};
+        d.def.sleep_threshold = set.sleep_threshold;
+        d.def.enabled = !w.bodies.sleep_states[i].disabled;
         d.def.bullet = set.bullet;
         d.def.enable_sleep = w.bodies.sleep_states[i].enabled;
         d.def.awake = !w.def.enable_sleep || b.type == BodyType::static_body ||
@@ -239,6 +251,14 @@ WorldDefinitions World::definitions() const {
             definition_of(j, w.bodies.id(j.body_a), w.bodies.id(j.body_b), w.bodies));
     }
     return out;
+}
+
+void World::set_warm_starting(bool enabled) {
+    impl_->def.enable_warm_starting = enabled;
+}
+
+bool World::warm_starting() const {
+    return impl_->def.enable_warm_starting;
 }
 
 } // namespace tamias2d

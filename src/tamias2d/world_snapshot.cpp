@@ -62,6 +62,7 @@ template <class IO, class D> void world_def_fields(IO& io, D& d) {
     io("linear_sleep_tolerance", d.linear_sleep_tolerance);
     io("angular_sleep_tolerance", d.angular_sleep_tolerance);
     io("maximum_linear_speed", d.maximum_linear_speed);
+    io("enable_warm_starting", d.enable_warm_starting);
     io.user_data("user_data", d.user_data);
 }
 

@@ -76,7 +76,7 @@ struct Driver {
           queries(seed ^ 0x165667b19e3779f9u), events_stream(seed ^ 0x27d4eb2f165667c5u),
           area46(seed ^ 0x94d049bb133111ebu), body_world(seed ^ 0xbf58476d1ce4e5b9u),
           hooks(seed ^ 0xd6e8feb86659fd93u), world(make_def(r)),
-          control(seed ^ 0x5851f42d4c957f2du) {}
+          control(seed ^ 0x5851f42d4c957f2du), definitions_stream(seed ^ 0x2545f4914f6cdd1du) {}
 
     static WorldDef make_def(Rng& r) {
         WorldDef d;
@@ -929,6 +929,111 @@ struct Driver {
         }
     }
 
+    // --- definitions ---
+    /// Bodies and joints made with the definition fields the run-time controls also set
+    /// (BodyDef::enabled, motion_locks, sleep_threshold; spring_target, constraint_tuning) and
+    /// the warm-starting switch, drawn from a stream of their own (so that the main stream's
+    /// calls stay those the seeds of docs/verification.md replay). Values: in range mostly,
+    /// any double else.
+    Rng definitions_stream;
+    double definition_value(double lo, double hi) {
+        Rng& d = definitions_stream;
+        return d.chance(80) ? d.between(lo, hi) : any_double(d);
+    }
+    BodyId definitions_body() {
+        Rng& d = definitions_stream;
+        if (bodies.empty() || d.chance(5))
+            return BodyId{static_cast<std::uint32_t>(d.below(8)), 0};
+        return bodies[d.below(bodies.size())];
+    }
+    void definitions_call() {
+        Rng& d = definitions_stream;
+        switch (d.below(4)) {
+        case 0: {
+            BodyDef def;
+            def.type = static_cast<BodyType>(d.below(3));
+            def.position = {definition_value(-20.0, 20.0), definition_value(0.0, 20.0)};
+            def.linear_velocity = {definition_value(-5.0, 5.0), definition_value(-5.0, 5.0)};
+            def.enabled = d.chance(70);
+            def.motion_locks = {d.chance(30), d.chance(30), d.chance(30)};
+            if (d.chance(50))
+                def.sleep_threshold = definition_value(0.0, 1.0);
+            last << "create_body(definitions: type " << static_cast<int>(def.type) << ", enabled "
+                 << def.enabled << ", locks " << def.motion_locks.linear_x
+                 << def.motion_locks.linear_y << def.motion_locks.angular << ", sleep_threshold "
+                 << def.sleep_threshold.value_or(-1) << ")";
+            bodies.push_back(world.create_body(def));
+            break;
+        }
+        case 1:
+        case 2: {
+            const BodyId a = definitions_body(), b = definitions_body();
+            const Vec2d anchor{definition_value(-5.0, 5.0), definition_value(0.0, 10.0)};
+            std::optional<ConstraintTuning> tuning;
+            if (d.chance(60))
+                tuning = ConstraintTuning{definition_value(1.0, 120.0), definition_value(0.1, 5.0)};
+            const double target = definition_value(-2.0, 2.0);
+            last << "create_joint(definitions: " << str(a) << ", " << str(b) << ", target "
+                 << target << ", tuning " << (tuning ? tuning->hertz : -1.0) << " "
+                 << (tuning ? tuning->damping_ratio : -1.0) << ", kind ";
+            switch (d.below(5)) {
+            case 0: {
+                RevoluteJointDef j{.body_a = a, .body_b = b, .anchor = anchor};
+                j.enable_spring = d.chance(50);
+                j.hertz = 2.0;
+                j.spring_target = target;
+                j.constraint_tuning = tuning;
+                last << "revolute)";
+                joints.push_back(world.create_joint(j));
+                break;
+            }
+            case 1: {
+                PrismaticJointDef j{.body_a = a, .body_b = b, .anchor = anchor};
+                j.enable_spring = d.chance(50);
+                j.hertz = 2.0;
+                j.spring_target = target;
+                j.constraint_tuning = tuning;
+                last << "prismatic)";
+                joints.push_back(world.create_joint(j));
+                break;
+            }
+            case 2: {
+                WheelJointDef j{.body_a = a, .body_b = b, .anchor = anchor};
+                j.spring_target = target;
+                j.constraint_tuning = tuning;
+                last << "wheel)";
+                joints.push_back(world.create_joint(j));
+                break;
+            }
+            case 3: {
+                DistanceJointDef j{.body_a = a,
+                                   .body_b = b,
+                                   .anchor_a = anchor,
+                                   .anchor_b = {anchor.x + 1.0, anchor.y}};
+                j.constraint_tuning = tuning;
+                last << "distance)";
+                joints.push_back(world.create_joint(j));
+                break;
+            }
+            default: {
+                WeldJointDef j{.body_a = a, .body_b = b, .anchor = anchor};
+                j.constraint_tuning = tuning;
+                last << "weld)";
+                joints.push_back(world.create_joint(j));
+                break;
+            }
+            }
+            break;
+        }
+        default: {
+            const bool on = d.chance(60);
+            last << "set_warm_starting(" << on << ")";
+            world.set_warm_starting(on);
+            break;
+        }
+        }
+    }
+
     // --- contact_hooks ---
     // A shape's user material id, the mixing functions (valid rules, and values no friction or
     // restitution is: refused when a contact meets them, removed at once when none does, so
@@ -1018,6 +1123,10 @@ struct Driver {
         }
         if (hooks.chance(6)) {
             contact_hooks_call();
+            return;
+        }
+        if (definitions_stream.chance(6)) {
+            definitions_call();
             return;
         }
         switch (r.below(24)) {

@@ -94,6 +94,7 @@ std::uint32_t BodyStore::create(const BodyDef& def, bool sleeping) {
     const bool movable = def.type != BodyType::static_body;
     sleep_states[i] = {0.0, movable && (def.awake || !sleeping), def.enable_sleep, movable};
     loaded_bodies += def.load ? 1 : 0;
+    create_controls(i, def);
     return i;
 }
 
@@ -476,6 +477,25 @@ void BodyStore::update_mass_keeping_motion(std::uint32_t i, ShapeStore& shapes) 
         b.w = 0.0;
     if (b.type == BodyType::dynamic)
         b.v = bridge::locked_velocity(b.v, settings[i].lock_linear_x, settings[i].lock_linear_y);
+}
+
+// --- definitions: the run-time controls a BodyDef sets at creation ---
+
+/// \srs{DD39} A body made with the controls its definition asks for, as World's setters would
+/// set them on it: the rotation locked by either fixed_rotation or motion_locks.angular (a
+/// dynamic body's angular velocity zero from the start), the linear locks (a locked velocity
+/// component zero from the start), its own sleep threshold,
+/// and disabled if the definition says so (neither awake nor movable until enabled).
+void BodyStore::create_controls(std::uint32_t i, const BodyDef& def) {
+    BodySettings& set = settings[i];
+    set.fixed_rotation = def.fixed_rotation || def.motion_locks.angular;
+    if (set.fixed_rotation && def.type == BodyType::dynamic)
+        bodies[i].w = 0.0; // a locked motion is held at zero velocity, as set_motion_locks does
+    if (def.motion_locks.linear_x || def.motion_locks.linear_y)
+        set_linear_locks(i, def.motion_locks.linear_x, def.motion_locks.linear_y);
+    set.sleep_threshold = def.sleep_threshold;
+    if (!def.enabled)
+        set_disabled(i, true);
 }
 
 } // namespace tamias2d

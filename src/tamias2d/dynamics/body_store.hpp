@@ -145,6 +145,10 @@ struct BodyStore {
     /// with the body's rigid motion (DD41: it keeps the velocity it had as a point of the
     /// body), the angular velocity stays (zero if the rotation is now locked).
     void update_mass_keeping_motion(std::uint32_t i, ShapeStore& shapes);
+    // --- definitions ---
+    /// At creation (create): body i's motion locks, sleep threshold and enabled state as its
+    /// definition sets them (World::set_motion_locks, set_sleep_threshold, set_enabled).
+    void create_controls(std::uint32_t i, const BodyDef& def);
 };
 
 } // namespace tamias2d

@@ -457,6 +457,13 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
     const double dt = step.dt;
     const double h = step.h;
     std::vector<Joint>& joints = joint_store.joints;
+    // Warm starting off (Box2D v3's enableWarmStarting): the step starts from zero impulses,
+    // and no substep starts from the impulses of the one before.
+    const bool warm = def.enable_warm_starting;
+    if (!warm) {
+        contacts.forget_warm_starts();
+        joint_store.forget_warm_starts();
+    }
     // IM6: the joints' soft bias, capped like the contacts' at a quarter of the substep rate.
     const Softness joint_softness = make_joint_softness(
         capped_joint_frequency(def.joint_hertz, n, dt), def.joint_damping_ratio, h);
@@ -492,7 +499,7 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
     // joints come before the contacts in every stage, as the later substeps have them.
     integrate_velocities(h, tasks);
     for (const Joint& j : joints) {
-        if (solved(j))
+        if (warm && solved(j))
             warm_start_joint(j, solver_bodies_);
     }
     const std::size_t pack_count = wide_solver_.order().size();
@@ -507,9 +514,10 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
                           std::min(pack_count, std::size_t(last) * pack_block), false);
         };
         tasks.for_each_block(blocks_of(pack_count, pack_block), run);
-        contact_pass(tasks, streams, nullptr, false);
+        if (warm)
+            contact_pass(tasks, streams, nullptr, false);
     } else {
-        prepare_packs(contacts, 0, pack_count, true);
+        prepare_packs(contacts, 0, pack_count, warm);
     }
 
     ContactSolverSettings st;
@@ -526,10 +534,11 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
         if (sub > 0) { // the first substep's were done with the preparation
             integrate_velocities(h, tasks);
             for (const Joint& j : joints) {
-                if (solved(j))
+                if (warm && solved(j))
                     warm_start_joint(j, solver_bodies_);
             }
-            contact_pass(tasks, streams, nullptr, false);
+            if (warm)
+                contact_pass(tasks, streams, nullptr, false);
         }
         for (Joint& j : joints) {
             if (solved(j))

@@ -22,8 +22,8 @@ struct FieldRule {
     /// The library's own check of the value, run on it as read and reported at its key
     /// (validation.hpp); none if null.
     void (*check)(std::string_view field, double value) = nullptr;
-    /// Left out of the written form when the member has its default value (an empty name, no
-    /// bullet), so scenes without it are written as before it existed.
+    /// Left out of the written form when the member has its default value (BodyDef{}'s: an
+    /// empty name, no bullet, enabled), so scenes without it are written as before it existed.
     bool omit_default = false;
 };
 
@@ -45,6 +45,7 @@ template <class W, class V> void world_fields(W& w, V&& v) {
     v("linear_sleep_tolerance", w.linear_sleep_tolerance);
     v("angular_sleep_tolerance", w.angular_sleep_tolerance);
     v("enable_continuous", w.enable_continuous);
+    v("enable_warm_starting", w.enable_warm_starting);
 }
 
 /// A body's keys that are BodyDef's fields ("velocity" is its linear_velocity), in the order
@@ -64,9 +65,14 @@ template <class D, class V> void body_fields(D& d, V&& v) {
     v("linear_damping", d.linear_damping, FieldRule{&validate_damping}); // DCX_damping
     v("angular_damping", d.angular_damping, FieldRule{&validate_damping});
     v("fixed_rotation", d.fixed_rotation, FieldRule{});
+    v("lock_linear_x", d.motion_locks.linear_x, FieldRule{nullptr, true}); // DD39
+    v("lock_linear_y", d.motion_locks.linear_y, FieldRule{nullptr, true});
+    v("lock_angular", d.motion_locks.angular, FieldRule{nullptr, true});
     v("bullet", d.bullet, FieldRule{nullptr, true}); // DD29
     v("enable_sleep", d.enable_sleep, FieldRule{});
     v("awake", d.awake, FieldRule{});
+    v("sleep_threshold", d.sleep_threshold, FieldRule{&validate_sleep_threshold});
+    v("enabled", d.enabled, FieldRule{nullptr, true});
     v("force", d.force, FieldRule{});   // DCI_F
     v("torque", d.torque, FieldRule{}); // DCI_tau
 }
@@ -85,6 +91,7 @@ template <class V> void joint_fields(RevoluteJointDef& d, V&& v) {
     v("enable_spring", d.enable_spring, false);
     v("hertz", d.hertz, false);
     v("damping_ratio", d.damping_ratio, false);
+    v("spring_target", d.spring_target, false);
 }
 template <class V> void joint_fields(DistanceJointDef& d, V&& v) {
     v("anchor_a", d.anchor_a, true);
@@ -111,6 +118,7 @@ template <class V> void joint_fields(PrismaticJointDef& d, V&& v) {
     v("enable_spring", d.enable_spring, false);
     v("hertz", d.hertz, false);
     v("damping_ratio", d.damping_ratio, false);
+    v("spring_target", d.spring_target, false);
 }
 template <class V> void joint_fields(WeldJointDef& d, V&& v) {
     v("anchor", d.anchor, true);
@@ -125,6 +133,7 @@ template <class V> void joint_fields(WheelJointDef& d, V&& v) {
     v("enable_spring", d.enable_spring, false);
     v("hertz", d.hertz, false);
     v("damping_ratio", d.damping_ratio, false);
+    v("spring_target", d.spring_target, false);
     v("enable_limit", d.enable_limit, false);
     v("lower_translation", d.lower_translation, false);
     v("upper_translation", d.upper_translation, false);
@@ -141,13 +150,16 @@ template <class V> void joint_fields(MotorJointDef& d, V&& v) {
 }
 /// A filter joint has no field beyond its bodies (it never collides them and never breaks).
 template <class V> void all_joint_fields(FilterJointDef&, V&&) {}
-/// The fields every two-body joint has, and a break torque (DD36) where the kind carries one.
+/// The fields every two-body joint has, and a break torque (DD36) and a constraint tuning where
+/// the kind carries one.
 template <class Def, class V> void all_joint_fields(Def& d, V&& v) {
     joint_fields(d, v);
     v("collide_connected", d.collide_connected, false);
     v("break_force", d.break_force, false);
     if constexpr (requires { d.break_torque; })
         v("break_torque", d.break_torque, false);
+    if constexpr (requires { d.constraint_tuning; }) // IM6: the joint's own soft bias
+        v("constraint_tuning", d.constraint_tuning, false);
 }
 
 /// The "type" names, in SceneJoint::Definition's order.

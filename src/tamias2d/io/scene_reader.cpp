@@ -41,7 +41,13 @@ void read_field(const Ctx& ctx, const ojson& v, const std::string& at, const std
         member = as_bool(ctx, v, at, field);
     else if constexpr (std::is_same_v<T, int>)
         member = static_cast<int>(as_integer(ctx, v, at, field, INT_MIN, INT_MAX));
-    else
+    else if constexpr (std::is_same_v<T, std::optional<ConstraintTuning>>) {
+        // {"hertz": ..., "damping_ratio": ...}, both required (checked by the library).
+        require_object(ctx, v, at, field, "an object {\"hertz\", \"damping_ratio\"}");
+        check_keys(ctx, v, at, {"hertz", "damping_ratio"}, field);
+        member = ConstraintTuning{req_number(ctx, v, at, "hertz", field),
+                                  req_number(ctx, v, at, "damping_ratio", field)};
+    } else
         member = as_number(ctx, v, at, field); // double, std::optional<double>
 }
 

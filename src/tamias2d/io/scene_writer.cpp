@@ -4,6 +4,7 @@
 #include <optional>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -143,15 +144,32 @@ ojson shapes_json(const std::vector<ShapeDef>& shapes, std::size_t& chain_budget
 
 /// A body entry: its definition's keys (the body field table), its loads and its shapes.
 ojson body_json(const SceneBody& b, std::size_t& chain_budget) {
+    // The default of each flag the table leaves out when it has it (BodyDef{}'s), by key.
+    std::vector<std::pair<std::string_view, bool>> default_flags;
+    BodyDef defaults;
+    scene_detail::body_fields(
+        defaults, [&](std::string_view key, const auto& member, scene_detail::FieldRule) {
+            if constexpr (std::is_same_v<std::remove_cvref_t<decltype(member)>, bool>)
+                default_flags.emplace_back(key, member);
+        });
+    const auto default_flag = [&](std::string_view key) {
+        for (const auto& [k, value] : default_flags)
+            if (k == key)
+                return value;
+        return false;
+    };
     ojson o = ojson::object();
     scene_detail::body_fields(
-        b.def, [&o](std::string_view key, const auto& member, scene_detail::FieldRule rule) {
+        b.def, [&](std::string_view key, const auto& member, scene_detail::FieldRule rule) {
             using T = std::remove_cvref_t<decltype(member)>;
             if constexpr (std::is_same_v<T, std::optional<double>>) {
                 if (member)
                     o[std::string(key)] = *member;
-            } else if constexpr (std::is_same_v<T, std::string> || std::is_same_v<T, bool>) {
-                if (!(rule.omit_default && member == T{}))
+            } else if constexpr (std::is_same_v<T, std::string>) {
+                if (!(rule.omit_default && member.empty()))
+                    o[std::string(key)] = member;
+            } else if constexpr (std::is_same_v<T, bool>) {
+                if (!(rule.omit_default && member == default_flag(key)))
                     o[std::string(key)] = member;
             } else {
                 o[std::string(key)] = field_json(member);
@@ -187,6 +205,10 @@ ojson joint_json(const SceneJoint& sj) {
                 else if constexpr (std::is_same_v<T, std::optional<double>>) {
                     if (member)
                         o[std::string(key)] = *member;
+                } else if constexpr (std::is_same_v<T, std::optional<ConstraintTuning>>) {
+                    if (member)
+                        o[std::string(key)] = {{"hertz", member->hertz},
+                                               {"damping_ratio", member->damping_ratio}};
                 } else if constexpr (std::is_same_v<T, bool>)
                     o[std::string(key)] = member;
                 else if (std::isfinite(member)) // infinite (no bound): the default

@@ -1,8 +1,10 @@
 // libFuzzer target: the input bytes drive a sequence of World calls (bodies of every type,
 // circles, boxes, polygons, capsules, segments and chains, every joint kind but the target,
 // velocities, transforms, damping, forces, torques, impulses, gravity, filters, sleep, motors,
-// queries, ray casts and steps) whose arguments are any doubles (NaN, infinities, denormals, 1e308,
-// any bit pattern), and whose handles are live, destroyed, stale, forged, null or a second world's.
+// queries, ray casts and steps, and the run-time control of bodies, shapes, joints and the
+// world's settings, user data, event readings and filtered queries) whose arguments are any doubles
+// (NaN, infinities, denormals, 1e308, any bit pattern), and whose handles are live, destroyed,
+// stale, forged, null or a second world's.
 //
 // Oracle: the library's stated promises (docs/user-guide.md, "Errors" and "Handles"): no crash
 // and no sanitizer report; a refusal is a ValidationError (non-empty field and message), an
@@ -24,6 +26,7 @@
 #include "fuzz/libfuzzer/byte_source.hpp"
 #include "fuzz/libfuzzer/promise.hpp"
 #include "tamias2d/errors.hpp"
+#include "tamias2d/tamias2d.hpp"
 #include "tamias2d/world.hpp"
 
 using namespace tamias2d;
@@ -125,6 +128,11 @@ struct Session {
             d.fixed_rotation = in.flag();
             d.bullet = in.flag();
             d.awake = in.flag();
+            // The run-time controls' fields (BodyDef::enabled, motion_locks, sleep_threshold).
+            d.enabled = !in.flag();
+            d.motion_locks = {in.flag(), in.flag(), in.flag()};
+            if (in.flag())
+                d.sleep_threshold = in.real();
         }
         return d;
     }
@@ -342,10 +350,279 @@ struct Session {
         (void)world.joint_translation(j);
     }
 
+    // --- run-time control ---
+    // The calls that change a body, shape, joint or the world's settings after creation, read
+    // events and run the filtered queries: each with any double, handle or flag.
+    Vec2d any_point() { return in.flag() ? in.point() : in.vec(); }
+
+    void body_control() {
+        const BodyId b = body();
+        switch (in.below(12)) {
+        case 0:
+            world.set_body_type(b, static_cast<BodyType>(in.byte() % 4u)); // 3: out of range
+            break;
+        case 1:
+            world.set_enabled(b, in.flag());
+            break;
+        case 2:
+            world.set_gravity_scale(b, in.real());
+            break;
+        case 3:
+            world.set_bullet(b, in.flag());
+            break;
+        case 4:
+            world.set_motion_locks(b, MotionLocks{in.flag(), in.flag(), in.flag()});
+            break;
+        case 5: {
+            const double m = in.real();
+            const Vec2d c = any_point();
+            world.set_mass_data(b, BodyMassData{m, c, in.real()});
+            break;
+        }
+        case 6:
+            world.reset_mass_data(b);
+            break;
+        case 7:
+            world.set_sleep_threshold(b, in.real());
+            break;
+        case 8:
+            world.wake_touching(b);
+            break;
+        case 9:
+            world.set_move_events_enabled(b, in.flag());
+            break;
+        case 10:
+            world.set_user_data(b, static_cast<UserData>(in.word()));
+            break;
+        default:
+            (void)world.body_aabb(b);
+            (void)world.joints(b);
+            (void)world.contacts(b);
+            (void)world.mass_data(b);
+            break;
+        }
+    }
+
+    void shape_control() {
+        const ShapeId s = shape();
+        switch (in.below(12)) {
+        case 0:
+            world.set_friction(s, in.real());
+            break;
+        case 1:
+            world.set_restitution(s, in.real());
+            break;
+        case 2:
+            world.set_density(s, in.real(), in.flag());
+            break;
+        case 3: {
+            const Vec2d c = any_point();
+            world.set_circle(s, Circle{c, in.size()});
+            break;
+        }
+        case 4: {
+            const Vec2d a = any_point();
+            const Vec2d b = any_point();
+            world.set_capsule(s, Capsule{a, b, in.size()});
+            break;
+        }
+        case 5: {
+            const std::vector<Vec2d> pts = points(max_polygon_vertices);
+            world.set_polygon(s, polygon_shape(pts).geometry.polygon);
+            break;
+        }
+        case 6: {
+            const Vec2d a = any_point();
+            world.set_segment(s, Segment{a, any_point()});
+            break;
+        }
+        case 7:
+            world.set_sensor(s, in.flag());
+            break;
+        case 8:
+            world.set_hit_events_enabled(s, in.flag());
+            break;
+        case 9:
+            world.set_contact_events_enabled(s, in.flag());
+            break;
+        case 10:
+            world.set_sensor_events_enabled(s, in.flag());
+            break;
+        default:
+            (void)world.body(s);
+            (void)world.shape_aabb(s);
+            (void)world.geometry(s);
+            (void)world.sensor_overlaps(s); // WrongKind for a solid shape
+            break;
+        }
+    }
+
+    void joint_control() {
+        const JointId j = joint();
+        switch (in.below(16)) {
+        case 0:
+            world.enable_joint_limit(j, in.flag());
+            break;
+        case 1: {
+            const double lower = in.real();
+            world.set_joint_limits(j, lower, in.real());
+            break;
+        }
+        case 2:
+            world.enable_joint_motor(j, in.flag());
+            break;
+        case 3:
+            world.set_joint_max_motor_torque(j, in.real());
+            break;
+        case 4:
+            world.set_joint_max_motor_force(j, in.real());
+            break;
+        case 5:
+            world.enable_joint_spring(j, in.flag());
+            break;
+        case 6: {
+            const double hertz = in.real();
+            world.set_joint_spring(j, hertz, in.real());
+            break;
+        }
+        case 7:
+            world.set_joint_spring_target(j, in.real());
+            break;
+        case 8:
+            world.set_distance_joint_length(j, in.real());
+            break;
+        case 9: {
+            const double hertz = in.real();
+            world.set_constraint_tuning(j, hertz, in.real());
+            break;
+        }
+        case 10:
+            world.set_joint_collide_connected(j, in.flag());
+            break;
+        case 11:
+            world.set_joint_break_force(j, in.real());
+            break;
+        case 12:
+            world.set_joint_break_torque(j, in.real());
+            break;
+        case 13: {
+            const double force = in.real();
+            world.set_joint_event_thresholds(j, force, in.real());
+            break;
+        }
+        case 14:
+            world.set_joint_target(j, any_point());
+            break;
+        default:
+            (void)world.joint_kind(j);
+            (void)world.joint_body_a(j);
+            (void)world.joint_limits(j);
+            (void)world.constraint_tuning(j);
+            break;
+        }
+    }
+
+    void settings_control() {
+        switch (in.below(10)) {
+        case 0:
+            world.set_continuous(in.flag());
+            break;
+        case 1:
+            world.set_sleeping(in.flag());
+            break;
+        case 2: {
+            const double hertz = in.real();
+            const double ratio = in.real();
+            world.set_contact_tuning(hertz, ratio, in.real());
+            break;
+        }
+        case 3: {
+            const double hertz = in.real();
+            world.set_joint_tuning(hertz, in.real());
+            break;
+        }
+        case 4:
+            world.set_restitution_threshold(in.real());
+            break;
+        case 5:
+            world.set_maximum_linear_speed(in.real());
+            break;
+        case 6:
+            world.set_warm_starting(in.flag());
+            break;
+        case 7:
+            world.set_hit_event_threshold(in.real());
+            break;
+        case 8:
+            world.set_user_data(static_cast<UserData>(in.word()));
+            break;
+        default:
+            (void)world.contact_hit_events();
+            (void)world.body_move_events();
+            (void)world.joint_events();
+            (void)world.contacts();
+            (void)world.awake_body_count();
+            break;
+        }
+    }
+
+    void filtered_query() {
+        QueryFilter f;
+        if (in.flag()) {
+            f.category_bits = in.word();
+            f.mask_bits = in.word();
+        }
+        const Vec2d o = any_point();
+        const Vec2d d = any_point();
+        switch (in.below(5)) {
+        case 0:
+            (void)world.ray_cast_all(o, d, f);
+            break;
+        case 1:
+            (void)world.ray_cast_any(o, d, f);
+            break;
+        case 2:
+            (void)world.overlap_shape(circle_shape(in.size()).geometry, o, in.real(), f);
+            break;
+        case 3:
+            (void)world.shape_cast(box_shape(in.size(), in.size()).geometry, o, in.real(), d, f);
+            break;
+        default:
+            (void)world.closest_point(shape(), o);
+            (void)world.distance(shape(), shape());
+            break;
+        }
+    }
+
+    /// One run-time control call (an op above 31).
+    void control() {
+        switch (in.below(5)) {
+        case 0:
+            body_control();
+            break;
+        case 1:
+            shape_control();
+            break;
+        case 2:
+            joint_control();
+            break;
+        case 3:
+            settings_control();
+            break;
+        default:
+            filtered_query();
+            break;
+        }
+    }
+
     /// One call, chosen by the next byte; throws what the library throws. Returns the time
     /// step when the call was a step, else 0.
     double call() {
-        op = in.byte() % 32;
+        op = in.byte() % 44;
+        if (op >= 32) { // the run-time control calls
+            control();
+            return 0.0;
+        }
         switch (op) {
         case 0:
         case 1:

@@ -739,4 +739,11 @@ std::uint8_t ContactManager::pre_solved(std::uint32_t i, std::uint8_t r, const B
     return std::uint8_t(was ? Narrowed::changed : Narrowed::same);
 }
 
+// --- definitions ---
+
+void ContactManager::forget_warm_starts() {
+    for (std::size_t i = 0; i < warm_impulses_.size(); ++i)
+        warm_impulses_[i] = ContactImpulses{};
+}
+
 } // namespace tamias2d

@@ -176,6 +176,10 @@ class ContactManager {
     /// woken.
     void remix(const ShapeStore& shapes, BodyStore& bodies, MaterialMixFunction friction,
                MaterialMixFunction restitution);
+    // --- definitions (WorldDef::enable_warm_starting) ---
+    /// Zeroes every contact's accumulated impulses, so that the step's solve starts from none
+    /// (warm starting off).
+    void forget_warm_starts();
 
   private:
     /// Contact i, touching after its narrow phase (`r`), handed to the pre-solve callback: a

@@ -24,6 +24,7 @@ Joint make_joint(const DistanceJointDef& def, const Body& a, const Body& b) {
     j.max_motor = def.max_motor_force;
     j.collide_connected = def.collide_connected;
     j.break_force = def.break_force;
+    take_definition_controls(j, def);
     return j;
 }
 

@@ -398,4 +398,15 @@ void JointStore::clear_impulses(std::uint32_t i) {
     }
 }
 
+// --- definitions ---
+
+void JointStore::forget_warm_starts() {
+    for (Joint& j : joints) {
+        JointStepState& st = j.step;
+        st.linear_impulse = {};
+        st.axial_impulse = st.motor_impulse = st.lower_impulse = st.upper_impulse = 0.0;
+        st.spring_impulse = st.angular_impulse = st.perp_impulse = 0.0;
+    }
+}
+
 } // namespace tamias2d

@@ -131,6 +131,10 @@ class JointStore {
     /// joint that stops being solved must not keep the last ones, to break with or to warm
     /// start from when it is solved again.
     void clear_impulses(std::uint32_t i);
+    // --- definitions (WorldDef::enable_warm_starting) ---
+    /// Zeroes every joint's impulses, so that the step's solve starts from none (warm
+    /// starting off).
+    void forget_warm_starts();
 
   private:
     std::vector<std::vector<std::uint32_t>> by_body_; ///< per body index: its joints

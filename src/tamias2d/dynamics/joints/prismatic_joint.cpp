@@ -21,6 +21,7 @@ Joint make_joint(const PrismaticJointDef& def, const Body& a, const Body& b) {
     j.enable_spring = def.enable_spring;
     j.hertz = def.hertz;
     j.damping_ratio = def.damping_ratio;
+    take_definition_controls(j, def);
     return j;
 }
 

@@ -19,6 +19,7 @@ Joint make_joint(const RevoluteJointDef& def, const Body& a, const Body& b) {
     j.hertz = def.hertz;
     j.damping_ratio = def.damping_ratio;
     j.break_torque = def.break_torque;
+    take_definition_controls(j, def);
     return j;
 }
 

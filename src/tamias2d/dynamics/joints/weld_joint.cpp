@@ -14,6 +14,7 @@ Joint make_joint(const WeldJointDef& def, const Body& a, const Body& b) {
     j.angular_hertz = def.angular_hertz;
     j.angular_damping_ratio = def.angular_damping_ratio;
     j.break_torque = def.break_torque;
+    take_definition_controls(j, def);
     return j;
 }
 

@@ -21,6 +21,7 @@ Joint make_joint(const WheelJointDef& def, const Body& a, const Body& b) {
     j.motor_speed = def.motor_speed;
     j.max_motor = def.max_motor_torque;
     j.break_torque = def.break_torque;
+    take_definition_controls(j, def);
     return j;
 }
 
