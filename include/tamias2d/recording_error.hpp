@@ -19,6 +19,7 @@ struct TAMIAS2D_EXPORT RecordingError : std::invalid_argument {
     std::string field;  ///< the field, e.g. "header.magic" or "records[3].body.position"
     std::string rule;   ///< what it breaks
 
+    /// The error at byte `offset_` of field `field_`, which breaks `rule_`.
     RecordingError(std::size_t offset_, std::string field_, std::string rule_);
 };
 

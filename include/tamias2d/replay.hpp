@@ -48,6 +48,7 @@ struct ReplayReport {
     std::uint64_t calls = 0;          ///< calls replayed, steps included
     std::uint64_t recorded_steps = 0; ///< steps in the recording
     std::optional<ReplayDivergence> divergence; ///< none: every step matched bit for bit
+    /// Whether every step matched (no divergence).
     bool matched() const { return !divergence.has_value(); }
 };
 
@@ -71,8 +72,8 @@ class TAMIAS2D_EXPORT Replayer {
     explicit Replayer(std::span<const std::byte> recording, int workers = 1,
                       const TaskSystem& task_system = {});
     ~Replayer();
-    Replayer(Replayer&&) noexcept;
-    Replayer& operator=(Replayer&&) noexcept;
+    Replayer(Replayer&&) noexcept;            ///< takes over the replay and its world
+    Replayer& operator=(Replayer&&) noexcept; ///< takes over the replay and its world
 
     /// The replayed world (read it between advances; changing it makes the replay diverge).
     const World& world() const;
