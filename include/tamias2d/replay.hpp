@@ -67,8 +67,9 @@ class TAMIAS2D_EXPORT Replayer {
     /// Reads the recording whole (every record must be readable) and builds its world, stepping
     /// with `workers` workers and `task_system` (the host's: the results are the same bits on
     /// any number). Throws RecordingError for a recording that is not one, of another format
-    /// version, truncated, changed or unreadable; SnapshotError for its snapshot (as
-    /// World::from_snapshot); ValidationError for workers < 1.
+    /// version, truncated, changed or unreadable, and for a snapshot in it that
+    /// World::from_snapshot refuses (the field named "snapshot.<field>", at its offset in the
+    /// recording); ValidationError for workers < 1.
     explicit Replayer(std::span<const std::byte> recording, int workers = 1,
                       const TaskSystem& task_system = {});
     ~Replayer();

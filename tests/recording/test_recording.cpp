@@ -394,6 +394,17 @@ BOOST_AUTO_TEST_CASE(a_defective_recording_is_refused, *utf::label("reliability"
     b[walk(good)[0].offset - 5] = std::byte{250};
     fix_checksum(b);
     refused_at(b, "records[0]");
+    b = good; // a byte of the embedded snapshot changed, the recording's checksum made right:
+    // the snapshot's own checksum refuses it (at offset 44: the header, flags, snapshot size)
+    b[44 + 40] ^= std::byte{0x01};
+    fix_checksum(b);
+    try {
+        Replayer r(b);
+        BOOST_ERROR("a recording with a changed snapshot was accepted");
+    } catch (const RecordingError& e) {
+        BOOST_TEST(e.field.rfind("snapshot.", 0) == 0u, e.what());
+        BOOST_TEST(e.offset >= 44u, e.what());
+    }
     b = good; // a record's size pointing past the end
     b[walk(good)[0].offset - 4] = std::byte{0xFF};
     b[walk(good)[0].offset - 3] = std::byte{0xFF};
