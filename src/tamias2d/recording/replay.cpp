@@ -5,8 +5,8 @@
 #include "tamias2d/replay.hpp"
 
 #include <array>
-#include <bit>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 #include <string>
 #include <tuple>
@@ -268,8 +268,9 @@ struct Replayer::Impl {
                 const Body& b = w.bodies.bodies[index];
                 const double now[6] = {b.center.x, b.center.y, b.angle, b.v.x, b.v.y, b.w};
                 for (int f = 0; f < 6; ++f) {
-                    const std::uint64_t rb = std::bit_cast<std::uint64_t>(fields[f]);
-                    const std::uint64_t pb = std::bit_cast<std::uint64_t>(now[f]);
+                    std::uint64_t rb = 0, pb = 0; // (no std::bit_cast in the WebAssembly libc++)
+                    std::memcpy(&rb, &fields[f], sizeof rb);
+                    std::memcpy(&pb, &now[f], sizeof pb);
                     if (rb != pb)
                         return ReplayDivergence{
                             steps,
