@@ -100,8 +100,10 @@ if ((determinism_tests)); then
     # Boost.Test as a header (no Boost library for WebAssembly): its implementation in one
     # object, the test in another, both rebuilt only when older than their sources.
     test_flags=("${flags[@]}" -I"$root/tests" -DTAMIAS_EXAMPLE_SCENES="\"$root/examples/scenes\""
-                -DTAMIAS_GOLDEN_HASHES="\"$root/tests/determinism/golden_hashes.txt\"")
-    for s in tests/determinism/test_golden_hashes.cpp .ci/cross/boost_test_main.cpp; do
+                -DTAMIAS_GOLDEN_HASHES="\"$root/tests/determinism/golden_hashes.txt\""
+                -DTAMIAS_RECORDINGS="\"$root/tests/determinism/recordings\"")
+    for s in tests/determinism/test_golden_hashes.cpp tests/determinism/test_recordings.cpp \
+             .ci/cross/boost_test_main.cpp; do
         o="$out/test_$(basename "${s%.cpp}").o"
         if [ ! -f "$o" ] || [ -n "$(find "$s" include src -newer "$o" -name '*.[ch]pp' -print -quit)" ]; then
             echo "em++ $s"
@@ -113,7 +115,7 @@ if ((determinism_tests)); then
     # node's exit status is the test's; WASM_ASYNC_COMPILATION=0: the .wasm is read from disk
     # (emscripten 3.1.6 would fetch() it, by a path, in a node that has fetch).
     nice -n 5 em++ "${flags[@]}" $library_objects "$out/test_test_golden_hashes.o" \
-        "$out/test_boost_test_main.o" -o "$out/determinism_tests.js" -sENVIRONMENT=node \
+        "$out/test_test_recordings.o" "$out/test_boost_test_main.o" -o "$out/determinism_tests.js" -sENVIRONMENT=node \
         -sNODERAWFS=1 -sALLOW_MEMORY_GROWTH=1 -sEXIT_RUNTIME=1 -sWASM_ASYNC_COMPILATION=0
     echo "build_wasm: $out/determinism_tests.js (run it with node)"
 fi

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The libFuzzer targets (tests/fuzz/libfuzzer): builds them with Clang 14 (ASan + UBSan) in
-# build-fuzz/ and runs them two at a time (scene and api, then snapshot: the machine's two
-# cores), each for the given time, from the seed corpus, the
+# build-fuzz/ and runs them two at a time (scene and api, then snapshot and recording: the
+# machine's two cores), each for the given time, from the seed corpus, the
 # regression corpus and what earlier runs kept (build-fuzz/corpus/<target>).
 #   scripts/fuzz.sh                  60 s per target (CI's run)
 #   scripts/fuzz.sh --minutes 30     the long run
@@ -37,15 +37,20 @@ cmake -S . -B "$build" -G Ninja -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_BUILD_TYPE=F
       -DCMAKE_CXX_FLAGS="-O1 -g" -DTAMIAS_WERROR=ON -DTAMIAS_FUZZ_TARGETS=ON \
       -DTAMIAS_BUILD_TESTS=OFF -DTAMIAS_BUILD_VERIFICATION=OFF -DTAMIAS_BUILD_APPS=OFF \
       -DTAMIAS_INSTALL=OFF >/dev/null &&
-    cmake --build "$build" -j2 --target tamias_fuzz_scene tamias_fuzz_api tamias_fuzz_snapshot >/dev/null ||
+    cmake --build "$build" -j2 --target tamias_fuzz_scene tamias_fuzz_api tamias_fuzz_snapshot \
+        tamias_fuzz_recording >/dev/null ||
     { echo "fuzz: the targets did not build"; exit 2; }
 
 start="$build/run-start"; touch "$start"
-for t in scene api snapshot; do
+for t in scene api snapshot recording; do
     mkdir -p "$build/corpus/$t" "$build/findings/$t"
     if [ $t = scene ]; then
         # Scene files: the example scenes are seeds too; the largest is about 5 kB.
         opts=(-dict="$dir/scene.dict" -max_len=8192 examples/scenes)
+    elif [ $t = recording ]; then
+        # Recordings of example scenes (corpus/recording, up to 31 kB), some with calls made
+        # mid-run, first byte 1: the checksum made right, so that changes reach the records.
+        opts=(-max_len=65536)
     elif [ $t = snapshot ]; then
         # Snapshots of example scenes (corpus/snapshot, up to 27 kB), first byte 1: the
         # checksum made right, so that changes reach the sections' reader.
@@ -71,7 +76,7 @@ done
 wait
 
 rows=""; found=0
-for t in scene api snapshot; do
+for t in scene api snapshot recording; do
     log="$build/fuzz-$t.log"
     execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
     rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log" | tail -1)
@@ -103,7 +108,8 @@ from traceability.builds import tree_key
 out, commit, dirty, built = sys.argv[1], sys.argv[2], sys.argv[3] == "true", sys.argv[4]
 what = {"scene": "scene files through io::parse_scene, io::build_world and a few steps",
         "api": "sequences of World calls with any doubles and live, stale, forged and foreign handles",
-        "snapshot": "snapshots through World::from_snapshot, World::restore and a few steps"}
+        "snapshot": "snapshots through World::from_snapshot, World::restore and a few steps",
+        "recording": "recordings through Replayer, recorded_calls and up to 40 replayed records"}
 rows, checks = [], []
 for line in os.environ["ROWS"].splitlines():
     t, secs, execs, rate, cov, ft, corp, n, files = (line.split(" ") + [""])[:9]

@@ -6,6 +6,8 @@
 //   tamias2d view <scene.json | -> [--steps N] [--every K] [-o FILE] [--workers N]
 //                (view_command.cpp)
 //   tamias2d draw <scene.json | -> [--steps N] [--out FILE.svg] [...] (draw_command.cpp)
+//   tamias2d record <scene.json | -> -o FILE [--steps N] [...] (record_command.cpp)
+//   tamias2d replay <FILE> [--workers N] (record_command.cpp)
 //   tamias2d info
 //   tamias2d help [COMMAND] | --help | --version
 //
@@ -30,6 +32,7 @@
 #include <nlohmann/json.hpp>
 
 #include "draw_command.hpp"
+#include "record_command.hpp"
 #include "tamias2d/build_info.hpp"
 #include "tamias2d/errors.hpp"
 #include "tamias2d/io/scene.hpp"
@@ -44,9 +47,12 @@ constexpr const char* usage = R"(Usage:
   tamias2d run <scene.json | -> [--steps N] [--every K] [--format csv|json] [-o FILE]
                [--workers N]
   tamias2d validate <scene.json | ->
-  tamias2d view <scene.json | -> [--steps N] [--every K] [-o FILE.html] [--workers N]
+  tamias2d view <scene.json | recording | -> [--steps N] [--every K] [-o FILE.html]
+               [--workers N]
   tamias2d draw <scene.json | -> [--steps N] [--out FILE.svg] [--contacts] [--aabbs]
                [--centers] [--no-joints] [--bounds X0,Y0,X1,Y1] [--width PX] [--workers N]
+  tamias2d record <scene.json | -> -o FILE [--steps N] [--no-body-states] [--workers N]
+  tamias2d replay <FILE> [--workers N]
   tamias2d info
   tamias2d help [COMMAND]
   tamias2d --help | --version
@@ -54,14 +60,20 @@ constexpr const char* usage = R"(Usage:
 Commands:
   run        Simulate a scene and write the bodies' states (SI units).
   validate   Parse and check a scene without running it; print a one-line summary.
-  view       Simulate a scene and write a self-contained HTML page that plays the run.
+  view       Simulate a scene (or replay a recording) and write a self-contained HTML page
+             that plays the run.
   draw       Simulate a scene and draw its last state as an SVG picture (World::draw).
+  record     Simulate a scene and write the run as a recording (snapshot, calls, per-step
+             state hashes and body states).
+  replay     Replay a recording and check every step bit for bit; name the first step, body
+             and field that differ (exit status 3).
   info       Print the version, the solver's instruction set on this machine and the build.
   help       Print this text, or a command's own (also: tamias2d COMMAND --help).
 
 A scene file of "-" is read from standard input.
 
-Exit status: 0 on success, 1 for an invalid scene or a failed run, 2 for a bad command line.
+Exit status: 0 on success, 1 for an invalid scene or a failed run, 2 for a bad command line,
+3 when a replay departs from its recording.
 Errors are one line on standard error: "tamias2d: error: <file>: <place>: <what is wrong>".
 The scene format is described in docs/scene-format.md.
 )";
@@ -119,6 +131,10 @@ const char* usage_of(std::string_view command) {
         return cli::view_usage;
     if (command == "draw")
         return cli::draw_usage;
+    if (command == "record")
+        return cli::record_usage;
+    if (command == "replay")
+        return cli::replay_usage;
     return nullptr;
 }
 
@@ -155,7 +171,7 @@ Options parse_args(const std::vector<std::string_view>& args) {
             throw UsageError("help takes at most one command");
         if (args.size() == 2 && usage_of(args[1]) == nullptr)
             throw UsageError("no help for '" + std::string(args[1]) +
-                             "' (commands: run, validate, view, draw, info)");
+                             "' (commands: run, validate, view, draw, record, replay, info)");
         o.help = true;
         o.command = args.size() == 2 ? std::string(args[1]) : std::string{};
         return o;
@@ -407,6 +423,10 @@ int main(int argc, char** argv) {
             return cli::view_command(std::span(args).subspan(1), {load, display_name});
         if (!args.empty() && args[0] == "draw") // its own options (draw_command.cpp)
             return cli::draw_command(std::span(args).subspan(1), {load, display_name});
+        if (!args.empty() && args[0] == "record") // its own options (record_command.cpp)
+            return cli::record_command(std::span(args).subspan(1), {load, display_name});
+        if (!args.empty() && args[0] == "replay")
+            return cli::replay_command(std::span(args).subspan(1));
         return run(parse_args(args));
     } catch (const UsageError& e) {
         std::cerr << "tamias2d: error: " << one_line(e.what()) << " (see tamias2d --help)\n";

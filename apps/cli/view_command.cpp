@@ -1,6 +1,7 @@
 // `tamias2d view`: the options, the run (the schedule of `tamias2d run`) and the output file.
 #include "view_command.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <filesystem>
 #include <fstream>
@@ -9,12 +10,15 @@
 #include <system_error>
 #include <vector>
 
+#include "record_command.hpp"
+#include "tamias2d/io/scene_from_world.hpp"
+#include "tamias2d/replay.hpp"
 #include "tamias2d/world.hpp"
 #include "view_html.hpp"
 
 namespace tamias2d::cli {
 
-const char* const view_usage = R"(Usage: tamias2d view <scene.json | -> [options]
+const char* const view_usage = R"(Usage: tamias2d view <scene.json | recording | -> [options]
 
 Simulate the scene as 'run' does and write one self-contained HTML page (no network, no
 server, no other file) that plays the run back in a browser: the bodies' shapes, their states
@@ -23,8 +27,14 @@ DD16) as a plot. The page has play/pause, step, a scrub bar, speed, zoom (wheel)
 (drag), toggles for contacts, AABBs, velocities, trails and joints, and shows the state of the
 body under the cursor in SI units. A scene file of "-" is read from standard input.
 
+A recording ('tamias2d record', a program's Recorder: a file starting "T2D-RECD") is replayed
+instead, checked step by step as 'tamias2d replay' checks it, and its states are played: the
+bodies it has when recording begins, with their shapes then (a body destroyed later ends the
+page there: view the steps before it with --steps). A replay that departs from its recording
+fails.
+
 Options:
-  --steps N           number of steps (default: the scene's "steps")
+  --steps N           number of steps (default: the scene's "steps", a recording's steps)
   --every K           record a frame every K >= 1 steps, plus the initial and the final state
                       (default: the scene's "output_every", or 1 when it is 0); --every 1
                       plays smoothly, a larger K makes a smaller file
@@ -109,6 +119,73 @@ ViewOptions parse(std::span<const std::string_view> args) {
     return o;
 }
 
+/// The output stream: the file (opened before the run, so that a wrong path fails at once) or
+/// standard output; `run` writes to it, and the file is removed again when the run fails.
+template <class Run> void write_output(const std::string& output, Run&& run) {
+    std::ofstream file;
+    if (!output.empty()) {
+        file.open(output, std::ios::binary | std::ios::trunc);
+        if (!file)
+            throw std::runtime_error("cannot write '" + output + "'");
+    }
+    std::ostream& out = output.empty() ? std::cout : file;
+    try {
+        run(out);
+        out.flush();
+        if (!out)
+            throw std::runtime_error("writing the output failed");
+    } catch (...) {
+        if (!output.empty()) {
+            file.close();
+            std::error_code ec;
+            std::filesystem::remove(output, ec);
+        }
+        throw;
+    }
+}
+
+/// `view` of a recording: its world replayed (Replayer), checked at every step, and its states
+/// played for the bodies it has when recording begins (the scene of that world,
+/// io::scene_from_world, gives their shapes and joints).
+int view_recording(const ViewOptions& o, const std::string& name) {
+    Replayer replayer(read_file(o.scene), o.workers.value_or(1));
+    const World& world = replayer.world();
+    const io::Scene scene = io::scene_from_world(world);
+    const std::vector<BodyId> ids = world.bodies();
+    const int recorded = int(replayer.recorded_steps());
+    const int steps = o.steps ? std::min(*o.steps, recorded) : recorded;
+    const int every = o.every.value_or(1);
+    const long long frames = 1LL + steps / every + (steps % every != 0 ? 1 : 0);
+    if (frames > max_frames || frames * static_cast<long long>(ids.size()) > max_body_frames)
+        throw std::runtime_error(name + ": " + std::to_string(frames) + " frames of " +
+                                 std::to_string(ids.size()) +
+                                 " bodies are more than the player holds: use a larger --every "
+                                 "or fewer --steps");
+    write_output(o.output, [&](std::ostream& out) {
+        const std::string title = std::filesystem::path(name).stem().string();
+        Recording recording(scene, world, ids,
+                            {.title = title, .every = every, .max_contact_points = o.max_contacts});
+        recording.add_frame(0, world);
+        for (int step = 1; step <= steps; ++step) {
+            if (const auto d = replayer.advance())
+                throw std::runtime_error(name +
+                                         ": the replay departs from the recording: " + d->message);
+            for (const BodyId id : ids)
+                if (!world.is_valid(id))
+                    throw std::runtime_error(
+                        name + ": step " + std::to_string(step) + ": body " +
+                        std::to_string(id.index) +
+                        " was destroyed; the page plays the bodies of the first frame: view the "
+                        "steps before it with --steps " +
+                        std::to_string(step - 1));
+            if (step % every == 0 || step == steps)
+                recording.add_frame(step, world);
+        }
+        recording.write_html(out);
+    });
+    return 0;
+}
+
 } // namespace
 
 int view_command(std::span<const std::string_view> args, const SceneSource& source) {
@@ -117,6 +194,8 @@ int view_command(std::span<const std::string_view> args, const SceneSource& sour
         std::cout << view_usage;
         return 0;
     }
+    if (o.scene != "-" && is_recording_file(o.scene))
+        return view_recording(o, source.display_name(o.scene));
     const io::Scene scene = source.load(o.scene);
     // The schedule of `run --every K`: frame 0, every K steps, and the final step, so that
     // the page's frames are the rows `run` writes with the same options.

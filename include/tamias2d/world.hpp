@@ -789,6 +789,15 @@ class TAMIAS2D_EXPORT World {
     /// mean bitwise-equal worlds. Used by the determinism and strong-guarantee tests.
     std::uint64_t state_hash() const;
 
+    // --- recording ---
+    // A Recorder (recorder.hpp) records a world's calls and a Replayer (replay.hpp) plays them
+    // back: World has no call of its own for it, so that a world not recorded pays nothing. They
+    // read the engine's state (the bodies' exact angles, whether a function is installed)
+    // through this internal access.
+    /// \cond INTERNAL
+    friend struct RecordingAccess;
+    /// \endcond
+
     /// \cond INTERNAL
     struct Impl; // the engine's state (src/tamias2d/world.cpp): not part of the API
                  /// \endcond

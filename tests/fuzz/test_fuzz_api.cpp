@@ -32,6 +32,8 @@
 
 #include "fuzz/fuzz_support.hpp"
 #include "tamias2d/errors.hpp"
+#include "tamias2d/recorder.hpp"
+#include "tamias2d/replay.hpp"
 #include "tamias2d/world.hpp"
 
 namespace utf = boost::unit_test;
@@ -76,7 +78,8 @@ struct Driver {
           queries(seed ^ 0x165667b19e3779f9u), events_stream(seed ^ 0x27d4eb2f165667c5u),
           area46(seed ^ 0x94d049bb133111ebu), body_world(seed ^ 0xbf58476d1ce4e5b9u),
           hooks(seed ^ 0xd6e8feb86659fd93u), world(make_def(r)),
-          control(seed ^ 0x5851f42d4c957f2du), definitions_stream(seed ^ 0x2545f4914f6cdd1du) {}
+          control(seed ^ 0x5851f42d4c957f2du), definitions_stream(seed ^ 0x2545f4914f6cdd1du),
+          recording_stream(seed ^ 0x9fb21c651e98df25u) {}
 
     static WorldDef make_def(Rng& r) {
         WorldDef d;
@@ -1104,8 +1107,54 @@ struct Driver {
         }
     }
 
+    // --- recording ---
+    // Before every call, now and then, a copy of the world (World::from_snapshot: no functions,
+    // so a Recorder takes it) recorded through a Recorder for a few impulses and steps drawn
+    // from a stream of its own, then replayed: every step must match bit for bit, and a call
+    // the copy refuses must leave its state_hash() and the recording unchanged. The world itself
+    // is not touched.
+    Rng recording_stream;
+    void recording_block() {
+        if (!recording_stream.chance(2))
+            return;
+        try {
+            World copy = World::from_snapshot(world.snapshot());
+            Recorder rec(copy);
+            const std::vector<BodyId> ids = copy.bodies();
+            for (int k = 0; k < 4; ++k) {
+                const std::uint64_t hash = copy.state_hash();
+                const std::vector<std::byte> before = rec.bytes();
+                try {
+                    if (!ids.empty() && recording_stream.chance(40)) {
+                        const BodyId b = ids[recording_stream.below(ids.size())];
+                        const Vec2d j{recording_stream.chance(80) ? recording_stream.between(-2, 2)
+                                                                  : any_double(recording_stream),
+                                      recording_stream.between(-2, 2)};
+                        rec.apply_impulse(b, j, copy.origin(b));
+                    } else {
+                        rec.step(recording_stream.chance(90) ? 1.0 / 60.0
+                                                             : any_double(recording_stream));
+                    }
+                } catch (const std::exception& e) {
+                    if (copy.state_hash() != hash || rec.bytes() != before)
+                        BOOST_ERROR("recording (before " << last.str() << "): a refused call ("
+                                                         << e.what()
+                                                         << ") changed the copy or its recording");
+                }
+            }
+            const ReplayReport report = replay(rec.bytes());
+            if (!report.matched())
+                BOOST_ERROR("recording (before "
+                            << last.str() << "): replay departs: " << report.divergence->message);
+        } catch (const std::exception& e) {
+            BOOST_ERROR("recording (before " << last.str() << "): " << e.what());
+        }
+    }
+
+    recording_block();
     /// One random call; throws what the library throws.
     void call() {
+        recording_block();
         query_block();
         last.str("");
         last.precision(17);

@@ -75,7 +75,11 @@ class SnapshotWriter {
     /// The number of records that follow.
     void count(const char*, std::size_t n) { u64(n); }
 
-    void operator()(const char*, double v) { u64(std::bit_cast<std::uint64_t>(v)); }
+    void operator()(const char*, double v) {
+        std::uint64_t bits = 0;
+        std::memcpy(&bits, &v, sizeof bits); // (no std::bit_cast in the WebAssembly libc++)
+        u64(bits);
+    }
     void operator()(const char*, bool v) { u8(v ? 1 : 0); }
     void operator()(const char*, std::uint8_t v) { u8(v); }
     void operator()(const char*, std::int8_t v) { u8(std::uint8_t(v)); }
@@ -217,7 +221,10 @@ class SnapshotReader {
         return std::size_t(n);
     }
 
-    void operator()(const char* f, double& v) { v = std::bit_cast<double>(le(f, 8)); }
+    void operator()(const char* f, double& v) {
+        const std::uint64_t bits = le(f, 8);
+        std::memcpy(&v, &bits, sizeof v); // (no std::bit_cast in the WebAssembly libc++)
+    }
     void operator()(const char* f, bool& v) {
         const std::size_t at = offset();
         const std::uint8_t b = u8(f);
