@@ -233,6 +233,10 @@ class TAMIAS2D_EXPORT Recorder {
     void set_maximum_linear_speed(double speed);
     /// World::set_workers, recorded.
     void set_workers(int workers);
+    /// World::set_warm_starting, recorded.
+    void set_warm_starting(bool enabled);
+    /// World::set_user_material, recorded.
+    void set_user_material(ShapeId shape, std::uint64_t id);
 
     /// \cond INTERNAL
     struct Impl; // the recording's state (src/tamias2d/recording/recorder.cpp)

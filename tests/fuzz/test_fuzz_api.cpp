@@ -1151,7 +1151,6 @@ struct Driver {
         }
     }
 
-    recording_block();
     /// One random call; throws what the library throws.
     void call() {
         recording_block();

@@ -235,6 +235,10 @@ BOOST_AUTO_TEST_CASE(every_recorded_call_replays_with_the_same_bits, *utf::label
     rec.set_restitution_threshold(0.5);
     rec.set_maximum_linear_speed(100.0);
     rec.set_workers(2);
+    rec.set_warm_starting(false);
+    rec.step(dt);
+    rec.set_warm_starting(true);
+    rec.set_user_material(s[1], 7);
     for (int k = 0; k < 5; ++k)
         rec.step(dt);
     // Destruction, then the state of step 10 again.
@@ -480,6 +484,63 @@ BOOST_AUTO_TEST_CASE(recording_changes_no_bit, *utf::label("determinism")) {
         rec.step(0.01);
         BOOST_TEST(plain.state_hash() == recorded.state_hash());
     }
+}
+
+// Oracle: the recorded state hash and body states of every step. Definitions whose every
+// optional field is set (a disabled body, motion locks, a sleep threshold, a user material id,
+// a joint's spring target and own tuning) replay as made: a field the codec left at its
+// default would change the replayed world's hash at the first step.
+BOOST_AUTO_TEST_CASE(every_definition_field_replays, *utf::label("determinism")) {
+    World world;
+    Recorder rec(world);
+    BodyDef sd;
+    sd.type = BodyType::static_body;
+    const BodyId ground = rec.create_body(sd);
+    rec.create_shape(ground, box_shape(40.0, 1.0));
+    BodyDef a = dynamic_at({-2.0, 2.0});
+    a.motion_locks = {true, false, false};
+    a.sleep_threshold = 0.2;
+    BodyDef b = dynamic_at({2.0, 2.0});
+    b.motion_locks = {false, false, true};
+    BodyDef off = dynamic_at({6.0, 2.0});
+    off.enabled = false;
+    const BodyId ba = rec.create_body(a);
+    const BodyId bb = rec.create_body(b);
+    rec.create_body(off);
+    ShapeDef shape = box_shape(0.8, 0.8);
+    shape.material.user_material_id = 42;
+    rec.create_shape(ba, shape);
+    rec.create_shape(bb, circle_shape(0.4));
+    RevoluteJointDef rj{.body_a = ba, .body_b = bb, .anchor = {0.0, 2.0}};
+    rj.enable_spring = true;
+    rj.hertz = 2.0;
+    rj.damping_ratio = 0.5;
+    rj.spring_target = 0.3;
+    rj.constraint_tuning = ConstraintTuning{40.0, 2.0};
+    rec.create_joint(rj);
+    for (int k = 0; k < 30; ++k)
+        rec.step(1.0 / 60.0);
+    const ReplayReport r = replay(rec.bytes());
+    BOOST_TEST(r.matched(), (r.divergence ? r.divergence->message : ""));
+    BOOST_TEST(r.steps == 30u);
+}
+
+// Oracle: the documented refusal: callbacks cannot be recorded.
+BOOST_AUTO_TEST_CASE(hook_functions_are_refused, *utf::label("reliability")) {
+    World pre;
+    pre.set_pre_solve([](const PreSolveContact&) { return true; });
+    BOOST_CHECK_EXCEPTION(Recorder{pre}, ValidationError,
+                          [](const ValidationError& e) { return e.field == "world.pre_solve"; });
+    World mixed;
+    mixed.set_friction_mixing([](double x, std::uint64_t, double, std::uint64_t) { return x; });
+    BOOST_CHECK_EXCEPTION(Recorder{mixed}, ValidationError, [](const ValidationError& e) {
+        return e.field == "world.friction_mixing";
+    });
+    World bouncy;
+    bouncy.set_restitution_mixing([](double x, std::uint64_t, double, std::uint64_t) { return x; });
+    BOOST_CHECK_EXCEPTION(Recorder{bouncy}, ValidationError, [](const ValidationError& e) {
+        return e.field == "world.restitution_mixing";
+    });
 }
 
 BOOST_AUTO_TEST_SUITE_END()

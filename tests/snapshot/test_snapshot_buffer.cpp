@@ -35,7 +35,7 @@ BOOST_AUTO_TEST_CASE(a_reused_vector_gets_the_same_bytes, *utf::label("reliabili
     BOOST_TEST((reused == small_bytes));
     std::vector<std::byte> junk = large_bytes;
     junk.insert(junk.end(), large_bytes.begin(), large_bytes.end()); // other bytes, then ...
-    junk.resize(5);                                                   // ... spare capacity
+    junk.resize(5);                                                  // ... spare capacity
     large.snapshot(junk); // spare capacity holding other bytes
     BOOST_TEST((junk == large_bytes));
     // What was read back from a reused vector is a snapshot of the world.

@@ -57,6 +57,18 @@ class SnapshotWriter {
         if (n > buffer_.size())
             buffer_.resize(n);
     }
+    /// The number of bytes written.
+    std::size_t size() const { return used_; }
+    /// The bytes written so far (valid until the next write).
+    std::span<std::byte> written() { return std::span(buffer_).first(used_); }
+    std::span<const std::byte> written() const { return std::span(buffer_).first(used_); }
+    /// Bytes as they are (a snapshot inside a recording).
+    void append(std::span<const std::byte> b) {
+        if (buffer_.size() - used_ < b.size())
+            grow(b.size());
+        std::copy(b.begin(), b.end(), buffer_.begin() + std::ptrdiff_t(used_));
+        used_ += b.size();
+    }
     /// The bytes written, handed over; the writer is empty after it.
     std::vector<std::byte> finish() {
         buffer_.resize(used_);

@@ -503,8 +503,7 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
             warm_start_joint(j, solver_bodies_);
     }
     const std::size_t pack_count = wide_solver_.order().size();
-    constexpr std::size_t pack_block = 32;   // ~10 us of lane filling and preparation
-    constexpr std::size_t store_block = 128; // ~10 us of stores
+    constexpr std::size_t pack_block = 32; // ~10 us of lane filling and preparation
     if (streams > 1 || (tasks.parallel() && pack_count > pack_block)) {
         // Preparation reads only the bodies' inverse masses, which the warm start leaves alone,
         // so the packs may be prepared in any order, and warm started after them in solve
@@ -529,7 +528,6 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
     st.push_max_velocity = def.contact_push_max_velocity;
     st.restitution_threshold = def.restitution_threshold;
 
-    const std::size_t nb = solver_bodies_.size();
     for (int sub = 0; sub < n; ++sub) {
         if (sub > 0) { // the first substep's were done with the preparation
             integrate_velocities(h, tasks);
@@ -556,20 +554,35 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
     }
     // A joint's solve can diverge where no input rule foresaw it (conflicting joints on light
     // bodies): checked before any impulse is stored, so that the world can refuse the step.
+    if (find_divergence())
+        return;
+    store_impulses(contacts, tasks, bounce_count, st);
+    // The velocities the step leaves keep the locks and the limit too (DD39, DD40).
+    constrain_velocities(def.maximum_linear_speed, tasks);
+}
+
+bool StepSolver::find_divergence() {
     // Contacts alone have not been seen to diverge, and worlds without joints skip the pass.
     diverged_ = null_index;
-    if (!jointed_.empty()) {
-        for (std::size_t k = 1; k < nb; ++k) {
-            const SolverBody& sb = solver_bodies_[k];
-            // (A finite state beyond the supported one is the next step's DCX_range refusal.)
-            if (std::isfinite(sb.v.x) && std::isfinite(sb.v.y) && std::isfinite(sb.w) &&
-                std::isfinite(sb.dp.x) && std::isfinite(sb.dp.y) && std::isfinite(sb.dq))
-                continue;
-            const auto at = std::find(solver_index_.begin(), solver_index_.end(), k);
-            diverged_ = std::uint32_t(at - solver_index_.begin());
-            return;
-        }
+    if (jointed_.empty())
+        return false;
+    for (std::size_t k = 1; k < solver_bodies_.size(); ++k) {
+        const SolverBody& sb = solver_bodies_[k];
+        // (A finite state beyond the supported one is the next step's DCX_range refusal.)
+        if (std::isfinite(sb.v.x) && std::isfinite(sb.v.y) && std::isfinite(sb.w) &&
+            std::isfinite(sb.dp.x) && std::isfinite(sb.dp.y) && std::isfinite(sb.dq))
+            continue;
+        const auto at = std::find(solver_index_.begin(), solver_index_.end(), k);
+        diverged_ = std::uint32_t(at - solver_index_.begin());
+        return true;
     }
+    return false;
+}
+
+void StepSolver::store_impulses(ContactManager& contacts, const StepTasks& tasks,
+                                std::uint32_t bounce_count, const ContactSolverSettings& st) {
+    constexpr std::size_t store_block = 128; // ~10 us of stores
+    const std::size_t pack_count = wide_solver_.order().size();
     const std::span<ContactConstraint> bouncers(bouncing_.data(), bounce_count);
     const ContactManager::ImpulseRecords records = contacts.impulse_records();
     if (tasks.parallel() && pack_count > store_block) {
@@ -590,8 +603,6 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
         for (int j = 0; j < b.count; ++j)
             records.totals[b.contact].normal[j] = b.points[j].total_normal_impulse;
     }
-    // The velocities the step leaves keep the locks and the limit too (DD39, DD40).
-    constrain_velocities(def.maximum_linear_speed, tasks);
 }
 
 void StepSolver::constrain_velocities(double max_speed, const StepTasks& tasks) {

@@ -92,6 +92,14 @@ class StepSolver {
     /// the packs in their stored order on the calling thread.
     void contact_pass(const StepTasks& tasks, std::uint32_t streams,
                       const ContactSolverSettings* settings, bool use_bias);
+    /// A solver body whose velocity or displacement is not finite after the iterations: its
+    /// body's index in diverged_ (true), else null_index (false).
+    bool find_divergence();
+    /// The packs' impulses stored into the contacts (warm starts and totals), then the
+    /// restitution pass over the `bounce_count` manifolds that can bounce, whose normal totals
+    /// it writes.
+    void store_impulses(ContactManager& contacts, const StepTasks& tasks,
+                        std::uint32_t bounce_count, const ContactSolverSettings& st);
     /// The joints' body rotations after a position half (Joint::q_a, q_b).
     void turn_joints(std::vector<Joint>& joints);
     /// DD39 and DD40 before a position half (and at the step's end): the locked velocity

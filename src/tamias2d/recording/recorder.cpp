@@ -44,16 +44,17 @@ struct Recorder::Impl {
     /// The record's size in its place; room for it in the payload, so that appending it once
     /// the world has accepted the call cannot fail.
     void prepare(SnapshotWriter& w, std::size_t more = 0) {
-        const std::size_t size = w.bytes.size() + more - recording::record_head;
+        const std::size_t size = w.size() + more - recording::record_head;
         if (size > std::numeric_limits<std::uint32_t>::max())
             throw std::length_error("Recorder: a call's arguments exceed 4 GiB");
         for (int k = 0; k < 4; ++k)
-            w.bytes[std::size_t(1 + k)] = std::byte(size >> (8 * k));
-        payload.reserve(payload.size() + w.bytes.size() + more);
-        w.bytes.reserve(w.bytes.size() + more);
+            w.written()[std::size_t(1 + k)] = std::byte(size >> (8 * k));
+        payload.reserve(payload.size() + w.size() + more);
+        w.reserve(w.size() + more);
     }
     void commit(const SnapshotWriter& w) {
-        payload.insert(payload.end(), w.bytes.begin(), w.bytes.end());
+        const std::span<const std::byte> b = w.written();
+        payload.insert(payload.end(), b.begin(), b.end());
         ++calls;
     }
 };
@@ -88,8 +89,8 @@ Recorder::Recorder(World& world, RecordOptions options)
     SnapshotWriter w;
     w.u32(options.body_states ? recording::flag_body_states : 0);
     w.u64(snapshot.size());
-    w.bytes.insert(w.bytes.end(), snapshot.begin(), snapshot.end());
-    impl_->payload = std::move(w.bytes);
+    w.append(snapshot);
+    impl_->payload = w.finish();
 }
 Recorder::~Recorder() = default;
 Recorder::Recorder(Recorder&&) noexcept = default;
@@ -107,16 +108,16 @@ std::uint64_t Recorder::calls() const {
 
 std::vector<std::byte> Recorder::bytes() const {
     SnapshotWriter w;
-    w.bytes.reserve(recording::header_size + impl_->payload.size());
+    w.reserve(recording::header_size + impl_->payload.size());
     for (const char c : recording::magic)
         w.u8(std::uint8_t(c));
     w.u32(format_version);
     w.u32(recording::library_version_code);
     w.u64(impl_->payload.size());
-    const std::uint64_t sum = fnv1a_64(impl_->payload, fnv1a_64(w.bytes));
+    const std::uint64_t sum = recording::fnv1a_64(impl_->payload, recording::fnv1a_64(w.written()));
     w.u64(sum);
-    w.bytes.insert(w.bytes.end(), impl_->payload.begin(), impl_->payload.end());
-    return std::move(w.bytes);
+    w.append(impl_->payload);
+    return w.finish();
 }
 
 void Recorder::step(double dt) {
@@ -350,6 +351,12 @@ void Recorder::reset_mass_data(BodyId body) {
 }
 void Recorder::set_sleep_threshold(BodyId body, double speed) {
     record<Call::set_sleep_threshold>(*impl_, body, speed);
+}
+void Recorder::set_warm_starting(bool enabled) {
+    record<Call::set_warm_starting>(*impl_, enabled);
+}
+void Recorder::set_user_material(ShapeId shape, std::uint64_t id) {
+    record<Call::set_user_material>(*impl_, shape, id);
 }
 void Recorder::wake_touching(BodyId body) {
     record<Call::wake_touching>(*impl_, body);

@@ -37,6 +37,19 @@ struct RecordingAccess {
 namespace recording {
 
 inline constexpr char magic[8] = {'T', '2', 'D', '-', 'R', 'E', 'C', 'D'};
+
+/// FNV-1a, 64 bits (offset basis 0xcbf29ce484222325, prime 0x100000001b3), over `bytes`,
+/// continuing from `h`: a recording's checksum, over its header before the checksum and then
+/// its payload. (A recording is written once, at the end; a snapshot, taken every frame by some
+/// games, has the faster XXH64.)
+inline std::uint64_t fnv1a_64(std::span<const std::byte> bytes,
+                              std::uint64_t h = 0xcbf29ce484222325ull) {
+    for (const std::byte b : bytes) {
+        h ^= std::uint64_t(b);
+        h *= 0x100000001b3ull;
+    }
+    return h;
+}
 inline constexpr std::size_t header_size = 32;
 inline constexpr std::uint32_t library_version_code = std::uint32_t(TAMIAS2D_VERSION_MAJOR) << 16 |
                                                       std::uint32_t(TAMIAS2D_VERSION_MINOR) << 8 |
@@ -76,6 +89,12 @@ inline const char* recorded_function(const World& world) {
         return "world.custom_filter";
     if (w.bodies.loaded_bodies > 0)
         return "body.load";
+    if (w.contacts.pre_solve)
+        return "world.pre_solve";
+    if (w.contacts.friction_mixing)
+        return "world.friction_mixing";
+    if (w.contacts.restitution_mixing)
+        return "world.restitution_mixing";
     return nullptr;
 }
 

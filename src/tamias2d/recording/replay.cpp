@@ -123,7 +123,7 @@ Parsed parse(std::span<const std::byte> bytes) {
                                  decimal(std::uint64_t(bytes.size() - header_size)) + " (" +
                                  decimal(size) + " given: truncated or extended)");
     const std::span<const std::byte> payload = bytes.subspan(header_size);
-    if (read_le(bytes, 24, 8) != fnv1a_64(payload, fnv1a_64(bytes.first(24))))
+    if (read_le(bytes, 24, 8) != recording::fnv1a_64(payload, recording::fnv1a_64(bytes.first(24))))
         throw RecordingError(24, "header.checksum",
                              "must be the FNV-1a 64 of the header and the payload (the "
                              "recording was changed)");
