@@ -20,6 +20,7 @@
 #include "tamias2d/mass_data.hpp"
 #include "tamias2d/memory.hpp"
 #include "tamias2d/motion_locks.hpp"
+#include "tamias2d/mover_plane.hpp"
 #include "tamias2d/plane_solver.hpp"
 #include "tamias2d/profile.hpp"
 #include "tamias2d/query_filter.hpp"
