@@ -13,6 +13,7 @@
 #include "tamias2d/dynamics/model_bridge.hpp"
 #include "tamias2d/errors.hpp"
 #include "tamias2d/geometry/projected_width.hpp"
+#include "tamias2d/math/hypot.hpp"
 #include "tamias2d/model/dd09_chasles_theorem.hpp"
 #include "tamias2d/model/dd46_kinematic_target.hpp"
 #include "tamias2d/model/dd47_wind_force.hpp"
@@ -160,7 +161,7 @@ void World::apply_wind(ShapeId shape, Vec2d wind, double drag, double lift, bool
         bridge::typed<u::Length>(centroid - b.center)));
     const u::Vec2<u::Velocity> rel = model::dd47::relative_wind(
         bridge::typed<u::Velocity>(wind), bridge::typed<u::Velocity>(v_shape));
-    const double speed = std::hypot(rel.x.value(), rel.y.value());
+    const double speed = math::hypot(rel.x.value(), rel.y.value());
     if (!(speed > 0.0))
         return; // still air: no force
     const Vec2d along{rel.x.value() / speed, rel.y.value() / speed};

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "tamias2d/errors.hpp"
+#include "tamias2d/math/hypot.hpp"
 #include "tamias2d/model/dd45_plane_solver.hpp"
 #include "tamias2d/validation.hpp"
 
@@ -26,7 +27,7 @@ void check_planes(std::span<const CollisionPlane> planes) {
         const std::string at = "planes[" + std::to_string(i) + "].";
         const CollisionPlane& p = planes[i];
         require_finite(at + "normal", p.normal);
-        const double n = std::hypot(p.normal.x, p.normal.y);
+        const double n = math::hypot(p.normal.x, p.normal.y);
         if (!(std::abs(n - 1.0) <= 1e-6))
             throw ValidationError(at + "normal", n, "must have length 1 (to 1e-6)", "DD45");
         require_within(at + "offset", p.offset, supported::input_max, "m");
