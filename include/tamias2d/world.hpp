@@ -25,6 +25,7 @@
 #include "tamias2d/joint_kind.hpp"
 #include "tamias2d/mass_data.hpp"
 #include "tamias2d/motion_locks.hpp"
+#include "tamias2d/mover_plane.hpp"
 #include "tamias2d/profile.hpp"
 #include "tamias2d/query_filter.hpp"
 #include "tamias2d/query_results.hpp"
@@ -619,6 +620,50 @@ class TAMIAS2D_EXPORT World {
     /// a negative radius or falloff (DD38), and (DCX_range) when a body's resulting velocity
     /// would exceed the supported range; the world is then unchanged.
     std::size_t explode(const ExplosionDef& def);
+
+    // --- character ---
+    // A kinematic character moved by queries (Box2D v3's mover): collide_mover gives the
+    // planes of what the capsule touches, solve_planes (plane_solver.hpp) the translation they
+    // allow, cast_mover how far of it is free, clip_vector the velocity left; then
+    // set_target_transform sends the character's kinematic body there over the next step.
+    // The mover calls are queries: they change nothing and wake nothing.
+    /// \srs{DD29} The fraction in [0, 1] of `translation` (m) the capsule `mover` (world
+    /// frame, m) can move before it touches a shape the filter sees: the queries' shape cast
+    /// (shape_cast), its gap at the fraction within cast_tolerance. Shapes it already touches
+    /// or overlaps (within the cast's tolerance at the start) are passed over: collide_mover's
+    /// planes hold the mover off them. Throws ValidationError for a capsule that create_shape
+    /// would refuse (DCX_shape, DCX_range) or a translation out of range, InvalidHandle for a
+    /// stale filter.exclude_body.
+    double cast_mover(const Capsule& mover, Vec2d translation,
+                      const QueryFilter& filter = {}) const;
+    /// \srs{DD34} The planes of the shapes the capsule `mover` (world frame, m) overlaps or
+    /// comes within WorldDef::speculative_distance of, as MoverPlane (normal from the shape
+    /// towards the mover's core segment, offset = radius - distance from the core), in shape
+    /// order. Sensors and the back of a chain's edges (DD31) give none; nor does a shape the
+    /// core itself lies in (deep overlap: no direction). Throws as cast_mover does.
+    std::vector<MoverPlane> collide_mover(const Capsule& mover,
+                                          const QueryFilter& filter = {}) const;
+    /// collide_mover's planes one by one, in the broad phase's order, without allocating;
+    /// the callback returns false to stop.
+    void collide_mover(const Capsule& mover, const QueryFilter& filter,
+                       MoverPlaneCallback callback) const;
+    /// \srs{DD46} Sets a kinematic body's velocities so that one step of dt (s) brings its
+    /// origin to `origin` (m) and its angle to `angle` (rad) by the shortest turn: v = (c_t -
+    /// c) / dt for the centre of mass, omega = Delta / dt with Delta the turn in [-pi, pi].
+    /// Wakes the body, unless the velocities are already those (then nothing changes). Throws
+    /// InvalidHandle for a stale handle, WrongKind for a static or dynamic body,
+    /// ValidationError for an origin or angle out of range (DCX_range), dt out of [1e-12,
+    /// 1e12] (DCX_dt), or velocities beyond the supported state (DCX_range).
+    void set_target_transform(BodyId body, Vec2d origin, double angle, double dt);
+    /// \srs{DD47} The wind's force on a shape for the next step: with u = wind - (the velocity
+    /// of the shape's centroid), F = 1/2 rho h w |u| (drag u + lift u_perp), rho = 1.225 kg
+    /// m^-3, h = 1 m, w the shape's width across u (m), u_perp u turned a quarter turn
+    /// counter-clockwise; applied at the centroid as apply_force does (one step, DD13's
+    /// torque). `wind` in m s^-1; drag (>= 0) and lift dimensionless. A sleeping body is woken
+    /// if `wake`, else left alone (no force). Throws InvalidHandle for a stale handle,
+    /// WrongKind for a shape of a static or kinematic body, ValidationError for a value not
+    /// finite or out of range (DCX_range) or a negative drag (DD47).
+    void apply_wind(ShapeId shape, Vec2d wind, double drag, double lift, bool wake = true);
 
     // --- identity ---
     // What a game needs to tie its objects to the world's and to walk from one to another. None

@@ -79,7 +79,7 @@ struct Driver {
           area46(seed ^ 0x94d049bb133111ebu), body_world(seed ^ 0xbf58476d1ce4e5b9u),
           hooks(seed ^ 0xd6e8feb86659fd93u), world(make_def(r)),
           control(seed ^ 0x5851f42d4c957f2du), definitions_stream(seed ^ 0x2545f4914f6cdd1du),
-          recording_stream(seed ^ 0x9fb21c651e98df25u) {}
+          recording_stream(seed ^ 0x9fb21c651e98df25u), character(seed ^ 0xd1342543de82ef95u) {}
 
     static WorldDef make_def(Rng& r) {
         WorldDef d;
@@ -932,6 +932,68 @@ struct Driver {
         }
     }
 
+    // --- character ---
+    /// The character calls (a mover collided and cast, a kinematic target pose, wind), from a
+    /// stream of their own so that the main stream's calls stay those its seeds were found
+    /// with. Values: in range mostly, any double else.
+    Rng character;
+    double character_value(double lo, double hi) {
+        return character.chance(80) ? character.between(lo, hi) : any_double(character);
+    }
+    Capsule character_capsule() {
+        const Vec2d a{character_value(-20.0, 20.0), character_value(-5.0, 20.0)};
+        const Vec2d b = character.chance(90) ? Vec2d{a.x + character_value(-1.0, 1.0),
+                                                     a.y + character_value(0.0, 2.0)}
+                                             : a;
+        return {a, b, character_value(-0.1, 1.0)};
+    }
+    void character_call() {
+        Rng& c = character;
+        QueryFilter f;
+        if (c.chance(20) && !bodies.empty())
+            f.exclude_body = bodies[c.below(bodies.size())];
+        switch (c.below(4)) {
+        case 0: {
+            const Capsule m = character_capsule();
+            last << "collide_mover(" << str(m.center1) << " " << str(m.center2) << " " << m.radius
+                 << ")";
+            (void)world.collide_mover(m, f);
+            break;
+        }
+        case 1: {
+            const Capsule m = character_capsule();
+            const Vec2d t{character_value(-10.0, 10.0), character_value(-10.0, 10.0)};
+            last << "cast_mover(" << str(m.center1) << " " << str(m.center2) << " " << m.radius
+                 << ", " << str(t) << ")";
+            (void)world.cast_mover(m, t, f);
+            break;
+        }
+        case 2: {
+            const BodyId b = bodies.empty() || c.chance(5)
+                                 ? BodyId{std::uint32_t(c.below(8)), 0, world.tag()}
+                                 : bodies[c.below(bodies.size())];
+            const Vec2d o{character_value(-20.0, 20.0), character_value(-5.0, 20.0)};
+            const double a = character_value(-10.0, 10.0), dt = character_value(0.0, 0.1);
+            last << "set_target_transform(" << str(b) << ", " << str(o) << ", " << a << ", " << dt
+                 << ")";
+            world.set_target_transform(b, o, a, dt);
+            break;
+        }
+        default: {
+            const ShapeId s = shapes.empty() || c.chance(5)
+                                  ? ShapeId{std::uint32_t(c.below(8)), 0, world.tag()}
+                                  : shapes[c.below(shapes.size())];
+            const Vec2d wind{character_value(-50.0, 50.0), character_value(-50.0, 50.0)};
+            const double drag = character_value(-0.1, 2.0), lift = character_value(-1.0, 1.0);
+            const bool wake = c.chance(70);
+            last << "apply_wind(" << s.index << "." << s.generation << ", " << str(wind) << ", "
+                 << drag << ", " << lift << ", " << wake << ")";
+            world.apply_wind(s, wind, drag, lift, wake);
+            break;
+        }
+        }
+    }
+
     // --- definitions ---
     /// Bodies and joints made with the definition fields the run-time controls also set
     /// (BodyDef::enabled, motion_locks, sleep_threshold; spring_target, constraint_tuning) and
@@ -1165,6 +1227,10 @@ struct Driver {
         }
         if (control_call())
             return;
+        if (character.chance(8)) {
+            character_call();
+            return;
+        }
         if (body_world.chance(15)) {
             body_world_call();
             return;
