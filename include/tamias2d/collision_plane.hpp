@@ -9,7 +9,7 @@
 
 namespace tamias2d {
 
-/// \srs{DD45} One constraint on a mover's translation d (m) from the pose where the plane was
+/// \srs{DD43} One constraint on a mover's translation d (m) from the pose where the plane was
 /// found: n . d >= offset. World::collide_mover makes them (MoverPlane::plane); a game may
 /// add its own (a soft wall: a finite push_limit).
 struct CollisionPlane {

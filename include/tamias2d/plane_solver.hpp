@@ -18,7 +18,7 @@ struct PlaneSolverResult {
     bool converged = false; ///< the last sweep's pushes summed to less than the tolerance
 };
 
-/// \srs{DD45} The translation d closest to `target` (m) with n_i . d >= offset_i for every
+/// \srs{DD43} The translation d closest to `target` (m) with n_i . d >= offset_i for every
 /// plane, each plane pushing at most its push_limit: minimise |d - target|^2 by projected
 /// Gauss-Seidel on the planes' pushes p_i (d = target + sum p_i n_i, 0 <= p_i <= limit_i),
 /// sweeping the planes in order until a sweep changes the pushes by less than `tolerance` (m)
@@ -27,7 +27,7 @@ struct PlaneSolverResult {
 TAMIAS2D_EXPORT PlaneSolverResult solve_planes(Vec2d target, std::span<CollisionPlane> planes,
                                                double tolerance = 1e-9, int max_iterations = 200);
 
-/// \srs{DD45} `v` without its parts into the planes solve_planes pressed against (push > 0 and
+/// \srs{DD43} `v` without its parts into the planes solve_planes pressed against (push > 0 and
 /// clip_velocity): for each in order, v -= min(0, v . n) n. A character's velocity after a
 /// move, so that it slides along a wall or a slope instead of pressing into it.
 TAMIAS2D_EXPORT Vec2d clip_vector(Vec2d v, std::span<const CollisionPlane> planes);

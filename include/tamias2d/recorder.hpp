@@ -237,6 +237,10 @@ class TAMIAS2D_EXPORT Recorder {
     void set_warm_starting(bool enabled);
     /// World::set_user_material, recorded.
     void set_user_material(ShapeId shape, std::uint64_t id);
+    /// World::set_target_transform, recorded.
+    void set_target_transform(BodyId body, Vec2d origin, double angle, double dt);
+    /// World::apply_wind, recorded.
+    void apply_wind(ShapeId shape, Vec2d wind, double drag, double lift, bool wake = true);
 
     /// \cond INTERNAL
     struct Impl; // the recording's state (src/tamias2d/recording/recorder.cpp)

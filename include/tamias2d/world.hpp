@@ -647,7 +647,7 @@ class TAMIAS2D_EXPORT World {
     /// the callback returns false to stop.
     void collide_mover(const Capsule& mover, const QueryFilter& filter,
                        MoverPlaneCallback callback) const;
-    /// \srs{DD46} Sets a kinematic body's velocities so that one step of dt (s) brings its
+    /// \srs{DD44} Sets a kinematic body's velocities so that one step of dt (s) brings its
     /// origin to `origin` (m) and its angle to `angle` (rad) by the shortest turn: v = (c_t -
     /// c) / dt for the centre of mass, omega = Delta / dt with Delta the turn in [-pi, pi].
     /// Wakes the body, unless the velocities are already those (then nothing changes). Throws
@@ -655,14 +655,14 @@ class TAMIAS2D_EXPORT World {
     /// ValidationError for an origin or angle out of range (DCX_range), dt out of [1e-12,
     /// 1e12] (DCX_dt), or velocities beyond the supported state (DCX_range).
     void set_target_transform(BodyId body, Vec2d origin, double angle, double dt);
-    /// \srs{DD47} The wind's force on a shape for the next step: with u = wind - (the velocity
+    /// \srs{DD45} The wind's force on a shape for the next step: with u = wind - (the velocity
     /// of the shape's centroid), F = 1/2 rho h w |u| (drag u + lift u_perp), rho = 1.225 kg
     /// m^-3, h = 1 m, w the shape's width across u (m), u_perp u turned a quarter turn
     /// counter-clockwise; applied at the centroid as apply_force does (one step, DD13's
     /// torque). `wind` in m s^-1; drag (>= 0) and lift dimensionless. A sleeping body is woken
     /// if `wake`, else left alone (no force). Throws InvalidHandle for a stale handle,
     /// WrongKind for a shape of a static or kinematic body, ValidationError for a value not
-    /// finite or out of range (DCX_range) or a negative drag (DD47).
+    /// finite or out of range (DCX_range) or a negative drag (DD45).
     void apply_wind(ShapeId shape, Vec2d wind, double drag, double lift, bool wake = true);
 
     // --- identity ---

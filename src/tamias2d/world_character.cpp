@@ -1,6 +1,6 @@
 // The World's character calls (include/tamias2d/world.hpp, "character"): a capsule mover cast
 // and collided against the world (the queries' shape cast and DD34's distance), a kinematic
-// body sent to a pose (DD46), and the wind's force on a shape (DD47).
+// body sent to a pose (DD44), and the wind's force on a shape (DD45).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -15,8 +15,8 @@
 #include "tamias2d/geometry/projected_width.hpp"
 #include "tamias2d/math/hypot.hpp"
 #include "tamias2d/model/dd09_chasles_theorem.hpp"
-#include "tamias2d/model/dd46_kinematic_target.hpp"
-#include "tamias2d/model/dd47_wind_force.hpp"
+#include "tamias2d/model/dd44_kinematic_target.hpp"
+#include "tamias2d/model/dd45_wind_force.hpp"
 #include "tamias2d/validation.hpp"
 #include "tamias2d/world.hpp"
 #include "tamias2d/world_impl.hpp"
@@ -105,7 +105,7 @@ void World::collide_mover(const Capsule& mover, const QueryFilter& filter,
     });
 }
 
-/// \srs{DD46} The velocities that carry a kinematic body to a pose in one step.
+/// \srs{DD44} The velocities that carry a kinematic body to a pose in one step.
 void World::set_target_transform(BodyId body, Vec2d origin, double angle, double dt) {
     Impl& w = *impl_;
     Body& b = w.bodies.get(body);
@@ -120,10 +120,10 @@ void World::set_target_transform(BodyId body, Vec2d origin, double angle, double
     const Transform target{origin, Rot::from_angle(angle)};
     const Vec2d c_target = transform_point(target, b.local_center);
     const u::Time h = u::from_value<u::Time>(dt);
-    const Vec2d v = bridge::plain(model::dd46::target_velocity(
+    const Vec2d v = bridge::plain(model::dd44::target_velocity(
         bridge::typed<u::Length>(b.center), bridge::typed<u::Length>(c_target), h));
-    const double omega = model::dd46::target_angular_velocity(
-                             model::dd46::shortest_turn(u::from_value<u::Angle>(b.angle),
+    const double omega = model::dd44::target_angular_velocity(
+                             model::dd44::shortest_turn(u::from_value<u::Angle>(b.angle),
                                                         u::from_value<u::Angle>(angle)),
                              h)
                              .value();
@@ -137,7 +137,7 @@ void World::set_target_transform(BodyId body, Vec2d origin, double angle, double
     w.bodies.wake(body.index);
 }
 
-/// \srs{DD47} The wind's drag and lift on a shape, a one-step force at its centroid.
+/// \srs{DD45} The wind's drag and lift on a shape, a one-step force at its centroid.
 void World::apply_wind(ShapeId shape, Vec2d wind, double drag, double lift, bool wake) {
     Impl& w = *impl_;
     const Shape& sh = w.shapes.get(shape);
@@ -151,7 +151,7 @@ void World::apply_wind(ShapeId shape, Vec2d wind, double drag, double lift, bool
     require_within("wind", wind, supported::input_max, "m s^-1");
     require_within("drag", drag, supported::input_max, "1");
     if (!(drag >= 0.0))
-        throw ValidationError("drag", drag, "must be >= 0", "DD47");
+        throw ValidationError("drag", drag, "must be >= 0", "DD45");
     require_within("lift", lift, supported::input_max, "1");
     if (!wake && !w.bodies.active(sh.body))
         return; // asleep, and not to be woken: the wind waits
@@ -159,14 +159,14 @@ void World::apply_wind(ShapeId shape, Vec2d wind, double drag, double lift, bool
     const Vec2d v_shape = bridge::plain(model::dd09::point_velocity<double>(
         bridge::typed<u::Velocity>(b.v), u::from_value<u::AngularVelocity>(b.w),
         bridge::typed<u::Length>(centroid - b.center)));
-    const u::Vec2<u::Velocity> rel = model::dd47::relative_wind(
+    const u::Vec2<u::Velocity> rel = model::dd45::relative_wind(
         bridge::typed<u::Velocity>(wind), bridge::typed<u::Velocity>(v_shape));
     const double speed = math::hypot(rel.x.value(), rel.y.value());
     if (!(speed > 0.0))
         return; // still air: no force
     const Vec2d along{rel.x.value() / speed, rel.y.value() / speed};
     const double width = projected_width(w.shapes.defs[shape.index].geometry, b.xf.q, along);
-    const Vec2d force = bridge::plain(model::dd47::wind_force(
+    const Vec2d force = bridge::plain(model::dd45::wind_force(
         rel, u::from_value<u::Length>(width), u::from_value<u::Dimensionless>(drag),
         u::from_value<u::Dimensionless>(lift)));
     if (force.x == 0.0 && force.y == 0.0)

@@ -104,12 +104,12 @@ Character make_character(World& w, Vec2d at) {
 BOOST_AUTO_TEST_SUITE(character_walk)
 
 // Oracle: on a straight slope of angle alpha (tangent tau), a character pressing into it moves
-// each step by the part of its target along the slope, (t . tau) tau (DD45's one-plane closed
+// each step by the part of its target along the slope, (t . tau) tau (DD43's one-plane closed
 // form), and stays at its radius from the slope's line (a gap within the speculative distance,
 // 0.02 m). Walking up a 20 degree slope at 4 m/s under gravity: checked every step once it
 // touches, to 1e-9 m (the solver's convergence) plus the cast's tolerance (World::
 // cast_tolerance, 1e-6 of the cast's scale).
-BOOST_AUTO_TEST_CASE(slides_along_a_slope, *utf::label("DD45")) {
+BOOST_AUTO_TEST_CASE(slides_along_a_slope, *utf::label("DD43")) {
     World w(WorldDef{.gravity = {0.0, -10.0}});
     const double a = 20.0 * std::acos(-1.0) / 180.0;
     const Vec2d tau{std::cos(a), std::sin(a)};

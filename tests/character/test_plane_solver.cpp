@@ -1,4 +1,4 @@
-// solve_planes and clip_vector (DD45) against closed forms: one plane (the target projected on
+// solve_planes and clip_vector (DD43) against closed forms: one plane (the target projected on
 // it, or kept), the corner of two planes (their intersection, with the pushes that express the
 // target's offset from it), a slope (the target's part along it), a soft plane's limited push,
 // clipped velocities; their input checks.
@@ -27,12 +27,12 @@ double dist(Vec2d a, Vec2d b) {
 
 } // namespace
 
-BOOST_AUTO_TEST_SUITE(plane_solver_dd45)
+BOOST_AUTO_TEST_SUITE(plane_solver_dd43)
 
 // Oracle: the closest point to t of the half-plane n . d >= o is t itself when t lies in it,
 // else its projection t + (o - n . t) n, the push being o - n . t. (Exact to rounding: one
 // plane converges in one sweep.)
-BOOST_AUTO_TEST_CASE(one_plane, *utf::label("DD45")) {
+BOOST_AUTO_TEST_CASE(one_plane, *utf::label("DD43")) {
     const Vec2d n = unit(0.3, 1.0);
     const double o = 0.25;
     for (const Vec2d t : {Vec2d{1.0, -2.0}, Vec2d{-0.7, 0.1}, Vec2d{0.4, 3.0}}) {
@@ -51,7 +51,7 @@ BOOST_AUTO_TEST_CASE(one_plane, *utf::label("DD45")) {
 // in the planes' normal cone below their intersection d*, so the closest allowed translation is
 // d* itself (Cramer's rule on n1 . d = o1, n2 . d = o2) with pushes p1 and p2 (the KKT
 // conditions). A floor and a wall leaning at 63 degrees, and a right-angle corner.
-BOOST_AUTO_TEST_CASE(corner_of_two_planes, *utf::label("DD45")) {
+BOOST_AUTO_TEST_CASE(corner_of_two_planes, *utf::label("DD43")) {
     struct Case {
         Vec2d n1, n2;
         double o1, o2, p1, p2;
@@ -79,7 +79,7 @@ BOOST_AUTO_TEST_CASE(corner_of_two_planes, *utf::label("DD45")) {
 // pressing into it keeps only its part along the slope's tangent tau = (cos a, sin a):
 // d = (t . tau) tau. A character walking right at u with a drop of g (per step) goes up a
 // 30 degree slope by (u cos a - g sin a) along tau.
-BOOST_AUTO_TEST_CASE(slope, *utf::label("DD45")) {
+BOOST_AUTO_TEST_CASE(slope, *utf::label("DD43")) {
     const double a = 30.0 * std::acos(-1.0) / 180.0;
     const Vec2d n{-std::sin(a), std::cos(a)};
     const Vec2d tau{std::cos(a), std::sin(a)};
@@ -93,7 +93,7 @@ BOOST_AUTO_TEST_CASE(slope, *utf::label("DD45")) {
 
 // Oracle: a soft plane pushes at most its limit L: a target that needs a push P > L is moved
 // by L along the normal and stays inside by P - L.
-BOOST_AUTO_TEST_CASE(soft_plane, *utf::label("DD45")) {
+BOOST_AUTO_TEST_CASE(soft_plane, *utf::label("DD43")) {
     const Vec2d n{0.0, 1.0};
     std::vector<CollisionPlane> planes{{.normal = n, .offset = 0.0, .push_limit = 0.3}};
     const PlaneSolverResult r = solve_planes({0.5, -1.0}, planes);
@@ -105,7 +105,7 @@ BOOST_AUTO_TEST_CASE(soft_plane, *utf::label("DD45")) {
 // plane removed, a part away from it kept, a plane that did not push (or a soft one that does
 // not clip) ignored. Against a floor and a wall at a right angle the velocity into the corner
 // stops.
-BOOST_AUTO_TEST_CASE(clipped_velocity, *utf::label("DD45")) {
+BOOST_AUTO_TEST_CASE(clipped_velocity, *utf::label("DD43")) {
     const CollisionPlane floor{.normal = {0.0, 1.0}, .offset = 0.0, .push = 0.1};
     const CollisionPlane wall{.normal = {-1.0, 0.0}, .offset = 0.0, .push = 0.2};
     const CollisionPlane idle{.normal = {-1.0, 0.0}, .offset = 0.0, .push = 0.0};

@@ -1,4 +1,4 @@
-// World::set_target_transform (DD46) against its closed form: after one step of dt a kinematic
+// World::set_target_transform (DD44) against its closed form: after one step of dt a kinematic
 // body's origin is the target's and its orientation the target's (modulo 2 pi), reached by
 // the shortest turn; WrongKind for other bodies; the strong guarantee; a repeated call changes
 // no bit; the same result on 1 to 4 workers.
@@ -38,14 +38,14 @@ struct Platform {
 
 } // namespace
 
-BOOST_AUTO_TEST_SUITE(target_transform_dd46)
+BOOST_AUTO_TEST_SUITE(target_transform_dd44)
 
 // Oracle: a kinematic body moves at constant velocity over a step (R2: no force moves it), so
 // v = (c_t - c) / dt and omega = Delta / dt bring it to the target pose in one step: its origin
 // equals the target (to rounding of the substeps' sums: 1e-12 m here) and its orientation
 // equals the target modulo 2 pi. The target 2 pi - 0.3 from 0.2 is reached by turning -0.5 rad,
 // the shortest way, not +5.78 rad.
-BOOST_AUTO_TEST_CASE(one_step_reaches_the_pose, *utf::label("DD46")) {
+BOOST_AUTO_TEST_CASE(one_step_reaches_the_pose, *utf::label("DD44")) {
     Platform p;
     const double dt = 1.0 / 60.0;
     const Vec2d target{1.7, 1.6};

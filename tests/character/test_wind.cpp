@@ -1,4 +1,4 @@
-// World::apply_wind (DD47) against closed forms: one step's drag and lift on a disc and a box
+// World::apply_wind (DD45) against closed forms: one step's drag and lift on a disc and a box
 // face-on (F = 1/2 rho h w |u| (C_d u + C_l u_perp)), and a disc released in a uniform wind
 // approaching the wind's speed as quadratic drag's closed form says; WrongKind and the input
 // rules; a sleeping body left alone unless woken.
@@ -17,8 +17,8 @@ using namespace tamias2d;
 
 namespace {
 
-constexpr double rho = 1.225; // kg m^-3, air (DD47)
-constexpr double depth = 1.0; // m (DD47)
+constexpr double rho = 1.225; // kg m^-3, air (DD45)
+constexpr double depth = 1.0; // m (DD45)
 
 World still_world() {
     return World(WorldDef{.gravity = {0.0, 0.0}});
@@ -26,12 +26,12 @@ World still_world() {
 
 } // namespace
 
-BOOST_AUTO_TEST_SUITE(wind_dd47)
+BOOST_AUTO_TEST_SUITE(wind_dd45)
 
-// Oracle: DD47 by hand for one step from rest: a disc of radius a shows the wind its diameter,
+// Oracle: DD45 by hand for one step from rest: a disc of radius a shows the wind its diameter,
 // u = W, F = 1/2 rho h 2a |W| (C_d W + C_l W_perp); after one step of dt, v = F dt / m (the
 // force constant over the step, IM1). A box 2 m x 1 m face-on to a wind along x shows 1 m.
-BOOST_AUTO_TEST_CASE(one_step_force, *utf::label("DD47")) {
+BOOST_AUTO_TEST_CASE(one_step_force, *utf::label("DD45")) {
     World w = still_world();
     const double a = 0.5;
     const BodyId disc = w.create_body({});
@@ -60,7 +60,7 @@ BOOST_AUTO_TEST_CASE(one_step_force, *utf::label("DD47")) {
 // t): it approaches the wind's speed and never passes it. With the force held over each step
 // (explicit in u), the step's error is k^2 u^3 dt^2 at most (the next term of the exact
 // u / (1 + k u dt)); the map contracts, so after time t the error is at most t k^2 W^3 dt.
-BOOST_AUTO_TEST_CASE(approaches_the_wind_speed, *utf::label("DD47")) {
+BOOST_AUTO_TEST_CASE(approaches_the_wind_speed, *utf::label("DD45")) {
     World w = still_world();
     const double a = 0.25;
     const BodyId disc = w.create_body({});

@@ -78,8 +78,9 @@ struct Driver {
           queries(seed ^ 0x165667b19e3779f9u), events_stream(seed ^ 0x27d4eb2f165667c5u),
           area46(seed ^ 0x94d049bb133111ebu), body_world(seed ^ 0xbf58476d1ce4e5b9u),
           hooks(seed ^ 0xd6e8feb86659fd93u), world(make_def(r)),
-          control(seed ^ 0x5851f42d4c957f2du), definitions_stream(seed ^ 0x2545f4914f6cdd1du),
-          recording_stream(seed ^ 0x9fb21c651e98df25u), character(seed ^ 0xd1342543de82ef95u) {}
+          control(seed ^ 0x5851f42d4c957f2du), character(seed ^ 0xd1342543de82ef95u),
+          definitions_stream(seed ^ 0x2545f4914f6cdd1du),
+          recording_stream(seed ^ 0x9fb21c651e98df25u) {}
 
     static WorldDef make_def(Rng& r) {
         WorldDef d;

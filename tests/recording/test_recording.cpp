@@ -213,6 +213,7 @@ BOOST_AUTO_TEST_CASE(every_recorded_call_replays_with_the_same_bits, *utf::label
     rec.step(dt);
     // Body controls.
     rec.set_body_type(b[7], BodyType::kinematic);
+    rec.set_target_transform(b[7], {6.0, 4.5}, 0.3, dt);
     rec.step(dt);
     rec.set_body_type(b[7], BodyType::dynamic);
     rec.set_enabled(b[6], false);
@@ -239,6 +240,7 @@ BOOST_AUTO_TEST_CASE(every_recorded_call_replays_with_the_same_bits, *utf::label
     rec.step(dt);
     rec.set_warm_starting(true);
     rec.set_user_material(s[1], 7);
+    rec.apply_wind(s[2], {4.0, 0.0}, 1.0, 0.5);
     for (int k = 0; k < 5; ++k)
         rec.step(dt);
     // Destruction, then the state of step 10 again.

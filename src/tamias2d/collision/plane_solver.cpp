@@ -1,4 +1,4 @@
-// The plane solver of a mover (DD45): projected Gauss-Seidel on the planes' pushes, and the
+// The plane solver of a mover (DD43): projected Gauss-Seidel on the planes' pushes, and the
 // velocity clipped against the planes it pressed against. Pure functions: no world.
 #include "tamias2d/plane_solver.hpp"
 
@@ -7,20 +7,20 @@
 
 #include "tamias2d/errors.hpp"
 #include "tamias2d/math/hypot.hpp"
-#include "tamias2d/model/dd45_plane_solver.hpp"
+#include "tamias2d/model/dd43_plane_solver.hpp"
 #include "tamias2d/validation.hpp"
 
 namespace tamias2d {
 
 namespace {
 namespace u = tamias2d::units;
-namespace dd45 = tamias2d::model::dd45;
+namespace dd43 = tamias2d::model::dd43;
 
 u::Vec2<double> unit(Vec2d n) {
     return {n.x, n.y};
 }
 
-/// \srs{DD45} The planes as the problem needs them: unit normals (to 1e-6), offsets within
+/// \srs{DD43} The planes as the problem needs them: unit normals (to 1e-6), offsets within
 /// the supported range, push limits >= 0 (infinite allowed).
 void check_planes(std::span<const CollisionPlane> planes) {
     for (std::size_t i = 0; i < planes.size(); ++i) {
@@ -29,10 +29,10 @@ void check_planes(std::span<const CollisionPlane> planes) {
         require_finite(at + "normal", p.normal);
         const double n = math::hypot(p.normal.x, p.normal.y);
         if (!(std::abs(n - 1.0) <= 1e-6))
-            throw ValidationError(at + "normal", n, "must have length 1 (to 1e-6)", "DD45");
+            throw ValidationError(at + "normal", n, "must have length 1 (to 1e-6)", "DD43");
         require_within(at + "offset", p.offset, supported::input_max, "m");
         if (!(p.push_limit >= 0.0))
-            throw ValidationError(at + "push_limit", p.push_limit, "must be >= 0 (m)", "DD45");
+            throw ValidationError(at + "push_limit", p.push_limit, "must be >= 0 (m)", "DD43");
     }
 }
 } // namespace
@@ -42,9 +42,9 @@ PlaneSolverResult solve_planes(Vec2d target, std::span<CollisionPlane> planes, d
     require_within("target", target, supported::input_max, "m");
     check_planes(planes);
     if (!(tolerance > 0.0) || !std::isfinite(tolerance))
-        throw ValidationError("tolerance", tolerance, "must be finite and > 0 (m)", "DD45");
+        throw ValidationError("tolerance", tolerance, "must be finite and > 0 (m)", "DD43");
     if (max_iterations < 1)
-        throw ValidationError("max_iterations", double(max_iterations), "must be >= 1", "DD45");
+        throw ValidationError("max_iterations", double(max_iterations), "must be >= 1", "DD43");
     for (CollisionPlane& p : planes)
         p.push = 0.0;
     u::Vec2<u::Length> d = u::vec_from_values<u::Length>(target.x, target.y);
@@ -54,11 +54,11 @@ PlaneSolverResult solve_planes(Vec2d target, std::span<CollisionPlane> planes, d
         double moved = 0.0; // the sweep's pushes, summed
         for (CollisionPlane& p : planes) {
             const u::Vec2<double> n = unit(p.normal);
-            const u::Length s = dd45::separation(n, u::from_value<u::Length>(p.offset), d);
+            const u::Length s = dd43::separation(n, u::from_value<u::Length>(p.offset), d);
             const u::Length before = u::from_value<u::Length>(p.push);
             const u::Length after =
-                dd45::updated_push(before, s, u::from_value<u::Length>(p.push_limit));
-            d = dd45::translation_after(d, n, after - before);
+                dd43::updated_push(before, s, u::from_value<u::Length>(p.push_limit));
+            d = dd43::translation_after(d, n, after - before);
             p.push = after.value();
             moved += std::abs((after - before).value());
         }
@@ -77,7 +77,7 @@ Vec2d clip_vector(Vec2d v, std::span<const CollisionPlane> planes) {
     u::Vec2<u::Velocity> w = u::vec_from_values<u::Velocity>(v.x, v.y);
     for (const CollisionPlane& p : planes)
         if (p.push > 0.0 && p.clip_velocity)
-            w = dd45::clipped(w, unit(p.normal));
+            w = dd43::clipped(w, unit(p.normal));
     return {w.x.value(), w.y.value()};
 }
 

@@ -1,4 +1,4 @@
-// The width a placed shape shows a flow along a direction (World::apply_wind, DD47): its
+// The width a placed shape shows a flow along a direction (World::apply_wind, DD45): its
 // extent across that direction.
 #pragma once
 

@@ -115,7 +115,9 @@ template <class Sig> using Member = Sig World::*;
     X(set_maximum_linear_speed, &World::set_maximum_linear_speed)                                  \
     X(set_workers, &World::set_workers)                                                            \
     X(set_warm_starting, &World::set_warm_starting)                                                \
-    X(set_user_material, &World::set_user_material)
+    X(set_user_material, &World::set_user_material)                                                \
+    X(set_target_transform, &World::set_target_transform)                                          \
+    X(apply_wind, &World::apply_wind)
 // clang-format on
 
 /// A call's code in a recording: its place in TAMIAS2D_RECORDED_CALLS.

@@ -358,6 +358,12 @@ void Recorder::set_warm_starting(bool enabled) {
 void Recorder::set_user_material(ShapeId shape, std::uint64_t id) {
     record<Call::set_user_material>(*impl_, shape, id);
 }
+void Recorder::set_target_transform(BodyId body, Vec2d origin, double angle, double dt) {
+    record<Call::set_target_transform>(*impl_, body, origin, angle, dt);
+}
+void Recorder::apply_wind(ShapeId shape, Vec2d wind, double drag, double lift, bool wake) {
+    record<Call::apply_wind>(*impl_, shape, wind, drag, lift, wake);
+}
 void Recorder::wake_touching(BodyId body) {
     record<Call::wake_touching>(*impl_, body);
 }
