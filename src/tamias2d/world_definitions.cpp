@@ -66,15 +66,10 @@ Vec2d axis_of(const Transform& xa, Vec2d local) {
     return w;
 }
 
-/// The definition that makes joint `j` again where it is now. A joint whose bodies moved apart
-/// from where it was made (its anchors no longer one point) is made anew with one anchor, its
-/// angle and translation zero there: its limits are moved by the angle and translation it has
-/// now, so that they stay where they were.
-JointDefinition definition_of(Joint j, BodyId a, BodyId b, const BodyStore& bodies) {
-    const Transform& xa = bodies.bodies[j.body_a].xf;
-    const Transform& xb = bodies.bodies[j.body_b].xf;
-    bool exact = true;
-    const Vec2d anchor = anchor_of(xa, j.local_anchor_a, &xb, j.local_anchor_b, &exact);
+/// A joint's limits and spring target measured from its angle or translation now (0 where a
+/// definition made anew from the pose now puts them): a revolute joint's always, a prismatic or
+/// wheel joint's when its anchors are no longer one point.
+void shift_limits_to_now(Joint& j, const BodyStore& bodies, bool exact) {
     if (j.type == JointType::revolute) {
         const double angle = joint_angle_now(j, bodies); // (0 where it was made)
         j.lower_limit -= angle;
@@ -86,21 +81,35 @@ JointDefinition definition_of(Joint j, BodyId a, BodyId b, const BodyStore& bodi
         j.upper_limit -= translation;
         j.spring_target -= translation;
     }
-    // The fields every kind but the filter joint has (a target joint has no break force and
-    // no break torque; distance joints no break torque).
-    const auto common = [&](auto& d) {
-        d.user_data = j.user_data;
-        d.collide_connected = j.collide_connected;
-        d.break_force = j.break_force;
-        d.force_threshold = j.force_threshold;
-        d.torque_threshold = j.torque_threshold;
-        if constexpr (requires { d.spring_target; })
-            d.spring_target = j.spring_target;
-        if constexpr (requires { d.constraint_tuning; }) {
-            if (j.tuned)
-                d.constraint_tuning = ConstraintTuning{j.tuning_hertz, j.tuning_damping_ratio};
-        }
-    };
+}
+
+/// The fields every kind but the filter joint has (a target joint has no break force and no
+/// break torque; distance joints no break torque).
+template <class D> void common_fields(D& d, const Joint& j) {
+    d.user_data = j.user_data;
+    d.collide_connected = j.collide_connected;
+    d.break_force = j.break_force;
+    d.force_threshold = j.force_threshold;
+    d.torque_threshold = j.torque_threshold;
+    if constexpr (requires { d.spring_target; })
+        d.spring_target = j.spring_target;
+    if constexpr (requires { d.constraint_tuning; }) {
+        if (j.tuned)
+            d.constraint_tuning = ConstraintTuning{j.tuning_hertz, j.tuning_damping_ratio};
+    }
+}
+
+/// The definition that makes joint `j` again where it is now. A joint whose bodies moved apart
+/// from where it was made (its anchors no longer one point) is made anew with one anchor, its
+/// angle and translation zero there: its limits are moved by the angle and translation it has
+/// now, so that they stay where they were.
+JointDefinition definition_of(Joint j, BodyId a, BodyId b, const BodyStore& bodies) {
+    const Transform& xa = bodies.bodies[j.body_a].xf;
+    const Transform& xb = bodies.bodies[j.body_b].xf;
+    bool exact = true;
+    const Vec2d anchor = anchor_of(xa, j.local_anchor_a, &xb, j.local_anchor_b, &exact);
+    shift_limits_to_now(j, bodies, exact);
+    const auto common = [&j](auto& d) { common_fields(d, j); };
     switch (j.type) {
     case JointType::revolute: {
         RevoluteJointDef d{.body_a = a, .body_b = b, .anchor = anchor};
