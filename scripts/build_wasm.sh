@@ -2,10 +2,16 @@
 # The live sandbox (docs/viewer.md, "Live sandbox"): the library's own sources (src/tamias2d/,
 # scene reader included) and apps/wasm/sandbox_bindings.cpp compiled to WebAssembly with
 # Debian's emscripten, and one self-contained page, build-wasm/sandbox.html, that runs them.
-#   scripts/build_wasm.sh [BUILD_DIR] [--determinism-tests]     (default build-wasm/)
-# --determinism-tests: also BUILD_DIR/determinism_tests.js, the golden-hash test
-# (tests/determinism/test_golden_hashes.cpp, Boost.Test header-only) compiled from the same
-# objects for Node.js, which runs it on the real file system (.ci/wasm_check.sh).
+#   scripts/build_wasm.sh [BUILD_DIR] [--determinism-tests] [--determinism-tests-web]
+#                                                                (default build-wasm/)
+# --determinism-tests: also BUILD_DIR/determinism_tests.js, the determinism tests
+# (tests/determinism/test_golden_hashes.cpp and test_recordings.cpp, Boost.Test header-only)
+# compiled from the same objects for Node.js, which runs them on the real file system
+# (.ci/wasm_check.sh).
+# --determinism-tests-web: also BUILD_DIR/web/determinism_tests.html, the same test objects
+# linked for a browser (the example scenes, the golden file and the recordings embedded in the
+# module, .wasm included, at the paths the tests were compiled with), which Chromium runs
+# (.ci/wasm_browser_check.sh).
 # Installs emscripten when em++ is missing (about 30 s on a machine that has clang 14; it is
 # not in scripts/setup.sh: nothing else needs it).
 #
@@ -18,9 +24,11 @@ cd "$(dirname "$0")/.."
 root=$PWD
 out=build-wasm
 determinism_tests=0
+determinism_tests_web=0
 for arg in "$@"; do
     case $arg in
     --determinism-tests) determinism_tests=1 ;;
+    --determinism-tests-web) determinism_tests_web=1 ;;
     *) out=$arg ;;
     esac
 done
@@ -96,7 +104,7 @@ python3 apps/wasm/assemble_sandbox.py --template apps/wasm/sandbox.html \
     --css apps/cli/player/player.css --player-js apps/cli/player/player.js \
     --sandbox-js apps/wasm/sandbox.js --module "$out/tamias_sandbox.js" \
     --scenes examples/scenes -o "$out/sandbox.html"
-if ((determinism_tests)); then
+if ((determinism_tests || determinism_tests_web)); then
     # Boost.Test as a header (no Boost library for WebAssembly): its implementation in one
     # object, the test in another, both rebuilt only when older than their sources.
     test_flags=("${flags[@]}" -I"$root/tests" -DTAMIAS_EXAMPLE_SCENES="\"$root/examples/scenes\""
@@ -111,13 +119,32 @@ if ((determinism_tests)); then
         fi
     done
     library_objects=$(ls "$out"/obj/src_tamias2d_*.o)
+    test_objects=("$out/test_test_golden_hashes.o" "$out/test_test_recordings.o"
+                  "$out/test_boost_test_main.o")
+fi
+if ((determinism_tests)); then
     # NODERAWFS: the module reads the scenes and the golden file where they are; EXIT_RUNTIME:
     # node's exit status is the test's; WASM_ASYNC_COMPILATION=0: the .wasm is read from disk
     # (emscripten 3.1.6 would fetch() it, by a path, in a node that has fetch).
-    nice -n 5 em++ "${flags[@]}" $library_objects "$out/test_test_golden_hashes.o" \
-        "$out/test_test_recordings.o" "$out/test_boost_test_main.o" -o "$out/determinism_tests.js" -sENVIRONMENT=node \
+    nice -n 5 em++ "${flags[@]}" $library_objects "${test_objects[@]}" \
+        -o "$out/determinism_tests.js" -sENVIRONMENT=node \
         -sNODERAWFS=1 -sALLOW_MEMORY_GROWTH=1 -sEXIT_RUNTIME=1 -sWASM_ASYNC_COMPILATION=0
     echo "build_wasm: $out/determinism_tests.js (run it with node)"
+fi
+if ((determinism_tests_web)); then
+    # The data the tests read, embedded at the absolute paths compiled into them (SRC@DST);
+    # SINGLE_FILE: the .wasm inside the .js, so the page runs from file:// (a browser fetches
+    # nothing beside a file:// page); EXIT_RUNTIME: main's status reaches the page's onExit.
+    mkdir -p "$out/web"
+    embeds=()
+    for d in examples/scenes tests/determinism/golden_hashes.txt tests/determinism/recordings; do
+        embeds+=(--embed-file "$root/$d@$root/$d")
+    done
+    nice -n 5 em++ "${flags[@]}" $library_objects "${test_objects[@]}" \
+        -o "$out/web/determinism_tests.js" -sENVIRONMENT=web -sSINGLE_FILE=1 \
+        -sALLOW_MEMORY_GROWTH=1 -sEXIT_RUNTIME=1 "${embeds[@]}"
+    cp apps/wasm/determinism_tests.html "$out/web/determinism_tests.html"
+    echo "build_wasm: $out/web/determinism_tests.html (run it in a browser)"
 fi
 echo "build_wasm: $out/sandbox.html ($(stat -c %s "$out/sandbox.html") bytes; wasm" \
      "$(stat -c %s "$out/tamias_sandbox.wasm") bytes) in $(( $(date +%s) - start )) s"
