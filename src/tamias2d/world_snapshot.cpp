@@ -173,8 +173,8 @@ void World::snapshot(std::vector<std::byte>& bytes) const {
     w.joints.write(out);
     w.sensors.write(out);
     w.events.write(out);
+    bytes = out.finish();
     std::vector<std::byte>& b = bytes;
-    b = out.finish();
     const std::uint64_t size = b.size() - header_size;
     for (int k = 0; k < 8; ++k)
         b[16 + std::size_t(k)] = std::byte(size >> (8 * k));
