@@ -211,17 +211,16 @@ template <class IO, class D> void joint_tail_io(IO& io, D& d) {
     if constexpr (requires { d.spring_target; })
         io("joint.spring_target", d.spring_target);
     if constexpr (requires { d.constraint_tuning; }) {
-        // (an optional ConstraintTuning as two optional doubles, set or unset together)
-        std::optional<double> hertz, ratio;
-        if (d.constraint_tuning) {
-            hertz = d.constraint_tuning->hertz;
-            ratio = d.constraint_tuning->damping_ratio;
-        }
+        // (an optional ConstraintTuning as a flag and its two values, 0 when unset)
+        bool has = d.constraint_tuning.has_value();
+        double hertz = has ? d.constraint_tuning->hertz : 0.0;
+        double ratio = has ? d.constraint_tuning->damping_ratio : 0.0;
+        io("joint.constraint_tuning", has);
         io("joint.constraint_tuning.hertz", hertz);
         io("joint.constraint_tuning.damping_ratio", ratio);
         if constexpr (!std::is_const_v<D>) {
-            if (hertz && ratio)
-                d.constraint_tuning = ConstraintTuning{*hertz, *ratio};
+            if (has)
+                d.constraint_tuning = ConstraintTuning{hertz, ratio};
             else
                 d.constraint_tuning.reset();
         }
