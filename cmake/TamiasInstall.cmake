@@ -14,6 +14,7 @@ install(TARGETS ${targets} EXPORT tamias2dTargets
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/tamias2d DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
         COMPONENT development)
 install(FILES ${PROJECT_BINARY_DIR}/include/tamias2d/version.hpp
+              ${PROJECT_BINARY_DIR}/include/tamias2d/config.hpp
               ${PROJECT_BINARY_DIR}/include/tamias2d/export.hpp
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/tamias2d COMPONENT development)
 if(TARGET tamias2d_io)

@@ -58,6 +58,12 @@ sed -e "s/@PROJECT_VERSION_MAJOR@/$major/" -e "s/@PROJECT_VERSION_MINOR@/$minor/
 cmp -s "$out/include/tamias2d/version.hpp.new" "$out/include/tamias2d/version.hpp" ||
     mv "$out/include/tamias2d/version.hpp.new" "$out/include/tamias2d/version.hpp"
 rm -f "$out/include/tamias2d/version.hpp.new"
+# tamias2d/config.hpp as CMake's default TAMIAS2D_EXCEPTIONS=ON generates it (cmake/config.hpp.in).
+sed -e "s/@TAMIAS2D_EXCEPTIONS@/ON/" -e "s/@TAMIAS2D_EXCEPTIONS_VALUE@/1/" cmake/config.hpp.in \
+    >"$out/include/tamias2d/config.hpp.new"
+cmp -s "$out/include/tamias2d/config.hpp.new" "$out/include/tamias2d/config.hpp" ||
+    mv "$out/include/tamias2d/config.hpp.new" "$out/include/tamias2d/config.hpp"
+rm -f "$out/include/tamias2d/config.hpp.new"
 # The export macros (GenerateExportHeader's tamias2d/export.hpp and tamias2d/io/export.hpp in
 # the CMake build): empty, as for a static library, since everything links into one module.
 mkdir -p "$out/include/tamias2d/io"

@@ -11,7 +11,9 @@
 #include <span>
 #include <vector>
 
+#include "tamias2d/config.hpp"
 #include "tamias2d/export.hpp"
+#include "tamias2d/result.hpp"
 #include "tamias2d/world.hpp"
 
 namespace tamias2d {
@@ -49,14 +51,17 @@ class TAMIAS2D_EXPORT Recorder {
     /// The version of the recording format this library writes and reads.
     static constexpr std::uint32_t format_version = 1;
 
-    /// Starts recording `world` from its state now. Throws ValidationError (rule "recording")
-    /// if the world has a custom filter or a body with a load function.
-    explicit Recorder(World& world, RecordOptions options = {});
     ~Recorder();
     Recorder(Recorder&&) noexcept;            ///< takes over the recording and the world
     Recorder& operator=(Recorder&&) noexcept; ///< takes over the recording and the world
     Recorder(const Recorder&) = delete;
     Recorder& operator=(const Recorder&) = delete;
+
+    // The calls below may throw and are declared only when TAMIAS2D_EXCEPTIONS is 1 (config.hpp).
+#if TAMIAS2D_EXCEPTIONS
+    /// Starts recording `world` from its state now. Throws ValidationError (rule "recording")
+    /// if the world has a custom filter or a body with a load function.
+    explicit Recorder(World& world, RecordOptions options = {});
 
     /// The recorded world, to read.
     const World& world() const;
@@ -241,6 +246,197 @@ class TAMIAS2D_EXPORT Recorder {
     void set_target_transform(BodyId body, Vec2d origin, double angle, double dt);
     /// World::apply_wind, recorded.
     void apply_wind(ShapeId shape, Vec2d wind, double drag, double lift, bool wake = true);
+#endif // TAMIAS2D_EXCEPTIONS
+
+    // The error-returning forms (result.hpp): each `try_` call is the call of the same name
+    // (try_create: the constructor), returning its result or the Error its throwing form would
+    // throw, instead of throwing. Declared whatever TAMIAS2D_EXCEPTIONS is.
+    /// the constructor, returning its Error instead of throwing it.
+    static Result<Recorder> try_create(World& world, RecordOptions options = {}) noexcept;
+    /// world, returning its Error instead of throwing it.
+    Result<const World*> try_world() const noexcept;
+    /// bytes, returning its Error instead of throwing it.
+    Result<std::vector<std::byte>> try_bytes() const noexcept;
+    /// steps, returning its Error instead of throwing it.
+    Result<std::uint64_t> try_steps() const noexcept;
+    /// calls, returning its Error instead of throwing it.
+    Result<std::uint64_t> try_calls() const noexcept;
+    /// create_body, returning its Error instead of throwing it.
+    Result<BodyId> try_create_body(const BodyDef& def) noexcept;
+    /// destroy_body, returning its Error instead of throwing it.
+    Result<void> try_destroy_body(BodyId body) noexcept;
+    /// create_shape, returning its Error instead of throwing it.
+    Result<ShapeId> try_create_shape(BodyId body, const ShapeDef& def) noexcept;
+    /// create_chain, returning its Error instead of throwing it.
+    Result<std::vector<ShapeId>> try_create_chain(BodyId body,
+                                                  std::span<const ShapeDef> segments) noexcept;
+    /// destroy_shape, returning its Error instead of throwing it.
+    Result<void> try_destroy_shape(ShapeId shape) noexcept;
+    /// set_filter, returning its Error instead of throwing it.
+    Result<void> try_set_filter(ShapeId shape, const Filter& filter) noexcept;
+    /// set_friction, returning its Error instead of throwing it.
+    Result<void> try_set_friction(ShapeId shape, double friction) noexcept;
+    /// set_restitution, returning its Error instead of throwing it.
+    Result<void> try_set_restitution(ShapeId shape, double restitution) noexcept;
+    /// set_density, returning its Error instead of throwing it.
+    Result<void> try_set_density(ShapeId shape, double density,
+                                 bool update_body_mass = true) noexcept;
+    /// set_circle, returning its Error instead of throwing it.
+    Result<void> try_set_circle(ShapeId shape, const Circle& circle) noexcept;
+    /// set_capsule, returning its Error instead of throwing it.
+    Result<void> try_set_capsule(ShapeId shape, const Capsule& capsule) noexcept;
+    /// set_polygon, returning its Error instead of throwing it.
+    Result<void> try_set_polygon(ShapeId shape, const Polygon& polygon) noexcept;
+    /// set_segment, returning its Error instead of throwing it.
+    Result<void> try_set_segment(ShapeId shape, const Segment& segment) noexcept;
+    /// set_sensor, returning its Error instead of throwing it.
+    Result<void> try_set_sensor(ShapeId shape, bool is_sensor) noexcept;
+    /// step, returning its Error instead of throwing it.
+    Result<void> try_step(double dt) noexcept;
+    /// set_gravity, returning its Error instead of throwing it.
+    Result<void> try_set_gravity(Vec2d g) noexcept;
+    /// set_transform, returning its Error instead of throwing it.
+    Result<void> try_set_transform(BodyId body, Vec2d origin, double angle) noexcept;
+    /// set_velocity, returning its Error instead of throwing it.
+    Result<void> try_set_velocity(BodyId body, Vec2d v) noexcept;
+    /// set_angular_velocity, returning its Error instead of throwing it.
+    Result<void> try_set_angular_velocity(BodyId body, double omega) noexcept;
+    /// set_damping, returning its Error instead of throwing it.
+    Result<void> try_set_damping(BodyId body, double linear, double angular) noexcept;
+    /// set_force, returning its Error instead of throwing it.
+    Result<void> try_set_force(BodyId body, Vec2d force) noexcept;
+    /// set_torque, returning its Error instead of throwing it.
+    Result<void> try_set_torque(BodyId body, double torque) noexcept;
+    /// apply_force, returning its Error instead of throwing it.
+    Result<void> try_apply_force(BodyId body, Vec2d force, Vec2d world_point) noexcept;
+    /// apply_torque, returning its Error instead of throwing it.
+    Result<void> try_apply_torque(BodyId body, double torque) noexcept;
+    /// apply_impulse, returning its Error instead of throwing it.
+    Result<void> try_apply_impulse(BodyId body, Vec2d impulse, Vec2d world_point) noexcept;
+    /// create_joint, returning its Error instead of throwing it.
+    Result<JointId> try_create_joint(const RevoluteJointDef& def) noexcept;
+    /// create_joint, returning its Error instead of throwing it.
+    Result<JointId> try_create_joint(const DistanceJointDef& def) noexcept;
+    /// create_joint, returning its Error instead of throwing it.
+    Result<JointId> try_create_joint(const TargetJointDef& def) noexcept;
+    /// create_joint, returning its Error instead of throwing it.
+    Result<JointId> try_create_joint(const PrismaticJointDef& def) noexcept;
+    /// create_joint, returning its Error instead of throwing it.
+    Result<JointId> try_create_joint(const WeldJointDef& def) noexcept;
+    /// create_joint, returning its Error instead of throwing it.
+    Result<JointId> try_create_joint(const WheelJointDef& def) noexcept;
+    /// create_joint, returning its Error instead of throwing it.
+    Result<JointId> try_create_joint(const MotorJointDef& def) noexcept;
+    /// create_joint, returning its Error instead of throwing it.
+    Result<JointId> try_create_joint(const FilterJointDef& def) noexcept;
+    /// set_motor_joint_offsets, returning its Error instead of throwing it.
+    Result<void> try_set_motor_joint_offsets(JointId joint, Vec2d linear_offset,
+                                             double angular_offset) noexcept;
+    /// set_joint_target, returning its Error instead of throwing it.
+    Result<void> try_set_joint_target(JointId joint, Vec2d target) noexcept;
+    /// destroy_joint, returning its Error instead of throwing it.
+    Result<void> try_destroy_joint(JointId joint) noexcept;
+    /// set_joint_motor_speed, returning its Error instead of throwing it.
+    Result<void> try_set_joint_motor_speed(JointId joint, double speed) noexcept;
+    /// enable_joint_limit, returning its Error instead of throwing it.
+    Result<void> try_enable_joint_limit(JointId joint, bool enable) noexcept;
+    /// set_joint_limits, returning its Error instead of throwing it.
+    Result<void> try_set_joint_limits(JointId joint, double lower, double upper) noexcept;
+    /// enable_joint_motor, returning its Error instead of throwing it.
+    Result<void> try_enable_joint_motor(JointId joint, bool enable) noexcept;
+    /// set_joint_max_motor_torque, returning its Error instead of throwing it.
+    Result<void> try_set_joint_max_motor_torque(JointId joint, double torque) noexcept;
+    /// set_joint_max_motor_force, returning its Error instead of throwing it.
+    Result<void> try_set_joint_max_motor_force(JointId joint, double force) noexcept;
+    /// enable_joint_spring, returning its Error instead of throwing it.
+    Result<void> try_enable_joint_spring(JointId joint, bool enable) noexcept;
+    /// set_joint_spring, returning its Error instead of throwing it.
+    Result<void> try_set_joint_spring(JointId joint, double hertz, double damping_ratio) noexcept;
+    /// set_joint_spring_target, returning its Error instead of throwing it.
+    Result<void> try_set_joint_spring_target(JointId joint, double target) noexcept;
+    /// set_distance_joint_length, returning its Error instead of throwing it.
+    Result<void> try_set_distance_joint_length(JointId joint, double length) noexcept;
+    /// set_constraint_tuning, returning its Error instead of throwing it.
+    Result<void> try_set_constraint_tuning(JointId joint, double hertz,
+                                           double damping_ratio) noexcept;
+    /// set_joint_collide_connected, returning its Error instead of throwing it.
+    Result<void> try_set_joint_collide_connected(JointId joint, bool collide) noexcept;
+    /// set_joint_break_force, returning its Error instead of throwing it.
+    Result<void> try_set_joint_break_force(JointId joint, double force) noexcept;
+    /// set_joint_break_torque, returning its Error instead of throwing it.
+    Result<void> try_set_joint_break_torque(JointId joint, double torque) noexcept;
+    /// set_awake, returning its Error instead of throwing it.
+    Result<void> try_set_awake(BodyId body, bool awake) noexcept;
+    /// restore, returning its Error instead of throwing it.
+    Result<void> try_restore(std::span<const std::byte> snapshot) noexcept;
+    /// set_hit_event_threshold, returning its Error instead of throwing it.
+    Result<void> try_set_hit_event_threshold(double speed) noexcept;
+    /// set_hit_events_enabled, returning its Error instead of throwing it.
+    Result<void> try_set_hit_events_enabled(ShapeId shape, bool on) noexcept;
+    /// set_contact_events_enabled, returning its Error instead of throwing it.
+    Result<void> try_set_contact_events_enabled(ShapeId shape, bool on) noexcept;
+    /// set_sensor_events_enabled, returning its Error instead of throwing it.
+    Result<void> try_set_sensor_events_enabled(ShapeId shape, bool on) noexcept;
+    /// set_move_events_enabled, returning its Error instead of throwing it.
+    Result<void> try_set_move_events_enabled(BodyId body, bool on) noexcept;
+    /// set_joint_event_thresholds, returning its Error instead of throwing it.
+    Result<void> try_set_joint_event_thresholds(JointId joint, double force,
+                                                double torque) noexcept;
+    /// explode, returning its Error instead of throwing it.
+    Result<std::size_t> try_explode(const ExplosionDef& def) noexcept;
+    /// set_user_data, returning its Error instead of throwing it.
+    Result<void> try_set_user_data(UserData data) noexcept;
+    /// set_user_data, returning its Error instead of throwing it.
+    Result<void> try_set_user_data(BodyId body, UserData data) noexcept;
+    /// set_user_data, returning its Error instead of throwing it.
+    Result<void> try_set_user_data(ShapeId shape, UserData data) noexcept;
+    /// set_user_data, returning its Error instead of throwing it.
+    Result<void> try_set_user_data(JointId joint, UserData data) noexcept;
+    /// set_body_type, returning its Error instead of throwing it.
+    Result<void> try_set_body_type(BodyId body, BodyType type) noexcept;
+    /// set_enabled, returning its Error instead of throwing it.
+    Result<void> try_set_enabled(BodyId body, bool enabled) noexcept;
+    /// set_gravity_scale, returning its Error instead of throwing it.
+    Result<void> try_set_gravity_scale(BodyId body, double scale) noexcept;
+    /// set_bullet, returning its Error instead of throwing it.
+    Result<void> try_set_bullet(BodyId body, bool bullet) noexcept;
+    /// set_motion_locks, returning its Error instead of throwing it.
+    Result<void> try_set_motion_locks(BodyId body, MotionLocks locks) noexcept;
+    /// set_fixed_rotation, returning its Error instead of throwing it.
+    Result<void> try_set_fixed_rotation(BodyId body, bool fixed) noexcept;
+    /// set_mass_data, returning its Error instead of throwing it.
+    Result<void> try_set_mass_data(BodyId body, const BodyMassData& data) noexcept;
+    /// reset_mass_data, returning its Error instead of throwing it.
+    Result<void> try_reset_mass_data(BodyId body) noexcept;
+    /// set_sleep_threshold, returning its Error instead of throwing it.
+    Result<void> try_set_sleep_threshold(BodyId body, double speed) noexcept;
+    /// wake_touching, returning its Error instead of throwing it.
+    Result<void> try_wake_touching(BodyId body) noexcept;
+    /// set_continuous, returning its Error instead of throwing it.
+    Result<void> try_set_continuous(bool enabled) noexcept;
+    /// set_sleeping, returning its Error instead of throwing it.
+    Result<void> try_set_sleeping(bool enabled) noexcept;
+    /// set_contact_tuning, returning its Error instead of throwing it.
+    Result<void> try_set_contact_tuning(double hertz, double damping_ratio,
+                                        double push_max_velocity) noexcept;
+    /// set_joint_tuning, returning its Error instead of throwing it.
+    Result<void> try_set_joint_tuning(double hertz, double damping_ratio) noexcept;
+    /// set_restitution_threshold, returning its Error instead of throwing it.
+    Result<void> try_set_restitution_threshold(double speed) noexcept;
+    /// set_maximum_linear_speed, returning its Error instead of throwing it.
+    Result<void> try_set_maximum_linear_speed(double speed) noexcept;
+    /// set_workers, returning its Error instead of throwing it.
+    Result<void> try_set_workers(int workers) noexcept;
+    /// set_warm_starting, returning its Error instead of throwing it.
+    Result<void> try_set_warm_starting(bool enabled) noexcept;
+    /// set_user_material, returning its Error instead of throwing it.
+    Result<void> try_set_user_material(ShapeId shape, std::uint64_t id) noexcept;
+    /// set_target_transform, returning its Error instead of throwing it.
+    Result<void> try_set_target_transform(BodyId body, Vec2d origin, double angle,
+                                          double dt) noexcept;
+    /// apply_wind, returning its Error instead of throwing it.
+    Result<void> try_apply_wind(ShapeId shape, Vec2d wind, double drag, double lift,
+                                bool wake = true) noexcept;
 
     /// \cond INTERNAL
     struct Impl; // the recording's state (src/tamias2d/recording/recorder.cpp)

@@ -13,9 +13,11 @@
 #include <string_view>
 #include <vector>
 
+#include "tamias2d/config.hpp"
 #include "tamias2d/export.hpp"
 #include "tamias2d/handles.hpp"
 #include "tamias2d/recording_error.hpp"
+#include "tamias2d/result.hpp"
 #include "tamias2d/task_system.hpp"
 #include "tamias2d/world.hpp"
 
@@ -64,6 +66,12 @@ struct RecordedCall {
 /// each advance() makes the recorded calls up to the next step, the step, and compares.
 class TAMIAS2D_EXPORT Replayer {
   public:
+    ~Replayer();
+    Replayer(Replayer&&) noexcept;            ///< takes over the replay and its world
+    Replayer& operator=(Replayer&&) noexcept; ///< takes over the replay and its world
+
+    // The calls below may throw and are declared only when TAMIAS2D_EXCEPTIONS is 1 (config.hpp).
+#if TAMIAS2D_EXCEPTIONS
     /// Reads the recording whole (every record must be readable) and builds its world, stepping
     /// with `workers` workers and `task_system` (the host's: the results are the same bits on
     /// any number). Throws RecordingError for a recording that is not one, of another format
@@ -72,9 +80,6 @@ class TAMIAS2D_EXPORT Replayer {
     /// recording); ValidationError for workers < 1.
     explicit Replayer(std::span<const std::byte> recording, int workers = 1,
                       const TaskSystem& task_system = {});
-    ~Replayer();
-    Replayer(Replayer&&) noexcept;            ///< takes over the replay and its world
-    Replayer& operator=(Replayer&&) noexcept; ///< takes over the replay and its world
 
     /// The replayed world (read it between advances; changing it makes the replay diverge).
     const World& world() const;
@@ -91,6 +96,26 @@ class TAMIAS2D_EXPORT Replayer {
     /// differ, or if a recorded call is refused (an exception) by the replayed world. After a
     /// divergence the replay stops (done() is true). Does nothing once done.
     std::optional<ReplayDivergence> advance();
+#endif // TAMIAS2D_EXCEPTIONS
+
+    // The error-returning forms (result.hpp): each `try_` call is the call of the same name
+    // (try_create: the constructor), returning its result or the Error its throwing form would
+    // throw, instead of throwing. Declared whatever TAMIAS2D_EXCEPTIONS is.
+    /// the constructor, returning its Error instead of throwing it.
+    static Result<Replayer> try_create(std::span<const std::byte> recording, int workers = 1,
+                                       const TaskSystem& task_system = {}) noexcept;
+    /// world, returning its Error instead of throwing it.
+    Result<const World*> try_world() const noexcept;
+    /// done, returning its Error instead of throwing it.
+    Result<bool> try_done() const noexcept;
+    /// steps, returning its Error instead of throwing it.
+    Result<std::uint64_t> try_steps() const noexcept;
+    /// calls, returning its Error instead of throwing it.
+    Result<std::uint64_t> try_calls() const noexcept;
+    /// recorded_steps, returning its Error instead of throwing it.
+    Result<std::uint64_t> try_recorded_steps() const noexcept;
+    /// advance, returning its Error instead of throwing it.
+    Result<std::optional<ReplayDivergence>> try_advance() noexcept;
 
     /// \cond INTERNAL
     struct Impl;
@@ -100,6 +125,7 @@ class TAMIAS2D_EXPORT Replayer {
     std::unique_ptr<Impl> impl_;
 };
 
+#if TAMIAS2D_EXCEPTIONS
 /// Replays a recording whole, stopping at the first divergence. Throws as Replayer's
 /// constructor does.
 TAMIAS2D_EXPORT ReplayReport replay(std::span<const std::byte> recording, int workers = 1,
@@ -108,5 +134,14 @@ TAMIAS2D_EXPORT ReplayReport replay(std::span<const std::byte> recording, int wo
 /// The records of a recording, in order, without replaying it (tools, tests). Throws
 /// RecordingError as Replayer does.
 TAMIAS2D_EXPORT std::vector<RecordedCall> recorded_calls(std::span<const std::byte> recording);
+#endif // TAMIAS2D_EXCEPTIONS
+
+/// replay, returning its Error instead of throwing it.
+TAMIAS2D_EXPORT Result<ReplayReport> try_replay(std::span<const std::byte> recording,
+                                                int workers = 1,
+                                                const TaskSystem& task_system = {}) noexcept;
+/// recorded_calls, returning its Error instead of throwing it.
+TAMIAS2D_EXPORT Result<std::vector<RecordedCall>>
+try_recorded_calls(std::span<const std::byte> recording) noexcept;
 
 } // namespace tamias2d

@@ -6,7 +6,9 @@
 #include <span>
 #include <vector>
 
+#include "tamias2d/config.hpp"
 #include "tamias2d/export.hpp"
+#include "tamias2d/result.hpp"
 #include "tamias2d/shapes.hpp"
 #include "tamias2d/user_data.hpp"
 
@@ -59,6 +61,7 @@ struct ShapeDef {
     UserData user_data = 0; ///< the game's own value (user_data.hpp), not simulation state
 };
 
+#if TAMIAS2D_EXCEPTIONS
 /// A rectangle w x h (m) centred on the body origin (or on `center`, rotated by `angle`).
 TAMIAS2D_EXPORT ShapeDef box_shape(double width, double height, Material material = {},
                                    Vec2d center = {}, double angle = 0.0);
@@ -78,5 +81,28 @@ TAMIAS2D_EXPORT ShapeDef segment_shape(Vec2d point1, Vec2d point2, Material mate
 /// creates them all at once.
 TAMIAS2D_EXPORT std::vector<ShapeDef> chain_shapes(std::span<const Vec2d> points, bool loop,
                                                    Material material = {});
+#endif // TAMIAS2D_EXCEPTIONS
+
+// The error-returning forms (result.hpp): each `try_` call is the call of the same name,
+// returning its result or the Error its throwing form would throw, instead of throwing.
+// Declared whatever TAMIAS2D_EXCEPTIONS is.
+/// box_shape, returning its Error instead of throwing it.
+TAMIAS2D_EXPORT Result<ShapeDef> try_box_shape(double width, double height, Material material = {},
+                                               Vec2d center = {}, double angle = 0.0) noexcept;
+/// circle_shape, returning its Error instead of throwing it.
+TAMIAS2D_EXPORT Result<ShapeDef> try_circle_shape(double radius, Material material = {},
+                                                  Vec2d center = {}) noexcept;
+/// polygon_shape, returning its Error instead of throwing it.
+TAMIAS2D_EXPORT Result<ShapeDef> try_polygon_shape(std::span<const Vec2d> points,
+                                                   Material material = {}) noexcept;
+/// capsule_shape, returning its Error instead of throwing it.
+TAMIAS2D_EXPORT Result<ShapeDef> try_capsule_shape(Vec2d center1, Vec2d center2, double radius,
+                                                   Material material = {}) noexcept;
+/// segment_shape, returning its Error instead of throwing it.
+TAMIAS2D_EXPORT Result<ShapeDef> try_segment_shape(Vec2d point1, Vec2d point2,
+                                                   Material material = {}) noexcept;
+/// chain_shapes, returning its Error instead of throwing it.
+TAMIAS2D_EXPORT Result<std::vector<ShapeDef>>
+try_chain_shapes(std::span<const Vec2d> points, bool loop, Material material = {}) noexcept;
 
 } // namespace tamias2d

@@ -29,6 +29,7 @@
 #include "tamias2d/recorder.hpp"
 #include "tamias2d/recording_error.hpp"
 #include "tamias2d/replay.hpp"
+#include "tamias2d/result.hpp"
 #include "tamias2d/shape_def.hpp"
 #include "tamias2d/shapes.hpp"
 #include "tamias2d/snapshot_error.hpp"

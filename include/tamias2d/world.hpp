@@ -13,6 +13,7 @@
 #include "tamias2d/aabb.hpp"
 #include "tamias2d/body_def.hpp"
 #include "tamias2d/body_state.hpp"
+#include "tamias2d/config.hpp"
 #include "tamias2d/contact_hooks.hpp"
 #include "tamias2d/contact_info.hpp"
 #include "tamias2d/debug_draw.hpp"
@@ -29,6 +30,7 @@
 #include "tamias2d/profile.hpp"
 #include "tamias2d/query_filter.hpp"
 #include "tamias2d/query_results.hpp"
+#include "tamias2d/result.hpp"
 #include "tamias2d/shape_def.hpp"
 #include "tamias2d/shapes.hpp"
 #include "tamias2d/snapshot_error.hpp"
@@ -47,9 +49,6 @@ namespace tamias2d {
 /// magnitudes up to 1e12 in SI units, sizes from 1e-12; docs/design.md, "Supported ranges").
 class TAMIAS2D_EXPORT World {
   public:
-    /// An empty world with the given settings; throws ValidationError if a setting breaks its
-    /// constraint (e.g. substeps < 1, a non-finite gravity).
-    explicit World(const WorldDef& def = {});
     ~World();
     /// Worlds move (handles stay valid in the moved-to world, which keeps the tag) but are not
     /// copied: a copy of a whole simulation is rarely meant, and a scene file (io/scene.hpp)
@@ -59,6 +58,14 @@ class TAMIAS2D_EXPORT World {
     World& operator=(World&&) noexcept;
     World(const World&) = delete;
     World& operator=(const World&) = delete;
+
+    // Every call below this point may throw (ValidationError, InvalidHandle, WrongKind, ...,
+    // std::bad_alloc: none is noexcept) and is declared only when TAMIAS2D_EXCEPTIONS is 1
+    // (config.hpp); its error-returning form, declared at the end of the class, always is.
+#if TAMIAS2D_EXCEPTIONS
+    /// An empty world with the given settings; throws ValidationError if a setting breaks its
+    /// constraint (e.g. substeps < 1, a non-finite gravity).
+    explicit World(const WorldDef& def = {});
 
     /// The world's tag, which every handle it issues carries (BodyId::world): distinct for
     /// every World of the process and never 0, so that a handle of another world, or a default
@@ -410,8 +417,10 @@ class TAMIAS2D_EXPORT World {
     // built or restored from it has the values it had when the snapshot was taken (a pointer
     // held there means something only in the process that took the snapshot).
 
+#endif
     /// The version of the snapshot format this library writes and reads.
     static constexpr std::uint32_t snapshot_format_version = 1;
+#if TAMIAS2D_EXCEPTIONS
     /// The world's state as bytes (a versioned header with an XXH64 checksum, then
     /// little-endian fields): for save games, rollback and bug reports. Call between steps.
     /// Changes nothing (pending mass updates are done, as a step would do them).
@@ -833,6 +842,477 @@ class TAMIAS2D_EXPORT World {
     /// A hash of the complete simulation state (bit patterns of every double): equal hashes
     /// mean bitwise-equal worlds. Used by the determinism and strong-guarantee tests.
     std::uint64_t state_hash() const;
+
+#endif // TAMIAS2D_EXCEPTIONS
+
+    // --- error-returning forms ---
+    // Each `try_` call is the call of the same name (try_create: the constructor) with the same
+    // arguments, effects and guarantee, returning its result, or the Error its throwing form
+    // would throw (result.hpp), instead of throwing. A refused call changes nothing, as the
+    // throwing form's does. None throws; each is declared whatever TAMIAS2D_EXCEPTIONS is.
+    /// the constructor, returning its Error instead of throwing it.
+    static Result<World> try_create(const WorldDef& def = {}) noexcept;
+    /// tag, returning its Error instead of throwing it.
+    Result<std::uint32_t> try_tag() const noexcept;
+    /// create_body, returning its Error instead of throwing it.
+    Result<BodyId> try_create_body(const BodyDef& def) noexcept;
+    /// destroy_body, returning its Error instead of throwing it.
+    Result<void> try_destroy_body(BodyId body) noexcept;
+    /// create_shape, returning its Error instead of throwing it.
+    Result<ShapeId> try_create_shape(BodyId body, const ShapeDef& def) noexcept;
+    /// create_chain, returning its Error instead of throwing it.
+    Result<std::vector<ShapeId>> try_create_chain(BodyId body,
+                                                  std::span<const ShapeDef> segments) noexcept;
+    /// destroy_shape, returning its Error instead of throwing it.
+    Result<void> try_destroy_shape(ShapeId shape) noexcept;
+    /// set_filter, returning its Error instead of throwing it.
+    Result<void> try_set_filter(ShapeId shape, const Filter& filter) noexcept;
+    /// filter, returning its Error instead of throwing it.
+    Result<Filter> try_filter(ShapeId shape) const noexcept;
+    /// set_custom_filter, returning its Error instead of throwing it.
+    Result<void> try_set_custom_filter(std::function<bool(ShapeId, ShapeId)> filter) noexcept;
+    /// is_valid, returning its Error instead of throwing it.
+    Result<bool> try_is_valid(BodyId body) const noexcept;
+    /// is_valid, returning its Error instead of throwing it.
+    Result<bool> try_is_valid(ShapeId shape) const noexcept;
+    /// bodies, returning its Error instead of throwing it.
+    Result<std::vector<BodyId>> try_bodies() const noexcept;
+    /// shapes, returning its Error instead of throwing it.
+    Result<std::vector<ShapeId>> try_shapes(BodyId body) const noexcept;
+    /// body_count, returning its Error instead of throwing it.
+    Result<std::size_t> try_body_count() const noexcept;
+    /// set_friction, returning its Error instead of throwing it.
+    Result<void> try_set_friction(ShapeId shape, double friction) noexcept;
+    /// friction, returning its Error instead of throwing it.
+    Result<double> try_friction(ShapeId shape) const noexcept;
+    /// set_restitution, returning its Error instead of throwing it.
+    Result<void> try_set_restitution(ShapeId shape, double restitution) noexcept;
+    /// restitution, returning its Error instead of throwing it.
+    Result<double> try_restitution(ShapeId shape) const noexcept;
+    /// set_density, returning its Error instead of throwing it.
+    Result<void> try_set_density(ShapeId shape, double density,
+                                 bool update_body_mass = true) noexcept;
+    /// density, returning its Error instead of throwing it.
+    Result<double> try_density(ShapeId shape) const noexcept;
+    /// set_circle, returning its Error instead of throwing it.
+    Result<void> try_set_circle(ShapeId shape, const Circle& circle) noexcept;
+    /// set_capsule, returning its Error instead of throwing it.
+    Result<void> try_set_capsule(ShapeId shape, const Capsule& capsule) noexcept;
+    /// set_polygon, returning its Error instead of throwing it.
+    Result<void> try_set_polygon(ShapeId shape, const Polygon& polygon) noexcept;
+    /// set_segment, returning its Error instead of throwing it.
+    Result<void> try_set_segment(ShapeId shape, const Segment& segment) noexcept;
+    /// shape_geometry, returning its Error instead of throwing it.
+    Result<Geometry> try_shape_geometry(ShapeId shape) const noexcept;
+    /// set_sensor, returning its Error instead of throwing it.
+    Result<void> try_set_sensor(ShapeId shape, bool is_sensor) noexcept;
+    /// is_sensor, returning its Error instead of throwing it.
+    Result<bool> try_is_sensor(ShapeId shape) const noexcept;
+    /// step, returning its Error instead of throwing it.
+    Result<void> try_step(double dt) noexcept;
+    /// time, returning its Error instead of throwing it.
+    Result<double> try_time() const noexcept;
+    /// set_gravity, returning its Error instead of throwing it.
+    Result<void> try_set_gravity(Vec2d g) noexcept;
+    /// gravity, returning its Error instead of throwing it.
+    Result<Vec2d> try_gravity() const noexcept;
+    /// settings, returning its Error instead of throwing it.
+    Result<WorldDef> try_settings() const noexcept;
+    /// state, returning its Error instead of throwing it.
+    Result<BodyState> try_state(BodyId body) const noexcept;
+    /// position, returning its Error instead of throwing it.
+    Result<Vec2d> try_position(BodyId body) const noexcept;
+    /// origin, returning its Error instead of throwing it.
+    Result<Vec2d> try_origin(BodyId body) const noexcept;
+    /// orientation, returning its Error instead of throwing it.
+    Result<double> try_orientation(BodyId body) const noexcept;
+    /// velocity, returning its Error instead of throwing it.
+    Result<Vec2d> try_velocity(BodyId body) const noexcept;
+    /// angular_velocity, returning its Error instead of throwing it.
+    Result<double> try_angular_velocity(BodyId body) const noexcept;
+    /// mass, returning its Error instead of throwing it.
+    Result<double> try_mass(BodyId body) const noexcept;
+    /// inertia, returning its Error instead of throwing it.
+    Result<double> try_inertia(BodyId body) const noexcept;
+    /// local_center, returning its Error instead of throwing it.
+    Result<Vec2d> try_local_center(BodyId body) const noexcept;
+    /// type, returning its Error instead of throwing it.
+    Result<BodyType> try_type(BodyId body) const noexcept;
+    /// name, returning its Error instead of throwing it.
+    Result<std::string> try_name(BodyId body) const noexcept;
+    /// set_transform, returning its Error instead of throwing it.
+    Result<void> try_set_transform(BodyId body, Vec2d origin, double angle) noexcept;
+    /// set_velocity, returning its Error instead of throwing it.
+    Result<void> try_set_velocity(BodyId body, Vec2d v) noexcept;
+    /// set_angular_velocity, returning its Error instead of throwing it.
+    Result<void> try_set_angular_velocity(BodyId body, double omega) noexcept;
+    /// set_damping, returning its Error instead of throwing it.
+    Result<void> try_set_damping(BodyId body, double linear, double angular) noexcept;
+    /// linear_damping, returning its Error instead of throwing it.
+    Result<double> try_linear_damping(BodyId body) const noexcept;
+    /// angular_damping, returning its Error instead of throwing it.
+    Result<double> try_angular_damping(BodyId body) const noexcept;
+    /// set_force, returning its Error instead of throwing it.
+    Result<void> try_set_force(BodyId body, Vec2d force) noexcept;
+    /// set_torque, returning its Error instead of throwing it.
+    Result<void> try_set_torque(BodyId body, double torque) noexcept;
+    /// apply_force, returning its Error instead of throwing it.
+    Result<void> try_apply_force(BodyId body, Vec2d force, Vec2d world_point) noexcept;
+    /// apply_torque, returning its Error instead of throwing it.
+    Result<void> try_apply_torque(BodyId body, double torque) noexcept;
+    /// apply_impulse, returning its Error instead of throwing it.
+    Result<void> try_apply_impulse(BodyId body, Vec2d impulse, Vec2d world_point) noexcept;
+    /// set_load, returning its Error instead of throwing it.
+    Result<void> try_set_load(BodyId body, LoadFunction load) noexcept;
+    /// create_joint, returning its Error instead of throwing it.
+    Result<JointId> try_create_joint(const RevoluteJointDef& def) noexcept;
+    /// create_joint, returning its Error instead of throwing it.
+    Result<JointId> try_create_joint(const DistanceJointDef& def) noexcept;
+    /// create_joint, returning its Error instead of throwing it.
+    Result<JointId> try_create_joint(const TargetJointDef& def) noexcept;
+    /// create_joint, returning its Error instead of throwing it.
+    Result<JointId> try_create_joint(const PrismaticJointDef& def) noexcept;
+    /// create_joint, returning its Error instead of throwing it.
+    Result<JointId> try_create_joint(const WeldJointDef& def) noexcept;
+    /// create_joint, returning its Error instead of throwing it.
+    Result<JointId> try_create_joint(const WheelJointDef& def) noexcept;
+    /// create_joint, returning its Error instead of throwing it.
+    Result<JointId> try_create_joint(const MotorJointDef& def) noexcept;
+    /// create_joint, returning its Error instead of throwing it.
+    Result<JointId> try_create_joint(const FilterJointDef& def) noexcept;
+    /// set_motor_joint_offsets, returning its Error instead of throwing it.
+    Result<void> try_set_motor_joint_offsets(JointId joint, Vec2d linear_offset,
+                                             double angular_offset) noexcept;
+    /// set_joint_target, returning its Error instead of throwing it.
+    Result<void> try_set_joint_target(JointId joint, Vec2d target) noexcept;
+    /// destroy_joint, returning its Error instead of throwing it.
+    Result<void> try_destroy_joint(JointId joint) noexcept;
+    /// is_valid, returning its Error instead of throwing it.
+    Result<bool> try_is_valid(JointId joint) const noexcept;
+    /// joint_reaction_force, returning its Error instead of throwing it.
+    Result<Vec2d> try_joint_reaction_force(JointId joint) const noexcept;
+    /// joint_reaction_torque, returning its Error instead of throwing it.
+    Result<double> try_joint_reaction_torque(JointId joint) const noexcept;
+    /// joint_angle, returning its Error instead of throwing it.
+    Result<double> try_joint_angle(JointId joint) const noexcept;
+    /// joint_translation, returning its Error instead of throwing it.
+    Result<double> try_joint_translation(JointId joint) const noexcept;
+    /// set_joint_motor_speed, returning its Error instead of throwing it.
+    Result<void> try_set_joint_motor_speed(JointId joint, double speed) noexcept;
+    /// broken_joints, returning its Error instead of throwing it.
+    Result<std::span<const JointId>> try_broken_joints() const noexcept;
+    /// joint_count, returning its Error instead of throwing it.
+    Result<std::size_t> try_joint_count() const noexcept;
+    /// joint_kind, returning its Error instead of throwing it.
+    Result<JointKind> try_joint_kind(JointId joint) const noexcept;
+    /// joint_body_a, returning its Error instead of throwing it.
+    Result<BodyId> try_joint_body_a(JointId joint) const noexcept;
+    /// joint_body_b, returning its Error instead of throwing it.
+    Result<BodyId> try_joint_body_b(JointId joint) const noexcept;
+    /// enable_joint_limit, returning its Error instead of throwing it.
+    Result<void> try_enable_joint_limit(JointId joint, bool enable) noexcept;
+    /// is_joint_limit_enabled, returning its Error instead of throwing it.
+    Result<bool> try_is_joint_limit_enabled(JointId joint) const noexcept;
+    /// set_joint_limits, returning its Error instead of throwing it.
+    Result<void> try_set_joint_limits(JointId joint, double lower, double upper) noexcept;
+    /// joint_limits, returning its Error instead of throwing it.
+    Result<JointLimits> try_joint_limits(JointId joint) const noexcept;
+    /// enable_joint_motor, returning its Error instead of throwing it.
+    Result<void> try_enable_joint_motor(JointId joint, bool enable) noexcept;
+    /// is_joint_motor_enabled, returning its Error instead of throwing it.
+    Result<bool> try_is_joint_motor_enabled(JointId joint) const noexcept;
+    /// joint_motor_speed, returning its Error instead of throwing it.
+    Result<double> try_joint_motor_speed(JointId joint) const noexcept;
+    /// set_joint_max_motor_torque, returning its Error instead of throwing it.
+    Result<void> try_set_joint_max_motor_torque(JointId joint, double torque) noexcept;
+    /// joint_max_motor_torque, returning its Error instead of throwing it.
+    Result<double> try_joint_max_motor_torque(JointId joint) const noexcept;
+    /// set_joint_max_motor_force, returning its Error instead of throwing it.
+    Result<void> try_set_joint_max_motor_force(JointId joint, double force) noexcept;
+    /// joint_max_motor_force, returning its Error instead of throwing it.
+    Result<double> try_joint_max_motor_force(JointId joint) const noexcept;
+    /// enable_joint_spring, returning its Error instead of throwing it.
+    Result<void> try_enable_joint_spring(JointId joint, bool enable) noexcept;
+    /// is_joint_spring_enabled, returning its Error instead of throwing it.
+    Result<bool> try_is_joint_spring_enabled(JointId joint) const noexcept;
+    /// set_joint_spring, returning its Error instead of throwing it.
+    Result<void> try_set_joint_spring(JointId joint, double hertz, double damping_ratio) noexcept;
+    /// joint_spring_hertz, returning its Error instead of throwing it.
+    Result<double> try_joint_spring_hertz(JointId joint) const noexcept;
+    /// joint_spring_damping_ratio, returning its Error instead of throwing it.
+    Result<double> try_joint_spring_damping_ratio(JointId joint) const noexcept;
+    /// set_joint_spring_target, returning its Error instead of throwing it.
+    Result<void> try_set_joint_spring_target(JointId joint, double target) noexcept;
+    /// joint_spring_target, returning its Error instead of throwing it.
+    Result<double> try_joint_spring_target(JointId joint) const noexcept;
+    /// set_distance_joint_length, returning its Error instead of throwing it.
+    Result<void> try_set_distance_joint_length(JointId joint, double length) noexcept;
+    /// distance_joint_length, returning its Error instead of throwing it.
+    Result<double> try_distance_joint_length(JointId joint) const noexcept;
+    /// set_constraint_tuning, returning its Error instead of throwing it.
+    Result<void> try_set_constraint_tuning(JointId joint, double hertz,
+                                           double damping_ratio) noexcept;
+    /// constraint_tuning, returning its Error instead of throwing it.
+    Result<ConstraintTuning> try_constraint_tuning(JointId joint) const noexcept;
+    /// set_joint_collide_connected, returning its Error instead of throwing it.
+    Result<void> try_set_joint_collide_connected(JointId joint, bool collide) noexcept;
+    /// joint_collide_connected, returning its Error instead of throwing it.
+    Result<bool> try_joint_collide_connected(JointId joint) const noexcept;
+    /// set_joint_break_force, returning its Error instead of throwing it.
+    Result<void> try_set_joint_break_force(JointId joint, double force) noexcept;
+    /// joint_break_force, returning its Error instead of throwing it.
+    Result<double> try_joint_break_force(JointId joint) const noexcept;
+    /// set_joint_break_torque, returning its Error instead of throwing it.
+    Result<void> try_set_joint_break_torque(JointId joint, double torque) noexcept;
+    /// joint_break_torque, returning its Error instead of throwing it.
+    Result<double> try_joint_break_torque(JointId joint) const noexcept;
+    /// is_awake, returning its Error instead of throwing it.
+    Result<bool> try_is_awake(BodyId body) const noexcept;
+    /// set_awake, returning its Error instead of throwing it.
+    Result<void> try_set_awake(BodyId body, bool awake) noexcept;
+    /// kinetic_energy, returning its Error instead of throwing it.
+    Result<double> try_kinetic_energy() const noexcept;
+    /// potential_energy, returning its Error instead of throwing it.
+    Result<double> try_potential_energy() const noexcept;
+    /// linear_momentum, returning its Error instead of throwing it.
+    Result<Vec2d> try_linear_momentum() const noexcept;
+    /// contacts, returning its Error instead of throwing it.
+    Result<std::span<const ContactInfo>> try_contacts() const noexcept;
+    /// contact_begin_events, returning its Error instead of throwing it.
+    Result<std::span<const ContactEvent>> try_contact_begin_events() const noexcept;
+    /// contact_end_events, returning its Error instead of throwing it.
+    Result<std::span<const ContactEvent>> try_contact_end_events() const noexcept;
+    /// sensor_begin_events, returning its Error instead of throwing it.
+    Result<std::span<const SensorEvent>> try_sensor_begin_events() const noexcept;
+    /// sensor_end_events, returning its Error instead of throwing it.
+    Result<std::span<const SensorEvent>> try_sensor_end_events() const noexcept;
+    /// query_aabb, returning its Error instead of throwing it.
+    Result<std::vector<ShapeId>> try_query_aabb(const Aabb& box) const noexcept;
+    /// query_point, returning its Error instead of throwing it.
+    Result<std::vector<ShapeId>> try_query_point(Vec2d point) const noexcept;
+    /// ray_cast, returning its Error instead of throwing it.
+    Result<std::optional<RayCastHit>> try_ray_cast(Vec2d origin, Vec2d translation) const noexcept;
+    /// snapshot, returning its Error instead of throwing it.
+    Result<std::vector<std::byte>> try_snapshot() const noexcept;
+    /// snapshot, returning its Error instead of throwing it.
+    Result<void> try_snapshot(std::vector<std::byte>& bytes) const noexcept;
+    /// from_snapshot, returning its Error instead of throwing it.
+    static Result<World> try_from_snapshot(std::span<const std::byte> snapshot, int workers = 1,
+                                           const TaskSystem& task_system = {}) noexcept;
+    /// restore, returning its Error instead of throwing it.
+    Result<void> try_restore(std::span<const std::byte> snapshot) noexcept;
+    /// definitions, returning its Error instead of throwing it.
+    Result<WorldDefinitions> try_definitions() const noexcept;
+    /// ray_cast, returning its Error instead of throwing it.
+    Result<std::optional<RayCastHit>> try_ray_cast(Vec2d origin, Vec2d translation,
+                                                   const QueryFilter& filter) const noexcept;
+    /// ray_cast_all, returning its Error instead of throwing it.
+    Result<std::vector<RayCastHit>> try_ray_cast_all(Vec2d origin, Vec2d translation,
+                                                     const QueryFilter& filter = {}) const noexcept;
+    /// ray_cast_all, returning its Error instead of throwing it.
+    Result<std::size_t> try_ray_cast_all(Vec2d origin, Vec2d translation, const QueryFilter& filter,
+                                         std::span<RayCastHit> out) const noexcept;
+    /// ray_cast_any, returning its Error instead of throwing it.
+    Result<std::optional<RayCastHit>>
+    try_ray_cast_any(Vec2d origin, Vec2d translation,
+                     const QueryFilter& filter = {}) const noexcept;
+    /// ray_cast, returning its Error instead of throwing it.
+    Result<void> try_ray_cast(Vec2d origin, Vec2d translation, const QueryFilter& filter,
+                              RayCastCallback callback) const noexcept;
+    /// ray_cast, returning its Error instead of throwing it.
+    Result<std::optional<RayCastHit>> try_ray_cast(ShapeId shape, Vec2d origin,
+                                                   Vec2d translation) const noexcept;
+    /// shape_cast, returning its Error instead of throwing it.
+    Result<std::optional<ShapeCastHit>>
+    try_shape_cast(const Geometry& shape, Vec2d origin, double angle, Vec2d translation,
+                   const QueryFilter& filter = {}) const noexcept;
+    /// shape_cast, returning its Error instead of throwing it.
+    Result<void> try_shape_cast(const Geometry& shape, Vec2d origin, double angle,
+                                Vec2d translation, const QueryFilter& filter,
+                                ShapeCastCallback callback) const noexcept;
+    /// cast_tolerance, returning its Error instead of throwing it.
+    static Result<double> try_cast_tolerance(const Geometry& shape, Vec2d translation) noexcept;
+    /// query_aabb, returning its Error instead of throwing it.
+    Result<std::vector<ShapeId>> try_query_aabb(const Aabb& box,
+                                                const QueryFilter& filter) const noexcept;
+    /// query_aabb, returning its Error instead of throwing it.
+    Result<void> try_query_aabb(const Aabb& box, const QueryFilter& filter,
+                                OverlapCallback callback) const noexcept;
+    /// query_point, returning its Error instead of throwing it.
+    Result<std::vector<ShapeId>> try_query_point(Vec2d point,
+                                                 const QueryFilter& filter) const noexcept;
+    /// query_point, returning its Error instead of throwing it.
+    Result<void> try_query_point(Vec2d point, const QueryFilter& filter,
+                                 OverlapCallback callback) const noexcept;
+    /// overlap_shape, returning its Error instead of throwing it.
+    Result<std::vector<ShapeId>> try_overlap_shape(const Geometry& shape, Vec2d origin,
+                                                   double angle,
+                                                   const QueryFilter& filter = {}) const noexcept;
+    /// overlap_shape, returning its Error instead of throwing it.
+    Result<void> try_overlap_shape(const Geometry& shape, Vec2d origin, double angle,
+                                   const QueryFilter& filter,
+                                   OverlapCallback callback) const noexcept;
+    /// distance, returning its Error instead of throwing it.
+    Result<ClosestPoints> try_distance(ShapeId a, ShapeId b) const noexcept;
+    /// closest_point, returning its Error instead of throwing it.
+    Result<ClosestPoints> try_closest_point(ShapeId shape, Vec2d point) const noexcept;
+    /// contact_hit_events, returning its Error instead of throwing it.
+    Result<std::span<const ContactHitEvent>> try_contact_hit_events() const noexcept;
+    /// body_move_events, returning its Error instead of throwing it.
+    Result<std::span<const BodyMoveEvent>> try_body_move_events() const noexcept;
+    /// joint_events, returning its Error instead of throwing it.
+    Result<std::span<const JointEvent>> try_joint_events() const noexcept;
+    /// sensor_overlaps, returning its Error instead of throwing it.
+    Result<std::vector<ShapeId>> try_sensor_overlaps(ShapeId sensor) const noexcept;
+    /// set_hit_event_threshold, returning its Error instead of throwing it.
+    Result<void> try_set_hit_event_threshold(double speed) noexcept;
+    /// set_hit_events_enabled, returning its Error instead of throwing it.
+    Result<void> try_set_hit_events_enabled(ShapeId shape, bool on) noexcept;
+    /// hit_events_enabled, returning its Error instead of throwing it.
+    Result<bool> try_hit_events_enabled(ShapeId shape) const noexcept;
+    /// set_contact_events_enabled, returning its Error instead of throwing it.
+    Result<void> try_set_contact_events_enabled(ShapeId shape, bool on) noexcept;
+    /// contact_events_enabled, returning its Error instead of throwing it.
+    Result<bool> try_contact_events_enabled(ShapeId shape) const noexcept;
+    /// set_sensor_events_enabled, returning its Error instead of throwing it.
+    Result<void> try_set_sensor_events_enabled(ShapeId shape, bool on) noexcept;
+    /// sensor_events_enabled, returning its Error instead of throwing it.
+    Result<bool> try_sensor_events_enabled(ShapeId shape) const noexcept;
+    /// set_move_events_enabled, returning its Error instead of throwing it.
+    Result<void> try_set_move_events_enabled(BodyId body, bool on) noexcept;
+    /// move_events_enabled, returning its Error instead of throwing it.
+    Result<bool> try_move_events_enabled(BodyId body) const noexcept;
+    /// set_joint_event_thresholds, returning its Error instead of throwing it.
+    Result<void> try_set_joint_event_thresholds(JointId joint, double force,
+                                                double torque) noexcept;
+    /// joint_force_threshold, returning its Error instead of throwing it.
+    Result<double> try_joint_force_threshold(JointId joint) const noexcept;
+    /// joint_torque_threshold, returning its Error instead of throwing it.
+    Result<double> try_joint_torque_threshold(JointId joint) const noexcept;
+    /// draw, returning its Error instead of throwing it.
+    Result<void> try_draw(DebugDraw& draw) const noexcept;
+    /// set_profiling, returning its Error instead of throwing it.
+    Result<void> try_set_profiling(bool on) noexcept;
+    /// profiling, returning its Error instead of throwing it.
+    Result<bool> try_profiling() const noexcept;
+    /// profile, returning its Error instead of throwing it.
+    Result<StepProfile> try_profile() const noexcept;
+    /// counters, returning its Error instead of throwing it.
+    Result<WorldCounters> try_counters() const noexcept;
+    /// explode, returning its Error instead of throwing it.
+    Result<std::size_t> try_explode(const ExplosionDef& def) noexcept;
+    /// cast_mover, returning its Error instead of throwing it.
+    Result<double> try_cast_mover(const Capsule& mover, Vec2d translation,
+                                  const QueryFilter& filter = {}) const noexcept;
+    /// collide_mover, returning its Error instead of throwing it.
+    Result<std::vector<MoverPlane>>
+    try_collide_mover(const Capsule& mover, const QueryFilter& filter = {}) const noexcept;
+    /// collide_mover, returning its Error instead of throwing it.
+    Result<void> try_collide_mover(const Capsule& mover, const QueryFilter& filter,
+                                   MoverPlaneCallback callback) const noexcept;
+    /// set_target_transform, returning its Error instead of throwing it.
+    Result<void> try_set_target_transform(BodyId body, Vec2d origin, double angle,
+                                          double dt) noexcept;
+    /// apply_wind, returning its Error instead of throwing it.
+    Result<void> try_apply_wind(ShapeId shape, Vec2d wind, double drag, double lift,
+                                bool wake = true) noexcept;
+    /// set_user_data, returning its Error instead of throwing it.
+    Result<void> try_set_user_data(UserData data) noexcept;
+    /// user_data, returning its Error instead of throwing it.
+    Result<UserData> try_user_data() const noexcept;
+    /// set_user_data, returning its Error instead of throwing it.
+    Result<void> try_set_user_data(BodyId body, UserData data) noexcept;
+    /// user_data, returning its Error instead of throwing it.
+    Result<UserData> try_user_data(BodyId body) const noexcept;
+    /// set_user_data, returning its Error instead of throwing it.
+    Result<void> try_set_user_data(ShapeId shape, UserData data) noexcept;
+    /// user_data, returning its Error instead of throwing it.
+    Result<UserData> try_user_data(ShapeId shape) const noexcept;
+    /// set_user_data, returning its Error instead of throwing it.
+    Result<void> try_set_user_data(JointId joint, UserData data) noexcept;
+    /// user_data, returning its Error instead of throwing it.
+    Result<UserData> try_user_data(JointId joint) const noexcept;
+    /// body, returning its Error instead of throwing it.
+    Result<BodyId> try_body(ShapeId shape) const noexcept;
+    /// shape_type, returning its Error instead of throwing it.
+    Result<ShapeType> try_shape_type(ShapeId shape) const noexcept;
+    /// geometry, returning its Error instead of throwing it.
+    Result<Geometry> try_geometry(ShapeId shape) const noexcept;
+    /// shape_aabb, returning its Error instead of throwing it.
+    Result<Aabb> try_shape_aabb(ShapeId shape) const noexcept;
+    /// body_aabb, returning its Error instead of throwing it.
+    Result<Aabb> try_body_aabb(BodyId body) const noexcept;
+    /// joints, returning its Error instead of throwing it.
+    Result<std::vector<JointId>> try_joints(BodyId body) const noexcept;
+    /// contacts, returning its Error instead of throwing it.
+    Result<std::vector<ContactInfo>> try_contacts(BodyId body) const noexcept;
+    /// set_body_type, returning its Error instead of throwing it.
+    Result<void> try_set_body_type(BodyId body, BodyType type) noexcept;
+    /// set_enabled, returning its Error instead of throwing it.
+    Result<void> try_set_enabled(BodyId body, bool enabled) noexcept;
+    /// is_enabled, returning its Error instead of throwing it.
+    Result<bool> try_is_enabled(BodyId body) const noexcept;
+    /// set_gravity_scale, returning its Error instead of throwing it.
+    Result<void> try_set_gravity_scale(BodyId body, double scale) noexcept;
+    /// gravity_scale, returning its Error instead of throwing it.
+    Result<double> try_gravity_scale(BodyId body) const noexcept;
+    /// set_bullet, returning its Error instead of throwing it.
+    Result<void> try_set_bullet(BodyId body, bool bullet) noexcept;
+    /// is_bullet, returning its Error instead of throwing it.
+    Result<bool> try_is_bullet(BodyId body) const noexcept;
+    /// set_motion_locks, returning its Error instead of throwing it.
+    Result<void> try_set_motion_locks(BodyId body, MotionLocks locks) noexcept;
+    /// motion_locks, returning its Error instead of throwing it.
+    Result<MotionLocks> try_motion_locks(BodyId body) const noexcept;
+    /// set_fixed_rotation, returning its Error instead of throwing it.
+    Result<void> try_set_fixed_rotation(BodyId body, bool fixed) noexcept;
+    /// fixed_rotation, returning its Error instead of throwing it.
+    Result<bool> try_fixed_rotation(BodyId body) const noexcept;
+    /// set_mass_data, returning its Error instead of throwing it.
+    Result<void> try_set_mass_data(BodyId body, const BodyMassData& data) noexcept;
+    /// mass_data, returning its Error instead of throwing it.
+    Result<BodyMassData> try_mass_data(BodyId body) const noexcept;
+    /// reset_mass_data, returning its Error instead of throwing it.
+    Result<void> try_reset_mass_data(BodyId body) noexcept;
+    /// set_sleep_threshold, returning its Error instead of throwing it.
+    Result<void> try_set_sleep_threshold(BodyId body, double speed) noexcept;
+    /// sleep_threshold, returning its Error instead of throwing it.
+    Result<double> try_sleep_threshold(BodyId body) const noexcept;
+    /// wake_touching, returning its Error instead of throwing it.
+    Result<void> try_wake_touching(BodyId body) noexcept;
+    /// set_pre_solve, returning its Error instead of throwing it.
+    Result<void> try_set_pre_solve(PreSolveFunction callback) noexcept;
+    /// set_friction_mixing, returning its Error instead of throwing it.
+    Result<void> try_set_friction_mixing(MaterialMixFunction mix) noexcept;
+    /// set_restitution_mixing, returning its Error instead of throwing it.
+    Result<void> try_set_restitution_mixing(MaterialMixFunction mix) noexcept;
+    /// set_user_material, returning its Error instead of throwing it.
+    Result<void> try_set_user_material(ShapeId shape, std::uint64_t id) noexcept;
+    /// user_material, returning its Error instead of throwing it.
+    Result<std::uint64_t> try_user_material(ShapeId shape) const noexcept;
+    /// set_continuous, returning its Error instead of throwing it.
+    Result<void> try_set_continuous(bool enabled) noexcept;
+    /// set_sleeping, returning its Error instead of throwing it.
+    Result<void> try_set_sleeping(bool enabled) noexcept;
+    /// set_contact_tuning, returning its Error instead of throwing it.
+    Result<void> try_set_contact_tuning(double hertz, double damping_ratio,
+                                        double push_max_velocity) noexcept;
+    /// set_joint_tuning, returning its Error instead of throwing it.
+    Result<void> try_set_joint_tuning(double hertz, double damping_ratio) noexcept;
+    /// set_restitution_threshold, returning its Error instead of throwing it.
+    Result<void> try_set_restitution_threshold(double speed) noexcept;
+    /// set_maximum_linear_speed, returning its Error instead of throwing it.
+    Result<void> try_set_maximum_linear_speed(double speed) noexcept;
+    /// set_workers, returning its Error instead of throwing it.
+    Result<void> try_set_workers(int workers) noexcept;
+    /// awake_body_count, returning its Error instead of throwing it.
+    Result<std::size_t> try_awake_body_count() const noexcept;
+    /// set_warm_starting, returning its Error instead of throwing it.
+    Result<void> try_set_warm_starting(bool enabled) noexcept;
+    /// warm_starting, returning its Error instead of throwing it.
+    Result<bool> try_warm_starting() const noexcept;
+    /// state_hash, returning its Error instead of throwing it.
+    Result<std::uint64_t> try_state_hash() const noexcept;
 
     // --- recording ---
     // A Recorder (recorder.hpp) records a world's calls and a Replayer (replay.hpp) plays them

@@ -199,6 +199,9 @@ def check_api_table(guide, world_hpp):
             called = re.findall(r"(operator=|\w+)\s*\(", code)
             named.update(called if called else re.findall(r"^\w+$", code))
     calls = world_calls(world_hpp)
+    # A `try_` form (try_create: the constructor's) is covered by its throwing form's row.
+    calls = [c for c in calls if not (c.startswith("try_") and
+                                      (c[4:] in calls or (c == "try_create" and "World" in calls)))]
     problems = [f"World::{c} has no row in \"API at a glance\"" for c in calls if c not in named]
     problems += [f"\"API at a glance\" names {n}, which is no call of World" for n in sorted(named)
                  if n not in calls]
