@@ -63,7 +63,7 @@ int main() {
         world.create_shape(world.create_body(ground), box_shape(100.0, 1.0));
         for (int k = 0; k < 200; ++k) {
             BodyDef crate;
-            crate.position = {-40.0 + 4.0 * (k % 20), 0.5 + 1.1 * (k / 20)};
+            crate.position = {-40.0 + 4.0 * (k % 20), 0.5 + 1.0 * (k / 20)}; // 20 stacks of 10
             world.create_shape(world.create_body(crate), box_shape(1.0, 1.0));
         }
         std::printf("building the level: %zu blocks\n", budget.allocations - made);

@@ -34,9 +34,11 @@ namespace tamias2d {
 /// alignment. Both may be called from the World's worker threads (or the game's task system's)
 /// during a step, so they must be thread-safe when WorldDef::workers > 1.
 struct Allocator {
+    /// A block of `size` bytes aligned to `alignment`, or nullptr.
     void* (*allocate)(std::size_t size, std::size_t alignment, void* user) = nullptr;
+    /// Takes back a block of allocate(size, alignment, user).
     void (*free)(void* pointer, std::size_t size, std::size_t alignment, void* user) = nullptr;
-    void* user = nullptr;
+    void* user = nullptr; ///< handed to both functions (the game's allocator, say)
 };
 
 /// What the library holds now from the current allocator (the hook or the default).
