@@ -83,7 +83,7 @@ void hook_free(void* p, std::size_t size, std::size_t alignment, void*) {
 
 // --- the window of the global operator new ---
 std::atomic<bool> window_open{false};
-std::atomic<std::size_t> news{0};
+std::atomic<std::size_t> news{0}, new_bytes{0};
 const bool trap = [] {
     const char* v = std::getenv("TAMIAS_EMBEDDING_TRAP");
     return v != nullptr && v[0] == '1';
@@ -107,6 +107,7 @@ void reset_hook_counts() {
 
 void open_window() {
     news.store(0);
+    new_bytes.store(0);
     window_open.store(true);
 }
 void close_window() {
@@ -114,6 +115,9 @@ void close_window() {
 }
 std::size_t window_news() {
     return news.load();
+}
+std::size_t window_new_bytes() {
+    return new_bytes.load();
 }
 
 } // namespace tamias2d::test
@@ -129,6 +133,7 @@ namespace {
 void* allocate(std::size_t n, std::size_t align) noexcept {
     if (tamias2d::test::window_open.load(std::memory_order_relaxed)) {
         tamias2d::test::news.fetch_add(1);
+        tamias2d::test::new_bytes.fetch_add(n);
         tamias_embedding_window_new();
     }
     if (n == 0)

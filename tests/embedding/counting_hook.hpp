@@ -35,6 +35,8 @@ void reset_hook_counts();
 void open_window();
 void close_window();
 std::size_t window_news();
+/// The bytes those calls asked for.
+std::size_t window_new_bytes();
 /// With TAMIAS_EMBEDDING_TRAP=1 in the environment, an operator new inside the window aborts;
 /// each calls tamias_embedding_window_new() first, and each of the hook's allocations
 /// tamias_embedding_hook_allocate(): places for a debugger's breakpoints.

@@ -33,7 +33,7 @@ struct Hooked {
 
 struct Observed {
     ScenarioResult result;
-    std::size_t news = 0;
+    std::size_t news = 0, new_bytes = 0;
     HookCounts hook;
 };
 
@@ -61,6 +61,7 @@ Observed observe(int workers, const TaskSystem& jobs = {}) {
         o.result = run_scenario(in);
         close_window();
         o.news = window_news();
+        o.new_bytes = window_new_bytes();
         o.hook = hook_counts();
     }
     return o;
@@ -116,7 +117,8 @@ BOOST_AUTO_TEST_CASE(one_worker_allocates_only_through_the_hook, *utf::label("em
     BOOST_TEST(o.news == scenario_by_value_results);
     check_hook(o.hook);
     BOOST_TEST_MESSAGE("1 worker: " << o.hook.allocations << " hook allocations, " << o.hook.bytes
-                                    << " bytes; " << o.news << " global operator new");
+                                    << " bytes; " << o.news << " global operator new, "
+                                    << o.new_bytes << " bytes");
 }
 
 // On two workers each World starts a pool thread: the standard library allocates that
@@ -129,7 +131,8 @@ BOOST_AUTO_TEST_CASE(two_workers_add_only_the_thread_start, *utf::label("embeddi
     BOOST_TEST(o.news == scenario_by_value_results + 2u);
     check_hook(o.hook);
     BOOST_TEST_MESSAGE("2 workers: " << o.hook.allocations << " hook allocations, " << o.hook.bytes
-                                     << " bytes; " << o.news << " global operator new");
+                                     << " bytes; " << o.news << " global operator new, "
+                                     << o.new_bytes << " bytes");
 }
 
 // On two workers lent by the game's job system (WorldDef::task_system) the World starts no
