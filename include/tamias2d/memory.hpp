@@ -4,7 +4,8 @@
 /// A world keeps its large per-step arrays (bodies, shapes, contacts, tree nodes, solver packs)
 /// in blocks mapped from the operating system. A block of 1 MiB or more that a world releases is
 /// kept mapped for the next world, up to 64 MiB in all (as malloc keeps freed heap memory), so
-/// that rebuilding a large level does not fault in fresh pages.
+/// that rebuilding a large level does not fault in fresh pages. With an allocator hook set
+/// (allocator.hpp) the large blocks come from the hook instead, and none is mapped or kept.
 #pragma once
 
 #include <cstddef>

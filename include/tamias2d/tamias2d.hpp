@@ -4,6 +4,7 @@
 #pragma once
 
 #include "tamias2d/aabb.hpp"
+#include "tamias2d/allocator.hpp"
 #include "tamias2d/body_def.hpp"
 #include "tamias2d/body_state.hpp"
 #include "tamias2d/build_info.hpp"

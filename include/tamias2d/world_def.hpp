@@ -14,6 +14,19 @@ namespace tamias2d {
 /// default gravity needs it without the model layer's units; model::gd2::g_srs is this value.
 inline constexpr double srs_gravity = 9.81;
 
+/// How many of each the world is expected to hold at once (WorldDef::capacity): 0, none. Each
+/// in [0, max_capacity_hint].
+struct CapacityHints {
+    int bodies = 0;   ///< bodies alive at once
+    int shapes = 0;   ///< shapes alive at once (each chain segment is one)
+    int joints = 0;   ///< joints alive at once
+    int contacts = 0; ///< contacts at once: pairs of shapes whose fattened boxes overlap
+};
+
+/// The largest capacity hint: 2^22 of each (a world's stores sized for more would take
+/// gigabytes before anything is made in them).
+inline constexpr int max_capacity_hint = 1 << 22;
+
 /// The settings of a World: gravity, the soft step's substeps and contact softness, and
 /// sleeping. Checked when the World is made (SRS R4).
 struct WorldDef {
@@ -109,6 +122,15 @@ struct WorldDef {
     /// worker numbers it hands out.
     TaskSystem task_system{};
     UserData user_data = 0; ///< the game's own value (user_data.hpp), not simulation state
+    /// Capacity hints: the stores of bodies, shapes, joints and contacts (with the broad
+    /// phase's tree, the step's per-body and per-contact arrays and the events' lists) are sized
+    /// for these counts when the World is made, so that creating up to that many and the first
+    /// steps that touch them do not grow them (each growth is an allocation and a copy). Never
+    /// a limit: more grow the stores as without hints. Not simulation state: no effect on any
+    /// result, not in snapshots, recordings or scene files (World::restore keeps the world's
+    /// own; a world made by World::from_snapshot has none). Checked (ValidationError naming
+    /// "world.capacity.bodies", ...).
+    CapacityHints capacity{};
 };
 
 } // namespace tamias2d

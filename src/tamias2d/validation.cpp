@@ -97,16 +97,18 @@ void validate_proportions(const Polygon& p) {
         min_height = std::min(min_height, distance_to_line(p.vertices[(i + n - 1) % n],
                                                            p.vertices[(i + 1) % n], p.vertices[i]));
     const double area = model::dcx_shape::polygon_area(p.vertices.data(), std::size_t(n)).value();
-    const std::string of_extent = detail::format_value(hull_weld_tolerance) + " x the extent (" +
-                                  detail::format_value(extent) + " m)";
+    const auto of_extent = [&] { // (made only to fail)
+        return detail::format_value(hull_weld_tolerance) + " x the extent (" +
+               detail::format_value(extent) + " m)";
+    };
     if (!(min_height >= tol))
         throw ValidationError("polygon.thickness", min_height,
-                              "must be >= " + of_extent +
+                              "must be >= " + of_extent() +
                                   ": every vertex that far from its neighbours' chord (a sliver)",
                               "DCX_shape");
     if (!(std::abs(area) > tol * extent))
         throw ValidationError("polygon.area", area,
-                              "must be > " + of_extent + " x the extent (a sliver)", "DCX_shape");
+                              "must be > " + of_extent() + " x the extent (a sliver)", "DCX_shape");
 }
 
 void validate_mass(std::string_view field, double mass) {
@@ -530,15 +532,25 @@ void validate(const WorldDef& def) {
     if ((def.task_system.enqueue == nullptr) != (def.task_system.finish == nullptr))
         throw ValidationError("world.task_system", std::nan(""),
                               "needs both enqueue and finish, or neither", "threads");
+    // Sizing, not physics: "capacity" names the rule.
+    const auto hint = [](const char* field, int n) {
+        if (n < 0 || n > max_capacity_hint)
+            throw ValidationError(
+                field, n, "must be in [0, " + std::to_string(max_capacity_hint) + "]", "capacity");
+    };
+    hint("world.capacity.bodies", def.capacity.bodies);
+    hint("world.capacity.shapes", def.capacity.shapes);
+    hint("world.capacity.joints", def.capacity.joints);
+    hint("world.capacity.contacts", def.capacity.contacts);
 }
 
 void validate_event_threshold(std::string_view field, double value, bool may_be_infinite) {
-    const std::string name(field);
+    // (the field's name is made only to fail: a world's calls allocate nothing else)
     if (std::isnan(value) || (!may_be_infinite && std::isinf(value)))
-        throw ValidationError(name, value, may_be_infinite ? "must be a number" : "must be finite",
-                              "events");
+        throw ValidationError(std::string(field), value,
+                              may_be_infinite ? "must be a number" : "must be finite", "events");
     if (!(value >= 0.0))
-        throw ValidationError(name, value, "must be >= 0", "events");
+        throw ValidationError(std::string(field), value, "must be >= 0", "events");
     if (!may_be_infinite)
         require_within(field, value, supported::input_max, "m s^-1");
 }

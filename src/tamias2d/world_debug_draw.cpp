@@ -11,6 +11,7 @@
 #include "tamias2d/debug_draw.hpp"
 #include "tamias2d/errors.hpp"
 #include "tamias2d/geometry/aabb.hpp"
+#include "tamias2d/memory/allocator.hpp"
 #include "tamias2d/validation.hpp"
 #include "tamias2d/world.hpp"
 #include "tamias2d/world_impl.hpp"
@@ -42,9 +43,9 @@ bool inside(const std::optional<Aabb>& bounds, Vec2d p) {
 
 /// The shapes to draw, in index order: every live one, or those whose broad-phase boxes
 /// overlap `bounds`.
-std::vector<std::uint32_t> shapes_to_draw(const ShapeStore& shapes,
-                                          const std::optional<Aabb>& bounds) {
-    std::vector<std::uint32_t> out;
+memory::vector<std::uint32_t> shapes_to_draw(const ShapeStore& shapes,
+                                             const std::optional<Aabb>& bounds) {
+    memory::vector<std::uint32_t> out;
     if (!bounds) {
         for (std::uint32_t s = 0; s < shapes.shapes.size(); ++s) {
             if (shapes.shapes[s].alive())
@@ -98,7 +99,7 @@ void World::draw(DebugDraw& draw) const {
     const std::optional<Aabb>& bounds = draw.bounds;
 
     if (draw.draw_shapes || draw.draw_aabbs) {
-        const std::vector<std::uint32_t> drawn = shapes_to_draw(w.shapes, bounds);
+        const memory::vector<std::uint32_t> drawn = shapes_to_draw(w.shapes, bounds);
         if (draw.draw_shapes) {
             for (const std::uint32_t s : drawn) {
                 const Shape& sh = w.shapes.shapes[s];

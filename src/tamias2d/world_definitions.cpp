@@ -6,6 +6,7 @@
 
 #include "tamias2d/dynamics/joints/joint_creation.hpp"
 #include "tamias2d/dynamics/joints/joint_store.hpp"
+#include "tamias2d/memory/allocator.hpp"
 #include "tamias2d/world.hpp"
 #include "tamias2d/world_impl.hpp"
 
@@ -14,8 +15,8 @@ namespace tamias2d {
 namespace {
 
 /// The doubles within `ulps` steps of x, x first, then nearest first.
-std::vector<double> near(double x, int ulps) {
-    std::vector<double> out{x};
+memory::vector<double> near(double x, int ulps) {
+    memory::vector<double> out{x};
     double up = x, down = x;
     for (int k = 0; k < ulps; ++k) {
         up = std::nextafter(up, std::numeric_limits<double>::infinity());

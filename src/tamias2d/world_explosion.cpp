@@ -9,6 +9,7 @@
 #include "tamias2d/errors.hpp"
 #include "tamias2d/explosion.hpp"
 #include "tamias2d/geometry/blast_exposure.hpp"
+#include "tamias2d/memory/allocator.hpp"
 #include "tamias2d/model/dd38_explosion_impulse.hpp"
 #include "tamias2d/validation.hpp"
 #include "tamias2d/world.hpp"
@@ -61,7 +62,7 @@ std::size_t World::explode(const ExplosionDef& def) {
     const double reach = def.radius + def.falloff;
     const Vec2d x = def.position;
     const Aabb box{x.x - reach, x.y - reach, x.x + reach, x.y + reach};
-    std::vector<std::uint32_t> candidates;
+    memory::vector<std::uint32_t> candidates;
     w.shapes.broad_phase.query(box, [&](int proxy) {
         candidates.push_back(w.shapes.broad_phase.user_data(proxy));
         return true;
@@ -70,8 +71,8 @@ std::size_t World::explode(const ExplosionDef& def) {
 
     const auto r = u::from_value<u::Length>(def.radius);
     const auto f = u::from_value<u::Length>(def.falloff);
-    std::vector<Push> pushes;
-    std::vector<Nearest> nearest; // in the order the bodies are first met
+    memory::vector<Push> pushes;
+    memory::vector<Nearest> nearest; // in the order the bodies are first met
     for (const std::uint32_t s : candidates) {
         const Shape& sh = w.shapes.shapes[s];
         const ShapeDef& sd = w.shapes.defs[s];
@@ -116,7 +117,7 @@ std::size_t World::explode(const ExplosionDef& def) {
         std::uint32_t body;
         SolverBody after;
     };
-    std::vector<Moved> moved;
+    memory::vector<Moved> moved;
     for (const Push& p : pushes) {
         const Body& b = w.bodies.bodies[p.body];
         if (moved.empty() || moved.back().body != p.body)

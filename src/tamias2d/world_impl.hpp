@@ -15,6 +15,7 @@
 #include "tamias2d/dynamics/step_events.hpp"
 #include "tamias2d/dynamics/step_profiler.hpp"
 #include "tamias2d/dynamics/step_solver.hpp"
+#include "tamias2d/memory/allocator.hpp"
 #include "tamias2d/parallel/step_tasks.hpp"
 #include "tamias2d/world.hpp"
 
@@ -22,7 +23,7 @@ namespace tamias2d {
 
 /// The engine's state and the step's pipeline over its stages (dynamics/): the bodies, the
 /// shapes with the broad phase, the contacts, the joints, the solver, sleeping.
-struct World::Impl {
+struct World::Impl : memory::HookAllocated<World::Impl> {
     WorldDef def;
     double time = 0.0;
     double time_error = 0.0; ///< Kahan compensation: n steps of dt read back as n dt
@@ -33,14 +34,26 @@ struct World::Impl {
     SensorOverlaps sensors;
     StepSolver solver;
     IslandSleep sleep;
-    StepEvents events;       ///< hits, moves and joint events (events.hpp)
-    StepTasks tasks;         ///< the step's parallel loops (WorldDef::workers, task_system)
-    std::vector<Load> loads; ///< this step's load-function values (empty when none has one)
-    StepProfiler profiler;   ///< the stages' times (World::set_profiling; off: never read)
+    StepEvents events;          ///< hits, moves and joint events (events.hpp)
+    StepTasks tasks;            ///< the step's parallel loops (WorldDef::workers, task_system)
+    memory::vector<Load> loads; ///< this step's load-function values (empty when none has one)
+    StepProfiler profiler;      ///< the stages' times (World::set_profiling; off: never read)
 
     /// A world tagged `tag` (World::tag).
     Impl(const WorldDef& d, std::uint32_t tag) : def(d), bodies(tag), shapes(tag), joints(tag) {
         shapes.broad_phase.set_least_margin(d.speculative_distance); // (BroadPhase::fattened)
+        reserve(d.capacity);
+    }
+
+    /// The stores sized for the hinted counts (WorldDef::capacity; 0: left as they are).
+    void reserve(const CapacityHints& c) {
+        const auto n = [](int v) { return std::size_t(v); };
+        bodies.reserve(n(c.bodies));
+        shapes.reserve(n(c.shapes), n(c.bodies));
+        joints.reserve(n(c.joints), c.joints > 0 ? n(c.bodies) : 0);
+        contacts.reserve(n(c.contacts));
+        events.reserve(n(c.bodies));
+        solver.reserve(n(c.bodies), n(c.contacts));
     }
 
     /// The solve diverged (StepSolver::diverged): the joints and sleep states as they were, no
@@ -100,5 +113,8 @@ struct World::Impl {
         joints.check_levers(bodies); // (the joints are few: one pass)
     }
 };
+
+/// The world's snapshot (World::snapshot) written by `out`, its header completed in it.
+void write_snapshot(const World::Impl& w, SnapshotWriter& out);
 
 } // namespace tamias2d

@@ -23,6 +23,7 @@
 
 #include "tamias2d/dynamics/snapshot_io.hpp"
 #include "tamias2d/math/xxh64.hpp"
+#include "tamias2d/memory/allocator.hpp"
 #include "tamias2d/snapshot_error.hpp"
 #include "tamias2d/validation.hpp"
 #include "tamias2d/version.hpp"
@@ -81,10 +82,11 @@ std::uint64_t read_le(std::span<const std::byte> b, std::size_t at, int n) {
 
 /// The engine state a snapshot describes, read whole, with the host's workers and task system,
 /// its handles tagged `tag` (the world's it is read into, World::tag); the bodies that had a
-/// load function listed in `had_load`. Throws SnapshotError.
+/// load function listed in `had_load`. Throws SnapshotError. Its tasks are the default (one
+/// thread): the caller moves the host world's in, so that no pool is started twice.
 std::unique_ptr<World::Impl> read_snapshot(std::span<const std::byte> bytes, int workers,
                                            const TaskSystem& task_system, std::uint32_t tag,
-                                           std::vector<std::uint32_t>& had_load) {
+                                           memory::vector<std::uint32_t>& had_load) {
     if (bytes.size() < header_size)
         throw SnapshotError(bytes.size(), "header",
                             "cut short: a snapshot starts with a " +
@@ -124,8 +126,9 @@ std::unique_ptr<World::Impl> read_snapshot(std::span<const std::byte> bytes, int
     } catch (const ValidationError& e) {
         in.fail_at(def_at, "world", std::string("the settings are refused: ") + e.what());
     }
+    // The tasks (and a pool's threads) are the host world's, moved in by the caller: none is
+    // started here.
     auto w = std::make_unique<World::Impl>(def, tag);
-    w->tasks = StepTasks(def.workers, def.task_system);
     in("time", w->time);
     in("time_error", w->time_error);
     w->bodies.read(in, had_load);
@@ -150,9 +153,13 @@ std::vector<std::byte> World::snapshot() const {
 }
 
 void World::snapshot(std::vector<std::byte>& bytes) const {
-    const Impl& w = *impl_;
+    SnapshotWriter out(bytes);
+    write_snapshot(*impl_, out);
+    out.finish_in_storage();
+}
+
+void write_snapshot(const World::Impl& w, SnapshotWriter& out) {
     w.bodies.settle(); // (the same bits as when the next step would settle them)
-    SnapshotWriter out(std::move(bytes));
     // About 25 % above the bytes a body with its shape and a contact take, so that the buffer
     // is not grown (a doubling and a copy) for typical worlds; the slack stays with the bytes.
     out.reserve(header_size + 640 * (w.bodies.size() + w.shapes.shapes.size()) +
@@ -173,8 +180,7 @@ void World::snapshot(std::vector<std::byte>& bytes) const {
     w.joints.write(out);
     w.sensors.write(out);
     w.events.write(out);
-    bytes = out.finish();
-    std::vector<std::byte>& b = bytes;
+    const std::span<std::byte> b = out.written();
     const std::uint64_t size = b.size() - header_size;
     for (int k = 0; k < 8; ++k)
         b[16 + std::size_t(k)] = std::byte(size >> (8 * k));
@@ -185,20 +191,26 @@ void World::snapshot(std::vector<std::byte>& bytes) const {
 
 World World::from_snapshot(std::span<const std::byte> snapshot, int workers,
                            const TaskSystem& task_system) {
-    std::vector<std::uint32_t> had_load;
+    memory::vector<std::uint32_t> had_load;
     WorldDef host;
     host.workers = workers;
     host.task_system = task_system;
     World world(host); // (validates the workers and the task system)
-    world.impl_ = read_snapshot(snapshot, workers, task_system, world.tag(), had_load);
+    std::unique_ptr<Impl> w = read_snapshot(snapshot, workers, task_system, world.tag(), had_load);
+    w->tasks = std::move(world.impl_->tasks);
+    world.impl_ = std::move(w);
     return world;
 }
 
 void World::restore(std::span<const std::byte> snapshot) {
     Impl& old = *impl_;
-    std::vector<std::uint32_t> had_load;
+    memory::vector<std::uint32_t> had_load;
     std::unique_ptr<Impl> w = read_snapshot(snapshot, old.def.workers, old.def.task_system,
                                             old.bodies.slots.world(), had_load);
+    // The world's capacity hints are its own, not the snapshot's: kept, the stores sized for
+    // them again (no result depends on it).
+    w->def.capacity = old.def.capacity;
+    w->reserve(old.def.capacity);
     // Nothing below throws: the world changes only now.
     // A body that had a load function keeps the one its handle names in this world, if any.
     for (const std::uint32_t i : had_load) {

@@ -20,7 +20,7 @@
 namespace utf = boost::unit_test;
 using namespace tamias2d;
 namespace im4 = tamias2d::model::im4;
-using Pairs = std::vector<BroadPhase::Pair>;
+using Pairs = memory::vector<BroadPhase::Pair>;
 
 namespace {
 

@@ -229,7 +229,7 @@ BOOST_AUTO_TEST_CASE(small_boxes_pair_only_with_their_neighbours, *utf::label("r
     BroadPhase bp;
     for (std::size_t i = 0; i < boxes.size(); ++i)
         bp.create_proxy(boxes[i], std::uint32_t(i));
-    std::vector<BroadPhase::Pair> pairs;
+    memory::vector<BroadPhase::Pair> pairs;
     bp.update_pairs(pairs);
     std::size_t near = 0; // pairs of centres within 3.25 sizes in each axis
     for (std::size_t i = 0; i < boxes.size(); ++i)

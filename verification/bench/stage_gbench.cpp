@@ -43,7 +43,7 @@ void broad_phase_update_pairs(benchmark::State& state) {
         boxes.push_back({x - half, y - half, x + half, y + half});
         proxies.push_back(broad_phase.create_proxy(boxes.back(), std::uint32_t(i)));
     }
-    std::vector<BroadPhase::Pair> pairs;
+    memory::vector<BroadPhase::Pair> pairs;
     broad_phase.update_pairs(pairs);
     std::vector<BroadPhase::ProxyMove> moves;
     double shift = 0.15; // beyond the 0.1 m margin

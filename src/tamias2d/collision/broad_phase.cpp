@@ -4,13 +4,14 @@
 #include <string>
 
 #include "tamias2d/dynamics/snapshot_io.hpp"
+#include "tamias2d/memory/allocator.hpp"
 
 namespace tamias2d {
 
 namespace {
 
 /// A pair as update_pairs reports it: (min user, max user).
-void emit_pair(std::vector<BroadPhase::Pair>& out, std::uint32_t u, std::uint32_t v) {
+void emit_pair(memory::vector<BroadPhase::Pair>& out, std::uint32_t u, std::uint32_t v) {
     out.emplace_back(std::min(u, v), std::max(u, v));
 }
 
@@ -65,7 +66,7 @@ void BroadPhase::move_proxies(std::span<const ProxyMove> moves) {
     }
 }
 
-void BroadPhase::query_moved(std::vector<Pair>& out) {
+void BroadPhase::query_moved(memory::vector<Pair>& out) {
     for (const int p : move_buffer_) {
         if (moved_[p] != 2)
             continue; // destroyed since it moved, or a duplicate entry already handled
@@ -85,7 +86,7 @@ void BroadPhase::query_moved(std::vector<Pair>& out) {
     }
 }
 
-void BroadPhase::descend_marked(std::vector<Pair>& out) {
+void BroadPhase::descend_marked(memory::vector<Pair>& out) {
     // (Static pairs are never looked for: the static tree is not descended against itself.)
     DynamicTree& dynamic = trees_[0];
     const DynamicTree& fixed = trees_[1];
@@ -96,7 +97,7 @@ void BroadPhase::descend_marked(std::vector<Pair>& out) {
 }
 
 /// \srs{R7} candidate collisions: pairs whose fat boxes overlap by \srs{IM4}.
-void BroadPhase::update_pairs(std::vector<Pair>& out) {
+void BroadPhase::update_pairs(memory::vector<Pair>& out) {
     const std::size_t first = out.size();
     // The moved proxies' ancestors were only enlarged: restore the trees' quality first.
     trees_[0].rebuild();
@@ -157,7 +158,7 @@ void BroadPhase::read(SnapshotReader& in) {
         t.read(in);
     const std::size_t moves = in.count("broad_phase.move_buffer", 4);
     move_buffer_.resize(moves);
-    std::vector<std::size_t> at(moves);
+    memory::vector<std::size_t> at(moves);
     for (std::size_t k = 0; k < moves; ++k) {
         at[k] = in.offset();
         in("broad_phase.move_buffer", move_buffer_[k]);

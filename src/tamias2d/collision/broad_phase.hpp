@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "tamias2d/collision/dynamic_tree.hpp"
+#include "tamias2d/memory/allocator.hpp"
 
 namespace tamias2d {
 
@@ -20,6 +21,13 @@ class SnapshotReader;
 
 class BroadPhase {
   public:
+    /// Room for n proxies in either tree, and their moved flags, without growing.
+    void reserve(std::size_t n) {
+        trees_[0].reserve(n);
+        trees_[1].reserve(n);
+        move_buffer_.reserve(n);
+        moved_.reserve(4 * n + 2); // proxy ids: node * 2 + tree
+    }
     using Pair = std::pair<std::uint32_t, std::uint32_t>;
 
     /// `margin` (m) fattens every box, so small motions need no tree update; a box smaller
@@ -69,7 +77,7 @@ class BroadPhase {
     /// moved since the last call, once each, as (min user, max user), sorted; then forgets
     /// the moves. Static-static pairs are never reported. Allocation-free once `out` and the
     /// internal buffers have grown to the scene's size.
-    void update_pairs(std::vector<Pair>& out);
+    void update_pairs(memory::vector<Pair>& out);
 
     /// Calls f(proxy) for every proxy whose fat box overlaps `box` (IM4), dynamic tree first.
     /// f may return bool: false stops the query.
@@ -109,8 +117,8 @@ class BroadPhase {
     DynamicTree& tree(int proxy) { return trees_[proxy & 1]; }
     void mark_moved(int proxy);
     /// update_pairs' two searches for the pairs of the moved (marked) proxies.
-    void query_moved(std::vector<Pair>& out);
-    void descend_marked(std::vector<Pair>& out);
+    void query_moved(memory::vector<Pair>& out);
+    void descend_marked(memory::vector<Pair>& out);
     /// The descent is chosen while the marks take at most this many nodes per moved proxy
     /// (2 is the least: a leaf and its share of the ancestors). Measured: 2.0-2.2 in a rain's
     /// free fall, where the descent was faster; 2.4-3.1 for every second, fourth or eighth box
@@ -120,10 +128,10 @@ class BroadPhase {
     double margin_;
     double least_margin_ = 0.0;
     DynamicTree trees_[2]; ///< [0] dynamic and kinematic, [1] static
-    std::vector<int> move_buffer_;
+    memory::vector<int> move_buffer_;
     /// Per proxy id: 0 not moved, 1 moved, 2 moved and marked, 3 moved and queried (the last
     /// two only within update_pairs).
-    std::vector<std::uint8_t> moved_;
+    memory::vector<std::uint8_t> moved_;
 };
 
 template <class F> void BroadPhase::query(const Aabb& box, F&& f) const {

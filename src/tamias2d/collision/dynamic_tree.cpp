@@ -407,14 +407,13 @@ void DynamicTree::read(SnapshotReader& in) {
         const std::size_t at = in.offset();
         Node& node = nodes_[i];
         node_fields(in, node);
-        in.require(link_ok(node.parent) && link_ok(node.child1) && link_ok(node.child2) &&
-                       (node.child1 == null_node) == (node.child2 == null_node) &&
-                       node.height >= -1 && node.height < max_stack / 2,
-                   "",
-                   "links must be -1 or < " + decimal(std::uint64_t(n)) +
-                       ", both children or none, height in [-1, " +
-                       decimal(std::uint64_t(max_stack / 2)) + ")",
-                   at);
+        if (!(link_ok(node.parent) && link_ok(node.child1) && link_ok(node.child2) &&
+              (node.child1 == null_node) == (node.child2 == null_node) && node.height >= -1 &&
+              node.height < max_stack / 2)) // (message built only to fail)
+            in.fail_at(at, "",
+                       "links must be -1 or < " + decimal(std::uint64_t(n)) +
+                           ", both children or none, height in [-1, " +
+                           decimal(std::uint64_t(max_stack / 2)) + ")");
     }
     in.in(nullptr);
     const std::size_t at = in.offset();

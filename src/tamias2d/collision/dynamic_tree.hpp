@@ -16,6 +16,7 @@
 
 #include "tamias2d/geometry/aabb.hpp"
 #include "tamias2d/math/prefetch.hpp"
+#include "tamias2d/memory/allocator.hpp"
 #include "tamias2d/memory/large_array.hpp"
 #include "tamias2d/vec2.hpp"
 
@@ -26,6 +27,11 @@ class SnapshotReader;
 
 class DynamicTree {
   public:
+    /// Room for n proxies' nodes (2 n - 1: leaves and branches) without growing.
+    void reserve(std::size_t n) {
+        nodes_.reserve(2 * n);
+        marked_.reserve(2 * n);
+    }
     static constexpr int null_node = -1;
     /// Enough for any AVL-balanced tree that fits in memory (height <= 1.44 log2 n).
     static constexpr int max_stack = 256;
@@ -157,14 +163,14 @@ class DynamicTree {
     int root_ = null_node;
     int free_list_ = null_node;
     int proxy_count_ = 0;
-    std::vector<Item> items_; ///< rebuild scratch
+    memory::vector<Item> items_; ///< rebuild scratch
     /// Rebuild scratch: the freed nodes (one bit per node, then ascending), reused by build.
-    std::vector<std::uint64_t> spare_bits_;
-    std::vector<int> spare_;
+    memory::vector<std::uint64_t> spare_bits_;
+    memory::vector<int> spare_;
     std::size_t next_spare_ = 0;
-    std::vector<int> marked_; ///< the nodes mark_leaf marked, for clear_marks
+    memory::vector<int> marked_; ///< the nodes mark_leaf marked, for clear_marks
     /// The marked-pair searches' stack: node pairs still to open (this tree's, other's).
-    std::vector<std::pair<int, int>> pair_stack_;
+    memory::vector<std::pair<int, int>> pair_stack_;
 };
 
 namespace detail {

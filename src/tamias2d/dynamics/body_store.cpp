@@ -9,6 +9,7 @@
 #include "tamias2d/dynamics/state_hasher.hpp"
 #include "tamias2d/errors.hpp"
 #include "tamias2d/geometry/mass_properties.hpp"
+#include "tamias2d/memory/allocator.hpp"
 #include "tamias2d/model/dd15_kinetic_energy.hpp"
 #include "tamias2d/model/dd16_potential_energy.hpp"
 #include "tamias2d/model/gd1_conservation_of_momentum.hpp"
@@ -123,14 +124,18 @@ void BodyStore::update_mass(std::uint32_t i, ShapeStore& shapes) {
     b.mass = b.inv_mass = b.inertia = b.inv_inertia = 0.0;
     b.local_center = {};
     if (b.type == BodyType::dynamic) {
-        std::vector<MassData> parts;
+        std::size_t count = 0;
+        for (std::uint32_t s = b.first_shape; s != null_index; s = shapes.shapes[s].next)
+            ++count;
+        memory::Scratch<MassData, 8> parts(count);
+        std::size_t k = 0;
         for (std::uint32_t s = b.first_shape; s != null_index; s = shapes.shapes[s].next) {
             const ShapeDef& d = shapes.defs[s];
-            parts.push_back(compute_mass(d.geometry, d.material.density));
+            parts[k++] = compute_mass(d.geometry, d.material.density);
         }
         MassData md{};
-        if (!parts.empty())
-            md = combine(parts);
+        if (count != 0)
+            md = combine({parts.data(), count});
         b.local_center = set.center_override.value_or(md.center);
         const double shape_mass = md.mass;
         // No shape, or only shapes of no area (segments, chains): the shapeless default.
@@ -147,7 +152,7 @@ void BodyStore::update_mass(std::uint32_t i, ShapeStore& shapes) {
     shapes.sync_poses(b);
 }
 
-void BodyStore::evaluate_loads(double time, std::vector<Load>& loads) const {
+void BodyStore::evaluate_loads(double time, memory::vector<Load>& loads) const {
     loads.clear();
     if (loaded_bodies > 0)
         loads.assign(size(), Load{});
@@ -207,7 +212,7 @@ double BodyStore::potential_energy(Vec2d g) const {
 
 Vec2d BodyStore::linear_momentum() const {
     namespace u = tamias2d::units;
-    std::vector<model::gd1::MassVelocity> mv;
+    memory::vector<model::gd1::MassVelocity> mv;
     each_dynamic(*this, [&](const Body& b) {
         mv.push_back({u::from_value<u::Mass>(b.mass), bridge::typed<u::Velocity>(b.v)});
     });
@@ -363,7 +368,7 @@ void BodyStore::write(SnapshotWriter& out) const {
     }
 }
 
-void BodyStore::read(SnapshotReader& in, std::vector<std::uint32_t>& had_load) {
+void BodyStore::read(SnapshotReader& in, memory::vector<std::uint32_t>& had_load) {
     in.section("BODY");
     in.in("bodies");
     slots.read(in);
@@ -394,7 +399,7 @@ void BodyStore::read(SnapshotReader& in, std::vector<std::uint32_t>& had_load) {
 
 void BodyStore::check_links(SnapshotReader& in, ShapeStore& shapes) const {
     const std::uint32_t ns = std::uint32_t(shapes.shapes.size());
-    std::vector<std::uint8_t> seen(ns, 0);
+    memory::vector<std::uint8_t> seen(ns, 0);
     shapes.last_of_body.assign(size(), null_index);
     for (std::uint32_t i = 0; i < size(); ++i) {
         in.in("bodies", i);

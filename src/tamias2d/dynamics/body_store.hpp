@@ -11,6 +11,7 @@
 #include "tamias2d/dynamics/body.hpp"
 #include "tamias2d/dynamics/sleep.hpp"
 #include "tamias2d/handles.hpp"
+#include "tamias2d/memory/allocator.hpp"
 #include "tamias2d/memory/large_array.hpp"
 #include "tamias2d/memory/slot_map.hpp"
 
@@ -24,23 +25,32 @@ class SnapshotReader;
 struct BodyStore {
     /// The bodies of the world tagged `world` (World::tag).
     explicit BodyStore(std::uint32_t world) : slots(world) {}
+    /// Room for n bodies without growing (WorldDef::capacity).
+    void reserve(std::size_t n) {
+        slots.reserve(n);
+        bodies.reserve(n);
+        settings.reserve(n);
+        sleep_states.reserve(n);
+        mass_pending_.reserve(n);
+        mass_pending_flag_.reserve(n);
+    }
 
     /// Which bodies live, their handles' generations and the free slots (only handle checks and
     /// the hash read the generations, so they are kept out of Body, which a step streams three
     /// times).
     SlotMap<BodyId> slots;
     LargeArray<Body> bodies;
-    std::vector<BodySettings> settings; ///< per body, indexed alike
+    memory::vector<BodySettings> settings; ///< per body, indexed alike
     /// Per body, indexed alike: awake or asleep, and for how long at rest (read by the step only
     /// with sleeping on, WorldDef::enable_sleep).
-    std::vector<SleepState> sleep_states;
+    memory::vector<SleepState> sleep_states;
     std::uint32_t loaded_bodies = 0; ///< live bodies with a load function
 
   private:
     /// The bodies whose mass attach_shape left pending (settle, get), flagged per body; the
     /// shapes they read. Mutable: a const query brings them up to date before it reads them.
-    mutable std::vector<std::uint32_t> mass_pending_;
-    mutable std::vector<bool> mass_pending_flag_;
+    mutable memory::vector<std::uint32_t> mass_pending_;
+    mutable memory::vector<bool> mass_pending_flag_;
     mutable ShapeStore* pending_shapes_ = nullptr;
     void settle(std::uint32_t i) const;
 
@@ -92,7 +102,7 @@ struct BodyStore {
     /// The time-varying loads at time `time` (the step's start) into `loads`, per body: a
     /// user function returning NaN is rejected before anything has changed. Most worlds have
     /// none: then no setting is read and `loads` stays empty.
-    void evaluate_loads(double time, std::vector<Load>& loads) const;
+    void evaluate_loads(double time, memory::vector<Load>& loads) const;
     /// \srs{DCX_range} A step starts only from a state within supported::state_max, the
     /// headroom a simulation of in-range inputs may grow into; from there no product of one
     /// step overflows (docs/design.md, "Supported ranges"). One pass over the bodies, before
@@ -119,7 +129,7 @@ struct BodyStore {
     /// Reads what write wrote into this empty store. A load function cannot be written: the
     /// bodies that had one are listed in `had_load` (World::restore gives them the target's).
     /// Throws SnapshotError for a defect in the bytes (link_shapes checks the shape lists).
-    void read(SnapshotReader& in, std::vector<std::uint32_t>& had_load);
+    void read(SnapshotReader& in, memory::vector<std::uint32_t>& had_load);
     /// After both stores are read: each live body's shape list holds live shapes of that body
     /// (each once, ending in null_index), every live shape is on its body's list, and the free
     /// slots are dead and distinct. Rebuilds ShapeStore::last_of_body.

@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "tamias2d/math/wide.hpp"
+#include "tamias2d/memory/allocator.hpp"
 
 namespace tamias2d {
 
@@ -153,32 +154,32 @@ class ConstraintGraph {
 
     /// Per body: one past the level of its last constraint so far, while levelling; then the
     /// pack of its last constraint placed so far, while packing (no_constraint: none yet).
-    std::vector<std::uint32_t> body_mark_;
-    std::vector<std::uint32_t> level_of_;
-    std::vector<std::uint32_t> level_start_, level_fill_;
-    std::vector<double> cuts_;             ///< scratch for the regions' bounds
-    std::vector<std::uint32_t> stream_of_; ///< per manifold: its stream
+    memory::vector<std::uint32_t> body_mark_;
+    memory::vector<std::uint32_t> level_of_;
+    memory::vector<std::uint32_t> level_start_, level_fill_;
+    memory::vector<double> cuts_;             ///< scratch for the regions' bounds
+    memory::vector<std::uint32_t> stream_of_; ///< per manifold: its stream
     /// The inputs the packs were made from (regions 0: not coloured yet; colour makes R >= 1).
-    std::vector<GraphEdge> coloured_edges_;
+    memory::vector<GraphEdge> coloured_edges_;
     std::uint32_t coloured_regions_ = 0;
     std::size_t coloured_bodies_ = 0;
-    std::vector<std::uint32_t> sequence_;     ///< the manifolds in the pass's order
-    std::vector<std::uint64_t> body_colours_; ///< per body: the colours taken on it (scratch)
-    std::vector<std::uint32_t> colour_of_, between_scratch_; ///< scratch of between_by_colour
+    memory::vector<std::uint32_t> sequence_;     ///< the manifolds in the pass's order
+    memory::vector<std::uint64_t> body_colours_; ///< per body: the colours taken on it (scratch)
+    memory::vector<std::uint32_t> colour_of_, between_scratch_; ///< scratch of between_by_colour
     /// A constraint, its bodies and its stream, in solve order (what placing it reads).
     struct Placement {
         std::uint32_t index = 0;
         std::uint32_t body_a = 0, body_b = 0;
         std::uint32_t stream = 0;
     };
-    std::vector<Placement> sorted_;
+    memory::vector<Placement> sorted_;
     std::uint32_t streams_ = 1;
-    std::vector<Pack> packs_;
-    std::vector<std::uint32_t> pack_stream_;
-    std::vector<std::uint32_t> stream_begin_;
-    std::vector<std::uint32_t> wait_begin_;
-    std::vector<StreamWait> waits_;
-    std::vector<std::uint8_t> awaited_;
+    memory::vector<Pack> packs_;
+    memory::vector<std::uint32_t> pack_stream_;
+    memory::vector<std::uint32_t> stream_begin_;
+    memory::vector<std::uint32_t> wait_begin_;
+    memory::vector<StreamWait> waits_;
+    memory::vector<std::uint8_t> awaited_;
 };
 
 } // namespace tamias2d

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "tamias2d/math/vec2d.hpp"
+#include "tamias2d/memory/allocator.hpp"
 #include "tamias2d/world_def.hpp"
 
 namespace tamias2d {
@@ -50,8 +51,8 @@ class ContinuousPass {
     void sweep(const FastBody& f, bool bullet, BodyStore& bodies, ShapeStore& shapes,
                const ContactManager& contacts, const JointStore& joints, const WorldDef& def);
 
-    std::vector<FastBody> fast_;
-    std::vector<std::uint32_t> nearby_; ///< scratch: the static shapes near one body's path
+    memory::vector<FastBody> fast_;
+    memory::vector<std::uint32_t> nearby_; ///< scratch: the static shapes near one body's path
 };
 
 } // namespace tamias2d

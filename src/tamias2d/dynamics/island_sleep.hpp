@@ -9,6 +9,7 @@
 
 #include "tamias2d/dynamics/sleep.hpp"
 #include "tamias2d/dynamics/step_context.hpp"
+#include "tamias2d/memory/allocator.hpp"
 
 namespace tamias2d {
 
@@ -30,8 +31,8 @@ class IslandSleep {
     // Per island (at its representative): whether a body of it is awake, and its bodies'
     // shortest time at rest.
     Islands islands_;
-    std::vector<std::uint8_t> island_awake_;
-    std::vector<double> island_rest_;
+    memory::vector<std::uint8_t> island_awake_;
+    memory::vector<double> island_rest_;
 };
 
 } // namespace tamias2d

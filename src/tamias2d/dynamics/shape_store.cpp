@@ -10,6 +10,7 @@
 #include "tamias2d/geometry/shape_factory.hpp"
 #include "tamias2d/geometry/shape_queries.hpp"
 #include "tamias2d/math/prefetch.hpp"
+#include "tamias2d/memory/allocator.hpp"
 #include "tamias2d/validation.hpp"
 
 namespace tamias2d {
@@ -260,7 +261,7 @@ void ShapeStore::read(SnapshotReader& in) {
     in.require(n <= null_index - 1, "slots", "must be fewer than 4294967295", in.offset());
     shapes.resize(n);
     defs.resize(n);
-    std::vector<std::size_t> at(n);
+    memory::vector<std::size_t> at(n);
     for (std::uint32_t i = 0; i < n; ++i) {
         in.in("shapes", i);
         at[i] = in.offset();
@@ -296,9 +297,9 @@ void ShapeStore::read(SnapshotReader& in) {
             in.fail_at(at[i], "proxy", "must be a leaf of the broad phase whose user is the shape");
     }
     in.in(nullptr);
-    in.require(live == broad_phase.proxy_count(), "broad_phase",
-               "must hold one proxy per live shape (" + decimal(std::uint64_t(live)) + ")",
-               in.offset());
+    if (live != broad_phase.proxy_count()) // (message built only to fail)
+        in.fail("broad_phase",
+                "must hold one proxy per live shape (" + decimal(std::uint64_t(live)) + ")");
 }
 
 // --- shape_control ---

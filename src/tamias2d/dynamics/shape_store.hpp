@@ -11,6 +11,7 @@
 #include "tamias2d/dynamics/body.hpp"
 #include "tamias2d/dynamics/shape.hpp"
 #include "tamias2d/handles.hpp"
+#include "tamias2d/memory/allocator.hpp"
 #include "tamias2d/memory/large_array.hpp"
 #include "tamias2d/memory/slot_map.hpp"
 #include "tamias2d/shape_def.hpp"
@@ -27,13 +28,23 @@ class ShapeStore {
   public:
     /// The shapes of the world tagged `world` (World::tag).
     explicit ShapeStore(std::uint32_t world) : slots(world) {}
+    /// Room for n shapes on up to `bodies` bodies without growing (WorldDef::capacity).
+    void reserve(std::size_t n, std::size_t bodies) {
+        slots.reserve(n);
+        shapes.reserve(n);
+        defs.reserve(n);
+        last_of_body.reserve(bodies);
+        broad_phase.reserve(n);
+        proxy_moves_.reserve(n);
+        undecided_.reserve(n);
+    }
 
     /// Which shapes live, their handles' generations and the free slots.
     SlotMap<ShapeId> slots;
     LargeArray<Shape> shapes;
-    std::vector<ShapeDef> defs; ///< per shape, indexed alike: what it was made from
+    memory::vector<ShapeDef> defs; ///< per shape, indexed alike: what it was made from
     /// Per body index: its last shape, valid while the body's first_shape is not null_index.
-    std::vector<std::uint32_t> last_of_body;
+    memory::vector<std::uint32_t> last_of_body;
     BroadPhase broad_phase;
 
     /// The shape of a handle; throws InvalidHandle for a stale or unknown one, WrongWorld for
@@ -138,9 +149,9 @@ class ShapeStore {
 
   private:
     /// The proxies refit_fat_box moved, for one BroadPhase::move_proxies call.
-    std::vector<BroadPhase::ProxyMove> proxy_moves_;
+    memory::vector<BroadPhase::ProxyMove> proxy_moves_;
     /// The shapes follow_pose could not decide, for refit_undecided (step scratch).
-    std::vector<std::uint32_t> undecided_;
+    memory::vector<std::uint32_t> undecided_;
 };
 
 } // namespace tamias2d

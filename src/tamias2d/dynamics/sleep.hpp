@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "tamias2d/math/vec2d.hpp"
+#include "tamias2d/memory/allocator.hpp"
 
 namespace tamias2d {
 
@@ -41,7 +42,7 @@ class Islands {
     std::uint32_t find(std::uint32_t a);
 
   private:
-    std::vector<std::uint32_t> parent_;
+    memory::vector<std::uint32_t> parent_;
 };
 
 } // namespace tamias2d

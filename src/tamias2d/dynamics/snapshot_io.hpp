@@ -27,6 +27,7 @@
 
 #include "tamias2d/aabb.hpp"
 #include "tamias2d/math/vec2d.hpp"
+#include "tamias2d/memory/allocator.hpp"
 #include "tamias2d/snapshot_error.hpp"
 
 namespace tamias2d {
@@ -45,35 +46,49 @@ inline std::string decimal(std::uint64_t n) {
 
 class SnapshotWriter {
   public:
-    /// A writer into `storage`'s memory (its contents are overwritten): a caller that takes
-    /// snapshots again and again (rollback) hands the last one's vector back, so that its pages
-    /// are written, not allocated and zeroed anew.
-    explicit SnapshotWriter(std::vector<std::byte> storage = {}) : buffer_(std::move(storage)) {
-        buffer_.resize(buffer_.capacity());
+    /// A writer into a buffer of its own, from the library's allocator (memory/allocator.hpp).
+    SnapshotWriter() = default;
+    /// A writer into the caller's `storage` (its contents are overwritten; finish() leaves the
+    /// bytes in it): a caller that takes snapshots again and again (rollback) hands the last
+    /// one's vector back, so that its pages are written, not allocated and zeroed anew.
+    explicit SnapshotWriter(std::vector<std::byte>& storage) : user_(&storage) {
+        resize(storage.capacity());
     }
+    SnapshotWriter(SnapshotWriter&&) noexcept = default;
+    SnapshotWriter& operator=(SnapshotWriter&&) noexcept = default;
+    SnapshotWriter(const SnapshotWriter&) = delete;
+    SnapshotWriter& operator=(const SnapshotWriter&) = delete;
     /// Room for `n` bytes in all, so that a writer that knows about how much it writes grows
     /// its buffer once.
     void reserve(std::size_t n) {
-        if (n > buffer_.size())
-            buffer_.resize(n);
+        if (n > size_)
+            resize(n);
     }
     /// The number of bytes written.
     std::size_t size() const { return used_; }
     /// The bytes written so far (valid until the next write).
-    std::span<std::byte> written() { return std::span(buffer_).first(used_); }
-    std::span<const std::byte> written() const { return std::span(buffer_).first(used_); }
+    std::span<std::byte> written() { return {data_, used_}; }
+    std::span<const std::byte> written() const { return {data_, used_}; }
     /// Bytes as they are (a snapshot inside a recording).
     void append(std::span<const std::byte> b) {
-        if (buffer_.size() - used_ < b.size())
+        if (size_ - used_ < b.size())
             grow(b.size());
-        std::copy(b.begin(), b.end(), buffer_.begin() + std::ptrdiff_t(used_));
+        std::copy(b.begin(), b.end(), data_ + used_);
         used_ += b.size();
     }
-    /// The bytes written, handed over; the writer is empty after it.
-    std::vector<std::byte> finish() {
-        buffer_.resize(used_);
+    /// The bytes written, handed over (a writer of its own buffer); the writer is empty after.
+    memory::vector<std::byte> finish() {
+        own_.resize(used_);
         used_ = 0;
-        return std::move(buffer_);
+        data_ = nullptr;
+        size_ = 0;
+        return std::move(own_);
+    }
+    /// The bytes written left in the caller's storage, of exactly their size (a writer into
+    /// the caller's vector).
+    void finish_in_storage() {
+        user_->resize(used_);
+        used_ = 0;
     }
 
     void u8(std::uint8_t v) { le(v, 1); }
@@ -152,9 +167,9 @@ class SnapshotWriter {
     /// Every field passes here: a cursor into a buffer grown by doubling, so that a write is a
     /// comparison and a store (a vector's resize per field was most of a snapshot's time).
     void le(std::uint64_t v, int n) {
-        if (buffer_.size() - used_ < std::size_t(n)) [[unlikely]]
+        if (size_ - used_ < std::size_t(n)) [[unlikely]]
             grow(std::size_t(n));
-        std::byte* at = buffer_.data() + used_;
+        std::byte* at = data_ + used_;
         if constexpr (std::endian::native == std::endian::little) {
             std::memcpy(at, &v, std::size_t(n));
         } else {
@@ -164,11 +179,25 @@ class SnapshotWriter {
         used_ += std::size_t(n);
     }
     [[gnu::noinline]] void grow(std::size_t n) {
-        buffer_.resize(std::max({2 * buffer_.size(), used_ + n, std::size_t{4096}}));
+        resize(std::max({2 * size_, used_ + n, std::size_t{4096}}));
+    }
+    /// The buffer (the caller's or its own) holding n bytes, the written ones kept.
+    void resize(std::size_t n) {
+        if (user_ != nullptr) {
+            user_->resize(n);
+            data_ = user_->data();
+        } else {
+            own_.resize(n);
+            data_ = own_.data();
+        }
+        size_ = n;
     }
 
-    std::vector<std::byte> buffer_; ///< written bytes, then room
-    std::size_t used_ = 0;          ///< bytes written
+    std::vector<std::byte>* user_ = nullptr; ///< the caller's storage, or none: own_
+    memory::vector<std::byte> own_;
+    std::byte* data_ = nullptr; ///< the buffer: written bytes, then room
+    std::size_t size_ = 0;      ///< the buffer's size
+    std::size_t used_ = 0;      ///< bytes written
 };
 
 class SnapshotReader {

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "tamias2d/body_def.hpp"
+#include "tamias2d/memory/allocator.hpp"
 #include "tamias2d/world_def.hpp"
 
 namespace tamias2d {
@@ -18,7 +19,7 @@ struct StepContext {
     double h;      ///< s, the substep: dt / def.substeps
     bool sleeping; ///< def.enable_sleep
     /// The load functions' values per body at the step's start, or empty when no body has one.
-    const std::vector<Load>& loads;
+    const memory::vector<Load>& loads;
     const StepTasks& tasks; ///< the step's parallel loops
 };
 

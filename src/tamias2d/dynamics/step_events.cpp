@@ -12,6 +12,7 @@
 #include "tamias2d/dynamics/snapshot_io.hpp"
 #include "tamias2d/dynamics/state_hasher.hpp"
 #include "tamias2d/errors.hpp"
+#include "tamias2d/memory/allocator.hpp"
 #include "tamias2d/units/angle.hpp"
 #include "tamias2d/validation.hpp"
 #include "tamias2d/world_def.hpp"
@@ -49,7 +50,7 @@ void StepEvents::set_move_events(std::uint32_t body, bool on) {
 void StepEvents::body_destroying(std::uint32_t i, const BodyStore& bodies, const ShapeStore& shapes,
                                  const JointStore& joints) {
     // Destroyed last first (World::destroy_body's order), so that the events list them so.
-    const std::vector<std::uint32_t>& of_body = joints.of_body(i);
+    const memory::vector<std::uint32_t>& of_body = joints.of_body(i);
     for (auto it = of_body.rbegin(); it != of_body.rend(); ++it) {
         const Joint& j = joints.joints[*it];
         joint_events.push_back(

@@ -13,6 +13,7 @@
 #include "tamias2d/dynamics/joints/joint.hpp"
 #include "tamias2d/events.hpp"
 #include "tamias2d/joint_def.hpp"
+#include "tamias2d/memory/allocator.hpp"
 #include "tamias2d/shape_def.hpp"
 #include "tamias2d/validation.hpp"
 
@@ -33,9 +34,15 @@ double approach_speed(const ContactManager& contacts, std::uint32_t contact, int
 
 class StepEvents {
   public:
-    std::vector<ContactHitEvent> hits;    ///< the last step's, in contact order
-    std::vector<BodyMoveEvent> moves;     ///< the last step's, in body order
-    std::vector<JointEvent> joint_events; ///< the last step's and the destructions' since
+    /// Room for n bodies' flags and moves without growing (WorldDef::capacity).
+    void reserve(std::size_t n) {
+        moves.reserve(n);
+        move_flag_.reserve(n);
+        moved_.reserve(n);
+    }
+    memory::vector<ContactHitEvent> hits;    ///< the last step's, in contact order
+    memory::vector<BodyMoveEvent> moves;     ///< the last step's, in body order
+    memory::vector<JointEvent> joint_events; ///< the last step's and the destructions' since
 
     // --- the world's objects come and go ---
     /// Body i was created from `def`.
@@ -99,11 +106,11 @@ class StepEvents {
         std::uint32_t contact;
         double speed[2]; ///< m s^-1 per manifold point; 0 where not above the threshold
     };
-    std::vector<Candidate> candidates_;
-    std::vector<std::uint8_t> move_flag_; ///< per body index: BodyDef::enable_move_events
-    std::vector<std::uint8_t> moved_;     ///< per body index: awake during the last solve
-    bool moved_known_ = false;            ///< before_sleep ran in this step
-    bool thresholds_used_ = false;        ///< some joint has had a finite threshold
+    memory::vector<Candidate> candidates_;
+    memory::vector<std::uint8_t> move_flag_; ///< per body index: BodyDef::enable_move_events
+    memory::vector<std::uint8_t> moved_;     ///< per body index: awake during the last solve
+    bool moved_known_ = false;               ///< before_sleep ran in this step
+    bool thresholds_used_ = false;           ///< some joint has had a finite threshold
     static constexpr double infinite = std::numeric_limits<double>::infinity();
     std::uint32_t move_bodies_ = 0; ///< live bodies with move events
     std::uint32_t hit_shapes_ = 0;  ///< live shapes with hit events

@@ -13,6 +13,7 @@
 #include "tamias2d/dynamics/model_bridge.hpp"
 #include "tamias2d/dynamics/shape_store.hpp"
 #include "tamias2d/math/prefetch.hpp"
+#include "tamias2d/memory/allocator.hpp"
 #include "tamias2d/parallel/step_tasks.hpp"
 
 namespace tamias2d {
@@ -39,7 +40,7 @@ struct Accelerations {
     double alpha = 0.0;
 };
 
-Accelerations accelerations_of(const Body& b, std::uint32_t i, const std::vector<Load>& loads,
+Accelerations accelerations_of(const Body& b, std::uint32_t i, const memory::vector<Load>& loads,
                                const WorldDef& def) {
     if (b.type != BodyType::dynamic)
         return {};
@@ -64,7 +65,7 @@ Accelerations accelerations_of(const Body& b, std::uint32_t i, const std::vector
 // phase's sweep of the contacts and the lane filling's gather of them pushed them out of the
 // cache (rain_16k).
 void StepSolver::prepare_bodies(const BodyStore& store, const StepContext& step) {
-    const std::vector<Load>& loads = step.loads;
+    const memory::vector<Load>& loads = step.loads;
     const WorldDef& def = step.def;
     const double h = step.h;
     const StepTasks& tasks = step.tasks;
@@ -132,7 +133,7 @@ void StepSolver::prepare_bodies(const BodyStore& store, const StepContext& step)
 // whether one is damped; after the blocks' counts are summed in block order, each block writes
 // its solver bodies from its first number on. The numbering and the values are the serial
 // loop's.
-void StepSolver::prepare_bodies_in_blocks(const BodyStore& store, const std::vector<Load>& loads,
+void StepSolver::prepare_bodies_in_blocks(const BodyStore& store, const memory::vector<Load>& loads,
                                           const WorldDef& def, double h, Vec2d across,
                                           const StepTasks& tasks) {
     const auto& bodies = store.bodies;
@@ -310,7 +311,7 @@ void StepSolver::prepare_joints(JointStore& joints, const BodyStore& bodies) {
     turn_joints(joints.joints);
 }
 
-void StepSolver::turn_joints(std::vector<Joint>& joints) {
+void StepSolver::turn_joints(memory::vector<Joint>& joints) {
     if (jointed_.empty())
         return;
     for (const JointedBody& jb : jointed_)
@@ -456,7 +457,7 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
     const int n = def.substeps;
     const double dt = step.dt;
     const double h = step.h;
-    std::vector<Joint>& joints = joint_store.joints;
+    memory::vector<Joint>& joints = joint_store.joints;
     // Warm starting off (Box2D v3's enableWarmStarting): the step starts from zero impulses,
     // and no substep starts from the impulses of the one before.
     const bool warm = def.enable_warm_starting;

@@ -18,6 +18,7 @@
 #include "tamias2d/dynamics/solver_body.hpp"
 #include "tamias2d/dynamics/step_context.hpp"
 #include "tamias2d/handles.hpp"
+#include "tamias2d/memory/allocator.hpp"
 #include "tamias2d/memory/large_array.hpp"
 #include "tamias2d/world_def.hpp"
 
@@ -31,6 +32,22 @@ class StepTasks;
 
 class StepSolver {
   public:
+    /// Room for the per-body arrays of n bodies and the per-manifold ones of `contacts`
+    /// contacts without growing (WorldDef::capacity).
+    void reserve(std::size_t n, std::size_t contacts) {
+        solver_bodies_.reserve(n + 1);
+        accelerations_.reserve(n + 1);
+        angular_accelerations_.reserve(n + 1);
+        linear_decay_.reserve(n + 1);
+        angular_decay_.reserve(n + 1);
+        solver_index_.reserve(n);
+        cut_.reserve(n + 1);
+        edges_.reserve(contacts);
+        edge_contact_.reserve(contacts);
+        edge_slot_.reserve(contacts);
+        written_back_.reserve(n);
+        starts_.reserve(n);
+    }
     /// The solver bodies and their accelerations (IM1, IM2's loads; IM5's decay factors over
     /// the substep h): one per awake non-static body, 0 standing for every immovable one.
     /// With more than one worker, in parallel blocks of bodies, to the serial loop's results.
@@ -62,7 +79,7 @@ class StepSolver {
 
   private:
     /// prepare_bodies' parallel form; `across` is the axis the contact regions are cut across.
-    void prepare_bodies_in_blocks(const BodyStore& store, const std::vector<Load>& loads,
+    void prepare_bodies_in_blocks(const BodyStore& store, const memory::vector<Load>& loads,
                                   const WorldDef& def, double h, Vec2d across,
                                   const StepTasks& tasks);
     /// \srs{R5} \srs{R6} IM1/IM2, the velocity half of the semi-implicit Euler step (DD4, DD7);
@@ -101,7 +118,7 @@ class StepSolver {
     void store_impulses(ContactManager& contacts, const StepTasks& tasks,
                         std::uint32_t bounce_count, const ContactSolverSettings& st);
     /// The joints' body rotations after a position half (Joint::q_a, q_b).
-    void turn_joints(std::vector<Joint>& joints);
+    void turn_joints(memory::vector<Joint>& joints);
     /// DD39 and DD40 before a position half (and at the step's end): the locked velocity
     /// components zeroed, then a speed above `max_speed` slowed to it. Nothing without a lock
     /// and with an infinite limit.
@@ -111,28 +128,28 @@ class StepSolver {
         std::uint32_t solver;
         bool x, y;
     };
-    std::vector<LockedBody> locked_;
+    memory::vector<LockedBody> locked_;
 
     LargeArray<SolverBody> solver_bodies_;
-    std::vector<Vec2d> accelerations_;
-    std::vector<double> angular_accelerations_;
-    std::vector<double> linear_decay_, angular_decay_; ///< IM5's factors per solver body
+    memory::vector<Vec2d> accelerations_;
+    memory::vector<double> angular_accelerations_;
+    memory::vector<double> linear_decay_, angular_decay_; ///< IM5's factors per solver body
     bool any_damped_ = false; ///< this step: some solver body is damped (else no factors)
-    std::vector<std::uint32_t> solver_index_; ///< per body: its SolverBody (0: immovable)
+    memory::vector<std::uint32_t> solver_index_; ///< per body: its SolverBody (0: immovable)
     /// prepare_bodies_in_blocks' per block: its first solver body, whether one is damped.
-    std::vector<std::uint32_t> block_first_;
-    std::vector<std::uint8_t> block_damped_;
+    memory::vector<std::uint32_t> block_first_;
+    memory::vector<std::uint8_t> block_damped_;
     /// Per solver body: its centre along the axis the contact streams are cut across (m).
-    std::vector<double> cut_;
-    std::uint32_t diverged_ = null_index;     ///< see diverged()
-    std::vector<GraphEdge> edges_;            ///< the touching manifolds, creation order
-    std::vector<std::uint32_t> edge_contact_; ///< per edge: its contact
-    std::vector<std::uint32_t> edge_slot_;    ///< per edge: its copy in `bouncing_`, or no_slot
+    memory::vector<double> cut_;
+    std::uint32_t diverged_ = null_index;        ///< see diverged()
+    memory::vector<GraphEdge> edges_;            ///< the touching manifolds, creation order
+    memory::vector<std::uint32_t> edge_contact_; ///< per edge: its contact
+    memory::vector<std::uint32_t> edge_slot_;    ///< per edge: its copy in `bouncing_`, or no_slot
     struct EdgeCount {
         std::uint32_t edges = 0, bounces = 0;
     };
-    std::vector<EdgeCount> edge_block_first_; ///< list_edges' per block: its first edge, slot
-    std::vector<ContactConstraint> bouncing_; ///< manifolds with restitution, creation order
+    memory::vector<EdgeCount> edge_block_first_; ///< list_edges' per block: its first edge, slot
+    memory::vector<ContactConstraint> bouncing_; ///< manifolds with restitution, creation order
     WideContactSolver wide_solver_;
     PackStreams pack_streams_;
     /// The moving bodies some joint holds: solver body and angle at the step's start.
@@ -140,23 +157,23 @@ class StepSolver {
         std::uint32_t solver;
         double angle;
     };
-    std::vector<JointedBody> jointed_;
-    std::vector<Rot> joint_rotations_; ///< per solver body, for the jointed ones
+    memory::vector<JointedBody> jointed_;
+    memory::vector<Rot> joint_rotations_; ///< per solver body, for the jointed ones
     /// Per solver body: in jointed_. Kept until the next preparation, so that write_back finds
     /// the jointed bodies' last rotations.
-    std::vector<std::uint8_t> listed_;
+    memory::vector<std::uint8_t> listed_;
     ContinuousPass continuous_;
     /// finalize's parallel form, per body: bit 0 swept by the continuous pass (from starts_),
     /// bit 1 some shape undecided (undecided_, per shape).
-    std::vector<std::uint8_t> written_back_;
+    memory::vector<std::uint8_t> written_back_;
     struct Start {
         Vec2d center;
         double angle;
         Vec2d v;
         double w;
     };
-    std::vector<Start> starts_;
-    std::vector<std::uint8_t> undecided_;
+    memory::vector<Start> starts_;
+    memory::vector<std::uint8_t> undecided_;
 };
 
 } // namespace tamias2d

@@ -6,6 +6,7 @@
 
 #include "tamias2d/errors.hpp"
 #include "tamias2d/math/vec2d.hpp"
+#include "tamias2d/memory/allocator.hpp"
 #include "tamias2d/model/dcx_shape_non_degenerate_shapes.hpp"
 #include "tamias2d/model/dd01_center_of_mass.hpp"
 #include "tamias2d/model/dd14_moment_of_inertia.hpp"
@@ -133,12 +134,12 @@ MassData combine(std::span<const MassData> parts) {
     MassData out;
     if (parts.empty())
         return out;
-    std::vector<dd01::PointMass> points;
-    points.reserve(parts.size());
+    memory::Scratch<dd01::PointMass, 8> points(parts.size());
     Vec2d mean{};
-    for (const MassData& d : parts) {
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+        const MassData& d = parts[k];
         out.mass += d.mass;
-        points.push_back({kg(d.mass), metres(d.center)});
+        points[k] = {kg(d.mass), metres(d.center)};
         mean += d.center;
     }
     if (!(out.mass > 0.0)) {
@@ -148,7 +149,7 @@ MassData combine(std::span<const MassData> parts) {
         return out;
     }
     /// \srs{DD1} combined centre of mass
-    out.center = plain(dd01::center_of_mass(points));
+    out.center = plain(dd01::center_of_mass({points.data(), points.size()}));
     for (const MassData& d : parts) {
         const double dist = length(d.center - out.center);
         /// \srs{DD14} parallel-axis theorem

@@ -10,6 +10,7 @@
 #include "tamias2d/errors.hpp"
 #include "tamias2d/geometry/mass_properties.hpp"
 #include "tamias2d/math/vec2d.hpp"
+#include "tamias2d/memory/allocator.hpp"
 #include "tamias2d/model/dcx_shape_non_degenerate_shapes.hpp"
 
 namespace tamias2d {
@@ -108,7 +109,7 @@ Polygon make_polygon(std::span<const Vec2d> points) {
         require_finite_element(points[i], "polygon.points", i);
 
     // Andrew's monotone chain: O(n log n), no recursion, deterministic for a given input set.
-    std::vector<Vec2d> pts(points.begin(), points.end());
+    memory::vector<Vec2d> pts(points.begin(), points.end());
     std::sort(pts.begin(), pts.end(),
               [](Vec2d a, Vec2d b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
     const auto [lo_y, hi_y] =
@@ -119,7 +120,7 @@ Polygon make_polygon(std::span<const Vec2d> points) {
                               "DCX_shape");
     const double tol = hull_weld_tolerance * extent;
 
-    std::vector<Vec2d> hull(2 * pts.size());
+    memory::vector<Vec2d> hull(2 * pts.size());
     std::size_t k = 0;
     // Strict left turns only: exactly collinear points are dropped here.
     for (const Vec2d& p : pts) { // lower chain
@@ -201,7 +202,7 @@ Segment make_segment(Vec2d point1, Vec2d point2) {
     return s;
 }
 
-std::vector<ChainSegment> make_chain(std::span<const Vec2d> points, bool loop) {
+memory::vector<ChainSegment> make_chain(std::span<const Vec2d> points, bool loop) {
     const std::size_t n = points.size();
     const std::size_t least = loop ? 3 : 2;
     if (n < least)
@@ -215,7 +216,7 @@ std::vector<ChainSegment> make_chain(std::span<const Vec2d> points, bool loop) {
         if (!(length(points[(i + 1) % n] - points[i]) > 0.0))
             require_distinct(points[i], points[(i + 1) % n], element("chain.points", (i + 1) % n));
     }
-    std::vector<ChainSegment> out(edges);
+    memory::vector<ChainSegment> out(edges);
     for (std::size_t i = 0; i < edges; ++i) {
         ChainSegment& s = out[i];
         s.point1 = points[i];

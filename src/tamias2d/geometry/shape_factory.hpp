@@ -8,6 +8,7 @@
 #include <span>
 #include <vector>
 
+#include "tamias2d/memory/allocator.hpp"
 #include "tamias2d/shapes.hpp"
 
 namespace tamias2d {
@@ -41,7 +42,7 @@ Segment make_segment(Vec2d point1, Vec2d point2);
 /// loop; consecutive points distinct, all finite), each colliding on its right (DD31). A loop
 /// also joins the last point to the first. An open chain's two ends are convex corners (their
 /// ghosts lie straight behind the end, so a shape rolls round an end as round a box's corner).
-std::vector<ChainSegment> make_chain(std::span<const Vec2d> points, bool loop);
+memory::vector<ChainSegment> make_chain(std::span<const Vec2d> points, bool loop);
 
 /// Wraps a shape in the tagged Geometry the world stores.
 Geometry to_geometry(const Circle& c);

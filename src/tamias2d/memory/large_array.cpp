@@ -1,5 +1,6 @@
 #include "tamias2d/memory/large_array.hpp"
 
+#include "tamias2d/memory/allocator.hpp"
 #include "tamias2d/memory/retained_blocks.hpp"
 
 #include <algorithm>
@@ -24,9 +25,6 @@ bool is_large(std::size_t bytes) {
 /// A large block's mapping: whole huge pages (a growth within them needs nothing).
 std::size_t rounded(std::size_t bytes) {
     return (bytes + huge_page - 1) / huge_page * huge_page;
-}
-std::align_val_t small_alignment(std::size_t align) {
-    return std::align_val_t(std::max(align, alignof(std::max_align_t)));
 }
 
 // The platform's part: fresh aligned blocks of whole huge pages, given back, and grown without
@@ -139,14 +137,26 @@ void release_retained_memory() {
 
 namespace detail {
 
+// With an allocator hook set (allocator.hpp) every block, large or small, comes from it, and a
+// large one grows by copying into a new block; without one the small blocks come from operator
+// new and the large ones are mapped. The hook cannot change while a block is held, so a block
+// is always released to the allocator it came from.
 void* allocate_block(std::size_t bytes, std::size_t align) {
-    return is_large(bytes) ? map_large(bytes) : ::operator new(bytes, small_alignment(align));
+    if (is_large(bytes) && !memory::hooked()) {
+        void* p = map_large(bytes);
+        memory::count_held(1, rounded(bytes));
+        return p;
+    }
+    return memory::allocate(bytes, align);
 }
 
 void* grow_block(void* p, std::size_t used, std::size_t old_bytes, std::size_t new_bytes,
                  std::size_t align) {
-    if (is_large(old_bytes))
-        return remap_large(p, used, old_bytes, new_bytes);
+    if (is_large(old_bytes) && !memory::hooked()) {
+        void* q = remap_large(p, used, old_bytes, new_bytes);
+        memory::count_held(0, rounded(new_bytes) - rounded(old_bytes));
+        return q;
+    }
     void* q = allocate_block(new_bytes, align);
     if (used != 0)
         std::memcpy(q, p, used);
@@ -155,10 +165,12 @@ void* grow_block(void* p, std::size_t used, std::size_t old_bytes, std::size_t n
 }
 
 void release_block(void* p, std::size_t bytes, std::size_t align) noexcept {
-    if (is_large(bytes))
+    if (is_large(bytes) && !memory::hooked()) {
         unmap_large(p, bytes);
-    else // unsized: the sized form needs -fsized-deallocation, off by default in Clang 14
-        ::operator delete(p, small_alignment(align));
+        memory::count_held(-1, -rounded(bytes));
+    } else {
+        memory::deallocate(p, bytes, align);
+    }
 }
 
 } // namespace detail

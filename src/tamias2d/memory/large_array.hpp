@@ -11,8 +11,10 @@
 // 42 MiB of them with copying and needs 24 by remapping; docs/performance.md).
 // A released large block is kept mapped, up to 64 MiB in all, for the blocks of the next world,
 // as malloc keeps freed heap memory for the peers (release_retained_memory() returns it).
-// Smaller blocks come from operator new, so the steady-state allocation test sees them; the
-// large ones are counted by large_array_stats().
+// Smaller blocks come from the library's allocator (memory/allocator.hpp: operator new, so the
+// steady-state allocation test sees them); the large ones are counted by large_array_stats().
+// With an allocator hook set (allocator.hpp) every block, large or small, comes from the hook,
+// and a large one grows by copying: the game's allocator decides where memory comes from.
 #pragma once
 
 #include <cstddef>

@@ -1,5 +1,6 @@
 #include "tamias2d/memory/pair_map.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <utility>
 
@@ -52,10 +53,15 @@ void PairMap::erase(std::uint64_t key) {
     slots_[gap] = Slot{};
 }
 
-void PairMap::grow() {
+void PairMap::reserve(std::size_t n) {
+    if (2 * n > slots_.size())
+        grow(std::bit_ceil(2 * n));
+}
+
+void PairMap::grow(std::size_t size) {
     // The new array first: if it cannot be had (bad_alloc), the map is as it was.
     LargeArray<Slot> old;
-    old.assign(slots_.empty() ? 64 : 2 * slots_.size(), Slot{});
+    old.assign(std::max({size, slots_.empty() ? 64 : 2 * slots_.size()}), Slot{});
     std::swap(old, slots_);
     shift_ = 64 - std::countr_zero(slots_.size());
     for (const Slot& s : old) {

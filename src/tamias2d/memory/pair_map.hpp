@@ -16,6 +16,9 @@ namespace tamias2d {
 
 class PairMap {
   public:
+    /// Room for n keys without growing (the probing is the same at any size: a key's contact
+    /// never depends on it).
+    void reserve(std::size_t n);
     static constexpr std::uint32_t npos = ~std::uint32_t{0};
     /// The one key a pair never makes (Contact::key puts the smaller index first).
     static constexpr std::uint64_t empty_key = ~std::uint64_t{0};
@@ -48,7 +51,8 @@ class PairMap {
     std::size_t mask() const { return slots_.size() - 1; }
     /// The slot holding `key`, or the empty slot where its probe ends.
     std::size_t probe(std::uint64_t key) const;
-    void grow();
+    /// Twice the slots (64 at first), or `size` (a power of two) if that is more.
+    void grow(std::size_t size = 0);
 
     LargeArray<Slot> slots_; ///< a power of two, at most half full
     std::size_t count_ = 0;

@@ -11,6 +11,7 @@
 
 #include "tamias2d/errors.hpp"
 #include "tamias2d/handles.hpp"
+#include "tamias2d/memory/allocator.hpp"
 
 namespace tamias2d {
 
@@ -33,6 +34,11 @@ template <class Id> std::string handle_text(Id id) {
 
 template <class Id> class SlotMap {
   public:
+    /// Room for n slots, and n freed ones, without growing (WorldDef::capacity).
+    void reserve(std::size_t n) {
+        slots_.reserve(n);
+        free_.reserve(n);
+    }
     /// The slots of the world tagged `world` (never 0: a default handle names no world).
     explicit SlotMap(std::uint32_t world) : world_(world) {}
 
@@ -117,7 +123,7 @@ template <class Id> class SlotMap {
         }
         const std::size_t free = in.count("free_slots", 4, n);
         free_.resize(free);
-        std::vector<std::uint8_t> listed(n, 0);
+        memory::vector<std::uint8_t> listed(n, 0);
         for (std::uint32_t& f : free_) {
             const std::size_t at = in.offset();
             in.index("free_slot", f, size());
@@ -133,8 +139,8 @@ template <class Id> class SlotMap {
         std::uint32_t generation = 0;
         bool live = false;
     };
-    std::vector<Slot> slots_;
-    std::vector<std::uint32_t> free_; ///< freed slots, the last freed last
+    memory::vector<Slot> slots_;
+    memory::vector<std::uint32_t> free_; ///< freed slots, the last freed last
     std::uint32_t live_count_ = 0;
     std::uint32_t world_;
 };

@@ -12,11 +12,12 @@
 #include <thread>
 #include <vector>
 
+#include "tamias2d/memory/allocator.hpp"
 #include "tamias2d/task_system.hpp"
 
 namespace tamias2d {
 
-class ThreadPool {
+class ThreadPool : public memory::HookAllocated<ThreadPool> {
   public:
     /// Starts workers - 1 threads (workers >= 2).
     explicit ThreadPool(int workers);
@@ -35,7 +36,7 @@ class ThreadPool {
     /// Takes and runs the current loop's items until none is left.
     void take_items(int worker);
 
-    std::vector<std::thread> threads_;
+    memory::vector<std::thread> threads_;
     // The loop's generation, item count and next item, in one word, so that a thread that comes
     // late to a loop (or to the next one) can take an item only of the loop it read: a claim is a
     // compare-and-swap of the whole word.

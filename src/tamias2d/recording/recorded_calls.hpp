@@ -25,6 +25,7 @@
 
 #include "tamias2d/dynamics/snapshot_io.hpp"
 #include "tamias2d/errors.hpp"
+#include "tamias2d/memory/allocator.hpp"
 #include "tamias2d/world.hpp"
 
 namespace tamias2d::recording {
@@ -156,7 +157,7 @@ template <class R, class... A> struct MemberTraits<R (World::*)(A...)> {
 /// Where a decoded argument of parameter type P is held: the value itself (a span's elements
 /// in a vector).
 template <class P> struct Held { using type = std::remove_cvref_t<P>; };
-template <class T> struct Held<std::span<const T>> { using type = std::vector<T>; };
+template <class T> struct Held<std::span<const T>> { using type = memory::vector<T>; };
 template <class Tuple> struct HeldTuple;
 template <class... A> struct HeldTuple<std::tuple<A...>> {
     using type = std::tuple<typename Held<A>::type...>;
@@ -422,18 +423,18 @@ template <class IO, class T> void argument_io(IO& io, const char* f, T& v) {
         definition_io(io, v);
     } else if constexpr (is_joint_definition_v<V>) {
         joint_definition_io(io, v);
-    } else if constexpr (std::is_same_v<V, std::vector<ShapeDef>> ||
+    } else if constexpr (std::is_same_v<V, memory::vector<ShapeDef>> ||
                          std::is_same_v<V, std::span<const ShapeDef>>) {
-        if constexpr (std::is_same_v<V, std::vector<ShapeDef>> && !std::is_const_v<T>) {
+        if constexpr (std::is_same_v<V, memory::vector<ShapeDef>> && !std::is_const_v<T>) {
             v.resize(io.count(f, 8)); // (a reader: each definition is 8 bytes or more)
         } else {
             io.count(f, v.size());
         }
         for (auto& d : v)
             argument_io(io, f, d);
-    } else if constexpr (std::is_same_v<V, std::vector<std::byte>> ||
+    } else if constexpr (std::is_same_v<V, memory::vector<std::byte>> ||
                          std::is_same_v<V, std::span<const std::byte>>) {
-        if constexpr (std::is_same_v<V, std::vector<std::byte>> && !std::is_const_v<T>) {
+        if constexpr (std::is_same_v<V, memory::vector<std::byte>> && !std::is_const_v<T>) {
             v.resize(io.count(f, 1));
             for (auto& b : v)
                 b = std::byte(io.u8(f));

@@ -11,17 +11,19 @@
 #include <vector>
 
 #include "tamias2d/errors.hpp"
+#include "tamias2d/memory/allocator.hpp"
 #include "tamias2d/recording/recorded_calls.hpp"
 #include "tamias2d/recording/recording_format.hpp"
+#include "tamias2d/world_impl.hpp"
 
 namespace tamias2d {
 
 using recording::Call;
 
-struct Recorder::Impl {
-    World* world;
-    RecordOptions options;
-    std::vector<std::byte> payload;
+struct Recorder::Impl : memory::HookAllocated<Recorder::Impl> {
+    World* world = nullptr;
+    RecordOptions options{};
+    memory::vector<std::byte> payload;
     std::uint64_t steps = 0;
     std::uint64_t calls = 0;
 
@@ -82,10 +84,13 @@ template <Call C, class... A> auto record(Recorder::Impl& r, const A&... args) {
 
 } // namespace
 
-Recorder::Recorder(World& world, RecordOptions options)
-    : impl_(std::make_unique<Impl>(Impl{&world, options, {}, 0, 0})) {
+Recorder::Recorder(World& world, RecordOptions options) : impl_(std::make_unique<Impl>()) {
+    impl_->world = &world;
+    impl_->options = options;
     impl_->check_world();
-    const std::vector<std::byte> snapshot = world.snapshot();
+    SnapshotWriter snap;
+    write_snapshot(RecordingAccess::impl(world), snap);
+    const memory::vector<std::byte> snapshot = snap.finish();
     SnapshotWriter w;
     w.u32(options.body_states ? recording::flag_body_states : 0);
     w.u64(snapshot.size());
@@ -107,7 +112,8 @@ std::uint64_t Recorder::calls() const {
 }
 
 std::vector<std::byte> Recorder::bytes() const {
-    SnapshotWriter w;
+    std::vector<std::byte> bytes; // the caller's (std::allocator)
+    SnapshotWriter w(bytes);
     w.reserve(recording::header_size + impl_->payload.size());
     for (const char c : recording::magic)
         w.u8(std::uint8_t(c));
@@ -117,7 +123,8 @@ std::vector<std::byte> Recorder::bytes() const {
     const std::uint64_t sum = recording::fnv1a_64(impl_->payload, recording::fnv1a_64(w.written()));
     w.u64(sum);
     w.append(impl_->payload);
-    return w.finish();
+    w.finish_in_storage();
+    return bytes;
 }
 
 void Recorder::step(double dt) {

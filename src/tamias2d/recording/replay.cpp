@@ -3,6 +3,7 @@
 // world compared with the recorded outcome: the state hash, then the bodies' states to name
 // the first body and field that differ.
 #include "tamias2d/replay.hpp"
+#include "tamias2d/memory/allocator.hpp"
 
 #include <array>
 #include <cstdio>
@@ -42,7 +43,7 @@ struct Parsed {
     std::uint32_t flags = 0;
     std::span<const std::byte> snapshot;
     std::size_t snapshot_offset = 0;
-    std::vector<Record> records;
+    memory::vector<Record> records;
     std::uint64_t steps = 0;
 };
 
@@ -145,14 +146,15 @@ Parsed parse(std::span<const std::byte> bytes) {
             r.in(nullptr);
             const std::size_t code_at = r.offset();
             const std::uint8_t code = r.u8(name.c_str());
-            r.require(code < std::uint8_t(Call::count), name.c_str(),
-                      "call code must be < " + decimal(std::uint64_t(Call::count)), code_at);
+            if (code >= std::uint8_t(Call::count)) // (messages built only to fail)
+                r.fail_at(code_at, name.c_str(),
+                          "call code must be < " + decimal(std::uint64_t(Call::count)));
             const std::size_t size_at = r.offset();
             const std::size_t m = r.u32(name.c_str());
-            r.require(m <= r.left(), name.c_str(),
-                      "size must fit in the " + decimal(std::uint64_t(r.left())) +
-                          " bytes left (truncated)",
-                      size_at);
+            if (m > r.left())
+                r.fail_at(size_at, name.c_str(),
+                          "size must fit in the " + decimal(std::uint64_t(r.left())) +
+                              " bytes left (truncated)");
             const Record rec{Call(code), r.offset(), m, p.steps};
             const std::size_t end = rec.offset + m;
             SnapshotReader args(payload.subspan(rec.offset - header_size, m), rec.offset, 0);
@@ -197,8 +199,8 @@ std::string number(double v) {
 
 } // namespace
 
-struct Replayer::Impl {
-    std::vector<std::byte> bytes; ///< the recording (a copy: the replayer may outlive it)
+struct Replayer::Impl : memory::HookAllocated<Replayer::Impl> {
+    memory::vector<std::byte> bytes; ///< the recording (a copy: the replayer may outlive it)
     Parsed parsed;
     World world;
     std::size_t next = 0;
@@ -306,7 +308,7 @@ namespace {
 Replayer::Impl make_impl(std::span<const std::byte> recording, int workers,
                          const TaskSystem& task_system) {
     Parsed p = parse(recording);
-    std::vector<std::byte> bytes(recording.begin(), recording.end());
+    memory::vector<std::byte> bytes(recording.begin(), recording.end());
     p.snapshot = std::span<const std::byte>(bytes).subspan(p.snapshot_offset, p.snapshot.size());
     const std::size_t base = p.snapshot_offset;
     World world = [&] {
@@ -316,7 +318,7 @@ Replayer::Impl make_impl(std::span<const std::byte> recording, int workers,
             throw RecordingError(base + e.offset, "snapshot." + e.field, e.rule);
         }
     }();
-    return Replayer::Impl{std::move(bytes), std::move(p), std::move(world)};
+    return Replayer::Impl{{}, std::move(bytes), std::move(p), std::move(world)};
 }
 
 } // namespace

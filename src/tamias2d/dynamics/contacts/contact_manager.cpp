@@ -14,6 +14,7 @@
 #include "tamias2d/dynamics/step_context.hpp"
 #include "tamias2d/errors.hpp"
 #include "tamias2d/math/prefetch.hpp"
+#include "tamias2d/memory/allocator.hpp"
 #include "tamias2d/model/dd27_collision_filter.hpp"
 #include "tamias2d/model/dd42_material_mixing.hpp"
 #include "tamias2d/parallel/step_tasks.hpp"
@@ -421,8 +422,8 @@ void ContactManager::unprepared_constraint(ContactConstraint& cc, const GraphEdg
     }
 }
 
-const std::vector<ContactInfo>& ContactManager::report(const BodyStore& bodies,
-                                                       const ShapeStore& shapes) {
+const memory::vector<ContactInfo>& ContactManager::report(const BodyStore& bodies,
+                                                          const ShapeStore& shapes) {
     if (!infos_stale_)
         return infos_;
     infos_stale_ = false;

@@ -18,6 +18,7 @@
 #include "tamias2d/dynamics/constraint_graph.hpp"
 #include "tamias2d/dynamics/contacts/contact.hpp"
 #include "tamias2d/dynamics/contacts/contact_constraint.hpp"
+#include "tamias2d/memory/allocator.hpp"
 #include "tamias2d/memory/large_array.hpp"
 #include "tamias2d/memory/pair_map.hpp"
 #include "tamias2d/shape_def.hpp"
@@ -38,6 +39,18 @@ bool admits(const Filter& a, const Filter& b);
 
 class ContactManager {
   public:
+    /// Room for n contacts without growing (WorldDef::capacity).
+    void reserve(std::size_t n) {
+        contacts_.reserve(n);
+        warm_impulses_.reserve(n);
+        total_impulses_.reserve(n);
+        bases_.reserve(n);
+        index_.reserve(n);
+        edge_inputs_.reserve(n);
+        new_pairs_.reserve(n);
+        doomed_.reserve(n);
+        outcomes_.reserve(n);
+    }
     /// Per contact, indexed alike: what the colouring needs of it, written by the narrow phase
     /// while the contact is in cache. (Reading it back from the contacts cost a pass over most
     /// of their lines: 3.8 MB per step at 16k boxes.)
@@ -50,7 +63,7 @@ class ContactManager {
     /// The contacts and the arrays indexed alike, read-only: the step's solver, the islands
     /// and the hash read them; only this class adds, moves and removes their entries.
     const LargeArray<Contact>& contacts() const { return contacts_; }
-    const std::vector<EdgeInput>& edge_inputs() const { return edge_inputs_; }
+    const memory::vector<EdgeInput>& edge_inputs() const { return edge_inputs_; }
     const LargeArray<ContactImpulses>& warm_impulses() const { return warm_impulses_; }
     /// Each contact's impulses summed over the last step (its hit, its push).
     const LargeArray<ContactImpulses>& total_impulses() const { return total_impulses_; }
@@ -61,8 +74,8 @@ class ContactManager {
     };
     ImpulseRecords impulse_records() { return {warm_impulses_, total_impulses_}; }
     /// The contacts that began and stopped touching in the last step, in the order found.
-    const std::vector<ContactEvent>& begin_events() const { return begin_events_; }
-    const std::vector<ContactEvent>& end_events() const { return end_events_; }
+    const memory::vector<ContactEvent>& begin_events() const { return begin_events_; }
+    const memory::vector<ContactEvent>& end_events() const { return end_events_; }
     /// A step's events start empty (and a refused step reports none).
     void clear_events() {
         begin_events_.clear();
@@ -123,7 +136,7 @@ class ContactManager {
     /// The touching pairs after the last step; built when first asked for after a step or a
     /// destruction: most steps of a game never read it, and copying every contact out each
     /// step cost a few percent of a pile's step.
-    const std::vector<ContactInfo>& report(const BodyStore& bodies, const ShapeStore& shapes);
+    const memory::vector<ContactInfo>& report(const BodyStore& bodies, const ShapeStore& shapes);
     void report_stale() { infos_stale_ = true; }
 
     /// Feeds the contacts to the state hash (World::state_hash): each contact's shapes,
@@ -188,19 +201,19 @@ class ContactManager {
     /// is solved.
     std::uint8_t pre_solved(std::uint32_t i, std::uint8_t r, const BodyStore& bodies,
                             const ShapeStore& shapes);
-    std::vector<Mixed> remixed_; ///< remix's values, all computed before any is written
+    memory::vector<Mixed> remixed_; ///< remix's values, all computed before any is written
 
     /// Tests fill the arrays of their own contacts (tests/support).
     friend struct ContactManagerAccess;
 
     LargeArray<Contact> contacts_;
-    std::vector<EdgeInput> edge_inputs_;
+    memory::vector<EdgeInput> edge_inputs_;
     /// Per contact, indexed alike: the accumulated impulses (warm start) and the last step's
     /// totals (contact report).
     LargeArray<ContactImpulses> warm_impulses_, total_impulses_;
     /// Per contact, indexed alike: the poses its manifold was computed at (manifold reuse).
     LargeArray<ManifoldBasis> bases_;
-    std::vector<ContactEvent> begin_events_, end_events_;
+    memory::vector<ContactEvent> begin_events_, end_events_;
 
     void destroy(std::uint32_t i, BodyStore& bodies, const ShapeStore& shapes);
     /// update's parallel form: the contacts' own work in blocks of `block`, then the rest in
@@ -218,12 +231,12 @@ class ContactManager {
 
     PairMap index_; ///< contact by Contact::key of its shapes
     // Per-step scratch, kept to avoid allocation in steady state.
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> new_pairs_;
+    memory::vector<std::pair<std::uint32_t, std::uint32_t>> new_pairs_;
     /// new_pairs_[pending_begin_, pending_end_): pairs a bad_alloc in find_new left unexamined.
     std::size_t pending_begin_ = 0, pending_end_ = 0;
-    std::vector<std::uint32_t> doomed_;
-    std::vector<std::uint8_t> outcomes_; ///< per contact: update_in_blocks's first pass
-    std::vector<ContactInfo> infos_;
+    memory::vector<std::uint32_t> doomed_;
+    memory::vector<std::uint8_t> outcomes_; ///< per contact: update_in_blocks's first pass
+    memory::vector<ContactInfo> infos_;
     bool infos_stale_ = true;
 };
 

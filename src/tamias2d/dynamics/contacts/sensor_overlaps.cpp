@@ -8,6 +8,7 @@
 #include "tamias2d/dynamics/contacts/contact_manager.hpp"
 #include "tamias2d/dynamics/shape_store.hpp"
 #include "tamias2d/dynamics/snapshot_io.hpp"
+#include "tamias2d/memory/allocator.hpp"
 #include "tamias2d/model/dd28_sensor_overlap.hpp"
 
 namespace tamias2d {
@@ -163,8 +164,8 @@ void SensorOverlaps::read(SnapshotReader& in, const ShapeStore& shapes) {
     in.in(nullptr);
 }
 
-const std::vector<std::uint32_t>& SensorOverlaps::visitors(std::uint32_t sensor_shape) const {
-    static const std::vector<std::uint32_t> none;
+const memory::vector<std::uint32_t>& SensorOverlaps::visitors(std::uint32_t sensor_shape) const {
+    static const memory::vector<std::uint32_t> none;
     for (const Sensor& sensor : sensors_) {
         if (sensor.shape == sensor_shape)
             return sensor.visitors;

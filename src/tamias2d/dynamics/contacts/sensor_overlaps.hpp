@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "tamias2d/contact_info.hpp"
+#include "tamias2d/memory/allocator.hpp"
 
 namespace tamias2d {
 
@@ -20,7 +21,7 @@ class SnapshotReader;
 
 class SensorOverlaps {
   public:
-    std::vector<SensorEvent> begin_events, end_events; ///< the last step's (and destructions')
+    memory::vector<SensorEvent> begin_events, end_events; ///< the last step's (and destructions')
 
     /// A sensor shape was created: it overlaps nothing until the next step's update.
     void add(std::uint32_t sensor_shape);
@@ -43,15 +44,15 @@ class SensorOverlaps {
     // --- events ---
     /// \srs{DD28} The shapes overlapping sensor shape s after the last step (less those
     /// destroyed since), in shape order: the set its begin and end events build.
-    const std::vector<std::uint32_t>& visitors(std::uint32_t sensor_shape) const;
+    const memory::vector<std::uint32_t>& visitors(std::uint32_t sensor_shape) const;
 
   private:
     struct Sensor {
         std::uint32_t shape;
-        std::vector<std::uint32_t> visitors; ///< shape indices, ascending
+        memory::vector<std::uint32_t> visitors; ///< shape indices, ascending
     };
-    std::vector<Sensor> sensors_;
-    std::vector<std::uint32_t> now_; ///< scratch: one sensor's overlaps this step
+    memory::vector<Sensor> sensors_;
+    memory::vector<std::uint32_t> now_; ///< scratch: one sensor's overlaps this step
 };
 
 } // namespace tamias2d

@@ -10,11 +10,12 @@
 #include "tamias2d/dynamics/joints/target_joint.hpp"
 #include "tamias2d/dynamics/joints/weld_joint.hpp"
 #include "tamias2d/dynamics/joints/wheel_joint.hpp"
+#include "tamias2d/memory/allocator.hpp"
 
 namespace tamias2d {
 
 void prepare_joint(Joint& j, const BodyStore& store,
-                   const std::vector<std::uint32_t>& solver_index) {
+                   const memory::vector<std::uint32_t>& solver_index) {
     const Body& a = store.bodies[j.body_a];
     const Body& b = store.bodies[j.body_b];
     j.step.solver_a = solver_index[j.body_a];

@@ -12,6 +12,7 @@
 #include "tamias2d/dynamics/model_bridge.hpp"
 #include "tamias2d/dynamics/softness.hpp"
 #include "tamias2d/dynamics/solver_body.hpp"
+#include "tamias2d/memory/allocator.hpp"
 
 namespace tamias2d {
 
@@ -20,7 +21,7 @@ struct BodyStore;
 /// The joint's solver bodies, the anchors' offsets from the centres (body frames), the bodies'
 /// angles and the centres' offset at the step's start.
 void prepare_joint(Joint& j, const BodyStore& bodies,
-                   const std::vector<std::uint32_t>& solver_index);
+                   const memory::vector<std::uint32_t>& solver_index);
 
 /// The anchors' offsets from their bodies' centres in the world frame, with the bodies turned
 /// as far as they have in the step (q_a, q_b: the step solver keeps them current).

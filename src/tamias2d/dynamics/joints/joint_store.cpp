@@ -11,6 +11,7 @@
 #include "tamias2d/dynamics/state_hasher.hpp"
 #include "tamias2d/errors.hpp"
 #include "tamias2d/joint_kind.hpp"
+#include "tamias2d/memory/allocator.hpp"
 #include "tamias2d/validation.hpp"
 
 namespace tamias2d {
@@ -83,8 +84,14 @@ std::uint32_t JointStore::create(const Joint& joint) {
         joints.emplace_back();
     joints[i] = joint;
     const std::uint32_t top = std::max(joint.body_a, joint.body_b);
-    if (by_body_.size() <= top)
+    if (by_body_.size() <= top) {
+        std::size_t k = by_body_.size();
         by_body_.resize(top + 1);
+        for (; k <= top && !spare_lists_.empty(); ++k) { // (reserve's lists: moved, no block)
+            by_body_[k] = std::move(spare_lists_.back());
+            spare_lists_.pop_back();
+        }
+    }
     by_body_[joint.body_a].push_back(i);
     by_body_[joint.body_b].push_back(i);
     return i;
@@ -109,8 +116,26 @@ void JointStore::unjoin(std::uint32_t i, BodyStore& bodies, ShapeStore& shapes) 
     destroy(i);
 }
 
-const std::vector<std::uint32_t>& JointStore::of_body(std::uint32_t body) const {
-    static const std::vector<std::uint32_t> none;
+void JointStore::reserve(std::size_t n, std::size_t bodies) {
+    slots.reserve(n);
+    joints.reserve(n);
+    broken.reserve(n);
+    step_before_.reserve(n);
+    sleep_before_.reserve(bodies);
+    // The lists as many bodies as are hinted will have, each with room for two joints, kept
+    // aside until create() lengthens by_body_ (its length is what snapshots hold).
+    by_body_.reserve(bodies);
+    for (memory::vector<std::uint32_t>& list : by_body_)
+        list.reserve(2);
+    spare_lists_.reserve(bodies);
+    while (by_body_.size() + spare_lists_.size() < bodies) {
+        spare_lists_.emplace_back();
+        spare_lists_.back().reserve(2);
+    }
+}
+
+const memory::vector<std::uint32_t>& JointStore::of_body(std::uint32_t body) const {
+    static const memory::vector<std::uint32_t> none;
     return body < by_body_.size() ? by_body_[body] : none;
 }
 
@@ -318,7 +343,7 @@ void JointStore::read(SnapshotReader& in, const BodyStore& bodies) {
     in.in(nullptr);
     // Each live joint once in its body_a's list and once in its body_b's (twice in one list
     // when they are the same body): destroy finds it there.
-    std::vector<std::uint8_t> seen(n, 0); // bit 0: under body_a, bit 1: under body_b
+    memory::vector<std::uint8_t> seen(n, 0); // bit 0: under body_a, bit 1: under body_b
     const std::size_t lists = in.count("joints.by_body", 8, bodies.size());
     by_body_.resize(lists);
     for (std::uint32_t body = 0; body < lists; ++body) {

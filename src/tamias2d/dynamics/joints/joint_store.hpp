@@ -13,6 +13,7 @@
 #include "tamias2d/dynamics/joints/joint.hpp"
 #include "tamias2d/dynamics/sleep.hpp"
 #include "tamias2d/handles.hpp"
+#include "tamias2d/memory/allocator.hpp"
 #include "tamias2d/memory/slot_map.hpp"
 
 namespace tamias2d {
@@ -40,12 +41,15 @@ class JointStore {
   public:
     /// The joints of the world tagged `world` (World::tag).
     explicit JointStore(std::uint32_t world) : slots(world) {}
+    /// Room for n joints on up to `bodies` bodies without growing (WorldDef::capacity): each
+    /// body's list holds two joints before it grows.
+    void reserve(std::size_t n, std::size_t bodies);
 
     /// Which joints live, their handles' generations and the free slots.
     SlotMap<JointId> slots;
-    std::vector<Joint> joints;   ///< per slot
-    double inv_h = 0.0;          ///< s^-1, the last step's substep rate (reaction forces)
-    std::vector<JointId> broken; ///< joints the last step broke
+    memory::vector<Joint> joints;   ///< per slot
+    double inv_h = 0.0;             ///< s^-1, the last step's substep rate (reaction forces)
+    memory::vector<JointId> broken; ///< joints the last step broke
 
     /// The joint of a handle; throws InvalidHandle for a stale or unknown one, WrongWorld for
     /// one of another world.
@@ -77,7 +81,7 @@ class JointStore {
     /// they would not be looked for again).
     void unjoin(std::uint32_t i, BodyStore& bodies, ShapeStore& shapes);
     /// The joints of body i (empty when it has none).
-    const std::vector<std::uint32_t>& of_body(std::uint32_t body) const;
+    const memory::vector<std::uint32_t>& of_body(std::uint32_t body) const;
     /// Whether a joint between bodies a and b asks that their shapes not collide.
     bool filters(std::uint32_t a, std::uint32_t b) const;
     /// validate_levers for every live joint: a shape added or removed since a joint was made
@@ -137,12 +141,14 @@ class JointStore {
     void forget_warm_starts();
 
   private:
-    std::vector<std::vector<std::uint32_t>> by_body_; ///< per body index: its joints
+    memory::vector<memory::vector<std::uint32_t>> by_body_; ///< per body index: its joints
+    /// Empty lists with room for two joints (reserve), taken by create() as by_body_ grows.
+    memory::vector<memory::vector<std::uint32_t>> spare_lists_;
     // What guard_step keeps: the part of each joint a step writes (the step state alone: whole
     // joints, twice the bytes, cost an eighth of a 20 000-joint grid's step), the sleep states
     // and the substep rate.
-    std::vector<JointStepState> step_before_;
-    std::vector<SleepState> sleep_before_;
+    memory::vector<JointStepState> step_before_;
+    memory::vector<SleepState> sleep_before_;
     double inv_h_before_ = 0.0;
 };
 
