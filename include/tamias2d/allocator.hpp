@@ -23,7 +23,9 @@
 
 #include <cstddef>
 
+#include "tamias2d/config.hpp"
 #include "tamias2d/export.hpp"
+#include "tamias2d/result.hpp"
 
 namespace tamias2d {
 
@@ -47,22 +49,31 @@ struct AllocatorUse {
     std::size_t bytes = 0;  ///< their sizes' sum
 };
 
+#if TAMIAS2D_EXCEPTIONS
 /// Installs `hook` for the whole process (both functions, not null). Refused with
-/// std::invalid_argument ("allocator.allocate" or "allocator.free": must not be null) and with
-/// std::logic_error while the library holds any block from the current allocator (a World,
-/// Recorder or Replayer alive): the message gives the count of blocks and bytes. The retained
-/// large blocks of past worlds (memory.hpp) are returned to the operating system first. Not to
-/// be called while another thread uses the library.
+/// ValidationError ("allocator.allocate" or "allocator.free": must not be null; rule
+/// "allocator") and with AllocatorInUse (errors.hpp) while the library holds any block from the
+/// current allocator (a World, Recorder or Replayer alive), which gives the count of blocks and
+/// bytes. The retained large blocks of past worlds (memory.hpp) are returned to the operating
+/// system first. Not to be called while another thread uses the library.
 TAMIAS2D_EXPORT void set_allocator(const Allocator& hook);
 
 /// Back to the default allocator (operator new, and mapped large blocks); refused as
 /// set_allocator is while the library holds a block.
 TAMIAS2D_EXPORT void reset_allocator();
 
+#endif // TAMIAS2D_EXCEPTIONS
+
+// The error-returning forms (result.hpp), declared whatever TAMIAS2D_EXCEPTIONS is.
+/// set_allocator, returning its Error (validation, allocator_in_use) instead of throwing it.
+TAMIAS2D_EXPORT Result<void> try_set_allocator(const Allocator& hook) noexcept;
+/// reset_allocator, returning its Error (allocator_in_use) instead of throwing it.
+TAMIAS2D_EXPORT Result<void> try_reset_allocator() noexcept;
+
 /// The hook in use; both functions null when it is the default.
-TAMIAS2D_EXPORT Allocator current_allocator();
+TAMIAS2D_EXPORT Allocator current_allocator() noexcept;
 
 /// The blocks and bytes the library holds now from the current allocator.
-TAMIAS2D_EXPORT AllocatorUse allocator_use();
+TAMIAS2D_EXPORT AllocatorUse allocator_use() noexcept;
 
 } // namespace tamias2d

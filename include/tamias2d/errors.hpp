@@ -5,6 +5,7 @@
 #pragma once
 
 #include <charconv>
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <stdexcept>
@@ -103,6 +104,21 @@ struct TAMIAS2D_EXPORT SolverDivergence : std::runtime_error {
     /// what(): "body[3 'slider'].velocity: turned non-finite in the joints' solve; ...".
     SolverDivergence(std::string field_, const std::string& what)
         : std::runtime_error(what), field(std::move(field_)) {}
+};
+
+/// set_allocator or reset_allocator while the library holds blocks from the current allocator
+/// (a World, Recorder or Replayer alive): a block must go back to the allocator it came from.
+/// Nothing changes; the message gives the counts.
+struct TAMIAS2D_EXPORT AllocatorInUse : std::logic_error {
+    std::size_t blocks; ///< blocks held from the current allocator
+    std::size_t bytes;  ///< their sizes' sum
+    /// what(): "set_allocator: refused while the library holds 12 blocks (4096 bytes) ...".
+    AllocatorInUse(std::size_t blocks_, std::size_t bytes_)
+        : std::logic_error("set_allocator: refused while the library holds " +
+                           std::to_string(blocks_) + " blocks (" + std::to_string(bytes_) +
+                           " bytes) from the current allocator: destroy every World, Recorder "
+                           "and Replayer first"),
+          blocks(blocks_), bytes(bytes_) {}
 };
 
 } // namespace tamias2d

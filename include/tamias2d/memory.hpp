@@ -24,10 +24,10 @@ struct LargeArrayStats {
 };
 
 /// The counters of the large blocks; safe to call from any thread.
-TAMIAS2D_EXPORT LargeArrayStats large_array_stats();
+TAMIAS2D_EXPORT LargeArrayStats large_array_stats() noexcept;
 
 /// Returns every retained block to the operating system (after unloading a large world, say).
 /// Safe to call from any thread at any time; worlds alive keep their own blocks.
-TAMIAS2D_EXPORT void release_retained_memory();
+TAMIAS2D_EXPORT void release_retained_memory() noexcept;
 
 } // namespace tamias2d

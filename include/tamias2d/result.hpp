@@ -35,6 +35,7 @@ enum class ErrorKind : std::uint8_t {
     /// pre-solve callback, a task system), which the throwing form passes on: message is its
     /// what() (or says it was not a std::exception).
     callback_failed,
+    allocator_in_use, ///< AllocatorInUse: blocks, bytes (set_allocator, reset_allocator)
 };
 
 /// The name of the kind as written in this header, e.g. "invalid_handle".
@@ -57,6 +58,8 @@ struct Error {
     std::string subject_kind;       ///< wrong_kind: what that is, e.g. "static body"
     std::size_t offset = 0;         ///< snapshot, recording: the byte offset of the field
     std::string rule;               ///< snapshot, recording: the rule the field breaks
+    std::size_t blocks = 0;         ///< allocator_in_use: blocks held from the allocator
+    std::size_t bytes = 0;          ///< allocator_in_use: their sizes' sum
 };
 
 /// What Result::value() throws for an error, and Result::error() for a value, when exceptions

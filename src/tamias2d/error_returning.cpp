@@ -6,6 +6,7 @@
 #include <new>
 #include <stdexcept>
 
+#include "tamias2d/allocator.hpp"
 #include "tamias2d/errors.hpp"
 #include "tamias2d/plane_solver.hpp"
 #include "tamias2d/recording_error.hpp"
@@ -34,6 +35,8 @@ const char* to_string(ErrorKind kind) noexcept {
         return "out_of_memory";
     case ErrorKind::callback_failed:
         return "callback_failed";
+    case ErrorKind::allocator_in_use:
+        return "allocator_in_use";
     }
     return "unknown";
 }
@@ -90,6 +93,11 @@ Error current_error() noexcept {
         error.field = e.field;
         error.rule = e.rule;
         return error;
+    } catch (const AllocatorInUse& e) {
+        Error error = error_of(ErrorKind::allocator_in_use, e);
+        error.blocks = e.blocks;
+        error.bytes = e.bytes;
+        return error;
     } catch (const std::bad_alloc& e) {
         return error_of(ErrorKind::out_of_memory, e);
     } catch (const std::length_error& e) {
@@ -140,6 +148,14 @@ Result<PlaneSolverResult> try_solve_planes(Vec2d target, std::span<CollisionPlan
 
 Result<Vec2d> try_clip_vector(Vec2d v, std::span<const CollisionPlane> planes) noexcept {
     return detail::capture([&] { return clip_vector(v, planes); });
+}
+
+Result<void> try_set_allocator(const Allocator& hook) noexcept {
+    return detail::capture([&] { set_allocator(hook); });
+}
+
+Result<void> try_reset_allocator() noexcept {
+    return detail::capture([] { reset_allocator(); });
 }
 
 } // namespace tamias2d

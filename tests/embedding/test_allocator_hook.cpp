@@ -12,6 +12,7 @@
 #include "embedding/counting_hook.hpp"
 #include "embedding/scenario.hpp"
 #include "tamias2d/allocator.hpp"
+#include "tamias2d/errors.hpp"
 #include "tamias2d/world.hpp"
 
 namespace {
@@ -169,12 +170,12 @@ BOOST_AUTO_TEST_CASE(the_hook_is_refused_while_a_world_lives, *utf::label("embed
         try {
             set_allocator(counting_hook());
             BOOST_FAIL("set_allocator accepted while a world lives");
-        } catch (const std::logic_error& e) {
+        } catch (const AllocatorInUse& e) {
             const std::string what = e.what();
             BOOST_TEST(what.find(std::to_string(held) + " blocks") != std::string::npos, what);
         }
         BOOST_TEST(current_allocator().allocate == nullptr);
-        BOOST_CHECK_THROW(reset_allocator(), std::logic_error);
+        BOOST_CHECK_THROW(reset_allocator(), AllocatorInUse);
     }
     BOOST_TEST(allocator_use().blocks == 0u);
     Allocator half = counting_hook();
@@ -189,7 +190,7 @@ BOOST_AUTO_TEST_CASE(the_hook_is_refused_while_a_world_lives, *utf::label("embed
     BOOST_TEST(current_allocator().allocate == counting_hook().allocate);
     {
         const World world;
-        BOOST_CHECK_THROW(reset_allocator(), std::logic_error);
+        BOOST_CHECK_THROW(reset_allocator(), AllocatorInUse);
     }
     reset_allocator();
     BOOST_TEST(current_allocator().allocate == nullptr);

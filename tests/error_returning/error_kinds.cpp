@@ -7,9 +7,11 @@
 // state_hash before the call.
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
+#include "tamias2d/allocator.hpp"
 #include "tamias2d/recorder.hpp"
 #include "tamias2d/replay.hpp"
 #include "tamias2d/shape_def.hpp"
@@ -141,11 +143,55 @@ void refused_kinds(int workers) {
            "workers 0: value 0");
 }
 
+void* aligned_block(std::size_t size, std::size_t alignment, void*) {
+    return std::aligned_alloc(alignment, (size + alignment - 1) / alignment * alignment);
+}
+void free_block(void* p, std::size_t, std::size_t, void*) {
+    std::free(p);
+}
+
+// The allocator hook's refusals (allocator.hpp's contract): a hook without its free function
+// is a validation error naming allocator.free; while a world holds blocks, allocator_in_use with
+// the counts allocator_use() reports, and the allocator unchanged; with nothing held, both calls
+// succeed.
+void allocator_refusals() {
+    const Allocator hook{aligned_block, free_block, nullptr};
+    Allocator half = hook;
+    half.free = nullptr;
+    const Result<void> no_free = try_set_allocator(half);
+    expect(!no_free && no_free.error().kind == ErrorKind::validation &&
+               no_free.error().field == "allocator.free" &&
+               no_free.error().constraint == "allocator",
+           "a hook without free: validation naming allocator.free");
+    {
+        const World world = make_world(1);
+        const AllocatorUse held = allocator_use();
+        const Result<void> busy = try_set_allocator(hook);
+        expect(held.blocks > 0 && !busy && busy.error().kind == ErrorKind::allocator_in_use &&
+                   busy.error().blocks == held.blocks && busy.error().bytes == held.bytes,
+               "a world alive: allocator_in_use with the blocks and bytes held");
+        expect(current_allocator().allocate == nullptr, "refused: the default allocator stays");
+        const Result<void> reset = try_reset_allocator();
+        expect(!reset && reset.error().kind == ErrorKind::allocator_in_use,
+               "a world alive: reset refused as allocator_in_use");
+    }
+    expect(allocator_use().blocks == 0 && try_set_allocator(hook).has_value() &&
+               current_allocator().allocate == hook.allocate,
+           "nothing held: the hook is installed");
+    {
+        const World world = make_world(1);
+        expect(allocator_use().blocks > 0, "the world's blocks come from the hook");
+    }
+    expect(try_reset_allocator().has_value() && current_allocator().allocate == nullptr,
+           "nothing held: back to the default allocator");
+}
+
 } // namespace
 
 int main() {
     for (const int workers : {1, 3})
         refused_kinds(workers);
+    allocator_refusals();
     expect(std::string(to_string(ErrorKind::wrong_world)) == "wrong_world",
            "to_string names the kind as declared");
     std::printf("%d checks, %d failed\n", checks, failures);

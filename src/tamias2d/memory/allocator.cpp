@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "tamias2d/errors.hpp"
 #include "tamias2d/memory.hpp"
 
 namespace tamias2d {
@@ -27,10 +28,7 @@ void replace(const Allocator& next) {
     const std::lock_guard lock(setting);
     const std::size_t blocks = held_blocks.load(), bytes = held_bytes.load();
     if (blocks != 0)
-        throw std::logic_error("set_allocator: refused while the library holds " +
-                               std::to_string(blocks) + " blocks (" + std::to_string(bytes) +
-                               " bytes) from the current allocator: destroy every World, "
-                               "Recorder and Replayer first");
+        throw AllocatorInUse(blocks, bytes);
     // The retained large blocks are mappings of the default allocator, not in use: returned,
     // so that no block outlives the allocator it came from.
     release_retained_memory();
@@ -41,10 +39,13 @@ void replace(const Allocator& next) {
 } // namespace
 
 void set_allocator(const Allocator& next) {
+    // Not physics: "allocator" names the rule, as "capacity" does for the capacity hints.
     if (next.allocate == nullptr)
-        throw std::invalid_argument("allocator.allocate: must not be null");
+        throw ValidationError(ValidationError::NotANumber{}, "allocator.allocate",
+                              "must not be null", "allocator");
     if (next.free == nullptr)
-        throw std::invalid_argument("allocator.free: must not be null");
+        throw ValidationError(ValidationError::NotANumber{}, "allocator.free", "must not be null",
+                              "allocator");
     replace(next);
 }
 
@@ -52,11 +53,11 @@ void reset_allocator() {
     replace(Allocator{});
 }
 
-Allocator current_allocator() {
+Allocator current_allocator() noexcept {
     return hooked_flag.load(std::memory_order_acquire) ? hook : Allocator{};
 }
 
-AllocatorUse allocator_use() {
+AllocatorUse allocator_use() noexcept {
     return {held_blocks.load(std::memory_order_relaxed),
             held_bytes.load(std::memory_order_relaxed)};
 }

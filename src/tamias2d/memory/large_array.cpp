@@ -125,13 +125,13 @@ void* remap_large(void* p, std::size_t used, std::size_t old_bytes, std::size_t 
 }
 } // namespace
 
-LargeArrayStats large_array_stats() {
+LargeArrayStats large_array_stats() noexcept {
     return {maps.load(std::memory_order_relaxed), unmaps.load(std::memory_order_relaxed),
             remaps.load(std::memory_order_relaxed), mapped_bytes.load(std::memory_order_relaxed),
             detail::retained_blocks().bytes()};
 }
 
-void release_retained_memory() {
+void release_retained_memory() noexcept {
     detail::retained_blocks().release_all(unmap_fresh);
 }
 
