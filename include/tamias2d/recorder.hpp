@@ -47,7 +47,7 @@ struct RecordOptions {
 class TAMIAS2D_EXPORT Recorder {
   public:
     /// The version of the recording format this library writes and reads.
-    static constexpr std::uint32_t format_version = 1;
+    static constexpr std::uint32_t format_version = 2;
 
     /// Starts recording `world` from its state now. Throws ValidationError (rule "recording")
     /// if the world has a custom filter or a body with a load function.
@@ -241,6 +241,10 @@ class TAMIAS2D_EXPORT Recorder {
     void set_target_transform(BodyId body, Vec2d origin, double angle, double dt);
     /// World::apply_wind, recorded.
     void apply_wind(ShapeId shape, Vec2d wind, double drag, double lift, bool wake = true);
+    /// World::set_rolling_resistance, recorded.
+    void set_rolling_resistance(ShapeId shape, double rolling_resistance);
+    /// World::set_tangent_speed, recorded.
+    void set_tangent_speed(ShapeId shape, double tangent_speed);
 
     /// \cond INTERNAL
     struct Impl; // the recording's state (src/tamias2d/recording/recorder.cpp)

@@ -22,7 +22,9 @@ bool same(const ChainSegment& a, const ChainSegment& b) {
 }
 bool same(const Material& a, const Material& b) {
     return same(a.density, b.density) && same(a.restitution, b.restitution) &&
-           same(a.friction, b.friction) && a.user_material_id == b.user_material_id;
+           same(a.friction, b.friction) && a.user_material_id == b.user_material_id &&
+           same(a.rolling_resistance, b.rolling_resistance) &&
+           same(a.tangent_speed, b.tangent_speed);
 }
 
 /// Whether b can follow a in one chain: b starts where a ends, and each one's ghost there is

@@ -19,12 +19,16 @@ namespace tamias2d::io::scene_detail {
 
 Material parse_material_object(const Ctx& ctx, const ojson& v, const std::string& ptr, Material m) {
     require_object(ctx, v, ptr, "material", "a material object or a material name");
-    check_keys(ctx, v, ptr, {"density", "restitution", "friction", "user_material_id"},
+    check_keys(ctx, v, ptr,
+               {"density", "restitution", "friction", "user_material_id", "rolling_resistance",
+                "tangent_speed"},
                "a material");
     opt_number(ctx, v, ptr, "density", m.density);
     opt_number(ctx, v, ptr, "restitution", m.restitution);
     opt_number(ctx, v, ptr, "friction", m.friction);
-    if (const auto id = v.find("user_material_id"); id != v.end()) { // DD42
+    opt_number(ctx, v, ptr, "rolling_resistance", m.rolling_resistance); // DD46
+    opt_number(ctx, v, ptr, "tangent_speed", m.tangent_speed);           // DD47
+    if (const auto id = v.find("user_material_id"); id != v.end()) {     // DD42
         // (JSON reads a non-negative integer as unsigned: anything else is no id.)
         if (!id->is_number_unsigned())
             fail(ctx, child(ptr, "user_material_id"), "user_material_id",
@@ -39,6 +43,9 @@ Material parse_material_object(const Ctx& ctx, const ojson& v, const std::string
     if (!(m.friction >= 0.0))
         fail_value(ctx, child(ptr, "friction"), "friction", m.friction, "must be >= 0",
                    "DCX_friction");
+    if (!(m.rolling_resistance >= 0.0))
+        fail_value(ctx, child(ptr, "rolling_resistance"), "rolling_resistance",
+                   m.rolling_resistance, "must be >= 0", "DD46");
     check_as_library(ctx, ptr, "material.", [&] { validate(m); }); // DCX_range
     return m;
 }

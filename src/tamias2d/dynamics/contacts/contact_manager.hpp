@@ -60,6 +60,18 @@ class ContactManager {
         std::span<ContactImpulses> warm, totals;
     };
     ImpulseRecords impulse_records() { return {warm_impulses_, total_impulses_}; }
+    /// \srs{DD46} Per contact, indexed alike, once a step has had surface motion (use_rolling;
+    /// empty before): the rolling resistance's accumulated angular impulse (N m s), the next
+    /// step's warm start. A world without surface motion neither keeps nor moves it.
+    const LargeArray<double>& rolling_impulses() const { return rolling_impulses_; }
+    std::span<double> rolling_records() { return rolling_impulses_; }
+    /// From now on keeps a rolling impulse per contact (0 for the contacts there are).
+    void use_rolling() {
+        if (!rolling_on_) {
+            rolling_impulses_.resize(contacts_.size());
+            rolling_on_ = true;
+        }
+    }
     /// The contacts that began and stopped touching in the last step, in the order found.
     const std::vector<ContactEvent>& begin_events() const { return begin_events_; }
     const std::vector<ContactEvent>& end_events() const { return end_events_; }
@@ -200,6 +212,9 @@ class ContactManager {
     LargeArray<ContactImpulses> warm_impulses_, total_impulses_;
     /// Per contact, indexed alike: the poses its manifold was computed at (manifold reuse).
     LargeArray<ManifoldBasis> bases_;
+    /// Per contact, indexed alike while rolling_on_ (use_rolling).
+    LargeArray<double> rolling_impulses_;
+    bool rolling_on_ = false;
     std::vector<ContactEvent> begin_events_, end_events_;
 
     void destroy(std::uint32_t i, BodyStore& bodies, const ShapeStore& shapes);
