@@ -56,9 +56,10 @@ int main() {
     // (2/3) c g per second until it rides at 2 m/s.
     for (int i = 0; i < 60; ++i)
         world.step(1.0 / 60.0);
+    const double g = -world.settings().gravity.y;
     for (std::size_t k = 0; k < boxes.size(); ++k) {
         const double c = 0.1 * double(k + 1);
-        const double closed_form = std::min(2.0 / 3.0 + 2.0 / 3.0 * c * 9.81 * 1.0, 2.0);
+        const double closed_form = std::min(2.0 / 3.0 + 2.0 / 3.0 * c * g * 1.0, 2.0);
         std::printf("on the belt: box %zu at %.2f m/s, ball %zu at %.2f m/s (closed form %.2f)\n",
                     k, world.velocity(boxes[k]).x, k, world.velocity(balls[k]).x, closed_form);
     }
