@@ -90,6 +90,7 @@ BOOST_AUTO_TEST_CASE(ball_rolls_to_rest_on_flat_ground, *utf::label("DD46")) {
     const double v0 = 3.0, c = 0.05;
     Roll roll(0.0, v0, c);
     const double s = roll.distance_to_rest(12.0);
+    BOOST_TEST_MESSAGE("flat ground: " << s << " m, closed form " << stopping_distance(v0, c, 0.0));
     BOOST_TEST(std::abs(s - stopping_distance(v0, c, 0.0)) <= integration_bound(v0));
     // The mixed coefficient is the larger: the same ball of 0 on a ground of 0.05.
     Roll swapped(0.0, v0, 0.0, c);
@@ -106,6 +107,7 @@ BOOST_AUTO_TEST_CASE(ball_rolls_to_rest_down_a_slope, *utf::label("DD46")) {
     const double v0 = 2.0, c = 0.2, theta = 0.1;
     Roll roll(theta, v0, c);
     const double s = roll.distance_to_rest(6.0);
+    BOOST_TEST_MESSAGE("slope: " << s << " m, closed form " << stopping_distance(v0, c, theta));
     BOOST_TEST(std::abs(s - stopping_distance(v0, c, theta)) <= integration_bound(v0));
 }
 
@@ -120,6 +122,7 @@ BOOST_AUTO_TEST_CASE(ball_stays_on_a_slope_shallower_than_the_resistance_angle,
     Roll stays(theta, 0.0, 0.2);
     for (int i = 0; i < 180; ++i)
         stays.world.step(dt);
+    BOOST_TEST_MESSAGE("held on the slope: moved " << stays.along() << " m in 3 s");
     BOOST_TEST(std::abs(stays.along()) < 1e-3);
     Roll rolls(theta, 0.0, 0.05);
     for (int i = 0; i < 120; ++i)
@@ -179,6 +182,8 @@ BOOST_AUTO_TEST_CASE(box_on_a_conveyor_reaches_the_belt_speed_at_the_friction_li
         }
         const double expected_x = v * t - v * v / (2.0 * mu * g);
         BOOST_TEST(t > t_star);
+        BOOST_TEST_MESSAGE("belt: x " << belt.world.position(belt.box).x << " m, closed form "
+                                      << expected_x);
         BOOST_TEST(std::abs(belt.world.position(belt.box).x - expected_x) <= v * h);
     }
 }
