@@ -66,6 +66,10 @@ struct ShapeDef {
     /// are reported when either shape asks. Off by default (the check costs a pass over the
     /// contacts per step while any shape asks).
     bool enable_hit_events = false;
+    /// Whether the pre-solve callback (World::set_pre_solve) is asked about this shape's
+    /// contacts: a touching pair is handed to it when either of its shapes allows it, and a pair
+    /// neither allows is solved without asking. On by default.
+    bool enable_pre_solve = true;
     UserData user_data = 0; ///< the game's own value (user_data.hpp), not simulation state
 };
 

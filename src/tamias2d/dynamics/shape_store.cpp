@@ -183,6 +183,8 @@ void ShapeStore::hash(StateHasher& hs) const {
         hs(d.material.friction);
         if (d.material.user_material_id != 0) // (DD42; default shapes hash as they always did)
             hs(d.material.user_material_id);
+        if (!d.enable_pre_solve) // (switches the callback off for its pairs; the same)
+            hs(std::uint64_t(0x9e5017e));
         if (d.material.rolling_resistance != 0.0 || d.material.tangent_speed != 0.0) {
             hs(d.material.rolling_resistance); // (DD46, DD47; the same)
             hs(d.material.tangent_speed);
@@ -234,6 +236,7 @@ template <class IO, class D> void shape_def_fields(IO& io, D& d) {
     io("enable_contact_events", d.enable_contact_events);
     io("enable_sensor_events", d.enable_sensor_events);
     io("enable_hit_events", d.enable_hit_events);
+    io("enable_pre_solve", d.enable_pre_solve);
     io.user_data("user_data", d.user_data);
 }
 

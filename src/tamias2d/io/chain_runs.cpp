@@ -31,7 +31,8 @@ bool same(const Material& a, const Material& b) {
 /// the other's far end. One material, filter and sensor flag for the whole chain.
 bool linked(const ShapeDef& a, const ShapeDef& b) {
     if (b.geometry.type != ShapeType::chain_segment || !same(a.material, b.material) ||
-        !(a.filter == b.filter) || a.is_sensor != b.is_sensor)
+        !(a.filter == b.filter) || a.is_sensor != b.is_sensor ||
+        a.enable_pre_solve != b.enable_pre_solve)
         return false;
     const ChainSegment& x = a.geometry.chain_segment;
     const ChainSegment& y = b.geometry.chain_segment;

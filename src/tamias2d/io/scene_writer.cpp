@@ -120,6 +120,8 @@ ojson shapes_json(const std::vector<ShapeDef>& shapes, std::size_t& chain_budget
                             {"group_index", s.filter.group_index}};
         if (s.is_sensor)
             sj["sensor"] = true;
+        if (!s.enable_pre_solve) // (scenes whose shapes all allow it are written as before)
+            sj["enable_pre_solve"] = false;
         out.push_back(std::move(sj));
     };
     for (std::size_t i = 0; i < shapes.size();) {

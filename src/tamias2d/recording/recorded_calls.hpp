@@ -236,7 +236,7 @@ template <class IO, class D> void joint_tail_io(IO& io, D& d) {
 // left to its default on replay.
 #if defined(__GLIBCXX__) && UINTPTR_MAX == UINT64_MAX
 static_assert(sizeof(BodyDef) == 240, "BodyDef changed: update definition_io");
-static_assert(sizeof(ShapeDef) == 520, "ShapeDef changed: update definition_io");
+static_assert(sizeof(ShapeDef) == 528, "ShapeDef changed: update definition_io");
 #endif
 
 /// A shape's or a body's definition, field by field. A field added to ShapeDef or BodyDef
@@ -256,6 +256,7 @@ template <class IO, class T> void definition_io(IO& io, T& v) {
         io("shape.enable_contact_events", v.enable_contact_events);
         io("shape.enable_sensor_events", v.enable_sensor_events);
         io("shape.enable_hit_events", v.enable_hit_events);
+        io("shape.enable_pre_solve", v.enable_pre_solve);
         io.user_data("shape.user_data", v.user_data);
     } else if constexpr (std::is_same_v<V, BodyDef>) {
         if constexpr (std::is_const_v<T>) {

@@ -329,7 +329,7 @@ void ContactManager::update(BodyStore& bodies, const ShapeStore& shapes, const S
             Narrowed r =
                 narrow_contact(c, warm_impulses_[i], bases_[i], edge_inputs_[i], shape[c.shape_a],
                                shape[c.shape_b], speculative_distance, reuse_distance);
-            if (pre_solve && r != Narrowed::separated && c.touching)
+            if (pre_solve && r != Narrowed::separated && c.touching && asks_pre_solve(shapes, c))
                 r = Narrowed(pre_solved(i, std::uint8_t(r), bodies, shapes));
             if (r == Narrowed::separated)
                 doomed_.push_back(i);
@@ -398,7 +398,7 @@ void ContactManager::update_in_blocks(BodyStore& bodies, const ShapeStore& shape
             r = narrow_contact(c, warm_impulses_[i], bases_[i], edge_inputs_[i], shape[c.shape_a],
                                shape[c.shape_b], speculative_distance, reuse_distance);
         }
-        if (pre_solve && r != Narrowed::separated && c.touching)
+        if (pre_solve && r != Narrowed::separated && c.touching && asks_pre_solve(shapes, c))
             r = Narrowed(pre_solved(i, std::uint8_t(r), bodies, shapes));
         if (r == Narrowed::separated)
             doomed_.push_back(i);
@@ -454,6 +454,10 @@ const std::vector<ContactInfo>& ContactManager::report(const BodyStore& bodies,
         infos_.push_back(ci);
     }
     return infos_;
+}
+
+bool ContactManager::asks_pre_solve(const ShapeStore& shapes, const Contact& c) {
+    return shapes.defs[c.shape_a].enable_pre_solve || shapes.defs[c.shape_b].enable_pre_solve;
 }
 
 bool ContactManager::reports_events(const ShapeStore& shapes, std::uint32_t sa, std::uint32_t sb) {

@@ -157,6 +157,9 @@ class ContactManager {
     /// Whether the begin and end events of the pair of shapes sa and sb are reported: both
     /// shapes allow them (ShapeDef::enable_contact_events).
     static bool reports_events(const ShapeStore& shapes, std::uint32_t sa, std::uint32_t sb);
+    /// Whether the pre-solve callback is asked about contact c: either of its shapes allows it
+    /// (ShapeDef::enable_pre_solve).
+    static bool asks_pre_solve(const ShapeStore& shapes, const Contact& c);
     // --- shape_control ---
     /// Shape s's material changed: its contacts take the new combined friction and restitution
     /// now (the manifolds and impulses are kept).
