@@ -274,10 +274,10 @@ class CommittedSrs(unittest.TestCase):
         for key in ("items", "uses", "ref_by", "seed_ref_by", "disagreements", "errata"):
             self.assertIn(key, g)
         # Ref. By is computed from `uses`: IM3, the distance, line and wheel constraints DD20,
-        # DD23 and DD25, the distance joint's motor DD35, the soft contacts IM7 and their energy
-        # bound GD3 use DD8.
+        # DD23 and DD25, the distance joint's motor DD35, a surface's tangent speed DD47, the soft
+        # contacts IM7 and their energy bound GD3 use DD8.
         self.assertEqual(g["ref_by"]["DD8"],
-                         ["GD3", "DD20", "DD23", "DD25", "DD35", "IM3", "IM7"])
+                         ["GD3", "DD20", "DD23", "DD25", "DD35", "DD47", "IM3", "IM7"])
 
 
 if __name__ == "__main__":

@@ -49,7 +49,7 @@ struct RecordOptions {
 class TAMIAS2D_EXPORT Recorder {
   public:
     /// The version of the recording format this library writes and reads.
-    static constexpr std::uint32_t format_version = 1;
+    static constexpr std::uint32_t format_version = 2;
 
     ~Recorder();
     Recorder(Recorder&&) noexcept;            ///< takes over the recording and the world
@@ -246,6 +246,10 @@ class TAMIAS2D_EXPORT Recorder {
     void set_target_transform(BodyId body, Vec2d origin, double angle, double dt);
     /// World::apply_wind, recorded.
     void apply_wind(ShapeId shape, Vec2d wind, double drag, double lift, bool wake = true);
+    /// World::set_rolling_resistance, recorded.
+    void set_rolling_resistance(ShapeId shape, double rolling_resistance);
+    /// World::set_tangent_speed, recorded.
+    void set_tangent_speed(ShapeId shape, double tangent_speed);
 #endif // TAMIAS2D_EXCEPTIONS
 
     // The error-returning forms (result.hpp): each `try_` call is the call of the same name
@@ -278,6 +282,10 @@ class TAMIAS2D_EXPORT Recorder {
     Result<void> try_set_friction(ShapeId shape, double friction) noexcept;
     /// set_restitution, returning its Error instead of throwing it.
     Result<void> try_set_restitution(ShapeId shape, double restitution) noexcept;
+    /// set_rolling_resistance, returning its Error instead of throwing it.
+    Result<void> try_set_rolling_resistance(ShapeId shape, double rolling_resistance) noexcept;
+    /// set_tangent_speed, returning its Error instead of throwing it.
+    Result<void> try_set_tangent_speed(ShapeId shape, double tangent_speed) noexcept;
     /// set_density, returning its Error instead of throwing it.
     Result<void> try_set_density(ShapeId shape, double density,
                                  bool update_body_mass = true) noexcept;

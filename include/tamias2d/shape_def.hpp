@@ -14,7 +14,8 @@
 
 namespace tamias2d {
 
-/// \srs{R3} Surface properties of a body: the coefficient of restitution (and LC2 friction).
+/// \srs{R3} Surface properties of a body: the coefficient of restitution (and LC2 friction, the
+/// surface motion of DD46 and DD47).
 struct Material {
     double density = 1.0;     ///< kg m^-2 (2D: mass per area), > 0
     double restitution = 0.0; ///< C_R (DD12), in [0, 1]
@@ -23,6 +24,15 @@ struct Material {
     /// The game's own material id, handed to the friction and restitution mixing functions
     /// (World::set_friction_mixing, DD42): ice against rubber. Not used by the default rules.
     std::uint64_t user_material_id = 0;
+    /// \srs{DD46} Rolling resistance, dimensionless, finite and >= 0: a contact resists rolling
+    /// with a torque of at most c l N, c the larger coefficient of its two shapes, l the larger
+    /// radius of a circle or a capsule among them, N its normal force. 0 (default): none.
+    double rolling_resistance = 0.0;
+    /// \srs{DD47} Tangent speed, m s^-1, finite, any sign: the surface's own speed along its
+    /// tangent, clockwise around the shape (a conveyor belt; a flat belt's top carries things
+    /// towards +x when positive). A contact's friction drives the relative tangential velocity
+    /// to the sum of its two shapes' speeds. 0 (default): a surface at rest.
+    double tangent_speed = 0.0;
 };
 
 /// \srs{DD27} Which shapes a shape collides with: it belongs to the categories set in
@@ -58,6 +68,10 @@ struct ShapeDef {
     /// are reported when either shape asks. Off by default (the check costs a pass over the
     /// contacts per step while any shape asks).
     bool enable_hit_events = false;
+    /// Whether the pre-solve callback (World::set_pre_solve) is asked about this shape's
+    /// contacts: a touching pair is handed to it when either of its shapes allows it, and a pair
+    /// neither allows is solved without asking. On by default.
+    bool enable_pre_solve = true;
     UserData user_data = 0; ///< the game's own value (user_data.hpp), not simulation state
 };
 

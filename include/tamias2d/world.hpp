@@ -121,6 +121,14 @@ class TAMIAS2D_EXPORT World {
     /// take the new combined value (the larger of the two) at once.
     void set_restitution(ShapeId shape, double restitution);
     double restitution(ShapeId shape) const; ///< the shape's coefficient of restitution (DD12)
+    /// \srs{DD46} Sets the shape's rolling resistance (finite, >= 0, named "rolling_resistance"
+    /// with DD46 when not); its contacts resist rolling with the new value from the next step.
+    void set_rolling_resistance(ShapeId shape, double rolling_resistance);
+    double rolling_resistance(ShapeId shape) const; ///< Material::rolling_resistance (DD46)
+    /// \srs{DD47} Sets the shape's tangent speed (m s^-1, finite, any sign, within DCX_range);
+    /// its contacts' friction drives towards the new value from the next step.
+    void set_tangent_speed(ShapeId shape, double tangent_speed);
+    double tangent_speed(ShapeId shape) const; ///< Material::tangent_speed (DD47, m s^-1)
     /// \srs{DD1} Sets the shape's density (kg m^-2, > 0, DCX_density). With update_body_mass
     /// the body's mass, centre of mass and inertia are recomputed now (DD1, DD14); without, they
     /// stay until the next mass update (a shape added or removed, or a call with true).
@@ -419,7 +427,7 @@ class TAMIAS2D_EXPORT World {
 
 #endif
     /// The version of the snapshot format this library writes and reads.
-    static constexpr std::uint32_t snapshot_format_version = 1;
+    static constexpr std::uint32_t snapshot_format_version = 2;
 #if TAMIAS2D_EXCEPTIONS
     /// The world's state as bytes (a versioned header with an XXH64 checksum, then
     /// little-endian fields): for save games, rollback and bug reports. Call between steps.
@@ -889,6 +897,14 @@ class TAMIAS2D_EXPORT World {
     Result<void> try_set_restitution(ShapeId shape, double restitution) noexcept;
     /// restitution, returning its Error instead of throwing it.
     Result<double> try_restitution(ShapeId shape) const noexcept;
+    /// set_rolling_resistance, returning its Error instead of throwing it.
+    Result<void> try_set_rolling_resistance(ShapeId shape, double rolling_resistance) noexcept;
+    /// rolling_resistance, returning its Error instead of throwing it.
+    Result<double> try_rolling_resistance(ShapeId shape) const noexcept;
+    /// set_tangent_speed, returning its Error instead of throwing it.
+    Result<void> try_set_tangent_speed(ShapeId shape, double tangent_speed) noexcept;
+    /// tangent_speed, returning its Error instead of throwing it.
+    Result<double> try_tangent_speed(ShapeId shape) const noexcept;
     /// set_density, returning its Error instead of throwing it.
     Result<void> try_set_density(ShapeId shape, double density,
                                  bool update_body_mass = true) noexcept;

@@ -179,6 +179,20 @@ void validate(const Material& material) {
                               "DCX_friction");
     }
     require_within("material.friction", material.friction, supported::input_max, "");
+    validate_rolling_resistance("material.rolling_resistance", material.rolling_resistance);
+    validate_tangent_speed("material.tangent_speed", material.tangent_speed);
+}
+
+void validate_rolling_resistance(std::string_view field, double c) {
+    require_finite(field, c);
+    if (!(c >= 0.0)) // \srs{DD46}
+        throw ValidationError(std::string(field), c, "must be >= 0", "DD46");
+    require_within(field, c, supported::input_max, "");
+}
+
+void validate_tangent_speed(std::string_view field, double speed) {
+    require_finite(field, speed); // \srs{DD47} any sign
+    require_within(field, speed, supported::input_max, "m s^-1");
 }
 
 namespace {

@@ -63,6 +63,10 @@ void validate_proportions(const Polygon& p);
 
 TAMIAS2D_EXPORT void validate(const BodyDef& def);
 TAMIAS2D_EXPORT void validate(const Material& material);
+/// \srs{DD46} A rolling resistance: finite, >= 0 (DD46) and within DCX_range.
+void validate_rolling_resistance(std::string_view field, double c);
+/// \srs{DD47} A tangent speed: finite, any sign, within DCX_range (m s^-1).
+void validate_tangent_speed(std::string_view field, double speed);
 TAMIAS2D_EXPORT void validate(const ShapeDef& def);
 void validate(const WorldDef& def);
 /// "static", "kinematic" or "dynamic", as messages name a body's type.

@@ -75,6 +75,23 @@ Result<double> World::try_friction(ShapeId shape) const noexcept {
     return detail::capture([&] { return friction(shape); });
 }
 
+Result<void> World::try_set_rolling_resistance(ShapeId shape,
+                                               double rolling_resistance) noexcept {
+    return detail::capture([&] { return set_rolling_resistance(shape, rolling_resistance); });
+}
+
+Result<double> World::try_rolling_resistance(ShapeId shape) const noexcept {
+    return detail::capture([&] { return rolling_resistance(shape); });
+}
+
+Result<void> World::try_set_tangent_speed(ShapeId shape, double tangent_speed) noexcept {
+    return detail::capture([&] { return set_tangent_speed(shape, tangent_speed); });
+}
+
+Result<double> World::try_tangent_speed(ShapeId shape) const noexcept {
+    return detail::capture([&] { return tangent_speed(shape); });
+}
+
 Result<void> World::try_set_restitution(ShapeId shape, double restitution) noexcept {
     return detail::capture([&] { return set_restitution(shape, restitution); });
 }

@@ -89,7 +89,7 @@ struct World::Impl : memory::HookAllocated<World::Impl> {
             profiler.lap(&StepProfile::prepare);
         }
         events.before_solve(bodies, shapes, contacts, def.hit_event_threshold);
-        solver.solve(contacts, joints, step);
+        solver.solve(contacts, joints, shapes, step);
         if (guarded && solver.diverged() != null_index)
             refuse_diverged();
         profiler.lap(&StepProfile::solve);

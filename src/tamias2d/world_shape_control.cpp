@@ -139,6 +139,42 @@ double World::restitution(ShapeId id) const {
     return impl_->shapes.defs[id.index].material.restitution;
 }
 
+void World::set_rolling_resistance(ShapeId id, double rolling_resistance) {
+    Impl& w = *impl_;
+    const Shape& sh = shape_of(w, id);
+    validate_rolling_resistance("rolling_resistance", rolling_resistance);
+    Material& m = w.shapes.defs[id.index].material;
+    if (m.rolling_resistance == rolling_resistance)
+        return;
+    // \srs{DD46} the contacts read it from the shapes at each step: nothing else to update
+    m.rolling_resistance = rolling_resistance;
+    w.shapes.note_surface_motion(m);
+    wake_shape(w, sh.body);
+}
+
+double World::rolling_resistance(ShapeId id) const {
+    impl_->shapes.get(id);
+    return impl_->shapes.defs[id.index].material.rolling_resistance;
+}
+
+void World::set_tangent_speed(ShapeId id, double tangent_speed) {
+    Impl& w = *impl_;
+    const Shape& sh = shape_of(w, id);
+    validate_tangent_speed("tangent_speed", tangent_speed);
+    Material& m = w.shapes.defs[id.index].material;
+    if (m.tangent_speed == tangent_speed)
+        return;
+    // \srs{DD47} the contacts read it from the shapes at each step: nothing else to update
+    m.tangent_speed = tangent_speed;
+    w.shapes.note_surface_motion(m);
+    wake_shape(w, sh.body);
+}
+
+double World::tangent_speed(ShapeId id) const {
+    impl_->shapes.get(id);
+    return impl_->shapes.defs[id.index].material.tangent_speed;
+}
+
 void World::set_density(ShapeId id, double density, bool update_body_mass) {
     Impl& w = *impl_;
     const Shape& sh = shape_of(w, id);

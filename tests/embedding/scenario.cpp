@@ -80,8 +80,13 @@ ScenarioResult run_scenario(ScenarioInput& in) {
     world.create_shape(ball, ball_shape);
     const BodyId pill = world.create_body(at({2.0, 1.0}));
     world.create_shape(pill, capsule_shape({-0.4, 0.0}, {0.4, 0.0}, 0.25, wood));
+    // The roller resists rolling and drives its contacts (DD46, DD47): the per-contact arrays
+    // of surface motion come from the hook too.
+    Material rubber = wood;
+    rubber.rolling_resistance = 0.2;
+    rubber.tangent_speed = 0.5;
     const BodyId roller = world.create_body(at({14.0, 2.0}));
-    world.create_shape(roller, circle_shape(0.3, wood));
+    world.create_shape(roller, circle_shape(0.3, rubber));
 
     // A bullet fired at the thin wall: continuous collision must hold it in front.
     BodyDef bullet_def = at({-4.0, 3.0});

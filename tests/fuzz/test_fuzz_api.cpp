@@ -80,7 +80,8 @@ struct Driver {
           hooks(seed ^ 0xd6e8feb86659fd93u), world(make_def(r)),
           control(seed ^ 0x5851f42d4c957f2du), character(seed ^ 0xd1342543de82ef95u),
           definitions_stream(seed ^ 0x2545f4914f6cdd1du),
-          recording_stream(seed ^ 0x9fb21c651e98df25u) {}
+          recording_stream(seed ^ 0x9fb21c651e98df25u), surface_stream(seed ^ 0x8cb92ba72f3d8dd7u) {
+    }
 
     static WorldDef make_def(Rng& r) {
         WorldDef d;
@@ -1177,6 +1178,52 @@ struct Driver {
     // the copy refuses must leave its state_hash() and the recording unchanged. The world itself
     // is not touched.
     Rng recording_stream;
+
+    // --- surface motion ---
+    // A shape's rolling resistance and tangent speed (DD46, DD47), set at run time or given to
+    // a new circle, from a stream of their own (so that the main stream's calls stay those the
+    // seeds of docs/verification.md replay). Values: in range mostly, any double else.
+    Rng surface_stream;
+    void surface_call() {
+        Rng& u = surface_stream;
+        const auto value = [&](double lo, double hi) {
+            return u.chance(85) ? u.between(lo, hi) : any_double(u);
+        };
+        switch (u.below(3)) {
+        case 0: {
+            const ShapeId s = shapes.empty() || u.chance(5)
+                                  ? ShapeId{std::uint32_t(u.below(8)), 0, world.tag()}
+                                  : shapes[u.below(shapes.size())];
+            const double c = value(0.0, 1.0);
+            last << "set_rolling_resistance(shape#" << s.index << "." << s.generation << ", " << c
+                 << ")";
+            world.set_rolling_resistance(s, c);
+            break;
+        }
+        case 1: {
+            const ShapeId s = shapes.empty() || u.chance(5)
+                                  ? ShapeId{std::uint32_t(u.below(8)), 0, world.tag()}
+                                  : shapes[u.below(shapes.size())];
+            const double v = value(-5.0, 5.0);
+            last << "set_tangent_speed(shape#" << s.index << "." << s.generation << ", " << v
+                 << ")";
+            world.set_tangent_speed(s, v);
+            break;
+        }
+        default: {
+            if (bodies.empty())
+                break;
+            const BodyId b = bodies[u.below(bodies.size())];
+            Material m{.friction = u.between(0.0, 1.0)};
+            m.rolling_resistance = value(0.0, 1.0);
+            m.tangent_speed = value(-5.0, 5.0);
+            last << "create_shape(" << str(b) << ", circle, surface: " << m.rolling_resistance
+                 << ", " << m.tangent_speed << ")";
+            shapes.push_back(world.create_shape(b, circle_shape(u.between(0.1, 1.0), m)));
+            break;
+        }
+        }
+    }
     void recording_block() {
         if (!recording_stream.chance(2))
             return;
@@ -1242,6 +1289,10 @@ struct Driver {
         }
         if (definitions_stream.chance(6)) {
             definitions_call();
+            return;
+        }
+        if (surface_stream.chance(5)) {
+            surface_call();
             return;
         }
         switch (r.below(24)) {

@@ -299,6 +299,9 @@ def main(argv):
     root = Path(args[0])
     headers = {str(p.relative_to(root)): p.read_text(encoding="utf-8")
                for p in sorted((root / "include/tamias2d").glob("*.hpp"))}
+    if not headers:  # a wrong root would otherwise check nothing and pass
+        print(f"check_error_returning: no public headers under {root / 'include/tamias2d'}")
+        return 1
     problems = self_test(headers) if test else check(headers)[0]
     for p in problems:
         print(f"check_error_returning: {p}")

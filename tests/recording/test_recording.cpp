@@ -241,6 +241,8 @@ BOOST_AUTO_TEST_CASE(every_recorded_call_replays_with_the_same_bits, *utf::label
     rec.set_warm_starting(true);
     rec.set_user_material(s[1], 7);
     rec.apply_wind(s[2], {4.0, 0.0}, 1.0, 0.5);
+    rec.set_rolling_resistance(s[1], 0.2);
+    rec.set_tangent_speed(s[0], 1.5);
     for (int k = 0; k < 5; ++k)
         rec.step(dt);
     // Destruction, then the state of step 10 again.
@@ -490,7 +492,8 @@ BOOST_AUTO_TEST_CASE(recording_changes_no_bit, *utf::label("determinism")) {
 
 // Oracle: the recorded state hash and body states of every step. Definitions whose every
 // optional field is set (a disabled body, motion locks, a sleep threshold, a user material id,
-// a joint's spring target and own tuning) replay as made: a field the codec left at its
+// a rolling resistance and a tangent speed, the pre-solve switch off, a joint's spring target
+// and own tuning) replay as made: a field the codec left at its
 // default would change the replayed world's hash at the first step.
 BOOST_AUTO_TEST_CASE(every_definition_field_replays, *utf::label("determinism")) {
     World world;
@@ -511,8 +514,12 @@ BOOST_AUTO_TEST_CASE(every_definition_field_replays, *utf::label("determinism"))
     rec.create_body(off);
     ShapeDef shape = box_shape(0.8, 0.8);
     shape.material.user_material_id = 42;
+    shape.enable_pre_solve = false;
     rec.create_shape(ba, shape);
-    rec.create_shape(bb, circle_shape(0.4));
+    Material rolling{.friction = 0.5};
+    rolling.rolling_resistance = 0.1; // DD46, DD47: in the recorded definition too
+    rolling.tangent_speed = -0.5;
+    rec.create_shape(bb, circle_shape(0.4, rolling));
     RevoluteJointDef rj{.body_a = ba, .body_b = bb, .anchor = {0.0, 2.0}};
     rj.enable_spring = true;
     rj.hertz = 2.0;

@@ -25,6 +25,10 @@ struct WideContactSolverAccess {
     static std::span<const WideContactConstraint> packs(const WideContactSolver& s) {
         return {s.packs_.data(), s.packs_.size()};
     }
+    /// The packs' surface motion (DD46, DD47), indexed like the packs while it is used.
+    static std::span<const WideSurfaceMotion> surfaces(const WideContactSolver& s) {
+        return {s.surfaces_.data(), s.surfaces_.size()};
+    }
 };
 
 namespace test {

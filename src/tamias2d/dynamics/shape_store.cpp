@@ -26,6 +26,7 @@ std::uint32_t ShapeStore::create(std::uint32_t body_index, Body& b, const ShapeD
     s.next = null_index;
     defs[i] = def;
     defs[i].geometry = canonical(def.geometry); // unused members carry nothing
+    note_surface_motion(def.material);
     s.collider = make_collider(defs[i].geometry);
     if (last_of_body.size() <= body_index)
         last_of_body.resize(std::size_t(body_index) + 1, null_index);
@@ -183,6 +184,12 @@ void ShapeStore::hash(StateHasher& hs) const {
         hs(d.material.friction);
         if (d.material.user_material_id != 0) // (DD42; default shapes hash as they always did)
             hs(d.material.user_material_id);
+        if (!d.enable_pre_solve) // (switches the callback off for its pairs; the same)
+            hs(std::uint64_t(0x9e5017e));
+        if (d.material.rolling_resistance != 0.0 || d.material.tangent_speed != 0.0) {
+            hs(d.material.rolling_resistance); // (DD46, DD47; the same)
+            hs(d.material.tangent_speed);
+        }
         if (!(d.filter == Filter{}) || d.is_sensor) { // (default shapes hash as they always did)
             hs(std::uint64_t(d.filter.category_bits) << 32 | d.filter.mask_bits);
             hs(std::uint64_t(std::uint32_t(d.filter.group_index)) << 1 |
@@ -221,6 +228,8 @@ template <class IO, class D> void shape_def_fields(IO& io, D& d) {
     io("material.restitution", d.material.restitution);
     io("material.friction", d.material.friction);
     io("material.user_material_id", d.material.user_material_id);
+    io("material.rolling_resistance", d.material.rolling_resistance);
+    io("material.tangent_speed", d.material.tangent_speed);
     io("filter.category_bits", d.filter.category_bits);
     io("filter.mask_bits", d.filter.mask_bits);
     io("filter.group_index", d.filter.group_index);
@@ -228,6 +237,7 @@ template <class IO, class D> void shape_def_fields(IO& io, D& d) {
     io("enable_contact_events", d.enable_contact_events);
     io("enable_sensor_events", d.enable_sensor_events);
     io("enable_hit_events", d.enable_hit_events);
+    io("enable_pre_solve", d.enable_pre_solve);
     io.user_data("user_data", d.user_data);
 }
 
@@ -251,6 +261,7 @@ void ShapeStore::write(SnapshotWriter& out) const {
         shape_fields(out, shapes[i]);
     }
     broad_phase.write(out);
+    out("surface_motion", surface_motion);
 }
 
 void ShapeStore::read(SnapshotReader& in) {
@@ -283,6 +294,7 @@ void ShapeStore::read(SnapshotReader& in) {
             in.fail_at(at[i], "", std::string("the definition is refused: ") + e.what());
         }
         s.collider = make_collider(defs[i].geometry);
+        note_surface_motion(defs[i].material);
     }
     in.in(nullptr);
     broad_phase.read(in);
@@ -300,6 +312,11 @@ void ShapeStore::read(SnapshotReader& in) {
     if (live != broad_phase.proxy_count()) // (message built only to fail)
         in.fail("broad_phase",
                 "must hold one proxy per live shape (" + decimal(std::uint64_t(live)) + ")");
+    // DD46, DD47: the steps solve surface motion as the world written did (a shape may have
+    // had it and have it no more)
+    bool had = false;
+    in("surface_motion", had);
+    surface_motion = surface_motion || had;
 }
 
 // --- shape_control ---

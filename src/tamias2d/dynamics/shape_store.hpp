@@ -46,6 +46,15 @@ class ShapeStore {
     /// Per body index: its last shape, valid while the body's first_shape is not null_index.
     memory::vector<std::uint32_t> last_of_body;
     BroadPhase broad_phase;
+    /// DD46, DD47: whether a shape has had a rolling resistance or a tangent speed since the
+    /// store was made (a snapshot keeps it): until then the steps solve no surface motion (and
+    /// pay nothing for it); then every step does, with 0 for the contacts of shapes without.
+    bool surface_motion = false;
+    /// Sets surface_motion if material m has surface motion.
+    void note_surface_motion(const Material& m) {
+        if (m.rolling_resistance != 0.0 || m.tangent_speed != 0.0)
+            surface_motion = true;
+    }
 
     /// The shape of a handle; throws InvalidHandle for a stale or unknown one, WrongWorld for
     /// one of another world.

@@ -330,8 +330,22 @@ void StepSolver::turn_joints(memory::vector<Joint>& joints) {
 // per-step array of prepared constraints cost a pass over ~300 bytes each). Over all the packs
 // (on the calling thread) each pack is warm started as soon as it is prepared (`warm_start`); a
 // block of a parallel preparation leaves the warm start to a pass after all of them.
-void StepSolver::prepare_packs(const ContactManager& contacts, std::size_t begin, std::size_t end,
-                               bool warm_start) {
+namespace {
+
+/// DD46's rolling radius of a shape: a circle's or a capsule's radius, 0 for a shape that does
+/// not roll (a polygon, a segment).
+double rolling_radius(const Geometry& g) {
+    if (g.type == ShapeType::circle)
+        return g.circle.radius;
+    if (g.type == ShapeType::capsule)
+        return g.capsule.radius;
+    return 0.0;
+}
+
+} // namespace
+
+void StepSolver::prepare_packs(const ContactManager& contacts, const ShapeStore* surfaces,
+                               std::size_t begin, std::size_t end, bool warm_start) {
     const auto order = wide_solver_.order();
     // Reused: every lane is set or cleared each pack (clearing the whole input per pack,
     // 600 bytes, was a tenth of this loop's time).
@@ -361,6 +375,27 @@ void StepSolver::prepare_packs(const ContactManager& contacts, std::size_t begin
             const std::uint32_t c = edge_contact_[k];
             set_input_lane(in, l, edges_[k], c, contacts.contacts()[c], contacts.warm_impulses()[c],
                            edge_slot_[k]);
+        }
+        if (surfaces != nullptr) {
+            for (int l = 0; l < wide_lanes; ++l) {
+                const std::uint32_t k = order[p][l];
+                if (k == ConstraintGraph::no_constraint) {
+                    wide_solver_.set_surface_lane(p, l, 0.0, 0.0, 0.0);
+                    continue;
+                }
+                const std::uint32_t ci = edge_contact_[k];
+                const Contact& c = contacts.contacts()[ci];
+                const ShapeDef& a = surfaces->defs[c.shape_a];
+                const ShapeDef& b = surfaces->defs[c.shape_b];
+                // \srs{DD46} \srs{DD47} the contact's surface motion from its shapes'
+                wide_solver_.set_surface_lane(
+                    p, l,
+                    bridge::tangent_target(a.material.tangent_speed, b.material.tangent_speed),
+                    bridge::rolling_resistance_length(
+                        a.material.rolling_resistance, rolling_radius(a.geometry),
+                        b.material.rolling_resistance, rolling_radius(b.geometry)),
+                    contacts.rolling_impulses()[ci]);
+            }
         }
         if (warm_start)
             wide_solver_.prepare_pack_and_warm_start(p, in, solver_bodies_);
@@ -451,7 +486,8 @@ std::uint32_t StepSolver::list_edges(const ContactManager& contacts, const StepT
     return total.bounces;
 }
 
-void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const StepContext& step) {
+void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const ShapeStore& shapes,
+                       const StepContext& step) {
     const WorldDef& def = step.def;
     const StepTasks& tasks = step.tasks;
     const int n = def.substeps;
@@ -486,6 +522,11 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
     // number of workers; with more than one worker the regions' streams run on several threads.
     wide_solver_.colour(edges_, solver_bodies_.size(), std::uint32_t(def.contact_regions), cut_);
     const std::uint32_t streams = tasks.parallel() ? wide_solver_.graph().streams() : 1;
+    // DD46, DD47: only a world where some shape has surface motion fills and solves it.
+    wide_solver_.use_surfaces(shapes.surface_motion);
+    if (shapes.surface_motion)
+        contacts.use_rolling();
+    const ShapeStore* surfaces = shapes.surface_motion ? &shapes : nullptr;
     // Those that can bounce get a scalar copy for the restitution pass, prepared from the
     // velocities before the step (DD11's relative velocity before the impact).
     for (std::uint32_t k = 0; k < edges_.size(); ++k) {
@@ -510,14 +551,14 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
         // so the packs may be prepared in any order, and warm started after them in solve
         // order: the fused loop's bits.
         auto run = [&](int first, int last) {
-            prepare_packs(contacts, std::size_t(first) * pack_block,
+            prepare_packs(contacts, surfaces, std::size_t(first) * pack_block,
                           std::min(pack_count, std::size_t(last) * pack_block), false);
         };
         tasks.for_each_block(blocks_of(pack_count, pack_block), run);
         if (warm)
             contact_pass(tasks, streams, nullptr, false);
     } else {
-        prepare_packs(contacts, 0, pack_count, warm);
+        prepare_packs(contacts, surfaces, 0, pack_count, warm);
     }
 
     ContactSolverSettings st;
@@ -586,15 +627,16 @@ void StepSolver::store_impulses(ContactManager& contacts, const StepTasks& tasks
     const std::size_t pack_count = wide_solver_.order().size();
     const std::span<ContactConstraint> bouncers(bouncing_.data(), bounce_count);
     const ContactManager::ImpulseRecords records = contacts.impulse_records();
+    const std::span<double> rolling = contacts.rolling_records(); // DD46 (empty: none)
     if (tasks.parallel() && pack_count > store_block) {
         auto run = [&](int first, int last) {
             wide_solver_.store(records.warm, records.totals, bouncers,
                                std::size_t(first) * store_block,
-                               std::min(pack_count, std::size_t(last) * store_block));
+                               std::min(pack_count, std::size_t(last) * store_block), rolling);
         };
         tasks.for_each_block(blocks_of(pack_count, store_block), run);
     } else {
-        wide_solver_.store(records.warm, records.totals, bouncers, 0, pack_count);
+        wide_solver_.store(records.warm, records.totals, bouncers, 0, pack_count, rolling);
     }
     // \srs{R8} Post-collision velocities (and, integrated, positions) of colliding bodies.
     apply_restitution(bouncers, solver_bodies_, st);

@@ -60,7 +60,10 @@ class StepSolver {
     /// solve diverged) stops before anything is stored: diverged() names the body.
     /// With more than one worker, the bodies' integration and the contacts' preparation run in
     /// parallel blocks (each body, each pack its own), with the results of one thread.
-    void solve(ContactManager& contacts, JointStore& joints, const StepContext& step);
+    /// With surface motion in the world (ShapeStore::surface_motion) each manifold's tangent
+    /// speed and rolling resistance (DD46, DD47) are mixed from its shapes' materials.
+    void solve(ContactManager& contacts, JointStore& joints, const ShapeStore& shapes,
+               const StepContext& step);
     /// The body (index in the body store) of the first solver body the last solve left
     /// non-finite, or null_index: the step must then be refused, nothing finalized.
     std::uint32_t diverged() const { return diverged_; }
@@ -95,9 +98,10 @@ class StepSolver {
     /// bounce.
     std::uint32_t list_edges(const ContactManager& contacts, const StepTasks& tasks);
     /// The manifolds' lane filling and preparation into packs [begin, end) of the solve order,
-    /// each pack warm started right after it with `warm_start` (then begin must be 0).
-    void prepare_packs(const ContactManager& contacts, std::size_t begin, std::size_t end,
-                       bool warm_start);
+    /// each pack warm started right after it with `warm_start` (then begin must be 0); with
+    /// `surfaces` (else nullptr) each lane's surface motion mixed from its shapes too.
+    void prepare_packs(const ContactManager& contacts, const ShapeStore* surfaces,
+                       std::size_t begin, std::size_t end, bool warm_start);
     /// finalize's sweep over bodies [begin, end). `deferred`: the continuous pass's bodies and
     /// the undecided shapes are recorded per body and per shape (written_back_, starts_,
     /// undecided_) for a gather in body order, instead of being listed at once.

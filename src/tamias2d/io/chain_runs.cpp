@@ -22,14 +22,17 @@ bool same(const ChainSegment& a, const ChainSegment& b) {
 }
 bool same(const Material& a, const Material& b) {
     return same(a.density, b.density) && same(a.restitution, b.restitution) &&
-           same(a.friction, b.friction) && a.user_material_id == b.user_material_id;
+           same(a.friction, b.friction) && a.user_material_id == b.user_material_id &&
+           same(a.rolling_resistance, b.rolling_resistance) &&
+           same(a.tangent_speed, b.tangent_speed);
 }
 
 /// Whether b can follow a in one chain: b starts where a ends, and each one's ghost there is
 /// the other's far end. One material, filter and sensor flag for the whole chain.
 bool linked(const ShapeDef& a, const ShapeDef& b) {
     if (b.geometry.type != ShapeType::chain_segment || !same(a.material, b.material) ||
-        !(a.filter == b.filter) || a.is_sensor != b.is_sensor)
+        !(a.filter == b.filter) || a.is_sensor != b.is_sensor ||
+        a.enable_pre_solve != b.enable_pre_solve)
         return false;
     const ChainSegment& x = a.geometry.chain_segment;
     const ChainSegment& y = b.geometry.chain_segment;

@@ -19,12 +19,16 @@ namespace tamias2d::io::scene_detail {
 
 Material parse_material_object(const Ctx& ctx, const ojson& v, const std::string& ptr, Material m) {
     require_object(ctx, v, ptr, "material", "a material object or a material name");
-    check_keys(ctx, v, ptr, {"density", "restitution", "friction", "user_material_id"},
+    check_keys(ctx, v, ptr,
+               {"density", "restitution", "friction", "user_material_id", "rolling_resistance",
+                "tangent_speed"},
                "a material");
     opt_number(ctx, v, ptr, "density", m.density);
     opt_number(ctx, v, ptr, "restitution", m.restitution);
     opt_number(ctx, v, ptr, "friction", m.friction);
-    if (const auto id = v.find("user_material_id"); id != v.end()) { // DD42
+    opt_number(ctx, v, ptr, "rolling_resistance", m.rolling_resistance); // DD46
+    opt_number(ctx, v, ptr, "tangent_speed", m.tangent_speed);           // DD47
+    if (const auto id = v.find("user_material_id"); id != v.end()) {     // DD42
         // (JSON reads a non-negative integer as unsigned: anything else is no id.)
         if (!id->is_number_unsigned())
             fail(ctx, child(ptr, "user_material_id"), "user_material_id",
@@ -39,6 +43,9 @@ Material parse_material_object(const Ctx& ctx, const ojson& v, const std::string
     if (!(m.friction >= 0.0))
         fail_value(ctx, child(ptr, "friction"), "friction", m.friction, "must be >= 0",
                    "DCX_friction");
+    if (!(m.rolling_resistance >= 0.0))
+        fail_value(ctx, child(ptr, "rolling_resistance"), "rolling_resistance",
+                   m.rolling_resistance, "must be >= 0", "DD46");
     check_as_library(ctx, ptr, "material.", [&] { validate(m); }); // DCX_range
     return m;
 }
@@ -312,7 +319,8 @@ void check_outline(const Ctx& ctx, const std::string& ptr, const std::vector<Vec
     }
 }
 
-/// A shape's "filter" (DD27) and "sensor" (DD28), the keys every kind of shape has.
+/// A shape's "filter" (DD27), "sensor" (DD28) and "enable_pre_solve", the keys every kind of
+/// shape has.
 void parse_filter_and_sensor(const Ctx& ctx, const ojson& v, const std::string& ptr,
                              ShapeDef& def) {
     if (const ojson* f = find(v, "filter")) {
@@ -332,6 +340,8 @@ void parse_filter_and_sensor(const Ctx& ctx, const ojson& v, const std::string& 
     }
     if (const ojson* s = find(v, "sensor"))
         def.is_sensor = as_bool(ctx, *s, child(ptr, "sensor"), "sensor");
+    if (const ojson* s = find(v, "enable_pre_solve"))
+        def.enable_pre_solve = as_bool(ctx, *s, child(ptr, "enable_pre_solve"), "enable_pre_solve");
 }
 
 std::vector<ShapeDef> parse_shape_geometry(const Ctx& ctx, const ojson& v, const std::string& ptr,
@@ -349,10 +359,10 @@ std::vector<ShapeDef> parse_shape_geometry(const Ctx& ctx, const ojson& v, const
     };
     try {
         if (type == "box") {
-            check_keys(
-                ctx, v, ptr,
-                {"type", "width", "height", "center", "angle", "material", "filter", "sensor"},
-                "a box shape");
+            check_keys(ctx, v, ptr,
+                       {"type", "width", "height", "center", "angle", "material", "filter",
+                        "sensor", "enable_pre_solve"},
+                       "a box shape");
             const double w = req_length(ctx, v, ptr, "width", "a box shape");
             const double h = req_length(ctx, v, ptr, "height", "a box shape");
             Vec2d center{};
@@ -364,8 +374,10 @@ std::vector<ShapeDef> parse_shape_geometry(const Ctx& ctx, const ojson& v, const
             return {box_polygon(checked(ctx, ptr, ptr, box_shape(w, h, material, center, angle)))};
         }
         if (type == "circle") {
-            check_keys(ctx, v, ptr, {"type", "radius", "center", "material", "filter", "sensor"},
-                       "a circle shape");
+            check_keys(
+                ctx, v, ptr,
+                {"type", "radius", "center", "material", "filter", "sensor", "enable_pre_solve"},
+                "a circle shape");
             const double r = req_length(ctx, v, ptr, "radius", "a circle shape");
             Vec2d center{};
             opt_vec2(ctx, v, ptr, "center", center);
@@ -373,7 +385,8 @@ std::vector<ShapeDef> parse_shape_geometry(const Ctx& ctx, const ojson& v, const
             return {checked(ctx, ptr, ptr, circle_shape(r, material, center))};
         }
         if (type == "polygon") {
-            check_keys(ctx, v, ptr, {"type", "points", "material", "filter", "sensor"},
+            check_keys(ctx, v, ptr,
+                       {"type", "points", "material", "filter", "sensor", "enable_pre_solve"},
                        "a polygon shape");
             const ojson& pts = require_key(ctx, v, ptr, "points", "a polygon shape");
             const std::string pp = child(ptr, "points");
@@ -394,7 +407,8 @@ std::vector<ShapeDef> parse_shape_geometry(const Ctx& ctx, const ojson& v, const
         }
         if (type == "capsule") {
             check_keys(ctx, v, ptr,
-                       {"type", "center1", "center2", "radius", "material", "filter", "sensor"},
+                       {"type", "center1", "center2", "radius", "material", "filter", "sensor",
+                        "enable_pre_solve"},
                        "a capsule shape");
             const Vec2d c1 = req_vec2("center1", "a capsule shape");
             const Vec2d c2 = req_vec2("center2", "a capsule shape");
@@ -409,8 +423,10 @@ std::vector<ShapeDef> parse_shape_geometry(const Ctx& ctx, const ojson& v, const
             return {checked(ctx, ptr, ptr, def)};
         }
         if (type == "segment") {
-            check_keys(ctx, v, ptr, {"type", "point1", "point2", "material", "filter", "sensor"},
-                       "a segment shape");
+            check_keys(
+                ctx, v, ptr,
+                {"type", "point1", "point2", "material", "filter", "sensor", "enable_pre_solve"},
+                "a segment shape");
             ShapeDef def{};
             def.geometry.type = ShapeType::segment;
             def.geometry.segment = {req_vec2("point1", "a segment shape"),
@@ -420,16 +436,18 @@ std::vector<ShapeDef> parse_shape_geometry(const Ctx& ctx, const ojson& v, const
             return {checked(ctx, ptr, ptr, def)};
         }
         if (type == "chain") {
-            check_keys(ctx, v, ptr, {"type", "points", "loop", "material", "filter", "sensor"},
-                       "a chain shape");
+            check_keys(
+                ctx, v, ptr,
+                {"type", "points", "loop", "material", "filter", "sensor", "enable_pre_solve"},
+                "a chain shape");
             read_material();
             return parse_chain(ctx, v, ptr, material, chain_budget);
         }
         if (type == "chain_segment") {
-            check_keys(
-                ctx, v, ptr,
-                {"type", "ghost1", "point1", "point2", "ghost2", "material", "filter", "sensor"},
-                "a chain_segment shape");
+            check_keys(ctx, v, ptr,
+                       {"type", "ghost1", "point1", "point2", "ghost2", "material", "filter",
+                        "sensor", "enable_pre_solve"},
+                       "a chain_segment shape");
             ShapeDef def{};
             def.geometry.type = ShapeType::chain_segment;
             def.geometry.chain_segment = {req_vec2("ghost1", "a chain_segment shape"),
@@ -459,6 +477,7 @@ std::vector<ShapeDef> parse_shape(Ctx& ctx, const ojson& v, const std::string& p
     for (ShapeDef& def : defs) {
         def.filter = common.filter;
         def.is_sensor = common.is_sensor;
+        def.enable_pre_solve = common.enable_pre_solve;
     }
     return defs;
 }

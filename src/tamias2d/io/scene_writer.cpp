@@ -29,6 +29,10 @@ ojson material_json(const Material& m) {
     j["friction"] = m.friction;
     if (m.user_material_id != 0) // (DD42; scenes without one are written as before)
         j["user_material_id"] = m.user_material_id;
+    if (m.rolling_resistance != 0.0) // (DD46, DD47: the same)
+        j["rolling_resistance"] = m.rolling_resistance;
+    if (m.tangent_speed != 0.0)
+        j["tangent_speed"] = m.tangent_speed;
     return j;
 }
 
@@ -116,6 +120,8 @@ ojson shapes_json(const std::vector<ShapeDef>& shapes, std::size_t& chain_budget
                             {"group_index", s.filter.group_index}};
         if (s.is_sensor)
             sj["sensor"] = true;
+        if (!s.enable_pre_solve) // (scenes whose shapes all allow it are written as before)
+            sj["enable_pre_solve"] = false;
         out.push_back(std::move(sj));
     };
     for (std::size_t i = 0; i < shapes.size();) {

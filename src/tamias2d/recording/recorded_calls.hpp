@@ -118,7 +118,9 @@ template <class Sig> using Member = Sig World::*;
     X(set_warm_starting, &World::set_warm_starting)                                                \
     X(set_user_material, &World::set_user_material)                                                \
     X(set_target_transform, &World::set_target_transform)                                          \
-    X(apply_wind, &World::apply_wind)
+    X(apply_wind, &World::apply_wind)                                                              \
+    X(set_rolling_resistance, &World::set_rolling_resistance)                                      \
+    X(set_tangent_speed, &World::set_tangent_speed)
 // clang-format on
 
 /// A call's code in a recording: its place in TAMIAS2D_RECORDED_CALLS.
@@ -235,7 +237,7 @@ template <class IO, class D> void joint_tail_io(IO& io, D& d) {
 // left to its default on replay.
 #if defined(__GLIBCXX__) && UINTPTR_MAX == UINT64_MAX
 static_assert(sizeof(BodyDef) == 240, "BodyDef changed: update definition_io");
-static_assert(sizeof(ShapeDef) == 504, "ShapeDef changed: update definition_io");
+static_assert(sizeof(ShapeDef) == 528, "ShapeDef changed: update definition_io");
 #endif
 
 /// A shape's or a body's definition, field by field. A field added to ShapeDef or BodyDef
@@ -248,11 +250,14 @@ template <class IO, class T> void definition_io(IO& io, T& v) {
         io("shape.material.restitution", v.material.restitution);
         io("shape.material.friction", v.material.friction);
         io("shape.material.user_material_id", v.material.user_material_id);
+        io("shape.material.rolling_resistance", v.material.rolling_resistance);
+        io("shape.material.tangent_speed", v.material.tangent_speed);
         argument_io(io, "shape.filter", v.filter);
         io("shape.is_sensor", v.is_sensor);
         io("shape.enable_contact_events", v.enable_contact_events);
         io("shape.enable_sensor_events", v.enable_sensor_events);
         io("shape.enable_hit_events", v.enable_hit_events);
+        io("shape.enable_pre_solve", v.enable_pre_solve);
         io.user_data("shape.user_data", v.user_data);
     } else if constexpr (std::is_same_v<V, BodyDef>) {
         if constexpr (std::is_const_v<T>) {

@@ -167,6 +167,12 @@ void Recorder::set_filter(ShapeId shape, const Filter& filter) {
 void Recorder::set_friction(ShapeId shape, double friction) {
     record<Call::set_friction>(*impl_, shape, friction);
 }
+void Recorder::set_rolling_resistance(ShapeId shape, double rolling_resistance) {
+    record<Call::set_rolling_resistance>(*impl_, shape, rolling_resistance);
+}
+void Recorder::set_tangent_speed(ShapeId shape, double tangent_speed) {
+    record<Call::set_tangent_speed>(*impl_, shape, tangent_speed);
+}
 void Recorder::set_restitution(ShapeId shape, double restitution) {
     record<Call::set_restitution>(*impl_, shape, restitution);
 }

@@ -52,6 +52,15 @@ Result<void> Recorder::try_set_filter(ShapeId shape, const Filter& filter) noexc
     return detail::capture([&] { return set_filter(shape, filter); });
 }
 
+Result<void> Recorder::try_set_rolling_resistance(ShapeId shape,
+                                                  double rolling_resistance) noexcept {
+    return detail::capture([&] { return set_rolling_resistance(shape, rolling_resistance); });
+}
+
+Result<void> Recorder::try_set_tangent_speed(ShapeId shape, double tangent_speed) noexcept {
+    return detail::capture([&] { return set_tangent_speed(shape, tangent_speed); });
+}
+
 Result<void> Recorder::try_set_friction(ShapeId shape, double friction) noexcept {
     return detail::capture([&] { return set_friction(shape, friction); });
 }

@@ -25,6 +25,16 @@ struct ContactConstraintPoint {
     double relative_velocity = 0.0; ///< m s^-1, normal relative velocity before the step
 };
 
+/// A manifold's surface motion (V: double, or a pack of lanes): what DD47's tangent speeds and
+/// DD46's rolling resistance add to its solve. Kept apart from the constraint, and solved only
+/// in steps where some shape has surface motion, so that a world without any pays nothing.
+template <class V> struct SurfaceMotionOver {
+    V tangent_speed{};      ///< m s^-1, DD47: the relative tangential velocity friction targets
+    V rolling_resistance{}; ///< m, DD46: c l, the bound's factor on the normal impulse
+    V rolling_impulse{};    ///< N m s, DD46: accumulated in the current substep (warm start)
+};
+using SurfaceMotion = SurfaceMotionOver<double>;
+
 struct ContactConstraint {
     std::uint32_t body_a = 0, body_b = 0; ///< solver body indices
     std::uint32_t contact = 0;            ///< index of the persistent contact
@@ -39,6 +49,8 @@ struct ContactConstraint {
     double inv_k11 = 0.0, inv_k12 = 0.0, inv_k22 = 0.0;
     bool use_block = false;  ///< the iterations solve the two points as a block
     bool invertible = false; ///< the restitution pass may (a looser condition bound)
+    /// DD46, DD47, for the tests' sequential pass (the engine keeps it in the wide solver).
+    SurfaceMotion surface{};
 };
 
 } // namespace tamias2d

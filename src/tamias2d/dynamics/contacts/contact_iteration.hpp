@@ -8,7 +8,14 @@
 // Boost.Units quantities); the benchmark also
 // instantiates the iteration with the same formulas on plain doubles, to show that the typing
 // costs nothing (verification/bench/typing_kernel.hpp).
+//
+// A manifold's surface motion (DD46's rolling resistance, DD47's tangent speed) is an optional
+// last argument, a pointer to its SurfaceMotionOver<V>; without it (nullptr, the default) the
+// functions are those of a world without surface motion, operation for operation.
 #pragma once
+
+#include <cstddef>
+#include <type_traits>
 
 #include "tamias2d/dynamics/model_bridge.hpp"
 #include "tamias2d/dynamics/solver_settings.hpp"
@@ -38,9 +45,13 @@ V current_separation(const Point& cp, const Body& a, const Body& b, Vec2<V> n) {
 template <class V> using NormalTarget = bridge::Target<V>;
 using bridge::TwoPointSolution;
 
-/// Re-applies the accumulated impulses (they carry the previous substep's solution forward).
-template <class Model = bridge::Model, class Constraint, class Body>
-void warm_start(Constraint& c, Body& a, Body& b) {
+/// Whether a surface argument is given (a pointer) or not (nullptr).
+template <class Surface> inline constexpr bool has_surface = !std::is_null_pointer_v<Surface>;
+
+/// Re-applies the accumulated impulses (they carry the previous substep's solution forward),
+/// the rolling resistance's last (DD46).
+template <class Model = bridge::Model, class Constraint, class Body, class Surface = std::nullptr_t>
+void warm_start(Constraint& c, Body& a, Body& b, Surface s = nullptr) {
     const auto t = tangent_of(c.normal);
     for (auto& cp : c.points) {
         Model::apply_impulse(a, b, cp.normal_arm_a, cp.normal_arm_b, c.normal, cp.normal_impulse);
@@ -48,6 +59,8 @@ void warm_start(Constraint& c, Body& a, Body& b) {
         cp.total_normal_impulse += cp.normal_impulse;
         cp.total_tangent_impulse += cp.tangent_impulse;
     }
+    if constexpr (has_surface<Surface>)
+        Model::apply_rolling_impulse(a, b, s->rolling_impulse);
 }
 
 /// Sets point j's accumulated normal impulse for this substep and applies the change.
@@ -87,27 +100,41 @@ TwoPointSolution<V> block_update(const Constraint& c, const Body& a, const Body&
                                      p1.normal_mass, p2.normal_mass, vn1, vn2, t1, t2, x1, x2);
 }
 
-template <class Model, class Constraint, class Body>
-void solve_friction(Constraint& c, Body& a, Body& b) {
+/// Friction (LC2) at each point: the relative tangential velocity driven to 0, or with a surface
+/// to its tangent speed (DD47), within mu lambda_n; then the rolling resistance (DD46).
+template <class Model, class Constraint, class Body, class Surface = std::nullptr_t>
+void solve_friction(Constraint& c, Body& a, Body& b, Surface s = nullptr) {
     using V = value_of<Body>;
     const auto t = tangent_of(c.normal);
+    V target = broadcast<V>(0.0);
+    if constexpr (has_surface<Surface>)
+        target = s->tangent_speed;
     for (auto& cp : c.points) {
         const V vt = Model::relative_velocity(a, b, cp.tangent_arm_a, cp.tangent_arm_b, t);
         const V max_f = c.friction * cp.normal_impulse;
-        const V lambda = Model::impulse_to_reach(vt, broadcast<V>(0.0), cp.tangent_mass);
+        const V lambda = Model::impulse_to_reach(vt, target, cp.tangent_mass);
         const V updated = min(max(cp.tangent_impulse + lambda, -max_f), max_f);
         const V delta = updated - cp.tangent_impulse;
         cp.tangent_impulse = updated;
         cp.total_tangent_impulse += delta;
         Model::apply_impulse(a, b, cp.tangent_arm_a, cp.tangent_arm_b, t, delta);
     }
+    if constexpr (has_surface<Surface>) {
+        const V bound = Model::rolling_impulse_bound(
+            s->rolling_resistance, c.points[0].normal_impulse + c.points[1].normal_impulse);
+        const V updated = Model::rolling_impulse_update(a, b, s->rolling_impulse, bound);
+        const V delta = updated - s->rolling_impulse;
+        s->rolling_impulse = updated;
+        Model::apply_rolling_impulse(a, b, delta);
+    }
 }
 
 /// One iteration for one manifold (or one per lane): with use_bias the soft, overlap-removing
 /// solve; without it the rigid relax. Two well-conditioned points with rigid targets are solved
 /// together (the LCP), exactly; otherwise point by point, each seeing the other's impulse.
-template <bool use_bias, class Model = bridge::Model, class Constraint, class Body>
-void solve(Constraint& c, Body& a, Body& b, const ContactSolverSettings& st) {
+template <bool use_bias, class Model = bridge::Model, class Constraint, class Body,
+          class Surface = std::nullptr_t>
+void solve(Constraint& c, Body& a, Body& b, const ContactSolverSettings& st, Surface s = nullptr) {
     using V = value_of<Body>;
     const NormalTarget<V> nt[2] = {
         Model::template target<use_bias>(current_separation(c.points[0], a, b, c.normal), st),
@@ -129,16 +156,17 @@ void solve(Constraint& c, Body& a, Body& b, const ContactSolverSettings& st) {
             updated = select(block, updated, point_update<Model>(c, j, a, b, nt[j]));
         apply_normal_delta<Model>(c, j, a, b, updated);
     }
-    solve_friction<Model>(c, a, b);
+    solve_friction<Model>(c, a, b, s);
 }
 
 /// The same with the choice made at run time (tests, one manifold at a time).
-template <class Model = bridge::Model, class Constraint, class Body>
-void solve(Constraint& c, Body& a, Body& b, const ContactSolverSettings& st, bool use_bias) {
+template <class Model = bridge::Model, class Constraint, class Body, class Surface = std::nullptr_t>
+void solve(Constraint& c, Body& a, Body& b, const ContactSolverSettings& st, bool use_bias,
+           Surface s = nullptr) {
     if (use_bias)
-        solve<true, Model>(c, a, b, st);
+        solve<true, Model>(c, a, b, st, s);
     else
-        solve<false, Model>(c, a, b, st);
+        solve<false, Model>(c, a, b, st, s);
 }
 
 } // namespace tamias2d::iteration

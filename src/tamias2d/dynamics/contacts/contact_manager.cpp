@@ -64,6 +64,8 @@ void ContactManager::destroy(std::uint32_t i, BodyStore& bodies, const ShapeStor
         total_impulses_[i] = total_impulses_[last];
         bases_[i] = bases_[last];
         edge_inputs_[i] = edge_inputs_[last];
+        if (rolling_on_)
+            rolling_impulses_[i] = rolling_impulses_[last];
         index_.assign(Contact::key(contacts_[i].shape_a, contacts_[i].shape_b), i);
     }
     contacts_.pop_back();
@@ -71,6 +73,8 @@ void ContactManager::destroy(std::uint32_t i, BodyStore& bodies, const ShapeStor
     total_impulses_.pop_back();
     bases_.pop_back();
     edge_inputs_.pop_back();
+    if (rolling_on_)
+        rolling_impulses_.pop_back();
 }
 
 void ContactManager::destroy_of_shape(std::uint32_t s, BodyStore& bodies,
@@ -212,11 +216,15 @@ void ContactManager::find_new(const BodyStore& bodies, ShapeStore& shapes,
         warm_impulses_.reserve_more(1);
         total_impulses_.reserve_more(1);
         bases_.reserve_more(1);
+        if (rolling_on_)
+            rolling_impulses_.reserve_more(1);
         index_.insert(key, std::uint32_t(contacts_.size()));
         contacts_.push_back(c);
         warm_impulses_.emplace_back();
         total_impulses_.emplace_back();
         bases_.emplace_back();
+        if (rolling_on_)
+            rolling_impulses_.emplace_back();
     }
     pending_begin_ = pending_end_ = 0;
 }
@@ -322,7 +330,7 @@ void ContactManager::update(BodyStore& bodies, const ShapeStore& shapes, const S
             Narrowed r =
                 narrow_contact(c, warm_impulses_[i], bases_[i], edge_inputs_[i], shape[c.shape_a],
                                shape[c.shape_b], speculative_distance, reuse_distance);
-            if (pre_solve && r != Narrowed::separated && c.touching)
+            if (pre_solve && r != Narrowed::separated && c.touching && asks_pre_solve(shapes, c))
                 r = Narrowed(pre_solved(i, std::uint8_t(r), bodies, shapes));
             if (r == Narrowed::separated)
                 doomed_.push_back(i);
@@ -391,7 +399,7 @@ void ContactManager::update_in_blocks(BodyStore& bodies, const ShapeStore& shape
             r = narrow_contact(c, warm_impulses_[i], bases_[i], edge_inputs_[i], shape[c.shape_a],
                                shape[c.shape_b], speculative_distance, reuse_distance);
         }
-        if (pre_solve && r != Narrowed::separated && c.touching)
+        if (pre_solve && r != Narrowed::separated && c.touching && asks_pre_solve(shapes, c))
             r = Narrowed(pre_solved(i, std::uint8_t(r), bodies, shapes));
         if (r == Narrowed::separated)
             doomed_.push_back(i);
@@ -449,6 +457,10 @@ const memory::vector<ContactInfo>& ContactManager::report(const BodyStore& bodie
     return infos_;
 }
 
+bool ContactManager::asks_pre_solve(const ShapeStore& shapes, const Contact& c) {
+    return shapes.defs[c.shape_a].enable_pre_solve || shapes.defs[c.shape_b].enable_pre_solve;
+}
+
 bool ContactManager::reports_events(const ShapeStore& shapes, std::uint32_t sa, std::uint32_t sb) {
     return shapes.defs[sa].enable_contact_events && shapes.defs[sb].enable_contact_events;
 }
@@ -465,6 +477,8 @@ void ContactManager::hash(StateHasher& hs, bool reuse) const {
             hs(warm_impulses_[i].normal[j]);
             hs(warm_impulses_[i].tangent[j]);
         }
+        if (rolling_on_) // (DD46; a world without surface motion hashes as it always did)
+            hs(rolling_impulses_[i]);
         if (reuse && c.manifold.count > 0) {
             // What a reused manifold is computed from (manifold_reuse.hpp).
             const ManifoldBasis& b = bases_[i];
@@ -561,6 +575,10 @@ void ContactManager::write(SnapshotWriter& out) const {
         out("pending.first", new_pairs_[k].first);
         out("pending.second", new_pairs_[k].second);
     }
+    out("rolling", rolling_on_); // DD46
+    if (rolling_on_)
+        for (std::uint32_t i = 0; i < size(); ++i)
+            out("rolling_impulse", rolling_impulses_[i]);
 }
 
 void ContactManager::read(SnapshotReader& in, const BodyStore& bodies, const ShapeStore& shapes) {
@@ -613,6 +631,10 @@ void ContactManager::read(SnapshotReader& in, const BodyStore& bodies, const Sha
     }
     pending_begin_ = 0;
     pending_end_ = pending;
+    in("rolling", rolling_on_); // DD46
+    rolling_impulses_.resize(rolling_on_ ? n : 0);
+    for (std::size_t i = 0; i < rolling_impulses_.size(); ++i)
+        in("rolling_impulse", rolling_impulses_[i]);
     infos_stale_ = true;
 }
 
@@ -745,6 +767,8 @@ std::uint8_t ContactManager::pre_solved(std::uint32_t i, std::uint8_t r, const B
 void ContactManager::forget_warm_starts() {
     for (std::size_t i = 0; i < warm_impulses_.size(); ++i)
         warm_impulses_[i] = ContactImpulses{};
+    for (std::size_t i = 0; i < rolling_impulses_.size(); ++i)
+        rolling_impulses_[i] = 0.0;
 }
 
 } // namespace tamias2d

@@ -73,6 +73,18 @@ class ContactManager {
         std::span<ContactImpulses> warm, totals;
     };
     ImpulseRecords impulse_records() { return {warm_impulses_, total_impulses_}; }
+    /// \srs{DD46} Per contact, indexed alike, once a step has had surface motion (use_rolling;
+    /// empty before): the rolling resistance's accumulated angular impulse (N m s), the next
+    /// step's warm start. A world without surface motion neither keeps nor moves it.
+    const LargeArray<double>& rolling_impulses() const { return rolling_impulses_; }
+    std::span<double> rolling_records() { return rolling_impulses_; }
+    /// From now on keeps a rolling impulse per contact (0 for the contacts there are).
+    void use_rolling() {
+        if (!rolling_on_) {
+            rolling_impulses_.resize(contacts_.size());
+            rolling_on_ = true;
+        }
+    }
     /// The contacts that began and stopped touching in the last step, in the order found.
     const memory::vector<ContactEvent>& begin_events() const { return begin_events_; }
     const memory::vector<ContactEvent>& end_events() const { return end_events_; }
@@ -158,6 +170,9 @@ class ContactManager {
     /// Whether the begin and end events of the pair of shapes sa and sb are reported: both
     /// shapes allow them (ShapeDef::enable_contact_events).
     static bool reports_events(const ShapeStore& shapes, std::uint32_t sa, std::uint32_t sb);
+    /// Whether the pre-solve callback is asked about contact c: either of its shapes allows it
+    /// (ShapeDef::enable_pre_solve).
+    static bool asks_pre_solve(const ShapeStore& shapes, const Contact& c);
     // --- shape_control ---
     /// Shape s's material changed: its contacts take the new combined friction and restitution
     /// now (the manifolds and impulses are kept).
@@ -213,6 +228,9 @@ class ContactManager {
     LargeArray<ContactImpulses> warm_impulses_, total_impulses_;
     /// Per contact, indexed alike: the poses its manifold was computed at (manifold reuse).
     LargeArray<ManifoldBasis> bases_;
+    /// Per contact, indexed alike while rolling_on_ (use_rolling).
+    LargeArray<double> rolling_impulses_;
+    bool rolling_on_ = false;
     memory::vector<ContactEvent> begin_events_, end_events_;
 
     void destroy(std::uint32_t i, BodyStore& bodies, const ShapeStore& shapes);

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "tamias2d/dynamics/contacts/contact_constraint.hpp"
 #include "tamias2d/math/vec2d.hpp"
 #include "tamias2d/math/wide.hpp"
 
@@ -38,6 +39,10 @@ struct alignas(wide_alignment) WideContactConstraint {
     std::uint32_t restitution_slot[wide_lanes]{}; ///< the restitution pass's copy, if it can bounce
     std::uint8_t count[wide_lanes]{};             ///< its points (0: empty lane)
 };
+
+/// The surface motion of four manifolds, one per lane, in an array of its own beside the packs
+/// (WideContactSolver::set_surface_lane): only steps with surface motion fill and solve it.
+struct alignas(wide_alignment) WideSurfaceMotion : SurfaceMotionOver<Wide> {};
 
 /// What preparation needs of four manifolds, one per lane: filled lane by lane from the contacts,
 /// then prepared into a pack four lanes at a time (WideContactSolver::prepare_pack). A point past

@@ -8,26 +8,45 @@ namespace tamias2d {
 
 namespace {
 
+// Each kernel takes the packs' surface motion (DD46, DD47) or nullptr in a step without any:
+// the loops without it are those of a world without surface motion.
+
 TAMIAS_WIDE_KERNEL void warm_start_packs(WideContactConstraint* packs, std::size_t count,
-                                         SolverBody* bodies) {
-    wide::warm_start_packs<bridge::Model>(packs, count, bodies);
+                                         SolverBody* bodies, WideSurfaceMotion* surfaces) {
+    if (surfaces == nullptr)
+        wide::warm_start_packs<bridge::Model>(packs, count, bodies);
+    else
+        wide::warm_start_packs<bridge::Model, false, true>(packs, count, bodies, nullptr, surfaces);
 }
 
 TAMIAS_WIDE_KERNEL void solve_packs(WideContactConstraint* packs, std::size_t count,
                                     SolverBody* bodies, const ContactSolverSettings& settings,
-                                    bool use_bias) {
-    wide::solve_packs<bridge::Model>(packs, count, bodies, settings, use_bias);
+                                    bool use_bias, WideSurfaceMotion* surfaces) {
+    if (surfaces == nullptr)
+        wide::solve_packs<bridge::Model>(packs, count, bodies, settings, use_bias);
+    else
+        wide::solve_packs<bridge::Model, false, true>(packs, count, bodies, settings, use_bias,
+                                                      nullptr, surfaces);
 }
 
 TAMIAS_WIDE_KERNEL void warm_start_packs_apart(WideContactConstraint* packs, std::size_t count,
-                                               SolverBody* bodies, SolverBody* sink) {
-    wide::warm_start_packs<bridge::Model, true>(packs, count, bodies, sink);
+                                               SolverBody* bodies, SolverBody* sink,
+                                               WideSurfaceMotion* surfaces) {
+    if (surfaces == nullptr)
+        wide::warm_start_packs<bridge::Model, true>(packs, count, bodies, sink);
+    else
+        wide::warm_start_packs<bridge::Model, true, true>(packs, count, bodies, sink, surfaces);
 }
 
 TAMIAS_WIDE_KERNEL void solve_packs_apart(WideContactConstraint* packs, std::size_t count,
                                           SolverBody* bodies, const ContactSolverSettings& settings,
-                                          bool use_bias, SolverBody* sink) {
-    wide::solve_packs<bridge::Model, true>(packs, count, bodies, settings, use_bias, sink);
+                                          bool use_bias, SolverBody* sink,
+                                          WideSurfaceMotion* surfaces) {
+    if (surfaces == nullptr)
+        wide::solve_packs<bridge::Model, true>(packs, count, bodies, settings, use_bias, sink);
+    else
+        wide::solve_packs<bridge::Model, true, true>(packs, count, bodies, settings, use_bias, sink,
+                                                     surfaces);
 }
 
 /// Prepares the pack from its lanes' bodies (gathered by the caller). Inlined into the kernels
@@ -90,11 +109,15 @@ TAMIAS_WIDE_KERNEL void prepare_lanes(WideContactConstraint& w, const WideManifo
 /// in registers and cache, where a later warm_start pass reads it back from memory.
 TAMIAS_WIDE_KERNEL void prepare_and_warm_start_lanes(WideContactConstraint& w,
                                                      const WideManifoldInput& in,
-                                                     SolverBody* bodies) {
+                                                     SolverBody* bodies,
+                                                     WideSurfaceMotion* surface) {
     WideBody a = wide::gather(bodies, in.body_a);
     WideBody b = wide::gather(bodies, in.body_b);
     prepare_from(w, in, a, b);
-    iteration::warm_start<bridge::Model>(w, a, b);
+    if (surface == nullptr)
+        iteration::warm_start<bridge::Model>(w, a, b);
+    else
+        iteration::warm_start<bridge::Model>(w, a, b, surface);
     wide::scatter(bodies, w.body_a, a);
     wide::scatter(bodies, w.body_b, b);
 }
@@ -176,7 +199,7 @@ void WideContactSolver::prepare_pack(std::size_t i, const WideManifoldInput& in,
 void WideContactSolver::prepare_pack_and_warm_start(std::size_t i, const WideManifoldInput& in,
                                                     std::span<SolverBody> bodies) {
     prefetch_pack_after(i);
-    prepare_and_warm_start_lanes(packs_[i], in, bodies.data());
+    prepare_and_warm_start_lanes(packs_[i], in, bodies.data(), surface(i));
 }
 
 void WideContactSolver::prefetch_pack_after(std::size_t i) const {
@@ -189,24 +212,39 @@ void WideContactSolver::prefetch_pack_after(std::size_t i) const {
 }
 
 void WideContactSolver::warm_start(std::span<SolverBody> bodies) {
-    warm_start_packs(packs_.data(), packs_.size(), bodies.data());
+    warm_start_packs(packs_.data(), packs_.size(), bodies.data(), surface(0));
 }
 
 void WideContactSolver::solve(std::span<SolverBody> bodies, const ContactSolverSettings& settings,
                               bool use_bias) {
-    solve_packs(packs_.data(), packs_.size(), bodies.data(), settings, use_bias);
+    solve_packs(packs_.data(), packs_.size(), bodies.data(), settings, use_bias, surface(0));
 }
 
 void WideContactSolver::warm_start_run(std::size_t first, std::size_t count, std::uint32_t stream,
                                        std::span<SolverBody> bodies) {
-    warm_start_packs_apart(packs_.data() + first, count, bodies.data(), &sinks_[stream].body);
+    warm_start_packs_apart(packs_.data() + first, count, bodies.data(), &sinks_[stream].body,
+                           surface(first));
 }
 
 void WideContactSolver::solve_run(std::size_t first, std::size_t count, std::uint32_t stream,
                                   std::span<SolverBody> bodies,
                                   const ContactSolverSettings& settings, bool use_bias) {
     solve_packs_apart(packs_.data() + first, count, bodies.data(), settings, use_bias,
-                      &sinks_[stream].body);
+                      &sinks_[stream].body, surface(first));
+}
+
+void WideContactSolver::use_surfaces(bool on) {
+    with_surfaces_ = on;
+    if (on)
+        surfaces_.resize(packs_.size()); // never shrinks its capacity
+}
+
+void WideContactSolver::set_surface_lane(std::size_t i, int l, double tangent_speed,
+                                         double rolling_resistance, double rolling_impulse) {
+    WideSurfaceMotion& s = surfaces_[i];
+    s.tangent_speed[l] = tangent_speed;
+    s.rolling_resistance[l] = rolling_resistance;
+    s.rolling_impulse[l] = rolling_impulse;
 }
 
 namespace {
@@ -224,7 +262,13 @@ inline void copy_out(const WideContactConstraintPoint& q, int l, ContactConstrai
 
 void WideContactSolver::store(std::span<ContactImpulses> warm, std::span<ContactImpulses> totals,
                               std::span<ContactConstraint> bouncing, std::size_t begin,
-                              std::size_t end) const {
+                              std::size_t end, std::span<double> rolling) const {
+    if (with_surfaces_ && !rolling.empty()) { // \srs{DD46} the next step's warm start
+        for (std::size_t i = begin; i < end; ++i)
+            for (int l = 0; l < wide_lanes; ++l)
+                if (packs_[i].count[l] != 0)
+                    rolling[packs_[i].contact[l]] = surfaces_[i].rolling_impulse[l];
+    }
     // The packs name their contacts level by level, scattered: ask for the records four packs
     // ahead (dense arrays, mostly in cache even at 16k boxes).
     constexpr std::size_t ahead = 4;

@@ -70,8 +70,21 @@ class WideContactSolver {
     /// copies (by slot), whose normal totals the caller writes after that pass. Packs [begin, end):
     /// each contact and slot is written by one pack, so disjoint ranges may be stored on different
     /// threads.
+    /// With surface motion, the rolling impulses go into `rolling` (indexed like the contacts).
     void store(std::span<ContactImpulses> warm, std::span<ContactImpulses> totals,
-               std::span<ContactConstraint> bouncing, std::size_t begin, std::size_t end) const;
+               std::span<ContactConstraint> bouncing, std::size_t begin, std::size_t end,
+               std::span<double> rolling = {}) const;
+
+    /// DD46, DD47: whether the packs of this step have surface motion (after colour; off: the
+    /// solves are those of a world without any). On, every lane of every pack takes its values
+    /// from set_surface_lane before the pack is warm started.
+    void use_surfaces(bool on);
+    bool uses_surfaces() const { return with_surfaces_; }
+    /// Lane l of pack i: the target of its relative tangential velocity (DD47, m s^-1), its
+    /// rolling resistance length c l (DD46, m) and its rolling impulse to warm start from
+    /// (N m s).
+    void set_surface_lane(std::size_t i, int l, double tangent_speed, double rolling_resistance,
+                          double rolling_impulse);
 
     /// The clone the packs run with here: "x86-64-v4" or "avx2", or nullptr for the baseline
     /// (SSE2 on x86-64; also in unoptimised builds). The results are equal.
@@ -94,6 +107,14 @@ class WideContactSolver {
     };
     std::array<Sink, ConstraintGraph::max_streams> sinks_;
     LargeArray<WideContactConstraint> packs_;
+    /// Indexed like packs_ while with_surfaces_ (DD46, DD47): the steps without surface motion
+    /// neither fill nor read it.
+    LargeArray<WideSurfaceMotion> surfaces_;
+    bool with_surfaces_ = false;
+    /// The surface motion from pack i on, or nullptr in a step without any.
+    WideSurfaceMotion* surface(std::size_t i) {
+        return with_surfaces_ ? surfaces_.data() + i : nullptr;
+    }
 };
 
 } // namespace tamias2d

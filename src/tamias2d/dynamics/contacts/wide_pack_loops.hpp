@@ -110,40 +110,53 @@ inline void scatter(SolverBody* bodies, Lanes index, const WideBody& w,
     store_row(row(index[3]), r3);
 }
 
-template <class Model, bool apart = false>
+/// Pack i's surface motion for the iteration: surfaces[i] in a loop `with_surface`, else none
+/// (nullptr: the iteration without surface motion, operation for operation).
+template <bool with_surface> inline auto surface_of(WideSurfaceMotion* surfaces, std::size_t i) {
+    if constexpr (with_surface)
+        return &surfaces[i];
+    else
+        return nullptr;
+}
+
+template <class Model, bool apart = false, bool with_surface = false>
 void warm_start_packs(WideContactConstraint* packs, std::size_t count, SolverBody* bodies,
-                      SolverBody* sink = nullptr) {
+                      SolverBody* sink = nullptr, WideSurfaceMotion* surfaces = nullptr) {
     for (std::size_t i = 0; i < count; ++i) {
         WideContactConstraint& c = packs[i];
         WideBody a = gather(bodies, c.body_a);
         WideBody b = gather(bodies, c.body_b);
-        iteration::warm_start<Model>(c, a, b);
+        iteration::warm_start<Model>(c, a, b, surface_of<with_surface>(surfaces, i));
         scatter<apart>(bodies, c.body_a, a, sink);
         scatter<apart>(bodies, c.body_b, b, sink);
     }
 }
 
-template <bool use_bias, class Model, bool apart = false>
+template <bool use_bias, class Model, bool apart = false, bool with_surface = false>
 void solve_packs(WideContactConstraint* packs, std::size_t count, SolverBody* bodies,
-                 const ContactSolverSettings& settings, SolverBody* sink = nullptr) {
+                 const ContactSolverSettings& settings, SolverBody* sink = nullptr,
+                 WideSurfaceMotion* surfaces = nullptr) {
     const ContactSolverSettings st = settings; // a local copy: the body stores cannot touch it
     for (std::size_t i = 0; i < count; ++i) {
         WideContactConstraint& c = packs[i];
         WideBody a = gather(bodies, c.body_a);
         WideBody b = gather(bodies, c.body_b);
-        iteration::solve<use_bias, Model>(c, a, b, st);
+        iteration::solve<use_bias, Model>(c, a, b, st, surface_of<with_surface>(surfaces, i));
         scatter<apart>(bodies, c.body_a, a, sink);
         scatter<apart>(bodies, c.body_b, b, sink);
     }
 }
 
-template <class Model, bool apart = false>
+template <class Model, bool apart = false, bool with_surface = false>
 void solve_packs(WideContactConstraint* packs, std::size_t count, SolverBody* bodies,
-                 const ContactSolverSettings& settings, bool use_bias, SolverBody* sink = nullptr) {
+                 const ContactSolverSettings& settings, bool use_bias, SolverBody* sink = nullptr,
+                 WideSurfaceMotion* surfaces = nullptr) {
     if (use_bias)
-        solve_packs<true, Model, apart>(packs, count, bodies, settings, sink);
+        solve_packs<true, Model, apart, with_surface>(packs, count, bodies, settings, sink,
+                                                      surfaces);
     else
-        solve_packs<false, Model, apart>(packs, count, bodies, settings, sink);
+        solve_packs<false, Model, apart, with_surface>(packs, count, bodies, settings, sink,
+                                                       surfaces);
 }
 
 } // namespace tamias2d::wide
