@@ -1,6 +1,8 @@
 #include "tamias2d/dynamics/body_store.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <string>
 
 #include "tamias2d/dynamics/model_bridge.hpp"
@@ -357,6 +359,67 @@ void body_fields(IO& io, B& b, S& set, Z& sleep, bool& has_load) {
     io("disabled", sleep.disabled);
 }
 
+/// Whether a live body's record read from a snapshot is a state an API-made body can be in
+/// (validation.hpp's supported ranges, DCX_finite and DCX_range): the field of the first rule it
+/// breaks, or nullptr. A forged record outside them would start the steps from numbers they
+/// cannot hold, and turn into inf or NaN; each check is false for NaN.
+const char* unsupported_field(const Body& b, const BodySettings& set, const SleepState& sleep) {
+    namespace s = supported;
+    const auto within = [](double v, double most) { return std::abs(v) <= most; };
+    const auto within2 = [&](Vec2d v, double most) {
+        return within(v.x, most) && within(v.y, most);
+    };
+    const auto in_range = [](double v, double least, double most) {
+        return v >= least && v <= most;
+    };
+    const double unit = b.xf.q.c * b.xf.q.c + b.xf.q.s * b.xf.q.s;
+    if (!within2(b.xf.p, s::state_max) || !(std::abs(unit - 1.0) <= 1e-9))
+        return "xf";
+    if (!within(b.angle, s::state_max))
+        return "angle";
+    if (!within2(b.center, s::state_max))
+        return "center";
+    if (!within2(b.local_center, s::state_max))
+        return "local_center";
+    if (!within2(b.v, s::state_max))
+        return "v";
+    if (!within(b.w, s::state_max))
+        return "w";
+    if (!in_range(b.inv_mass, 0.0, 1.0 / s::mass_min))
+        return "inv_mass";
+    if (!in_range(b.inv_inertia, 0.0, 1.0 / s::inertia_min))
+        return "inv_inertia";
+    if (!within(b.gravity_scale, s::input_max))
+        return "gravity_scale";
+    if (!within2(b.force, s::input_max))
+        return "force";
+    if (!within(b.torque, s::input_max))
+        return "torque";
+    if (!within2(b.force_once, s::state_max))
+        return "force_once";
+    if (!within(b.torque_once, s::state_max))
+        return "torque_once";
+    if (!in_range(b.mass, 0.0, s::mass_max))
+        return "mass";
+    if (!in_range(b.inertia, 0.0, s::inertia_max))
+        return "inertia";
+    if (set.mass_override && !in_range(*set.mass_override, 0.0, s::mass_max))
+        return "mass_override";
+    if (set.inertia_override && !in_range(*set.inertia_override, 0.0, s::inertia_max))
+        return "inertia_override";
+    if (!in_range(set.linear_damping, 0.0, s::input_max))
+        return "linear_damping";
+    if (!in_range(set.angular_damping, 0.0, s::input_max))
+        return "angular_damping";
+    if (set.center_override && !within2(*set.center_override, s::state_max))
+        return "center_override";
+    if (set.sleep_threshold && !in_range(*set.sleep_threshold, 0.0, s::input_max))
+        return "sleep_threshold";
+    if (!(sleep.sleep_time >= 0.0 && sleep.sleep_time < std::numeric_limits<double>::infinity()))
+        return "sleep_time";
+    return nullptr;
+}
+
 } // namespace
 
 void BodyStore::write(SnapshotWriter& out) const {
@@ -388,6 +451,11 @@ void BodyStore::read(SnapshotReader& in, memory::vector<std::uint32_t>& had_load
                    "first_shape", "a dead slot has no shapes, load or wake", at);
         in.require(alive(i) || !sleep_states[i].disabled, "disabled", "a dead slot is not disabled",
                    at);
+        if (alive(i))
+            if (const char* field = unsupported_field(b, settings[i], sleep_states[i]))
+                in.fail_at(at, field,
+                           "must be finite and within the supported state (DCX_finite, "
+                           "DCX_range)");
         if (has_load)
             had_load.push_back(i);
         disabled_bodies += sleep_states[i].disabled ? 1 : 0;

@@ -331,8 +331,13 @@ void JointStore::read(SnapshotReader& in, const BodyStore& bodies) {
         Joint& j = joints[i];
         j = Joint{};
         joint_fields(in, j);
-        if (!alive(i))
+        // A destroyed joint's solver bodies are 0 (destroy), and the steps pass over it by them
+        // (solved): another value would index the solver's bodies with a forged number.
+        if (!alive(i)) {
+            in.require(j.step.solver_a == 0 && j.step.solver_b == 0, "step.solver_a",
+                       "must be 0 for a destroyed joint (it is never solved)", at);
             continue;
+        }
         in.require(j.body_a < bodies.size() && j.body_b < bodies.size() && bodies.alive(j.body_a) &&
                        bodies.alive(j.body_b),
                    "body_a", "a live joint's bodies must live", at);
