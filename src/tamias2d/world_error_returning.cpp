@@ -75,8 +75,7 @@ Result<double> World::try_friction(ShapeId shape) const noexcept {
     return detail::capture([&] { return friction(shape); });
 }
 
-Result<void> World::try_set_rolling_resistance(ShapeId shape,
-                                               double rolling_resistance) noexcept {
+Result<void> World::try_set_rolling_resistance(ShapeId shape, double rolling_resistance) noexcept {
     return detail::capture([&] { return set_rolling_resistance(shape, rolling_resistance); });
 }
 
