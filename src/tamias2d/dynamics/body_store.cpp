@@ -359,12 +359,17 @@ void body_fields(IO& io, B& b, S& set, Z& sleep, bool& has_load) {
     io("disabled", sleep.disabled);
 }
 
-/// Whether a live body's record read from a snapshot is a state an API-made body can be in
-/// (validation.hpp's supported ranges, DCX_finite and DCX_range): the field of the first rule it
-/// breaks, or nullptr. A forged record outside them would start the steps from numbers they
-/// cannot hold, and turn into inf or NaN; each check is false for NaN.
+/// Whether a live body's record read from a snapshot is one a world can hold: the field of the
+/// first rule it breaks, or nullptr. Every number finite (DCX_finite); those set only from
+/// validated inputs (the persistent loads, the scales, the mass properties, the settings)
+/// within the supported ranges (validation.hpp, DCX_range); the state a simulation grows into
+/// (pose, velocities, summed one-step loads) finite only, as a world may hold it beyond those
+/// (the step then refuses to start from it). A forged record breaking one would start the
+/// steps from numbers they cannot hold and turn into inf or NaN. Each check is false for NaN.
 const char* unsupported_field(const Body& b, const BodySettings& set, const SleepState& sleep) {
     namespace s = supported;
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    constexpr double finite_max = std::numeric_limits<double>::max();
     const auto within = [](double v, double most) { return std::abs(v) <= most; };
     const auto within2 = [&](Vec2d v, double most) {
         return within(v.x, most) && within(v.y, most);
@@ -372,19 +377,26 @@ const char* unsupported_field(const Body& b, const BodySettings& set, const Slee
     const auto in_range = [](double v, double least, double most) {
         return v >= least && v <= most;
     };
+    // A rotation is (cos, sin) of the angle: unit to far better than this.
     const double unit = b.xf.q.c * b.xf.q.c + b.xf.q.s * b.xf.q.s;
-    if (!within2(b.xf.p, s::state_max) || !(std::abs(unit - 1.0) <= 1e-9))
+    if (!within2(b.xf.p, finite_max) || !(std::abs(unit - 1.0) <= 1e-6))
         return "xf";
-    if (!within(b.angle, s::state_max))
+    if (!within(b.angle, finite_max))
         return "angle";
-    if (!within2(b.center, s::state_max))
+    if (!within2(b.center, finite_max))
         return "center";
+    if (!within2(b.v, finite_max))
+        return "v";
+    if (!within(b.w, finite_max))
+        return "w";
+    if (!within2(b.force_once, finite_max))
+        return "force_once";
+    if (!within(b.torque_once, finite_max))
+        return "torque_once";
+    if (!(sleep.sleep_time >= 0.0 && sleep.sleep_time < inf))
+        return "sleep_time";
     if (!within2(b.local_center, s::state_max))
         return "local_center";
-    if (!within2(b.v, s::state_max))
-        return "v";
-    if (!within(b.w, s::state_max))
-        return "w";
     if (!in_range(b.inv_mass, 0.0, 1.0 / s::mass_min))
         return "inv_mass";
     if (!in_range(b.inv_inertia, 0.0, 1.0 / s::inertia_min))
@@ -395,10 +407,6 @@ const char* unsupported_field(const Body& b, const BodySettings& set, const Slee
         return "force";
     if (!within(b.torque, s::input_max))
         return "torque";
-    if (!within2(b.force_once, s::state_max))
-        return "force_once";
-    if (!within(b.torque_once, s::state_max))
-        return "torque_once";
     if (!in_range(b.mass, 0.0, s::mass_max))
         return "mass";
     if (!in_range(b.inertia, 0.0, s::inertia_max))
@@ -415,8 +423,6 @@ const char* unsupported_field(const Body& b, const BodySettings& set, const Slee
         return "center_override";
     if (set.sleep_threshold && !in_range(*set.sleep_threshold, 0.0, s::input_max))
         return "sleep_threshold";
-    if (!(sleep.sleep_time >= 0.0 && sleep.sleep_time < std::numeric_limits<double>::infinity()))
-        return "sleep_time";
     return nullptr;
 }
 
@@ -454,8 +460,8 @@ void BodyStore::read(SnapshotReader& in, memory::vector<std::uint32_t>& had_load
         if (alive(i))
             if (const char* field = unsupported_field(b, settings[i], sleep_states[i]))
                 in.fail_at(at, field,
-                           "must be finite and within the supported state (DCX_finite, "
-                           "DCX_range)");
+                           "must be finite, and within the supported ranges where only inputs set "
+                           "it (DCX_finite, DCX_range)");
         if (has_load)
             had_load.push_back(i);
         disabled_bodies += sleep_states[i].disabled ? 1 : 0;
