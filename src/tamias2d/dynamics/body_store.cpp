@@ -361,11 +361,12 @@ void body_fields(IO& io, B& b, S& set, Z& sleep, bool& has_load) {
 
 /// Whether a live body's record read from a snapshot is one a world can hold: the field of the
 /// first rule it breaks, or nullptr. Every number finite (DCX_finite); those set only from
-/// validated inputs (the persistent loads, the scales, the mass properties, the settings)
-/// within the supported ranges (validation.hpp, DCX_range); the state a simulation grows into
-/// (pose, velocities, summed one-step loads) finite only, as a world may hold it beyond those
-/// (the step then refuses to start from it). A forged record breaking one would start the
-/// steps from numbers they cannot hold and turn into inf or NaN. Each check is false for NaN.
+/// validated inputs (the persistent loads, the scales, the settings) within the supported
+/// ranges (validation.hpp, DCX_range); the mass properties as update_mass computes them; the
+/// state a simulation grows into (pose, velocities, summed one-step loads) finite only, as a
+/// world may hold it beyond those (the step then refuses to start from it). A forged record
+/// breaking one would start the steps from numbers they cannot hold and turn into inf or NaN.
+/// Each check is false for NaN.
 const char* unsupported_field(const Body& b, const BodySettings& set, const SleepState& sleep) {
     namespace s = supported;
     constexpr double inf = std::numeric_limits<double>::infinity();
@@ -397,20 +398,24 @@ const char* unsupported_field(const Body& b, const BodySettings& set, const Slee
         return "sleep_time";
     if (!within2(b.local_center, s::state_max))
         return "local_center";
-    if (!in_range(b.inv_mass, 0.0, 1.0 / s::mass_min))
-        return "inv_mass";
-    if (!in_range(b.inv_inertia, 0.0, 1.0 / s::inertia_min))
-        return "inv_inertia";
     if (!within(b.gravity_scale, s::input_max))
         return "gravity_scale";
     if (!within2(b.force, s::input_max))
         return "force";
     if (!within(b.torque, s::input_max))
         return "torque";
-    if (!in_range(b.mass, 0.0, s::mass_max))
+    // The mass properties as update_mass leaves them (a snapshot is written settled): none
+    // unless dynamic; then a positive mass, and the inverses its own.
+    const bool dynamic = b.type == BodyType::dynamic;
+    if (dynamic ? !(b.mass > 0.0 && b.mass <= finite_max) : b.mass != 0.0)
         return "mass";
-    if (!in_range(b.inertia, 0.0, s::inertia_max))
+    if (dynamic ? !(b.inertia >= 0.0 && b.inertia <= finite_max) : b.inertia != 0.0)
         return "inertia";
+    if (b.inv_mass != (dynamic ? 1.0 / b.mass : 0.0))
+        return "inv_mass";
+    if (b.inv_inertia !=
+        (dynamic && !set.fixed_rotation && b.inertia > 0.0 ? 1.0 / b.inertia : 0.0))
+        return "inv_inertia";
     if (set.mass_override && !in_range(*set.mass_override, 0.0, s::mass_max))
         return "mass_override";
     if (set.inertia_override && !in_range(*set.inertia_override, 0.0, s::inertia_max))
