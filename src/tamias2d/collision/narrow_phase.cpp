@@ -270,16 +270,19 @@ void polygon_circle_into(const Collider& a, const Collider& b, const CollideInpu
     FeatureId id{static_cast<std::uint8_t>(edge), face_feature, 0, vertex_feature};
     const bool behind_v1 = sep > 0.0 && dot(c - v1, v2 - v1) < 0.0;
     const bool beyond_v2 = sep > 0.0 && dot(c - v2, v1 - v2) < 0.0;
-    if (behind_v1 || beyond_v2) {
+    const int vi = behind_v1 ? edge : next;
+    const Vec2d d = c - a.vertex(vi);
+    // In the vertex region dist >= sep > 0 exactly, but the squares of a distance below about
+    // 1e-154 m underflow to 0: the centre is then on the vertex, where the face's plane serves
+    // (d / 0 would be NaN).
+    const double dist = behind_v1 || beyond_v2 ? length(d) : 0.0;
+    if (dist > 0.0) {
         // Vertex region: the closest point of A is the vertex itself.
-        const int vi = behind_v1 ? edge : next;
         on_a = a.vertex(vi);
-        const Vec2d d = c - on_a;
-        const double dist = length(d);
         separation = dist - r;
         if (!(separation < in.margin))
             return set_empty(m);
-        n = Vec2d{d.x / dist, d.y / dist}; // dist >= sep > 0
+        n = Vec2d{d.x / dist, d.y / dist};
         id = {static_cast<std::uint8_t>(vi), vertex_feature, 0, vertex_feature};
     } else {
         // Face region, or the centre inside A: the nearest face's plane.
