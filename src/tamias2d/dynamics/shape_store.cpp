@@ -313,10 +313,16 @@ void ShapeStore::read(SnapshotReader& in) {
         in.fail("broad_phase",
                 "must hold one proxy per live shape (" + decimal(std::uint64_t(live)) + ")");
     // DD46, DD47: the steps solve surface motion as the world written did (a shape may have
-    // had it and have it no more)
+    // had it and have it no more); a world with a live shape that has it had it since that
+    // shape was made or set, so a snapshot saying otherwise is refused rather than mended (it
+    // would not write back as the same bytes).
+    const bool needed = surface_motion;
+    const std::size_t flag_at = in.offset();
     bool had = false;
     in("surface_motion", had);
-    surface_motion = surface_motion || had;
+    in.require(had || !needed, "surface_motion", "must be 1 when a live shape has surface motion",
+               flag_at);
+    surface_motion = had;
 }
 
 // --- shape_control ---
