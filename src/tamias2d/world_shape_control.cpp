@@ -46,6 +46,19 @@ Shape& shape_of(World::Impl& w, ShapeId id) {
     return sh;
 }
 
+/// \srs{DD46, DD47} Sets a shape's surface-motion field (Material::rolling_resistance or
+/// tangent_speed) to a validated value. The contacts read it from the shapes at each step, so
+/// nothing else is updated; the world solves surface motion from then on.
+void set_surface_motion(World::Impl& w, ShapeId id, double Material::*field, double value) {
+    const Shape& sh = shape_of(w, id);
+    Material& m = w.shapes.defs[id.index].material;
+    if (m.*field == value)
+        return;
+    m.*field = value;
+    w.shapes.note_surface_motion(m);
+    wake_shape(w, sh.body);
+}
+
 /// Replaces a shape's geometry by a validated one (set_circle, set_capsule, ...).
 void reshape(World::Impl& w, ShapeId id, const Geometry& geometry, const char* call) {
     const Shape& sh = shape_of(w, id);
@@ -140,16 +153,9 @@ double World::restitution(ShapeId id) const {
 }
 
 void World::set_rolling_resistance(ShapeId id, double rolling_resistance) {
-    Impl& w = *impl_;
-    const Shape& sh = shape_of(w, id);
+    shape_of(*impl_, id); // the handle before the value, as every setter
     validate_rolling_resistance("rolling_resistance", rolling_resistance);
-    Material& m = w.shapes.defs[id.index].material;
-    if (m.rolling_resistance == rolling_resistance)
-        return;
-    // \srs{DD46} the contacts read it from the shapes at each step: nothing else to update
-    m.rolling_resistance = rolling_resistance;
-    w.shapes.note_surface_motion(m);
-    wake_shape(w, sh.body);
+    set_surface_motion(*impl_, id, &Material::rolling_resistance, rolling_resistance);
 }
 
 double World::rolling_resistance(ShapeId id) const {
@@ -158,16 +164,9 @@ double World::rolling_resistance(ShapeId id) const {
 }
 
 void World::set_tangent_speed(ShapeId id, double tangent_speed) {
-    Impl& w = *impl_;
-    const Shape& sh = shape_of(w, id);
+    shape_of(*impl_, id); // the handle before the value, as every setter
     validate_tangent_speed("tangent_speed", tangent_speed);
-    Material& m = w.shapes.defs[id.index].material;
-    if (m.tangent_speed == tangent_speed)
-        return;
-    // \srs{DD47} the contacts read it from the shapes at each step: nothing else to update
-    m.tangent_speed = tangent_speed;
-    w.shapes.note_surface_motion(m);
-    wake_shape(w, sh.body);
+    set_surface_motion(*impl_, id, &Material::tangent_speed, tangent_speed);
 }
 
 double World::tangent_speed(ShapeId id) const {
