@@ -427,7 +427,7 @@ class TAMIAS2D_EXPORT World {
 
 #endif
     /// The version of the snapshot format this library writes and reads.
-    static constexpr std::uint32_t snapshot_format_version = 2;
+    static constexpr std::uint32_t snapshot_format_version = 3;
 #if TAMIAS2D_EXCEPTIONS
     /// The world's state as bytes (a versioned header with an XXH64 checksum, then
     /// little-endian fields): for save games, rollback and bug reports. Call between steps.

@@ -261,69 +261,54 @@ void StepSolver::integrate_positions(double h, std::size_t begin, std::size_t en
     }
 }
 
-namespace {
-
-/// Whether a joint takes part in this step: not between two immovable bodies (both asleep, or
-/// asleep and static: solver body 0 on both sides). A destroyed joint's solver bodies are both
-/// 0 (JointStore::destroy), and so are a filter joint's (prepare_joints skips it).
-bool solved(const Joint& j) {
-    return j.step.solver_a != 0 || j.step.solver_b != 0;
-}
-
-} // namespace
-
-void StepSolver::prepare_joints(JointStore& joints, const BodyStore& bodies) {
+void StepSolver::prepare_joints(const JointStore& joints, const BodyStore& bodies) {
     // The moving bodies the joints hold, each once, with its angle at the step's start.
     for (const JointedBody& jb : jointed_) // the last step's marks
         listed_[jb.solver] = 0;
     jointed_.clear();
+    sims_.clear();
     if (joints.live() == 0)
         return;
+    // One rotation per solver body, then one per immovable side after them (solver body 0
+    // stands for every immovable body, each with its own angle). Reserved for every side, so
+    // that the records' pointers into it stay valid while it grows.
     joint_rotations_.resize(solver_bodies_.size());
+    joint_rotations_.reserve(solver_bodies_.size() + 2 * std::size_t(joints.live()));
     listed_.resize(solver_bodies_.size()); // all false: the marks are cleared above
     for (std::uint32_t i = 0; i < joints.joints.size(); ++i) {
-        Joint& j = joints.joints[i];
-        if (!joints.alive(i) || j.type == JointType::filter) // (no constraint: solver bodies 0)
+        const Joint& j = joints.joints[i];
+        if (!joints.alive(i) || j.type == JointType::filter) // (no constraint to solve)
             continue;
-        prepare_joint(j, bodies, solver_index_);
         // A joint none of whose bodies is dynamic, or one holding a disabled body, is not
-        // solved (World::set_body_type, set_enabled): both sides immovable this step.
+        // solved (World::set_body_type, set_enabled): both sides immovable this step. Nor is
+        // one between two immovable bodies (both asleep, or asleep and static).
         if ((bodies.bodies[j.body_a].type != BodyType::dynamic &&
              bodies.bodies[j.body_b].type != BodyType::dynamic) ||
-            bodies.disabled(j.body_a) || bodies.disabled(j.body_b))
-            j.step.solver_a = j.step.solver_b = 0;
-        // An immovable side keeps its rotation all step (solver body 0 never turns); a moving
-        // side's is its body's, turned once per body below rather than once per joint.
-        if (j.step.solver_a == 0)
-            j.step.q_a = Rot::from_angle(j.step.angle_a + solver_bodies_[0].dq);
-        if (j.step.solver_b == 0)
-            j.step.q_b = Rot::from_angle(j.step.angle_b + solver_bodies_[0].dq);
-        if (!solved(j))
+            bodies.disabled(j.body_a) || bodies.disabled(j.body_b) ||
+            (solver_index_[j.body_a] == 0 && solver_index_[j.body_b] == 0))
             continue;
-        for (const auto& [k, angle] :
-             {std::pair{j.step.solver_a, j.step.angle_a}, {j.step.solver_b, j.step.angle_b}}) {
-            if (k != 0 && !listed_[k]) {
+        JointSim& s = sims_.emplace_back(prepare_joint(j, i, bodies, solver_index_));
+        // A moving side's rotation is its body's, turned once per body (turn_joints) rather
+        // than once per joint; an immovable side keeps its rotation all step.
+        for (const auto& [k, angle, q] : {std::tuple{s.solver_a, s.angle_a, &s.q_a},
+                                          std::tuple{s.solver_b, s.angle_b, &s.q_b}}) {
+            if (k == 0) {
+                *q = &joint_rotations_.emplace_back(Rot::from_angle(angle + solver_bodies_[0].dq));
+                continue;
+            }
+            *q = &joint_rotations_[k];
+            if (!listed_[k]) {
                 listed_[k] = 1;
                 jointed_.push_back({k, angle});
             }
         }
     }
-    turn_joints(joints.joints);
+    turn_joints();
 }
 
-void StepSolver::turn_joints(memory::vector<Joint>& joints) {
-    if (jointed_.empty())
-        return;
+void StepSolver::turn_joints() {
     for (const JointedBody& jb : jointed_)
         joint_rotations_[jb.solver] = Rot::from_angle(jb.angle + solver_bodies_[jb.solver].dq);
-    for (Joint& j : joints) {
-        if (!solved(j))
-            continue;
-        if (j.step.solver_a != 0)
-            j.step.q_a = joint_rotations_[j.step.solver_a];
-        if (j.step.solver_b != 0)
-            j.step.q_b = joint_rotations_[j.step.solver_b];
-    }
 }
 
 // The manifolds are prepared straight into their packs, four lanes at once, in solve order (a
@@ -497,22 +482,20 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
     // Warm starting off (Box2D v3's enableWarmStarting): the step starts from zero impulses,
     // and no substep starts from the impulses of the one before.
     const bool warm = def.enable_warm_starting;
-    if (!warm) {
+    if (!warm)
         contacts.forget_warm_starts();
-        joint_store.forget_warm_starts();
-    }
-    // IM6: the joints' soft bias, capped like the contacts' at a quarter of the substep rate.
+    // IM6: the joints' soft bias, capped like the contacts' at a quarter of the substep rate;
+    // DD37: a joint with a tuning of its own uses it in place of the world's.
     const Softness joint_softness = make_joint_softness(
         capped_joint_frequency(def.joint_hertz, n, dt), def.joint_damping_ratio, h);
-    // DD37: a joint with a tuning of its own uses it in place of the world's.
-    for (Joint& j : joints) {
-        if (j.tuned && solved(j))
-            j.step.tuning =
-                make_tuned_joint_softness(j.tuning_hertz, j.tuning_damping_ratio, n, dt, h);
+    for (JointSim& s : sims_) {
+        const Joint& j = joints[s.joint];
+        s.softness =
+            s.tuned ? make_tuned_joint_softness(j.tuning_hertz, j.tuning_damping_ratio, n, dt, h)
+                    : joint_softness;
+        if (!warm) // (the joints forget theirs once the step is accepted)
+            forget_impulses(s.step);
     }
-    const auto softness_of = [&joint_softness](const Joint& j) -> const Softness& {
-        return j.tuned ? j.step.tuning : joint_softness;
-    };
     // The touching manifolds in creation order, as the colouring sees them; those that can
     // bounce get a slot for the restitution pass's copy, also in creation order.
     const std::uint32_t bounce_count = list_edges(contacts, tasks);
@@ -540,10 +523,8 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
     // be warm started as soon as it is prepared (below), as warm_start would after it. The
     // joints come before the contacts in every stage, as the later substeps have them.
     integrate_velocities(h, tasks);
-    for (const Joint& j : joints) {
-        if (warm && solved(j))
-            warm_start_joint(j, solver_bodies_);
-    }
+    if (warm)
+        warm_start_joints(joints);
     const std::size_t pack_count = wide_solver_.order().size();
     constexpr std::size_t pack_block = 32; // ~10 us of lane filling and preparation
     if (streams > 1 || (tasks.parallel() && pack_count > pack_block)) {
@@ -573,34 +554,42 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
     for (int sub = 0; sub < n; ++sub) {
         if (sub > 0) { // the first substep's were done with the preparation
             integrate_velocities(h, tasks);
-            for (const Joint& j : joints) {
-                if (warm && solved(j))
-                    warm_start_joint(j, solver_bodies_);
-            }
+            if (warm)
+                warm_start_joints(joints);
             if (warm)
                 contact_pass(tasks, streams, nullptr, false);
         }
-        for (Joint& j : joints) {
-            if (solved(j))
-                solve_joint(j, solver_bodies_, softness_of(j), h, true);
-        }
+        solve_joints(joints, h, true);
         contact_pass(tasks, streams, &st, true);
         constrain_velocities(def.maximum_linear_speed, tasks);
         integrate_positions(h, tasks);
-        turn_joints(joints);
-        for (Joint& j : joints) {
-            if (solved(j))
-                solve_joint(j, solver_bodies_, softness_of(j), h, false);
-        }
+        turn_joints();
+        solve_joints(joints, h, false);
         contact_pass(tasks, streams, &st, false);
     }
     // A joint's solve can diverge where no input rule foresaw it (conflicting joints on light
     // bodies): checked before any impulse is stored, so that the world can refuse the step.
     if (find_divergence())
         return;
+    // The step is accepted: the joints take its impulses (without warm starting, the joints
+    // it did not solve start the next from none too).
+    if (!warm)
+        joint_store.forget_warm_starts();
+    for (const JointSim& s : sims_)
+        joints[s.joint].step = s.step;
     store_impulses(contacts, tasks, bounce_count, st);
     // The velocities the step leaves keep the locks and the limit too (DD39, DD40).
     constrain_velocities(def.maximum_linear_speed, tasks);
+}
+
+void StepSolver::warm_start_joints(const memory::vector<Joint>& joints) {
+    for (const JointSim& s : sims_)
+        warm_start_joint(s, joints[s.joint], solver_bodies_);
+}
+
+void StepSolver::solve_joints(const memory::vector<Joint>& joints, double h, bool use_bias) {
+    for (JointSim& s : sims_)
+        solve_joint(s, joints[s.joint], solver_bodies_, h, use_bias);
 }
 
 bool StepSolver::find_divergence() {

@@ -15,6 +15,7 @@
 #include "tamias2d/dynamics/contacts/wide_contact_solver.hpp"
 #include "tamias2d/dynamics/continuous.hpp"
 #include "tamias2d/dynamics/joints/joint.hpp"
+#include "tamias2d/dynamics/joints/joint_sim.hpp"
 #include "tamias2d/dynamics/solver_body.hpp"
 #include "tamias2d/dynamics/step_context.hpp"
 #include "tamias2d/handles.hpp"
@@ -52,8 +53,8 @@ class StepSolver {
     /// the substep h): one per awake non-static body, 0 standing for every immovable one.
     /// With more than one worker, in parallel blocks of bodies, to the serial loop's results.
     void prepare_bodies(const BodyStore& bodies, const StepContext& step);
-    /// The joints' solver bodies and pins at the step's start (after prepare_bodies).
-    void prepare_joints(JointStore& joints, const BodyStore& bodies);
+    /// The solved joints' records (JointSim) at the step's start (after prepare_bodies).
+    void prepare_joints(const JointStore& joints, const BodyStore& bodies);
     /// The substeps of the soft step over dt and the restitution pass; the contacts' impulses
     /// are stored back for the warm start and the report, the joints keep theirs.
     /// With joints, a solve whose velocities or displacements turn non-finite (the joints'
@@ -121,8 +122,12 @@ class StepSolver {
     /// it writes.
     void store_impulses(ContactManager& contacts, const StepTasks& tasks,
                         std::uint32_t bounce_count, const ContactSolverSettings& st);
-    /// The joints' body rotations after a position half (Joint::q_a, q_b).
-    void turn_joints(memory::vector<Joint>& joints);
+    /// The jointed bodies' rotations after a position half (the records' q_a, q_b).
+    void turn_joints();
+    /// The joints' warm start, then an iteration (soft with use_bias, else the relax), each
+    /// over the solved joints' records in joint order.
+    void warm_start_joints(const memory::vector<Joint>& joints);
+    void solve_joints(const memory::vector<Joint>& joints, double h, bool use_bias);
     /// DD39 and DD40 before a position half (and at the step's end): the locked velocity
     /// components zeroed, then a speed above `max_speed` slowed to it. Nothing without a lock
     /// and with an infinite limit.
@@ -162,7 +167,9 @@ class StepSolver {
         double angle;
     };
     memory::vector<JointedBody> jointed_;
-    memory::vector<Rot> joint_rotations_; ///< per solver body, for the jointed ones
+    /// Per solver body, for the jointed ones; then one per immovable side of a solved joint.
+    memory::vector<Rot> joint_rotations_;
+    memory::vector<JointSim> sims_; ///< the solved joints' records, in joint order
     /// Per solver body: in jointed_. Kept until the next preparation, so that write_back finds
     /// the jointed bodies' last rotations.
     memory::vector<std::uint8_t> listed_;

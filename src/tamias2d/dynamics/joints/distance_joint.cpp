@@ -28,18 +28,19 @@ Joint make_joint(const DistanceJointDef& def, const Body& a, const Body& b) {
     return j;
 }
 
-void warm_start_distance(const Joint& j, std::span<SolverBody> bodies) {
-    SolverBody& a = bodies[j.step.solver_a];
-    SolverBody& b = bodies[j.step.solver_b];
-    const Vec2d r_a = anchor_a(j);
-    const Vec2d r_b = anchor_b(j);
-    bridge::apply_axial_impulse(a, bridge::moment_arm(r_a, j.step.axis), b,
-                                bridge::moment_arm(r_b, j.step.axis), j.step.axis,
-                                distance_axial_impulse(j));
+void warm_start_distance(const JointSim& s, const Joint& j, std::span<SolverBody> bodies) {
+    SolverBody& a = bodies[s.solver_a];
+    SolverBody& b = bodies[s.solver_b];
+    const Vec2d r_a = anchor_a(s);
+    const Vec2d r_b = anchor_b(s);
+    bridge::apply_axial_impulse(a, bridge::moment_arm(r_a, s.step.axis), b,
+                                bridge::moment_arm(r_b, s.step.axis), s.step.axis,
+                                distance_axial_impulse(j, s.step));
 }
 
-void solve_distance(Joint& j, std::span<SolverBody> bodies, const Softness& rigid, double h,
+void solve_distance(JointSim& s, const Joint& j, std::span<SolverBody> bodies, double h,
                     bool use_bias) {
+    const Softness& rigid = s.softness;
     const bool spring = j.hertz > 0.0;
     // A rigid rod holds the length unless the motor drives it (DD35: the rod gives way to the
     // motor, a winch). Limits bound a free length's travel (a rigid rod has none to bound); a
@@ -48,17 +49,17 @@ void solve_distance(Joint& j, std::span<SolverBody> bodies, const Softness& rigi
     const bool limits = (spring || motor) && j.enable_limit;
     if (spring && !use_bias && !limits && !motor)
         return;
-    SolverBody& a = bodies[j.step.solver_a];
-    SolverBody& b = bodies[j.step.solver_b];
-    const Vec2d r_a = anchor_a(j);
-    const Vec2d r_b = anchor_b(j);
+    SolverBody& a = bodies[s.solver_a];
+    SolverBody& b = bodies[s.solver_b];
+    const Vec2d r_a = anchor_a(s);
+    const Vec2d r_b = anchor_b(s);
     // The anchors' separation now: the centres have moved by dp since the step's start.
     double length = 0.0;
-    bridge::distance_axis(j.step.center_offset + (b.dp - a.dp) + (r_b - r_a), length, j.step.axis);
-    const double arm_a = bridge::moment_arm(r_a, j.step.axis),
-                 arm_b = bridge::moment_arm(r_b, j.step.axis);
+    bridge::distance_axis(s.center_offset + (b.dp - a.dp) + (r_b - r_a), length, s.step.axis);
+    const double arm_a = bridge::moment_arm(r_a, s.step.axis),
+                 arm_b = bridge::moment_arm(r_b, s.step.axis);
     if (spring ? use_bias : !motor) {
-        double rhs = bridge::axial_velocity_error(a, arm_a, b, arm_b, j.step.axis);
+        double rhs = bridge::axial_velocity_error(a, arm_a, b, arm_b, s.step.axis);
         double mass_scale = 1.0, impulse_scale = 0.0;
         if (use_bias) {
             const Softness soft = spring ? make_joint_softness(j.hertz, j.damping_ratio, h) : rigid;
@@ -68,20 +69,20 @@ void solve_distance(Joint& j, std::span<SolverBody> bodies, const Softness& rigi
             impulse_scale = soft.impulse_scale;
         }
         const double lambda = bridge::axial_impulse(a, arm_a, b, arm_b, rhs, mass_scale,
-                                                    impulse_scale, j.step.axial_impulse);
-        j.step.axial_impulse += lambda;
-        bridge::apply_axial_impulse(a, arm_a, b, arm_b, j.step.axis, lambda);
+                                                    impulse_scale, s.step.axial_impulse);
+        s.step.axial_impulse += lambda;
+        bridge::apply_axial_impulse(a, arm_a, b, arm_b, s.step.axis, lambda);
     }
     if (motor) {
-        const double rate = bridge::axial_velocity_error(a, arm_a, b, arm_b, j.step.axis);
+        const double rate = bridge::axial_velocity_error(a, arm_a, b, arm_b, s.step.axis);
         const double updated = bridge::distance_motor_update(
-            a, arm_a, b, arm_b, rate, j.motor_speed, j.max_motor, h, j.step.motor_impulse);
-        bridge::apply_axial_impulse(a, arm_a, b, arm_b, j.step.axis,
-                                    updated - j.step.motor_impulse);
-        j.step.motor_impulse = updated;
+            a, arm_a, b, arm_b, rate, j.motor_speed, j.max_motor, h, s.step.motor_impulse);
+        bridge::apply_axial_impulse(a, arm_a, b, arm_b, s.step.axis,
+                                    updated - s.step.motor_impulse);
+        s.step.motor_impulse = updated;
     }
     if (limits)
-        solve_axial_limits(j, a, b, arm_a, arm_b, j.step.axis, length, rigid, h, use_bias);
+        solve_axial_limits(s, j, a, b, arm_a, arm_b, s.step.axis, length, h, use_bias);
 }
 
 } // namespace tamias2d

@@ -8,6 +8,7 @@
 
 #include "tamias2d/dynamics/body.hpp"
 #include "tamias2d/dynamics/joints/joint.hpp"
+#include "tamias2d/dynamics/joints/joint_sim.hpp"
 #include "tamias2d/dynamics/softness.hpp"
 #include "tamias2d/dynamics/solver_body.hpp"
 #include "tamias2d/joint_def.hpp"
@@ -18,9 +19,9 @@ namespace tamias2d {
 /// are now.
 Joint make_joint(const DistanceJointDef& def, const Body& a, const Body& b);
 
-void warm_start_distance(const Joint& j, std::span<SolverBody> bodies);
+void warm_start_distance(const JointSim& s, const Joint& j, std::span<SolverBody> bodies);
 /// \srs{IM6} One iteration (joint_solver.hpp's solve_joint).
-void solve_distance(Joint& j, std::span<SolverBody> bodies, const Softness& rigid, double h,
+void solve_distance(JointSim& s, const Joint& j, std::span<SolverBody> bodies, double h,
                     bool use_bias);
 
 } // namespace tamias2d

@@ -8,7 +8,6 @@
 #include <limits>
 #include <type_traits>
 
-#include "tamias2d/dynamics/softness.hpp"
 #include "tamias2d/joint_kind.hpp"
 #include "tamias2d/math/vec2d.hpp"
 #include "tamias2d/user_data.hpp"
@@ -18,9 +17,9 @@ namespace tamias2d {
 using JointType = JointKind; // the engine's name for the public kinds (joint_kind.hpp)
 
 /// The part of a joint that a step writes: the impulses (the warm start of the next substep and
-/// the reaction force) and the step's preparation. The World keeps a copy of this part alone to
-/// refuse a diverged step (the rest of a Joint is its definition, which only the World's
-/// setters change).
+/// step, and the reaction force) and the axis of the last solve. A step solves a copy of it in
+/// the joint's JointSim and writes the copy back only once the step is accepted, so that a
+/// refused step leaves the joint as it was.
 struct JointStepState {
     /// N s: the impulse accumulated over the last substep's iterations, the warm start of the
     /// next; over the substep length it is the reaction force (IM6).
@@ -34,40 +33,45 @@ struct JointStepState {
     double spring_impulse = 0.0;  ///< N s or N m s: a spring's along the axis or about z
     double angular_impulse = 0.0; ///< N m s: the angle held (prismatic, weld, motor joint)
     double perp_impulse = 0.0;    ///< N s: the line held (prismatic, wheel)
-
-    // Set by the step's preparation (joint_solver.hpp).
-    std::uint32_t solver_a = 0, solver_b = 0; ///< solver bodies (0: immovable this step)
-    Vec2d frame_a{}, frame_b{};               ///< m, the pin from each centre, body frame
-    double angle_a = 0.0, angle_b = 0.0;      ///< rad, the bodies' angles at the step's start
-    Vec2d center_offset{};                    ///< m, p_B - p_A at the step's start
-    Vec2d center_b{};                         ///< m, p_B at the step's start
-    /// The bodies' rotations now, angle at the step's start plus the turn dq made since, as the
-    /// write-back will place them: the step solver updates them after each position half, one
-    /// cosine and sine per body rather than per joint and pass.
-    Rot q_a{}, q_b{};
-    /// The joint's own soft bias for this step (Joint::tuned), set by the step solver.
-    Softness tuning{};
 };
 
-struct Joint {
+/// The impulses forgotten (warm starting off, or a body's joints cleared): the axis is kept.
+inline void forget_impulses(JointStepState& st) {
+    st.linear_impulse = {};
+    st.axial_impulse = st.motor_impulse = st.lower_impulse = st.upper_impulse = 0.0;
+    st.spring_impulse = st.angular_impulse = st.perp_impulse = 0.0;
+}
+
+/// Laid out for the step: the first line holds what every step reads of every joint (the
+/// kind, the switches, the bodies, the anchors, the break thresholds), the next two the
+/// impulses a step starts from and the reference angle (JointSim takes them), the rest the
+/// definition a kind reads only for a part that is enabled.
+struct alignas(64) Joint {
     JointType type = JointType::revolute;
     bool collide_connected = false;
+    bool enable_spring = false, enable_limit = false, enable_motor = false;
+    /// The joint's own soft bias (DD37: tuning_hertz, tuning_damping_ratio) in place of the
+    /// world's.
+    bool tuned = false;
     std::uint32_t body_a = 0, body_b = 0;     ///< world body indices
     Vec2d local_anchor_a{}, local_anchor_b{}; ///< m, the pin in each body's frame (from origin)
-    double break_force = std::numeric_limits<double>::infinity(); ///< N
+    /// N and N m: above these the joint breaks (DD36); infinite: never.
+    double break_force = std::numeric_limits<double>::infinity();
+    double break_torque = std::numeric_limits<double>::infinity();
+
+    JointStepState step; ///< what an accepted step wrote
+    // The reference angle phi_B - phi_A at creation (DD22, DD23, DD24; a motor joint's
+    // angular offset).
+    double reference_angle = 0.0;
+
     /// N and N m: above these the joint is reported (World::joint_events); infinite: never.
     double force_threshold = std::numeric_limits<double>::infinity();
     double torque_threshold = std::numeric_limits<double>::infinity();
     // A spring (distance, target, revolute, prismatic, wheel; a weld's linear part): hertz 0
     // is rigid (distance, weld) or no spring. A distance joint's rest length.
     double length = 0.0, hertz = 0.0, damping_ratio = 0.0;
-    bool enable_spring = false;
     // Prismatic and wheel joints: the axis in A's frame.
     Vec2d local_axis{1.0, 0.0};
-    // The reference angle phi_B - phi_A at creation (DD22, DD23, DD24; a motor joint's
-    // angular offset).
-    double reference_angle = 0.0;
-    bool enable_limit = false, enable_motor = false;
     /// Limits: rad (revolute), m (prismatic and wheel translation, distance length).
     double lower_limit = 0.0, upper_limit = 0.0;
     /// Motor: rad s^-1 and N m (revolute, wheel), m s^-1 and N (prismatic).
@@ -80,33 +84,30 @@ struct Joint {
     double max_force = std::numeric_limits<double>::infinity();
     double max_torque = 0.0, correction_factor = 0.0;
     // Set after creation (World's joint_control calls): the value a revolute, prismatic or
-    // wheel joint's spring pulls the angle (rad) or translation (m) to; the torque (N m) above
-    // which the joint breaks (DD36); the joint's own soft bias (DD37) in place of the world's.
+    // wheel joint's spring pulls the angle (rad) or translation (m) to, and the tuning.
     double spring_target = 0.0;
-    double break_torque = std::numeric_limits<double>::infinity();
-    bool tuned = false;
     double tuning_hertz = 0.0, tuning_damping_ratio = 0.0;
 
     UserData user_data = 0; ///< the game's own value: never hashed, never read
-
-    JointStepState step; ///< what a step writes (copied by value to refuse a diverged step)
 };
 
 static_assert(std::is_standard_layout_v<Joint> && std::is_trivially_copyable_v<Joint>);
+static_assert(offsetof(Joint, step) == 64 && offsetof(Joint, reference_angle) < 192,
+              "the break thresholds in the first line, the impulses in the next two");
 
 /// The angular impulse (N m s) the joint's angular parts (motor, limits, spring, held angle)
-/// applied to body B in the last substep: over the substep's length, its reaction torque.
-inline double reaction_angular_impulse(const Joint& j) {
-    switch (j.type) {
+/// applied to body B in the last substep (`st`: the joint's step state or its copy in a step):
+/// over the substep's length, its reaction torque.
+inline double reaction_angular_impulse(JointType type, const JointStepState& st) {
+    switch (type) {
     case JointType::revolute:
-        return j.step.motor_impulse + j.step.lower_impulse - j.step.upper_impulse +
-               j.step.spring_impulse;
+        return st.motor_impulse + st.lower_impulse - st.upper_impulse + st.spring_impulse;
     case JointType::prismatic:
     case JointType::weld:
     case JointType::motor:
-        return j.step.angular_impulse;
+        return st.angular_impulse;
     case JointType::wheel:
-        return j.step.motor_impulse;
+        return st.motor_impulse;
     case JointType::distance:
     case JointType::target:
     case JointType::filter:
@@ -117,9 +118,16 @@ inline double reaction_angular_impulse(const Joint& j) {
 
 /// A distance joint's impulse along its axis in the last substep (N s): the rod's or spring's,
 /// the limits', and the motor's while it is enabled (DD35).
+inline double distance_axial_impulse(const Joint& j, const JointStepState& st) {
+    const double held = st.axial_impulse + st.lower_impulse - st.upper_impulse;
+    return j.enable_motor ? held + st.motor_impulse : held;
+}
+
+inline double reaction_angular_impulse(const Joint& j) {
+    return reaction_angular_impulse(j.type, j.step);
+}
 inline double distance_axial_impulse(const Joint& j) {
-    const double held = j.step.axial_impulse + j.step.lower_impulse - j.step.upper_impulse;
-    return j.enable_motor ? held + j.step.motor_impulse : held;
+    return distance_axial_impulse(j, j.step);
 }
 
 /// The impulse (N s) the joint applied to body B in the last substep: over the substep's

@@ -14,65 +14,76 @@
 
 namespace tamias2d {
 
-void prepare_joint(Joint& j, const BodyStore& store,
-                   const memory::vector<std::uint32_t>& solver_index) {
+JointSim prepare_joint(const Joint& j, std::uint32_t index, const BodyStore& store,
+                       const memory::vector<std::uint32_t>& solver_index) {
     const Body& a = store.bodies[j.body_a];
     const Body& b = store.bodies[j.body_b];
-    j.step.solver_a = solver_index[j.body_a];
-    j.step.solver_b = solver_index[j.body_b];
-    j.step.frame_a = j.local_anchor_a - a.local_center;
-    j.step.frame_b = j.local_anchor_b - b.local_center;
-    j.step.angle_a = a.angle;
-    j.step.angle_b = b.angle;
-    j.step.center_offset = b.center - a.center;
-    j.step.center_b = b.center;
+    JointSim s;
+    s.solver_a = solver_index[j.body_a];
+    s.solver_b = solver_index[j.body_b];
+    s.joint = index;
+    s.type = j.type;
+    s.spring = j.enable_spring;
+    s.motor = j.enable_motor;
+    s.limit = j.enable_limit;
+    s.tuned = j.tuned;
+    s.frame_a = j.local_anchor_a - a.local_center;
+    s.frame_b = j.local_anchor_b - b.local_center;
+    s.center_offset = b.center - a.center;
+    s.reference_angle = j.reference_angle;
+    s.angle_a = a.angle;
+    s.angle_b = b.angle;
+    s.step = j.step;
+    s.center_b = b.center;
+    return s;
 }
 
-LineFrame line_frame(const Joint& j, const SolverBody& a, const SolverBody& b) {
-    const Vec2d r_a = anchor_a(j);
-    const Vec2d r_b = anchor_b(j);
-    const Vec2d axis = rotate(j.step.q_a, j.local_axis);
+LineFrame line_frame(const JointSim& s, const Joint& j, const SolverBody& a, const SolverBody& b) {
+    const Vec2d r_a = anchor_a(s);
+    const Vec2d r_b = anchor_b(s);
+    const Vec2d axis = rotate(*s.q_a, j.local_axis);
     // The anchors' separation now: the centres have moved by dp since the step's start.
-    const Vec2d d = j.step.center_offset + (b.dp - a.dp) + (r_b - r_a);
+    const Vec2d d = s.center_offset + (b.dp - a.dp) + (r_b - r_a);
     return {r_a, r_b, axis, bridge::line(d, r_a, r_b, axis)};
 }
 
-void solve_pin(Joint& j, SolverBody& a, SolverBody& b, const Softness& softness, bool use_bias) {
-    const Vec2d r_a = anchor_a(j);
-    const Vec2d r_b = anchor_b(j);
+void solve_pin(JointSim& s, SolverBody& a, SolverBody& b, const Softness& softness, bool use_bias) {
+    const Vec2d r_a = anchor_a(s);
+    const Vec2d r_b = anchor_b(s);
     Vec2d rhs = bridge::pin_velocity_error(a, r_a, b, r_b);
     double mass_scale = 1.0, impulse_scale = 0.0;
     if (use_bias) {
         // The pins' separation now: the centres have moved by dp since the step's start.
-        const Vec2d c = bridge::pin_position_error(j.step.center_offset + (b.dp - a.dp), r_a, r_b);
+        const Vec2d c = bridge::pin_position_error(s.center_offset + (b.dp - a.dp), r_a, r_b);
         rhs = bridge::biased_error(rhs, softness.bias_rate, c);
         mass_scale = softness.mass_scale;
         impulse_scale = softness.impulse_scale;
     }
     const Vec2d P =
-        bridge::pin_impulse(a, r_a, b, r_b, rhs, mass_scale, impulse_scale, j.step.linear_impulse);
-    j.step.linear_impulse += P;
+        bridge::pin_impulse(a, r_a, b, r_b, rhs, mass_scale, impulse_scale, s.step.linear_impulse);
+    s.step.linear_impulse += P;
     bridge::apply_pin_impulse(a, r_a, b, r_b, P);
 }
 
-void solve_angular_motor(Joint& j, SolverBody& a, SolverBody& b, double h) {
+void solve_angular_motor(JointSim& s, const Joint& j, SolverBody& a, SolverBody& b, double h) {
     const double lambda = bridge::angular_impulse(a, b, bridge::joint_speed(a, b) - j.motor_speed,
-                                                  1.0, 0.0, j.step.motor_impulse);
+                                                  1.0, 0.0, s.step.motor_impulse);
     const double updated = bridge::clamp_angular_impulse(
-        j.step.motor_impulse + lambda, bridge::torque_impulse_bound(j.max_motor, h));
-    bridge::apply_angular_impulse(a, b, updated - j.step.motor_impulse);
-    j.step.motor_impulse = updated;
+        s.step.motor_impulse + lambda, bridge::torque_impulse_bound(j.max_motor, h));
+    bridge::apply_angular_impulse(a, b, updated - s.step.motor_impulse);
+    s.step.motor_impulse = updated;
 }
 
-void solve_angular_limits(Joint& j, SolverBody& a, SolverBody& b, const Softness& softness,
-                          double h, bool use_bias) {
-    const double angle = current_joint_angle(j, a, b);
+void solve_angular_limits(JointSim& s, const Joint& j, SolverBody& a, SolverBody& b, double h,
+                          bool use_bias) {
+    const Softness& softness = s.softness;
+    const double angle = current_joint_angle(s, a, b);
     for (const bool lower : {true, false}) {
         const double c = lower ? angle - j.lower_limit : j.upper_limit - angle;
         const bridge::LimitTarget t = bridge::limit_target<units::Angle>(c, softness, h, use_bias);
         // The upper bound's impulse is taken positive against the turn, then applied negated.
         const double speed = lower ? bridge::joint_speed(a, b) : -bridge::joint_speed(a, b);
-        double& accumulated = lower ? j.step.lower_impulse : j.step.upper_impulse;
+        double& accumulated = lower ? s.step.lower_impulse : s.step.upper_impulse;
         const double lambda = bridge::angular_impulse(a, b, speed - t.velocity, t.mass_scale,
                                                       t.impulse_scale, accumulated);
         const double updated = std::max(accumulated + lambda, 0.0);
@@ -82,13 +93,14 @@ void solve_angular_limits(Joint& j, SolverBody& a, SolverBody& b, const Softness
     }
 }
 
-void solve_axial_limits(Joint& j, SolverBody& a, SolverBody& b, double arm_a, double arm_b, Vec2d n,
-                        double value, const Softness& softness, double h, bool use_bias) {
+void solve_axial_limits(JointSim& s, const Joint& j, SolverBody& a, SolverBody& b, double arm_a,
+                        double arm_b, Vec2d n, double value, double h, bool use_bias) {
+    const Softness& softness = s.softness;
     for (const bool lower : {true, false}) {
         const double c = lower ? value - j.lower_limit : j.upper_limit - value;
         const bridge::LimitTarget t = bridge::limit_target<units::Length>(c, softness, h, use_bias);
         const double v = bridge::axial_velocity_error(a, arm_a, b, arm_b, n);
-        double& accumulated = lower ? j.step.lower_impulse : j.step.upper_impulse;
+        double& accumulated = lower ? s.step.lower_impulse : s.step.upper_impulse;
         const double lambda =
             bridge::axial_impulse(a, arm_a, b, arm_b, (lower ? v : -v) - t.velocity, t.mass_scale,
                                   t.impulse_scale, accumulated);
@@ -99,56 +111,56 @@ void solve_axial_limits(Joint& j, SolverBody& a, SolverBody& b, double arm_a, do
     }
 }
 
-void solve_axial_spring(Joint& j, SolverBody& a, SolverBody& b, double arm_a, double arm_b, Vec2d n,
-                        double value, double h) {
+void solve_axial_spring(JointSim& s, const Joint& j, SolverBody& a, SolverBody& b, double arm_a,
+                        double arm_b, Vec2d n, double value, double h) {
     const Softness soft = make_joint_softness(j.hertz, j.damping_ratio, h);
     const double rhs =
         bridge::biased_error(bridge::axial_velocity_error(a, arm_a, b, arm_b, n), soft.bias_rate,
                              bridge::axial_spring_error(value, j.spring_target));
     const double lambda = bridge::axial_impulse(a, arm_a, b, arm_b, rhs, soft.mass_scale,
-                                                soft.impulse_scale, j.step.spring_impulse);
-    j.step.spring_impulse += lambda;
+                                                soft.impulse_scale, s.step.spring_impulse);
+    s.step.spring_impulse += lambda;
     bridge::apply_axial_impulse(a, arm_a, b, arm_b, n, lambda);
 }
 
-void warm_start_joint(const Joint& j, std::span<SolverBody> bodies) {
-    switch (j.type) {
+void warm_start_joint(const JointSim& s, const Joint& j, std::span<SolverBody> bodies) {
+    switch (s.type) {
     case JointType::revolute:
-        return warm_start_revolute(j, bodies);
+        return warm_start_revolute(s, bodies);
     case JointType::distance:
-        return warm_start_distance(j, bodies);
+        return warm_start_distance(s, j, bodies);
     case JointType::target:
-        return warm_start_target(j, bodies);
+        return warm_start_target(s, bodies);
     case JointType::prismatic:
-        return warm_start_prismatic(j, bodies);
+        return warm_start_prismatic(s, j, bodies);
     case JointType::weld:
-        return warm_start_weld(j, bodies);
+        return warm_start_weld(s, bodies);
     case JointType::wheel:
-        return warm_start_wheel(j, bodies);
+        return warm_start_wheel(s, j, bodies);
     case JointType::motor:
-        return warm_start_motor(j, bodies);
+        return warm_start_motor(s, bodies);
     case JointType::filter: // no constraint (StepSolver::prepare_joints leaves it out)
         return;
     }
 }
 
-void solve_joint(Joint& j, std::span<SolverBody> bodies, const Softness& rigid, double h,
+void solve_joint(JointSim& s, const Joint& j, std::span<SolverBody> bodies, double h,
                  bool use_bias) {
-    switch (j.type) {
+    switch (s.type) {
     case JointType::revolute:
-        return solve_revolute(j, bodies, rigid, h, use_bias);
+        return solve_revolute(s, j, bodies, h, use_bias);
     case JointType::distance:
-        return solve_distance(j, bodies, rigid, h, use_bias);
+        return solve_distance(s, j, bodies, h, use_bias);
     case JointType::target:
-        return solve_target(j, bodies, h, use_bias);
+        return solve_target(s, j, bodies, h, use_bias);
     case JointType::prismatic:
-        return solve_prismatic(j, bodies, rigid, h, use_bias);
+        return solve_prismatic(s, j, bodies, h, use_bias);
     case JointType::weld:
-        return solve_weld(j, bodies, rigid, h, use_bias);
+        return solve_weld(s, j, bodies, h, use_bias);
     case JointType::wheel:
-        return solve_wheel(j, bodies, rigid, h, use_bias);
+        return solve_wheel(s, j, bodies, h, use_bias);
     case JointType::motor:
-        return solve_motor(j, bodies, h, use_bias);
+        return solve_motor(s, j, bodies, h, use_bias);
     case JointType::filter:
         return;
     }

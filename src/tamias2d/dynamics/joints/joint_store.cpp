@@ -1,6 +1,7 @@
 #include "tamias2d/dynamics/joints/joint_store.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <string>
 #include <utility>
 
@@ -53,6 +54,21 @@ double joint_translation_now(const Joint& j, const BodyStore& bodies) {
         .translation;
 }
 
+namespace {
+
+/// Whether both anchors' levers are within their limit (validate_levers' test, without
+/// naming anything).
+bool levers_fit(const BodyStore& bodies, const Joint& j) {
+    if (j.type == JointType::filter)
+        return true;
+    const Body& a = bodies.bodies[j.body_a];
+    const Body& b = bodies.bodies[j.body_b];
+    return joint_lever_fits(j.local_anchor_a - a.local_center, a.inv_mass, a.inv_inertia) &&
+           joint_lever_fits(j.local_anchor_b - b.local_center, b.inv_mass, b.inv_inertia);
+}
+
+} // namespace
+
 void validate_levers(const BodyStore& bodies, const Joint& j, const std::string& at) {
     if (j.type == JointType::filter)
         return; // no anchor, no lever
@@ -103,7 +119,6 @@ void JointStore::destroy(std::uint32_t i) {
         auto& list = by_body_[body];
         list.erase(std::find(list.begin(), list.end(), i));
     }
-    j.step.solver_a = j.step.solver_b = 0;
     slots.release(i);
 }
 
@@ -120,7 +135,6 @@ void JointStore::reserve(std::size_t n, std::size_t bodies) {
     slots.reserve(n);
     joints.reserve(n);
     broken.reserve(n);
-    step_before_.reserve(n);
     sleep_before_.reserve(bodies);
     // The lists as many bodies as are hinted will have, each with room for two joints, kept
     // aside until create() lengthens by_body_ (its length is what snapshots hold).
@@ -151,23 +165,18 @@ bool JointStore::filters(std::uint32_t a, std::uint32_t b) const {
 
 void JointStore::check_levers(const BodyStore& bodies) const {
     for (std::uint32_t k = 0; k < joints.size(); ++k) {
-        if (alive(k))
+        if (alive(k) && !levers_fit(bodies, joints[k])) // (the name is made only to refuse)
             validate_levers(bodies, joints[k], "joint[" + std::to_string(k) + "].");
     }
 }
 
 void JointStore::guard_step(const BodyStore& bodies, bool sleeping) {
     inv_h_before_ = inv_h;
-    step_before_.resize(joints.size());
-    for (std::size_t k = 0; k < joints.size(); ++k)
-        step_before_[k] = joints[k].step;
     if (sleeping)
         sleep_before_.assign(bodies.sleep_states.begin(), bodies.sleep_states.end());
 }
 
 void JointStore::refuse_step(std::uint32_t i, BodyStore& bodies, bool sleeping) {
-    for (std::size_t k = 0; k < step_before_.size(); ++k)
-        joints[k].step = step_before_[k];
     inv_h = inv_h_before_;
     if (sleeping)
         std::copy(sleep_before_.begin(), sleep_before_.end(), bodies.sleep_states.begin());
@@ -180,8 +189,10 @@ void JointStore::refuse_step(std::uint32_t i, BodyStore& bodies, bool sleeping) 
 void JointStore::break_joints(BodyStore& bodies, ShapeStore& shapes) {
     for (std::uint32_t i = 0; i < joints.size(); ++i) {
         const Joint& j = joints[i];
-        // \srs{DD36} The force's or the torque's threshold crossed.
-        if (!alive(i) ||
+        // \srs{DD36} The force's or the torque's threshold crossed. (No reading can exceed an
+        // infinite threshold: such a joint's reaction is not computed.)
+        constexpr double never = std::numeric_limits<double>::infinity();
+        if (!alive(i) || (j.break_force == never && j.break_torque == never) ||
             !bridge::joint_breaks(
                 bridge::reaction_force(length(reaction_impulse(j)), inv_h), j.break_force,
                 bridge::reaction_torque(reaction_angular_impulse(j), inv_h), j.break_torque))
@@ -284,19 +295,6 @@ template <class IO, class J> void joint_fields(IO& io, J& j) {
     io("step.spring_impulse", st.spring_impulse);
     io("step.angular_impulse", st.angular_impulse);
     io("step.perp_impulse", st.perp_impulse);
-    io("step.solver_a", st.solver_a);
-    io("step.solver_b", st.solver_b);
-    io("step.frame_a", st.frame_a);
-    io("step.frame_b", st.frame_b);
-    io("step.angle_a", st.angle_a);
-    io("step.angle_b", st.angle_b);
-    io("step.center_offset", st.center_offset);
-    io("step.center_b", st.center_b);
-    io("step.q_a", st.q_a);
-    io("step.q_b", st.q_b);
-    io("step.tuning.bias_rate", st.tuning.bias_rate);
-    io("step.tuning.mass_scale", st.tuning.mass_scale);
-    io("step.tuning.impulse_scale", st.tuning.impulse_scale);
 }
 
 } // namespace
@@ -331,19 +329,11 @@ void JointStore::read(SnapshotReader& in, const BodyStore& bodies) {
         Joint& j = joints[i];
         j = Joint{};
         joint_fields(in, j);
-        // A destroyed joint's solver bodies are 0 (destroy), and the steps pass over it by them
-        // (solved): another value would index the solver's bodies with a forged number.
-        if (!alive(i)) {
-            in.require(j.step.solver_a == 0 && j.step.solver_b == 0, "step.solver_a",
-                       "must be 0 for a destroyed joint (it is never solved)", at);
+        if (!alive(i))
             continue;
-        }
         in.require(j.body_a < bodies.size() && j.body_b < bodies.size() && bodies.alive(j.body_a) &&
                        bodies.alive(j.body_b),
                    "body_a", "a live joint's bodies must live", at);
-        // A filter joint is never prepared: its solver bodies stay 0 (no constraint to solve).
-        in.require(j.type != JointType::filter || (j.step.solver_a == 0 && j.step.solver_b == 0),
-                   "step.solver_a", "must be 0 for a filter joint (it is never solved)", at);
     }
     in.in(nullptr);
     // Each live joint once in its body_a's list and once in its body_b's (twice in one list
@@ -421,22 +411,15 @@ void JointStore::wake_joined(std::uint32_t i, BodyStore& bodies) const {
 
 void JointStore::clear_impulses(std::uint32_t i) {
     for (const std::uint32_t k : of_body(i)) {
-        JointStepState& st = joints[k].step;
-        st.linear_impulse = {};
-        st.axial_impulse = st.motor_impulse = st.lower_impulse = st.upper_impulse = 0.0;
-        st.spring_impulse = st.angular_impulse = st.perp_impulse = 0.0;
+        forget_impulses(joints[k].step);
     }
 }
 
 // --- definitions ---
 
 void JointStore::forget_warm_starts() {
-    for (Joint& j : joints) {
-        JointStepState& st = j.step;
-        st.linear_impulse = {};
-        st.axial_impulse = st.motor_impulse = st.lower_impulse = st.upper_impulse = 0.0;
-        st.spring_impulse = st.angular_impulse = st.perp_impulse = 0.0;
-    }
+    for (Joint& j : joints)
+        forget_impulses(j.step);
 }
 
 } // namespace tamias2d

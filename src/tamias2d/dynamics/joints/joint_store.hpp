@@ -72,8 +72,7 @@ class JointStore {
 
     /// A slot for a joint whose fields (bodies, anchors, options) are set; returns its index.
     std::uint32_t create(const Joint& joint);
-    /// Frees joint i's slot; its solver bodies are cleared, so that the step, which reads the
-    /// joints' array whole, solves it no more (StepSolver's solved).
+    /// Frees joint i's slot: the step's preparation passes over a slot that holds no joint.
     void destroy(std::uint32_t i);
     /// Destroys joint i and wakes its bodies. A joint that kept its bodies from colliding
     /// (DD27) no longer does: the shapes of one of its bodies (B, or A when B is static) are
@@ -89,9 +88,9 @@ class JointStore {
     void check_levers(const BodyStore& bodies) const;
 
     /// Before a step's solve, with joints: keeps what the step changes and a refused step
-    /// must give back (each joint's step state, the sleep states the islands may wake, the
-    /// substep rate the reaction forces are read with). The vectors are reused: no allocation
-    /// in a steady state.
+    /// must give back (the sleep states the islands may wake, the substep rate the reaction
+    /// forces are read with; the joints' impulses are written only once a step is accepted,
+    /// StepSolver::solve). The vector is reused: no allocation in a steady state.
     void guard_step(const BodyStore& bodies, bool sleeping);
     /// The solve diverged at body i (StepSolver::diverged): gives back what
     /// guard_step kept and refuses the step naming the body (SolverDivergence). Nothing was
@@ -144,10 +143,7 @@ class JointStore {
     memory::vector<memory::vector<std::uint32_t>> by_body_; ///< per body index: its joints
     /// Empty lists with room for two joints (reserve), taken by create() as by_body_ grows.
     memory::vector<memory::vector<std::uint32_t>> spare_lists_;
-    // What guard_step keeps: the part of each joint a step writes (the step state alone: whole
-    // joints, twice the bytes, cost an eighth of a 20 000-joint grid's step), the sleep states
-    // and the substep rate.
-    memory::vector<JointStepState> step_before_;
+    // What guard_step keeps: the sleep states and the substep rate.
     memory::vector<SleepState> sleep_before_;
     double inv_h_before_ = 0.0;
 };

@@ -24,34 +24,35 @@ Joint make_joint(const MotorJointDef& def, const Body&, const Body&) {
     return j;
 }
 
-void warm_start_motor(const Joint& j, std::span<SolverBody> bodies) {
-    SolverBody& a = bodies[j.step.solver_a];
-    SolverBody& b = bodies[j.step.solver_b];
-    bridge::apply_angular_impulse(a, b, j.step.angular_impulse);
-    bridge::apply_pin_impulse(a, anchor_a(j), b, anchor_b(j), j.step.linear_impulse);
+void warm_start_motor(const JointSim& s, std::span<SolverBody> bodies) {
+    SolverBody& a = bodies[s.solver_a];
+    SolverBody& b = bodies[s.solver_b];
+    bridge::apply_angular_impulse(a, b, s.step.angular_impulse);
+    bridge::apply_pin_impulse(a, anchor_a(s), b, anchor_b(s), s.step.linear_impulse);
 }
 
-void solve_motor(Joint& j, std::span<SolverBody> bodies, double h, bool use_bias) {
+void solve_motor(JointSim& s, const Joint& j, std::span<SolverBody> bodies, double h,
+                 bool use_bias) {
     if (!use_bias)
         return;
-    SolverBody& a = bodies[j.step.solver_a];
-    SolverBody& b = bodies[j.step.solver_b];
+    SolverBody& a = bodies[s.solver_a];
+    SolverBody& b = bodies[s.solver_b];
     // DD26: each error asks for the velocity that removes the fraction `correction_factor` of
     // it per substep; the accumulated impulses are bounded by the largest torque and force.
     const double rate = bridge::correction_rate(j.correction_factor, h);
     const double angular =
-        bridge::motor_angular_update(a, b, bridge::joint_speed(a, b), current_joint_angle(j, a, b),
-                                     rate, j.max_torque, h, j.step.angular_impulse);
-    bridge::apply_angular_impulse(a, b, angular - j.step.angular_impulse);
-    j.step.angular_impulse = angular;
+        bridge::motor_angular_update(a, b, bridge::joint_speed(a, b), current_joint_angle(s, a, b),
+                                     rate, j.max_torque, h, s.step.angular_impulse);
+    bridge::apply_angular_impulse(a, b, angular - s.step.angular_impulse);
+    s.step.angular_impulse = angular;
 
-    const Vec2d r_a = anchor_a(j);
-    const Vec2d r_b = anchor_b(j);
-    const Vec2d c = bridge::pin_position_error(j.step.center_offset + (b.dp - a.dp), r_a, r_b);
-    const Vec2d old = j.step.linear_impulse;
-    j.step.linear_impulse = bridge::motor_linear_update(
+    const Vec2d r_a = anchor_a(s);
+    const Vec2d r_b = anchor_b(s);
+    const Vec2d c = bridge::pin_position_error(s.center_offset + (b.dp - a.dp), r_a, r_b);
+    const Vec2d old = s.step.linear_impulse;
+    s.step.linear_impulse = bridge::motor_linear_update(
         a, r_a, b, r_b, bridge::pin_velocity_error(a, r_a, b, r_b), c, rate, j.max_force, h, old);
-    bridge::apply_pin_impulse(a, r_a, b, r_b, j.step.linear_impulse - old);
+    bridge::apply_pin_impulse(a, r_a, b, r_b, s.step.linear_impulse - old);
 }
 
 } // namespace tamias2d

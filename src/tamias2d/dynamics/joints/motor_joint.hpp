@@ -6,6 +6,7 @@
 
 #include "tamias2d/dynamics/body.hpp"
 #include "tamias2d/dynamics/joints/joint.hpp"
+#include "tamias2d/dynamics/joints/joint_sim.hpp"
 #include "tamias2d/dynamics/solver_body.hpp"
 #include "tamias2d/joint_def.hpp"
 
@@ -16,8 +17,9 @@ namespace tamias2d {
 Joint make_joint(const MotorJointDef& def, const Body& a, const Body& b);
 
 /// Re-applies the impulses of the previous substep (they carry the solution forward).
-void warm_start_motor(const Joint& j, std::span<SolverBody> bodies);
+void warm_start_motor(const JointSim& s, std::span<SolverBody> bodies);
 /// \srs{IM6} One iteration (DD26), in the soft solve only: the relax would brake the drive.
-void solve_motor(Joint& j, std::span<SolverBody> bodies, double h, bool use_bias);
+void solve_motor(JointSim& s, const Joint& j, std::span<SolverBody> bodies, double h,
+                 bool use_bias);
 
 } // namespace tamias2d

@@ -23,33 +23,33 @@ Joint make_joint(const RevoluteJointDef& def, const Body& a, const Body& b) {
     return j;
 }
 
-void warm_start_revolute(const Joint& j, std::span<SolverBody> bodies) {
-    SolverBody& a = bodies[j.step.solver_a];
-    SolverBody& b = bodies[j.step.solver_b];
-    bridge::apply_angular_impulse(a, b, reaction_angular_impulse(j));
-    bridge::apply_pin_impulse(a, anchor_a(j), b, anchor_b(j), j.step.linear_impulse);
+void warm_start_revolute(const JointSim& s, std::span<SolverBody> bodies) {
+    SolverBody& a = bodies[s.solver_a];
+    SolverBody& b = bodies[s.solver_b];
+    bridge::apply_angular_impulse(a, b, reaction_angular_impulse(s.type, s.step));
+    bridge::apply_pin_impulse(a, anchor_a(s), b, anchor_b(s), s.step.linear_impulse);
 }
 
-void solve_revolute(Joint& j, std::span<SolverBody> bodies, const Softness& softness, double h,
+void solve_revolute(JointSim& s, const Joint& j, std::span<SolverBody> bodies, double h,
                     bool use_bias) {
-    SolverBody& a = bodies[j.step.solver_a];
-    SolverBody& b = bodies[j.step.solver_b];
-    if (j.enable_spring && use_bias) {
+    SolverBody& a = bodies[s.solver_a];
+    SolverBody& b = bodies[s.solver_b];
+    if (s.spring && use_bias) {
         // DD22's spring: the joint angle pulled to its target with the spring's own softness.
         const Softness soft = make_joint_softness(j.hertz, j.damping_ratio, h);
         const double rhs = bridge::biased_angular_error(
             bridge::joint_speed(a, b), soft.bias_rate,
-            bridge::angular_spring_error(current_joint_angle(j, a, b), j.spring_target));
+            bridge::angular_spring_error(current_joint_angle(s, a, b), j.spring_target));
         const double lambda = bridge::angular_impulse(a, b, rhs, soft.mass_scale,
-                                                      soft.impulse_scale, j.step.spring_impulse);
-        j.step.spring_impulse += lambda;
+                                                      soft.impulse_scale, s.step.spring_impulse);
+        s.step.spring_impulse += lambda;
         bridge::apply_angular_impulse(a, b, lambda);
     }
-    if (j.enable_motor)
-        solve_angular_motor(j, a, b, h);
-    if (j.enable_limit)
-        solve_angular_limits(j, a, b, softness, h, use_bias);
-    solve_pin(j, a, b, softness, use_bias);
+    if (s.motor)
+        solve_angular_motor(s, j, a, b, h);
+    if (s.limit)
+        solve_angular_limits(s, j, a, b, h, use_bias);
+    solve_pin(s, a, b, s.softness, use_bias);
 }
 
 } // namespace tamias2d

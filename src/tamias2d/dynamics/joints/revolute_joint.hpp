@@ -8,6 +8,7 @@
 
 #include "tamias2d/dynamics/body.hpp"
 #include "tamias2d/dynamics/joints/joint.hpp"
+#include "tamias2d/dynamics/joints/joint_sim.hpp"
 #include "tamias2d/dynamics/softness.hpp"
 #include "tamias2d/dynamics/solver_body.hpp"
 #include "tamias2d/joint_def.hpp"
@@ -19,11 +20,11 @@ namespace tamias2d {
 Joint make_joint(const RevoluteJointDef& def, const Body& a, const Body& b);
 
 /// Re-applies the impulses of the previous substep (they carry the solution forward).
-void warm_start_revolute(const Joint& j, std::span<SolverBody> bodies);
+void warm_start_revolute(const JointSim& s, std::span<SolverBody> bodies);
 /// \srs{IM6} One iteration: with use_bias the soft solve that also pulls the pins together
 /// (DD19's impulse with the soft bias), without it the rigid relax. The spring, motor and
 /// limits (DD22) come first, then the pin: the pin, solved last, holds best.
-void solve_revolute(Joint& j, std::span<SolverBody> bodies, const Softness& softness, double h,
+void solve_revolute(JointSim& s, const Joint& j, std::span<SolverBody> bodies, double h,
                     bool use_bias);
 
 } // namespace tamias2d

@@ -22,28 +22,29 @@ Joint make_joint(const TargetJointDef& def, const Body& b) {
 // The target is DD19's pin with an immovable body A (DD21): a solver body of zero inverse mass
 // at rest stands for it, so that the pin's formulas serve unchanged.
 
-void warm_start_target(const Joint& j, std::span<SolverBody> bodies) {
-    SolverBody& b = bodies[j.step.solver_b];
+void warm_start_target(const JointSim& s, std::span<SolverBody> bodies) {
+    SolverBody& b = bodies[s.solver_b];
     SolverBody world{};
-    bridge::apply_pin_impulse(world, {}, b, anchor_b(j), j.step.linear_impulse);
+    bridge::apply_pin_impulse(world, {}, b, anchor_b(s), s.step.linear_impulse);
 }
 
-void solve_target(Joint& j, std::span<SolverBody> bodies, double h, bool use_bias) {
+void solve_target(JointSim& s, const Joint& j, std::span<SolverBody> bodies, double h,
+                  bool use_bias) {
     if (!use_bias)
         return;
-    SolverBody& b = bodies[j.step.solver_b];
+    SolverBody& b = bodies[s.solver_b];
     SolverBody world{};
-    const Vec2d r = anchor_b(j);
+    const Vec2d r = anchor_b(s);
     const Softness soft = make_joint_softness(j.hertz, j.damping_ratio, h);
-    const Vec2d c = bridge::target_position_error(j.step.center_b + b.dp, r, j.target);
+    const Vec2d c = bridge::target_position_error(s.center_b + b.dp, r, j.target);
     const Vec2d rhs =
         bridge::biased_error(bridge::pin_velocity_error(world, {}, b, r), soft.bias_rate, c);
     const Vec2d P = bridge::pin_impulse(world, {}, b, r, rhs, soft.mass_scale, soft.impulse_scale,
-                                        j.step.linear_impulse);
-    const Vec2d old = j.step.linear_impulse;
-    j.step.linear_impulse =
+                                        s.step.linear_impulse);
+    const Vec2d old = s.step.linear_impulse;
+    s.step.linear_impulse =
         bridge::clamp_impulse(old + P, bridge::force_impulse_bound(j.max_force, h));
-    bridge::apply_pin_impulse(world, {}, b, r, j.step.linear_impulse - old);
+    bridge::apply_pin_impulse(world, {}, b, r, s.step.linear_impulse - old);
 }
 
 } // namespace tamias2d

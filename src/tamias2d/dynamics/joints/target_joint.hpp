@@ -7,6 +7,7 @@
 
 #include "tamias2d/dynamics/body.hpp"
 #include "tamias2d/dynamics/joints/joint.hpp"
+#include "tamias2d/dynamics/joints/joint_sim.hpp"
 #include "tamias2d/dynamics/solver_body.hpp"
 #include "tamias2d/joint_def.hpp"
 
@@ -15,8 +16,9 @@ namespace tamias2d {
 /// The joint a validated definition makes, its target grabbed on body `b` as it is now.
 Joint make_joint(const TargetJointDef& def, const Body& b);
 
-void warm_start_target(const Joint& j, std::span<SolverBody> bodies);
+void warm_start_target(const JointSim& s, std::span<SolverBody> bodies);
 /// \srs{IM6} One iteration (joint_solver.hpp's solve_joint).
-void solve_target(Joint& j, std::span<SolverBody> bodies, double h, bool use_bias);
+void solve_target(JointSim& s, const Joint& j, std::span<SolverBody> bodies, double h,
+                  bool use_bias);
 
 } // namespace tamias2d

@@ -18,31 +18,32 @@ Joint make_joint(const WeldJointDef& def, const Body& a, const Body& b) {
     return j;
 }
 
-void warm_start_weld(const Joint& j, std::span<SolverBody> bodies) {
-    SolverBody& a = bodies[j.step.solver_a];
-    SolverBody& b = bodies[j.step.solver_b];
-    bridge::apply_angular_impulse(a, b, j.step.angular_impulse);
-    bridge::apply_pin_impulse(a, anchor_a(j), b, anchor_b(j), j.step.linear_impulse);
+void warm_start_weld(const JointSim& s, std::span<SolverBody> bodies) {
+    SolverBody& a = bodies[s.solver_a];
+    SolverBody& b = bodies[s.solver_b];
+    bridge::apply_angular_impulse(a, b, s.step.angular_impulse);
+    bridge::apply_pin_impulse(a, anchor_a(s), b, anchor_b(s), s.step.linear_impulse);
 }
 
-void solve_weld(Joint& j, std::span<SolverBody> bodies, const Softness& rigid, double h,
+void solve_weld(JointSim& s, const Joint& j, std::span<SolverBody> bodies, double h,
                 bool use_bias) {
-    SolverBody& a = bodies[j.step.solver_a];
-    SolverBody& b = bodies[j.step.solver_b];
+    const Softness& rigid = s.softness;
+    SolverBody& a = bodies[s.solver_a];
+    SolverBody& b = bodies[s.solver_b];
     // A soft part is a spring (hertz > 0): its own softness, and no relax, which would undo it.
     const bool soft_angle = j.angular_hertz > 0.0, soft_pin = j.hertz > 0.0;
     if (use_bias || !soft_angle) {
         // DD24: the angle first, the point (DD19) last.
-        const Softness s =
+        const Softness angular =
             soft_angle ? make_joint_softness(j.angular_hertz, j.angular_damping_ratio, h) : rigid;
         const double lambda = bridge::weld_angular_impulse(a, b, bridge::joint_speed(a, b),
-                                                           current_joint_angle(j, a, b), s,
-                                                           use_bias, j.step.angular_impulse);
-        j.step.angular_impulse += lambda;
+                                                           current_joint_angle(s, a, b), angular,
+                                                           use_bias, s.step.angular_impulse);
+        s.step.angular_impulse += lambda;
         bridge::apply_angular_impulse(a, b, lambda);
     }
     if (use_bias || !soft_pin)
-        solve_pin(j, a, b, soft_pin ? make_joint_softness(j.hertz, j.damping_ratio, h) : rigid,
+        solve_pin(s, a, b, soft_pin ? make_joint_softness(j.hertz, j.damping_ratio, h) : rigid,
                   use_bias);
 }
 

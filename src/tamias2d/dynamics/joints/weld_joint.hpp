@@ -6,6 +6,7 @@
 
 #include "tamias2d/dynamics/body.hpp"
 #include "tamias2d/dynamics/joints/joint.hpp"
+#include "tamias2d/dynamics/joints/joint_sim.hpp"
 #include "tamias2d/dynamics/softness.hpp"
 #include "tamias2d/dynamics/solver_body.hpp"
 #include "tamias2d/joint_def.hpp"
@@ -17,9 +18,8 @@ namespace tamias2d {
 Joint make_joint(const WeldJointDef& def, const Body& a, const Body& b);
 
 /// Re-applies the impulses of the previous substep (they carry the solution forward).
-void warm_start_weld(const Joint& j, std::span<SolverBody> bodies);
+void warm_start_weld(const JointSim& s, std::span<SolverBody> bodies);
 /// \srs{IM6} One iteration (DD24): with use_bias the soft solve, without it the rigid relax.
-void solve_weld(Joint& j, std::span<SolverBody> bodies, const Softness& rigid, double h,
-                bool use_bias);
+void solve_weld(JointSim& s, const Joint& j, std::span<SolverBody> bodies, double h, bool use_bias);
 
 } // namespace tamias2d

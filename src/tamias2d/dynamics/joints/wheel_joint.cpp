@@ -25,38 +25,39 @@ Joint make_joint(const WheelJointDef& def, const Body& a, const Body& b) {
     return j;
 }
 
-void warm_start_wheel(const Joint& j, std::span<SolverBody> bodies) {
-    SolverBody& a = bodies[j.step.solver_a];
-    SolverBody& b = bodies[j.step.solver_b];
-    const LineFrame f = line_frame(j, a, b);
-    const double axial = j.step.spring_impulse + j.step.lower_impulse - j.step.upper_impulse;
+void warm_start_wheel(const JointSim& s, const Joint& j, std::span<SolverBody> bodies) {
+    SolverBody& a = bodies[s.solver_a];
+    SolverBody& b = bodies[s.solver_b];
+    const LineFrame f = line_frame(s, j, a, b);
+    const double axial = s.step.spring_impulse + s.step.lower_impulse - s.step.upper_impulse;
     bridge::apply_axial_impulse(a, f.line.arm_a, b, f.line.arm_b, f.axis, axial);
     bridge::apply_axial_impulse(a, f.line.perp_arm_a, b, f.line.perp_arm_b, left_perp(f.axis),
-                                j.step.perp_impulse);
-    bridge::apply_angular_impulse(a, b, j.step.motor_impulse);
+                                s.step.perp_impulse);
+    bridge::apply_angular_impulse(a, b, s.step.motor_impulse);
 }
 
-void solve_wheel(Joint& j, std::span<SolverBody> bodies, const Softness& rigid, double h,
+void solve_wheel(JointSim& s, const Joint& j, std::span<SolverBody> bodies, double h,
                  bool use_bias) {
-    SolverBody& a = bodies[j.step.solver_a];
-    SolverBody& b = bodies[j.step.solver_b];
+    const Softness& rigid = s.softness;
+    SolverBody& a = bodies[s.solver_a];
+    SolverBody& b = bodies[s.solver_b];
     if (j.enable_motor)
-        solve_angular_motor(j, a, b, h);
-    const LineFrame f = line_frame(j, a, b);
+        solve_angular_motor(s, j, a, b, h);
+    const LineFrame f = line_frame(s, j, a, b);
     const bridge::Line& l = f.line;
-    j.step.axis = f.axis;
+    s.step.axis = f.axis;
     // The suspension: a spring along the axis, limits on its travel (DD25).
     if (j.enable_spring && use_bias)
-        solve_axial_spring(j, a, b, l.arm_a, l.arm_b, f.axis, l.translation, h);
+        solve_axial_spring(s, j, a, b, l.arm_a, l.arm_b, f.axis, l.translation, h);
     if (j.enable_limit)
-        solve_axial_limits(j, a, b, l.arm_a, l.arm_b, f.axis, l.translation, rigid, h, use_bias);
+        solve_axial_limits(s, j, a, b, l.arm_a, l.arm_b, f.axis, l.translation, h, use_bias);
     // The wheel kept on the line (DD25: DD23's line constraint alone, the wheel turns freely).
     const Vec2d perp = left_perp(f.axis);
     const double lambda = bridge::wheel_line_impulse(
         a, b, l.perp_arm_a, l.perp_arm_b,
         bridge::axial_velocity_error(a, l.perp_arm_a, b, l.perp_arm_b, perp), l.perpendicular,
-        rigid, use_bias, j.step.perp_impulse);
-    j.step.perp_impulse += lambda;
+        rigid, use_bias, s.step.perp_impulse);
+    s.step.perp_impulse += lambda;
     bridge::apply_axial_impulse(a, l.perp_arm_a, b, l.perp_arm_b, perp, lambda);
 }
 

@@ -7,6 +7,7 @@
 
 #include "tamias2d/dynamics/body.hpp"
 #include "tamias2d/dynamics/joints/joint.hpp"
+#include "tamias2d/dynamics/joints/joint_sim.hpp"
 #include "tamias2d/dynamics/softness.hpp"
 #include "tamias2d/dynamics/solver_body.hpp"
 #include "tamias2d/joint_def.hpp"
@@ -18,9 +19,9 @@ namespace tamias2d {
 Joint make_joint(const WheelJointDef& def, const Body& a, const Body& b);
 
 /// Re-applies the impulses of the previous substep (they carry the solution forward).
-void warm_start_wheel(const Joint& j, std::span<SolverBody> bodies);
+void warm_start_wheel(const JointSim& s, const Joint& j, std::span<SolverBody> bodies);
 /// \srs{IM6} One iteration (DD25): with use_bias the soft solve, without it the rigid relax.
-void solve_wheel(Joint& j, std::span<SolverBody> bodies, const Softness& rigid, double h,
+void solve_wheel(JointSim& s, const Joint& j, std::span<SolverBody> bodies, double h,
                  bool use_bias);
 
 } // namespace tamias2d
