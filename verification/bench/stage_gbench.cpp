@@ -1,6 +1,7 @@
 // Google Benchmark views of a step's stages, for interactive profiling (not run by the job:
 // tamias_bench is the evidence): the broad phase's pair search, the narrow phase on a pair of
-// boxes, whole steps of the benchmark's scenes, and of a pyramid with sleeping off and asleep. The
+// boxes, whole steps of the benchmark's scenes, of a pyramid with sleeping off and asleep, and
+// of a jointed grid of each joint kind with its solve and preparation stages. The
 // contact solver's loop has its own binary (tamias_typing_gbench). For example:
 //   build/verification/bench/tamias_stage_gbench --benchmark_repetitions=5
 //   build/verification/bench/tamias_stage_gbench --benchmark_filter=broad_phase
@@ -139,5 +140,109 @@ BENCHMARK_CAPTURE(world_step_sleep, asleep, true)
     ->Unit(benchmark::kMicrosecond);
 
 } // namespace
+
+/// The joint solver by kind: a hanging n x n grid (joint_grid's layout, n = 40: 1600 bodies of
+/// 0.5 kg, the middle three of the top row static) whose pins are all of one kind, each at the
+/// midpoint of its two bodies. The counters are the step's stages (World::profile) averaged
+/// over the iterations: `solve` is the substeps (the joints' warm starts and iterations and the
+/// relax), `prepare` the state checks, the solver bodies and the joints' records.
+enum class GridJoint { revolute, revolute_motor_limit_spring, weld, prismatic, wheel, distance };
+
+void joint_grid_by_kind(benchmark::State& state, GridJoint kind) {
+    using namespace tamias2d;
+    constexpr int n = 40;
+    World world(WorldDef{});
+    std::vector<BodyId> body(n * n);
+    for (int k = 0; k < n; ++k) {
+        for (int i = 0; i < n; ++i) {
+            BodyDef d;
+            d.type = i == 0 && std::abs(k - n / 2) <= 1 ? BodyType::static_body : BodyType::dynamic;
+            d.position = {double(k), double(-i)};
+            if (d.type == BodyType::dynamic) {
+                d.mass = 0.5;
+                d.inertia = 0.04;
+            }
+            body[std::size_t(k * n + i)] = world.create_body(d);
+        }
+    }
+    const auto join = [&](BodyId a, BodyId b, Vec2d pa, Vec2d pb) {
+        const Vec2d mid = 0.5 * (pa + pb);
+        const Vec2d axis = pb - pa;
+        switch (kind) {
+        case GridJoint::revolute:
+        case GridJoint::revolute_motor_limit_spring: {
+            RevoluteJointDef j{.body_a = a, .body_b = b, .anchor = mid};
+            if (kind == GridJoint::revolute_motor_limit_spring) {
+                j.enable_limit = true;
+                j.lower_angle = -1.0;
+                j.upper_angle = 1.0;
+                j.enable_motor = true;
+                j.max_motor_torque = 0.1;
+                j.enable_spring = true;
+                j.hertz = 2.0;
+                j.damping_ratio = 0.5;
+            }
+            world.create_joint(j);
+            break;
+        }
+        case GridJoint::weld:
+            world.create_joint(WeldJointDef{.body_a = a, .body_b = b, .anchor = mid});
+            break;
+        case GridJoint::prismatic:
+            world.create_joint(
+                PrismaticJointDef{.body_a = a, .body_b = b, .anchor = mid, .axis = axis});
+            break;
+        case GridJoint::wheel:
+            world.create_joint(
+                WheelJointDef{.body_a = a, .body_b = b, .anchor = mid, .axis = axis});
+            break;
+        case GridJoint::distance:
+            world.create_joint(
+                DistanceJointDef{.body_a = a, .body_b = b, .anchor_a = pa, .anchor_b = pb});
+            break;
+        }
+    };
+    for (int k = 0; k < n; ++k) {
+        for (int i = 0; i < n; ++i) {
+            const std::size_t at = std::size_t(k * n + i);
+            const bool fixed = world.type(body[at]) == BodyType::static_body;
+            if (i > 0 && !(fixed && world.type(body[at - 1]) == BodyType::static_body))
+                join(body[at - 1], body[at], {double(k), double(1 - i)}, {double(k), double(-i)});
+            if (k > 0 && !(fixed && world.type(body[at - n]) == BodyType::static_body))
+                join(body[at - n], body[at], {double(k - 1), double(-i)}, {double(k), double(-i)});
+        }
+    }
+    world.set_profiling(true);
+    for (int i = 0; i < 10; ++i)
+        world.step(1.0 / 60.0);
+    double solve = 0.0, prepare = 0.0;
+    for (auto _ : state) {
+        world.step(1.0 / 60.0);
+        const StepProfile p = world.profile();
+        solve += p.solve;
+        prepare += p.prepare;
+    }
+    const double steps = double(state.iterations());
+    state.counters["solve_ms"] = 1e3 * solve / steps;
+    state.counters["prepare_ms"] = 1e3 * prepare / steps;
+}
+BENCHMARK_CAPTURE(joint_grid_by_kind, revolute, GridJoint::revolute)
+    ->Name("joints/grid40/revolute")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(joint_grid_by_kind, revolute_parts, GridJoint::revolute_motor_limit_spring)
+    ->Name("joints/grid40/revolute_motor_limit_spring")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(joint_grid_by_kind, weld, GridJoint::weld)
+    ->Name("joints/grid40/weld")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(joint_grid_by_kind, prismatic, GridJoint::prismatic)
+    ->Name("joints/grid40/prismatic")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(joint_grid_by_kind, wheel, GridJoint::wheel)
+    ->Name("joints/grid40/wheel")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(joint_grid_by_kind, distance, GridJoint::distance)
+    ->Name("joints/grid40/distance")
+    ->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();

@@ -287,7 +287,8 @@ void StepSolver::prepare_joints(const JointStore& joints, const BodyStore& bodie
             bodies.disabled(j.body_a) || bodies.disabled(j.body_b) ||
             (solver_index_[j.body_a] == 0 && solver_index_[j.body_b] == 0))
             continue;
-        JointSim& s = sims_.emplace_back(prepare_joint(j, i, bodies, solver_index_));
+        JointSim& s = sims_.emplace_back();
+        prepare_joint(s, j, i, bodies, solver_index_);
         // A moving side's rotation is its body's, turned once per body (turn_joints) rather
         // than once per joint; an immovable side keeps its rotation all step.
         for (const auto& [k, angle, q] : {std::tuple{s.solver_a, s.angle_a, &s.q_a},

@@ -1,7 +1,7 @@
 // A joint as one step solves it (internal): what the warm start and the iterations read and
 // write, contiguous, one record per solved joint in the step solver's array. The rest of the
 // joint (its definition: limits, motor, springs) stays in its Joint, which a kind reads only
-// when the part is enabled. A plain revolute joint's solve touches this record's first three
+// when the part is enabled. A plain revolute joint's solve touches this record's first two
 // cache lines and nothing of its Joint.
 #pragma once
 
@@ -28,18 +28,20 @@ struct alignas(64) JointSim {
     const Rot* q_b = nullptr;
     Vec2d frame_a{}, frame_b{}; ///< m, the pin from each centre, body frame
 
-    // Second line.
+    // Second line: the centres' offset, the softness and the step state's first field, the
+    // pin's impulse.
     Vec2d center_offset{}; ///< m, p_B - p_A at the step's start
     Softness softness{};   ///< the rigid parts' soft bias: the world's (IM6) or the joint's (DD37)
+    JointStepState step;   ///< the Joint's, solved here and written back once the step is accepted
+
+    // Third and fourth lines: what only some kinds and parts read.
     double reference_angle = 0.0;        ///< rad, the Joint's (DD22)
     double angle_a = 0.0, angle_b = 0.0; ///< rad, the bodies' angles at the step's start
-
-    // Third and fourth lines.
-    JointStepState step; ///< the Joint's, solved here and written back once the step is accepted
-    Vec2d center_b{};    ///< m, p_B at the step's start (target joint)
+    Vec2d center_b{};                    ///< m, p_B at the step's start (target joint)
 };
 
 static_assert(sizeof(JointSim) == 256);
-static_assert(offsetof(JointSim, center_offset) == 64 && offsetof(JointSim, step) == 128);
+static_assert(offsetof(JointSim, center_offset) == 64 &&
+              offsetof(JointSim, step) + sizeof(Vec2d) <= 128); // the pin's impulse in line 2
 
 } // namespace tamias2d

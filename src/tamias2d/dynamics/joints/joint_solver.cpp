@@ -14,11 +14,10 @@
 
 namespace tamias2d {
 
-JointSim prepare_joint(const Joint& j, std::uint32_t index, const BodyStore& store,
-                       const memory::vector<std::uint32_t>& solver_index) {
+void prepare_joint(JointSim& s, const Joint& j, std::uint32_t index, const BodyStore& store,
+                   const memory::vector<std::uint32_t>& solver_index) {
     const Body& a = store.bodies[j.body_a];
     const Body& b = store.bodies[j.body_b];
-    JointSim s;
     s.solver_a = solver_index[j.body_a];
     s.solver_b = solver_index[j.body_b];
     s.joint = index;
@@ -35,7 +34,6 @@ JointSim prepare_joint(const Joint& j, std::uint32_t index, const BodyStore& sto
     s.angle_b = b.angle;
     s.step = j.step;
     s.center_b = b.center;
-    return s;
 }
 
 LineFrame line_frame(const JointSim& s, const Joint& j, const SolverBody& a, const SolverBody& b) {

@@ -19,11 +19,12 @@ namespace tamias2d {
 
 struct BodyStore;
 
-/// The joint's record for this step: its solver bodies, the anchors' offsets from the centres
-/// (body frames), the bodies' angles and the centres' offset at the step's start, and the
-/// impulses of the last accepted step. (The rotations and the softness are the step solver's.)
-JointSim prepare_joint(const Joint& j, std::uint32_t index, const BodyStore& bodies,
-                       const memory::vector<std::uint32_t>& solver_index);
+/// Fills s, joint j's record for this step: its solver bodies, the anchors' offsets from the
+/// centres (body frames), the bodies' angles and the centres' offset at the step's start, and
+/// the impulses of the last accepted step. (The rotations and the softness are the step
+/// solver's.)
+void prepare_joint(JointSim& s, const Joint& j, std::uint32_t index, const BodyStore& bodies,
+                   const memory::vector<std::uint32_t>& solver_index);
 
 /// The anchors' offsets from their bodies' centres in the world frame, with the bodies turned
 /// as far as they have in the step.
