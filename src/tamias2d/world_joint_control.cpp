@@ -284,6 +284,7 @@ void World::set_joint_break_force(JointId id, double force) {
     if (j.break_force == force)
         return;
     j.break_force = force;
+    impl_->joints.note_breakable(j);
     wake_joint(*impl_, j);
 }
 
@@ -297,6 +298,7 @@ void World::set_joint_break_torque(JointId id, double torque) {
     if (j.break_torque == torque)
         return;
     j.break_torque = torque;
+    impl_->joints.note_breakable(j);
     wake_joint(*impl_, j);
 }
 

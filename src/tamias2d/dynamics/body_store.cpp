@@ -123,6 +123,7 @@ void BodyStore::update_mass(std::uint32_t i, ShapeStore& shapes) {
         mass_pending_flag_[i] = false;
     Body& b = bodies[i];
     const BodySettings& set = settings[i];
+    ++mass_epoch;
     b.mass = b.inv_mass = b.inertia = b.inv_inertia = 0.0;
     b.local_center = {};
     if (b.type == BodyType::dynamic) {
@@ -444,6 +445,7 @@ void BodyStore::write(SnapshotWriter& out) const {
 
 void BodyStore::read(SnapshotReader& in, memory::vector<std::uint32_t>& had_load) {
     in.section("BODY");
+    ++mass_epoch;
     in.in("bodies");
     slots.read(in);
     const std::size_t n = slots.size();

@@ -45,6 +45,9 @@ struct BodyStore {
     /// with sleeping on, WorldDef::enable_sleep).
     memory::vector<SleepState> sleep_states;
     std::uint32_t loaded_bodies = 0; ///< live bodies with a load function
+    /// Counts the changes of any body's mass properties (update_mass, read; a change put back
+    /// counts too): JointStore::check_levers checks again only after one.
+    std::uint64_t mass_epoch = 0;
 
   private:
     /// The bodies whose mass attach_shape left pending (settle, get), flagged per body; the

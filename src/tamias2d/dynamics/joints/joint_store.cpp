@@ -110,6 +110,8 @@ std::uint32_t JointStore::create(const Joint& joint) {
     }
     by_body_[joint.body_a].push_back(i);
     by_body_[joint.body_b].push_back(i);
+    note_breakable(joint);
+    levers_checked_at_ = ~std::uint64_t{0};
     return i;
 }
 
@@ -164,10 +166,13 @@ bool JointStore::filters(std::uint32_t a, std::uint32_t b) const {
 }
 
 void JointStore::check_levers(const BodyStore& bodies) const {
+    if (levers_checked_at_ == bodies.mass_epoch)
+        return;
     for (std::uint32_t k = 0; k < joints.size(); ++k) {
         if (alive(k) && !levers_fit(bodies, joints[k])) // (the name is made only to refuse)
             validate_levers(bodies, joints[k], "joint[" + std::to_string(k) + "].");
     }
+    levers_checked_at_ = bodies.mass_epoch;
 }
 
 void JointStore::guard_step(const BodyStore& bodies, bool sleeping) {
@@ -186,7 +191,14 @@ void JointStore::refuse_step(std::uint32_t i, BodyStore& bodies, bool sleeping) 
                                    "bodies, joints and clock as they were");
 }
 
+void JointStore::note_breakable(const Joint& j) {
+    constexpr double never = std::numeric_limits<double>::infinity();
+    breakable_ = breakable_ || j.break_force != never || j.break_torque != never;
+}
+
 void JointStore::break_joints(BodyStore& bodies, ShapeStore& shapes) {
+    if (!breakable_)
+        return;
     for (std::uint32_t i = 0; i < joints.size(); ++i) {
         const Joint& j = joints[i];
         // \srs{DD36} The force's or the torque's threshold crossed. (No reading can exceed an
@@ -323,6 +335,8 @@ void JointStore::read(SnapshotReader& in, const BodyStore& bodies) {
     const std::size_t n = slots.size();
     in.require(n <= null_index - 1, "slots", "must be fewer than 4294967295", in.offset());
     joints.resize(n);
+    breakable_ = false;
+    levers_checked_at_ = ~std::uint64_t{0};
     for (std::uint32_t i = 0; i < n; ++i) {
         in.in("joints", i);
         const std::size_t at = in.offset();
@@ -334,6 +348,7 @@ void JointStore::read(SnapshotReader& in, const BodyStore& bodies) {
         in.require(j.body_a < bodies.size() && j.body_b < bodies.size() && bodies.alive(j.body_a) &&
                        bodies.alive(j.body_b),
                    "body_a", "a live joint's bodies must live", at);
+        note_breakable(j);
     }
     in.in(nullptr);
     // Each live joint once in its body_a's list and once in its body_b's (twice in one list

@@ -84,8 +84,12 @@ class JointStore {
     /// Whether a joint between bodies a and b asks that their shapes not collide.
     bool filters(std::uint32_t a, std::uint32_t b) const;
     /// validate_levers for every live joint: a shape added or removed since a joint was made
-    /// moves the centre of mass and changes the inertia its anchors are judged by.
+    /// moves the centre of mass and changes the inertia its anchors are judged by. Nothing
+    /// when no mass and no joint changed since the last check that passed.
     void check_levers(const BodyStore& bodies) const;
+    /// Notes that joint j may break (a finite break force or torque): until one may, a step's
+    /// break_joints reads no joint. Called wherever a threshold is set.
+    void note_breakable(const Joint& j);
 
     /// Before a step's solve, with joints: keeps what the step changes and a refused step
     /// must give back (the sleep states the islands may wake, the substep rate the reaction
@@ -143,6 +147,10 @@ class JointStore {
     memory::vector<memory::vector<std::uint32_t>> by_body_; ///< per body index: its joints
     /// Empty lists with room for two joints (reserve), taken by create() as by_body_ grows.
     memory::vector<memory::vector<std::uint32_t>> spare_lists_;
+    bool breakable_ = false; ///< some joint has had a finite break threshold (note_breakable)
+    /// BodyStore::mass_epoch at the last check_levers that passed (all ones: none since a
+    /// joint was made or read).
+    mutable std::uint64_t levers_checked_at_ = ~std::uint64_t{0};
     // What guard_step keeps: the sleep states and the substep rate.
     memory::vector<SleepState> sleep_before_;
     double inv_h_before_ = 0.0;
