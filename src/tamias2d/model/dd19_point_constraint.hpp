@@ -48,9 +48,11 @@ inline PinMass effective_mass_inverse(InverseInertia A, InverseInertia B, Vec2<L
 /// Cramer's rule (K is 2 x 2 and positive definite, DCX_joint).
 inline Vec2<Impulse> impulse(PinMass K, Vec2<Velocity> rhs, Dimensionless mass_scale,
                              Dimensionless impulse_scale, Vec2<Impulse> accumulated) {
-    const auto det = K.k11 * K.k22 - K.k12 * K.k12;
-    const Vec2<Impulse> solved{(K.k22 * rhs.x - K.k12 * rhs.y) / det,
-                               (K.k11 * rhs.y - K.k12 * rhs.x) / det};
+    // One division: the determinant's inverse scales both components (two divisions in a row
+    // were the joint solve's longest latency).
+    const auto inv_det = 1.0 / (K.k11 * K.k22 - K.k12 * K.k12);
+    const Vec2<Impulse> solved{(K.k22 * rhs.x - K.k12 * rhs.y) * inv_det,
+                               (K.k11 * rhs.y - K.k12 * rhs.x) * inv_det};
     return im6::soft_impulse(mass_scale, -solved, impulse_scale, accumulated);
 }
 
