@@ -41,7 +41,9 @@ struct alignas(64) JointSim {
 };
 
 static_assert(sizeof(JointSim) == 256);
-static_assert(offsetof(JointSim, center_offset) == 64 &&
-              offsetof(JointSim, step) + sizeof(Vec2d) <= 128); // the pin's impulse in line 2
+// The frames in the first line, the pin's impulse by the end of the second (with 4-byte
+// pointers, as in WebAssembly, the fields sit 8 bytes earlier).
+static_assert(offsetof(JointSim, frame_b) + sizeof(Vec2d) <= 64 &&
+              offsetof(JointSim, step) + sizeof(Vec2d) <= 128);
 
 } // namespace tamias2d
