@@ -9,6 +9,8 @@
 
 #include <cmath>
 #include <cstdint>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "bench_engines.hpp"
@@ -226,23 +228,18 @@ void joint_grid_by_kind(benchmark::State& state, GridJoint kind) {
     state.counters["solve_ms"] = 1e3 * solve / steps;
     state.counters["prepare_ms"] = 1e3 * prepare / steps;
 }
-BENCHMARK_CAPTURE(joint_grid_by_kind, revolute, GridJoint::revolute)
-    ->Name("joints/grid40/revolute")
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(joint_grid_by_kind, revolute_parts, GridJoint::revolute_motor_limit_spring)
-    ->Name("joints/grid40/revolute_motor_limit_spring")
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(joint_grid_by_kind, weld, GridJoint::weld)
-    ->Name("joints/grid40/weld")
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(joint_grid_by_kind, prismatic, GridJoint::prismatic)
-    ->Name("joints/grid40/prismatic")
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(joint_grid_by_kind, wheel, GridJoint::wheel)
-    ->Name("joints/grid40/wheel")
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(joint_grid_by_kind, distance, GridJoint::distance)
-    ->Name("joints/grid40/distance")
-    ->Unit(benchmark::kMillisecond);
+[[maybe_unused]] const bool joint_grids_registered = [] {
+    for (const auto& [name, kind] :
+         {std::pair{"revolute", GridJoint::revolute},
+          {"revolute_motor_limit_spring", GridJoint::revolute_motor_limit_spring},
+          {"weld", GridJoint::weld},
+          {"prismatic", GridJoint::prismatic},
+          {"wheel", GridJoint::wheel},
+          {"distance", GridJoint::distance}})
+        benchmark::RegisterBenchmark(("joints/grid40/" + std::string(name)).c_str(),
+                                     joint_grid_by_kind, kind)
+            ->Unit(benchmark::kMillisecond);
+    return true;
+}();
 
 BENCHMARK_MAIN();

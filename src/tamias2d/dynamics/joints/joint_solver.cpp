@@ -121,6 +121,13 @@ void solve_axial_spring(JointSim& s, const Joint& j, SolverBody& a, SolverBody& 
     bridge::apply_axial_impulse(a, arm_a, b, arm_b, n, lambda);
 }
 
+void warm_start_pin_and_angle(const JointSim& s, std::span<SolverBody> bodies) {
+    SolverBody& a = bodies[s.solver_a];
+    SolverBody& b = bodies[s.solver_b];
+    bridge::apply_angular_impulse(a, b, s.step.angular_impulse);
+    bridge::apply_pin_impulse(a, anchor_a(s), b, anchor_b(s), s.step.linear_impulse);
+}
+
 void warm_start_joint(const JointSim& s, const Joint& j, std::span<SolverBody> bodies) {
     switch (s.type) {
     case JointType::revolute:
@@ -132,11 +139,11 @@ void warm_start_joint(const JointSim& s, const Joint& j, std::span<SolverBody> b
     case JointType::prismatic:
         return warm_start_prismatic(s, j, bodies);
     case JointType::weld:
-        return warm_start_weld(s, bodies);
+        return warm_start_pin_and_angle(s, bodies);
     case JointType::wheel:
         return warm_start_wheel(s, j, bodies);
     case JointType::motor:
-        return warm_start_motor(s, bodies);
+        return warm_start_pin_and_angle(s, bodies);
     case JointType::filter: // no constraint (StepSolver::prepare_joints leaves it out)
         return;
     }

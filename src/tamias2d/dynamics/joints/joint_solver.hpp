@@ -65,6 +65,9 @@ void solve_axial_limits(JointSim& s, const Joint& j, SolverBody& a, SolverBody& 
 void solve_axial_spring(JointSim& s, const Joint& j, SolverBody& a, SolverBody& b, double arm_a,
                         double arm_b, Vec2d n, double value, double h);
 
+/// The warm start of a joint that holds a pin (DD19) and an angle (a weld, DD24; a motor joint,
+/// DD26): the held angle's impulse, then the pin's.
+void warm_start_pin_and_angle(const JointSim& s, std::span<SolverBody> bodies);
 /// Re-applies the impulses of the previous substep (they carry the solution forward).
 void warm_start_joint(const JointSim& s, const Joint& j, std::span<SolverBody> bodies);
 /// \srs{IM6} One iteration of the joint: with use_bias the soft solve (the rigid parts pulled

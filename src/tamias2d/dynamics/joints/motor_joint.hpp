@@ -16,8 +16,8 @@ namespace tamias2d {
 /// are now.
 Joint make_joint(const MotorJointDef& def, const Body& a, const Body& b);
 
-/// Re-applies the impulses of the previous substep (they carry the solution forward).
-void warm_start_motor(const JointSim& s, std::span<SolverBody> bodies);
+// Its warm start is joint_solver.hpp's warm_start_pin_and_angle.
+
 /// \srs{IM6} One iteration (DD26), in the soft solve only: the relax would brake the drive.
 void solve_motor(JointSim& s, const Joint& j, std::span<SolverBody> bodies, double h,
                  bool use_bias);

@@ -18,13 +18,6 @@ Joint make_joint(const WeldJointDef& def, const Body& a, const Body& b) {
     return j;
 }
 
-void warm_start_weld(const JointSim& s, std::span<SolverBody> bodies) {
-    SolverBody& a = bodies[s.solver_a];
-    SolverBody& b = bodies[s.solver_b];
-    bridge::apply_angular_impulse(a, b, s.step.angular_impulse);
-    bridge::apply_pin_impulse(a, anchor_a(s), b, anchor_b(s), s.step.linear_impulse);
-}
-
 void solve_weld(JointSim& s, const Joint& j, std::span<SolverBody> bodies, double h,
                 bool use_bias) {
     const Softness& rigid = s.softness;

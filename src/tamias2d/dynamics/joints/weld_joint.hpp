@@ -17,8 +17,8 @@ namespace tamias2d {
 /// are now.
 Joint make_joint(const WeldJointDef& def, const Body& a, const Body& b);
 
-/// Re-applies the impulses of the previous substep (they carry the solution forward).
-void warm_start_weld(const JointSim& s, std::span<SolverBody> bodies);
+// Its warm start is joint_solver.hpp's warm_start_pin_and_angle.
+
 /// \srs{IM6} One iteration (DD24): with use_bias the soft solve, without it the rigid relax.
 void solve_weld(JointSim& s, const Joint& j, std::span<SolverBody> bodies, double h, bool use_bias);
 
