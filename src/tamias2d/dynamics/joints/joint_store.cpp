@@ -348,6 +348,12 @@ void JointStore::read(SnapshotReader& in, const BodyStore& bodies) {
         in.require(j.body_a < bodies.size() && j.body_b < bodies.size() && bodies.alive(j.body_a) &&
                        bodies.alive(j.body_b),
                    "body_a", "a live joint's bodies must live", at);
+        // The bounds the solve clamps impulses to (DD22, DD23, DD26; DD21's force) are never
+        // negative: a definition is refused otherwise, and a clamp's bounds must not cross.
+        for (const auto& [field, value] : {std::pair{"max_motor", j.max_motor},
+                                           {"max_torque", j.max_torque},
+                                           {"max_force", j.max_force}})
+            in.require(value >= 0.0, field, "must be >= 0 (it bounds an impulse)", at);
         note_breakable(j);
     }
     in.in(nullptr);
