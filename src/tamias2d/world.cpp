@@ -190,7 +190,7 @@ namespace {
 /// Stores a joint made from a validated definition, removes the contacts it filters, wakes its
 /// bodies.
 JointId add_joint(World::Impl& w, const Joint& j) {
-    validate_levers(w.bodies, j, "joint.");
+    validate_levers(w.bodies, j, null_index);
     const std::uint32_t i = w.joints.create(j);
     if (!j.collide_connected)
         w.contacts.destroy_between(j.body_a, j.body_b, w.bodies, w.shapes);

@@ -38,7 +38,7 @@ template <class Change> void change_mass(World::Impl& w, std::uint32_t i, Change
     change();
     try {
         for (const std::uint32_t k : w.joints.of_body(i))
-            validate_levers(w.bodies, w.joints.joints[k], "joint[" + std::to_string(k) + "].");
+            validate_levers(w.bodies, w.joints.joints[k], k);
     } catch (...) {
         b = body_before;
         w.bodies.settings[i] = settings_before;

@@ -30,7 +30,7 @@ template <class Undo> void update_mass_checked(World::Impl& w, std::uint32_t bod
     w.bodies.update_mass(body, w.shapes);
     try {
         for (const std::uint32_t k : w.joints.of_body(body))
-            validate_levers(w.bodies, w.joints.joints[k], "joint[" + std::to_string(k) + "].");
+            validate_levers(w.bodies, w.joints.joints[k], k);
     } catch (...) {
         undo();
         w.bodies.update_mass(body, w.shapes);

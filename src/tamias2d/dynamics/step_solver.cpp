@@ -555,10 +555,10 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
     for (int sub = 0; sub < n; ++sub) {
         if (sub > 0) { // the first substep's were done with the preparation
             integrate_velocities(h, tasks);
-            if (warm)
+            if (warm) {
                 warm_start_joints(joints);
-            if (warm)
                 contact_pass(tasks, streams, nullptr, false);
+            }
         }
         solve_joints(joints, h, true);
         contact_pass(tasks, streams, &st, true);

@@ -54,22 +54,7 @@ double joint_translation_now(const Joint& j, const BodyStore& bodies) {
         .translation;
 }
 
-namespace {
-
-/// Whether both anchors' levers are within their limit (validate_levers' test, without
-/// naming anything).
-bool levers_fit(const BodyStore& bodies, const Joint& j) {
-    if (j.type == JointType::filter)
-        return true;
-    const Body& a = bodies.bodies[j.body_a];
-    const Body& b = bodies.bodies[j.body_b];
-    return joint_lever_fits(j.local_anchor_a - a.local_center, a.inv_mass, a.inv_inertia) &&
-           joint_lever_fits(j.local_anchor_b - b.local_center, b.inv_mass, b.inv_inertia);
-}
-
-} // namespace
-
-void validate_levers(const BodyStore& bodies, const Joint& j, const std::string& at) {
+void validate_levers(const BodyStore& bodies, const Joint& j, std::uint32_t index) {
     if (j.type == JointType::filter)
         return; // no anchor, no lever
     const auto [field_a, field_b] = anchor_fields(j.type);
@@ -79,6 +64,8 @@ void validate_levers(const BodyStore& bodies, const Joint& j, const std::string&
         const Vec2d r = (side_a ? j.local_anchor_a : j.local_anchor_b) - b.local_center;
         if (joint_lever_fits(r, b.inv_mass, b.inv_inertia))
             continue; // the field's name is made only for the message
+        const std::string at =
+            index == null_index ? "joint." : "joint[" + std::to_string(index) + "].";
         validate_joint_lever(at + (side_a ? field_a : field_b) + " (on " + bodies.label(i) + ")", r,
                              b.inv_mass, b.inv_inertia);
     }
@@ -169,8 +156,8 @@ void JointStore::check_levers(const BodyStore& bodies) const {
     if (levers_checked_at_ == bodies.mass_epoch)
         return;
     for (std::uint32_t k = 0; k < joints.size(); ++k) {
-        if (alive(k) && !levers_fit(bodies, joints[k])) // (the name is made only to refuse)
-            validate_levers(bodies, joints[k], "joint[" + std::to_string(k) + "].");
+        if (alive(k))
+            validate_levers(bodies, joints[k], k);
     }
     levers_checked_at_ = bodies.mass_epoch;
 }
@@ -191,8 +178,14 @@ void JointStore::refuse_step(std::uint32_t i, BodyStore& bodies, bool sleeping) 
                                    "bodies, joints and clock as they were");
 }
 
+namespace {
+
+/// A break threshold that no reading exceeds (DD36: the joint never breaks).
+constexpr double never = std::numeric_limits<double>::infinity();
+
+} // namespace
+
 void JointStore::note_breakable(const Joint& j) {
-    constexpr double never = std::numeric_limits<double>::infinity();
     breakable_ = breakable_ || j.break_force != never || j.break_torque != never;
 }
 
@@ -203,7 +196,6 @@ void JointStore::break_joints(BodyStore& bodies, ShapeStore& shapes) {
         const Joint& j = joints[i];
         // \srs{DD36} The force's or the torque's threshold crossed. (No reading can exceed an
         // infinite threshold: such a joint's reaction is not computed.)
-        constexpr double never = std::numeric_limits<double>::infinity();
         if (!alive(i) || (j.break_force == never && j.break_torque == never) ||
             !bridge::joint_breaks(
                 bridge::reaction_force(length(reaction_impulse(j)), inv_h), j.break_force,

@@ -33,9 +33,9 @@ double joint_angle_now(const Joint& j, const BodyStore& bodies);
 double joint_translation_now(const Joint& j, const BodyStore& bodies);
 
 /// \srs{DCX_joint} Each anchor of `j` lies within supported::joint_lever_ratio_max radii of
-/// gyration of its body's centre of mass. `at` begins the field's name ("joint." or
-/// "joint[3].").
-void validate_levers(const BodyStore& bodies, const Joint& j, const std::string& at);
+/// gyration of its body's centre of mass. The field's name, made only to refuse, begins
+/// "joint[index]." for a stored joint, "joint." for a new one (index null_index).
+void validate_levers(const BodyStore& bodies, const Joint& j, std::uint32_t index);
 
 class JointStore {
   public:
