@@ -58,18 +58,22 @@ struct WorldDef {
     /// normal and moment arms within this distance's turn (docs/collision.md). 0: every touching
     /// manifold is computed afresh each step. >= 0.
     double manifold_reuse_distance = 0.005;
-    /// The contact solve's regions, in [1, 8]. 1, the default: each contact pass is the sequential
-    /// Gauss-Seidel pass over the touching manifolds in creation order. n > 1: the bodies are cut,
-    /// across gravity, into n slabs holding about equal numbers of manifolds (drawn again when the
-    /// touching manifolds or the awake bodies change; until then each keeps its slab); each pass
-    /// solves the manifolds within slab 0, then within slab 1, ..., each in creation order, then
-    /// those between slabs, by greedy colour (each takes the lowest colour no earlier one on its
-    /// bodies took; creation order within a colour). The slabs share no moving body, so with
-    /// workers > 1 they are solved on several threads at once. The order, and with it the result,
-    /// depends on this setting and on the scene, never on workers: a world gives the same bits on
-    /// any number of threads. Set it to the number of workers a game steps on; on one thread it
-    /// costs a few packs that the manifolds between slabs fill only part way (docs/performance.md,
-    /// "Threads").
+    /// The solve's regions, in [1, 8]. 1, the default: each contact pass is the sequential
+    /// Gauss-Seidel pass over the touching manifolds in creation order, and each joint pass over
+    /// the joints in creation order. n > 1: the bodies are cut, across gravity, into n slabs
+    /// holding about equal numbers of manifolds (drawn again when the touching manifolds or the
+    /// awake bodies change; until then each keeps its slab); each contact pass solves the
+    /// manifolds within slab 0, then within slab 1, ..., each in creation order, then those
+    /// between slabs, by greedy colour (each takes the lowest colour no earlier one on its bodies
+    /// took; creation order within a colour). With at least 256 joints solved, the joints are
+    /// split too, by the bodies' creation order: the moving bodies form n runs of about equal
+    /// length, and each joint pass solves the joints within run 0, ..., within run n - 1, then
+    /// the rest (between runs, or on an immovable body), each in creation order. The slabs, and
+    /// the runs, share no moving body, so with workers > 1 they are solved on several threads at
+    /// once. The order, and with it the result, depends on this setting and on the scene, never
+    /// on workers: a world gives the same bits on any number of threads. Set it to the number of
+    /// workers a game steps on; on one thread it costs a few packs that the manifolds between
+    /// slabs fill only part way (docs/performance.md, "Threads").
     int contact_regions = 1;
     /// Continuous collision (DD29): after each step, a dynamic body that moved farther than
     /// the speculative distance is swept from its start pose to its end pose against the
@@ -111,7 +115,8 @@ struct WorldDef {
     double linear_sleep_tolerance = 0.05;   ///< m s^-1
     double angular_sleep_tolerance = 0.035; ///< rad s^-1 (2 degrees per second)
     /// Threads that share a step's parallel parts (the narrow phase, the bodies' integration and
-    /// write-back, the contacts' preparation, and with contact_regions > 1 the contact passes),
+    /// write-back, the contacts' and the joints' preparation, and with contact_regions > 1 the
+    /// contact passes and the joint passes),
     /// in [1, 256]. The results are bitwise identical for every count (task_system.hpp). 1, the
     /// default: the step runs on the calling thread alone, as without this setting. Above 1,
     /// without task_system's callbacks, the World starts a pool of workers - 1 threads of its

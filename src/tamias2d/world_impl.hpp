@@ -68,7 +68,7 @@ struct World::Impl : memory::HookAllocated<World::Impl> {
     /// The solver bodies and the joints' frames at the step's start.
     void prepare(const StepContext& step) {
         solver.prepare_bodies(bodies, step);
-        solver.prepare_joints(joints, bodies);
+        solver.prepare_joints(joints, bodies, step);
     }
 
     /// A step with some body awake: its stages in one order. Only where the solver bodies are

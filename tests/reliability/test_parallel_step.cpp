@@ -227,6 +227,97 @@ void chains(World& world) {
     }
 }
 
+/// 30 hanging chains of 40 links, each link held by the next kind in turn (revolute with limit,
+/// motor and spring; weld, soft; prismatic with limit, motor and spring; wheel with motor;
+/// distance with spring and limits; motor joint), the first to a static pin, with a target
+/// joint on every seventh link from the fourth: 1380 joints of every kind, 210 of them on an
+/// immovable body.
+void every_kind_chains(World& world) {
+    ground(world, 200.0, -45.0);
+    for (int c = 0; c < 30; ++c) {
+        BodyDef pin_def;
+        pin_def.type = BodyType::static_body;
+        const double x0 = -60.0 + 4.0 * c;
+        pin_def.position = {x0, 0.0};
+        BodyId previous = world.create_body(pin_def);
+        for (int k = 0; k < 40; ++k) {
+            BodyDef link;
+            link.position = {x0 + 0.5 + k, 0.0};
+            const BodyId b = world.create_body(link);
+            world.create_shape(b, box_shape(1.0, 0.25, wood));
+            const Vec2d at{x0 + k, 0.0};
+            switch ((c + k) % 6) {
+            case 0:
+                world.create_joint(RevoluteJointDef{.body_a = previous,
+                                                    .body_b = b,
+                                                    .anchor = at,
+                                                    .enable_limit = true,
+                                                    .lower_angle = -1.0,
+                                                    .upper_angle = 1.0,
+                                                    .enable_motor = true,
+                                                    .motor_speed = 0.5,
+                                                    .max_motor_torque = 2.0,
+                                                    .enable_spring = true,
+                                                    .hertz = 2.0,
+                                                    .damping_ratio = 0.5});
+                break;
+            case 1:
+                world.create_joint(WeldJointDef{.body_a = previous,
+                                                .body_b = b,
+                                                .anchor = at,
+                                                .linear_hertz = 8.0,
+                                                .angular_hertz = 4.0});
+                break;
+            case 2:
+                world.create_joint(PrismaticJointDef{.body_a = previous,
+                                                     .body_b = b,
+                                                     .anchor = at,
+                                                     .axis = {1.0, 0.2},
+                                                     .enable_limit = true,
+                                                     .lower_translation = -0.1,
+                                                     .upper_translation = 0.2,
+                                                     .enable_motor = true,
+                                                     .motor_speed = 0.1,
+                                                     .max_motor_force = 5.0,
+                                                     .enable_spring = true,
+                                                     .hertz = 3.0,
+                                                     .damping_ratio = 0.3});
+                break;
+            case 3:
+                world.create_joint(WheelJointDef{.body_a = previous,
+                                                 .body_b = b,
+                                                 .anchor = at,
+                                                 .enable_motor = true,
+                                                 .motor_speed = 1.0,
+                                                 .max_motor_torque = 3.0});
+                break;
+            case 4:
+                world.create_joint(DistanceJointDef{.body_a = previous,
+                                                    .body_b = b,
+                                                    .anchor_a = at,
+                                                    .anchor_b = at + Vec2d{0.5, 0.0},
+                                                    .hertz = 5.0,
+                                                    .damping_ratio = 0.4,
+                                                    .enable_limit = true,
+                                                    .min_length = 0.3,
+                                                    .max_length = 0.7});
+                break;
+            default:
+                world.create_joint(MotorJointDef{.body_a = previous,
+                                                 .body_b = b,
+                                                 .linear_offset = {1.0, 0.0},
+                                                 .max_force = 50.0,
+                                                 .max_torque = 20.0});
+                break;
+            }
+            if (k % 7 == 3)
+                world.create_joint(
+                    TargetJointDef{.body = b, .target = at + Vec2d{0.5, 0.0}, .max_force = 30.0});
+            previous = b;
+        }
+    }
+}
+
 } // namespace
 
 BOOST_AUTO_TEST_SUITE(parallel_step)
@@ -292,7 +383,8 @@ BOOST_AUTO_TEST_CASE(a_damped_bouncing_loaded_pile_is_bitwise_identical_on_every
     BOOST_TEST(world.contacts().size() > 2048u); // enough touching manifolds for blocks
 }
 
-// Oracle: as above, with 1120 revolute joints (solved serially between the parallel loops).
+// Oracle: as above, with 1120 revolute joints: with contact regions, the joints are split too
+// (JointStreams), and the runs' joints solved on several threads at once.
 BOOST_AUTO_TEST_CASE(jointed_chains_are_bitwise_identical_on_every_thread_count,
                      *utf::label("determinism")) {
     for (const int regions : {1, 4}) {
@@ -301,6 +393,21 @@ BOOST_AUTO_TEST_CASE(jointed_chains_are_bitwise_identical_on_every_thread_count,
             def.gravity = {0.0, -10.0};
             def.contact_regions = regions;
             check_every_threading(def, chains, 10 * step_scale);
+        }
+    }
+}
+
+// Oracle: as above, with 1380 joints of every kind and every part (limits, motors, springs),
+// 210 of them on an immovable body (30 static pins, 180 target joints), which the split leaves
+// to the stream after the runs: each kind writes only its record and its two bodies.
+BOOST_AUTO_TEST_CASE(joints_of_every_kind_are_bitwise_identical_on_every_thread_count,
+                     *utf::label("determinism")) {
+    for (const int regions : {1, 2, 3}) {
+        BOOST_TEST_CONTEXT("contact_regions = " << regions) {
+            WorldDef def;
+            def.gravity = {0.0, -10.0};
+            def.contact_regions = regions;
+            check_every_threading(def, every_kind_chains, 10 * step_scale);
         }
     }
 }

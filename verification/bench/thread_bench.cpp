@@ -5,7 +5,8 @@
 // timed by the wall clock (std::chrono::steady_clock), beside Tamias2D's process CPU time per step
 // (all threads: what the workers' waiting and spinning cost).
 //
-//   tamias_thread_bench [--scenes pyramid40,large_pyramid,rain] [--threads 1,2] [--reps 7]
+//   tamias_thread_bench [--scenes pyramid40,large_pyramid,rain,joint_grid,chain] [--threads 1,2]
+//                       [--reps 7]
 //                       [--engines tamias,v3_sse2,v3_avx2] [--v3-recycle-distance D]
 //                       [--manifold-reuse D] [--contact-regions 1,2]
 //
@@ -36,6 +37,7 @@
 #include <vector>
 
 #include "bench/bench_engines.hpp"
+#include "bench/bench_joint_scenes.hpp"
 #include "bench/bench_report.hpp"
 #include "bench/bench_scenes.hpp"
 #include "bench/remote_engine.hpp"
@@ -56,6 +58,9 @@ const std::vector<Scene> scenes = {
     {"pyramid40", [] { return make_pyramid("pyramid40", 40); }, true, 100},
     {"large_pyramid", [] { return make_pyramid("large_pyramid", 100); }, true, 40},
     {"rain", [] { return make_rain("rain", 2000); }, false, 1000},
+    // The peer benchmark's joint scenes (bench_joint_scenes.hpp), over as many steps.
+    {"joint_grid", [] { return make_joint_grid("joint_grid", 100); }, false, 500},
+    {"chain", [] { return make_chain("chain", 100); }, false, 600},
 };
 
 double process_cpu_ms() {
@@ -99,7 +104,7 @@ struct Run {
 } // namespace
 
 int main(int argc, char** argv) {
-    std::vector<std::string> names = {"pyramid40", "large_pyramid", "rain"};
+    std::vector<std::string> names = {"pyramid40", "large_pyramid", "rain", "joint_grid", "chain"};
     std::vector<int> threads = {1, 2};
     std::vector<std::string> engine_names = {"tamias"};
     int reps = 7;
@@ -163,8 +168,9 @@ int main(int argc, char** argv) {
             for (const int t : threads)
                 runs.push_back({e, t, manifold_reuse, r});
     }
-    std::printf("%-14s %-14s %7s %7s %12s %12s %9s %12s %18s\n", "scene", "engine", "regions",
-                "workers", "wall ms/step", "cpu ms/step", "speed-up", "Tamias2D/it", "state hash");
+    std::printf("%-14s %-14s %7s %7s %12s %19s %12s %9s %12s %18s\n", "scene", "engine", "regions",
+                "workers", "wall ms/step", "wall range", "cpu ms/step", "speed-up", "Tamias2D/it",
+                "state hash");
     for (const std::string& name : names) {
         const auto it = std::find_if(scenes.begin(), scenes.end(),
                                      [&](const Scene& s) { return s.name == name; });
@@ -230,9 +236,13 @@ int main(int argc, char** argv) {
             char regions_text[16] = "-";
             if (own)
                 std::snprintf(regions_text, sizeof regions_text, "%d", run.regions);
-            std::printf("%-14s %-14s %7s %7d %12.4f %12s %8.3fx %12s %18s\n", name.c_str(),
+            // The spread of the repetitions, beside their median: the machine's noise.
+            const auto [lo, hi] = std::minmax_element(times[k].wall.begin(), times[k].wall.end());
+            char range[40];
+            std::snprintf(range, sizeof range, "%.4f-%.4f", *lo, *hi);
+            std::printf("%-14s %-14s %7s %7d %12.4f %19s %12s %8.3fx %12s %18s\n", name.c_str(),
                         std::string(engine_name(run.engine)).c_str(), regions_text, run.threads, w,
-                        cpu, wall_of(run.engine, run.regions, threads[0]) / w, ratio, hash);
+                        range, cpu, wall_of(run.engine, run.regions, threads[0]) / w, ratio, hash);
         }
         std::fflush(stdout);
     }

@@ -261,20 +261,49 @@ void StepSolver::integrate_positions(double h, std::size_t begin, std::size_t en
     }
 }
 
-void StepSolver::prepare_joints(const JointStore& joints, const BodyStore& bodies) {
+template <class Each> void StepSolver::each_sim(const StepTasks& tasks, Each& each) {
+    constexpr std::size_t block = 128;
+    if (!tasks.parallel() || sims_.size() < JointStreams::min_joints) {
+        for (JointSim& s : sims_)
+            each(s);
+        return;
+    }
+    auto run = [&](int first, int last) {
+        const std::size_t end = std::min(sims_.size(), std::size_t(last) * block);
+        for (std::size_t k = std::size_t(first) * block; k < end; ++k)
+            each(sims_[k]);
+    };
+    tasks.for_each_block(blocks_of(sims_.size(), block), run);
+}
+
+template <class Each> void StepSolver::joint_pass(const StepTasks& tasks, Each& each) {
+    const std::uint32_t R = joint_streams_.regions();
+    if (R < 2 || !tasks.parallel()) { // the same order on this thread
+        for (JointSim& s : sims_)
+            each(s);
+        return;
+    }
+    auto run = [&](int first, int last) {
+        for (std::uint32_t k = joint_streams_.begin(std::uint32_t(first));
+             k < joint_streams_.begin(std::uint32_t(last)); ++k)
+            each(sims_[k]);
+    };
+    tasks.for_each_block(int(R), run);
+    for (std::size_t k = joint_streams_.begin(R); k < sims_.size(); ++k)
+        each(sims_[k]);
+}
+
+void StepSolver::prepare_joints(const JointStore& joints, const BodyStore& bodies,
+                                const StepContext& step) {
     // The moving bodies the joints hold, each once, with its angle at the step's start.
     for (const JointedBody& jb : jointed_) // the last step's marks
         listed_[jb.solver] = 0;
     jointed_.clear();
-    sims_.clear();
-    if (joints.live() == 0)
+    solved_.clear();
+    if (joints.live() == 0) {
+        sims_.clear();
         return;
-    // One rotation per solver body, then one per immovable side after them (solver body 0
-    // stands for every immovable body, each with its own angle). Reserved for every side, so
-    // that the records' pointers into it stay valid while it grows.
-    joint_rotations_.resize(solver_bodies_.size());
-    joint_rotations_.reserve(solver_bodies_.size() + 2 * std::size_t(joints.live()));
-    listed_.resize(solver_bodies_.size()); // all false: the marks are cleared above
+    }
     for (std::uint32_t i = 0; i < joints.joints.size(); ++i) {
         const Joint& j = joints.joints[i];
         if (!joints.alive(i) || j.type == JointType::filter) // (no constraint to solve)
@@ -282,34 +311,67 @@ void StepSolver::prepare_joints(const JointStore& joints, const BodyStore& bodie
         // A joint none of whose bodies is dynamic, or one holding a disabled body, is not
         // solved (World::set_body_type, set_enabled): both sides immovable this step. Nor is
         // one between two immovable bodies (both asleep, or asleep and static).
+        const std::uint32_t a = solver_index_[j.body_a], b = solver_index_[j.body_b];
         if ((bodies.bodies[j.body_a].type != BodyType::dynamic &&
              bodies.bodies[j.body_b].type != BodyType::dynamic) ||
-            bodies.disabled(j.body_a) || bodies.disabled(j.body_b) ||
-            (solver_index_[j.body_a] == 0 && solver_index_[j.body_b] == 0))
+            bodies.disabled(j.body_a) || bodies.disabled(j.body_b) || (a == 0 && b == 0))
             continue;
-        JointSim& s = sims_.emplace_back();
-        prepare_joint(s, j, i, bodies, solver_index_);
+        solved_.push_back({i, a, b, 0, 0});
+    }
+    joint_streams_.split(solved_, std::uint32_t(step.def.contact_regions),
+                         std::uint32_t(solver_bodies_.size() - 1));
+    // One rotation per solver body, then one per immovable side after them (solver body 0
+    // stands for every immovable body, each with its own angle).
+    joint_rotations_.resize(solver_bodies_.size());
+    listed_.resize(solver_bodies_.size()); // all false: the marks are cleared above
+    for (SolvedJoint& sj : solved_) {
+        const Joint& j = joints.joints[sj.joint];
         // A moving side's rotation is its body's, turned once per body (turn_joints) rather
         // than once per joint; an immovable side keeps its rotation all step.
-        for (const auto& [k, angle, q] : {std::tuple{s.solver_a, s.angle_a, &s.q_a},
-                                          std::tuple{s.solver_b, s.angle_b, &s.q_b}}) {
-            if (k == 0) {
-                *q = &joint_rotations_.emplace_back(Rot::from_angle(angle + solver_bodies_[0].dq));
-                continue;
-            }
-            *q = &joint_rotations_[k];
-            if (!listed_[k]) {
-                listed_[k] = 1;
-                jointed_.push_back({k, angle});
+        for (const auto& [solver, body, rotation] :
+             {std::tuple{sj.solver_a, j.body_a, &sj.rotation_a},
+              std::tuple{sj.solver_b, j.body_b, &sj.rotation_b}}) {
+            *rotation = solver;
+            if (solver == 0) {
+                *rotation = std::uint32_t(joint_rotations_.size());
+                joint_rotations_.push_back(
+                    Rot::from_angle(bodies.bodies[body].angle + solver_bodies_[0].dq));
+            } else if (!listed_[solver]) {
+                listed_[solver] = 1;
+                jointed_.push_back({solver, bodies.bodies[body].angle});
             }
         }
     }
-    turn_joints();
+    // The records, each its own. Only those beyond the last step's count are initialised
+    // first: prepare_joint and the pointers write every field but the softness, which solve
+    // writes.
+    sims_.resize(solved_.size());
+    auto prepare = [&](JointSim& s) {
+        const SolvedJoint& sj = solved_[std::size_t(&s - sims_.data())];
+        prepare_joint(s, joints.joints[sj.joint], sj.joint, bodies, solver_index_);
+        s.q_a = &joint_rotations_[sj.rotation_a];
+        s.q_b = &joint_rotations_[sj.rotation_b];
+    };
+    each_sim(step.tasks, prepare);
+    turn_joints(step.tasks);
 }
 
-void StepSolver::turn_joints() {
-    for (const JointedBody& jb : jointed_)
-        joint_rotations_[jb.solver] = Rot::from_angle(jb.angle + solver_bodies_[jb.solver].dq);
+void StepSolver::turn_joints(const StepTasks& tasks) {
+    auto turn = [&](std::size_t begin, std::size_t end) {
+        for (std::size_t k = begin; k < end; ++k) {
+            const JointedBody& jb = jointed_[k];
+            joint_rotations_[jb.solver] = Rot::from_angle(jb.angle + solver_bodies_[jb.solver].dq);
+        }
+    };
+    constexpr std::size_t block = 512;
+    if (!tasks.parallel() || jointed_.size() < 2 * block) {
+        turn(0, jointed_.size());
+        return;
+    }
+    auto run = [&](int first, int last) {
+        turn(std::size_t(first) * block, std::min(jointed_.size(), std::size_t(last) * block));
+    };
+    tasks.for_each_block(blocks_of(jointed_.size(), block), run);
 }
 
 // The manifolds are prepared straight into their packs, four lanes at once, in solve order (a
@@ -489,14 +551,15 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
     // DD37: a joint with a tuning of its own uses it in place of the world's.
     const Softness joint_softness = make_joint_softness(
         capped_joint_frequency(def.joint_hertz, n, dt), def.joint_damping_ratio, h);
-    for (JointSim& s : sims_) {
+    auto soften = [&](JointSim& s) {
         const Joint& j = joints[s.joint];
         s.softness =
             s.tuned ? make_tuned_joint_softness(j.tuning_hertz, j.tuning_damping_ratio, n, dt, h)
                     : joint_softness;
         if (!warm) // (the joints forget theirs once the step is accepted)
             forget_impulses(s.step);
-    }
+    };
+    each_sim(tasks, soften);
     // The touching manifolds in creation order, as the colouring sees them; those that can
     // bounce get a slot for the restitution pass's copy, also in creation order.
     const std::uint32_t bounce_count = list_edges(contacts, tasks);
@@ -525,7 +588,7 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
     // joints come before the contacts in every stage, as the later substeps have them.
     integrate_velocities(h, tasks);
     if (warm)
-        warm_start_joints(joints);
+        warm_start_joints(joints, tasks);
     const std::size_t pack_count = wide_solver_.order().size();
     constexpr std::size_t pack_block = 32; // ~10 us of lane filling and preparation
     if (streams > 1 || (tasks.parallel() && pack_count > pack_block)) {
@@ -556,16 +619,16 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
         if (sub > 0) { // the first substep's were done with the preparation
             integrate_velocities(h, tasks);
             if (warm) {
-                warm_start_joints(joints);
+                warm_start_joints(joints, tasks);
                 contact_pass(tasks, streams, nullptr, false);
             }
         }
-        solve_joints(joints, h, true);
+        solve_joints(joints, h, true, tasks);
         contact_pass(tasks, streams, &st, true);
         constrain_velocities(def.maximum_linear_speed, tasks);
         integrate_positions(h, tasks);
-        turn_joints();
-        solve_joints(joints, h, false);
+        turn_joints(tasks);
+        solve_joints(joints, h, false, tasks);
         contact_pass(tasks, streams, &st, false);
     }
     // A joint's solve can diverge where no input rule foresaw it (conflicting joints on light
@@ -576,21 +639,22 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
     // it did not solve start the next from none too).
     if (!warm)
         joint_store.forget_warm_starts();
-    for (const JointSim& s : sims_)
-        joints[s.joint].step = s.step;
+    auto keep = [&](JointSim& s) { joints[s.joint].step = s.step; };
+    each_sim(tasks, keep);
     store_impulses(contacts, tasks, bounce_count, st);
     // The velocities the step leaves keep the locks and the limit too (DD39, DD40).
     constrain_velocities(def.maximum_linear_speed, tasks);
 }
 
-void StepSolver::warm_start_joints(const memory::vector<Joint>& joints) {
-    for (const JointSim& s : sims_)
-        warm_start_joint(s, joints[s.joint], solver_bodies_);
+void StepSolver::warm_start_joints(const memory::vector<Joint>& joints, const StepTasks& tasks) {
+    auto each = [&](JointSim& s) { warm_start_joint(s, joints[s.joint], solver_bodies_); };
+    joint_pass(tasks, each);
 }
 
-void StepSolver::solve_joints(const memory::vector<Joint>& joints, double h, bool use_bias) {
-    for (JointSim& s : sims_)
-        solve_joint(s, joints[s.joint], solver_bodies_, h, use_bias);
+void StepSolver::solve_joints(const memory::vector<Joint>& joints, double h, bool use_bias,
+                              const StepTasks& tasks) {
+    auto each = [&](JointSim& s) { solve_joint(s, joints[s.joint], solver_bodies_, h, use_bias); };
+    joint_pass(tasks, each);
 }
 
 bool StepSolver::find_divergence() {

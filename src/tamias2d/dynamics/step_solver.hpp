@@ -16,6 +16,7 @@
 #include "tamias2d/dynamics/continuous.hpp"
 #include "tamias2d/dynamics/joints/joint.hpp"
 #include "tamias2d/dynamics/joints/joint_sim.hpp"
+#include "tamias2d/dynamics/joints/joint_streams.hpp"
 #include "tamias2d/dynamics/solver_body.hpp"
 #include "tamias2d/dynamics/step_context.hpp"
 #include "tamias2d/handles.hpp"
@@ -53,8 +54,10 @@ class StepSolver {
     /// the substep h): one per awake non-static body, 0 standing for every immovable one.
     /// With more than one worker, in parallel blocks of bodies, to the serial loop's results.
     void prepare_bodies(const BodyStore& bodies, const StepContext& step);
-    /// The solved joints' records (JointSim) at the step's start (after prepare_bodies).
-    void prepare_joints(const JointStore& joints, const BodyStore& bodies);
+    /// The solved joints' records (JointSim) at the step's start (after prepare_bodies), in
+    /// the joint passes' order (JointStreams); with more than one worker and enough joints, in
+    /// parallel blocks of records.
+    void prepare_joints(const JointStore& joints, const BodyStore& bodies, const StepContext& step);
     /// The substeps of the soft step over dt and the restitution pass; the contacts' impulses
     /// are stored back for the warm start and the report, the joints keep theirs.
     /// With joints, a solve whose velocities or displacements turn non-finite (the joints'
@@ -123,11 +126,18 @@ class StepSolver {
     void store_impulses(ContactManager& contacts, const StepTasks& tasks,
                         std::uint32_t bounce_count, const ContactSolverSettings& st);
     /// The jointed bodies' rotations after a position half (the records' q_a, q_b).
-    void turn_joints();
+    void turn_joints(const StepTasks& tasks);
     /// The joints' warm start, then an iteration (soft with use_bias, else the relax), each
-    /// over the solved joints' records in joint order.
-    void warm_start_joints(const memory::vector<Joint>& joints);
-    void solve_joints(const memory::vector<Joint>& joints, double h, bool use_bias);
+    /// over the solved joints' records in their streams' order (joint_pass).
+    void warm_start_joints(const memory::vector<Joint>& joints, const StepTasks& tasks);
+    void solve_joints(const memory::vector<Joint>& joints, double h, bool use_bias,
+                      const StepTasks& tasks);
+    /// each(record) for every solved joint, in order on this thread, or with the joints split
+    /// (JointStreams) and more than one worker: the runs' streams at once, then the rest.
+    template <class Each> void joint_pass(const StepTasks& tasks, Each& each);
+    /// each(record) for every solved joint, where each touches its own record only: in
+    /// parallel blocks with more than one worker and enough joints.
+    template <class Each> void each_sim(const StepTasks& tasks, Each& each);
     /// DD39 and DD40 before a position half (and at the step's end): the locked velocity
     /// components zeroed, then a speed above `max_speed` slowed to it. Nothing without a lock
     /// and with an infinite limit.
@@ -169,7 +179,9 @@ class StepSolver {
     memory::vector<JointedBody> jointed_;
     /// Per solver body, for the jointed ones; then one per immovable side of a solved joint.
     memory::vector<Rot> joint_rotations_;
-    memory::vector<JointSim> sims_; ///< the solved joints' records, in joint order
+    memory::vector<SolvedJoint> solved_; ///< the solved joints, in the passes' order
+    JointStreams joint_streams_;
+    memory::vector<JointSim> sims_; ///< the solved joints' records, as solved_
     /// Per solver body: in jointed_. Kept until the next preparation, so that write_back finds
     /// the jointed bodies' last rotations.
     memory::vector<std::uint8_t> listed_;
