@@ -252,10 +252,11 @@ inline void apply_impulse(Body& a, Body& b, V arm_a, V arm_b, u::Vec2<V> dir, V 
 // IM6, the joints' soft form, and their bounds (DD10, DD22).
 
 /// IM6's biased velocity error Cdot + beta C of a point (m s^-1, m).
-inline Vec2d biased_error(Vec2d velocity_error, double bias_rate, Vec2d position_error) {
-    return plain(m::im6::biased_velocity_error(typed<u::Velocity>(velocity_error),
-                                               u::from_value<u::Rate>(bias_rate),
-                                               typed<u::Length>(position_error)));
+template <class V>
+inline Vec2<V> biased_error(Vec2<V> velocity_error, V bias_rate, Vec2<V> position_error) {
+    return plain_vec(m::im6::biased_velocity_error(typed_vec<u::Velocity>(velocity_error),
+                                                   typed_value<u::Rate>(bias_rate),
+                                                   typed_vec<u::Length>(position_error)));
 }
 /// The same along one direction (m s^-1, m).
 inline double biased_error(double velocity_error, double bias_rate, double position_error) {
@@ -322,36 +323,42 @@ inline LimitTarget limit_target(double c, const Softness& softness, double h, bo
     return {t.velocity.value(), t.mass_scale, t.impulse_scale};
 }
 
-// DD19, the revolute joint's pin, on one pair of solver bodies (joints are solved one by one).
+// DD19, the revolute joint's pin, on one pair of solver bodies, or on four pairs at once (a
+// pack of plain pins, joints/pin_packs.hpp: Body is WideBody, V Wide).
 
 /// DD19's position error C (m): centres' offset plus the pin's offsets r_b - r_a.
-inline Vec2d pin_position_error(Vec2d center_offset, Vec2d r_a, Vec2d r_b) {
-    return plain(m::dd19::position_error(typed<u::Length>(center_offset), typed<u::Length>(r_a),
-                                         typed<u::Length>(r_b)));
+template <class V>
+inline Vec2<V> pin_position_error(Vec2<V> center_offset, Vec2<V> r_a, Vec2<V> r_b) {
+    return plain_vec(m::dd19::position_error(typed_vec<u::Length>(center_offset),
+                                             typed_vec<u::Length>(r_a), typed_vec<u::Length>(r_b)));
 }
 /// DD19's velocity error Cdot (m s^-1).
-inline Vec2d pin_velocity_error(const SolverBody& a, Vec2d r_a, const SolverBody& b, Vec2d r_b) {
-    return plain(m::dd19::velocity_error(velocities(a), typed<u::Length>(r_a), velocities(b),
-                                         typed<u::Length>(r_b)));
+template <class Body, class V = value_of<Body>>
+inline Vec2<V> pin_velocity_error(const Body& a, Vec2<V> r_a, const Body& b, Vec2<V> r_b) {
+    return plain_vec(m::dd19::velocity_error(velocities(a), typed_vec<u::Length>(r_a),
+                                             velocities(b), typed_vec<u::Length>(r_b)));
 }
 /// DD19's impulse (N s) in IM6's soft form, K from the bodies and the pin's offsets.
-inline Vec2d pin_impulse(const SolverBody& a, Vec2d r_a, const SolverBody& b, Vec2d r_b, Vec2d rhs,
-                         double mass_scale, double impulse_scale, Vec2d accumulated) {
-    const m::dd19::PinMass K = m::dd19::effective_mass_inverse(
-        inverse_inertia(a), inverse_inertia(b), typed<u::Length>(r_a), typed<u::Length>(r_b));
-    return plain(m::dd19::impulse(
-        K, typed<u::Velocity>(rhs), u::from_value<u::Dimensionless>(mass_scale),
-        u::from_value<u::Dimensionless>(impulse_scale), typed<u::Impulse>(accumulated)));
+template <class Body, class V = value_of<Body>>
+inline Vec2<V> pin_impulse(const Body& a, Vec2<V> r_a, const Body& b, Vec2<V> r_b, Vec2<V> rhs,
+                           V mass_scale, V impulse_scale, Vec2<V> accumulated) {
+    const m::dd19::PinMassOver<V> K =
+        m::dd19::effective_mass_inverse(inverse_inertia(a), inverse_inertia(b),
+                                        typed_vec<u::Length>(r_a), typed_vec<u::Length>(r_b));
+    return plain_vec(m::dd19::impulse(
+        K, typed_vec<u::Velocity>(rhs), typed_value<u::Dimensionless>(mass_scale),
+        typed_value<u::Dimensionless>(impulse_scale), typed_vec<u::Impulse>(accumulated)));
 }
 /// DD19: P on b at the pin, -P on a.
-inline void apply_pin_impulse(SolverBody& a, Vec2d r_a, SolverBody& b, Vec2d r_b, Vec2d P) {
-    m::im3::Velocities va = velocities(a);
-    m::im3::Velocities vb = velocities(b);
-    m::dd19::apply(va, vb, inverse_inertia(a), inverse_inertia(b), typed<u::Length>(r_a),
-                   typed<u::Length>(r_b), typed<u::Impulse>(P));
-    a.v = plain(va.v);
+template <class Body, class V = value_of<Body>>
+inline void apply_pin_impulse(Body& a, Vec2<V> r_a, Body& b, Vec2<V> r_b, Vec2<V> P) {
+    m::im3::VelocitiesOver<V> va = velocities(a);
+    m::im3::VelocitiesOver<V> vb = velocities(b);
+    m::dd19::apply(va, vb, inverse_inertia(a), inverse_inertia(b), typed_vec<u::Length>(r_a),
+                   typed_vec<u::Length>(r_b), typed_vec<u::Impulse>(P));
+    a.v = plain_vec(va.v);
     a.w = va.omega.value();
-    b.v = plain(vb.v);
+    b.v = plain_vec(vb.v);
     b.w = vb.omega.value();
 }
 
@@ -442,11 +449,12 @@ inline double clamp_angular_impulse(double accumulated, double max) {
         .value();
 }
 /// DD22: +lambda on b, -lambda on a (N m s).
-inline void apply_angular_impulse(SolverBody& a, SolverBody& b, double lambda) {
-    m::im3::Velocities va = velocities(a);
-    m::im3::Velocities vb = velocities(b);
+template <class Body, class V = value_of<Body>>
+inline void apply_angular_impulse(Body& a, Body& b, V lambda) {
+    m::im3::VelocitiesOver<V> va = velocities(a);
+    m::im3::VelocitiesOver<V> vb = velocities(b);
     m::dd22::apply(va, vb, inverse_inertia(a), inverse_inertia(b),
-                   m::dd22::AngularImpulse::from_value(lambda));
+                   m::dd22::AngularImpulseOver<V>::from_value(lambda));
     a.w = va.omega.value();
     b.w = vb.omega.value();
 }

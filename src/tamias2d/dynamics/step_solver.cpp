@@ -1,6 +1,7 @@
 #include "tamias2d/dynamics/step_solver.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -261,6 +262,19 @@ void StepSolver::integrate_positions(double h, std::size_t begin, std::size_t en
     }
 }
 
+template <class Range> void StepSolver::each_pack(const StepTasks& tasks, Range& range) {
+    constexpr std::size_t block = 64;
+    const std::size_t n = pin_packs_.pack_count();
+    if (!tasks.parallel() || n < 2 * block) {
+        range(0, n);
+        return;
+    }
+    auto run = [&](int first, int last) {
+        range(std::size_t(first) * block, std::min(n, std::size_t(last) * block));
+    };
+    tasks.for_each_block(blocks_of(n, block), run);
+}
+
 template <class Each> void StepSolver::each_sim(const StepTasks& tasks, Each& each) {
     constexpr std::size_t block = 128;
     if (!tasks.parallel() || sims_.size() < JointStreams::min_joints) {
@@ -276,21 +290,29 @@ template <class Each> void StepSolver::each_sim(const StepTasks& tasks, Each& ea
     tasks.for_each_block(blocks_of(sims_.size(), block), run);
 }
 
-template <class Each> void StepSolver::joint_pass(const StepTasks& tasks, Each& each) {
+template <class Single, class Packs>
+void StepSolver::joint_pass(const StepTasks& tasks, Single& single, Packs& packs) {
+    auto run_stream = [&](std::uint32_t stream) {
+        for (const PinRun& r : pin_packs_.runs(stream)) {
+            if (r.packed)
+                packs(r.pack, r.count / wide_lanes);
+            else
+                for (std::uint32_t k = r.first; k < r.first + r.count; ++k)
+                    single(sims_[k]);
+        }
+    };
     const std::uint32_t R = joint_streams_.regions();
-    if (R < 2 || !tasks.parallel()) { // the same order on this thread
-        for (JointSim& s : sims_)
-            each(s);
+    if (R < 2 || !tasks.parallel()) { // the streams in order on this thread
+        for (std::uint32_t stream = 0; stream < pin_packs_.streams(); ++stream)
+            run_stream(stream);
         return;
     }
     auto run = [&](int first, int last) {
-        for (std::uint32_t k = joint_streams_.begin(std::uint32_t(first));
-             k < joint_streams_.begin(std::uint32_t(last)); ++k)
-            each(sims_[k]);
+        for (int stream = first; stream < last; ++stream)
+            run_stream(std::uint32_t(stream));
     };
     tasks.for_each_block(int(R), run);
-    for (std::size_t k = joint_streams_.begin(R); k < sims_.size(); ++k)
-        each(sims_[k]);
+    run_stream(R); // the rest
 }
 
 void StepSolver::prepare_joints(const JointStore& joints, const BodyStore& bodies,
@@ -302,6 +324,7 @@ void StepSolver::prepare_joints(const JointStore& joints, const BodyStore& bodie
     solved_.clear();
     if (joints.live() == 0) {
         sims_.clear();
+        pin_packs_.order(solved_, {}, 0); // no streams
         return;
     }
     for (std::uint32_t i = 0; i < joints.joints.size(); ++i) {
@@ -316,10 +339,20 @@ void StepSolver::prepare_joints(const JointStore& joints, const BodyStore& bodie
              bodies.bodies[j.body_b].type != BodyType::dynamic) ||
             bodies.disabled(j.body_a) || bodies.disabled(j.body_b) || (a == 0 && b == 0))
             continue;
-        solved_.push_back({i, a, b, 0, 0});
+        const std::uint32_t pin =
+            plain_pin(j.type, j.enable_spring, j.enable_motor, j.enable_limit) ? 1 : 0;
+        solved_.push_back({i, a, b, pin, 0, 0});
     }
     joint_streams_.split(solved_, std::uint32_t(step.def.contact_regions),
                          std::uint32_t(solver_bodies_.size() - 1));
+    // Each stream's levels, its plain pins in packs of four (PinPacks).
+    const std::uint32_t R = joint_streams_.regions();
+    std::array<std::uint32_t, JointStreams::max_regions + 2> bounds{};
+    for (std::uint32_t stream = 0; stream <= R; ++stream)
+        bounds[stream] = R == 0 ? 0 : joint_streams_.begin(stream);
+    bounds[R + 1] = std::uint32_t(solved_.size());
+    pin_packs_.order(solved_, std::span<const std::uint32_t>(bounds.data(), R + 2),
+                     solver_bodies_.size());
     // One rotation per solver body, then one per immovable side after them (solver body 0
     // stands for every immovable body, each with its own angle).
     joint_rotations_.resize(solver_bodies_.size());
@@ -560,6 +593,8 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
             forget_impulses(s.step);
     };
     each_sim(tasks, soften);
+    auto load = [&](std::size_t begin, std::size_t end) { pin_packs_.load(sims_, begin, end); };
+    each_pack(tasks, load);
     // The touching manifolds in creation order, as the colouring sees them; those that can
     // bounce get a slot for the restitution pass's copy, also in creation order.
     const std::uint32_t bounce_count = list_edges(contacts, tasks);
@@ -639,6 +674,8 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
     // it did not solve start the next from none too).
     if (!warm)
         joint_store.forget_warm_starts();
+    auto store = [&](std::size_t begin, std::size_t end) { pin_packs_.store(sims_, begin, end); };
+    each_pack(tasks, store);
     auto keep = [&](JointSim& s) { joints[s.joint].step = s.step; };
     each_sim(tasks, keep);
     store_impulses(contacts, tasks, bounce_count, st);
@@ -647,14 +684,22 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
 }
 
 void StepSolver::warm_start_joints(const memory::vector<Joint>& joints, const StepTasks& tasks) {
-    auto each = [&](JointSim& s) { warm_start_joint(s, joints[s.joint], solver_bodies_); };
-    joint_pass(tasks, each);
+    auto single = [&](JointSim& s) { warm_start_joint(s, joints[s.joint], solver_bodies_); };
+    auto packs = [&](std::uint32_t first, std::uint32_t count) {
+        pin_packs_.warm_start(first, count, solver_bodies_.data());
+    };
+    joint_pass(tasks, single, packs);
 }
 
 void StepSolver::solve_joints(const memory::vector<Joint>& joints, double h, bool use_bias,
                               const StepTasks& tasks) {
-    auto each = [&](JointSim& s) { solve_joint(s, joints[s.joint], solver_bodies_, h, use_bias); };
-    joint_pass(tasks, each);
+    auto single = [&](JointSim& s) {
+        solve_joint(s, joints[s.joint], solver_bodies_, h, use_bias);
+    };
+    auto packs = [&](std::uint32_t first, std::uint32_t count) {
+        pin_packs_.solve(first, count, solver_bodies_.data(), use_bias);
+    };
+    joint_pass(tasks, single, packs);
 }
 
 bool StepSolver::find_divergence() {

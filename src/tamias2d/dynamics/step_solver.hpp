@@ -17,6 +17,7 @@
 #include "tamias2d/dynamics/joints/joint.hpp"
 #include "tamias2d/dynamics/joints/joint_sim.hpp"
 #include "tamias2d/dynamics/joints/joint_streams.hpp"
+#include "tamias2d/dynamics/joints/pin_packs.hpp"
 #include "tamias2d/dynamics/solver_body.hpp"
 #include "tamias2d/dynamics/step_context.hpp"
 #include "tamias2d/handles.hpp"
@@ -132,9 +133,15 @@ class StepSolver {
     void warm_start_joints(const memory::vector<Joint>& joints, const StepTasks& tasks);
     void solve_joints(const memory::vector<Joint>& joints, double h, bool use_bias,
                       const StepTasks& tasks);
-    /// each(record) for every solved joint, in order on this thread, or with the joints split
-    /// (JointStreams) and more than one worker: the runs' streams at once, then the rest.
-    template <class Each> void joint_pass(const StepTasks& tasks, Each& each);
+    /// One joint pass over the streams' runs (PinPacks): single(record) for a joint solved
+    /// alone, packs(first, count) for a run of packs; the streams in order on this thread, or
+    /// with the joints split (JointStreams) and more than one worker, the runs' streams at once,
+    /// then the rest.
+    template <class Single, class Packs>
+    void joint_pass(const StepTasks& tasks, Single& single, Packs& packs);
+    /// range(begin, end) over the pin packs, in parallel blocks with more than one worker and
+    /// enough packs (each pack its own).
+    template <class Range> void each_pack(const StepTasks& tasks, Range& range);
     /// each(record) for every solved joint, where each touches its own record only: in
     /// parallel blocks with more than one worker and enough joints.
     template <class Each> void each_sim(const StepTasks& tasks, Each& each);
@@ -181,6 +188,7 @@ class StepSolver {
     memory::vector<Rot> joint_rotations_;
     memory::vector<SolvedJoint> solved_; ///< the solved joints, in the passes' order
     JointStreams joint_streams_;
+    PinPacks pin_packs_;
     memory::vector<JointSim> sims_; ///< the solved joints' records, as solved_
     /// Per solver body: in jointed_. Kept until the next preparation, so that write_back finds
     /// the jointed bodies' last rotations.

@@ -20,8 +20,13 @@ struct Rot {
     }
 };
 
+/// R v for a rotation given by its cosine and sine, values of type V (double, or a pack of lanes
+/// turning four vectors at once: joints/pin_packs.cpp).
+template <class V> constexpr Vec2<V> rotate(V c, V s, Vec2<V> v) {
+    return {c * v.x - s * v.y, s * v.x + c * v.y};
+}
 constexpr Vec2d rotate(Rot q, Vec2d v) {
-    return {q.c * v.x - q.s * v.y, q.s * v.x + q.c * v.y};
+    return rotate(q.c, q.s, v);
 }
 constexpr Vec2d inv_rotate(Rot q, Vec2d v) {
     return {q.c * v.x + q.s * v.y, -q.s * v.x + q.c * v.y};

@@ -49,10 +49,14 @@ inline AngularImpulse clamp(AngularImpulse accumulated, AngularImpulse max) {
     return std::clamp(accumulated, -max, max);
 }
 
+/// An angular impulse of values of type V (double, or a pack of lanes: dd19_point_constraint.hpp).
+template <class V> using AngularImpulseOver = Over<AngularImpulse, V>;
+
 /// \srs{DD22} +Lambda on B, -Lambda on A (T2 for torques): omega changes by Lambda / I (T4),
 /// IM3's angular jump.
-inline void apply(Velocities& A, Velocities& B, InverseInertia a, InverseInertia b,
-                  AngularImpulse lambda) {
+template <class V>
+void apply(im3::VelocitiesOver<V>& A, im3::VelocitiesOver<V>& B, dd08::InverseInertiaOver<V> a,
+           dd08::InverseInertiaOver<V> b, AngularImpulseOver<V> lambda) {
     A.omega += t2::reaction(im3::angular_velocity_change(a.inv_I, lambda));
     B.omega += im3::angular_velocity_change(b.inv_I, lambda);
 }

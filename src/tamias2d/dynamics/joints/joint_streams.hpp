@@ -22,13 +22,16 @@
 
 namespace tamias2d {
 
-/// A joint the step solves, with its solver bodies (0: immovable) and its sides' rotations in
-/// the step solver's array (a moving side's is its solver body's).
+/// A joint the step solves, with its solver bodies (0: immovable), whether it is a plain pin
+/// (PinPacks::plain) and its sides' rotations in the step solver's array (a moving side's is
+/// its solver body's). No padding: PinPacks compares lists of them byte for byte.
 struct SolvedJoint {
     std::uint32_t joint = 0;
     std::uint32_t solver_a = 0, solver_b = 0;
+    std::uint32_t plain = 0;
     std::uint32_t rotation_a = 0, rotation_b = 0;
 };
+static_assert(sizeof(SolvedJoint) == 6 * sizeof(std::uint32_t));
 
 class JointStreams {
   public:

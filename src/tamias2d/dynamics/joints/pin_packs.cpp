@@ -1,0 +1,235 @@
+#include "tamias2d/dynamics/joints/pin_packs.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+#include "tamias2d/dynamics/contacts/wide_pack_loops.hpp"
+#include "tamias2d/dynamics/model_bridge.hpp"
+
+namespace tamias2d {
+
+namespace {
+
+/// The lanes' pins from their centres in the world frame: each frame turned by its body's
+/// rotation now (joint_solver.hpp's anchor_a, four at once).
+inline Vec2<Wide> anchor(const Rot* const (&q)[wide_lanes], Vec2<Wide> frame) {
+    static_assert(wide_lanes == 4);
+    const Wide c{q[0]->c, q[1]->c, q[2]->c, q[3]->c};
+    const Wide s{q[0]->s, q[1]->s, q[2]->s, q[3]->s};
+    return rotate(c, s, frame);
+}
+
+// The loops over a run of packs, each pack as joint_solver.cpp's warm_start_revolute and
+// solve_pin are for one plain pin, operation for operation.
+inline void warm_start_run(PinPack* packs, std::uint32_t count, SolverBody* bodies) {
+    for (std::uint32_t i = 0; i < count; ++i) {
+        PinPack& p = packs[i];
+        WideBody a = wide::gather(bodies, p.body_a);
+        WideBody b = wide::gather(bodies, p.body_b);
+        bridge::apply_angular_impulse(a, b, p.angular);
+        bridge::apply_pin_impulse(a, anchor(p.q_a, p.frame_a), b, anchor(p.q_b, p.frame_b),
+                                  p.impulse);
+        wide::scatter(bodies, p.body_a, a);
+        wide::scatter(bodies, p.body_b, b);
+    }
+}
+
+template <bool use_bias>
+inline void solve_run(PinPack* packs, std::uint32_t count, SolverBody* bodies) {
+    for (std::uint32_t i = 0; i < count; ++i) {
+        PinPack& p = packs[i];
+        WideBody a = wide::gather(bodies, p.body_a);
+        WideBody b = wide::gather(bodies, p.body_b);
+        const Vec2<Wide> r_a = anchor(p.q_a, p.frame_a);
+        const Vec2<Wide> r_b = anchor(p.q_b, p.frame_b);
+        Vec2<Wide> rhs = bridge::pin_velocity_error(a, r_a, b, r_b);
+        Wide mass_scale = splat(1.0), impulse_scale = splat(0.0);
+        if constexpr (use_bias) {
+            // The pins' separation now: the centres have moved by dp since the step's start.
+            const Vec2<Wide> c =
+                bridge::pin_position_error(p.center_offset + (b.dp - a.dp), r_a, r_b);
+            rhs = bridge::biased_error(rhs, p.bias_rate, c);
+            mass_scale = p.mass_scale;
+            impulse_scale = p.impulse_scale;
+        }
+        const Vec2<Wide> P =
+            bridge::pin_impulse(a, r_a, b, r_b, rhs, mass_scale, impulse_scale, p.impulse);
+        p.impulse += P;
+        bridge::apply_pin_impulse(a, r_a, b, r_b, P);
+        wide::scatter(bodies, p.body_a, a);
+        wide::scatter(bodies, p.body_b, b);
+    }
+}
+
+// One clone per instruction set (wide_pack_loops.hpp's TAMIAS_WIDE_KERNEL), each with the same
+// bits: no clone contracts a product and a sum.
+TAMIAS_WIDE_KERNEL void warm_start_kernel(PinPack* packs, std::uint32_t count, SolverBody* bodies) {
+    warm_start_run(packs, count, bodies);
+}
+TAMIAS_WIDE_KERNEL void soft_kernel(PinPack* packs, std::uint32_t count, SolverBody* bodies) {
+    solve_run<true>(packs, count, bodies);
+}
+TAMIAS_WIDE_KERNEL void relax_kernel(PinPack* packs, std::uint32_t count, SolverBody* bodies) {
+    solve_run<false>(packs, count, bodies);
+}
+
+} // namespace
+
+void PinPacks::order(memory::vector<SolvedJoint>& solved, std::span<const std::uint32_t> bounds,
+                     std::size_t body_count) {
+    // The last step's joints, bodies and pins: the last order stands (it is a function of them).
+    const bool same =
+        !stream_begin_.empty() && body_count == last_body_count_ &&
+        solved.size() == last_solved_.size() && bounds.size() == last_bounds_.size() &&
+        std::equal(bounds.begin(), bounds.end(), last_bounds_.begin()) &&
+        (solved.empty() ||
+         std::memcmp(solved.data(), last_solved_.data(), solved.size() * sizeof(SolvedJoint)) == 0);
+    if (!same) {
+        last_solved_.assign(solved.begin(), solved.end());
+        last_bounds_.assign(bounds.begin(), bounds.end());
+        last_body_count_ = body_count;
+        ordered_.resize(solved.size());
+        packs_.clear();
+        pack_first_.clear();
+        runs_.clear();
+        stream_begin_.assign(1, 0);
+        for (std::size_t s = 0; s + 1 < bounds.size(); ++s)
+            order_stream(solved, bounds[s], bounds[s + 1], body_count);
+        packs_.resize(pack_first_.size());
+    }
+    solved.assign(ordered_.begin(), ordered_.end());
+}
+
+void PinPacks::order_stream(const memory::vector<SolvedJoint>& solved, std::uint32_t first,
+                            std::uint32_t last, std::size_t body_count) {
+    if (mark_.size() < body_count)
+        mark_.resize(body_count, 0); // all zero between calls
+    const std::uint32_t n = last - first;
+    // Each joint's level: one past the last level of an earlier joint on either moving body.
+    level_of_.resize(n);
+    std::uint32_t levels = 0;
+    for (std::uint32_t k = 0; k < n; ++k) {
+        const SolvedJoint& s = solved[first + k];
+        const std::uint32_t level = std::max(s.solver_a != 0 ? mark_[s.solver_a] : 0u,
+                                             s.solver_b != 0 ? mark_[s.solver_b] : 0u);
+        level_of_[k] = level;
+        if (s.solver_a != 0)
+            mark_[s.solver_a] = level + 1;
+        if (s.solver_b != 0)
+            mark_[s.solver_b] = level + 1;
+        levels = std::max(levels, level + 1);
+    }
+    for (std::uint32_t k = first; k < last; ++k)
+        mark_[solved[k].solver_a] = mark_[solved[k].solver_b] = 0;
+    // Levels narrower than a pack on average (a chain: one joint a level) fill few packs: the
+    // stream keeps the creation order, one joint at a time (the same bits).
+    if (std::uint64_t(n) < std::uint64_t(wide_lanes) * levels) {
+        std::copy(solved.begin() + first, solved.begin() + last, ordered_.begin() + first);
+        if (n > 0)
+            runs_.push_back({first, n, 0, false});
+        stream_begin_.push_back(std::uint32_t(runs_.size()));
+        return;
+    }
+    // The joints by level, creation order within one (a counting sort).
+    level_start_.assign(std::size_t(levels) + 1, 0);
+    for (std::uint32_t k = 0; k < n; ++k)
+        ++level_start_[level_of_[k] + 1];
+    for (std::uint32_t l = 0; l < levels; ++l)
+        level_start_[l + 1] += level_start_[l];
+    sorted_.resize(n);
+    for (std::uint32_t k = 0; k < n; ++k)
+        sorted_[level_start_[level_of_[k]]++] = first + k; // level_start_[l]: now level l's end
+    // Each level: its plain pins four to a pack (all but the last one to three), then the rest
+    // one by one; the records follow in that order.
+    std::uint32_t out = first;
+    std::uint32_t begin = 0;
+    for (std::uint32_t l = 0; l < levels; ++l) {
+        const std::uint32_t end = level_start_[l];
+        std::uint32_t pins = 0;
+        for (std::uint32_t i = begin; i < end; ++i)
+            pins += solved[sorted_[i]].plain;
+        const std::uint32_t packed = pins - pins % wide_lanes;
+        if (packed > 0) {
+            const auto pack = std::uint32_t(pack_first_.size());
+            PinRun* last_run = runs_.size() > stream_begin_.back() ? &runs_.back() : nullptr;
+            if (last_run != nullptr && last_run->packed && last_run->first + last_run->count == out)
+                last_run->count += packed; // the packs of consecutive levels run as one loop
+            else
+                runs_.push_back({out, packed, pack, true});
+            for (std::uint32_t p = 0; p < packed / wide_lanes; ++p)
+                pack_first_.push_back(out + p * wide_lanes);
+        }
+        std::uint32_t taken = 0, single = out + packed;
+        const std::uint32_t singles = single;
+        for (std::uint32_t i = begin; i < end; ++i) {
+            const SolvedJoint& s = solved[sorted_[i]];
+            if (s.plain != 0 && taken < packed)
+                ordered_[out + taken++] = s;
+            else
+                ordered_[single++] = s;
+        }
+        if (single > singles) {
+            PinRun* last_run = runs_.size() > stream_begin_.back() ? &runs_.back() : nullptr;
+            if (last_run != nullptr && !last_run->packed &&
+                last_run->first + last_run->count == singles)
+                last_run->count += single - singles;
+            else
+                runs_.push_back({singles, single - singles, 0, false});
+        }
+        out = single;
+        begin = end;
+    }
+    stream_begin_.push_back(std::uint32_t(runs_.size()));
+}
+
+void PinPacks::load(std::span<const JointSim> sims, std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+        PinPack& p = packs_[i];
+        const JointSim* s = &sims[pack_first_[i]];
+        const auto pack = [&](auto field) {
+            return Wide{field(s[0]), field(s[1]), field(s[2]), field(s[3])};
+        };
+        for (int l = 0; l < wide_lanes; ++l) {
+            p.body_a[l] = s[l].solver_a;
+            p.body_b[l] = s[l].solver_b;
+            p.q_a[l] = s[l].q_a;
+            p.q_b[l] = s[l].q_b;
+        }
+        p.frame_a = {pack([](const JointSim& r) { return r.frame_a.x; }),
+                     pack([](const JointSim& r) { return r.frame_a.y; })};
+        p.frame_b = {pack([](const JointSim& r) { return r.frame_b.x; }),
+                     pack([](const JointSim& r) { return r.frame_b.y; })};
+        p.center_offset = {pack([](const JointSim& r) { return r.center_offset.x; }),
+                           pack([](const JointSim& r) { return r.center_offset.y; })};
+        p.impulse = {pack([](const JointSim& r) { return r.step.linear_impulse.x; }),
+                     pack([](const JointSim& r) { return r.step.linear_impulse.y; })};
+        p.angular = pack([](const JointSim& r) {
+            return reaction_angular_impulse(JointType::revolute, r.step);
+        });
+        p.bias_rate = pack([](const JointSim& r) { return r.softness.bias_rate; });
+        p.mass_scale = pack([](const JointSim& r) { return r.softness.mass_scale; });
+        p.impulse_scale = pack([](const JointSim& r) { return r.softness.impulse_scale; });
+    }
+}
+
+void PinPacks::store(std::span<JointSim> sims, std::size_t begin, std::size_t end) const {
+    for (std::size_t i = begin; i < end; ++i) {
+        const PinPack& p = packs_[i];
+        for (int l = 0; l < wide_lanes; ++l)
+            sims[pack_first_[i] + std::size_t(l)].step.linear_impulse = {p.impulse.x[l],
+                                                                         p.impulse.y[l]};
+    }
+}
+
+void PinPacks::warm_start(std::uint32_t first, std::uint32_t count, SolverBody* bodies) {
+    warm_start_kernel(&packs_[first], count, bodies);
+}
+
+void PinPacks::solve(std::uint32_t first, std::uint32_t count, SolverBody* bodies, bool use_bias) {
+    if (use_bias)
+        soft_kernel(&packs_[first], count, bodies);
+    else
+        relax_kernel(&packs_[first], count, bodies);
+}
+
+} // namespace tamias2d

@@ -1,0 +1,230 @@
+// Plain pins four at once (PinPacks, pin_packs.hpp) against the joint pass they stand for: the
+// sequential Gauss-Seidel pass over the joints in creation order, each joint's warm start and
+// iterations by its kind's own scalar code (joint_solver.cpp). The packs, their levels and the
+// joints solved alone between them must give that pass's bits exactly: the bodies' velocities
+// and every joint's impulses. Random scenes mix plain pins with revolute joints that have a
+// motor or limits (solved alone), put the static body 0 in some lanes, give each joint its own
+// softness, and couple bodies as chains do (a joint on a body and the next) and at random.
+#include <boost/test/unit_test.hpp>
+
+#include <cstdint>
+#include <cstring>
+#include <random>
+#include <vector>
+
+#include "tamias2d/dynamics/joints/joint_solver.hpp"
+#include "tamias2d/dynamics/joints/pin_packs.hpp"
+
+namespace utf = boost::unit_test;
+using namespace tamias2d;
+
+namespace {
+
+struct Scene {
+    std::vector<SolverBody> bodies;
+    std::vector<Rot> rotations; ///< one per body, then one per immovable side
+    std::vector<Joint> joints;
+    std::vector<JointSim> sims; ///< creation order
+};
+
+Scene random_scene(std::uint32_t seed, std::uint32_t body_count, std::uint32_t joint_count) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(-1.0, 1.0), pos(0.5, 2.0), unit(0.0, 1.0);
+    Scene s;
+    s.bodies.resize(body_count);
+    s.rotations.reserve(body_count + joint_count);
+    s.rotations.push_back(Rot{});
+    for (std::uint32_t k = 1; k < body_count; ++k) {
+        SolverBody& b = s.bodies[k];
+        b.v = {u(rng), u(rng)};
+        b.w = u(rng);
+        b.inv_m = pos(rng);
+        b.inv_I = pos(rng);
+        b.dp = {0.01 * u(rng), 0.01 * u(rng)};
+        b.dq = 0.01 * u(rng);
+        s.rotations.push_back(Rot::from_angle(3.0 * u(rng)));
+    }
+    std::uniform_int_distribution<std::uint32_t> body(1, body_count - 1);
+    for (std::uint32_t i = 0; i < joint_count; ++i) {
+        std::uint32_t a = unit(rng) < 0.1 ? 0 : body(rng);
+        std::uint32_t b = body(rng);
+        if (unit(rng) < 0.5 && a != 0 && a + 1 < body_count)
+            b = a + 1; // a chain's next link
+        if (a == b)
+            b = a + 1 < body_count ? a + 1 : 1;
+        if (a == b)
+            continue;
+        Joint j;
+        j.type = JointType::revolute;
+        const double kind = unit(rng);
+        j.enable_motor = kind > 0.85;
+        j.enable_limit = kind > 0.7 && kind <= 0.85;
+        j.motor_speed = u(rng);
+        j.max_motor = pos(rng);
+        j.lower_limit = -0.2;
+        j.upper_limit = 0.3;
+        JointSim sim;
+        sim.solver_a = a;
+        sim.solver_b = b;
+        sim.joint = std::uint32_t(s.joints.size());
+        sim.type = JointType::revolute;
+        sim.motor = j.enable_motor;
+        sim.limit = j.enable_limit;
+        const auto rotation = [&](std::uint32_t k) {
+            if (k != 0)
+                return &s.rotations[k];
+            s.rotations.push_back(Rot::from_angle(u(rng)));
+            return &s.rotations.back();
+        };
+        sim.q_a = rotation(a);
+        sim.q_b = rotation(b);
+        sim.frame_a = {0.5 * u(rng), 0.5 * u(rng)};
+        sim.frame_b = {0.5 * u(rng), 0.5 * u(rng)};
+        sim.center_offset = {u(rng), u(rng)};
+        sim.softness = {10.0 * pos(rng), 0.5 + 0.5 * unit(rng), 0.5 * unit(rng)};
+        sim.step.linear_impulse = {0.1 * u(rng), 0.1 * u(rng)};
+        // A pin that once had a motor or limits keeps their last impulses (warm started).
+        sim.step.motor_impulse = unit(rng) < 0.2 ? 0.05 * u(rng) : 0.0;
+        sim.step.lower_impulse = sim.limit ? 0.05 * unit(rng) : 0.0;
+        sim.angle_a = u(rng);
+        sim.angle_b = u(rng);
+        s.joints.push_back(j);
+        s.sims.push_back(sim);
+    }
+    return s;
+}
+
+constexpr double h = 1.0 / 240.0;
+
+/// The oracle: rounds of the warm start, the soft iteration and the relax, each over the joints
+/// one after another in creation order.
+void sequential(Scene& s, int rounds) {
+    for (int r = 0; r < rounds; ++r) {
+        for (JointSim& sim : s.sims)
+            warm_start_joint(sim, s.joints[sim.joint], s.bodies);
+        for (JointSim& sim : s.sims)
+            solve_joint(sim, s.joints[sim.joint], s.bodies, h, true);
+        for (JointSim& sim : s.sims)
+            solve_joint(sim, s.joints[sim.joint], s.bodies, h, false);
+    }
+}
+
+/// The same rounds through PinPacks: the joints ordered into streams [bounds[i], bounds[i+1]),
+/// the records in that order, each stream's runs in turn. Returns the packs made.
+std::size_t packed(Scene& s, std::span<const std::uint32_t> bounds, int rounds) {
+    memory::vector<SolvedJoint> solved;
+    for (const JointSim& sim : s.sims)
+        solved.push_back({sim.joint, sim.solver_a, sim.solver_b,
+                          plain_pin(sim.type, sim.spring, sim.motor, sim.limit) ? 1u : 0u, 0, 0});
+    PinPacks packs;
+    packs.order(solved, bounds, s.bodies.size());
+    // Ordering the same joints again keeps the order (the cached path).
+    memory::vector<SolvedJoint> again;
+    for (const JointSim& sim : s.sims)
+        again.push_back({sim.joint, sim.solver_a, sim.solver_b,
+                         plain_pin(sim.type, sim.spring, sim.motor, sim.limit) ? 1u : 0u, 0, 0});
+    packs.order(again, bounds, s.bodies.size());
+    BOOST_TEST_REQUIRE(
+        std::memcmp(again.data(), solved.data(), solved.size() * sizeof(SolvedJoint)) == 0);
+    std::vector<JointSim> records;
+    for (const SolvedJoint& sj : solved)
+        records.push_back(s.sims[sj.joint]);
+    packs.load(records, 0, packs.pack_count());
+    for (int r = 0; r < rounds; ++r) {
+        for (const bool warm : {true, false}) {
+            for (const bool bias :
+                 warm ? std::vector<bool>{false} : std::vector<bool>{true, false}) {
+                for (std::uint32_t stream = 0; stream < packs.streams(); ++stream) {
+                    for (const PinRun& run : packs.runs(stream)) {
+                        if (run.packed) {
+                            const std::uint32_t n = run.count / wide_lanes;
+                            if (warm)
+                                packs.warm_start(run.pack, n, s.bodies.data());
+                            else
+                                packs.solve(run.pack, n, s.bodies.data(), bias);
+                            continue;
+                        }
+                        for (std::uint32_t k = run.first; k < run.first + run.count; ++k) {
+                            JointSim& sim = records[k];
+                            if (warm)
+                                warm_start_joint(sim, s.joints[sim.joint], s.bodies);
+                            else
+                                solve_joint(sim, s.joints[sim.joint], s.bodies, h, bias);
+                        }
+                    }
+                }
+            }
+        }
+    }
+    packs.store(records, 0, packs.pack_count());
+    for (const JointSim& rec : records)
+        s.sims[rec.joint] = rec;
+    return packs.pack_count();
+}
+
+bool same_bits(double a, double b) {
+    return std::memcmp(&a, &b, sizeof a) == 0;
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(pin_packs)
+
+// Oracle: the sequential pass above (joint_solver.cpp's scalar code, joint by joint in creation
+// order), bit for bit, on one stream and on two (a prefix and the rest, as JointStreams makes).
+BOOST_AUTO_TEST_CASE(packs_reproduce_the_sequential_joint_pass, *utf::label("internals")) {
+    std::size_t packs_made = 0;
+    for (std::uint32_t seed = 1; seed <= 12; ++seed) {
+        for (const bool two_streams : {false, true}) {
+            BOOST_TEST_CONTEXT("seed " << seed << (two_streams ? ", two streams" : "")) {
+                const Scene scene = random_scene(seed, 30 + seed * 17, 200 + seed * 41);
+                Scene seq = scene;
+                sequential(seq, 3);
+                Scene run = scene;
+                const auto n = std::uint32_t(scene.sims.size());
+                const std::vector<std::uint32_t> bounds =
+                    two_streams ? std::vector<std::uint32_t>{0, n / 2, n}
+                                : std::vector<std::uint32_t>{0, n};
+                packs_made += packed(run, bounds, 3);
+                for (std::size_t k = 0; k < seq.bodies.size(); ++k) {
+                    BOOST_TEST_CONTEXT("body " << k) {
+                        BOOST_TEST(same_bits(run.bodies[k].v.x, seq.bodies[k].v.x));
+                        BOOST_TEST(same_bits(run.bodies[k].v.y, seq.bodies[k].v.y));
+                        BOOST_TEST(same_bits(run.bodies[k].w, seq.bodies[k].w));
+                    }
+                }
+                for (std::size_t k = 0; k < seq.sims.size(); ++k) {
+                    BOOST_TEST_CONTEXT("joint " << k) {
+                        const JointStepState &a = run.sims[k].step, &b = seq.sims[k].step;
+                        BOOST_TEST(same_bits(a.linear_impulse.x, b.linear_impulse.x));
+                        BOOST_TEST(same_bits(a.linear_impulse.y, b.linear_impulse.y));
+                        BOOST_TEST(same_bits(a.motor_impulse, b.motor_impulse));
+                        BOOST_TEST(same_bits(a.lower_impulse, b.lower_impulse));
+                        BOOST_TEST(same_bits(a.upper_impulse, b.upper_impulse));
+                    }
+                }
+            }
+        }
+    }
+    BOOST_TEST(packs_made > 100u); // the scenes do fill packs
+}
+
+// Oracle: the stated rule for a chain's shape: a stream whose levels hold fewer than four
+// joints on average keeps the creation order, as one run of joints solved alone.
+BOOST_AUTO_TEST_CASE(a_chain_keeps_the_creation_order, *utf::label("internals")) {
+    memory::vector<SolvedJoint> chain;
+    for (std::uint32_t k = 0; k < 100; ++k)
+        chain.push_back({k, k, k + 1, 1, 0, 0});
+    const memory::vector<SolvedJoint> before = chain;
+    PinPacks packs;
+    const std::uint32_t bounds[] = {0, 100};
+    packs.order(chain, bounds, 102);
+    BOOST_TEST(packs.pack_count() == 0u);
+    BOOST_TEST_REQUIRE(packs.streams() == 1u);
+    BOOST_TEST_REQUIRE(packs.runs(0).size() == 1u);
+    BOOST_TEST(packs.runs(0)[0].count == 100u);
+    for (std::size_t k = 0; k < 100; ++k)
+        BOOST_TEST(chain[k].joint == before[k].joint);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
