@@ -376,14 +376,25 @@ void StepSolver::prepare_joints(const JointStore& joints, const BodyStore& bodie
         }
     }
     // The records, each its own. Only those beyond the last step's count are initialised
-    // first: prepare_joint and the pointers write every field but the softness, which solve
-    // writes.
+    // first: prepare_joint, the pointers and the softness write every field.
     sims_.resize(solved_.size());
+    // IM6: the joints' soft bias, capped like the contacts' at a quarter of the substep rate;
+    // DD37: a joint with a tuning of its own uses it in place of the world's.
+    const WorldDef& def = step.def;
+    const int n = def.substeps;
+    const Softness joint_softness = make_joint_softness(
+        capped_joint_frequency(def.joint_hertz, n, step.dt), def.joint_damping_ratio, step.h);
     auto prepare = [&](JointSim& s) {
         const SolvedJoint& sj = solved_[std::size_t(&s - sims_.data())];
-        prepare_joint(s, joints.joints[sj.joint], sj.joint, bodies, solver_index_);
+        const Joint& j = joints.joints[sj.joint];
+        prepare_joint(s, j, sj.joint, bodies, solver_index_);
         s.q_a = &joint_rotations_[sj.rotation_a];
         s.q_b = &joint_rotations_[sj.rotation_b];
+        s.softness = s.tuned ? make_tuned_joint_softness(j.tuning_hertz, j.tuning_damping_ratio, n,
+                                                         step.dt, step.h)
+                             : joint_softness;
+        if (!def.enable_warm_starting) // (the joints forget theirs once the step is accepted)
+            forget_impulses(s.step);
     };
     each_sim(step.tasks, prepare);
     turn_joints(step.tasks);
@@ -580,19 +591,6 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
     const bool warm = def.enable_warm_starting;
     if (!warm)
         contacts.forget_warm_starts();
-    // IM6: the joints' soft bias, capped like the contacts' at a quarter of the substep rate;
-    // DD37: a joint with a tuning of its own uses it in place of the world's.
-    const Softness joint_softness = make_joint_softness(
-        capped_joint_frequency(def.joint_hertz, n, dt), def.joint_damping_ratio, h);
-    auto soften = [&](JointSim& s) {
-        const Joint& j = joints[s.joint];
-        s.softness =
-            s.tuned ? make_tuned_joint_softness(j.tuning_hertz, j.tuning_damping_ratio, n, dt, h)
-                    : joint_softness;
-        if (!warm) // (the joints forget theirs once the step is accepted)
-            forget_impulses(s.step);
-    };
-    each_sim(tasks, soften);
     auto load = [&](std::size_t begin, std::size_t end) { pin_packs_.load(sims_, begin, end); };
     each_pack(tasks, load);
     // The touching manifolds in creation order, as the colouring sees them; those that can

@@ -56,8 +56,8 @@ class StepSolver {
     /// With more than one worker, in parallel blocks of bodies, to the serial loop's results.
     void prepare_bodies(const BodyStore& bodies, const StepContext& step);
     /// The solved joints' records (JointSim) at the step's start (after prepare_bodies), in
-    /// the joint passes' order (JointStreams); with more than one worker and enough joints, in
-    /// parallel blocks of records.
+    /// the joint passes' order (JointStreams' streams, each levelled with its plain pins in
+    /// packs: PinPacks); with more than one worker and enough joints, in parallel blocks.
     void prepare_joints(const JointStore& joints, const BodyStore& bodies, const StepContext& step);
     /// The substeps of the soft step over dt and the restitution pass; the contacts' impulses
     /// are stored back for the warm start and the report, the joints keep theirs.
