@@ -8,7 +8,8 @@ changed (c -> 2c, 0 -> 1), or an assignment statement removed. The mutant is bui
 scratch copy of the repository with its own build directory (never the caller's) and judged
 by the CTest entries labelled with the SRS items that the mutated file, or a library header it
 includes, names in its \\srs tags (a file that reaches no tag: those of the files that include
-it), and by the golden state hashes of tests/determinism. A mutant is killed when they fail (or
+it), by the golden state hashes of tests/determinism and by the snapshot suite of
+tests/snapshot. A mutant is killed when they fail (or
 time out); one that passes is judged again in an ASan and UBSan build of the same copy, where a
 sanitizer report kills it; it survives when it passes there too. A mutant is stillborn when it
 does not compile, not built when its objects come out bit for bit as the unmutated ones (a
@@ -588,13 +589,17 @@ def ctest_entries(catalogue, labels, targets=()):
 # item, so their entries carry the category label "determinism", not an item's. Every mutant
 # of the model and the dynamics is judged by them too: a change in any step's arithmetic shows
 # in a hash, also where no labelled test looks (a joint's generation, an unread default that
-# the hash reads).
-GOLDEN_TARGETS = ("determinism_tests",)
+# the hash reads). So is it by the snapshot suite (tests/snapshot, the category labels
+# determinism, reliability and scene): each store of the dynamics writes and reads its part of
+# a snapshot, and that suite's oracles (a restored world continues with the same bits and
+# writes the same bytes; a forged snapshot is refused, naming its field) are the only tests of
+# that code.
+GOLDEN_TARGETS = ("determinism_tests", "snapshot_tests")
 
 
 def entries_of(catalogue, labels, relpath):
     """The CTest entries that judge a mutant of relpath: those of its labels, and the golden
-    hashes for a file of the model or the dynamics."""
+    hashes and the snapshot suite for a file of the model or the dynamics."""
     golden = GOLDEN_TARGETS if relpath.startswith(tuple(d + "/" for d in TARGET_DIRS)) else ()
     return ctest_entries(catalogue, labels, golden)
 
@@ -978,7 +983,8 @@ def make_doc(results, judgements, *, population, chosen, selection, complete, pr
                        "copy, judged by the CTest entries labelled with the SRS items the mutated "
                        "file's \\srs tags, or those of the library headers it includes, name (a "
                        "file that reaches no tag: those of the files that include it), and by the "
-                       "golden state hashes (tests/determinism); "
+                       "golden state hashes (tests/determinism) and the snapshot suite "
+                       "(tests/snapshot); "
                        + ("a survivor is judged again in an ASan and UBSan build, where a "
                           "sanitizer report kills it" if selection.get("sanitizer", True) else
                           "survivors not judged again in an ASan and UBSan build (--no-sanitizer: "
@@ -996,7 +1002,8 @@ def make_doc(results, judgements, *, population, chosen, selection, complete, pr
                                + ("the score (every mutant judged)" if complete else
                                   "the lower bound of the score's 95 % interval (a sample)")),
                     "figure": figure,
-                    "oracle": "the SRS-labelled tests and the golden state hashes fail on each "
+                    "oracle": "the SRS-labelled tests, the golden state hashes or the snapshot "
+                              "suite fail on each "
                               "mutant, or a survivor's tests report an error in the sanitizer "
                               "build; survivors judged equivalent are argued in "
                               "verification/mutation/survivors.json",
@@ -1004,7 +1011,7 @@ def make_doc(results, judgements, *, population, chosen, selection, complete, pr
         "tables": [{"name": "Mutants", "columns": ["id", "where", "mutation", "labels (tests run)",
                                                    "verdict", "seconds (build + tests)"],
                     "rows": [[r["id"], f"{r['file']}:{r['line']}", r["op"],
-                              ", ".join(r["labels"] + (["golden hashes"] if any(
+                              ", ".join(r["labels"] + (["golden hashes, snapshots"] if any(
                                   t.split("@", 1)[0] in GOLDEN_TARGETS for t in r["tests"])
                                   else [])),
                               r["verdict"] + (" (sanitizer)" if r.get("killed_by") == "sanitizer"

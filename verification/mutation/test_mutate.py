@@ -274,18 +274,22 @@ class Judges(unittest.TestCase):
 
     CATALOGUE = [{"name": n, "properties": [{"name": "LABELS", "value": [n.split("@")[1]]}]}
                  for n in ("model_tests@DD8", "engine_tests@IM3", "engine_tests@R7",
-                           "determinism_tests@determinism", "reliability_tests@determinism")]
+                           "determinism_tests@determinism", "reliability_tests@determinism",
+                           "snapshot_tests@determinism", "snapshot_tests@reliability")]
+    GOLDEN = {"determinism_tests@determinism": "determinism_tests",
+              "snapshot_tests@determinism": "snapshot_tests",
+              "snapshot_tests@reliability": "snapshot_tests"}
 
     def test_golden_hashes_judge_every_mutant_of_the_model_and_the_dynamics(self):
         for rel in ("src/tamias2d/dynamics/joints/joint_store.cpp", "src/tamias2d/model/x.hpp"):
             with self.subTest(rel=rel):
                 self.assertEqual(mutate.entries_of(self.CATALOGUE, ["IM3"], rel),
-                                 {"engine_tests@IM3": "engine_tests",
-                                  "determinism_tests@determinism": "determinism_tests"})
-        # A file with no label is judged by the golden hashes alone; a test of another target
-        # carrying the same category label (run-to-run repeatability) is not one of them.
+                                 {"engine_tests@IM3": "engine_tests", **self.GOLDEN})
+        # A file with no label is judged by the golden hashes and the snapshot suite (every entry
+        # of it) alone; a test of another target carrying the same category label (run-to-run
+        # repeatability) is not one of them.
         self.assertEqual(mutate.entries_of(self.CATALOGUE, [], "src/tamias2d/dynamics/y.cpp"),
-                         {"determinism_tests@determinism": "determinism_tests"})
+                         self.GOLDEN)
 
     def sanitizer_run(self, asan_log, unmutated_fails=False):
         """SanitizerScratch.judge of a mutant whose tests fail in the sanitizer build with

@@ -449,7 +449,6 @@ void BodyStore::read(SnapshotReader& in, memory::vector<std::uint32_t>& had_load
     in.in("bodies");
     slots.read(in);
     const std::size_t n = slots.size();
-    in.require(n <= null_index - 1, "slots", "must be fewer than 4294967295", in.offset());
     bodies.resize(n);
     settings.resize(n);
     sleep_states.resize(n);

@@ -269,7 +269,6 @@ void ShapeStore::read(SnapshotReader& in) {
     in.in("shapes");
     slots.read(in);
     const std::size_t n = slots.size();
-    in.require(n <= null_index - 1, "slots", "must be fewer than 4294967295", in.offset());
     shapes.resize(n);
     defs.resize(n);
     memory::vector<std::size_t> at(n);

@@ -110,6 +110,7 @@ template <class Id> class SlotMap {
     /// Reads what write wrote into these slots (the tag kept); throws SnapshotError for a live
     /// slot of generation 0, or free slots that are not the dead slots, each once.
     template <class Reader> void read(Reader& in) {
+        // At most 0xFFFFFFFE slots: every index stays below null_index.
         const std::size_t n = in.count("slots", 5, 0xFFFFFFFEu);
         slots_.assign(n, Slot{});
         live_count_ = 0;

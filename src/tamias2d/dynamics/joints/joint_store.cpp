@@ -325,7 +325,6 @@ void JointStore::read(SnapshotReader& in, const BodyStore& bodies) {
     in.in("joints");
     slots.read(in);
     const std::size_t n = slots.size();
-    in.require(n <= null_index - 1, "slots", "must be fewer than 4294967295", in.offset());
     joints.resize(n);
     breakable_ = false;
     levers_checked_at_ = ~std::uint64_t{0};
