@@ -48,19 +48,12 @@ LineFrame line_frame(const JointSim& s, const Joint& j, const SolverBody& a, con
 void solve_pin(JointSim& s, SolverBody& a, SolverBody& b, const Softness& softness, bool use_bias) {
     const Vec2d r_a = anchor_a(s);
     const Vec2d r_b = anchor_b(s);
-    Vec2d rhs = bridge::pin_velocity_error(a, r_a, b, r_b);
-    double mass_scale = 1.0, impulse_scale = 0.0;
-    if (use_bias) {
-        // The pins' separation now: the centres have moved by dp since the step's start.
-        const Vec2d c = bridge::pin_position_error(s.center_offset + (b.dp - a.dp), r_a, r_b);
-        rhs = bridge::biased_error(rhs, softness.bias_rate, c);
-        mass_scale = softness.mass_scale;
-        impulse_scale = softness.impulse_scale;
-    }
-    const Vec2d P =
-        bridge::pin_impulse(a, r_a, b, r_b, rhs, mass_scale, impulse_scale, s.step.linear_impulse);
-    s.step.linear_impulse += P;
-    bridge::apply_pin_impulse(a, r_a, b, r_b, P);
+    if (use_bias)
+        pin_iteration<true>(a, b, r_a, r_b, s.center_offset, softness.bias_rate,
+                            softness.mass_scale, softness.impulse_scale, s.step.linear_impulse);
+    else
+        pin_iteration<false>(a, b, r_a, r_b, s.center_offset, softness.bias_rate,
+                             softness.mass_scale, softness.impulse_scale, s.step.linear_impulse);
 }
 
 void solve_angular_motor(JointSim& s, const Joint& j, SolverBody& a, SolverBody& b, double h) {

@@ -48,8 +48,28 @@ struct LineFrame {
 };
 LineFrame line_frame(const JointSim& s, const Joint& j, const SolverBody& a, const SolverBody& b);
 
-/// \srs{IM6} DD19's pin (revolute, weld): with use_bias the soft solve that also pulls the
-/// pins together, without it the rigid relax.
+/// \srs{IM6} DD19's pin iteration on bodies a and b: SolverBody for one pin, or WideBody for
+/// four at once (pin_packs.cpp: V is then Wide), with the pins r_a, r_b from the centres now.
+/// The impulse that stops the pin's velocity error, accumulated into `impulse` and applied; with
+/// use_bias the soft solve that also pulls the pins together (their separation from the centres'
+/// offset at the step's start and the centres' motion since), without it the rigid relax.
+template <bool use_bias, class Body, class V = bridge::value_of<Body>>
+void pin_iteration(Body& a, Body& b, Vec2<V> r_a, Vec2<V> r_b, Vec2<V> center_offset, V bias_rate,
+                   V soft_mass_scale, V soft_impulse_scale, Vec2<V>& impulse) {
+    Vec2<V> rhs = bridge::pin_velocity_error(a, r_a, b, r_b);
+    V mass_scale = broadcast<V>(1.0), impulse_scale = broadcast<V>(0.0);
+    if constexpr (use_bias) {
+        const Vec2<V> c = bridge::pin_position_error(center_offset + (b.dp - a.dp), r_a, r_b);
+        rhs = bridge::biased_error(rhs, bias_rate, c);
+        mass_scale = soft_mass_scale;
+        impulse_scale = soft_impulse_scale;
+    }
+    const Vec2<V> P = bridge::pin_impulse(a, r_a, b, r_b, rhs, mass_scale, impulse_scale, impulse);
+    impulse += P;
+    bridge::apply_pin_impulse(a, r_a, b, r_b, P);
+}
+
+/// \srs{IM6} DD19's pin (revolute, weld): pin_iteration with the record's pins and impulse.
 void solve_pin(JointSim& s, SolverBody& a, SolverBody& b, const Softness& softness, bool use_bias);
 /// DD22's motor on the relative turn, its accumulation bounded by max_motor h.
 void solve_angular_motor(JointSim& s, const Joint& j, SolverBody& a, SolverBody& b, double h);

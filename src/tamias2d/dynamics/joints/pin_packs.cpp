@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "tamias2d/dynamics/contacts/wide_pack_loops.hpp"
+#include "tamias2d/dynamics/joints/joint_solver.hpp"
 #include "tamias2d/dynamics/model_bridge.hpp"
 
 namespace tamias2d {
@@ -19,8 +20,9 @@ inline Vec2<Wide> anchor(const Rot* const (&q)[wide_lanes], Vec2<Wide> frame) {
     return rotate(c, s, frame);
 }
 
-// The loops over a run of packs, each pack as joint_solver.cpp's warm_start_revolute and
-// solve_pin are for one plain pin, operation for operation.
+// The loops over a run of packs: each pack's warm start as joint_solver.cpp's
+// warm_start_revolute is for one plain pin, operation for operation, and its iteration the same
+// pin_iteration as solve_pin's.
 inline void warm_start_run(PinPack* packs, std::uint32_t count, SolverBody* bodies) {
     for (std::uint32_t i = 0; i < count; ++i) {
         PinPack& p = packs[i];
@@ -40,22 +42,9 @@ inline void solve_run(PinPack* packs, std::uint32_t count, SolverBody* bodies) {
         PinPack& p = packs[i];
         WideBody a = wide::gather(bodies, p.body_a);
         WideBody b = wide::gather(bodies, p.body_b);
-        const Vec2<Wide> r_a = anchor(p.q_a, p.frame_a);
-        const Vec2<Wide> r_b = anchor(p.q_b, p.frame_b);
-        Vec2<Wide> rhs = bridge::pin_velocity_error(a, r_a, b, r_b);
-        Wide mass_scale = splat(1.0), impulse_scale = splat(0.0);
-        if constexpr (use_bias) {
-            // The pins' separation now: the centres have moved by dp since the step's start.
-            const Vec2<Wide> c =
-                bridge::pin_position_error(p.center_offset + (b.dp - a.dp), r_a, r_b);
-            rhs = bridge::biased_error(rhs, p.bias_rate, c);
-            mass_scale = p.mass_scale;
-            impulse_scale = p.impulse_scale;
-        }
-        const Vec2<Wide> P =
-            bridge::pin_impulse(a, r_a, b, r_b, rhs, mass_scale, impulse_scale, p.impulse);
-        p.impulse += P;
-        bridge::apply_pin_impulse(a, r_a, b, r_b, P);
+        pin_iteration<use_bias>(a, b, anchor(p.q_a, p.frame_a), anchor(p.q_b, p.frame_b),
+                                p.center_offset, p.bias_rate, p.mass_scale, p.impulse_scale,
+                                p.impulse);
         wide::scatter(bodies, p.body_a, a);
         wide::scatter(bodies, p.body_b, b);
     }
