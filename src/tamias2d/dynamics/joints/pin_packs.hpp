@@ -31,13 +31,13 @@
 
 namespace tamias2d {
 
-/// Four plain pins' records as packs, a lane each: loaded from their JointSims once the step's
-/// softness is set, their impulses stored back once the step is solved.
 /// A revolute joint with no spring, motor or limit: its solve is DD19's pin alone.
 inline bool plain_pin(JointType type, bool spring, bool motor, bool limit) {
     return type == JointType::revolute && !spring && !motor && !limit;
 }
 
+/// Four plain pins' records as packs, a lane each: loaded from their JointSims once the
+/// records are prepared, their impulses stored back once the step is solved.
 struct alignas(wide_alignment) PinPack {
     Vec2<Wide> frame_a{}, frame_b{}; ///< m, the pins from the centres, body frames
     Vec2<Wide> center_offset{};      ///< m, p_B - p_A at the step's start
