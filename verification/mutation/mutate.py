@@ -639,7 +639,8 @@ def judge(m, src, build, entries, test_timeout, objects=None, env=None, commands
             if all(objects.get(path) == digest for path, digest in rebuilt.items()):
                 return ("not built", f"{len(rebuilt)} objects rebuilt, each as unmutated",
                         t1 - t0, 0.0, [])
-        failed, out = run_tests(entries, commands, test_timeout, env=env)
+        failed, out = run_tests(entries, commands, test_timeout, env=env,
+                                key=(m["file"], env is not None))
         t2 = time.monotonic()
         if failed:
             return "killed", out, t1 - t0, t2 - t1, failed
@@ -665,62 +666,96 @@ def commands_of(catalogue):
     return out
 
 
-# Seconds each test executable took at its last run with its entries' labels (per label), so
-# that the longest starts first: the other process runs the short ones meanwhile.
+# Seconds each test executable took at its last run with its entries' labels (per label; to its
+# first failure when it failed), and how often it ran on a mutant of each file and how often it
+# killed it there: the run order below.
 _COSTS = {}
+_KILLS = {}  # (key, executable target) -> [kills, runs to the end or to a failure]
+
+# Boost.Test's report of a failed check or of an uncaught exception or signal, as it is logged
+# (at its default log level, each line flushed as the check fails): the executable will exit
+# with a failure whatever its other cases do.
+FIRST_FAILURE = re.compile(rb'(?:^|\n)[^\n]*: (?:fatal )?error: in "')
 
 
-def run_tests(entries, commands, test_timeout, env=None, jobs=2):
+def _order(units, key):
+    """The executables of units in their run order: the most kills per second on mutants of key
+    (the mutated file and which build) first, from the runs so far (the Laplace estimate of the
+    kill rate, (k + 1) / (n + 2), over the executable's last time), so a mutant that some test
+    kills is most often killed by the first executable that runs; the longest first among
+    equals, so a survivor's two-at-a-time run ends soonest."""
+    def rank(kv):
+        target, u = kv
+        cost = _COSTS.get(target, 1.0) * len(u["labels"])
+        k, n = _KILLS.get((key, target), (0, 0))
+        return (-(k + 1) / (n + 2) / max(cost, 0.05), -cost, target)
+    return sorted(units.items(), key=rank)
+
+
+def run_tests(entries, commands, test_timeout, env=None, jobs=2, key=None):
     """Runs the tests of entries ({CTest name: target}) and returns (failed, log): the entries
     of the executables that failed or ran past test_timeout (none when all pass) and their
     output. Each executable runs once, with the union of its entries' labels
     (--run_test=@A:@B), not once per entry as CTest would: a case that carries several of the
-    labels runs once. Two run at a time; at the first failure the others are stopped."""
+    labels runs once. Two run at a time, in the order of _order (key: the mutated file and the
+    build). An executable is stopped as soon as it logs a failed check (it has failed: its exit
+    status could only say so later), and at the first failure the others are stopped."""
     units = {}
     for n, target in sorted(entries.items()):
         exe, cwd = commands[n]
         u = units.setdefault(target, {"exe": exe, "cwd": cwd, "labels": [], "names": []})
         u["labels"].append(n.split("@", 1)[1])
         u["names"].append(n)
-    todo = sorted(units.items(), key=lambda kv: (-_COSTS.get(kv[0], 1e9) * len(kv[1]["labels"]),
-                                                 kv[0]))
+    todo = _order(units, key)
     full_env = None if env is None else {**os.environ, **env}
     running, failed, log = [], [], []
     try:
         while todo or running:
             while todo and len(running) < jobs and not failed:
                 target, u = todo.pop(0)
-                out = tempfile.TemporaryFile(mode="w+")
+                # Bytes: it is read while being written, perhaps within a character.
+                out = tempfile.TemporaryFile(mode="w+b")
                 p = subprocess.Popen([u["exe"], "--run_test=" + ":".join("@" + x for x in
                                                                           u["labels"]),
                                       "--color_output=no"], cwd=u["cwd"] or None, stdout=out,
                                      stderr=subprocess.STDOUT, env=full_env)
-                running.append((p, target, u, out, time.monotonic()))
+                running.append([p, target, u, out, time.monotonic(), 0, b""])
             if failed:
                 break
             time.sleep(0.02)
             for item in list(running):
-                p, target, u, out, t0 = item
+                p, target, u, out, t0, seen, tail = item
                 rc = p.poll()
                 late = rc is None and time.monotonic() - t0 > test_timeout
+                early = False
                 if rc is None and not late:
-                    continue
+                    out.seek(seen)
+                    new = out.read()
+                    item[5] = out.tell()
+                    early = FIRST_FAILURE.search(tail + new) is not None
+                    item[6] = (tail + new)[-400:]
+                    if not early:
+                        continue
                 running.remove(item)
-                if late:
+                if late or early:
                     p.kill()
                     p.wait()
-                else:
+                if not late:  # to its end or to its first failure: what a kill costs
                     _COSTS[target] = (time.monotonic() - t0) / len(u["labels"])
-                if late or rc != 0:
+                stats = _KILLS.setdefault((key, target), [0, 0])
+                stats[1] += 1
+                if late or early or rc != 0:
+                    stats[0] += 1
                     failed += u["names"]
                     out.seek(0)
-                    text = out.read()
+                    text = out.read().decode("utf-8", "replace")
                     log.append(f"{target} {' '.join('@' + x for x in u['labels'])}: "
                                + (f"time-out after {test_timeout} s" if late else
+                                  "stopped at its first failed check" if early else
                                   f"exit status {rc}") + "\n" + text[-20000:])
                 out.close()
     finally:
-        for p, _, _, out, _ in running:
+        for p, _, _, out, *_ in running:
             p.kill()
             p.wait()
             out.close()

@@ -526,6 +526,51 @@ class Tests(unittest.TestCase):
             self.assertEqual(failed, ["slow@A"])
             self.assertIn("time-out after 1 s", log)
 
+    def test_an_executable_is_stopped_at_its_first_failed_check(self):
+        # Boost.Test's own line for a failed check; the executable would go on for 30 s and
+        # then exit 0 here, so only the stop can make it fail within the bound.
+        with tempfile.TemporaryDirectory() as d:
+            exe = script(os.path.join(d, "engine_tests"),
+                         'echo \'test.cpp(12): error: in "suite/case": check a == b has '
+                         'failed [1 != 2]\'; sleep 30')
+            t0 = mutate.time.monotonic()
+            failed, log = mutate.run_tests({"engine_tests@IM3": "engine_tests"},
+                                           {"engine_tests@IM3": (exe, d)}, 60)
+            self.assertLess(mutate.time.monotonic() - t0, 20)
+            self.assertEqual(failed, ["engine_tests@IM3"])
+            self.assertIn("stopped at its first failed check", log)
+            self.assertIn("check a == b has failed", log)
+
+    def test_the_executable_that_killed_a_files_mutants_runs_first_on_that_file(self):
+        with tempfile.TemporaryDirectory() as d:
+            order = os.path.join(d, "order")
+            a = script(os.path.join(d, "a"), f'echo a >> {order}')
+            b = script(os.path.join(d, "b"), f'echo b >> {order}; exit 1')
+            commands = {"a@X": (a, d), "b@X": (b, d)}
+            entries = {n: n.split("@")[0] for n in commands}
+            saved = dict(mutate._KILLS), dict(mutate._COSTS)
+            try:
+                mutate._KILLS.clear()
+                mutate._COSTS.clear()
+                # The two take as long (set before each run, so that the host's load leaves
+                # only the kill rates to order them; equal ones: by name).
+                for _ in range(3):  # b kills each time; a, never run after the first
+                    mutate._COSTS.update(a=1.0, b=1.0)
+                    mutate.run_tests(entries, commands, 30, jobs=1, key="f.cpp")
+                with open(order) as fh:
+                    self.assertEqual(fh.read().split(), ["a", "b", "b", "b"])
+                os.remove(order)
+                # Another file's mutants have no record yet: the first order again.
+                mutate._COSTS.update(a=1.0, b=1.0)
+                mutate.run_tests(entries, commands, 30, jobs=1, key="g.cpp")
+                with open(order) as fh:
+                    self.assertEqual(fh.read().split(), ["a", "b"])
+            finally:
+                mutate._KILLS.clear()
+                mutate._KILLS.update(saved[0])
+                mutate._COSTS.clear()
+                mutate._COSTS.update(saved[1])
+
 
 @unittest.skipUnless(all(shutil.which(t) for t in ("cmake", "ninja", "c++")),
                      "needs cmake, ninja and a C++ compiler")
