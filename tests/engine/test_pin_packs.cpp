@@ -129,7 +129,17 @@ std::size_t packed(Scene& s, std::span<const std::uint32_t> bounds, int rounds) 
     std::vector<JointSim> records;
     for (const SolvedJoint& sj : solved)
         records.push_back(s.sims[sj.joint]);
-    packs.load(records, 0, packs.pack_count());
+    // Each pack's lanes as the step solver fills them, from what each pin's record holds.
+    for (std::size_t p = 0; p < packs.pack_count(); ++p) {
+        for (int lane = 0; lane < wide_lanes; ++lane) {
+            const JointSim& r = records[packs.first_record(p) + std::size_t(lane)];
+            BOOST_TEST_REQUIRE(packs.in_pack(packs.first_record(p) + std::size_t(lane)));
+            packs.fill(p, lane,
+                       {r.solver_a, r.solver_b, r.q_a, r.q_b, r.frame_a, r.frame_b, r.center_offset,
+                        r.step.linear_impulse,
+                        reaction_angular_impulse(JointType::revolute, r.step), r.softness});
+        }
+    }
     for (int r = 0; r < rounds; ++r) {
         for (const bool warm : {true, false}) {
             for (const bool bias :
@@ -156,7 +166,10 @@ std::size_t packed(Scene& s, std::span<const std::uint32_t> bounds, int rounds) 
             }
         }
     }
-    packs.store(records, 0, packs.pack_count());
+    for (std::size_t p = 0; p < packs.pack_count(); ++p)
+        for (int lane = 0; lane < wide_lanes; ++lane)
+            records[packs.first_record(p) + std::size_t(lane)].step.linear_impulse =
+                packs.impulse(p, lane);
     for (const JointSim& rec : records)
         s.sims[rec.joint] = rec;
     return packs.pack_count();

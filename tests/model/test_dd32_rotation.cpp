@@ -2,6 +2,8 @@
 // (model/dd32_rotation.hpp, math/sincos.hpp), within 1 ulp of the exact values.
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -120,6 +122,67 @@ BOOST_AUTO_TEST_CASE(odd_sine_even_cosine_and_special_values, *utf::label("DD32"
           std::numeric_limits<double>::quiet_NaN()}) {
         BOOST_TEST(std::isnan(rotation(bad).sin.value()));
         BOOST_TEST(std::isnan(rotation(bad).cos.value()));
+    }
+}
+
+// Oracle: each orientation's own rotation (the scalar path, within 1 ulp of the references
+// above) and, independently, sin and cos in long double (within 1 ulp where the argument is
+// below 2^31). The batch (the lanes of a vector register) must give the same bits for every
+// argument the engine can meet and any other: random ones in [-pi, pi] and [-2^20, 2^20], small
+// and signed zeros, each binade's hardest argument with its neighbours and negation, arguments
+// beyond the lanes' reduction (2^21 and up), infinities and NaN, in batches of every length from
+// 1 to 9 (a vector's lanes and its tail) and of 2 x 10^5.
+BOOST_AUTO_TEST_CASE(a_batch_has_each_rotations_bits, *utf::label("DD32")) {
+    std::vector<double> phis = {0.0,
+                                -0.0,
+                                0x1p-1074,
+                                -0x1p-1060,
+                                1e-300,
+                                0.785398163397448,
+                                -0.7853981633974484,
+                                0x1.9p+20,
+                                0x1.8ffffffffffffp+20,
+                                0x1p21,
+                                -1e300,
+                                std::numeric_limits<double>::infinity(),
+                                -std::numeric_limits<double>::infinity(),
+                                std::numeric_limits<double>::quiet_NaN()};
+    for (double x : test::trig_hard_arguments)
+        for (double phi : {x, std::nextafter(x, 0.0), std::nextafter(x, 2 * x), -x})
+            phis.push_back(phi);
+    std::mt19937_64 rng(15);
+    for (double bound : {3.141592653589793, 0x1p20, 1e-3}) {
+        std::uniform_real_distribution<double> u(-bound, bound);
+        for (int i = 0; i < 100'000; ++i)
+            phis.push_back(u(rng));
+    }
+    auto same = [](double a, double b) {
+        return std::isnan(a) ? std::isnan(b)
+                             : std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+    };
+    std::vector<double> c(phis.size()), s(phis.size());
+    model::dd32::rotations(phis.data(), c.data(), s.data(), phis.size());
+    std::size_t differ = 0, first = 0;
+    MaxError m;
+    for (std::size_t k = 0; k < phis.size(); ++k) {
+        const model::dd32::Rotation r = rotation(phis[k]);
+        if ((!same(c[k], r.cos.value()) || !same(s[k], r.sin.value())) && differ++ == 0)
+            first = k;
+        if (std::isfinite(phis[k]) && std::fabs(phis[k]) < 0x1p31) {
+            const LongSinCos ref = test::long_double_sincos(phis[k]);
+            m.sin = std::max(m.sin, test::ulp_error(s[k], ref.sin));
+            m.cos = std::max(m.cos, test::ulp_error(c[k], ref.cos));
+        }
+    }
+    BOOST_TEST(differ == 0u, differ << " of " << phis.size() << " differ from rotation, first at "
+                                    << std::hexfloat << phis[first]);
+    BOOST_TEST(m.sin < 1.0);
+    BOOST_TEST(m.cos < 1.0);
+    for (std::size_t n = 1; n <= 9; ++n) { // every tail, from the hard arguments' start
+        std::vector<double> cn(n), sn(n);
+        model::dd32::rotations(phis.data() + 14, cn.data(), sn.data(), n);
+        for (std::size_t k = 0; k < n; ++k)
+            BOOST_TEST((same(cn[k], c[14 + k]) && same(sn[k], s[14 + k])), "n = " << n);
     }
 }
 

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
-"""The constants of src/tamias2d/math/sincos.cpp and quadrant_reduction.cpp, computed from
-scratch with Python's standard library only (integers, fractions, decimal):
+"""The constants of src/tamias2d/math/sincos_kernels.hpp and quadrant_reduction.hpp/.cpp,
+computed from scratch with Python's standard library only (integers, fractions, decimal):
 
 * pi to 1400 bits by Machin's formula (pi/4 = 4 atan(1/5) - atan(1/239)), in integers; its
   first hexadecimal digits are checked against the well-known expansion 3.243f6a8885a308d3...;

@@ -318,9 +318,7 @@ void StepSolver::joint_pass(const StepTasks& tasks, Single& single, Packs& packs
 void StepSolver::prepare_joints(const JointStore& joints, const BodyStore& bodies,
                                 const StepContext& step) {
     // The moving bodies the joints hold, each once, with its angle at the step's start.
-    for (const JointedBody& jb : jointed_) // the last step's marks
-        listed_[jb.solver] = 0;
-    jointed_.clear();
+    joint_rotations_.begin(solver_bodies_.size());
     solved_.clear();
     if (joints.live() == 0) {
         sims_.clear();
@@ -335,13 +333,18 @@ void StepSolver::prepare_joints(const JointStore& joints, const BodyStore& bodie
         // solved (World::set_body_type, set_enabled): both sides immovable this step. Nor is
         // one between two immovable bodies (both asleep, or asleep and static).
         const std::uint32_t a = solver_index_[j.body_a], b = solver_index_[j.body_b];
-        if ((bodies.bodies[j.body_a].type != BodyType::dynamic &&
-             bodies.bodies[j.body_b].type != BodyType::dynamic) ||
+        const Body& body_a = bodies.bodies[j.body_a];
+        const Body& body_b = bodies.bodies[j.body_b];
+        if ((body_a.type != BodyType::dynamic && body_b.type != BodyType::dynamic) ||
             bodies.disabled(j.body_a) || bodies.disabled(j.body_b) || (a == 0 && b == 0))
             continue;
         const std::uint32_t pin =
             plain_pin(j.type, j.enable_spring, j.enable_motor, j.enable_limit) ? 1 : 0;
-        solved_.push_back({i, a, b, pin, 0, 0});
+        // A moving side's rotation is its body's, turned once per body rather than once per
+        // joint; an immovable side's is its own (solver body 0 stands for every immovable body).
+        const double dq0 = solver_bodies_[0].dq;
+        solved_.push_back({i, a, b, pin, joint_rotations_.side(a, body_a.angle, dq0),
+                           joint_rotations_.side(b, body_b.angle, dq0)});
     }
     joint_streams_.split(solved_, std::uint32_t(step.def.contact_regions),
                          std::uint32_t(solver_bodies_.size() - 1));
@@ -353,30 +356,9 @@ void StepSolver::prepare_joints(const JointStore& joints, const BodyStore& bodie
     bounds[R + 1] = std::uint32_t(solved_.size());
     pin_packs_.order(solved_, std::span<const std::uint32_t>(bounds.data(), R + 2),
                      solver_bodies_.size());
-    // One rotation per solver body, then one per immovable side after them (solver body 0
-    // stands for every immovable body, each with its own angle).
-    joint_rotations_.resize(solver_bodies_.size());
-    listed_.resize(solver_bodies_.size()); // all false: the marks are cleared above
-    for (SolvedJoint& sj : solved_) {
-        const Joint& j = joints.joints[sj.joint];
-        // A moving side's rotation is its body's, turned once per body (turn_joints) rather
-        // than once per joint; an immovable side keeps its rotation all step.
-        for (const auto& [solver, body, rotation] :
-             {std::tuple{sj.solver_a, j.body_a, &sj.rotation_a},
-              std::tuple{sj.solver_b, j.body_b, &sj.rotation_b}}) {
-            *rotation = solver;
-            if (solver == 0) {
-                *rotation = std::uint32_t(joint_rotations_.size());
-                joint_rotations_.push_back(
-                    Rot::from_angle(bodies.bodies[body].angle + solver_bodies_[0].dq));
-            } else if (!listed_[solver]) {
-                listed_[solver] = 1;
-                jointed_.push_back({solver, bodies.bodies[body].angle});
-            }
-        }
-    }
-    // The records, each its own. Only those beyond the last step's count are initialised
-    // first: prepare_joint, the pointers and the softness write every field.
+    // The records, each its own (a packed pin's is its pack's lane, and its record stays unmade).
+    // Only those beyond the last step's count are initialised first: prepare_joint, the
+    // pointers and the softness write every field.
     sims_.resize(solved_.size());
     // IM6: the joints' soft bias, capped like the contacts' at a quarter of the substep rate;
     // DD37: a joint with a tuning of its own uses it in place of the world's.
@@ -384,38 +366,83 @@ void StepSolver::prepare_joints(const JointStore& joints, const BodyStore& bodie
     const int n = def.substeps;
     const Softness joint_softness = make_joint_softness(
         capped_joint_frequency(def.joint_hertz, n, step.dt), def.joint_damping_ratio, step.h);
+    const auto softness_of = [&](const Joint& j) {
+        return j.tuned ? make_tuned_joint_softness(j.tuning_hertz, j.tuning_damping_ratio, n,
+                                                   step.dt, step.h)
+                       : joint_softness;
+    };
+    const Rot* rotations = joint_rotations_.data();
     auto prepare = [&](JointSim& s) {
-        const SolvedJoint& sj = solved_[std::size_t(&s - sims_.data())];
+        const std::size_t k = std::size_t(&s - sims_.data());
+        if (pin_packs_.in_pack(k)) // its pack's lane holds it (fill, below)
+            return;
+        const SolvedJoint& sj = solved_[k];
         const Joint& j = joints.joints[sj.joint];
         prepare_joint(s, j, sj.joint, bodies, solver_index_);
-        s.q_a = &joint_rotations_[sj.rotation_a];
-        s.q_b = &joint_rotations_[sj.rotation_b];
-        s.softness = s.tuned ? make_tuned_joint_softness(j.tuning_hertz, j.tuning_damping_ratio, n,
-                                                         step.dt, step.h)
-                             : joint_softness;
+        s.q_a = rotations + sj.rotation_a;
+        s.q_b = rotations + sj.rotation_b;
+        s.softness = softness_of(j);
         if (!def.enable_warm_starting) // (the joints forget theirs once the step is accepted)
             forget_impulses(s.step);
     };
     each_sim(step.tasks, prepare);
+    // The packed pins straight into their lanes, as their records would hold them: no record is
+    // written and read back.
+    // The packs take their joints level by level, a sparse sweep of the joints and bodies that
+    // the hardware prefetcher does not follow: each joint's three lines are asked for eight
+    // packs ahead, its bodies' two (local centre, centre) four ahead, once the joint's first
+    // line (which names them) has come.
+    const auto joint_of = [&](std::size_t p, int lane) -> const Joint& {
+        return joints.joints[solved_[pin_packs_.first_record(p) + std::size_t(lane)].joint];
+    };
+    auto fill = [&](std::size_t begin, std::size_t end) {
+        for (std::size_t p = begin; p < end; ++p) {
+            for (int lane = 0; lane < wide_lanes; ++lane) {
+                if (p + 8 < end) {
+                    const char* line = reinterpret_cast<const char*>(&joint_of(p + 8, lane));
+                    for (std::size_t off = 0; off < 192; off += 64)
+                        prefetch(line + off);
+                }
+                if (p + 4 < end) {
+                    const Joint& ahead = joint_of(p + 4, lane);
+                    for (const std::uint32_t body : {ahead.body_a, ahead.body_b}) {
+                        const char* line = reinterpret_cast<const char*>(&bodies.bodies[body]);
+                        prefetch(line);
+                        prefetch(line + 64);
+                    }
+                }
+                const SolvedJoint& sj = solved_[pin_packs_.first_record(p) + std::size_t(lane)];
+                const Joint& j = joints.joints[sj.joint];
+                const PinFrames f = pin_frames(j, bodies.bodies[j.body_a], bodies.bodies[j.body_b]);
+                JointStepState st = j.step;
+                if (!def.enable_warm_starting)
+                    forget_impulses(st);
+                pin_packs_.fill(
+                    p, lane,
+                    {sj.solver_a, sj.solver_b, rotations + sj.rotation_a, rotations + sj.rotation_b,
+                     f.frame_a, f.frame_b, f.center_offset, st.linear_impulse,
+                     reaction_angular_impulse(JointType::revolute, st), softness_of(j)});
+            }
+        }
+    };
+    each_pack(step.tasks, fill);
     turn_joints(step.tasks);
 }
 
 void StepSolver::turn_joints(const StepTasks& tasks) {
     auto turn = [&](std::size_t begin, std::size_t end) {
-        for (std::size_t k = begin; k < end; ++k) {
-            const JointedBody& jb = jointed_[k];
-            joint_rotations_[jb.solver] = Rot::from_angle(jb.angle + solver_bodies_[jb.solver].dq);
-        }
+        joint_rotations_.turn(solver_bodies_.data(), begin, end);
     };
     constexpr std::size_t block = 512;
-    if (!tasks.parallel() || jointed_.size() < 2 * block) {
-        turn(0, jointed_.size());
+    const std::size_t moving = joint_rotations_.moving();
+    if (!tasks.parallel() || moving < 2 * block) {
+        turn(0, moving);
         return;
     }
     auto run = [&](int first, int last) {
-        turn(std::size_t(first) * block, std::min(jointed_.size(), std::size_t(last) * block));
+        turn(std::size_t(first) * block, std::min(moving, std::size_t(last) * block));
     };
-    tasks.for_each_block(blocks_of(jointed_.size(), block), run);
+    tasks.for_each_block(blocks_of(moving, block), run);
 }
 
 // The manifolds are prepared straight into their packs, four lanes at once, in solve order (a
@@ -591,8 +618,6 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
     const bool warm = def.enable_warm_starting;
     if (!warm)
         contacts.forget_warm_starts();
-    auto load = [&](std::size_t begin, std::size_t end) { pin_packs_.load(sims_, begin, end); };
-    each_pack(tasks, load);
     // The touching manifolds in creation order, as the colouring sees them; those that can
     // bounce get a slot for the restitution pass's copy, also in creation order.
     const std::uint32_t bounce_count = list_edges(contacts, tasks);
@@ -672,9 +697,18 @@ void StepSolver::solve(ContactManager& contacts, JointStore& joint_store, const 
     // it did not solve start the next from none too).
     if (!warm)
         joint_store.forget_warm_starts();
-    auto store = [&](std::size_t begin, std::size_t end) { pin_packs_.store(sims_, begin, end); };
+    // (A packed pin's step changes only in its pin's impulse.)
+    auto store = [&](std::size_t begin, std::size_t end) {
+        for (std::size_t p = begin; p < end; ++p)
+            for (int lane = 0; lane < wide_lanes; ++lane)
+                joints[solved_[pin_packs_.first_record(p) + std::size_t(lane)].joint]
+                    .step.linear_impulse = pin_packs_.impulse(p, lane);
+    };
     each_pack(tasks, store);
-    auto keep = [&](JointSim& s) { joints[s.joint].step = s.step; };
+    auto keep = [&](JointSim& s) {
+        if (!pin_packs_.in_pack(std::size_t(&s - sims_.data())))
+            joints[s.joint].step = s.step;
+    };
     each_sim(tasks, keep);
     store_impulses(contacts, tasks, bounce_count, st);
     // The velocities the step leaves keep the locks and the limit too (DD39, DD40).
@@ -703,7 +737,7 @@ void StepSolver::solve_joints(const memory::vector<Joint>& joints, double h, boo
 bool StepSolver::find_divergence() {
     // Contacts alone have not been seen to diverge, and worlds without joints skip the pass.
     diverged_ = null_index;
-    if (jointed_.empty())
+    if (joint_rotations_.moving() == 0)
         return false;
     for (std::size_t k = 1; k < solver_bodies_.size(); ++k) {
         const SolverBody& sb = solver_bodies_[k];
@@ -853,7 +887,7 @@ void StepSolver::write_back(BodyStore& store, ShapeStore& shape_store, const Wor
     // A body whose every point moved less than the speculative distance cannot reach a shape
     // it had no contact with at the step's start: only the others are swept (DD29).
     const double seen = def.speculative_distance;
-    const bool jointed = !jointed_.empty();
+    const bool jointed = joint_rotations_.moving() != 0;
     // Solver body 0 stands for the bodies that did not move: static, asleep or destroyed
     // (their lines are neither asked for nor read).
     for (std::uint32_t i = begin; i < end; ++i) {
@@ -907,8 +941,9 @@ void StepSolver::write_back(BodyStore& store, ShapeStore& shape_store, const Wor
         b.angle += sb.dq;
         // A jointed body's rotation was turned to this angle, the same sum, after the last
         // position half (turn_joints).
-        b.xf.q = jointed && listed_[solver_index_[i]] ? joint_rotations_[solver_index_[i]]
-                                                      : Rot::from_angle(b.angle);
+        const std::uint32_t solver = solver_index_[i];
+        b.xf.q = jointed && joint_rotations_.jointed(solver) ? joint_rotations_.rotation(solver)
+                                                             : Rot::from_angle(b.angle);
         b.xf.p = b.center - rotate(b.xf.q, b.local_center);
         if (b.loaded) {
             b.force_once = {};

@@ -15,6 +15,7 @@
 #include "tamias2d/dynamics/contacts/wide_contact_solver.hpp"
 #include "tamias2d/dynamics/continuous.hpp"
 #include "tamias2d/dynamics/joints/joint.hpp"
+#include "tamias2d/dynamics/joints/joint_rotations.hpp"
 #include "tamias2d/dynamics/joints/joint_sim.hpp"
 #include "tamias2d/dynamics/joints/joint_streams.hpp"
 #include "tamias2d/dynamics/joints/pin_packs.hpp"
@@ -178,21 +179,11 @@ class StepSolver {
     memory::vector<ContactConstraint> bouncing_; ///< manifolds with restitution, creation order
     WideContactSolver wide_solver_;
     PackStreams pack_streams_;
-    /// The moving bodies some joint holds: solver body and angle at the step's start.
-    struct JointedBody {
-        std::uint32_t solver;
-        double angle;
-    };
-    memory::vector<JointedBody> jointed_;
-    /// Per solver body, for the jointed ones; then one per immovable side of a solved joint.
-    memory::vector<Rot> joint_rotations_;
+    JointRotations joint_rotations_;
     memory::vector<SolvedJoint> solved_; ///< the solved joints, in the passes' order
     JointStreams joint_streams_;
     PinPacks pin_packs_;
     memory::vector<JointSim> sims_; ///< the solved joints' records, as solved_
-    /// Per solver body: in jointed_. Kept until the next preparation, so that write_back finds
-    /// the jointed bodies' last rotations.
-    memory::vector<std::uint8_t> listed_;
     ContinuousPass continuous_;
     /// finalize's parallel form, per body: bit 0 swept by the continuous pass (from starts_),
     /// bit 1 some shape undecided (undecided_, per shape).

@@ -6,17 +6,8 @@
 namespace tamias2d::math {
 namespace {
 
-// Every constant below is computed from pi to 1400 bits (Machin's formula, checked against pi's
-// known hexadecimal digits) by verification/trig/trig_constants.py.
-constexpr double two_over_pi = 0x1.45f306dc9c883p-1;
-// Cody and Waite (Software Manual for the Elementary Functions, 1980, ch. 8): pi/2 = c1 + c2 +
-// c3 + c4 to 2^-160, c1 to c3 of 33 significant bits each, so that n ck is exact for n <= 2^20.
-constexpr double c1 = 0x1.921fb544p+0;
-constexpr double c2 = 0x1.0b4611a6p-34;
-constexpr double c3 = 0x1.3198a2ep-69;
-constexpr double c4 = 0x1.b839a252049c1p-104;
-/// Below this n = round(x 2/pi) <= 1043038 < 2^20.
-constexpr double cody_waite_limit = 0x1.9p+20;
+// Every constant below (and cody_waite's) is computed from pi to 1400 bits (Machin's formula,
+// checked against pi's known hexadecimal digits) by verification/trig/trig_constants.py.
 /// pi/2 as a double-double.
 constexpr double pio2_hi = 0x1.921fb54442d18p+0;
 constexpr double pio2_lo = 0x1.1a62633145c07p-54;
@@ -32,17 +23,6 @@ constexpr std::uint32_t two_over_pi_bits[41] = {
     0x8a5292ea, 0x6bfb5fb1, 0x1f8d5d08, 0x56033046, 0xfc7b6bab, 0xf0cfbc20};
 
 constexpr std::uint64_t low32 = 0xffffffffu;
-
-QuadrantReduction cody_waite(double x) {
-    // n = round(x 2/pi): adding 1.5 2^52 rounds to an integer (round to nearest, no excess
-    // precision: FLT_EVAL_METHOD == 0, sincos.cpp checks it).
-    const double n = (x * two_over_pi + 0x1.8p52) - 0x1.8p52;
-    const double r = x - n * c1; // exact: n c1 is, and x lies within [n c1 / 2, 2 n c1] (Sterbenz)
-    const DoubleDouble a = two_sum(r, -(n * c2));
-    const DoubleDouble b = two_sum(a.hi, -(n * c3));
-    const double lo = (a.lo + b.lo) - n * c4;
-    return {static_cast<int>(static_cast<std::int64_t>(n) & 3), two_sum(b.hi, lo)};
-}
 
 /// Payne and Hanek ("Radian reduction for trigonometric functions", SIGNUM Newsletter 18(1),
 /// 1983): x = m 2^e (m < 2^53) times 2/pi modulo 4, from the 192 bits of 2/pi that matter: the
@@ -114,7 +94,11 @@ QuadrantReduction payne_hanek(double x) {
 } // namespace
 
 QuadrantReduction reduce_quadrant(double x) {
-    return x < cody_waite_limit ? cody_waite(x) : payne_hanek(x);
+    if (x < cody_waite::limit) {
+        const cody_waite::Reduction red = cody_waite::reduce(x);
+        return {static_cast<int>(static_cast<std::int64_t>(red.n) & 3), red.r};
+    }
+    return payne_hanek(x);
 }
 
 } // namespace tamias2d::math

@@ -1,5 +1,8 @@
 #pragma once
+#include <cstddef>
+
 #include "tamias2d/math/sincos.hpp"
+#include "tamias2d/math/sincos_batch.hpp"
 #include "tamias2d/units/quantities.hpp"
 
 namespace tamias2d::model::dd32 {
@@ -17,6 +20,13 @@ struct Rotation {
 inline Rotation rotation(Angle phi) {
     const math::SinCos r = math::sincos(phi.value());
     return {Dimensionless::from_value(r.cos), Dimensionless::from_value(r.sin)};
+}
+
+/// \srs{DD32} rotation(phi) of n orientations at once, phi[k] (rad) to cos[k] and sin[k], each
+/// with rotation's bits: the sincos of many arguments in the lanes of a vector register
+/// (math/sincos_batch.hpp). Plain doubles: a batch is an array, not one quantity.
+inline void rotations(const double* phi, double* cos, double* sin, std::size_t n) {
+    math::sincos_batch(phi, sin, cos, n);
 }
 
 } // namespace tamias2d::model::dd32

@@ -14,6 +14,11 @@
 
 namespace tamias2d {
 
+PinFrames pin_frames(const Joint& j, const Body& a, const Body& b) {
+    return {j.local_anchor_a - a.local_center, j.local_anchor_b - b.local_center,
+            b.center - a.center};
+}
+
 void prepare_joint(JointSim& s, const Joint& j, std::uint32_t index, const BodyStore& store,
                    const memory::vector<std::uint32_t>& solver_index) {
     const Body& a = store.bodies[j.body_a];
@@ -26,9 +31,10 @@ void prepare_joint(JointSim& s, const Joint& j, std::uint32_t index, const BodyS
     s.motor = j.enable_motor;
     s.limit = j.enable_limit;
     s.tuned = j.tuned;
-    s.frame_a = j.local_anchor_a - a.local_center;
-    s.frame_b = j.local_anchor_b - b.local_center;
-    s.center_offset = b.center - a.center;
+    const PinFrames f = pin_frames(j, a, b);
+    s.frame_a = f.frame_a;
+    s.frame_b = f.frame_b;
+    s.center_offset = f.center_offset;
     s.reference_angle = j.reference_angle;
     s.angle_a = a.angle;
     s.angle_b = b.angle;

@@ -18,6 +18,14 @@
 namespace tamias2d {
 
 struct BodyStore;
+struct Body;
+
+/// A pin's geometry at the step's start: the anchors' offsets from their bodies' centres (body
+/// frames) and the centres' offset p_B - p_A, from joint j on bodies a and b.
+struct PinFrames {
+    Vec2d frame_a, frame_b, center_offset;
+};
+PinFrames pin_frames(const Joint& j, const Body& a, const Body& b);
 
 /// Fills s, joint j's record for this step: its solver bodies, the anchors' offsets from the
 /// centres (body frames), the bodies' angles and the centres' offset at the step's start, and

@@ -85,6 +85,9 @@ void PinPacks::order(memory::vector<SolvedJoint>& solved, std::span<const std::u
         for (std::size_t s = 0; s + 1 < bounds.size(); ++s)
             order_stream(solved, bounds[s], bounds[s + 1], body_count);
         packs_.resize(pack_first_.size());
+        in_pack_.assign(solved.size(), 0);
+        for (const std::uint32_t first : pack_first_)
+            std::fill_n(in_pack_.begin() + first, wide_lanes, std::uint8_t{1});
     }
     solved.assign(ordered_.begin(), ordered_.end());
 }
@@ -171,43 +174,24 @@ void PinPacks::order_stream(const memory::vector<SolvedJoint>& solved, std::uint
     stream_begin_.push_back(std::uint32_t(runs_.size()));
 }
 
-void PinPacks::load(std::span<const JointSim> sims, std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i) {
-        PinPack& p = packs_[i];
-        const JointSim* s = &sims[pack_first_[i]];
-        const auto pack = [&](auto field) {
-            return Wide{field(s[0]), field(s[1]), field(s[2]), field(s[3])};
-        };
-        for (int l = 0; l < wide_lanes; ++l) {
-            p.body_a[l] = s[l].solver_a;
-            p.body_b[l] = s[l].solver_b;
-            p.q_a[l] = s[l].q_a;
-            p.q_b[l] = s[l].q_b;
-        }
-        p.frame_a = {pack([](const JointSim& r) { return r.frame_a.x; }),
-                     pack([](const JointSim& r) { return r.frame_a.y; })};
-        p.frame_b = {pack([](const JointSim& r) { return r.frame_b.x; }),
-                     pack([](const JointSim& r) { return r.frame_b.y; })};
-        p.center_offset = {pack([](const JointSim& r) { return r.center_offset.x; }),
-                           pack([](const JointSim& r) { return r.center_offset.y; })};
-        p.impulse = {pack([](const JointSim& r) { return r.step.linear_impulse.x; }),
-                     pack([](const JointSim& r) { return r.step.linear_impulse.y; })};
-        p.angular = pack([](const JointSim& r) {
-            return reaction_angular_impulse(JointType::revolute, r.step);
-        });
-        p.bias_rate = pack([](const JointSim& r) { return r.softness.bias_rate; });
-        p.mass_scale = pack([](const JointSim& r) { return r.softness.mass_scale; });
-        p.impulse_scale = pack([](const JointSim& r) { return r.softness.impulse_scale; });
-    }
-}
-
-void PinPacks::store(std::span<JointSim> sims, std::size_t begin, std::size_t end) const {
-    for (std::size_t i = begin; i < end; ++i) {
-        const PinPack& p = packs_[i];
-        for (int l = 0; l < wide_lanes; ++l)
-            sims[pack_first_[i] + std::size_t(l)].step.linear_impulse = {p.impulse.x[l],
-                                                                         p.impulse.y[l]};
-    }
+void PinPacks::fill(std::size_t pack, int lane, const PinLane& pin) {
+    PinPack& p = packs_[pack];
+    p.body_a[lane] = pin.body_a;
+    p.body_b[lane] = pin.body_b;
+    p.q_a[lane] = pin.q_a;
+    p.q_b[lane] = pin.q_b;
+    p.frame_a.x[lane] = pin.frame_a.x;
+    p.frame_a.y[lane] = pin.frame_a.y;
+    p.frame_b.x[lane] = pin.frame_b.x;
+    p.frame_b.y[lane] = pin.frame_b.y;
+    p.center_offset.x[lane] = pin.center_offset.x;
+    p.center_offset.y[lane] = pin.center_offset.y;
+    p.impulse.x[lane] = pin.impulse.x;
+    p.impulse.y[lane] = pin.impulse.y;
+    p.angular[lane] = pin.angular;
+    p.bias_rate[lane] = pin.softness.bias_rate;
+    p.mass_scale[lane] = pin.softness.mass_scale;
+    p.impulse_scale[lane] = pin.softness.impulse_scale;
 }
 
 void PinPacks::warm_start(std::uint32_t first, std::uint32_t count, SolverBody* bodies) {

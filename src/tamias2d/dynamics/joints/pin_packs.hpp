@@ -9,10 +9,11 @@
 // level's last one to three pins, are solved one by one. The static body 0 may sit in several
 // lanes of a pack: its inverse mass is 0, so every lane writes back its unchanged zeros.
 //
-// The solved joints are put in that order before their records are made (a pack's four
-// records are then neighbours), and a step whose solved joints, bodies and plain pins are the
-// last step's reuses its order without levelling again. A stream whose levels hold fewer than
-// four joints on average (a chain: one a level) keeps the creation order, one joint at a time.
+// The solved joints are put in that order before their records are made (a packed pin has
+// none: its lane is filled from its joint), and a step whose solved joints, bodies and plain
+// pins are the last step's reuses its order without levelling again. A stream whose levels hold
+// fewer than four joints on average (a chain: one a level) keeps the creation order, one joint at a
+// time.
 //
 // Why: a pin's solve is a chain of dependent scalar operations on two bodies; four unrelated
 // pins fill the four lanes of a pack of doubles (AVX2), as the contacts' packs do.
@@ -23,6 +24,7 @@
 
 #include "tamias2d/dynamics/joints/joint_sim.hpp"
 #include "tamias2d/dynamics/joints/joint_streams.hpp"
+#include "tamias2d/dynamics/softness.hpp"
 #include "tamias2d/dynamics/solver_body.hpp"
 #include "tamias2d/math/vec2d.hpp"
 #include "tamias2d/math/wide.hpp"
@@ -36,8 +38,20 @@ inline bool plain_pin(JointType type, bool spring, bool motor, bool limit) {
     return type == JointType::revolute && !spring && !motor && !limit;
 }
 
-/// Four plain pins' records as packs, a lane each: loaded from their JointSims once the
-/// records are prepared, their impulses stored back once the step is solved.
+/// One plain pin as a pack's lane holds it (what its JointSim would hold for its solve).
+struct PinLane {
+    std::uint32_t body_a = 0, body_b = 0; ///< solver bodies
+    const Rot* q_a = nullptr;             ///< the bodies' rotations (JointSim::q_a)
+    const Rot* q_b = nullptr;
+    Vec2d frame_a{}, frame_b{}; ///< m, the pin from each centre, body frame
+    Vec2d center_offset{};      ///< m, p_B - p_A at the step's start
+    Vec2d impulse{};            ///< N s, the pin's accumulated impulse
+    double angular = 0.0;       ///< N m s, the warm start's angular impulse
+    Softness softness{};
+};
+
+/// Four plain pins as packs, a lane each: filled from their joints when the step's joints are
+/// prepared (a packed pin has no JointSim), their impulses read back once the step is solved.
 struct alignas(wide_alignment) PinPack {
     Vec2<Wide> frame_a{}, frame_b{}; ///< m, the pins from the centres, body frames
     Vec2<Wide> center_offset{};      ///< m, p_B - p_A at the step's start
@@ -73,10 +87,15 @@ class PinPacks {
     }
     std::size_t pack_count() const { return pack_first_.size(); }
 
-    /// Packs [begin, end) from their records (after the softness).
-    void load(std::span<const JointSim> sims, std::size_t begin, std::size_t end);
-    /// Packs [begin, end)'s impulses into their records.
-    void store(std::span<JointSim> sims, std::size_t begin, std::size_t end) const;
+    /// Pack `pack`'s four pins are the records [first_record(pack), first_record(pack) + 4) of
+    /// the passes' order, whose records are never made (in_pack).
+    std::uint32_t first_record(std::size_t pack) const { return pack_first_[pack]; }
+    bool in_pack(std::size_t record) const { return in_pack_[record] != 0; }
+    /// Lane `lane` of pack `pack`, and the pin's impulse there once solved.
+    void fill(std::size_t pack, int lane, const PinLane& pin);
+    Vec2d impulse(std::size_t pack, int lane) const {
+        return {packs_[pack].impulse.x[lane], packs_[pack].impulse.y[lane]};
+    }
     /// The warm start, or an iteration (soft with use_bias, else the relax), of `count` packs
     /// from `first`.
     void warm_start(std::uint32_t first, std::uint32_t count, SolverBody* bodies);
@@ -89,6 +108,7 @@ class PinPacks {
 
     LargeArray<PinPack> packs_;
     memory::vector<std::uint32_t> pack_first_; ///< per pack: its first record
+    memory::vector<std::uint8_t> in_pack_;     ///< per record: in a pack
     memory::vector<PinRun> runs_;
     memory::vector<std::uint32_t> stream_begin_; ///< into runs_, streams() + 1 of them
     /// The last order's input (solved and bounds) and output.
