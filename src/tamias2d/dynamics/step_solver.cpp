@@ -387,11 +387,10 @@ void StepSolver::prepare_joints(const JointStore& joints, const BodyStore& bodie
     };
     each_sim(step.tasks, prepare);
     // The packed pins straight into their lanes, as their records would hold them: no record is
-    // written and read back.
-    // The packs take their joints level by level, a sparse sweep of the joints and bodies that
-    // the hardware prefetcher does not follow: each joint's three lines are asked for eight
-    // packs ahead, its bodies' two (local centre, centre) four ahead, once the joint's first
-    // line (which names them) has come.
+    // written and read back. The packs take their joints level by level, a sparse sweep of the
+    // joints and bodies that the hardware prefetcher does not follow: each joint's three lines
+    // are asked for eight packs ahead, its bodies' two (local centre, centre) four ahead, once
+    // the joint's first line (which names them) has come.
     const auto joint_of = [&](std::size_t p, int lane) -> const Joint& {
         return joints.joints[solved_[pin_packs_.first_record(p) + std::size_t(lane)].joint];
     };
