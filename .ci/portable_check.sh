@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
-# CI: the portable packs (TAMIAS_PORTABLE_LANES: plain structures instead of GCC/Clang vector
-# extensions, as MSVC gets them) must give bit for bit the results of the vector build. Builds
-# the CLI with the option into build-portable, runs every example scene through it and through
-# build/apps/cli/tamias2d (built by the test suite), and fails unless the outputs are
-# byte-identical. It also runs the golden-hash test (tests/determinism) in the portable build:
-# the same committed hashes as the vector builds, Release and ASan, must come out.
+# The main job's "other platforms" phase (CI leaves it out for time): the portable packs
+# (TAMIAS_PORTABLE_LANES: plain structures instead of GCC/Clang vector extensions, as MSVC gets
+# them) must give bit for bit the results of the vector build. Builds the CLI with the option into
+# build-portable, runs every example scene through it and through build/apps/cli/tamias2d (built by
+# the test suite), and fails unless the outputs are byte-identical. It also runs the golden-hash
+# test (tests/determinism) in the portable build: the same committed hashes as the vector builds,
+# Release and ASan, must come out.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 

@@ -1,19 +1,19 @@
 #!/usr/bin/env bash
-# CI: the determinism tests in WebAssembly in a browser: the objects .ci/wasm_check.sh runs in
-# Node.js (scripts/build_wasm.sh: Debian 12's emscripten, musl's libm, -O2 -ffp-contract=off)
-# linked a second time for the web (scripts/build_wasm.sh --determinism-tests-web: the example
-# scenes, the golden file and the recordings embedded in the module), and the page
-# build-wasm/web/determinism_tests.html opened from file:// in Debian's headless Chromium. All
-# the cases of tests/determinism/: every example scene at every checkpoint (steps 1, 10, every
-# 100th and the last), on one worker and on four (the four run one after another on the calling
-# thread: the module has no threads), and the committed recordings replayed on one and four
-# workers. The same golden file as the x86-64 builds must come out: the script fails unless
-# Boost.Test reports "No errors detected" and main returns 0 before the timeout
-# (TAMIAS_BROWSER_TIMEOUT seconds, default 300).
-# Run after .ci/wasm_check.sh (its objects are reused: only the link and the page are new), on
-# 2 shared cores: 15 to 25 s to link and 4 to 8 s in Chromium, the tests' own share of it about
-# 3.5 s (--log_level=test_suite prints each case's time); from nothing (every object compiled)
-# about 2 minutes more. Installs emscripten, nodejs and chromium when missing.
+# The main job's "other platforms" phase (CI leaves it out for time): the determinism tests in
+# WebAssembly in a browser: the objects .ci/wasm_check.sh runs in Node.js (scripts/build_wasm.sh:
+# Debian 12's emscripten, musl's libm, -O2 -ffp-contract=off) linked a second time for the web
+# (scripts/build_wasm.sh --determinism-tests-web: the example scenes, the golden file and the
+# recordings embedded in the module), and the page build-wasm/web/determinism_tests.html opened from
+# file:// in Debian's headless Chromium. All the cases of tests/determinism/: every example scene at
+# every checkpoint (steps 1, 10, every 100th and the last), on one worker and on four (the four run
+# one after another on the calling thread: the module has no threads), and the committed recordings
+# replayed on one and four workers. The same golden file as the x86-64 builds must come out: the
+# script fails unless Boost.Test reports "No errors detected" and main returns 0 before the timeout
+# (TAMIAS_BROWSER_TIMEOUT seconds, default 300). Run after .ci/wasm_check.sh (its objects are
+# reused: only the link and the page are new), on 2 shared cores: 15 to 25 s to link and 4 to 8 s in
+# Chromium, the tests' own share of it about 3.5 s (--log_level=test_suite prints each case's time);
+# from nothing (every object compiled) about 2 minutes more. Installs emscripten, nodejs and
+# chromium when missing.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 start=$(date +%s)

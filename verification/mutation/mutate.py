@@ -408,8 +408,8 @@ def scratch_build(scratch, coverage):
 
 
 # The second judge's build: the scratch build's flags with ASan and UBSan (TAMIAS_SANITIZE:
-# -fsanitize=address,undefined -fno-sanitize-recover=all), as scripts/test.sh --sanitize builds
-# them, a report fatal. A mutant that reads or writes out of bounds, overflows a signed integer
+# -fsanitize=address,undefined -fno-sanitize-recover=all, the sanitizers scripts/test.sh
+# --sanitize builds with, by the scratch's compiler, GCC), a report fatal. A mutant that reads or writes out of bounds, overflows a signed integer
 # or leaks, and passes the tests in the scratch build (a stray read can return a harmless value,
 # a stray write land on a field that is overwritten anyway), is killed there.
 SANITIZER_OPTIONS = ["-DTAMIAS_SANITIZE=ON", "-DTAMIAS_WIDE_X86_64_V4=OFF"]
