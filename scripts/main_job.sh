@@ -75,16 +75,17 @@ while read -r prog; do
 done < build/verification_programs.txt
 
 phase "fuzzing: the libFuzzer targets, 60 s each (reports/data/fuzz.json)"
+# (CI does not run them: it replays their seeds and regressions, CTest's fuzz_replay.)
 # Reliability evidence beside the programs above, not an expected program: without Clang 14 and
 # its fuzzer runtime nothing is written and the report says "not run". A finding is a failed
 # check of the report; its input is in build-fuzz/findings/.
 ./scripts/fuzz.sh --seconds 60 --report reports/data | sed "s/^/   /"
 
-phase "other platforms: golden hashes with portable lanes, on riscv64, in Chromium, by Clang at -O3"
-# The golden-hash checks CI leaves out to stay within its time (.ci/run keeps aarch64, Node.js,
-# -march=haswell and Clang's sanitizer build): each builds the library its own way and must
+phase "other platforms: golden hashes with portable lanes, on riscv64, in Chromium, by Clang at -O3 and with FMA"
+# The golden-hash checks CI leaves out to stay within its time (.ci/run keeps aarch64, Node.js
+# and Clang's sanitizer build): each builds the library its own way and must
 # reach the same bits; a failure fails the job. --quick skips them.
-checks=(portable_check riscv64_check wasm_browser_check clang_check)
+checks=(portable_check riscv64_check wasm_browser_check clang_check fma_check)
 [ $quick -eq 0 ] || { echo "   skipped (--quick)"; checks=(); }
 for check in "${checks[@]}"; do
     p0=$(date +%s)
