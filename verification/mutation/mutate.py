@@ -21,8 +21,8 @@ score = killed / (killed + survivors not judged equivalent), with its Wilson 95 
 90 % floor applies to the interval's lower bound for a sample, to the score for every mutant.
 
     /usr/bin/python3 verification/mutation/mutate.py OUT_DIR [--sample N] [--seed S]
-        [--minutes M] [--all] [--ids I,J,...] [--shard I/N] [--scratch DIR] [--list]
-        [--coverage JSON HTML]
+        [--minutes M] [--all] [--ids I,J,...] [--shard I/N] [--resume] [--scratch DIR]
+        [--list] [--coverage JSON HTML]
     /usr/bin/python3 verification/mutation/mutate.py --merge OUT_DIR SHARD_FILE...
 
 With --coverage the scratch build is instrumented with gcov and, before any mutant, every test
@@ -33,7 +33,9 @@ By default a seeded sample of N = 20 mutants judged within M = 30 minutes (after
 build); --all takes every mutant (hours on two cores), --ids the given ones (no box). With
 --shard I/N only the I-th of N disjoint shards of those (a hash of each mutant's key) is judged
 and written to OUT_DIR/mutation-shard-I-of-N.json; --merge joins shards of one tree into
-OUT_DIR/mutation.json. Writes OUT_DIR/mutation.json in the verification schema
+OUT_DIR/mutation.json. Each verdict is also appended to a journal beside that file as it is
+reached; --resume keeps a journal's verdicts (of the same tree, selection and shard) and
+judges only the rest. Writes OUT_DIR/mutation.json in the verification schema
 (docs/traceability.md): the score and its interval, one row per mutant, every survivor with
 its judgement. The report shows it; the main job runs a time-boxed sample (it is an optional
 program of traceability/config.yaml: absent, the report says "not run").
@@ -1193,6 +1195,57 @@ def merge(out_dir, files, survivors=SURVIVORS):
     return 0
 
 
+class Journal:
+    """The judged mutants of a run as they are judged, one JSON line each after a header line
+    (the tree, the selection and the shard), so a run that is stopped (a batch job's time
+    limit, a preempted machine, a closed laptop) and started again with --resume judges only
+    the mutants it had not judged. A journal of another tree, selection or shard is not
+    resumed: its mutants' verdicts need not hold for this one."""
+
+    def __init__(self, path, header):
+        self.path, self.header = path, header
+
+    def resume(self, chosen):
+        """{mutant id: result} of the journal's mutants that are in chosen, when the journal
+        is of this run's tree, selection and shard; {} otherwise."""
+        try:
+            with open(self.path, encoding="utf-8") as fh:
+                lines = fh.read().split("\n")
+        except FileNotFoundError:
+            return {}
+        try:
+            if json.loads(lines[0]) != self.header:
+                print(f"mutation: {self.path} is of another tree, selection or shard: "
+                      "not resumed", flush=True)
+                return {}
+        except ValueError:
+            return {}
+        by_id = {m["id"]: m for m in chosen}
+        done = {}
+        for line in lines[1:]:
+            try:
+                r = json.loads(line)
+            except ValueError:  # the line being written when the run stopped
+                continue
+            m = by_id.get(r.get("id"))
+            if m is not None and survivor_key(m) == survivor_key(r):
+                done[m["id"]] = r
+        return done
+
+    def start(self, done):
+        """Writes the header and the results carried over (done), replacing the file."""
+        with open(self.path, "w", encoding="utf-8") as fh:
+            fh.write(json.dumps(self.header) + "\n")
+            for r in done.values():
+                fh.write(json.dumps(r) + "\n")
+
+    def add(self, r):
+        with open(self.path, "a", encoding="utf-8") as fh:
+            fh.write(json.dumps(r) + "\n")
+            fh.flush()
+            os.fsync(fh.fileno())
+
+
 def judge_run(a, muts, chosen, selection, shard):
     """Builds the scratch, judges the chosen mutants (within the box, if any) and writes
     mutation.json or the shard's file to a.out_dir; the exit status."""
@@ -1222,9 +1275,22 @@ def judge_run(a, muts, chosen, selection, shard):
     sanitizer = SanitizerScratch(a.scratch, src)
     commands = commands_of(catalogue)
     unmutated = Unmutated(build)
+    os.makedirs(a.out_dir, exist_ok=True)
+    name = shard_file(*shard) if shard else "mutation.json"
+    journal = Journal(os.path.join(a.out_dir, name[:-len(".json")] + ".journal"),
+                      {"tree": tree, "selection": selection,
+                       "shard": list(shard) if shard else None})
+    done = journal.resume(chosen) if a.resume else {}
+    if a.resume:
+        print(f"mutation: {len(done)} of {len(chosen)} mutants judged before, from "
+              f"{journal.path}", flush=True)
+    journal.start(done)
     results = []
     baseline = {}  # CTest entry -> passes on the unmutated sources (asked when it kills)
     for m in chosen:
+        if m["id"] in done:
+            results.append(done[m["id"]])
+            continue
         if deadline is not None and time.monotonic() > deadline:
             break
         labels = labels_of(a.root, m["file"])
@@ -1265,6 +1331,7 @@ def judge_run(a, muts, chosen, selection, shard):
         if verdict == "survived":
             r["sanitizer"] = "passed"
         results.append(r)
+        journal.add(r)
         print(f"{verdict:10s} #{m['id']} {m['file']}:{m['line']} {m['op']}"
               + (" (sanitizer)" if killed_by == "sanitizer" else "")
               + f" ({secs:.0f} s: build {b_secs:.0f}, tests {t_secs:.0f})"
@@ -1284,8 +1351,6 @@ def judge_run(a, muts, chosen, selection, shard):
                           "complete": len(results) == len(chosen)} if shard else None)
     if shard:
         doc["host"] = socket.gethostname()
-    os.makedirs(a.out_dir, exist_ok=True)
-    name = shard_file(*shard) if shard else "mutation.json"
     with open(os.path.join(a.out_dir, name), "w", encoding="utf-8") as fh:
         json.dump(doc, fh, indent=1)
     print("mutation: " + doc["summary"])
@@ -1311,6 +1376,9 @@ def main(argv=None):
     ap.add_argument("--no-sanitizer", dest="sanitizer", action="store_false",
                     help="do not judge survivors again in the ASan and UBSan build")
     ap.add_argument("--survivors", default=SURVIVORS, help="the judged survivors (JSON)")
+    ap.add_argument("--resume", action="store_true",
+                    help="keep the verdicts of OUT_DIR's journal of this tree, selection and "
+                         "shard (a run stopped before its end) and judge only the rest")
     ap.add_argument("--ids", help="judge these mutants (ids of --list, comma-separated) only")
     ap.add_argument("--shard", metavar="I/N",
                     help="judge the I-th (0 to N-1) of N disjoint shards of the chosen mutants "

@@ -371,6 +371,7 @@ class Shards(unittest.TestCase):
                                       "verdict": "equivalent", "reason": "made up"}]}, fh)
         self.tree = "tree-1"
         self.judged = []
+        self.stop_after = None
 
     def tearDown(self):
         self.tmp.cleanup()
@@ -385,6 +386,8 @@ class Shards(unittest.TestCase):
     def run_main(self, *args):
         def fake_judge(m, src, build, entries, test_timeout, objects=None, env=None,
                        **_):
+            if len(self.judged) == self.stop_after:
+                raise KeyboardInterrupt  # the run is stopped here
             self.judged.append((m["id"], build))
             v = self.verdict(m, build)
             return v, ("==1==ERROR: AddressSanitizer: stray read" if v == "killed" and
@@ -459,6 +462,36 @@ class Shards(unittest.TestCase):
     def other_tree_shard(self):
         self.tree = "tree-2"
         return os.path.join(self.run_main("--all", "--shard", "1/3"), mutate.shard_file(1, 3))
+
+    def test_a_stopped_run_resumes_where_it_stopped(self):
+        # Oracle: the run stopped and resumed gives the uninterrupted run's verdicts, and
+        # judges each mutant once in all.
+        whole = self.load(os.path.join(self.run_main("--all", "--shard", "0/2"),
+                                       mutate.shard_file(0, 2)))
+        self.judged, self.stop_after = [], 3
+        with self.assertRaises(KeyboardInterrupt):
+            self.run_main("--all", "--shard", "0/2")
+        first = [i for i, b in self.judged if not b.endswith("build-asan")]
+        journal = os.path.join(self.tmp.name, "out", "mutation-shard-0-of-2.journal")
+        with open(journal) as fh:
+            kept = [json.loads(line)["id"] for line in fh.read().splitlines()[1:]]
+        # Each mutant whose verdict was reached is kept; the one cut short is not.
+        self.assertEqual(kept, first[:len(kept)])
+        self.assertGreaterEqual(len(kept), len(first) - 1)
+        self.judged, self.stop_after = [], None
+        out = self.run_main("--all", "--shard", "0/2", "--resume")
+        again = [i for i, b in self.judged if not b.endswith("build-asan")]
+        self.assertEqual(sorted(kept + again), sorted(r["id"] for r in whole["mutants"]))
+        resumed = self.load(os.path.join(out, mutate.shard_file(0, 2)))
+        self.assertEqual([(r["id"], r["verdict"]) for r in resumed["mutants"]],
+                         [(r["id"], r["verdict"]) for r in whole["mutants"]])
+        self.assertEqual(resumed["score"], whole["score"])
+        # Without --resume, or with a journal of another tree, every mutant is judged again.
+        for tree, args in (("tree-1", ()), ("tree-2", ("--resume",))):
+            self.judged, self.tree = [], tree
+            self.run_main("--all", "--shard", "0/2", *args)
+            self.assertEqual(sorted(i for i, b in self.judged if not b.endswith("build-asan")),
+                             sorted(r["id"] for r in whole["mutants"]))
 
     def test_the_split_is_stable_under_edits_elsewhere(self):
         before = {mutate.survivor_key(m): mutate.shard_of(m, 4)
