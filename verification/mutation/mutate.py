@@ -30,7 +30,9 @@ runs once on the unmutated sources: gcovr's summary and pages of src/ and includ
 report's coverage (one build for both analyses). Exit status 3 when a test fails there.
 
 By default a seeded sample of N = 20 mutants judged within M = 30 minutes (after the scratch
-build); --all takes every mutant (hours on two cores), --ids the given ones (no box). With
+build); --all takes every mutant (hours on two cores) in the seed's rank order, so that a run
+stopped early has judged a seeded sample, --ids the given ones (no box). The result is written
+after each mutant. With
 --shard I/N only the I-th of N disjoint shards of those (a hash of each mutant's key) is judged
 and written to OUT_DIR/mutation-shard-I-of-N.json; --merge joins shards of one tree into
 OUT_DIR/mutation.json. Each verdict is also appended to a journal beside that file as it is
@@ -941,7 +943,7 @@ def now_utc():
 
 def selection_text(sel):
     if sel["mode"] == "all":
-        return "all"
+        return f"all, in the rank order of seed {sel['seed']}" if "seed" in sel else "all"
     if sel["mode"] == "ids":
         return f"ids {sel['ids']}"
     return f"seed {sel['seed']}, sample {sel['sample']}, {sel['minutes']:g} min box"
@@ -1287,6 +1289,30 @@ def judge_run(a, muts, chosen, selection, shard):
     journal.start(done)
     results = []
     baseline = {}  # CTest entry -> passes on the unmutated sources (asked when it kills)
+    build_description = scratch_build(a.scratch, bool(a.coverage))
+
+    def write_result():
+        """Writes the result of the mutants judged so far, with the record's judgements as they
+        stand (survivors may be judged while the run goes on): after each mutant, so a run
+        stopped before its end leaves the sample it judged."""
+        complete = selection["mode"] == "all" and not shard and len(results) == len(chosen)
+        provenance = {"commit": commit, "dirty": dirty, "tree": tree, "build_id": None,
+                      "built": started, "generated": now_utc(), "build": build_description}
+        doc = make_doc(results, load_judgements(a.survivors), population=len(muts),
+                       chosen=len(chosen), selection=selection, complete=complete,
+                       provenance=provenance, prep_secs=prep_secs,
+                       sanitizer=sanitizer.description() if sanitizer.configured else None,
+                       broken=sorted(n for n, ok in baseline.items() if not ok),
+                       shard={"index": shard[0], "count": shard[1],
+                              "complete": len(results) == len(chosen)} if shard else None)
+        if shard:
+            doc["host"] = socket.gethostname()
+        path = os.path.join(a.out_dir, name)
+        with open(path + ".tmp", "w", encoding="utf-8") as fh:
+            json.dump(doc, fh, indent=1)
+        os.replace(path + ".tmp", path)
+        return doc
+
     for m in chosen:
         if m["id"] in done:
             results.append(done[m["id"]])
@@ -1332,27 +1358,12 @@ def judge_run(a, muts, chosen, selection, shard):
             r["sanitizer"] = "passed"
         results.append(r)
         journal.add(r)
+        write_result()
         print(f"{verdict:10s} #{m['id']} {m['file']}:{m['line']} {m['op']}"
               + (" (sanitizer)" if killed_by == "sanitizer" else "")
               + f" ({secs:.0f} s: build {b_secs:.0f}, tests {t_secs:.0f})"
               + (f" [sanitizer build {prep:.0f} s]" if prep >= 1 else ""), flush=True)
-    # The record as it stands when the run ends (survivors may be judged while it runs).
-    judgements = load_judgements(a.survivors)
-    complete = selection["mode"] == "all" and not shard and len(results) == len(chosen)
-    provenance = {"commit": commit, "dirty": dirty, "tree": tree, "build_id": None,
-                  "built": started, "generated": now_utc(),
-                  "build": scratch_build(a.scratch, bool(a.coverage))}
-    doc = make_doc(results, judgements, population=len(muts), chosen=len(chosen),
-                   selection=selection, complete=complete, provenance=provenance,
-                   prep_secs=prep_secs,
-                   sanitizer=sanitizer.description() if sanitizer.configured else None,
-                   broken=sorted(n for n, ok in baseline.items() if not ok),
-                   shard={"index": shard[0], "count": shard[1],
-                          "complete": len(results) == len(chosen)} if shard else None)
-    if shard:
-        doc["host"] = socket.gethostname()
-    with open(os.path.join(a.out_dir, name), "w", encoding="utf-8") as fh:
-        json.dump(doc, fh, indent=1)
+    doc = write_result()
     print("mutation: " + doc["summary"])
     return 3 if coverage_failed else 0
 
@@ -1422,7 +1433,10 @@ def main(argv=None):
         chosen = [by_id[int(x)] for x in a.ids.split(",") if x.strip()]
         selection = {"mode": "ids", "ids": a.ids}
     elif a.all:
-        chosen, selection = muts, {"mode": "all"}
+        # In the seed's rank order, as a sample: a run stopped before its end (a time limit, a
+        # preempted machine) has judged a seeded random sample, whose interval says what it
+        # shows of the whole.
+        chosen, selection = sample_of(muts, len(muts), a.seed), {"mode": "all", "seed": a.seed}
     else:
         chosen = sample_of(muts, a.sample, a.seed)
         selection = {"mode": "sample", "seed": a.seed, "sample": a.sample, "minutes": a.minutes}

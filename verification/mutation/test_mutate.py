@@ -438,8 +438,8 @@ class Shards(unittest.TestCase):
         for key in ("score", "killed", "counted", "interval", "population", "complete",
                     "floor_applies_to", "killed_by_sanitizer"):
             self.assertEqual(merged[key], whole[key], key)
-        self.assertEqual([(r["id"], r["verdict"]) for r in merged["mutants"]],
-                         [(r["id"], r["verdict"]) for r in whole["mutants"]])
+        self.assertEqual(sorted((r["id"], r["verdict"]) for r in merged["mutants"]),
+                         sorted((r["id"], r["verdict"]) for r in whole["mutants"]))
         self.assertEqual(merged["shards"]["missing"], [])
         sys.path.insert(0, mutate.ROOT)
         from traceability.vvdata import validate
@@ -492,6 +492,23 @@ class Shards(unittest.TestCase):
             self.run_main("--all", "--shard", "0/2", *args)
             self.assertEqual(sorted(i for i, b in self.judged if not b.endswith("build-asan")),
                              sorted(r["id"] for r in whole["mutants"]))
+
+    def test_a_run_of_every_mutant_stopped_early_leaves_a_seeded_sample(self):
+        # Oracle: sample_of, the main job's sample: a whole run judges in its rank order, so the
+        # mutants judged when it stops at a window's end are the sample of that size, and the
+        # result written so far says so (not complete: the floor on the interval's lower bound).
+        muts = mutate.all_mutants(self.root)
+        self.stop_after = mutate.WINDOW
+        with self.assertRaises(KeyboardInterrupt):
+            self.run_main("--all", "--no-sanitizer", "--seed", "7")
+        self.assertEqual({i for i, _ in self.judged},
+                         {m["id"] for m in mutate.sample_of(muts, mutate.WINDOW, 7)})
+        doc = self.load(os.path.join(self.tmp.name, "out", "mutation.json"))
+        self.assertEqual(sorted(r["id"] for r in doc["mutants"]),
+                         sorted(i for i, _ in self.judged))
+        self.assertFalse(doc["complete"])
+        self.assertEqual(doc["floor_applies_to"], "lower bound")
+        self.assertIn("rank order of seed 7", doc["description"])
 
     def test_the_split_is_stable_under_edits_elsewhere(self):
         before = {mutate.survivor_key(m): mutate.shard_of(m, 4)
