@@ -8,4 +8,4 @@ auditor's report (reports/index.html, traceability.md, traceability.json) and it
 Entry point: traceability/build_report.py. Documentation: docs/traceability.md.
 """
 
-SCHEMA_VERSION = "1.5"
+SCHEMA_VERSION = "1.6"

@@ -24,7 +24,8 @@ if __package__ in (None, ""):
 
 from traceability import SCHEMA_VERSION  # noqa: E402
 from traceability import analysis, builds, evidence, graphs, links, render_html, render_md, srsdata, vvdata  # noqa: E402
-from traceability import bench_records, fingerprints, reproducible, reqif, review  # noqa: E402
+from traceability import (bench_records, fingerprints, mutation_reference, reproducible,  # noqa: E402
+                          reqif, review)
 
 
 def parse_args(argv):
@@ -173,6 +174,8 @@ def build(args, log=print):
     vvdata.render_plots(programs, out, warnings)
     # The dated benchmark records of the checkout (verification/bench/results/), beside its own.
     records = bench_records.render(bench_records.collect(source, warnings), out, warnings)
+    # The whole mutation analysis of a named commit, beside the checkout's own sample.
+    mutation_ref = mutation_reference.collect(source, warnings)
 
     res = analysis.analyse(srs, code_sites, tests, config, warnings)
     # Fingerprints of both ends of each link, compared with the review records.
@@ -245,6 +248,7 @@ def build(args, log=print):
         "graphs": gr,
         "verification": programs,
         "bench_records": records,
+        "mutation_reference": mutation_ref,
         "builds": builds.evidence_builds(build_dir, build_prov, programs +
                                          ([{"program": "coverage", "provenance": coverage["provenance"]}]
                                           if coverage and coverage.get("provenance") else [])),

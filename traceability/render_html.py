@@ -7,7 +7,7 @@ import json
 import os
 import re
 
-from . import render_audit
+from . import mutation_reference, render_audit
 from .graphs import KIND_HEX, STATUS_BORDER
 from .srsdata import KIND_NAMES
 
@@ -745,10 +745,34 @@ say how the figure is measured:<ul>{"".join(rows)}</ul></div>""")
                     f'{E(str(s.get("name")))}</figcaption></figure>' for s in figs) + '</div>')
             if p["program"] == "benchmark":
                 self.bench_records()
+            if p["program"] == "mutation":
+                self.mutation_reference()
         if not any(p["program"] == "benchmark" for p in progs):
             self.bench_records()
+        if not any(p["program"] == "mutation" for p in progs):
+            self.mutation_reference()
         self.players()
         self.w('</section>')
+
+    def mutation_reference(self):
+        """The whole mutation analysis of a named commit (traceability/mutation_reference.py)."""
+        ref = self.r.get("mutation_reference")
+        self.w('<h3 id="mutation-reference">Mutation: the reference analysis</h3>')
+        if not ref:
+            self.w(f'<p class="note">No reference analysis is kept (<code>{E(mutation_reference.REFERENCE)}</code>).</p>')
+            return
+        self.w(f'<p>{E(mutation_reference.summary(ref))} <span class="small mute">({E(ref["file"])}; '
+               f'selection {E(json.dumps(ref.get("selection")))}; '
+               f'{E(str(ref.get("seconds_per_mutant")))} s per built mutant)</span></p>')
+        if ref["survivors"]:
+            self.w('<div class="scroll"><table class="data sortable"><thead><tr><th>File:line</th><th>Operator</th>'
+                   '<th>Line</th><th>Judgement</th><th>Reason</th></tr></thead><tbody>')
+            for s in ref["survivors"]:
+                self.w(f'<tr><td>{E(s["file"])}:{s["line"]}</td><td>{E(s["op"])}'
+                       f'{" (" + str(s["occurrence"]) + ")" if s["occurrence"] > 1 else ""}</td>'
+                       f'<td><code>{E(s["before"])}</code></td><td>{E(s["judgement"])}</td>'
+                       f'<td class="small">{E(s["reason"])}</td></tr>')
+            self.w('</tbody></table></div>')
 
     def bench_records(self):
         """The dated records of verification/bench/results/ (traceability/bench_records.py)."""

@@ -1,7 +1,7 @@
 """reports/traceability.md: the same content as index.html in a diffable form."""
 from __future__ import annotations
 
-from . import render_audit
+from . import mutation_reference, render_audit
 from .srsdata import KIND_NAMES
 
 
@@ -187,6 +187,16 @@ def render(r):
       f"only; data: {br.get('csv') or 'none'}.\n")
     if br.get("svg"):
         w(f"![ms/step by date and commit, per scene and engine]({br['svg']})\n")
+    ref = r.get("mutation_reference")
+    w("### Mutation: the reference analysis\n")
+    if ref:
+        w(f"{mutation_reference.summary(ref)} ({ref['file']})\n")
+        if ref["survivors"]:
+            w(_table(["File:line", "Operator", "Line", "Judgement", "Reason"],
+                     [[f"{s_['file']}:{s_['line']}", s_["op"], s_["before"], s_["judgement"],
+                       s_["reason"]] for s_ in ref["survivors"]]))
+    else:
+        w(f"No reference analysis is kept ({mutation_reference.REFERENCE}).\n")
     w("## 8. Coverage\n")
     cov = r["coverage"]
     if cov:

@@ -215,7 +215,7 @@ class FixtureReport(unittest.TestCase):
             self.assertIn(needle, page)
         self.assertNotIn("<link ", page)  # self-contained: no external stylesheet
         self.assertTrue(os.path.exists(os.path.join(self.out, "traceability.md")))
-        self.assertEqual(self.report["schema_version"], "1.5")
+        self.assertEqual(self.report["schema_version"], "1.6")
         self.assertTrue(os.path.exists(os.path.join(self.out, "plots", "peer_compare__Error_vs_step_size.svg")))
         self.assertEqual(self.report["coverage"]["totals"]["line_percent"], 80.0)
         if HAVE_DOT:
