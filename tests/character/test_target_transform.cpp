@@ -40,11 +40,11 @@ struct Platform {
 
 BOOST_AUTO_TEST_SUITE(target_transform_dd44)
 
-// Oracle: a kinematic body moves at constant velocity over a step (R2: no force moves it), so
-// v = (c_t - c) / dt and omega = Delta / dt bring it to the target pose in one step: its origin
-// equals the target (to rounding of the substeps' sums: 1e-12 m here) and its orientation
-// equals the target modulo 2 pi. The target 2 pi - 0.3 from 0.2 is reached by turning -0.5 rad,
-// the shortest way, not +5.78 rad.
+// Oracle: closed form, the kinematics of constant velocity. A kinematic body keeps its velocity
+// over a step (R2: no force moves it), so v = (c_t - c) / dt and omega = Delta / dt bring it to
+// the target pose in one step: its origin equals the target (to rounding of the substeps' sums:
+// 1e-12 m here) and its orientation equals the target modulo 2 pi. The target 2 pi - 0.3 from
+// 0.2 is reached by turning -0.5 rad (written here), the shortest way, not +5.78 rad.
 BOOST_AUTO_TEST_CASE(one_step_reaches_the_pose, *utf::label("DD44")) {
     Platform p;
     const double dt = 1.0 / 60.0;
