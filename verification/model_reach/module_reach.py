@@ -24,12 +24,14 @@ applies exactly once, every model module has at least one, and every TM, GD, DD 
 srs/ has a module.
 
     /usr/bin/python3 verification/model_reach/module_reach.py OUT_DIR [--subset damping]
-        [--only LABEL,...] [--first LABEL,...] [--lazy] [--scratch DIR] [--test-timeout S]
+        [--only LABEL,...] [--first LABEL,...] [--lazy] [--resume] [--scratch DIR]
+        [--test-timeout S]
     /usr/bin/python3 verification/model_reach/module_reach.py --check
     /usr/bin/python3 verification/model_reach/module_reach.py --list
 
 Writes OUT_DIR/module_reach.json in the verification schema (docs/traceability.md), again
-after each perturbation (a run cut short says how many it judged). The scratch is mutate.py's
+after each perturbation (a run cut short says how many it judged; --resume keeps the rows of
+that file when it is of the same tree and judges the rest). The scratch is mutate.py's
 (/tmp/tamias-mutation-<uid>-<hash of the checkout's path>, the main job's coverage and mutation
 build, kept instrumented when it is): after a mutation run it rebuilds in seconds. It is locked
 for the run: a second module reach on it stops.
@@ -202,7 +204,7 @@ def passes_unperturbed(name, build, engine, baseline, timeout):
     return baseline[name]
 
 
-def judge(p, label, src, build, engine, objects, baseline, timeout):
+def judge(p, label, src, build, engine, objects, baseline, timeout, unmutated=None):
     """The reach of one perturbation: a result row (dict). The item's own engine entries run
     first, then (if none fails) every other engine entry. A stage whose objects all come out
     bit for bit as the unperturbed ones (the perturbed module is compiled into none of them) is
@@ -213,6 +215,8 @@ def judge(p, label, src, build, engine, objects, baseline, timeout):
     path = os.path.join(src, MODEL_DIR, p.module)
     with open(path, encoding="utf-8") as fh:
         original = fh.read()
+    times = os.stat(path)
+    since = None
     row = {"module": p.module, "function": p.name, "label": label, "why": p.why,
            "judged_by": sorted(judges),
            "own_entries": sorted(own), "failed": None, "result": "not reached",
@@ -252,8 +256,30 @@ def judge(p, label, src, build, engine, objects, baseline, timeout):
                 return row
         return row
     finally:
+        # The source first, with a new time; with unmutated (mutate.Unmutated of the build) the
+        # outputs the perturbed build rewrote are put back and the source gets its own time
+        # back, so the next perturbation's build compiles only itself, not this restore too.
         with open(path, "w", encoding="utf-8") as fh:
             fh.write(original)
+        if unmutated is not None and since is not None and unmutated.restore(since):
+            os.utime(path, ns=(times.st_atime_ns, times.st_mtime_ns))
+
+
+def resumed(out_dir, tree, chosen):
+    """{(module, function): row} of OUT_DIR/module_reach.json's perturbations, when that file
+    is of this tree (a run stopped before its end: --resume), among the chosen ones."""
+    try:
+        with open(os.path.join(out_dir, "module_reach.json"), encoding="utf-8") as fh:
+            doc = json.load(fh)
+    except (OSError, ValueError):
+        return {}
+    if (doc.get("provenance") or {}).get("tree") != tree:
+        print(f"module reach: {out_dir}/module_reach.json is of another tree: not resumed",
+              flush=True)
+        return {}
+    keys = {(p.module, p.name) for p in chosen}
+    return {(r["module"], r["function"]): r for r in doc.get("perturbations", [])
+            if (r.get("module"), r.get("function")) in keys}
 
 
 def hold_scratch(root, scratch):
@@ -297,6 +323,9 @@ def main(argv=None):
                          "not all of them first: a run that may be cut short starts judging "
                          "sooner (an object first built perturbed is then taken as changed, so "
                          "its tests run)")
+    ap.add_argument("--resume", action="store_true",
+                    help="keep the rows of OUT_DIR/module_reach.json when it is of this tree (a "
+                         "run stopped before its end) and judge only the other perturbations")
     ap.add_argument("--test-timeout", type=int, default=600)
     ap.add_argument("--check", action="store_true", help="check the perturbations, no build")
     ap.add_argument("--list", action="store_true", help="print the perturbations and stop")
@@ -342,12 +371,23 @@ def main(argv=None):
                                                             build_all=not a.lazy)
     run["prep_secs"] = time.monotonic() - t_prep
     engine = engine_entries(catalogue)
+    # A lazy scratch holds no outputs to restore: each perturbation's build then rebuilds the
+    # restored module as well, as an interrupted restore does.
+    unmutated = None if a.lazy else mutate.Unmutated(build)
+    done = resumed(a.out_dir, run["tree"], chosen) if a.resume else {}
+    if a.resume:
+        print(f"module reach: {len(done)} of {len(chosen)} perturbations judged before",
+              flush=True)
     baseline = {}
     rows = []
     t_judging = time.monotonic()
     for p in chosen:
+        if (p.module, p.name) in done:
+            rows.append(done[(p.module, p.name)])
+            continue
         t0 = time.monotonic()
-        row = judge(p, labels[p.module], src, build, engine, objects, baseline, a.test_timeout)
+        row = judge(p, labels[p.module], src, build, engine, objects, baseline, a.test_timeout,
+                    unmutated)
         row["expected"] = expected(row["label"], items)
         row["seconds"] = round(time.monotonic() - t0, 1)
         rows.append(row)

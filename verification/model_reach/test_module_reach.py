@@ -138,6 +138,25 @@ class Judging(unittest.TestCase):
             self.assertTrue(all(c["passed"] for c in doc["checks"]))
             self.assertEqual(doc["provenance"]["tree"], "t")
 
+    def test_a_stopped_run_resumes_on_its_own_tree_only(self):
+        # Oracle: the rows written by the stopped run (write, as above), found again by
+        # (module, function) for the chosen perturbations, and none for another tree.
+        import argparse
+        row = {"label": "DD17", "module": FLIP.module, "function": FLIP.name,
+               "why": FLIP.why, "judged_by": ["DD17"], "result": "verified",
+               "expected": "verified", "failed": "system_tests@DD17", "seconds": 1.0}
+        other = P("dd18_angular_damping.hpp", "acceleration", "x", "y", "w")
+        run = {"commit": "c", "dirty": False, "tree": "t", "build": {"name": "b"}, "chosen": 2,
+               "started": "s", "prep_secs": 1.0, "judging_secs": 1.0}
+        with tempfile.TemporaryDirectory() as out:
+            self.assertEqual(mr.resumed(out, "t", [FLIP, other]), {})  # nothing written yet
+            a = argparse.Namespace(out_dir=out, subset=None, only=None)
+            mr.write(a, [row], {"DD17": {}}, {}, run, quiet=True)
+            self.assertEqual(mr.resumed(out, "t", [FLIP, other]),
+                             {(FLIP.module, FLIP.name): row})
+            self.assertEqual(mr.resumed(out, "t", [other]), {})  # not chosen this time
+            self.assertEqual(mr.resumed(out, "another tree", [FLIP, other]), {})
+
     def test_expectations_follow_srs(self):
         items = {"T3": {"engine": "model-only", "engine_reason": "not in the engine"},
                  "GD3": {"engine": "property", "engine_reason": "a law the results obey"},
