@@ -24,8 +24,8 @@ if __package__ in (None, ""):
 
 from traceability import SCHEMA_VERSION  # noqa: E402
 from traceability import analysis, builds, evidence, graphs, links, render_html, render_md, srsdata, vvdata  # noqa: E402
-from traceability import (bench_records, fingerprints, mutation_reference, reproducible,  # noqa: E402
-                          reqif, review)
+from traceability import (bench_records, fingerprints, module_reach_reference,  # noqa: E402
+                          mutation_reference, reproducible, reqif, review)
 
 
 def parse_args(argv):
@@ -176,6 +176,7 @@ def build(args, log=print):
     records = bench_records.render(bench_records.collect(source, warnings), out, warnings)
     # The whole mutation analysis of a named commit, beside the checkout's own sample.
     mutation_ref = mutation_reference.collect(source, warnings)
+    reach_ref = module_reach_reference.collect(source, warnings)
 
     res = analysis.analyse(srs, code_sites, tests, config, warnings)
     # Fingerprints of both ends of each link, compared with the review records.
@@ -249,6 +250,7 @@ def build(args, log=print):
         "verification": programs,
         "bench_records": records,
         "mutation_reference": mutation_ref,
+        "module_reach_reference": reach_ref,
         "builds": builds.evidence_builds(build_dir, build_prov, programs +
                                          ([{"program": "coverage", "provenance": coverage["provenance"]}]
                                           if coverage and coverage.get("provenance") else [])),

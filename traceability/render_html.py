@@ -7,7 +7,7 @@ import json
 import os
 import re
 
-from . import mutation_reference, render_audit
+from . import module_reach_reference, mutation_reference, render_audit
 from .graphs import KIND_HEX, STATUS_BORDER
 from .srsdata import KIND_NAMES
 
@@ -747,12 +747,32 @@ say how the figure is measured:<ul>{"".join(rows)}</ul></div>""")
                 self.bench_records()
             if p["program"] == "mutation":
                 self.mutation_reference()
+            if p["program"] == "module_reach":
+                self.module_reach_reference()
         if not any(p["program"] == "benchmark" for p in progs):
             self.bench_records()
         if not any(p["program"] == "mutation" for p in progs):
             self.mutation_reference()
+        if not any(p["program"] == "module_reach" for p in progs):
+            self.module_reach_reference()
         self.players()
         self.w('</section>')
+
+    def module_reach_reference(self):
+        """Every module's perturbations on a named commit (traceability/module_reach_reference.py)."""
+        ref = self.r.get("module_reach_reference")
+        self.w('<h3 id="module-reach-reference">Module reach: the reference run</h3>')
+        if not ref:
+            self.w(f'<p class="note">No reference run is kept (<code>{E(module_reach_reference.REFERENCE)}</code>).</p>')
+            return
+        self.w(f'<p>{E(module_reach_reference.summary(ref))} <span class="small mute">({E(ref["file"])})</span></p>')
+        self.w('<div class="scroll"><table class="data sortable"><thead><tr><th>Item</th><th>Module</th>'
+               '<th>srs/ expects</th><th>Perturbations</th><th>Result</th></tr></thead><tbody>')
+        for s in ref["items"]:
+            self.w(f'<tr><td>{self.links([s["label"]])}</td><td>{E(", ".join(s["modules"]))}</td>'
+                   f'<td>{E(s["expected"])}</td><td class="num">{s["perturbations"]}</td>'
+                   f'<td>{E(", ".join(s["results"]))}{"" if s["as_expected"] else " (not as srs/ states)"}</td></tr>')
+        self.w('</tbody></table></div>')
 
     def mutation_reference(self):
         """The whole mutation analysis of a named commit (traceability/mutation_reference.py)."""

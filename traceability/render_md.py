@@ -1,7 +1,7 @@
 """reports/traceability.md: the same content as index.html in a diffable form."""
 from __future__ import annotations
 
-from . import mutation_reference, render_audit
+from . import module_reach_reference, mutation_reference, render_audit
 from .srsdata import KIND_NAMES
 
 
@@ -197,6 +197,16 @@ def render(r):
                        s_["reason"]] for s_ in ref["survivors"]]))
     else:
         w(f"No reference analysis is kept ({mutation_reference.REFERENCE}).\n")
+    ref = r.get("module_reach_reference")
+    w("### Module reach: the reference run\n")
+    if ref:
+        w(f"{module_reach_reference.summary(ref)} ({ref['file']})\n")
+        w(_table(["Item", "Module", "srs/ expects", "Perturbations", "Result"],
+                 [[s_["label"], ", ".join(s_["modules"]), s_["expected"], s_["perturbations"],
+                   ", ".join(s_["results"]) + ("" if s_["as_expected"] else " (not as srs/ states)")]
+                  for s_ in ref["items"]]))
+    else:
+        w(f"No reference run is kept ({module_reach_reference.REFERENCE}).\n")
     w("## 8. Coverage\n")
     cov = r["coverage"]
     if cov:

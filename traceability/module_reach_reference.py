@@ -1,0 +1,78 @@
+"""The reference module reach (verification/model_reach/reference/module_reach.json), as data.
+
+The main job perturbs the damping pair only; every module's perturbations take hours on two
+cores (docs/verification.md, section 11). The reference is one run of ``module_reach.py`` over
+every module on a named commit, kept in the repository (``--resume`` lets it run in several
+sittings; while it is still going, the file kept is the part judged so far and says so). Like
+the mutation reference it is true of its commit: the report shows it with the commit, how many
+perturbations were judged, the items not as srs/ states, and the model modules changed in the
+checkout since, never as evidence of the checkout.
+"""
+from __future__ import annotations
+
+import json
+import os
+
+from traceability.mutation_reference import changed_since
+
+REFERENCE = os.path.join("verification", "model_reach", "reference", "module_reach.json")
+MODEL_DIR = "src/tamias2d/model"
+
+
+def collect(source, warnings):
+    """The reference's figures, or None when the checkout keeps none."""
+    path = os.path.join(source, REFERENCE)
+    if not os.path.exists(path):
+        return None
+    try:
+        with open(path, encoding="utf-8") as fh:
+            doc = json.load(fh)
+        rows = doc["perturbations"]
+        items = doc["items"]
+        prov = doc.get("provenance") or {}
+        checks = {c["name"]: c for c in doc.get("checks", [])}
+    except (OSError, ValueError, KeyError, TypeError) as e:
+        warnings.append(f"{REFERENCE}: unreadable ({e}); the reference is left out")
+        return None
+    commit = prov.get("commit")
+    changed = changed_since(source, commit) if commit else None
+    modules = {r["module"] for r in rows}
+    chosen = next((c["details"] for n, c in checks.items()
+                   if n == "every perturbation chosen was judged"), "")
+    counts = {}
+    for r in rows:
+        counts[r["result"]] = counts.get(r["result"], 0) + 1
+    return {
+        "file": REFERENCE,
+        "commit": commit,
+        "dirty": bool(prov.get("dirty")),
+        "generated": prov.get("generated"),
+        "judged": len(rows),
+        "judged_of_chosen": chosen,
+        "complete": bool(checks.get("every perturbation chosen was judged", {}).get("passed")),
+        "results": counts,
+        "items": [{"label": s["label"], "modules": s["modules"], "expected": s["expected"],
+                   "results": s["results"], "as_expected": s["as_expected"],
+                   "perturbations": s["perturbations"]} for s in items],
+        "not_as_expected": [s["label"] for s in items if not s["as_expected"]],
+        "changed_since": None if changed is None else
+        sorted(c for c in changed if c.startswith(MODEL_DIR + "/")
+               and os.path.basename(c) in modules),
+    }
+
+
+def summary(ref):
+    """One sentence on the reference, for both renderings."""
+    changed = ref["changed_since"]
+    since = ("git cannot compare it with the checkout" if changed is None else
+             "its perturbed modules are unchanged in the checkout" if not changed else
+             f"{len(changed)} of its perturbed modules changed in the checkout since "
+             f"({', '.join(os.path.basename(c) for c in changed[:6])}"
+             f"{' ...' if len(changed) > 6 else ''})")
+    res = ", ".join(f"{n} {k}" for k, n in sorted(ref["results"].items()))
+    off = ref["not_as_expected"]
+    return (f"Commit {str(ref['commit'])[:12]}{' (dirty)' if ref['dirty'] else ''}, "
+            f"{ref['generated']}: {ref['judged_of_chosen'] or ref['judged']} perturbations judged"
+            f"{'' if ref['complete'] else ' (the run had not finished)'}: {res}; "
+            + (f"not as srs/ states: {', '.join(off)}" if off else "every item as srs/ states")
+            + f". True of its commit: {since}.")
