@@ -10,10 +10,9 @@ checkout since, never as evidence of the checkout.
 """
 from __future__ import annotations
 
-import json
 import os
 
-from traceability.mutation_reference import changed_since
+from traceability import reference_runs
 
 REFERENCE = os.path.join("verification", "model_reach", "reference", "module_reach.json")
 MODEL_DIR = "src/tamias2d/model"
@@ -21,21 +20,14 @@ MODEL_DIR = "src/tamias2d/model"
 
 def collect(source, warnings):
     """The reference's figures, or None when the checkout keeps none."""
-    path = os.path.join(source, REFERENCE)
-    if not os.path.exists(path):
+    doc = reference_runs.read(source, REFERENCE, ["perturbations", "items", "checks"], warnings)
+    if doc is None:
         return None
-    try:
-        with open(path, encoding="utf-8") as fh:
-            doc = json.load(fh)
-        rows = doc["perturbations"]
-        items = doc["items"]
-        prov = doc.get("provenance") or {}
-        checks = {c["name"]: c for c in doc.get("checks", [])}
-    except (OSError, ValueError, KeyError, TypeError) as e:
-        warnings.append(f"{REFERENCE}: unreadable ({e}); the reference is left out")
-        return None
+    rows, items = doc["perturbations"], doc["items"]
+    prov = doc.get("provenance") or {}
+    checks = {c.get("name"): c for c in doc["checks"] if isinstance(c, dict)}
     commit = prov.get("commit")
-    changed = changed_since(source, commit) if commit else None
+    changed = reference_runs.changed_since(source, commit, [MODEL_DIR]) if commit else None
     modules = {r["module"] for r in rows}
     chosen = next((c["details"] for n, c in checks.items()
                    if n == "every perturbation chosen was judged"), "")

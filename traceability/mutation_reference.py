@@ -13,10 +13,10 @@ Its score is counted again here with the checkout's record of judged survivors
 """
 from __future__ import annotations
 
-import json
 import os
-import subprocess
 import sys
+
+from traceability import reference_runs
 
 REFERENCE = os.path.join("verification", "mutation", "reference", "mutation.json")
 TARGETS = ("src/tamias2d/model", "src/tamias2d/dynamics")
@@ -28,32 +28,13 @@ def _mutate(source):
     return mutate
 
 
-def changed_since(source, commit):
-    """The target files that differ between commit and the checkout's working tree; None when
-    git cannot tell (no repository, the commit unknown here)."""
-    try:
-        out = subprocess.run(["git", "-C", source, "diff", "--name-only", commit, "--", *TARGETS],
-                             capture_output=True, text=True, timeout=60)
-    except (OSError, subprocess.SubprocessError):
-        return None
-    if out.returncode != 0:
-        return None
-    return sorted(x for x in out.stdout.splitlines() if x.strip())
-
-
 def collect(source, warnings):
     """The reference's figures, or None when the checkout keeps none."""
-    path = os.path.join(source, REFERENCE)
-    if not os.path.exists(path):
+    doc = reference_runs.read(source, REFERENCE, ["mutants"], warnings)
+    if doc is None:
         return None
-    try:
-        with open(path, encoding="utf-8") as fh:
-            doc = json.load(fh)
-        rows = doc["mutants"]
-        prov = doc.get("provenance") or {}
-    except (OSError, ValueError, KeyError, TypeError) as e:
-        warnings.append(f"{REFERENCE}: unreadable ({e}); the reference is left out")
-        return None
+    rows = doc["mutants"]
+    prov = doc.get("provenance") or {}
     mutate = _mutate(source)
     try:
         judgements = mutate.load_judgements(os.path.join(source, "verification", "mutation",
@@ -80,7 +61,7 @@ def collect(source, warnings):
     # bound for a sample.
     measure = score if complete else low
     commit = prov.get("commit")
-    changed = changed_since(source, commit) if commit else None
+    changed = reference_runs.changed_since(source, commit, TARGETS) if commit else None
     counts = {}
     for r in rows:
         counts[r.get("verdict")] = counts.get(r.get("verdict"), 0) + 1
