@@ -56,11 +56,7 @@ def collect(source, warnings):
 def summary(ref):
     """One sentence on the reference, for both renderings."""
     changed = ref["changed_since"]
-    since = ("git cannot compare it with the checkout" if changed is None else
-             "its perturbed modules are unchanged in the checkout" if not changed else
-             f"{len(changed)} of its perturbed modules changed in the checkout since "
-             f"({', '.join(os.path.basename(c) for c in changed[:6])}"
-             f"{' ...' if len(changed) > 6 else ''})")
+    since = reference_runs.since_text(changed, "its perturbed modules")
     res = ", ".join(f"{n} {k}" for k, n in sorted(ref["results"].items()))
     off = ref["not_as_expected"]
     return (f"Commit {str(ref['commit'])[:12]}{' (dirty)' if ref['dirty'] else ''}, "

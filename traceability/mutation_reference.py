@@ -102,11 +102,7 @@ def summary(ref):
             f"{ref['judged']} of {ref['population']} mutants, a seeded random sample "
             "(the run judges in the seed's rank order and had not finished)")
     changed = ref["changed_since"]
-    since = ("git cannot compare it with the checkout" if changed is None else
-             "the mutated files are unchanged in the checkout" if not changed else
-             f"{len(changed)} of the mutated files changed in the checkout since "
-             f"({', '.join(os.path.basename(c) for c in changed[:6])}"
-             f"{' ...' if len(changed) > 6 else ''})")
+    since = reference_runs.since_text(changed, "the mutated files")
     return (f"Commit {str(ref['commit'])[:12]}{' (dirty)' if ref['dirty'] else ''}, "
             f"{ref['generated']}: {what}; {ref['killed']} of {ref['counted']} counted mutants "
             f"killed ({pct(ref['score'])}, {round(100 * ref['confidence'])} % Wilson interval "

@@ -42,3 +42,14 @@ def changed_since(source, commit, paths):
     if out.returncode != 0:
         return None
     return sorted(x for x in out.stdout.splitlines() if x.strip())
+
+
+def since_text(changed, what):
+    """What changed since the run's commit, in words: what names the files ("the mutated
+    files")."""
+    if changed is None:
+        return "git cannot compare it with the checkout"
+    if not changed:
+        return f"{what} are unchanged in the checkout"
+    names = ", ".join(os.path.basename(c) for c in changed[:6]) + (" ..." if len(changed) > 6 else "")
+    return f"{len(changed)} of {what} changed in the checkout since ({names})"
