@@ -3,13 +3,14 @@
 The main job perturbs the damping pair only; every module's perturbations take hours on two
 cores (docs/verification.md, section 11). The reference is one run of ``module_reach.py`` over
 every module on a named commit, kept in the repository (``--resume`` lets it run in several
-sittings; while it is still going, the file kept is the part judged so far and says so). Like
+parts; while it is still going, the file kept is the part judged so far and says so). Like
 the mutation reference it is true of its commit: the report shows it with the commit, how many
 perturbations were judged, the items not as srs/ states, and the model modules changed in the
 checkout since, never as evidence of the checkout.
 """
 from __future__ import annotations
 
+import collections
 import os
 
 from traceability import reference_runs
@@ -25,31 +26,26 @@ def collect(source, warnings):
         return None
     rows, items = doc["perturbations"], doc["items"]
     prov = doc.get("provenance") or {}
-    checks = {c.get("name"): c for c in doc["checks"] if isinstance(c, dict)}
+    judged_check = next((c for c in doc["checks"] if isinstance(c, dict)
+                         and c.get("name") == "every perturbation chosen was judged"), {})
     commit = prov.get("commit")
     changed = reference_runs.changed_since(source, commit, [MODEL_DIR]) if commit else None
     modules = {r["module"] for r in rows}
-    chosen = next((c["details"] for n, c in checks.items()
-                   if n == "every perturbation chosen was judged"), "")
-    counts = {}
-    for r in rows:
-        counts[r["result"]] = counts.get(r["result"], 0) + 1
     return {
         "file": REFERENCE,
         "commit": commit,
         "dirty": bool(prov.get("dirty")),
         "generated": prov.get("generated"),
         "judged": len(rows),
-        "judged_of_chosen": chosen,
-        "complete": bool(checks.get("every perturbation chosen was judged", {}).get("passed")),
-        "results": counts,
+        "judged_of_chosen": judged_check.get("details", ""),
+        "complete": bool(judged_check.get("passed")),
+        "results": dict(collections.Counter(r["result"] for r in rows)),
         "items": [{"label": s["label"], "modules": s["modules"], "expected": s["expected"],
                    "results": s["results"], "as_expected": s["as_expected"],
                    "perturbations": s["perturbations"]} for s in items],
         "not_as_expected": [s["label"] for s in items if not s["as_expected"]],
         "changed_since": None if changed is None else
-        sorted(c for c in changed if c.startswith(MODEL_DIR + "/")
-               and os.path.basename(c) in modules),
+        sorted(c for c in changed if os.path.basename(c) in modules),
     }
 
 

@@ -13,6 +13,7 @@ Its score is counted again here with the checkout's record of judged survivors
 """
 from __future__ import annotations
 
+import collections
 import os
 import sys
 
@@ -57,14 +58,10 @@ def collect(source, warnings):
     judged = len(rows)
     population = doc.get("population") or judged
     complete = bool(doc.get("complete"))
-    # The floor's rule of mutate.py: on the score for every mutant, on the interval's lower
-    # bound for a sample.
-    measure = score if complete else low
+    floor_on, floor_met = mutate.floor_verdict(score, low, counted, complete)
     commit = prov.get("commit")
     changed = reference_runs.changed_since(source, commit, TARGETS) if commit else None
-    counts = {}
-    for r in rows:
-        counts[r.get("verdict")] = counts.get(r.get("verdict"), 0) + 1
+    counts = dict(collections.Counter(r.get("verdict") for r in rows))
     return {
         "file": REFERENCE,
         "commit": commit,
@@ -85,8 +82,8 @@ def collect(source, warnings):
         "interval": [low, high],
         "confidence": mutate.CONFIDENCE,
         "floor": mutate.FLOOR,
-        "floor_applies_to": "point estimate" if complete else "lower bound",
-        "floor_met": measure >= mutate.FLOOR,
+        "floor_applies_to": floor_on,
+        "floor_met": floor_met,
         "gaps": sum(s["judgement"] == "gap" for s in survivors),
         "not_judged": sum(s["judgement"] == "not judged" for s in survivors),
         "survivors": survivors,

@@ -891,6 +891,13 @@ CONFIDENCE = 0.95
 Z = 1.959963984540054  # the standard normal quantile of 0.975
 
 
+def floor_verdict(score, low, counted, complete):
+    """(what the floor applies to, whether it holds): the score itself when every mutant was
+    judged, the lower bound of its interval for a sample; never met with nothing counted."""
+    on = "point estimate" if complete else "lower bound"
+    return on, bool(counted) and (score if complete else low) >= FLOOR - 1e-12
+
+
 def wilson(k, n, z=Z):
     """The Wilson score interval (95 % with the default z) of a kill rate k/n: where the rate of
     the mutants a random sample of n counted ones was drawn from lies. (0, 1) for n = 0."""
@@ -975,9 +982,7 @@ def make_doc(results, judgements, *, population, chosen, selection, complete, pr
     judged_runs = [r for r in results
                    if r["verdict"] in ("killed", "survived", "stillborn", "not built")]
     mean = (sum(r["seconds"] for r in judged_runs) / len(judged_runs)) if judged_runs else 0.0
-    floor_on = "point estimate" if complete else "lower bound"
-    value = score if complete else lo
-    passed = bool(counted) and value >= FLOOR - 1e-12
+    floor_on, passed = floor_verdict(score, lo, counted, complete)
     pct = lambda x: f"{100 * x:.1f} %"  # noqa: E731
     figure = (f"{pct(score)} ({killed} of {counted}), 95 % interval {100 * lo:.1f}-"
               f"{100 * hi:.1f} %")
