@@ -9,6 +9,9 @@
 #include <utility>
 
 #include "tamias2d/dynamics/body_store.hpp"
+#include "tamias2d/dynamics/bridge/joint_reactions.hpp"
+#include "tamias2d/dynamics/bridge/point_impulse.hpp"
+#include "tamias2d/dynamics/bridge/typing.hpp"
 #include "tamias2d/dynamics/contacts/contact_manager.hpp"
 #include "tamias2d/dynamics/contacts/sensor_overlaps.hpp"
 #include "tamias2d/dynamics/island_sleep.hpp"
@@ -21,7 +24,6 @@
 #include "tamias2d/dynamics/joints/target_joint.hpp"
 #include "tamias2d/dynamics/joints/weld_joint.hpp"
 #include "tamias2d/dynamics/joints/wheel_joint.hpp"
-#include "tamias2d/dynamics/model_bridge.hpp"
 #include "tamias2d/dynamics/shape_store.hpp"
 #include "tamias2d/dynamics/state_hasher.hpp"
 #include "tamias2d/dynamics/step_context.hpp"

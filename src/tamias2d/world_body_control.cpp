@@ -6,7 +6,6 @@
 #include <cstring>
 #include <string>
 
-#include "tamias2d/dynamics/model_bridge.hpp"
 #include "tamias2d/errors.hpp"
 #include "tamias2d/validation.hpp"
 #include "tamias2d/world.hpp"

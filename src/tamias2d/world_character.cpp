@@ -10,7 +10,7 @@
 
 #include "tamias2d/collision/collider.hpp"
 #include "tamias2d/collision/time_of_impact.hpp"
-#include "tamias2d/dynamics/model_bridge.hpp"
+#include "tamias2d/dynamics/bridge/typing.hpp"
 #include "tamias2d/errors.hpp"
 #include "tamias2d/geometry/projected_width.hpp"
 #include "tamias2d/math/hypot.hpp"

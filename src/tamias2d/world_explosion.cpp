@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "tamias2d/dynamics/model_bridge.hpp"
+#include "tamias2d/dynamics/bridge/point_impulse.hpp"
 #include "tamias2d/dynamics/solver_body.hpp"
 #include "tamias2d/errors.hpp"
 #include "tamias2d/explosion.hpp"

@@ -2,7 +2,7 @@
 """One formula, one place: fails when an SRS formula is written again outside src/tamias2d/model/.
 
 Every SRS formula lives in one model module (docs/design.md, "One formula, one place"); the
-engine calls it through dynamics/model_bridge.hpp or the model's plain-double forms. This lint
+engine calls it through the adapters of dynamics/bridge/ or the model's plain-double forms. This lint
 reads the library's C++ (src/, include/, apps/; comments and string literals removed) and
 flags each rule's pattern, a hand-written shape of one formula, anywhere but the file allowed to
 hold it. A rule with a home (the module that owns its formula) reads model/ too, so that a

@@ -14,10 +14,11 @@
 #include <cstdint>
 #include <vector>
 
+#include "tamias2d/dynamics/bridge/contacts.hpp"
+#include "tamias2d/dynamics/bridge/motion.hpp"
 #include "tamias2d/dynamics/contacts/contact_constraint.hpp"
 #include "tamias2d/dynamics/contacts/wide_contact_constraint.hpp"
 #include "tamias2d/dynamics/contacts/wide_pack_loops.hpp"
-#include "tamias2d/dynamics/model_bridge.hpp"
 #include "tamias2d/dynamics/solver_body.hpp"
 
 namespace tamias_bench::typing {

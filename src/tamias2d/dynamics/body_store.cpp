@@ -5,7 +5,8 @@
 #include <limits>
 #include <string>
 
-#include "tamias2d/dynamics/model_bridge.hpp"
+#include "tamias2d/dynamics/bridge/typing.hpp"
+#include "tamias2d/dynamics/bridge/velocity_control.hpp"
 #include "tamias2d/dynamics/shape_store.hpp"
 #include "tamias2d/dynamics/snapshot_io.hpp"
 #include "tamias2d/dynamics/state_hasher.hpp"

@@ -5,9 +5,9 @@
 
 #include "tamias2d/collision/time_of_impact.hpp"
 #include "tamias2d/dynamics/body_store.hpp"
+#include "tamias2d/dynamics/bridge/continuous_motion.hpp"
 #include "tamias2d/dynamics/contacts/contact_manager.hpp"
 #include "tamias2d/dynamics/joints/joint_store.hpp"
-#include "tamias2d/dynamics/model_bridge.hpp"
 #include "tamias2d/dynamics/shape_store.hpp"
 
 namespace tamias2d {

@@ -5,9 +5,10 @@
 #include <limits>
 
 #include "tamias2d/dynamics/body_store.hpp"
+#include "tamias2d/dynamics/bridge/joint_reactions.hpp"
+#include "tamias2d/dynamics/bridge/point_impulse.hpp"
 #include "tamias2d/dynamics/contacts/contact_manager.hpp"
 #include "tamias2d/dynamics/joints/joint_store.hpp"
-#include "tamias2d/dynamics/model_bridge.hpp"
 #include "tamias2d/dynamics/shape_store.hpp"
 #include "tamias2d/dynamics/snapshot_io.hpp"
 #include "tamias2d/dynamics/state_hasher.hpp"

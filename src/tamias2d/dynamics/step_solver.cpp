@@ -7,11 +7,14 @@
 #include <limits>
 
 #include "tamias2d/dynamics/body_store.hpp"
+#include "tamias2d/dynamics/bridge/continuous_motion.hpp"
+#include "tamias2d/dynamics/bridge/motion.hpp"
+#include "tamias2d/dynamics/bridge/surface_motion.hpp"
+#include "tamias2d/dynamics/bridge/velocity_control.hpp"
 #include "tamias2d/dynamics/contacts/contact_manager.hpp"
 #include "tamias2d/dynamics/contacts/restitution.hpp"
 #include "tamias2d/dynamics/joints/joint_solver.hpp"
 #include "tamias2d/dynamics/joints/joint_store.hpp"
-#include "tamias2d/dynamics/model_bridge.hpp"
 #include "tamias2d/dynamics/shape_store.hpp"
 #include "tamias2d/math/prefetch.hpp"
 #include "tamias2d/memory/allocator.hpp"

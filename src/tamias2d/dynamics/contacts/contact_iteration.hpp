@@ -17,7 +17,7 @@
 #include <cstddef>
 #include <type_traits>
 
-#include "tamias2d/dynamics/model_bridge.hpp"
+#include "tamias2d/dynamics/bridge/contacts.hpp"
 #include "tamias2d/dynamics/solver_settings.hpp"
 #include "tamias2d/math/vec2d.hpp"
 #include "tamias2d/math/wide.hpp"

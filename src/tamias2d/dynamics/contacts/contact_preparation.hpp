@@ -6,8 +6,9 @@
 // preparation of the same manifold agree bit for bit.
 #pragma once
 
+#include "tamias2d/dynamics/bridge/contacts.hpp"
+#include "tamias2d/dynamics/bridge/point_impulse.hpp"
 #include "tamias2d/dynamics/contacts/contact_iteration.hpp"
-#include "tamias2d/dynamics/model_bridge.hpp"
 #include "tamias2d/math/wide.hpp"
 
 namespace tamias2d::preparation {

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 
+#include "tamias2d/dynamics/bridge/contacts.hpp"
 #include "tamias2d/dynamics/contacts/contact_iteration.hpp"
 #include "tamias2d/dynamics/contacts/contact_preparation.hpp"
-#include "tamias2d/dynamics/model_bridge.hpp"
 
 namespace tamias2d {
 

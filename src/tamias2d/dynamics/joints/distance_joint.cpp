@@ -1,8 +1,9 @@
 #include "tamias2d/dynamics/joints/distance_joint.hpp"
 
+#include "tamias2d/dynamics/bridge/joints.hpp"
+#include "tamias2d/dynamics/bridge/point_impulse.hpp"
 #include "tamias2d/dynamics/joints/joint_creation.hpp"
 #include "tamias2d/dynamics/joints/joint_solver.hpp"
-#include "tamias2d/dynamics/model_bridge.hpp"
 
 namespace tamias2d {
 

@@ -8,9 +8,9 @@
 #include <cstdint>
 #include <span>
 
+#include "tamias2d/dynamics/bridge/joints.hpp"
 #include "tamias2d/dynamics/joints/joint.hpp"
 #include "tamias2d/dynamics/joints/joint_sim.hpp"
-#include "tamias2d/dynamics/model_bridge.hpp"
 #include "tamias2d/dynamics/softness.hpp"
 #include "tamias2d/dynamics/solver_body.hpp"
 #include "tamias2d/memory/allocator.hpp"

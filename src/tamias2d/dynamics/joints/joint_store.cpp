@@ -6,7 +6,8 @@
 #include <utility>
 
 #include "tamias2d/dynamics/body_store.hpp"
-#include "tamias2d/dynamics/model_bridge.hpp"
+#include "tamias2d/dynamics/bridge/joint_reactions.hpp"
+#include "tamias2d/dynamics/bridge/joints.hpp"
 #include "tamias2d/dynamics/shape_store.hpp"
 #include "tamias2d/dynamics/snapshot_io.hpp"
 #include "tamias2d/dynamics/state_hasher.hpp"

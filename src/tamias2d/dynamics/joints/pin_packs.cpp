@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cstring>
 
+#include "tamias2d/dynamics/bridge/joints.hpp"
 #include "tamias2d/dynamics/contacts/wide_pack_loops.hpp"
 #include "tamias2d/dynamics/joints/joint_solver.hpp"
-#include "tamias2d/dynamics/model_bridge.hpp"
 
 namespace tamias2d {
 

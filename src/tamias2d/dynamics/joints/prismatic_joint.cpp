@@ -1,8 +1,8 @@
 #include "tamias2d/dynamics/joints/prismatic_joint.hpp"
 
+#include "tamias2d/dynamics/bridge/joints.hpp"
 #include "tamias2d/dynamics/joints/joint_creation.hpp"
 #include "tamias2d/dynamics/joints/joint_solver.hpp"
-#include "tamias2d/dynamics/model_bridge.hpp"
 
 namespace tamias2d {
 

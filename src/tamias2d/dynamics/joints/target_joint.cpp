@@ -1,7 +1,7 @@
 #include "tamias2d/dynamics/joints/target_joint.hpp"
 
+#include "tamias2d/dynamics/bridge/joints.hpp"
 #include "tamias2d/dynamics/joints/joint_solver.hpp"
-#include "tamias2d/dynamics/model_bridge.hpp"
 #include "tamias2d/dynamics/softness.hpp"
 
 namespace tamias2d {
