@@ -46,14 +46,15 @@ ORACLE_KINDS = [
                     r"\bprecondition\b|data constraints|the scene text|json syntax|"
                     r"\bthe seed's range"),
     ("GSL reference", r"\bgsl\b|rk8pd|reference solution"),
-    ("conservation law", r"conserv|\bgd1\b"),
+    ("conservation law", r"conserv(?!ative)|\bgd1\b"),
     ("independent implementation", r"brute[- ]force|written in the test|a plain [\w ]+ test|"
-                                   r"direct (?:particle )?sums|std::\w+ fed the same"),
+                                   r"direct (?:particle )?sums|std::\w+ fed the same|"
+                                   r"\bindependent implementation\b"),
     ("property", r"propert|\bbound\b|bounded|never|invariant|promise|monoton|"
                  r"rigidity|keeps its shape|the derivation's corners|determinism by construction|"
                  r"same inputs?,? (?:give|same)"),
     ("peer", r"chipmunk|box2d|\bpeer\b|pymunk"),
-    ("regression", r"golden|committed (?:value|hash|file)|previous run"),
+    ("regression", r"golden(?!-section)|committed (?:value|hash|file)|previous run"),
 ]
 # Evidence that cannot on its own show Tamias2D right: agreement with another engine, with its
 # own earlier output, or an oracle the harness cannot place.

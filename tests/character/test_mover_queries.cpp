@@ -39,7 +39,8 @@ struct Level {
 
 BOOST_AUTO_TEST_SUITE(mover_queries)
 
-// Oracle: the distance from the core's lower end (x, y) to the floor's top is y - 0.5, so the
+// Oracle: closed form, the level's geometry. The distance from the core's lower end (x, y) to
+// the floor's top is y - 0.5, so the
 // floor's plane has normal (0, 1), offset r - (y - 0.5) and point (x, 0.5), reported while
 // y - 0.5 <= r + the speculative distance (0.02 m), none beyond; the wall's plane has normal
 // (-1, 0) and offset r - (3 - x). To rounding: a normal from points a few metres from the
@@ -72,7 +73,8 @@ BOOST_AUTO_TEST_CASE(planes_of_floor_and_wall, *utf::label("DD34")) {
     BOOST_TEST(l.world.state_hash() == before);
 }
 
-// Oracle: a mover whose core ends 1.5 m above the floor's top, cast down 3 m, first touches
+// Oracle: closed form, the level's geometry. A mover whose core ends 1.5 m above the floor's
+// top, cast down 3 m, first touches
 // when the core's end is r above it: at f* = (1.5 - r) / 3. The cast leaves a gap of at most
 // its tolerance tau (World::cast_tolerance), so f is in [f* - tau / 3, f*]. Cast right from
 // x = 1 by 3 m, it meets the wall at f* = (3 - r - 1) / 3.

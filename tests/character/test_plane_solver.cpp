@@ -47,10 +47,10 @@ BOOST_AUTO_TEST_CASE(one_plane, *utf::label("DD43")) {
     }
 }
 
-// Oracle: in the corner of two planes, a target t = d* - (p1 n1 + p2 n2) with p1, p2 > 0 lies
-// in the planes' normal cone below their intersection d*, so the closest allowed translation is
-// d* itself (Cramer's rule on n1 . d = o1, n2 . d = o2) with pushes p1 and p2 (the KKT
-// conditions). A floor and a wall leaning at 63 degrees, and a right-angle corner.
+// Oracle: closed form. In the corner of two planes, a target t = d* - (p1 n1 + p2 n2) with
+// p1, p2 > 0 lies in the planes' normal cone below their intersection d*, so the closest allowed
+// translation is d* itself (Cramer's rule on n1 . d = o1, n2 . d = o2) with pushes p1 and p2 (the
+// KKT conditions). A floor and a wall leaning at 63 degrees, and a right-angle corner.
 BOOST_AUTO_TEST_CASE(corner_of_two_planes, *utf::label("DD43")) {
     struct Case {
         Vec2d n1, n2;
@@ -75,10 +75,10 @@ BOOST_AUTO_TEST_CASE(corner_of_two_planes, *utf::label("DD43")) {
     }
 }
 
-// Oracle: on a slope of angle alpha (normal n = (-sin a, cos a), through the origin), a target
-// pressing into it keeps only its part along the slope's tangent tau = (cos a, sin a):
-// d = (t . tau) tau. A character walking right at u with a drop of g (per step) goes up a
-// 30 degree slope by (u cos a - g sin a) along tau.
+// Oracle: closed form. On a slope of angle alpha (normal n = (-sin a, cos a), through the
+// origin), a target pressing into it keeps only its part along the slope's tangent
+// tau = (cos a, sin a): d = (t . tau) tau. A character walking right at u with a drop of g (per
+// step) goes up a 30 degree slope by (u cos a - g sin a) along tau.
 BOOST_AUTO_TEST_CASE(slope, *utf::label("DD43")) {
     const double a = 30.0 * std::acos(-1.0) / 180.0;
     const Vec2d n{-std::sin(a), std::cos(a)};
@@ -91,8 +91,8 @@ BOOST_AUTO_TEST_CASE(slope, *utf::label("DD43")) {
     BOOST_TEST(std::abs(dot(n, r.translation)) <= 1e-15);
 }
 
-// Oracle: a soft plane pushes at most its limit L: a target that needs a push P > L is moved
-// by L along the normal and stays inside by P - L.
+// Oracle: closed form. A soft plane pushes at most its limit L: a target that needs a push P > L is
+// moved by L along the normal and stays inside by P - L.
 BOOST_AUTO_TEST_CASE(soft_plane, *utf::label("DD43")) {
     const Vec2d n{0.0, 1.0};
     std::vector<CollisionPlane> planes{{.normal = n, .offset = 0.0, .push_limit = 0.3}};
@@ -101,8 +101,8 @@ BOOST_AUTO_TEST_CASE(soft_plane, *utf::label("DD43")) {
     BOOST_TEST(planes[0].push == 0.3);
 }
 
-// Oracle: v' = v - min(0, v . n) n for each plane that pushed and clips: the part into the
-// plane removed, a part away from it kept, a plane that did not push (or a soft one that does
+// Oracle: closed form. v' = v - min(0, v . n) n for each plane that pushed and clips: the part into
+// the plane removed, a part away from it kept, a plane that did not push (or a soft one that does
 // not clip) ignored. Against a floor and a wall at a right angle the velocity into the corner
 // stops.
 BOOST_AUTO_TEST_CASE(clipped_velocity, *utf::label("DD43")) {

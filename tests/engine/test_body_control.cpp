@@ -237,9 +237,10 @@ BOOST_AUTO_TEST_CASE(a_type_change_that_breaks_a_joint_lever_is_refused) {
 
 // ----------------------------------------------------------------------------- enabled
 
-// Oracle: the rule stated by set_enabled: a disabled body keeps its state and does not move;
-// nothing collides with it (a box falls through a disabled platform as in free fall), no query
-// or ray finds it; enabled again, it moves on from the velocity it kept.
+// Oracle: IM1's semi-implicit Euler fall in closed form (fall_displacement, an arithmetic
+// series) and the documented rule of set_enabled: a disabled body keeps its state and does not
+// move; nothing collides with it (a box falls through a disabled platform as in free fall), no
+// query or ray finds it; enabled again, it moves on from the velocity it kept.
 BOOST_AUTO_TEST_CASE(a_disabled_body_is_out_of_the_world, *utf::label("IM1")) {
     World w(WorldDef{.gravity = {0.0, -10.0}});
     BodyDef pd;
@@ -275,7 +276,8 @@ BOOST_AUTO_TEST_CASE(a_disabled_body_is_out_of_the_world, *utf::label("IM1")) {
                1e-12);
 }
 
-// Oracle: the rule: disabling removes the body's contacts now (with their end events) and
+// Oracle: the documented rule, with IM1's fall in closed form (fall_displacement): disabling
+// removes the body's contacts now (with their end events) and
 // makes its joints inactive (a bob pinned to a disabled anchor falls freely); enabling finds
 // its pairs at the next step and the joint holds again.
 BOOST_AUTO_TEST_CASE(disabling_ends_contacts_and_deactivates_joints, *utf::label("IM1")) {

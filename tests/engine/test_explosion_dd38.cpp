@@ -133,9 +133,10 @@ BOOST_AUTO_TEST_CASE(box_exposes_its_face, *utf::label("DD38")) {
     BOOST_TEST(std::abs(w.angular_velocity(up)) <= 1e-12);
 }
 
-// Oracle: ExplosionDef's rules: static and kinematic bodies, sensors and shapes whose
-// categories miss the mask are not pushed (their states unchanged bit for bit); a sleeping
-// disc is woken and pushed as an awake one is.
+// Oracle: DD38's statement (only the shapes of dynamic bodies are pushed) and ExplosionDef's
+// documented rules: static and kinematic bodies, sensors and shapes whose categories miss the
+// mask are not pushed (their states unchanged bit for bit); a sleeping disc is woken and pushed
+// as an awake one is, by DD38's closed form for a disc: 2 a j_w / m along the diagonal.
 BOOST_AUTO_TEST_CASE(what_the_blast_leaves_alone, *utf::label("DD38")) {
     World w(WorldDef{.gravity = {0.0, 0.0}, .enable_sleep = true});
     const auto disc_at = [&](Vec2d p, BodyType type, bool awake, bool sensor,
@@ -170,10 +171,10 @@ BOOST_AUTO_TEST_CASE(what_the_blast_leaves_alone, *utf::label("DD38")) {
     BOOST_TEST(std::abs(w.velocity(asleep).y - speed / std::sqrt(2.0)) <= 1e-12 * speed);
 }
 
-// Oracle: the strong guarantee (state_hash before and after): each bad field is refused with a
-// ValidationError naming it, and a blast that would push a very light body beyond the
-// supported velocity (1e24 m s^-1) is refused whole, the heavier bodies it would also push
-// untouched. A blast of zero impulse changes no bit.
+// Oracle: the documented strong guarantee (state_hash before and after) and DD38's ranges
+// (r, f >= 0, finite): each bad field is refused with a ValidationError naming it, and a blast that
+// would push a very light body beyond the supported velocity (1e24 m s^-1) is refused whole, the
+// heavier bodies it would also push untouched. A blast of zero impulse changes no bit.
 BOOST_AUTO_TEST_CASE(bad_input_changes_nothing, *utf::label("DD38")) {
     World w = empty_world();
     ring(w, {}, 1.0, 3);

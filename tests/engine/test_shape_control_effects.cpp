@@ -47,10 +47,10 @@ bool ended(const World& w, ShapeId a, ShapeId b) {
 
 BOOST_AUTO_TEST_SUITE(shape_control_effects)
 
-// Oracle: Coulomb's law (LC2). A box sliding on level ground with the combined coefficient mu
-// (geometric mean of the two shapes') decelerates at mu g. Frictionless at first (the box's
-// coefficient 0), it keeps its speed; set to 0.25 against the ground's 1, mu = 0.5, and the
-// speed drops by 0.5 g t.
+// Oracle: Coulomb's law (LC2) in closed form. A box sliding on level ground with the combined
+// coefficient mu (geometric mean of the two shapes') decelerates at mu g. Frictionless at first
+// (the box's coefficient 0), it keeps its speed; set to 0.25 against the ground's 1, mu = 0.5, and
+// the speed drops by 0.5 g t.
 BOOST_AUTO_TEST_CASE(friction_set_while_sliding_decelerates_at_mu_g, *utf::label("LC2")) {
     World w(plain_world());
     add_ground(w, Material{1.0, 0.0, 1.0});

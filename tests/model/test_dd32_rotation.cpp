@@ -125,13 +125,14 @@ BOOST_AUTO_TEST_CASE(odd_sine_even_cosine_and_special_values, *utf::label("DD32"
     }
 }
 
-// Oracle: each orientation's own rotation (the scalar path, within 1 ulp of the references
-// above) and, independently, sin and cos in long double (within 1 ulp where the argument is
-// below 2^31). The batch (the lanes of a vector register) must give the same bits for every
-// argument the engine can meet and any other: random ones in [-pi, pi] and [-2^20, 2^20], small
-// and signed zeros, each binade's hardest argument with its neighbours and negation, arguments
-// beyond the lanes' reduction (2^21 and up), infinities and NaN, in batches of every length from
-// 1 to 9 (a vector's lanes and its tail) and of 2 x 10^5.
+// Oracle: an independent implementation, the C library's sin and cos in long double (each lane
+// within 1 ulp where the argument is below 2^31); for the bits, each orientation's own rotation
+// by the scalar path (itself within 1 ulp of the same references, above). The batch (the lanes of a
+// vector register) must give the same bits for every argument the engine can meet and any other:
+// random ones in [-pi, pi] and [-2^20, 2^20], small and signed zeros, each binade's hardest
+// argument with its neighbours and negation, arguments beyond the lanes' reduction (2^21 and up),
+// infinities and NaN, in batches of every length from 1 to 9 (a vector's lanes and its tail) and of
+// 2 x 10^5.
 BOOST_AUTO_TEST_CASE(a_batch_has_each_rotations_bits, *utf::label("DD32")) {
     std::vector<double> phis = {0.0,
                                 -0.0,

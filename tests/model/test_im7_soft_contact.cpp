@@ -103,10 +103,11 @@ im7::PairMass<double> pair_mass(double k11, double k12, double k22) {
 }
 } // namespace
 
-// Oracle: the linear complementarity conditions themselves, checked on the result: x >= 0,
-// w = K x + b >= 0 and x_i w_i = 0 (to round-off), where b = v - t - K x_acc, for 2000 random
-// positive definite K, velocities, targets and accumulated impulses, among which each of the
-// four cases (both points pushed, only the first, only the second, neither) comes up.
+// Oracle: the definition of the problem's solution, the linear complementarity conditions, checked
+// on the result: x >= 0, w = K x + b >= 0 and x_i w_i = 0 (to round-off), where b = v - t - K
+// x_acc, for 2000 random positive definite K, velocities, targets and accumulated impulses, among
+// which each of the four cases (both points pushed, only the first, only the second, neither) comes
+// up.
 BOOST_AUTO_TEST_CASE(two_point_impulses_solve_the_complementarity_problem,
                      *utf::label("IM7") * utf::label("LC1")) {
     std::mt19937_64 g(7);

@@ -53,7 +53,8 @@ Vec2d random_point(std::mt19937_64& rng, double half) {
 
 } // namespace
 
-// Oracle: the signed distance along the ray (solid shapes): no hit when the origin is inside,
+// Oracle: query_oracle.hpp, an independent implementation. The signed distance along the ray
+// (solid shapes): no hit when the origin is inside,
 // a miss when its minimum (golden-section search) is positive, else the entry is its first root
 // (bisection). Segments and chain edges: Cramer's rule for the crossing, a chain edge hit from
 // its right side only.
@@ -155,9 +156,9 @@ BOOST_AUTO_TEST_CASE(ray_entry_matches_the_signed_distance_oracle, *utf::label("
     }
 }
 
-// Oracle: query_oracle's gap, the least vertex-edge distance between the cores (0 when they
-// share a point) less both radii; the closest points must lie on the shapes' boundaries (signed
-// distance 0) and be the distance apart.
+// Oracle: query_oracle.hpp, an independent implementation: its gap, the least vertex-edge distance
+// between the cores (0 when they share a point) less both radii; the closest points must lie on the
+// shapes' boundaries (signed distance 0) and be the distance apart.
 BOOST_AUTO_TEST_CASE(shape_distance_matches_the_vertex_edge_oracle, *utf::label("DD34")) {
     std::mt19937_64 rng(3401);
     for (std::size_t i = 0; i < std::size(all_kinds); ++i) {
@@ -215,7 +216,8 @@ BOOST_AUTO_TEST_CASE(shape_distance_matches_the_vertex_edge_oracle, *utf::label(
     }
 }
 
-// Oracle: the signed distance from the point (its positive part is the distance; the closest
+// Oracle: query_oracle.hpp, an independent implementation: the signed distance from the point
+// (its positive part is the distance; the closest
 // point lies on the boundary, that far from the point).
 BOOST_AUTO_TEST_CASE(closest_point_matches_the_signed_distance_oracle, *utf::label("DD34")) {
     std::mt19937_64 rng(3402);

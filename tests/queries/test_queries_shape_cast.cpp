@@ -26,10 +26,12 @@ Vec2d random_point(std::mt19937_64& rng, double half) {
 
 } // namespace
 
-// The property of DD29's conservative advancement as a query: the pose at the fraction found
-// touches the shape hit (a gap in [0, cast_tolerance], never an overlap), no contact comes
-// before it (the gap is positive and falling there, or its minimum before it is positive), and
-// a cast reported clear never touches. A cast starting behind a chain edge passes it (DD31).
+// Oracle: the property of DD29's conservative advancement as a query, judged by the gaps of
+// query_oracle.hpp (an independent implementation of the gaps between shapes): the pose at the
+// fraction found touches the shape hit (a gap in [0, cast_tolerance], never an overlap), no
+// contact comes before it (the gap is positive and falling there, or its minimum before it is
+// positive), and a cast reported clear never touches. A cast starting behind a chain edge passes it
+// (DD31).
 BOOST_AUTO_TEST_CASE(shape_cast_stops_touching_never_overlapping,
                      *utf::label("DD29") * utf::label("DD34")) {
     std::mt19937_64 rng(2901);

@@ -684,6 +684,13 @@ class Units(unittest.TestCase):
         self.assertEqual(k("the CLI exits 0"), ["other"])
         self.assertEqual(k(None), ["unstated"])
         self.assertEqual(k("closed form; momentum conserved"), ["closed form", "conservation law"])
+        # A golden-section search finds a minimum; it is no golden value.
+        self.assertEqual(k("the entry is its first root (golden-section search, bisection)"),
+                         ["other"])
+        # Conservative advancement conserves nothing.
+        self.assertEqual(k("the property of DD29's conservative advancement"), ["property"])
+        self.assertEqual(k("query_oracle.hpp, an independent implementation of the gaps"),
+                         ["independent implementation"])
 
     def test_a_case_without_assertions_is_no_evidence(self):
         # Oracle: Boost.Test's JUnit count: a case that passed after zero assertions is an

@@ -83,7 +83,7 @@ BOOST_AUTO_TEST_CASE(destroyed_the_bodies_collide_again, *utf::label("DD27")) {
     BOOST_TEST(s.world.velocity(s.a).x < 1.0);
 }
 
-// Oracle: the rule's statement: a filter joint filters only its own pair. A third box overlapping
+// Oracle: DD27's statement, a filter joint refuses only its own pair: a third box overlapping
 // both still collides with each of them.
 BOOST_AUTO_TEST_CASE(filters_only_its_pair, *utf::label("DD27")) {
     Overlap s;
