@@ -26,7 +26,7 @@ BENCHMARK(bm_kernel<run_plain>)
     ->Name("contact_solver/plain_doubles")
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(bm_kernel<run_bridge>)
-    ->Name("contact_solver/model_bridge")
+    ->Name("contact_solver/bridge")
     ->Unit(benchmark::kMillisecond);
 
 } // namespace
