@@ -25,9 +25,7 @@ template <void (*Run)(KernelData&, int, double)> void bm_kernel(benchmark::State
 BENCHMARK(bm_kernel<run_plain>)
     ->Name("contact_solver/plain_doubles")
     ->Unit(benchmark::kMillisecond);
-BENCHMARK(bm_kernel<run_bridge>)
-    ->Name("contact_solver/bridge")
-    ->Unit(benchmark::kMillisecond);
+BENCHMARK(bm_kernel<run_bridge>)->Name("contact_solver/bridge")->Unit(benchmark::kMillisecond);
 
 } // namespace
 
