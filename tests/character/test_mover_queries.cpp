@@ -98,8 +98,9 @@ BOOST_AUTO_TEST_CASE(cast_fraction, *utf::label("DD29")) {
     BOOST_TEST(l.world.state_hash() == before);
 }
 
-// Plumbing: a mover resting on the floor (touching it) passes over it, so that it can walk;
-// collide_mover's plane holds it up instead.
+// Oracle: the contract of cast_mover in world.hpp: shapes the mover already touches are passed
+// over, so a mover resting on the floor (core's end r above its top) casts its whole translation
+// (1.0) and can walk; collide_mover's one plane holds it up instead.
 BOOST_AUTO_TEST_CASE(touching_shapes_are_passed_over, *utf::label("reliability")) {
     Level l;
     const Capsule resting = mover_at(0.0, 0.5 + r);
@@ -107,8 +108,10 @@ BOOST_AUTO_TEST_CASE(touching_shapes_are_passed_over, *utf::label("reliability")
     BOOST_TEST(l.world.collide_mover(resting).size() == 1u);
 }
 
-// Plumbing: what the mover does not see: a sensor, the back of a chain's edge (DD31: a chain
-// drawn right to left collides from above only), an excluded body, a filtered-out category.
+// Oracle: the contract of collide_mover and cast_mover in world.hpp and query_filter.hpp: a
+// sensor, the back of a chain's edge (DD31: a chain drawn right to left collides from above
+// only), a shape the core lies in, an excluded body and a category the mask leaves out give no
+// plane and no hit, while the same shapes seen from the front or unfiltered do.
 BOOST_AUTO_TEST_CASE(what_the_mover_does_not_see, *utf::label("reliability")) {
     World w(WorldDef{.gravity = {0.0, 0.0}});
     const BodyId ground = w.create_body(BodyDef{.type = BodyType::static_body});
@@ -142,7 +145,9 @@ BOOST_AUTO_TEST_CASE(what_the_mover_does_not_see, *utf::label("reliability")) {
     BOOST_TEST(w.cast_mover(Capsule{{-8.0, 3.0}, {-8.0, 4.0}, r}, {6.0, 0.0}) < 1.0);
 }
 
-// Plumbing: the callback form stops when asked and sees what the vector form returns.
+// Oracle: the contract of the callback form in world.hpp: a callback returning false stops it
+// after the first plane; one returning true sees both planes (floor and wall) the level's
+// geometry gives for that mover.
 BOOST_AUTO_TEST_CASE(callback_form, *utf::label("reliability")) {
     Level l;
     int seen = 0;
@@ -159,7 +164,10 @@ BOOST_AUTO_TEST_CASE(callback_form, *utf::label("reliability")) {
     BOOST_TEST(seen == 2);
 }
 
-// Plumbing: refused input names the field; nothing changes.
+// Oracle: the stated rules of the mover calls in world.hpp: a mover of negative radius or of a
+// core of no length, or a non-finite input, throws ValidationError (a NaN translation naming
+// translation.x), another world's exclude_body throws InvalidHandle, and the calls are queries:
+// state_hash() is the same before and after.
 BOOST_AUTO_TEST_CASE(refusals, *utf::label("reliability")) {
     Level l;
     const std::uint64_t before = l.world.state_hash();

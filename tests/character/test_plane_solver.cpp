@@ -125,7 +125,10 @@ BOOST_AUTO_TEST_CASE(clipped_velocity, *utf::label("DD43")) {
     BOOST_TEST(dist(clip_vector(v, slope), expected) <= 1e-15);
 }
 
-// Plumbing: the solver's input rules name the field and the constraint.
+// Oracle: the input rules docs/user-guide.md states for solve_planes and clip_vector: a normal
+// not of length 1, a negative push_limit, a target or vector not finite, a tolerance that is not
+// positive and max_iterations below 1 are each refused with a ValidationError naming the field;
+// with no plane the target itself is returned (plane_solver.hpp).
 BOOST_AUTO_TEST_CASE(input_checks, *utf::label("reliability")) {
     const auto field_of = [](auto&& call) -> std::string {
         try {

@@ -70,8 +70,9 @@ BOOST_AUTO_TEST_CASE(one_step_reaches_the_pose, *utf::label("DD44")) {
     }
 }
 
-// Plumbing: static and dynamic bodies are refused (WrongKind), bad values name their field;
-// nothing changes.
+// Oracle: the stated rules of set_target_transform in world.hpp: WrongKind for a static or
+// dynamic body, ValidationError naming the field for a non-finite origin, an angle out of range
+// or dt outside [1e-12, 1e12], and the strong guarantee (state_hash() unchanged by the refusals).
 BOOST_AUTO_TEST_CASE(refusals, *utf::label("reliability")) {
     Platform p;
     const BodyId ground = p.world.create_body(BodyDef{.type = BodyType::static_body});
@@ -96,8 +97,9 @@ BOOST_AUTO_TEST_CASE(refusals, *utf::label("reliability")) {
     BOOST_TEST(p.world.state_hash() == before);
 }
 
-// Plumbing: calling it again with the same target changes no bit (hashes after 30 steps, the
-// target renewed each step, equal with one call or two).
+// Oracle: the stated rule of world.hpp (a call whose velocities are already those changes
+// nothing), checked by bitwise equality with a second world: after 30 steps, the target renewed
+// each step, the state hash is the same with one call per step or two.
 BOOST_AUTO_TEST_CASE(same_value_twice, *utf::label("reliability")) {
     Platform once, twice;
     const double dt = 1.0 / 60.0;
@@ -112,7 +114,8 @@ BOOST_AUTO_TEST_CASE(same_value_twice, *utf::label("reliability")) {
     BOOST_TEST(once.world.state_hash() == twice.world.state_hash());
 }
 
-// Determinism: the same targets give the same bits on 1 to 4 workers.
+// Oracle: the determinism property of docs/user-guide.md (the worker count never decides the
+// result): the same targets give the 1-worker world's state hash on 2 to 4 workers.
 BOOST_AUTO_TEST_CASE(same_on_every_worker_count, *utf::label("determinism")) {
     std::uint64_t first = 0;
     for (int workers = 1; workers <= 4; ++workers) {

@@ -81,8 +81,10 @@ BOOST_AUTO_TEST_CASE(approaches_the_wind_speed, *utf::label("DD45")) {
     BOOST_TEST(w.velocity(disc).x > 0.9 * W);
 }
 
-// Plumbing: WrongKind for a static or kinematic body's shape; bad values name their field;
-// a sleeping body is left alone when not to be woken.
+// Oracle: the stated rules of apply_wind in world.hpp: WrongKind for a static or kinematic
+// body's shape, ValidationError naming the field for a non-finite wind, a negative drag or a
+// lift out of range, with state_hash() unchanged; DD45's force is zero in still air on a body at
+// rest (hash unchanged); a sleeping body is left alone (hash unchanged) unless `wake` wakes it.
 BOOST_AUTO_TEST_CASE(refusals_and_sleep, *utf::label("reliability")) {
     World w(WorldDef{.gravity = {0.0, 0.0}, .enable_sleep = true});
     const BodyId ground = w.create_body(BodyDef{.type = BodyType::static_body});
@@ -121,8 +123,9 @@ BOOST_AUTO_TEST_CASE(refusals_and_sleep, *utf::label("reliability")) {
     BOOST_TEST(w.awake_body_count() == 1u);
 }
 
-// Determinism: a row of bodies of several shapes in a gusting wind, with gravity and a floor,
-// gives the same bits on 1 to 4 workers.
+// Oracle: the determinism property of docs/user-guide.md (the worker count never decides the
+// result): a row of bodies of several shapes in a gusting wind, with gravity and a floor, gives
+// the 1-worker world's state hash on 2 to 4 workers.
 BOOST_AUTO_TEST_CASE(same_on_every_worker_count, *utf::label("determinism")) {
     std::uint64_t first = 0;
     for (int workers = 1; workers <= 4; ++workers) {

@@ -67,6 +67,10 @@ const TaskSystem four_workers_tasks{};
 
 BOOST_AUTO_TEST_SUITE(determinism_recordings)
 
+// Oracle: the state hashes and body states in the committed files, written by another build
+// (x86-64, tests/recording/make_recordings.cpp) and not changed by this one: each recording must
+// replay with the same bits, all 55 steps, on one worker and on four (determinism across
+// builds and worker counts: the same inputs give the same bits).
 BOOST_AUTO_TEST_CASE(committed_recordings_replay_bit_for_bit, *utf::label("determinism")) {
     const std::vector<fs::path> files = recordings();
     BOOST_TEST_REQUIRE(files.size() >= 3u);
@@ -84,6 +88,10 @@ BOOST_AUTO_TEST_CASE(committed_recordings_replay_bit_for_bit, *utf::label("deter
     }
 }
 
+// Oracle: the recording's own calls: its impulse is recorded before step 10 (kick_step in
+// make_recordings.cpp), so with one bit of it flipped, and the checksum made right by FNV-1a 64
+// written in the test (the documented format, docs/user-guide.md), the replay must depart at
+// step 10 at a body, with the recorded and replayed bits different.
 BOOST_AUTO_TEST_CASE(a_flipped_impulse_bit_departs_at_its_step, *utf::label("determinism")) {
     std::vector<std::byte> bytes = read(fs::path(TAMIAS_RECORDINGS) / "car.t2drec");
     // The impulse's x component, bit 24 of its mantissa (its arguments: the body's 8 bytes,

@@ -109,9 +109,10 @@ void check_hook(const HookCounts& h) {
 
 BOOST_AUTO_TEST_SUITE(allocator_hook)
 
-// On one worker: no global operator new in the window but the vectors the scenario takes by
-// value (create_chain's handles and Recorder::bytes(), the caller's); every block from the hook
-// comes back to it with its size and alignment.
+// Oracle: the allocator contract (allocator.hpp) on one worker, read by two counters apart from
+// the library: the replaced global operator new sees only the by-value vectors the contract
+// leaves to the caller (create_chain's handles, Recorder::bytes()), and the hook's own table
+// matches every free with its block's size and alignment, none left live.
 BOOST_AUTO_TEST_CASE(one_worker_allocates_only_through_the_hook, *utf::label("embedding")) {
     const Observed o = observe(1);
     check_scenario(o.result);
@@ -122,10 +123,10 @@ BOOST_AUTO_TEST_CASE(one_worker_allocates_only_through_the_hook, *utf::label("em
                                     << o.new_bytes << " bytes");
 }
 
-// On two workers each World starts a pool thread: the standard library allocates that
-// std::thread's state with the global operator new, once per pool thread (workers - 1) of each
-// World, and nothing else is outside the hook. The scenario makes two such Worlds: its own and
-// the Replayer's.
+// Oracle: the allocator contract (allocator.hpp) on two workers: outside the hook only the
+// by-value vectors and each pool thread's std::thread state, one global operator new per pool
+// thread (workers - 1) of each World; the scenario makes two Worlds (its own and the
+// Replayer's), so two more. Read by the replaced operator new and the hook's own table.
 BOOST_AUTO_TEST_CASE(two_workers_add_only_the_thread_start, *utf::label("embedding")) {
     const Observed o = observe(2);
     check_scenario(o.result);
@@ -136,8 +137,9 @@ BOOST_AUTO_TEST_CASE(two_workers_add_only_the_thread_start, *utf::label("embeddi
                                      << o.new_bytes << " bytes");
 }
 
-// On two workers lent by the game's job system (WorldDef::task_system) the World starts no
-// thread: nothing is outside the hook but the by-value vectors.
+// Oracle: the allocator contract (allocator.hpp): on two workers lent by the game's job system
+// (WorldDef::task_system) the World starts no thread, so the replaced global operator new sees
+// only the by-value vectors, and the hook's own table matches every free with its allocation.
 BOOST_AUTO_TEST_CASE(a_task_system_starts_no_thread, *utf::label("embedding")) {
     const Observed o = observe(2, serial_jobs());
     check_scenario(o.result);
@@ -145,8 +147,9 @@ BOOST_AUTO_TEST_CASE(a_task_system_starts_no_thread, *utf::label("embedding")) {
     check_hook(o.hook);
 }
 
-// The hook changes nothing the world computes: the same state hashes with and without it, on
-// one worker and on two (oracle: the run without a hook).
+// Oracle: the same scenario run without the hook (determinism property: the same inputs give
+// the same bits): its state hashes, bit for bit, on one worker and on two. Where the memory
+// comes from must change nothing the world computes.
 BOOST_AUTO_TEST_CASE(the_hook_changes_no_result, *utf::label("embedding")) {
     for (const int workers : {1, 2}) {
         ScenarioInput plain_in = scenario_input(workers);
@@ -159,8 +162,10 @@ BOOST_AUTO_TEST_CASE(the_hook_changes_no_result, *utf::label("embedding")) {
     }
 }
 
-// Refused while the library holds a block: a world alive (its count in the message), then
-// accepted once it is gone; a hook without one of its functions is refused naming it.
+// Oracle: the stated rules of set_allocator and reset_allocator (allocator.hpp): refused with
+// AllocatorInUse while a World holds any block (the count, read from allocator_use(), in the
+// message), the current hook left as it was; accepted once none is held; a hook without one of
+// its functions refused naming it ("allocator.free").
 BOOST_AUTO_TEST_CASE(the_hook_is_refused_while_a_world_lives, *utf::label("embedding")) {
     {
         World world;

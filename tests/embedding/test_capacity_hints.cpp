@@ -62,8 +62,10 @@ WorldDef hinted() {
 
 BOOST_AUTO_TEST_SUITE(capacity_hints)
 
-// With hints at least the counts made, creating the bodies, shapes and joints takes no block
-// (no store grows); without hints the same creations take some (positive control).
+// Oracle: the stated effect of WorldDef::capacity (world_def.hpp, docs/user-guide.md "Capacity
+// hints"): with hints at least the counts made, creating the bodies, shapes and joints grows no
+// store, so the counting hook, which sees every block the library takes, counts none; without
+// hints the same creations take some (positive control).
 BOOST_AUTO_TEST_CASE(hinted_creation_grows_no_store, *utf::label("embedding")) {
     const Hooked hooked;
     std::size_t with = 0, without = 0;
@@ -81,8 +83,9 @@ BOOST_AUTO_TEST_CASE(hinted_creation_grows_no_store, *utf::label("embedding")) {
                                    << " hook allocations with hints, " << without << " without");
 }
 
-// A settled world's steps take no block, with hints and without (the stores stop growing once
-// the scene has been stepped); the first step takes fewer with hints.
+// Oracle: the rule docs/user-guide.md states ("Capacity hints"): with or without hints, a
+// settled world's steps take no block, the stores having stopped growing. The counting hook sees
+// every block the library takes and every free: 100 steps after 300 settling ones show none.
 BOOST_AUTO_TEST_CASE(steady_steps_take_no_block, *utf::label("embedding")) {
     const Hooked hooked;
     for (const bool hints : {false, true}) {
@@ -109,7 +112,9 @@ BOOST_AUTO_TEST_CASE(steady_steps_take_no_block, *utf::label("embedding")) {
     }
 }
 
-// The first step of a hinted world takes fewer blocks than of the same world without hints.
+// Oracle: the rule docs/user-guide.md states ("Capacity hints"): the first steps of a hinted
+// world take fewer blocks. The counting hook counts the first step's blocks of the same 10-row
+// pyramid with and without hints; the hinted count must be the lower.
 BOOST_AUTO_TEST_CASE(hints_spare_the_first_step, *utf::label("embedding")) {
     const Hooked hooked;
     std::size_t first[2] = {0, 0};
@@ -129,9 +134,10 @@ BOOST_AUTO_TEST_CASE(hints_spare_the_first_step, *utf::label("embedding")) {
                                                           << " with");
 }
 
-// Hints change no result and are not in snapshots: a hinted world's state hashes and snapshot
-// bytes equal those of the same world without hints (the oracle), jointed and stepped; restore
-// keeps the world's own hints.
+// Oracle: the same world built without hints, and the documented contract (world_def.hpp) that
+// hints change no result and are not in snapshots: the hinted world's state hashes, step by
+// step, and its snapshot bytes equal the plain world's, jointed and stepped; restore keeps the
+// world's own hints.
 BOOST_AUTO_TEST_CASE(hints_change_no_result, *utf::label("embedding")) {
     World plain, hinted_world(hinted());
     allocations_to_build(plain);
@@ -148,7 +154,8 @@ BOOST_AUTO_TEST_CASE(hints_change_no_result, *utf::label("embedding")) {
     BOOST_TEST(hinted_world.state_hash() == plain.state_hash());
 }
 
-// Each hint is checked: a count below 0 or above max_capacity_hint is refused naming its field.
+// Oracle: the stated rule of CapacityHints (world_def.hpp): each hint in [0, max_capacity_hint],
+// else a ValidationError naming its field and the rule "capacity"; a hint in range is accepted.
 BOOST_AUTO_TEST_CASE(hints_are_checked, *utf::label("embedding")) {
     const auto refused = [](CapacityHints c, const std::string& field) {
         WorldDef def;

@@ -74,6 +74,11 @@ ShapeDef random_shape(std::mt19937_64& rng) {
 
 } // namespace
 
+// Oracle: a brute-force search written in the test, apart from the broad phase's trees: every
+// live non-sensor shape ray-cast on its own (the shape-level ray_cast of shape_queries.hpp) at
+// its body's pose as the test set it, the least fraction kept and at equal fractions the lowest
+// shape index. The walk's hit must equal it bit for bit on 12 random worlds; hits and misses
+// both occur often.
 BOOST_AUTO_TEST_CASE(ray_cast_walk_matches_brute_force_on_random_worlds, *utf::label("internals")) {
     int hits = 0, misses = 0;
     for (std::uint64_t seed = 1; seed <= 12; ++seed) {

@@ -43,10 +43,10 @@ BOOST_AUTO_TEST_CASE(secant_of_quadratic_is_midpoint_velocity,
     BOOST_TEST(std::abs(v.y.value() - -2.0) <= 1e-14);
 }
 
-// Consistency, not evidence (no SRS label): the two forms are each other's inverse, which a bug
-// shared by both would not break; the hand values and the calculus case above are the oracles.
-// Textbook identity. displacement_over and mean_velocity are inverse to each other for
-// any dt (two roundings: 1e-15 relative).
+// Oracle: the textbook identity (v dt) / dt = v: mean_velocity of displacement_over's result is
+// the velocity put in, for any dt (two roundings: 1e-15 relative). Consistency, not evidence
+// (no SRS label): a bug shared by both forms would not break it; the hand values and the
+// calculus case above are DD3's oracles.
 BOOST_AUTO_TEST_CASE(inverse_forms) {
     const Vec2<Velocity> v = vec_from_values<Velocity>(-0.37, 12.9);
     for (double dt : {1.0 / 60.0, 0.01, 0.3, 7.0}) {

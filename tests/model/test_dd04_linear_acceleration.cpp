@@ -39,9 +39,9 @@ BOOST_AUTO_TEST_CASE(mean_acceleration_of_quadratic_velocity, *utf::label("DD4")
     BOOST_TEST(std::abs(a.y.value() - 4.375) <= 1e-13);
 }
 
-// Consistency, not evidence (no SRS label): the two forms are each other's inverse, which a bug
-// shared by both would not break; the hand values and the calculus case above are the oracles.
-// Textbook identity. velocity_change_over and mean_acceleration are inverse for any dt.
+// Oracle: textbook identity (a dt) / dt = a: velocity_change_over and mean_acceleration are
+// inverse for any dt, to 1e-15 relative. Consistency, not evidence (no SRS label): a bug shared
+// by both forms would not break it; the hand values and the calculus case above are the oracles.
 BOOST_AUTO_TEST_CASE(inverse_forms) {
     const Vec2<Acceleration> a = vec_from_values<Acceleration>(0.11, -9.81);
     for (double dt : {1.0 / 60.0, 0.001, 2.0}) {

@@ -35,9 +35,10 @@ BOOST_AUTO_TEST_CASE(mean_of_quadratic_history, *utf::label("DD7")) {
     BOOST_TEST(std::abs(a.value() - 2.0) <= 1e-14);
 }
 
-// Consistency, not evidence (no SRS label): the two forms are each other's inverse, which a bug
-// shared by both would not break; the hand values and the calculus case above are the oracles.
-// Textbook identity: the two forms are inverse to each other for any dt.
+// Oracle: the textbook identity (alpha dt) / dt = alpha: mean_angular_acceleration of
+// angular_velocity_change_over's result is the alpha put in, for any dt (1e-15 relative).
+// Consistency, not evidence (no SRS label): a bug shared by both forms would not break it; the
+// hand values and the calculus case above are DD7's oracles.
 BOOST_AUTO_TEST_CASE(inverse_forms) {
     for (double dt : {1.0 / 60.0, 0.02, 3.0}) {
         const AngularVelocity dw = dd07::angular_velocity_change_over(-0.83 * rad_s2, dt * second);

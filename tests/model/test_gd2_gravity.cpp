@@ -16,7 +16,7 @@ const auto m_s2 = metre / (second * second);
 
 BOOST_AUTO_TEST_SUITE(gd2_gravity)
 
-// The constant against the SRS text (section 2.2: g = 9.81 m s^-2): a transcription check, no
+// Oracle: the SRS text (section 2.2: g = 9.81 m s^-2), transcribed: a transcription check, no
 // evidence of GD2 (a constant compared with its own literal cannot fail independently); GD2's
 // value is verified against T3 (test_t3_universal_gravitation.cpp, surface gravity of Earth).
 BOOST_AUTO_TEST_CASE(standard_gravity_value) {

@@ -346,9 +346,10 @@ BOOST_AUTO_TEST_CASE(overlap_shape_equals_the_gap_oracle, *utf::label("DD34")) {
     BOOST_TEST(found > 100);
 }
 
-// The strong guarantee of the queries (docs/user-guide.md, "Queries"): a refused call names its
-// field and changes no bit; calls that answer change no bit either (the world stepped after
-// them equals a twin stepped without them).
+// Oracle: the strong guarantee stated in docs/user-guide.md ("Queries"): a refused call names its
+// field (ValidationError) or throws InvalidHandle for a handle that names nothing, and leaves
+// state_hash() as before; calls that answer change no bit either, by bitwise equality with a
+// twin world stepped alike without them.
 BOOST_AUTO_TEST_CASE(queries_refuse_bad_input_and_change_nothing, *utf::label("reliability")) {
     const auto build = [] {
         World w;
@@ -436,8 +437,9 @@ BOOST_AUTO_TEST_CASE(queries_refuse_bad_input_and_change_nothing, *utf::label("r
     BOOST_TEST(w.state_hash() == twin.state_hash());
 }
 
-// Every query answers the same on 1 to 4 workers: the worlds stepped alike hold the same bits
-// and the same trees.
+// Oracle: the determinism property stated in docs/user-guide.md ("Queries": every query answers
+// the same on any number of workers): ray, shape-cast and overlap answers in worlds stepped
+// alike on 2 to 4 workers equal the 1-worker world's bit for bit.
 BOOST_AUTO_TEST_CASE(queries_are_equal_on_any_worker_count, *utf::label("determinism")) {
     std::vector<std::vector<double>> answers;
     for (int workers = 1; workers <= 4; ++workers) {

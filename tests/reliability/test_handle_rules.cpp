@@ -30,6 +30,10 @@ BodyId add_ball(World& w, Vec2d at) {
 
 BOOST_AUTO_TEST_SUITE(handle_rules)
 
+// Oracle: the handle rule of docs/user-guide.md: a handle to something destroyed stays invalid
+// when its slot is reused, so the old body's and shape's handles are refused with InvalidHandle
+// while the new body in the same slot keeps its own position (x = 5 m). Fails if the reused slot
+// revives the old handle.
 BOOST_AUTO_TEST_CASE(a_destroyed_body_s_handle_stays_invalid_when_its_slot_is_reused,
                      *utf::label("reliability")) {
     World w;
@@ -46,6 +50,8 @@ BOOST_AUTO_TEST_CASE(a_destroyed_body_s_handle_stays_invalid_when_its_slot_is_re
     BOOST_TEST(w.position(reuse).x == 5.0);
 }
 
+// Oracle: the handle rule of docs/user-guide.md: destroying a body destroys its joints, so the
+// pin's handle is invalid, every call taking it throws InvalidHandle and no joint is left.
 BOOST_AUTO_TEST_CASE(a_destroyed_body_takes_its_joints_handles_with_it,
                      *utf::label("reliability")) {
     World w;
@@ -62,6 +68,9 @@ BOOST_AUTO_TEST_CASE(a_destroyed_body_takes_its_joints_handles_with_it,
     BOOST_TEST(w.joint_count() == 0u);
 }
 
+// Oracle: the handle rule of docs/user-guide.md: moving a world keeps its handles valid in the
+// world moved to (the body keeps its given y = 2 m), and a moved-from world may be assigned to;
+// the fresh world assigned there refuses the handle with InvalidHandle.
 BOOST_AUTO_TEST_CASE(handles_follow_a_moved_world_and_the_moved_from_world_can_be_reused,
                      *utf::label("reliability")) {
     World w;
@@ -74,6 +83,10 @@ BOOST_AUTO_TEST_CASE(handles_follow_a_moved_world_and_the_moved_from_world_can_b
     BOOST_CHECK_THROW(w.position(b), InvalidHandle);
 }
 
+// Oracle: the handle rule of docs/user-guide.md and WrongWorld's contract in errors.hpp: a
+// handle of another world (same index and generation, other tag) is refused with WrongWorld,
+// naming the handle and both worlds' tags, and the world is left unchanged (its state_hash()
+// before and after the refused call agree).
 BOOST_AUTO_TEST_CASE(a_foreign_handle_is_refused_as_one_of_another_world,
                      *utf::label("reliability")) {
     // The first body of every world has the same index and generation; the tag tells them apart.
@@ -105,6 +118,9 @@ BOOST_AUTO_TEST_CASE(a_foreign_handle_is_refused_as_one_of_another_world,
     BOOST_TEST(w2.shapes(in_w2).size() == 1u);
 }
 
+// Oracle: the handle rules of docs/user-guide.md and handles.hpp: a default-constructed handle
+// names nothing, and a handle of no world (tag 0, which no world has) is an unknown handle,
+// refused with InvalidHandle, not with WrongWorld.
 BOOST_AUTO_TEST_CASE(a_default_handle_names_nothing_in_any_world, *utf::label("reliability")) {
     World w;
     add_ball(w, {0.0, 0.0});
@@ -123,9 +139,11 @@ BOOST_AUTO_TEST_CASE(a_default_handle_names_nothing_in_any_world, *utf::label("r
     }
 }
 
+// Oracle: the handle rules of docs/user-guide.md: the tag is no part of the state, so two worlds
+// built by the same calls hash equal while their tags differ; a moved world keeps its tag and
+// its handles.
 BOOST_AUTO_TEST_CASE(a_moved_world_keeps_its_tag_and_equal_worlds_hash_equal,
                      *utf::label("reliability")) {
-    // Oracle: the state hash covers the simulation, not the world's identity (World::tag).
     World a, b;
     const BodyId in_a = add_ball(a, {1.0, 2.0});
     add_ball(b, {1.0, 2.0});
@@ -138,9 +156,11 @@ BOOST_AUTO_TEST_CASE(a_moved_world_keeps_its_tag_and_equal_worlds_hash_equal,
     BOOST_TEST(moved.is_valid(in_a));
 }
 
+// Oracle: the handle rule of docs/user-guide.md (handles are keys of std::unordered_map and
+// std::unordered_set) with the containers' contract: distinct handles, one a reused slot's new
+// generation, give one entry each, each found again by its own handle. Fails if == takes two
+// distinct handles for one key or equal handles hash differently.
 BOOST_AUTO_TEST_CASE(handles_key_unordered_maps, *utf::label("reliability")) {
-    // Oracle: std::unordered_map's contract (equal keys find one entry), checked against a
-    // plain search of the handles.
     World w1, w2;
     std::vector<BodyId> ids;
     for (int k = 0; k < 40; ++k)

@@ -48,6 +48,10 @@ std::vector<std::uint64_t> run(const Scene& s) {
 
 BOOST_AUTO_TEST_SUITE(threads)
 
+// Oracle: the same two scenes stepped one after the other in the main thread (the same inputs
+// give the same bits): run at once in two threads, while a third empties the shared pool of
+// large blocks, each gives the same state hash after every step. The ThreadSanitizer build
+// (.ci/run) fails on a data race.
 BOOST_AUTO_TEST_CASE(two_worlds_in_two_threads_give_the_bits_they_give_alone,
                      *utf::label("reliability")) {
     const std::vector<std::uint64_t> alone[2] = {run(scenes[0]), run(scenes[1])};
@@ -76,6 +80,8 @@ BOOST_AUTO_TEST_CASE(two_worlds_in_two_threads_give_the_bits_they_give_alone,
     }
 }
 
+// Oracle: a twin world given the same steps in this thread (the same inputs give the same
+// bits): a world stepped 30 times here and 30 in another thread has the twin's state hash.
 BOOST_AUTO_TEST_CASE(a_world_handed_to_another_thread_goes_on_as_before,
                      *utf::label("reliability")) {
     World here = reliability::busy_world(), twin = reliability::busy_world();

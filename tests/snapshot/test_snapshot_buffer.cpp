@@ -15,6 +15,10 @@ using namespace snapshot_test;
 
 BOOST_AUTO_TEST_SUITE(snapshot_buffer)
 
+// Oracle: the contract of World::snapshot(bytes) in world.hpp (the same bytes as snapshot(),
+// whatever `bytes` held), checked against snapshot() of the same world into a new vector while
+// the reused vector holds nothing, a smaller snapshot, a larger one or junk with spare capacity;
+// the bytes read back restore a world with the original's state hash.
 BOOST_AUTO_TEST_CASE(a_reused_vector_gets_the_same_bytes, *utf::label("reliability")) {
     World small = random_world(3);
     World large = random_world(4);

@@ -58,9 +58,11 @@ void set_loads(World& w, const io::Scene& scene, const std::vector<BodyId>& ids)
 
 BOOST_AUTO_TEST_SUITE(snapshot_continuation)
 
-// Every example scene, a snapshot at a random step (seeded), a world from it on 1 and on 4
-// workers: the same state (hash and the snapshot's bytes) and the same hashes for every step
-// after, up to 60 steps.
+// Oracle: the uninterrupted run of the original world, and world.hpp's contract that a world
+// built from a snapshot continues with the same bits on any number of workers: for every example
+// scene, a world made from a snapshot at a seeded random step, on 1 and on 4 workers, has the
+// original's state_hash(), writes the same snapshot bytes, and has the original's hash after
+// each of the next steps, up to 60 (the same inputs give the same bits).
 BOOST_AUTO_TEST_CASE(example_scenes_continue_with_the_same_bits, *utf::label("determinism")) {
     std::mt19937_64 r(47);
     for (const fs::path& path : example_scenes()) {
@@ -87,9 +89,10 @@ BOOST_AUTO_TEST_CASE(example_scenes_continue_with_the_same_bits, *utf::label("de
     }
 }
 
-// Rollback: a snapshot restored into the world it was taken from, after it stepped on; the
-// handles issued before the snapshot name the same bodies, and the load functions and the
-// custom filter stay: the world steps again exactly as it did.
+// Oracle: the world's own run after the snapshot, and world.hpp's contract for restore: restored
+// into the world it was taken from after it stepped on, the snapshot gives back the same bytes,
+// the handles issued before it stay valid, and the next 50 steps' state hashes repeat the first
+// 50 (the same inputs give the same bits); the custom filter, kept, is asked as often again.
 BOOST_AUTO_TEST_CASE(restore_rolls_a_world_back, *utf::label("determinism")) {
     for (const std::string name : {"spinning", "car", "ragdoll", "bridge", "two_bodies"}) {
         const io::Scene scene = io::load_scene(fs::path(TAMIAS_EXAMPLE_SCENES) / (name + ".json"));
@@ -117,9 +120,12 @@ BOOST_AUTO_TEST_CASE(restore_rolls_a_world_back, *utf::label("determinism")) {
     }
 }
 
-// Random worlds of every shape and joint kind, with sensors, free slots, loads and sleeping
-// on or off: a snapshot at a random step continues with the same bits, in a world made from it
-// (1 and 4 workers) and restored into another world.
+// Oracle: the uninterrupted run of the original random world (every shape and joint kind,
+// sensors, free slots, loads, sleeping on or off): a world made from a snapshot at a seeded
+// random step (1 and 4 workers) has the original's state_hash(), snapshot bytes and hashes for
+// the next 90 steps, another world restored from it its state_hash() and hashes (the same
+// inputs give the same bits); user data comes back as the snapshot holds it (world.hpp's
+// contract).
 BOOST_AUTO_TEST_CASE(random_worlds_continue_with_the_same_bits, *utf::label("determinism")) {
     const double dt = 1.0 / 60.0;
     for (std::uint64_t seed = 1; seed <= 40; ++seed) {
@@ -152,8 +158,11 @@ BOOST_AUTO_TEST_CASE(random_worlds_continue_with_the_same_bits, *utf::label("det
     }
 }
 
-// A world's snapshot before its first step: the masses attach_shape left pending are brought
-// up to date as the step would, and the world made from it steps as the original.
+// Oracle: the original world stepped on, and world.hpp's contract: a snapshot taken before the
+// first step brings the masses attach_shape left pending up to date as a step would, and gives
+// a world of its own tag (the original's handle not valid in it) with the original's mass and
+// its state hashes for 30 steps (the same inputs give the same bits); an empty world's snapshot
+// gives a world with its hash.
 BOOST_AUTO_TEST_CASE(a_snapshot_before_the_first_step, *utf::label("determinism")) {
     World w;
     BodyDef d;

@@ -91,7 +91,10 @@ std::pair<std::size_t, std::size_t> section_bytes(const std::vector<std::byte>& 
 
 BOOST_AUTO_TEST_SUITE(snapshot_refusal)
 
-// Every bit flip of a sample (seeded) of positions, header and payload alike.
+// Oracle: World::restore's documented strong guarantee (world.hpp): a changed snapshot is
+// refused with SnapshotError, the world's state_hash() and snapshot() bytes as before the call.
+// Every bit of the header, then seeded bits anywhere, each flip breaking a header field or the
+// XXH64 checksum; the intact snapshot is then accepted (positive control).
 BOOST_AUTO_TEST_CASE(a_flipped_bit_is_refused, *utf::label("reliability")) {
     const std::vector<std::byte> good = some_snapshot(3, 40);
     World target = random_world(8);
@@ -110,6 +113,9 @@ BOOST_AUTO_TEST_CASE(a_flipped_bit_is_refused, *utf::label("reliability")) {
     BOOST_TEST((target.snapshot() == good));
 }
 
+// Oracle: World::restore's documented strong guarantee (world.hpp): a truncated snapshot, or
+// one a byte too long, is refused with SnapshotError naming "header" (cut inside the 32-byte
+// header) or "header.payload_size", the world's state_hash() and snapshot() bytes unchanged.
 BOOST_AUTO_TEST_CASE(a_truncated_snapshot_is_refused, *utf::label("reliability")) {
     const std::vector<std::byte> good = some_snapshot(5, 30);
     World target = random_world(6);
@@ -125,6 +131,10 @@ BOOST_AUTO_TEST_CASE(a_truncated_snapshot_is_refused, *utf::label("reliability")
     BOOST_TEST(refused_unchanged(target, longer, "header.payload_size"));
 }
 
+// Oracle: the documented refusals of restore and from_snapshot (world.hpp), the strong
+// guarantee read from state_hash() and snapshot(): JSON text and random noise fail the magic; a
+// real snapshot given the next format version, its checksum made right by the xxHash project's
+// own XXH64, fails the version; workers = 0 is a ValidationError.
 BOOST_AUTO_TEST_CASE(a_foreign_snapshot_is_refused, *utf::label("reliability")) {
     World target = random_world(7);
     const std::string json = R"({"world": {"gravity": [0, -9.81]}, "bodies": []})";
@@ -146,11 +156,14 @@ BOOST_AUTO_TEST_CASE(a_foreign_snapshot_is_refused, *utf::label("reliability")) 
     BOOST_CHECK_THROW(World::from_snapshot(some_snapshot(9, 5), 0), ValidationError);
 }
 
-// Changes behind a checksum made right again (as a forged or buggy writer would make them): the
-// sections' reader checks every count, index, flag and link, so it refuses them (the world
-// unchanged) or builds a world that then steps or refuses its step, never reading out of
-// bounds (the ASan/UBSan build runs this too). Seeded: bytes set to random values, to 0xFF,
-// and runs of them zeroed; TAMIAS_FUZZ_ITERATIONS and TAMIAS_FUZZ_SEED run more or others.
+// Oracle: the documented contract of from_snapshot and restore (world.hpp): an inconsistent
+// snapshot is refused with SnapshotError, the target world unchanged (state_hash() and
+// snapshot() bytes), or the world read from it steps or refuses its step, never reading out of
+// bounds (judged by the ASan/UBSan build). The changes sit behind a checksum made right again
+// by the xxHash project's own XXH64 (as a forged or buggy writer would make them), so only the
+// sections' checks of every count, index, flag and link can catch them; some must be refused.
+// Seeded (random bytes, 0xFF, zeroed runs); TAMIAS_FUZZ_ITERATIONS and TAMIAS_FUZZ_SEED run
+// more or others.
 BOOST_AUTO_TEST_CASE(a_forged_snapshot_is_refused_or_read_safely, *utf::label("reliability")) {
     const long n = fuzz::iterations("TAMIAS_FUZZ_ITERATIONS", 600);
     const std::uint64_t seed = fuzz::base_seed(4);
@@ -183,13 +196,14 @@ BOOST_AUTO_TEST_CASE(a_forged_snapshot_is_refused_or_read_safely, *utf::label("r
     BOOST_TEST(refused > 0);
 }
 
-// Every byte of every section forged, each in turn (1 at even offsets, 0xFF at odd ones; the
-// checksum made right): the reader refuses the snapshot, or the world it reads steps (or
-// refuses the step) without reading outside its arrays. The sanitizer build
+// Oracle: the documented contract of from_snapshot (world.hpp) and the property that a read
+// never leaves its arrays: every byte of every section forged in turn (1 at even offsets, 0xFF
+// at odd ones; the checksum made right by the xxHash project's own XXH64), the reader refuses
+// the snapshot, or the world it reads steps (or refuses the step). The sanitizer build
 // (scripts/test.sh --sanitize) judges the reads; every build, that nothing crashes and that an
-// accepted world's bodies stay finite. The library's debug assertions (the coverage build's
-// _GLIBCXX_ASSERTIONS) judge the preconditions: a joint's impulse bounds forged negative would
-// cross a clamp's bounds.
+// accepted world's bodies stay finite. The standard library's debug assertions (the coverage
+// build's _GLIBCXX_ASSERTIONS) judge the preconditions: a joint's impulse bounds forged negative
+// would cross a clamp's bounds.
 BOOST_AUTO_TEST_CASE(every_byte_of_every_section_forged, *utf::label("reliability")) {
     const std::vector<std::byte> good = some_snapshot(11 + fuzz::base_seed(4), 60);
     const auto [joints_begin, joints_end] = section_bytes(good, "JOIN");
