@@ -277,6 +277,28 @@ BOOST_AUTO_TEST_CASE(bodies_put_to_sleep_wait_to_be_woken) {
     }
 }
 
+// Oracle: the documented rule of set_awake, a body put to sleep has zero velocities, loads and
+// time at rest, as one defined asleep has; state_hash reads the sleep timers. Without gravity a
+// box rests awake for 20 steps (a third of time_to_sleep) and is put to sleep; a second world
+// whose box is defined asleep steps as often. Their states are equal.
+BOOST_AUTO_TEST_CASE(a_body_put_to_sleep_is_as_one_defined_asleep) {
+    WorldDef d = def_with_sleep();
+    d.gravity = {0.0, 0.0};
+    World rested(d), defined(d);
+    const BodyId a = box(rested, 0.0, 1.0);
+    BodyDef asleep;
+    asleep.awake = false;
+    box(defined, 0.0, 1.0, asleep);
+    for (int i = 0; i < 20; ++i) {
+        rested.step(dt);
+        defined.step(dt);
+    }
+    BOOST_TEST_REQUIRE(rested.is_awake(a));
+    BOOST_TEST(rested.state_hash() != defined.state_hash()); // its time at rest is counted
+    rested.set_awake(a, false);
+    BOOST_TEST(rested.state_hash() == defined.state_hash());
+}
+
 // Oracle: a kinematic body's given motion. A moving kinematic body that reaches a sleeping box
 // wakes it and pushes it along; a kinematic body at rest falls asleep like any other.
 BOOST_AUTO_TEST_CASE(kinematic_bodies_wake_what_they_reach) {
