@@ -283,4 +283,31 @@ BOOST_AUTO_TEST_CASE(a_joints_impulse_bound_forged_negative_is_refused,
     }
 }
 
+// A record count forged beyond what the bytes left can hold (the broad phase's first tree's
+// node count, set to the number of bytes left after it) is refused by its own rule, before any
+// record is read or allocated, not later as a cut-short snapshot. Oracle: SnapshotError's
+// documented rule, "a count beyond the bytes left" (snapshot_error.hpp), and the node's size:
+// a node holds at least its box, four doubles, so a count of one node per byte left cannot fit.
+// The count's place, the section tag then two doubles (margin, least margin), is the format's.
+BOOST_AUTO_TEST_CASE(a_count_beyond_the_bytes_left_is_refused_as_such, *utf::label("reliability")) {
+    const std::vector<std::byte> good = some_snapshot(5, 20);
+    const std::size_t at = section_bytes(good, "BRPH").first + 4 + 2 * sizeof(double);
+    const std::uint64_t left = good.size() - (at + 8);
+    std::vector<std::byte> forged = good;
+    for (int k = 0; k < 8; ++k)
+        forged[at + std::size_t(k)] = std::byte(left >> (8 * k));
+    fix_checksum(forged);
+    World target = random_world(6);
+    BOOST_TEST(refused_unchanged(target, forged, ""));
+    try {
+        World::from_snapshot(forged);
+        BOOST_TEST(false, "accepted");
+    } catch (const SnapshotError& e) {
+        BOOST_TEST(e.offset == at, e.what());
+        BOOST_TEST(e.field.ends_with("nodes"), e.what());
+        BOOST_TEST(e.rule.starts_with("must fit in the " + std::to_string(left) + " bytes left"),
+                   e.what());
+    }
+}
+
 BOOST_AUTO_TEST_SUITE_END()
