@@ -179,6 +179,32 @@ class Judging(unittest.TestCase):
         self.assertEqual([s["label"] for s in mr.summarise(rows, items, {})],
                          ["DD8", "DD17", "T3"])
 
+    def test_a_failing_entry_is_checked_unperturbed_after_the_restore(self):
+        # judge() leaves the question "does it fail anyway?" pending; judge_reach asks it once
+        # judge() has restored the build, and judges again without an entry that fails anyway.
+        calls = []
+
+        def fake_judge(p, label, src, build, engine, objects, baseline, timeout, unmutated=None):
+            calls.append(("judge", dict(baseline)))
+            failed = "e@DD17" if baseline.get("e@DD17", True) else "f@DD17"
+            return {"result": "verified", "failed": failed, "pending": failed}
+
+        def fake_passes(name, build, engine, baseline, timeout):
+            calls.append(("baseline", name))
+            baseline[name] = name != "e@DD17"  # e fails unperturbed too; f passes
+            return baseline[name]
+
+        saved = mr.judge, mr.passes_unperturbed
+        mr.judge, mr.passes_unperturbed = fake_judge, fake_passes
+        try:
+            row = mr.judge_reach(FLIP, "DD17", "src", "build", {}, {}, {}, 60)
+        finally:
+            mr.judge, mr.passes_unperturbed = saved
+        self.assertEqual(row["failed"], "f@DD17")
+        self.assertNotIn("pending", row)
+        self.assertEqual([c[0] for c in calls], ["judge", "baseline", "judge", "baseline"])
+        self.assertEqual(calls[2][1], {"e@DD17": False})
+
 
 if __name__ == "__main__":
     unittest.main()
