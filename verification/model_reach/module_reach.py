@@ -24,8 +24,8 @@ applies exactly once, every model module has at least one, and every TM, GD, DD 
 srs/ has a module.
 
     /usr/bin/python3 verification/model_reach/module_reach.py OUT_DIR [--subset damping]
-        [--only LABEL,...] [--first LABEL,...] [--lazy] [--resume] [--scratch DIR]
-        [--test-timeout S]
+        [--only LABEL,...] [--first LABEL,...] [--breadth] [--lazy] [--resume]
+        [--scratch DIR] [--test-timeout S]
     /usr/bin/python3 verification/model_reach/module_reach.py --check
     /usr/bin/python3 verification/model_reach/module_reach.py --list
 
@@ -308,6 +308,15 @@ def expected(label, items):
 
 
 # ------------------------------------------------------------------------------- main
+def breadth_first(chosen):
+    """The perturbations reordered: each module's first (in the order given), then each
+    module's second, and so on; the order given kept within each rank."""
+    nth, seen = {}, {}
+    for p in chosen:
+        nth[(p.module, p.name)] = seen[p.module] = seen.get(p.module, -1) + 1
+    return sorted(chosen, key=lambda p: nth[(p.module, p.name)])
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("out_dir", nargs="?")
@@ -320,6 +329,10 @@ def main(argv=None):
     ap.add_argument("--only", help="these items only (comma-separated labels)")
     ap.add_argument("--first", help="judge these items' perturbations before the others "
                                     "(comma-separated labels: a run that may be cut short)")
+    ap.add_argument("--breadth", action="store_true",
+                    help="judge every module's first perturbation before any module's second, "
+                         "and so on (after --first's order): a run that may be cut short "
+                         "reaches every module first")
     ap.add_argument("--lazy", action="store_true",
                     help="build the scratch's test executables as the perturbations need them, "
                          "not all of them first: a run that may be cut short starts judging "
@@ -361,6 +374,8 @@ def main(argv=None):
         first = [x.strip() for x in a.first.split(",") if x.strip()]
         rank = {lab: i for i, lab in enumerate(first)}
         chosen.sort(key=lambda p: rank.get(labels[p.module], len(rank)))  # stable
+    if a.breadth:
+        chosen = breadth_first(chosen)
     items = srs_items(a.root)
     lock = hold_scratch(a.root, a.scratch)  # noqa: F841 (held until the process ends)
     coverage = instrumented(a.scratch)

@@ -205,6 +205,12 @@ class Judging(unittest.TestCase):
         self.assertEqual([c[0] for c in calls], ["judge", "baseline", "judge", "baseline"])
         self.assertEqual(calls[2][1], {"e@DD17": False})
 
+    def test_breadth_first_reaches_every_module_first(self):
+        ps = [P(m + ".hpp", f, "", "", "") for m, f in
+              [("a", "f"), ("a", "g"), ("b", "h"), ("c", "i"), ("c", "j"), ("c", "k")]]
+        got = [p.name for p in mr.breadth_first(ps)]
+        self.assertEqual(got, ["f", "h", "i", "g", "j", "k"])
+
 
 if __name__ == "__main__":
     unittest.main()
