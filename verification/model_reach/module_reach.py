@@ -38,7 +38,6 @@ for the run: a second module reach on it stops.
 """
 import argparse
 import datetime
-import fcntl
 import fnmatch
 import json
 import os
@@ -293,13 +292,7 @@ def hold_scratch(root, scratch):
         if not any(fnmatch.fnmatch(top, pat) for pat in mutate.IGNORED_AT_TOP):
             raise SystemExit(f"the scratch {scratch} lies inside {root}, where the copy would "
                              "take it in: choose one outside, or under build*/")
-    os.makedirs(scratch, exist_ok=True)
-    fh = open(os.path.join(scratch, ".module_reach.lock"), "w")
-    try:
-        fcntl.flock(fh, fcntl.LOCK_EX | fcntl.LOCK_NB)
-    except OSError:
-        raise SystemExit(f"the scratch {scratch} is in use by another module reach run")
-    return fh
+    return mutate.lock_scratch(scratch)
 
 
 def expected(label, items):

@@ -205,6 +205,18 @@ class Judging(unittest.TestCase):
         self.assertEqual([c[0] for c in calls], ["judge", "baseline", "judge", "baseline"])
         self.assertEqual(calls[2][1], {"e@DD17": False})
 
+    def test_a_scratch_in_use_by_a_mutation_run_is_refused(self):
+        # mutate.py and this script share the scratch: one lock for both, or they would build
+        # each other's mutants.
+        with tempfile.TemporaryDirectory() as d:
+            root, scratch = os.path.join(d, "tree"), os.path.join(d, "scratch")
+            os.makedirs(root)
+            held = mr.mutate.lock_scratch(scratch)
+            with self.assertRaises(SystemExit):
+                mr.hold_scratch(root, scratch)
+            held.close()
+            mr.hold_scratch(root, scratch).close()
+
     def test_breadth_first_reaches_every_module_first(self):
         ps = [P(m + ".hpp", f, "", "", "") for m, f in
               [("a", "f"), ("a", "g"), ("b", "h"), ("c", "i"), ("c", "j"), ("c", "k")]]

@@ -572,20 +572,51 @@ class Unmutated:
         return True
 
 
+UNLABELLED = ".unlabelled"
+
+
+SCRATCH_LOCK = ".lock"
+
+
+def lock_scratch(scratch):
+    """An exclusive lock on the scratch (an open file; released when it is closed or the
+    process ends). One run per scratch, of this script or of module_reach.py, which shares
+    it: two runs in one copy would build each other's mutants and overwrite each other's
+    sources."""
+    os.makedirs(scratch, exist_ok=True)
+    fh = open(os.path.join(scratch, SCRATCH_LOCK), "w")
+    try:
+        fcntl.flock(fh, fcntl.LOCK_EX | fcntl.LOCK_NB)
+    except OSError:
+        fh.close()
+        raise SystemExit(f"the scratch {scratch} is in use by another mutation or module reach "
+                         "run: pass --scratch DIR")
+    return fh
+
+
 def ctest_entries(catalogue, labels, targets=()):
     """{test name: executable target} of the CTest entries (ctest --show-only=json-v1's
-    "tests") carrying any of labels, and every labelled entry of the executables targets."""
+    "tests") carrying any of labels, every labelled entry of the executables targets, and the
+    unlabelled entry (`<target>.unlabelled`: the executable's cases that carry no label) of
+    every executable so chosen: a case without a label (the sleeping, the API's guarantees) is
+    a test with an oracle all the same, and one that kills a mutant kills it."""
     entries = {}
+    unlabelled = set()
     for t in catalogue:
         props = {p["name"]: p["value"] for p in t.get("properties", [])}
         tl = props.get("LABELS", [])
         if isinstance(tl, str):
             tl = [tl]
+        if t["name"].endswith(UNLABELLED):
+            unlabelled.add(t["name"])
         if "@" not in t["name"]:
             continue
         target = t["name"].split("@", 1)[0]
         if set(tl) & set(labels) or target in targets:
             entries[t["name"]] = target
+    for target in set(entries.values()):
+        if target + UNLABELLED in unlabelled:
+            entries[target + UNLABELLED] = target
     return entries
 
 
@@ -659,14 +690,24 @@ def judge(m, src, build, entries, test_timeout, objects=None, env=None, commands
 
 
 def commands_of(catalogue):
-    """{CTest name: (executable, working directory)} of the catalogue's labelled entries whose
-    executable exists (ctest --show-only names a command only then)."""
+    """{CTest name: (executable, working directory, own run)} of the catalogue's labelled and
+    unlabelled entries whose executable exists (ctest --show-only names a command only then).
+    The own run is the unlabelled entry's (arguments: its filter of the cases that carry no
+    label; skip: the pattern of its output that CTest reads as skipped, such as Boost.Test's
+    "no test cases matching filter" when every case has a label), None for a labelled entry
+    (run_tests filters by its label)."""
     out = {}
     for t in catalogue:
-        if "@" not in t["name"] or not t.get("command"):
+        unlabelled = t["name"].endswith(UNLABELLED)
+        if ("@" not in t["name"] and not unlabelled) or not t.get("command"):
             continue
         props = {p["name"]: p["value"] for p in t.get("properties", [])}
-        out[t["name"]] = (t["command"][0], props.get("WORKING_DIRECTORY"))
+        own = None
+        if unlabelled:
+            skip = props.get("SKIP_REGULAR_EXPRESSION") or []
+            own = {"args": list(t["command"][1:]),
+                   "skip": [skip] if isinstance(skip, str) else list(skip)}
+        out[t["name"]] = (t["command"][0], props.get("WORKING_DIRECTORY"), own)
     return out
 
 
@@ -690,7 +731,7 @@ def _order(units, key):
     equals, so a survivor's two-at-a-time run ends soonest."""
     def rank(kv):
         target, u = kv
-        cost = _COSTS.get(target, 1.0) * len(u["labels"])
+        cost = _COSTS.get(target, 1.0) * max(1, len(u["labels"]))
         k, n = _KILLS.get((key, target), (0, 0))
         return (-(k + 1) / (n + 2) / max(cost, 0.05), -cost, target)
     return sorted(units.items(), key=rank)
@@ -706,7 +747,11 @@ def run_tests(entries, commands, test_timeout, env=None, jobs=2, key=None):
     status could only say so later), and at the first failure the others are stopped."""
     units = {}
     for n, target in sorted(entries.items()):
-        exe, cwd = commands[n]
+        exe, cwd, *rest = commands[n]
+        own = rest[0] if rest else None
+        if own is not None:  # an unlabelled entry: a run of its own, with its own filter
+            units[n] = {"exe": exe, "cwd": cwd, "labels": [], "names": [n], **own}
+            continue
         u = units.setdefault(target, {"exe": exe, "cwd": cwd, "labels": [], "names": []})
         u["labels"].append(n.split("@", 1)[1])
         u["names"].append(n)
@@ -719,9 +764,9 @@ def run_tests(entries, commands, test_timeout, env=None, jobs=2, key=None):
                 target, u = todo.pop(0)
                 # Bytes: it is read while being written, perhaps within a character.
                 out = tempfile.TemporaryFile(mode="w+b")
-                p = subprocess.Popen([u["exe"], "--run_test=" + ":".join("@" + x for x in
-                                                                          u["labels"]),
-                                      "--color_output=no"], cwd=u["cwd"] or None, stdout=out,
+                args = u.get("args") or ["--run_test=" + ":".join("@" + x for x in u["labels"]),
+                                         "--color_output=no"]
+                p = subprocess.Popen([u["exe"], *args], cwd=u["cwd"] or None, stdout=out,
                                      stderr=subprocess.STDOUT, env=full_env)
                 running.append([p, target, u, out, time.monotonic(), 0, b""])
             if failed:
@@ -745,9 +790,15 @@ def run_tests(entries, commands, test_timeout, env=None, jobs=2, key=None):
                     p.kill()
                     p.wait()
                 if not late:  # to its end or to its first failure: what a kill costs
-                    _COSTS[target] = (time.monotonic() - t0) / len(u["labels"])
+                    _COSTS[target] = (time.monotonic() - t0) / max(1, len(u["labels"]))
                 stats = _KILLS.setdefault((key, target), [0, 0])
                 stats[1] += 1
+                if rc not in (None, 0) and not early and u.get("skip"):
+                    # Skipped as CTest would (no case matched the unlabelled entry's filter).
+                    out.seek(0)
+                    text = out.read().decode("utf-8", "replace")
+                    if any(re.search(x, text) for x in u["skip"]):
+                        rc = 0
                 if late or early or rc != 0:
                     stats[0] += 1
                     failed += u["names"]
@@ -1454,14 +1505,7 @@ def main(argv=None):
     # still cuts the sample at a window's end, not after a few whole files.
     chosen = [m for k in range(0, len(chosen), WINDOW)
               for m in sorted(chosen[k:k + WINDOW], key=lambda m: (m["file"], m["line"], m["id"]))]
-    # One run per scratch: two runs in one copy would build each other's mutants.
-    os.makedirs(a.scratch, exist_ok=True)
-    lock = open(os.path.join(a.scratch, ".lock"), "w")
-    try:
-        fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
-    except OSError:
-        lock.close()
-        raise SystemExit(f"{a.scratch} is in use by another mutate.py run: pass --scratch DIR")
+    lock = lock_scratch(a.scratch)
     try:
         return judge_run(a, muts, chosen, selection, shard)
     finally:

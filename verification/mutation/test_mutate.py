@@ -562,6 +562,50 @@ class Tests(unittest.TestCase):
                                  ["", "--run_test=@IM3:@R7 --color_output=no",
                                   "model --run_test=@DD8 --color_output=no"])
 
+    def test_an_unlabelled_entry_runs_on_its_own_with_its_own_filter(self):
+        with tempfile.TemporaryDirectory() as d:
+            log = os.path.join(d, "log")
+            exe = script(os.path.join(d, "engine_tests"), f'echo "$@" >> {log}')
+            commands = {"engine_tests@IM3": (exe, d, None),
+                        "engine_tests.unlabelled": (exe, d, {"args": ["--run_test=!@IM3:!@R7",
+                                                                      "--color_output=no"],
+                                                             "skip": []})}
+            entries = {n: "engine_tests" for n in commands}
+            self.assertEqual(mutate.run_tests(entries, commands, 30), ([], ""))
+            with open(log) as fh:
+                self.assertEqual(sorted(fh.read().split("\n")),
+                                 ["", "--run_test=!@IM3:!@R7 --color_output=no",
+                                  "--run_test=@IM3 --color_output=no"])
+            bad = script(os.path.join(d, "bad"), "echo 'check failed'; exit 201")
+            commands["engine_tests.unlabelled"] = (bad, d, {"args": ["--run_test=!@IM3"],
+                                                            "skip": ["no test cases matching"]})
+            failed, _ = mutate.run_tests(entries, commands, 30)
+            self.assertEqual(failed, ["engine_tests.unlabelled"])
+            # Boost.Test's answer when every case has a label: skipped, as CTest reads it.
+            none = script(os.path.join(d, "none"),
+                          "echo 'Test setup error: no test cases matching filter'; exit 200")
+            commands["engine_tests.unlabelled"] = (none, d, {"args": ["--run_test=!@IM3"],
+                                                             "skip": ["no test cases matching"]})
+            self.assertEqual(mutate.run_tests(entries, commands, 30)[0], [])
+
+    def test_the_entries_of_a_label_bring_their_executables_unlabelled_cases(self):
+        def entry(name, labels, args=()):
+            return {"name": name, "command": ["/b/" + name.split("@")[0].split(".")[0], *args],
+                    "properties": [{"name": "LABELS", "value": labels}]}
+        catalogue = [entry("engine_tests@IM3", ["IM3"]), entry("engine_tests@R7", ["R7"]),
+                     entry("engine_tests.unlabelled", ["unlabelled"], ["--run_test=!@IM3"]),
+                     entry("model_tests@DD8", ["DD8"]),
+                     entry("model_tests.unlabelled", ["unlabelled"], ["--run_test=!@DD8"])]
+        self.assertEqual(mutate.ctest_entries(catalogue, ["IM3"]),
+                         {"engine_tests@IM3": "engine_tests",
+                          "engine_tests.unlabelled": "engine_tests"})
+        catalogue[2]["properties"].append({"name": "SKIP_REGULAR_EXPRESSION",
+                                           "value": ["no test cases matching filter"]})
+        commands = mutate.commands_of(catalogue)
+        self.assertEqual(commands["engine_tests.unlabelled"][2],
+                         {"args": ["--run_test=!@IM3"], "skip": ["no test cases matching filter"]})
+        self.assertIsNone(commands["engine_tests@IM3"][2])
+
     def test_the_first_failure_stops_the_others_and_a_time_out_fails(self):
         with tempfile.TemporaryDirectory() as d:
             slow = script(os.path.join(d, "slow"), "sleep 30")
