@@ -117,4 +117,32 @@ BOOST_AUTO_TEST_CASE(motor_spins_up_under_its_torque_limit,
     BOOST_TEST(w.world.angular_velocity(w.wheel) == target, boost::test_tools::tolerance(1e-12));
 }
 
+// Oracle: static equilibrium (T1 with zero acceleration). A wheel without its spring, under
+// its weight m g, falls onto the lower limit of its travel and rests there: the limit alone
+// then carries the weight, so the joint's reaction on the wheel is (0, m g), the wheel is
+// still and its travel is the limit's less IM6's soft error under that load, g / omega_J^2
+// (omega_J = 2 pi f_J of WorldDef::joint_hertz) at equilibrium; half of it again is allowed for
+// the substeps' discrete soft step. Each substep's first impulse is the limit's last (warm
+// starting): a first impulse of the wrong sign shows as a wheel that is not at rest.
+BOOST_AUTO_TEST_CASE(a_wheel_resting_on_its_lower_limit_is_held_by_it,
+                     *utf::label("DD25") * utf::label("IM6") * utf::label("LC3")) {
+    const double lower = -0.1, dt = 1.0 / 60.0;
+    Wheel w({0.0, -g}, WheelJointDef{.enable_spring = false,
+                                     .enable_limit = true,
+                                     .lower_translation = lower,
+                                     .upper_translation = 0.1});
+    for (int k = 1; k <= 120; ++k)
+        w.world.step(dt);
+    const double m = w.world.mass(w.wheel);
+    const double omega = 2.0 * std::numbers::pi * WorldDef{}.joint_hertz;
+    const Vec2d reaction = w.world.joint_reaction_force(w.joint);
+    BOOST_TEST_MESSAGE("on the limit: travel " << w.world.joint_translation(w.joint)
+                                               << " m, reaction (" << reaction.x << ", "
+                                               << reaction.y << ") N, m g " << m * g << " N");
+    BOOST_TEST(std::abs(w.world.joint_translation(w.joint) - lower) <= 1.5 * g / (omega * omega));
+    BOOST_TEST(std::abs(w.world.velocity(w.wheel).y) <= 1e-6);
+    BOOST_TEST(reaction.y == m * g, boost::test_tools::tolerance(1e-6));
+    BOOST_TEST(std::abs(reaction.x) <= 1e-9);
+}
+
 BOOST_AUTO_TEST_SUITE_END()
