@@ -134,4 +134,25 @@ BOOST_AUTO_TEST_CASE(the_games_own_filter, *utf::label("DD27") * utf::label("R7"
     }
 }
 
+// Oracle: the custom filter's stated contract (World::set_custom_filter): a refused pair is
+// asked again only when the broad phase reports it anew, that is when one of its shapes moves
+// out of its fat box. Without gravity a box that overlaps the ground and is refused never
+// moves: over 30 steps the filter is asked about the pair exactly once, at the first.
+BOOST_AUTO_TEST_CASE(a_refused_pair_that_stays_put_is_asked_once,
+                     *utf::label("DD27") * utf::label("R7")) {
+    Ground s(Filter{}, Filter{});
+    s.world.set_gravity({0.0, 0.0});
+    int asked = 0;
+    s.world.set_custom_filter([&](ShapeId, ShapeId) {
+        ++asked;
+        return false;
+    });
+    for (int k = 1; k <= 30; ++k) {
+        s.world.step(dt);
+        BOOST_TEST_REQUIRE(asked == 1, "step " << k);
+    }
+    BOOST_TEST(s.world.position(s.box).y == 0.5);
+    BOOST_TEST(s.world.contacts().empty());
+}
+
 BOOST_AUTO_TEST_SUITE_END()
