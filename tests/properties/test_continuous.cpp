@@ -222,6 +222,48 @@ BOOST_AUTO_TEST_CASE(a_stopped_spinning_body_turns_part_of_its_way, *utf::label(
     BOOST_TEST(stopped > 100);
 }
 
+// Oracle: the geometry of the turn. A body that does not translate but turns is swept when
+// the farthest point of its shapes from its centre of mass may travel farther than the
+// speculative distance in the step (DD29's motion bound, the reach measured from the centre of
+// mass). Its one shape, a disc of 5 cm, sits 2 m from its centre of mass (set_mass_data puts
+// the centre 1 m on the other side of the body's origin), and it turns at 20 rad/s: the disc
+// swings 0.67 m a step, across a static segment 0.25 m away. Its centre never ends a step past
+// the segment's line; without continuous collision it does (so the test can fail). The scene
+// is built along y and again turned a quarter turn, along x.
+BOOST_AUTO_TEST_CASE(a_turning_body_is_swept_from_its_centre_of_mass, *utf::label("DD29")) {
+    const auto swing = [](bool continuous, bool turned) {
+        // The scene's points, turned a quarter turn counter-clockwise when asked.
+        const auto at = [turned](double x, double y) {
+            return turned ? Vec2d{-y, x} : Vec2d{x, y};
+        };
+        WorldDef def;
+        def.enable_continuous = continuous;
+        def.gravity = {0.0, 0.0};
+        World world(def);
+        BodyDef wall;
+        wall.type = BodyType::static_body;
+        world.create_shape(world.create_body(wall), segment_shape(at(-0.3, 0.5), at(-0.3, 1.5)));
+        const BodyId body = world.create_body(BodyDef{});
+        const ShapeId disc = world.create_shape(body, circle_shape(0.05, {}, at(0.0, 1.0)));
+        world.set_mass_data(body,
+                            BodyMassData{.mass = 1.0, .center = at(0.0, -1.0), .inertia = 1.0});
+        world.set_velocity(body, {0.0, 0.0});
+        world.set_angular_velocity(body, 20.0); // counter-clockwise: towards the segment
+        bool crossed = false;
+        for (int k = 0; k < 10; ++k) {
+            world.step(dt);
+            const Aabb box = world.shape_aabb(disc);
+            const Vec2d c{0.5 * (box.min_x + box.max_x), 0.5 * (box.min_y + box.max_y)};
+            crossed = crossed || (turned ? c.y : c.x) < -0.3; // the unturned scene's x
+        }
+        return crossed;
+    };
+    for (const bool turned : {false, true}) {
+        BOOST_TEST(!swing(true, turned), (turned ? "along x" : "along y"));
+        BOOST_TEST(swing(false, turned), (turned ? "along x" : "along y"));
+    }
+}
+
 // Oracle: determinism (same inputs, same bits): a shot the pass acts on, fired twice.
 BOOST_AUTO_TEST_CASE(continuous_deterministic, *utf::label("determinism")) {
     const Shot s{false, 0.05, 0.8, 0.3, 1500.0, 0.2, 1.3, 0.1};
