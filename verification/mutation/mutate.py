@@ -8,10 +8,10 @@ changed (c -> 2c, 0 -> 1), or an assignment statement removed. The mutant is bui
 scratch copy of the repository with its own build directory (never the caller's) and judged
 by the CTest entries labelled with the SRS items that the mutated file, or a library header it
 includes, names in its \\srs tags (a file that reaches no tag: those of the files that include
-it), by the golden state hashes of tests/determinism and by the snapshot suite of
-tests/snapshot. A mutant is killed when they fail (or
-time out); one that passes is judged again in an ASan and UBSan build of the same copy, where a
-sanitizer report kills it; it survives when it passes there too. A mutant is stillborn when it
+it) and by the cases without a label in the same test executables, by the golden state hashes
+of tests/determinism and by the snapshot suite of tests/snapshot. A mutant is killed when they
+fail (or time out); one that passes is judged again in an ASan and UBSan build of the same copy,
+where a sanitizer report kills it; it survives when it passes there too. A mutant is stillborn when it
 does not compile, not built when its objects come out bit for bit as the unmutated ones (a
 line of a #if branch this build skips): neither is counted in the score.
 The sample is ranked by a seeded hash of each mutant's file, line text, operator and
@@ -1077,9 +1077,9 @@ def make_doc(results, judgements, *, population, chosen, selection, complete, pr
                        "swaps, constants, comparisons, removed assignments) built in a scratch "
                        "copy, judged by the CTest entries labelled with the SRS items the mutated "
                        "file's \\srs tags, or those of the library headers it includes, name (a "
-                       "file that reaches no tag: those of the files that include it), and by the "
-                       "golden state hashes (tests/determinism) and the snapshot suite "
-                       "(tests/snapshot); "
+                       "file that reaches no tag: those of the files that include it) and by the "
+                       "cases without a label in the same test executables, and by the golden "
+                       "state hashes (tests/determinism) and the snapshot suite (tests/snapshot); "
                        + ("a survivor is judged again in an ASan and UBSan build, where a "
                           "sanitizer report kills it" if selection.get("sanitizer", True) else
                           "survivors not judged again in an ASan and UBSan build (--no-sanitizer: "
