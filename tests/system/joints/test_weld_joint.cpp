@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "support/damped_oscillator.hpp"
 #include "system/system_support.hpp"
@@ -44,6 +46,38 @@ BOOST_AUTO_TEST_CASE(rigid_cantilever_balances_its_weight,
     const double sag = std::abs(world.position(beam).y) + 0.5 * std::abs(world.joint_angle(j));
     BOOST_TEST_MESSAGE("cantilever tip sag " << sag << " m");
     BOOST_TEST(sag <= 1e-3);
+}
+
+// Oracle: statics, as above, for eight such beams side by side, each welded to the one wall:
+// eight independent joints of one kind, which the solver may take in packs (as it packs plain
+// revolute pins, DD19 alone): each weld still holds its beam's angle, balancing the torque
+// m g 0.5 N m, and its tip sags by the joint's compliance only.
+BOOST_AUTO_TEST_CASE(eight_cantilevers_side_by_side_each_balance_their_weight,
+                     *utf::label("DD24") * utf::label("IM6") * utf::label("LC3")) {
+    const double g = 9.81;
+    World world(WorldDef{.gravity = {0.0, -g}, .enable_sleep = false});
+    BodyDef wall_def;
+    wall_def.type = BodyType::static_body;
+    const BodyId wall = world.create_body(wall_def);
+    std::vector<std::pair<BodyId, JointId>> beams;
+    for (int k = 0; k < 8; ++k) {
+        const double y = 2.0 * k; // far apart: no beam touches another
+        BodyDef beam_def;
+        beam_def.position = {0.5, y};
+        const BodyId beam = world.create_body(beam_def);
+        world.create_shape(beam, box_shape(1.0, 0.1));
+        beams.emplace_back(beam, world.create_joint(WeldJointDef{
+                                     .body_a = wall, .body_b = beam, .anchor = {0.0, y}}));
+    }
+    for (int k = 0; k < 120; ++k)
+        world.step(1.0 / 60.0);
+    for (const auto& [beam, j] : beams) {
+        const double m = world.mass(beam);
+        BOOST_TEST(world.joint_reaction_torque(j) == 0.5 * m * g,
+                   boost::test_tools::tolerance(1e-6));
+        const double sag = std::abs(world.joint_angle(j));
+        BOOST_TEST(0.5 * sag <= 1e-3);
+    }
 }
 
 /// A box welded at its centre to a static body with a soft angle, set turning at w0: its
