@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <random>
 #include <span>
 #include <string>
@@ -307,6 +308,52 @@ BOOST_AUTO_TEST_CASE(a_count_beyond_the_bytes_left_is_refused_as_such, *utf::lab
         BOOST_TEST(e.field.ends_with("nodes"), e.what());
         BOOST_TEST(e.rule.starts_with("must fit in the " + std::to_string(left) + " bytes left"),
                    e.what());
+    }
+}
+
+// A body's moment of inertia is read as any finite non-negative value: the largest finite
+// double is accepted (its inverse written to match), and infinity is refused, naming the field.
+// Oracle: the rule of the mass properties as update_mass leaves them (body_store.cpp's reader:
+// a dynamic body's inertia finite and >= 0, the inverses its own), the boundary on each side.
+// The fields are found by their bytes: a disc of radius 0.5 alone in its world has
+// I = m r^2 / 2 = pi / 32 kg m^2, a value no other field holds, and 1 / I.
+BOOST_AUTO_TEST_CASE(a_bodys_inertia_is_read_up_to_the_largest_finite_value,
+                     *utf::label("reliability")) {
+    World w(WorldDef{.gravity = {0.0, 0.0}});
+    const BodyId disc = w.create_body(BodyDef{});
+    w.create_shape(disc, circle_shape(0.5));
+    const double inertia = w.inertia(disc);
+    const std::vector<std::byte> good = w.snapshot();
+    const auto [begin, end] = section_bytes(good, "BODY");
+    const auto bytes = [](double v) {
+        std::vector<std::byte> out(sizeof v);
+        std::memcpy(out.data(), &v, sizeof v);
+        return out;
+    };
+    const auto forged = [&](double to) {
+        std::vector<std::byte> b = good;
+        for (const auto& [from, into] : {std::pair{inertia, to}, {1.0 / inertia, 1.0 / to}}) {
+            const std::vector<std::byte> f = bytes(from), t = bytes(into);
+            const auto at = std::search(b.begin() + std::ptrdiff_t(begin),
+                                        b.begin() + std::ptrdiff_t(end), f.begin(), f.end());
+            BOOST_TEST_REQUIRE((at != b.begin() + std::ptrdiff_t(end)));
+            std::copy(t.begin(), t.end(), at);
+        }
+        fix_checksum(b);
+        return b;
+    };
+    const double largest = std::numeric_limits<double>::max();
+    World loaded = World::from_snapshot(forged(largest));
+    for (const BodyId b : loaded.bodies()) { // the one body, by the new world's handle
+        BOOST_TEST(loaded.inertia(b) == largest);
+        loaded.step(1.0 / 60.0);
+        BOOST_TEST(std::isfinite(loaded.angular_velocity(b)));
+    }
+    try {
+        World::from_snapshot(forged(std::numeric_limits<double>::infinity()));
+        BOOST_TEST(false, "an infinite inertia accepted");
+    } catch (const SnapshotError& e) {
+        BOOST_TEST(e.field.ends_with("inertia"), e.what());
     }
 }
 
