@@ -8,9 +8,12 @@
 // of the engine, not an SRS item: the `determinism` tag.
 #include <boost/test/unit_test.hpp>
 
+#include <bit>
 #include <cstdint>
 #include <random>
+#include <span>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "snapshot/snapshot_worlds.hpp"
@@ -178,6 +181,54 @@ BOOST_AUTO_TEST_CASE(a_snapshot_before_the_first_step, *utf::label("determinism"
     BOOST_TEST(first_difference(run(w, 0.01, 30), run(restored, 0.01, 30)) == 0);
     World empty;
     BOOST_TEST(World::from_snapshot(empty.snapshot()).state_hash() == empty.state_hash());
+}
+
+// Oracle: world.hpp's contract for restore (the world is put in the state the snapshot holds)
+// and the world's own report at the snapshot: contacts(), read just before a restore rolls the
+// world back, reads after it what it read when the snapshot was taken, pair by pair and point by
+// point, not the report of the state the world left.
+BOOST_AUTO_TEST_CASE(the_contact_report_after_a_restore_is_the_snapshots,
+                     *utf::label("determinism")) {
+    const io::Scene scene = io::load_scene(fs::path(TAMIAS_EXAMPLE_SCENES) / "pyramid20.json");
+    World w(scene.world);
+    io::build_world(scene, w);
+    for (int s = 0; s < 30; ++s)
+        w.step(scene.dt);
+    const std::vector<std::byte> bytes = w.snapshot();
+    const std::vector<ContactInfo> then(w.contacts().begin(), w.contacts().end());
+    BOOST_TEST_REQUIRE(!then.empty());
+    for (int s = 0; s < 30; ++s) // the pyramid settles on: other impulses, other separations
+        w.step(scene.dt);
+    const std::vector<ContactInfo> later(w.contacts().begin(), w.contacts().end());
+    w.restore(bytes);
+    const std::span<const ContactInfo> now = w.contacts();
+    // Field by field (bit for bit on the doubles), not the structs' bytes: padding is not state.
+    const auto same_bits = [](auto u, auto v) {
+        if constexpr (std::is_same_v<decltype(u), Vec2d>)
+            return std::bit_cast<std::uint64_t>(u.x) == std::bit_cast<std::uint64_t>(v.x) &&
+                   std::bit_cast<std::uint64_t>(u.y) == std::bit_cast<std::uint64_t>(v.y);
+        else
+            return std::bit_cast<std::uint64_t>(u) == std::bit_cast<std::uint64_t>(v);
+    };
+    const auto same = [&](const ContactInfo& x, const ContactInfo& y) {
+        bool eq = x.shape_a == y.shape_a && x.shape_b == y.shape_b && x.body_a == y.body_a &&
+                  x.body_b == y.body_b && same_bits(x.normal, y.normal) &&
+                  x.point_count == y.point_count;
+        for (int j = 0; eq && j < x.point_count; ++j) {
+            const ContactPointInfo &p = x.points[j], &q = y.points[j];
+            eq = same_bits(p.point, q.point) && same_bits(p.separation, q.separation) &&
+                 same_bits(p.normal_impulse, q.normal_impulse) &&
+                 same_bits(p.tangent_impulse, q.tangent_impulse);
+        }
+        return eq;
+    };
+    BOOST_TEST_REQUIRE(now.size() == then.size());
+    bool differs_later = later.size() != then.size();
+    for (std::size_t k = 0; k < then.size(); ++k) {
+        BOOST_TEST(same(now[k], then[k]), "contact " << k);
+        differs_later = differs_later || k >= later.size() || !same(later[k], then[k]);
+    }
+    BOOST_TEST(differs_later); // so that a stale report could not pass
 }
 
 BOOST_AUTO_TEST_SUITE_END()
