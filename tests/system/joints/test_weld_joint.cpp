@@ -16,6 +16,35 @@ using namespace tamias2d;
 using namespace tamias2d::system_test;
 using tamias2d::test::DampedOscillator;
 
+namespace {
+
+constexpr double g = 9.81;
+
+/// `n` 1 m beams under gravity, each welded rigidly at its left end to one static wall, the
+/// k-th at height 2k m (far apart: no beam touches another).
+struct Cantilevers {
+    World world{WorldDef{.gravity = {0.0, -g}, .enable_sleep = false}};
+    std::vector<std::pair<BodyId, JointId>> beams;
+    explicit Cantilevers(int n) {
+        BodyDef wall_def;
+        wall_def.type = BodyType::static_body;
+        const BodyId wall = world.create_body(wall_def);
+        for (int k = 0; k < n; ++k) {
+            const double y = 2.0 * k;
+            BodyDef beam_def;
+            beam_def.position = {0.5, y};
+            const BodyId beam = world.create_body(beam_def);
+            world.create_shape(beam, box_shape(1.0, 0.1));
+            beams.emplace_back(beam, world.create_joint(WeldJointDef{
+                                         .body_a = wall, .body_b = beam, .anchor = {0.0, y}}));
+        }
+        for (int k = 0; k < 120; ++k)
+            world.step(1.0 / 60.0);
+    }
+};
+
+} // namespace
+
 BOOST_AUTO_TEST_SUITE(weld_joint)
 
 // Oracle: statics. A 1 m beam welded at its left end to a static wall holds still under
@@ -25,19 +54,9 @@ BOOST_AUTO_TEST_SUITE(weld_joint)
 // joint's compliance only (below 1 mm).
 BOOST_AUTO_TEST_CASE(rigid_cantilever_balances_its_weight,
                      *utf::label("DD24") * utf::label("IM6") * utf::label("LC3")) {
-    const double g = 9.81;
-    World world(WorldDef{.gravity = {0.0, -g}, .enable_sleep = false});
-    BodyDef wall_def;
-    wall_def.type = BodyType::static_body;
-    const BodyId wall = world.create_body(wall_def);
-    BodyDef beam_def;
-    beam_def.position = {0.5, 0.0};
-    const BodyId beam = world.create_body(beam_def);
-    world.create_shape(beam, box_shape(1.0, 0.1));
-    const JointId j =
-        world.create_joint(WeldJointDef{.body_a = wall, .body_b = beam, .anchor = {0.0, 0.0}});
-    for (int k = 0; k < 120; ++k)
-        world.step(1.0 / 60.0);
+    Cantilevers c(1);
+    World& world = c.world;
+    const auto [beam, j] = c.beams.front();
     const double m = world.mass(beam);
     const Vec2d F = world.joint_reaction_force(j);
     BOOST_TEST(F.y == m * g, boost::test_tools::tolerance(1e-6));
@@ -54,24 +73,9 @@ BOOST_AUTO_TEST_CASE(rigid_cantilever_balances_its_weight,
 // m g 0.5 N m, and its tip sags by the joint's compliance only.
 BOOST_AUTO_TEST_CASE(eight_cantilevers_side_by_side_each_balance_their_weight,
                      *utf::label("DD24") * utf::label("IM6") * utf::label("LC3")) {
-    const double g = 9.81;
-    World world(WorldDef{.gravity = {0.0, -g}, .enable_sleep = false});
-    BodyDef wall_def;
-    wall_def.type = BodyType::static_body;
-    const BodyId wall = world.create_body(wall_def);
-    std::vector<std::pair<BodyId, JointId>> beams;
-    for (int k = 0; k < 8; ++k) {
-        const double y = 2.0 * k; // far apart: no beam touches another
-        BodyDef beam_def;
-        beam_def.position = {0.5, y};
-        const BodyId beam = world.create_body(beam_def);
-        world.create_shape(beam, box_shape(1.0, 0.1));
-        beams.emplace_back(beam, world.create_joint(WeldJointDef{
-                                     .body_a = wall, .body_b = beam, .anchor = {0.0, y}}));
-    }
-    for (int k = 0; k < 120; ++k)
-        world.step(1.0 / 60.0);
-    for (const auto& [beam, j] : beams) {
+    Cantilevers c(8);
+    World& world = c.world;
+    for (const auto& [beam, j] : c.beams) {
         const double m = world.mass(beam);
         BOOST_TEST(world.joint_reaction_torque(j) == 0.5 * m * g,
                    boost::test_tools::tolerance(1e-6));
