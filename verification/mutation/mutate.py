@@ -11,9 +11,9 @@ includes, names in its \\srs tags (a file that reaches no tag: those of the file
 it) and by the cases without a label in the same test executables, by the golden state hashes
 of tests/determinism and by the snapshot suite of tests/snapshot. A mutant is killed when they
 fail (or time out); one that passes is judged again in an ASan and UBSan build of the same copy,
-where a sanitizer report kills it; it survives when it passes there too. A mutant is stillborn when it
-does not compile, not built when its objects come out bit for bit as the unmutated ones (a
-line of a #if branch this build skips): neither is counted in the score.
+where a sanitizer report kills it; it survives when it passes there too. A mutant is stillborn
+when it does not compile, not built when its objects come out bit for bit as the unmutated ones
+(a line of a #if branch this build skips): neither is counted in the score.
 The sample is ranked by a seeded hash of each mutant's file, line text, operator and
 occurrence, so an edit elsewhere leaves it, and the judgements of its survivors, in place. A
 survivor is judged in survivors.json ("equivalent", argued, or "gap"), one record per mutant;
@@ -572,9 +572,6 @@ class Unmutated:
         return True
 
 
-UNLABELLED = ".unlabelled"
-
-
 SCRATCH_LOCK = ".lock"
 
 
@@ -592,6 +589,9 @@ def lock_scratch(scratch):
         raise SystemExit(f"the scratch {scratch} is in use by another mutation or module reach "
                          "run: pass --scratch DIR")
     return fh
+
+
+UNLABELLED = ".unlabelled"  # the CTest entry of an executable's cases without a label
 
 
 def ctest_entries(catalogue, labels, targets=()):
