@@ -66,6 +66,13 @@ void fix_checksum(std::vector<std::byte>& b) {
         b[24 + std::size_t(k)] = std::byte(h >> (8 * k));
 }
 
+/// A double's bytes as a snapshot holds them (the host's order, as the checks here read them).
+std::vector<std::byte> bytes(double v) {
+    std::vector<std::byte> out(sizeof v);
+    std::memcpy(out.data(), &v, sizeof v);
+    return out;
+}
+
 void put_u32(std::vector<std::byte>& b, std::size_t at, std::uint32_t v) {
     for (int k = 0; k < 4; ++k)
         b[at + std::size_t(k)] = std::byte(v >> (8 * k));
@@ -262,11 +269,6 @@ BOOST_AUTO_TEST_CASE(a_joints_impulse_bound_forged_negative_is_refused,
     for (const auto& [field, value] :
          {std::pair{"max_motor", 3.0625}, {"max_torque", 5.1875}, {"max_force", 7.3125}}) {
         std::vector<std::byte> forged = good;
-        const auto bytes = [](double v) {
-            std::vector<std::byte> out(sizeof v);
-            std::memcpy(out.data(), &v, sizeof v);
-            return out;
-        };
         const std::vector<std::byte> from = bytes(value), to = bytes(-value);
         const auto at = std::search(forged.begin() + std::ptrdiff_t(begin),
                                     forged.begin() + std::ptrdiff_t(end), from.begin(), from.end());
@@ -325,11 +327,6 @@ BOOST_AUTO_TEST_CASE(a_bodys_inertia_is_read_up_to_the_largest_finite_value,
     const double inertia = w.inertia(disc);
     const std::vector<std::byte> good = w.snapshot();
     const auto [begin, end] = section_bytes(good, "BODY");
-    const auto bytes = [](double v) {
-        std::vector<std::byte> out(sizeof v);
-        std::memcpy(out.data(), &v, sizeof v);
-        return out;
-    };
     const auto forged = [&](double to) {
         std::vector<std::byte> b = good;
         for (const auto& [from, into] : {std::pair{inertia, to}, {1.0 / inertia, 1.0 / to}}) {
