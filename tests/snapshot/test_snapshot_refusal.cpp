@@ -326,7 +326,9 @@ BOOST_AUTO_TEST_CASE(a_bodys_inertia_is_read_up_to_the_largest_finite_value,
     w.create_shape(disc, circle_shape(0.5));
     const double inertia = w.inertia(disc);
     const std::vector<std::byte> good = w.snapshot();
-    const auto [begin, end] = section_bytes(good, "BODY");
+    // Not a structured binding: Debian 12's clang cannot capture one in a lambda.
+    const std::pair<std::size_t, std::size_t> body = section_bytes(good, "BODY");
+    const std::size_t begin = body.first, end = body.second;
     const auto forged = [&](double to) {
         std::vector<std::byte> b = good;
         for (const auto& [from, into] : {std::pair{inertia, to}, {1.0 / inertia, 1.0 / to}}) {
