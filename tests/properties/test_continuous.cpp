@@ -6,6 +6,7 @@
 #include <cstring>
 #include <numbers>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include "tamias2d/world.hpp"
@@ -262,6 +263,89 @@ BOOST_AUTO_TEST_CASE(a_turning_body_is_swept_from_its_centre_of_mass, *utf::labe
         BOOST_TEST(!swing(true, turned), (turned ? "along x" : "along y"));
         BOOST_TEST(swing(false, turned), (turned ? "along x" : "along y"));
     }
+}
+
+// Oracle: DD29's interpolation of the velocities to the time of impact, v_0 + t (v_1 - v_0) and
+// w_0 + t (w_1 - w_0), with v_1, w_1 and the unobstructed end position x_1 taken from a twin world
+// without the wall, and t read from where the body stopped on its straight path,
+// t = (x - x_0) / (x_1 - x_0). Linear and angular damping (DD17, DD18) change both velocities
+// within the step, so keeping the end velocities at the earlier pose would show. A disc: its turn
+// does not change where it meets the wall. It starts 1 m from the wall, beyond the speculative
+// distance, so no contact acts in the step.
+BOOST_AUTO_TEST_CASE(a_stopped_body_keeps_the_velocities_of_its_time_of_impact,
+                     *utf::label("DD29")) {
+    const auto shot = [](bool wall) {
+        WorldDef def;
+        def.gravity = {0.0, 0.0};
+        World world(def);
+        if (wall) {
+            BodyDef w;
+            w.type = BodyType::static_body;
+            world.create_shape(world.create_body(w), box_shape(0.01, 10.0));
+        }
+        BodyDef disc;
+        disc.position = {-0.005 - 0.1 - 1.0, 0.0};
+        disc.linear_velocity = {100.0, 0.0};
+        disc.angular_velocity = 30.0;
+        disc.linear_damping = 2.0;
+        disc.angular_damping = 3.0;
+        const BodyId body = world.create_body(disc);
+        world.create_shape(body, circle_shape(0.1));
+        const BodyState start = world.state(body);
+        world.step(dt);
+        return std::pair{start, world.state(body)};
+    };
+    const auto [start, stopped] = shot(true);
+    const BodyState free = shot(false).second;
+    const double t = (stopped.position.x - start.position.x) / (free.position.x - start.position.x);
+    BOOST_TEST_REQUIRE(t > 0.3); // stopped well inside the step: the pass acted
+    BOOST_TEST_REQUIRE(t < 0.9);
+    const auto near = [](double a, double b) { return std::abs(a - b) <= 1e-12 * std::abs(b); };
+    const double v = start.velocity.x + t * (free.velocity.x - start.velocity.x);
+    const double w = start.angular_velocity + t * (free.angular_velocity - start.angular_velocity);
+    BOOST_TEST(near(stopped.velocity.x, v), stopped.velocity.x << " against " << v);
+    BOOST_TEST(stopped.velocity.y == 0.0);
+    BOOST_TEST(near(stopped.angular_velocity, w), stopped.angular_velocity << " against " << w);
+}
+
+// Oracle: DD29's rule and its closed form for straight motion along the line of centres. The
+// pass acts only where a shape's core (a disc of a quarter of its radius, for a disc) would come
+// within s* of a static shape; the body is then put where its whole shape's conservative
+// advancement first lands within s* + s*/4, which for this motion is at s* exactly. A disc of
+// 1 cm at 30 m/s ends its step delta beyond its unobstructed end x_1 (from a twin world without
+// the pebble) short of a static pebble of 0.5 mm. With linear slop 5 cm and speculative distance
+// 1 mm, s* = 5 cm and the pebble's box in the broad phase is fattened by 1 mm only, so the
+// swept box's own margin decides whether the pebble is met.
+//   delta = 5.1 cm: the core would end 4.8 cm from the pebble, inside s*: stopped at s*.
+//   delta = 5.5 cm: the core would end 5.2 cm away; the disc itself would end 4.45 cm away,
+//   inside s*, but the pass does not act: it ends at x_1.
+BOOST_AUTO_TEST_CASE(the_pass_acts_where_a_core_comes_within_the_target_separation,
+                     *utf::label("DD29")) {
+    constexpr double radius = 0.01, pebble = 0.0005, target = 0.05;
+    const auto end_x = [](double pebble_x) {
+        WorldDef def;
+        def.gravity = {0.0, 0.0};
+        def.linear_slop = target;
+        def.speculative_distance = 0.001;
+        World world(def);
+        if (pebble_x > 0.0) {
+            BodyDef p;
+            p.type = BodyType::static_body;
+            p.position = {pebble_x, 0.0};
+            world.create_shape(world.create_body(p), circle_shape(pebble));
+        }
+        BodyDef disc;
+        disc.linear_velocity = {30.0, 0.0};
+        const BodyId body = world.create_body(disc);
+        world.create_shape(body, circle_shape(radius));
+        world.step(dt);
+        return world.position(body).x;
+    };
+    const double x1 = end_x(0.0); // no pebble
+    BOOST_TEST_REQUIRE(x1 > 0.4);
+    const double stopped_for = x1 + 0.051;
+    BOOST_TEST(std::abs(stopped_for - pebble - radius - end_x(stopped_for) - target) <= 1e-12);
+    BOOST_TEST(end_x(x1 + 0.055) == x1);
 }
 
 // Oracle: determinism (same inputs, same bits): a shot the pass acts on, fired twice.
