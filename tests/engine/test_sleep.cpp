@@ -299,6 +299,32 @@ BOOST_AUTO_TEST_CASE(a_body_put_to_sleep_is_as_one_defined_asleep) {
     BOOST_TEST(rested.state_hash() == defined.state_hash());
 }
 
+// Oracle: the rule "an island falls asleep ... Its velocities become zero" (docs/user-guide.md,
+// "Sleeping"). Without gravity a box drifts at 1 cm/s and turns at 0.01 rad/s, both below the
+// tolerances, so it falls asleep after time_to_sleep while still moving; asleep, its velocities
+// read zero and it stays where it fell asleep.
+BOOST_AUTO_TEST_CASE(a_drifting_body_that_falls_asleep_stops) {
+    WorldDef d = def_with_sleep();
+    d.gravity = {0.0, 0.0};
+    World w(d);
+    BodyDef drift;
+    drift.linear_velocity = {0.01, 0.0};
+    drift.angular_velocity = 0.01;
+    const BodyId b = box(w, 0.0, 1.0, drift);
+    const int n = steps_until_asleep(w, {b}, 120);
+    BOOST_TEST_REQUIRE(n > 0);
+    BOOST_TEST(n * dt >= d.time_to_sleep);
+    BOOST_TEST(w.velocity(b).x == 0.0);
+    BOOST_TEST(w.velocity(b).y == 0.0);
+    BOOST_TEST(w.angular_velocity(b) == 0.0);
+    const Vec2d at = w.position(b);
+    w.step(dt);
+    BOOST_TEST(same_bits(w.position(b), at));
+    w.set_awake(b, true); // woken, it starts from rest
+    w.step(dt);
+    BOOST_TEST(same_bits(w.position(b), at));
+}
+
 // Oracle: a kinematic body's given motion. A moving kinematic body that reaches a sleeping box
 // wakes it and pushes it along; a kinematic body at rest falls asleep like any other.
 BOOST_AUTO_TEST_CASE(kinematic_bodies_wake_what_they_reach) {

@@ -48,7 +48,7 @@ std::uint64_t fnv1a(const std::vector<std::byte>& bytes, std::size_t from) {
     return h;
 }
 
-using Key = std::pair<std::string, std::string>; // scene, "reuse" or "no_reuse"
+using Key = std::pair<std::string, std::string>;      // scene, "reuse" or "no_reuse"
 using Record = std::pair<std::size_t, std::uint64_t>; // payload bytes, FNV-1a
 using Records = std::map<Key, Record>;
 
@@ -67,8 +67,8 @@ Records written_now() {
                 world.step(scene.dt);
             const std::vector<std::byte> bytes = world.snapshot();
             BOOST_TEST_REQUIRE(bytes.size() > header_size);
-            out[{path.stem().string(), reuse ? "reuse" : "no_reuse"}] = {
-                bytes.size() - header_size, fnv1a(bytes, header_size)};
+            out[{path.stem().string(), reuse ? "reuse" : "no_reuse"}] = {bytes.size() - header_size,
+                                                                         fnv1a(bytes, header_size)};
         }
     }
     return out;
@@ -139,14 +139,14 @@ BOOST_AUTO_TEST_CASE(every_example_scene_writes_the_recorded_bytes, *utf::label(
             BOOST_ERROR(key.first << " " << key.second << ": no record in " << file
                                   << " (a new scene: regenerate the file)");
         else
-            BOOST_TEST((g->second == record),
-                       key.first << " " << key.second << ": " << record.first << " bytes, "
-                                 << hex(record.second) << "; recorded " << g->second.first
-                                 << " bytes, " << hex(g->second.second));
+            BOOST_TEST((g->second == record), key.first << " " << key.second << ": " << record.first
+                                                        << " bytes, " << hex(record.second)
+                                                        << "; recorded " << g->second.first
+                                                        << " bytes, " << hex(g->second.second));
     }
     for (const auto& [key, record] : golden)
-        BOOST_TEST(now.count(key) == 1u, key.first << " " << key.second
-                                                   << ": recorded, but no such scene now");
+        BOOST_TEST(now.count(key) == 1u,
+                   key.first << " " << key.second << ": recorded, but no such scene now");
 }
 
 BOOST_AUTO_TEST_SUITE_END()
