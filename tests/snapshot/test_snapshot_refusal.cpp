@@ -356,4 +356,29 @@ BOOST_AUTO_TEST_CASE(a_bodys_inertia_is_read_up_to_the_largest_finite_value,
     }
 }
 
+// Oracle: SnapshotReader's rule for a section's tag: a payload whose section tag is not the one
+// the reader expects there is refused at the tag's offset, naming "section" and the tag it
+// must be, the world unchanged. Each of the eight sections' tags, one letter changed, with the
+// checksum made right again.
+BOOST_AUTO_TEST_CASE(a_wrong_section_tag_is_refused_naming_the_tag, *utf::label("reliability")) {
+    const std::vector<std::byte> good = some_snapshot(3, 40);
+    World target = random_world(8);
+    for (const char* tag : {"WRLD", "BODY", "SHAP", "BRPH", "CONT", "SENS", "JOIN", "EVNT"}) {
+        const std::size_t at = section_bytes(good, tag).first;
+        BOOST_TEST_REQUIRE(at < good.size(), tag);
+        std::vector<std::byte> bad = good;
+        bad[at + 3] = std::byte('?');
+        fix_checksum(bad);
+        BOOST_TEST(refused_unchanged(target, bad, ""), tag);
+        try {
+            World::from_snapshot(bad);
+            BOOST_TEST(false, tag << ": accepted");
+        } catch (const SnapshotError& e) {
+            BOOST_TEST(e.offset == at, e.what());
+            BOOST_TEST(e.field == "section", e.what());
+            BOOST_TEST(e.rule == "must be the section '" + std::string(tag) + "'", e.what());
+        }
+    }
+}
+
 BOOST_AUTO_TEST_SUITE_END()
