@@ -321,6 +321,71 @@ BOOST_AUTO_TEST_CASE(weld_breaks_at_the_closed_form_torque_and_force,
     BOOST_TEST(run(0.99, 1e9) == 1);
 }
 
+// Oracle: DD36's rule against the statics of a braked hinge: a beam 2 m long pinned at one end
+// to a wall by a revolute joint whose motor holds it still (speed 0, torque ample) carries the
+// torque m g d about the pin, d = 1 m. Given in the joint's definition, a break torque of half
+// that breaks it within the first steps; one of twice that holds it for 2 s.
+BOOST_AUTO_TEST_CASE(a_braked_hinge_breaks_at_its_defined_torque,
+                     *utf::label("DD36") * utf::label("DD22")) {
+    const double g = 10.0;
+    const auto run = [&](double torque_factor) {
+        World w(world_def(g));
+        const BodyId wall = static_body(w);
+        BodyDef bd;
+        bd.position = {1.0, 0.0};
+        const BodyId beam = w.create_body(bd);
+        w.create_shape(beam, box_shape(2.0, 0.2));
+        const double m = w.mass(beam);
+        RevoluteJointDef rd;
+        rd.body_a = wall;
+        rd.body_b = beam;
+        rd.anchor = {0.0, 0.0};
+        rd.enable_motor = true;
+        rd.motor_speed = 0.0;
+        rd.max_motor_torque = 100.0 * m * g;
+        rd.break_torque = torque_factor * m * g * 1.0;
+        const JointId j = w.create_joint(rd);
+        BOOST_TEST(w.joint_break_torque(j) == rd.break_torque);
+        for (int k = 1; k <= 480; ++k) {
+            w.step(dt);
+            if (!w.is_valid(j))
+                return k;
+        }
+        // Held: the motor carries the statics' torque (the oracle the thresholds rest on).
+        BOOST_TEST(std::abs(w.joint_reaction_torque(j)) == m * g * 1.0, tt::tolerance(1e-3));
+        return 0;
+    };
+    BOOST_TEST(run(2.0) == 0);
+    const int broke = run(0.5);
+    BOOST_TEST(broke >= 1);
+    BOOST_TEST(broke <= 10);
+}
+
+// Oracle: the definitions' documented fields: a break threshold given in a joint's definition
+// is the joint's (World::joint_break_force, joint_break_torque), for every kind that has one.
+BOOST_AUTO_TEST_CASE(break_thresholds_come_from_the_definition, *utf::label("reliability")) {
+    World w(world_def(10.0));
+    const BodyId a = static_body(w);
+    const BodyId b = disc(w, {1.0, 0.0}, 0.25);
+    const auto check = [&](auto def, const char* kind) {
+        def.body_a = a;
+        def.body_b = b;
+        def.break_force = 123.0;
+        if constexpr (requires { def.break_torque; })
+            def.break_torque = 45.0;
+        const JointId j = w.create_joint(def);
+        BOOST_TEST(w.joint_break_force(j) == 123.0, kind);
+        if constexpr (requires { def.break_torque; })
+            BOOST_TEST(w.joint_break_torque(j) == 45.0, kind);
+    };
+    check(RevoluteJointDef{}, "revolute");
+    check(DistanceJointDef{.length = 1.0}, "distance");
+    check(PrismaticJointDef{}, "prismatic");
+    check(WeldJointDef{}, "weld");
+    check(WheelJointDef{}, "wheel");
+    check(MotorJointDef{}, "motor");
+}
+
 // Oracle: the static deflection of a spring, x = m g / k with k = m (2 pi f)^2: a disc hanging
 // from a pin at its centre, the pin's soft bias tuned to f = 3 Hz (critically damped), settles
 // g / (2 pi f)^2 = 28 mm below the pin, where the world's 60 Hz would leave 0.07 mm. (IM6's
