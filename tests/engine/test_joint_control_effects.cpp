@@ -43,6 +43,15 @@ BodyId disc(World& w, Vec2d at, double radius, double density = 1.0) {
     return b;
 }
 
+/// A beam 2 m x 0.2 m whose centre is 1 m right of the origin, where the tests join it to a wall.
+BodyId cantilever(World& w) {
+    BodyDef bd;
+    bd.position = {1.0, 0.0};
+    const BodyId b = w.create_body(bd);
+    w.create_shape(b, box_shape(2.0, 0.2));
+    return b;
+}
+
 bool began(const World& w, BodyId a, BodyId b) {
     for (const ContactEvent& e : w.contact_begin_events())
         if ((e.body_a == a && e.body_b == b) || (e.body_a == b && e.body_b == a))
@@ -287,10 +296,7 @@ BOOST_AUTO_TEST_CASE(weld_breaks_at_the_closed_form_torque_and_force,
     const auto run = [&](double force_factor, double torque_factor) {
         World w(world_def(g));
         const BodyId wall = static_body(w);
-        BodyDef bd;
-        bd.position = {1.0, 0.0};
-        const BodyId beam = w.create_body(bd);
-        w.create_shape(beam, box_shape(2.0, 0.2));
+        const BodyId beam = cantilever(w);
         const double m = w.mass(beam);
         WeldJointDef wd;
         wd.body_a = wall;
@@ -331,10 +337,7 @@ BOOST_AUTO_TEST_CASE(a_braked_hinge_breaks_at_its_defined_torque,
     const auto run = [&](double torque_factor) {
         World w(world_def(g));
         const BodyId wall = static_body(w);
-        BodyDef bd;
-        bd.position = {1.0, 0.0};
-        const BodyId beam = w.create_body(bd);
-        w.create_shape(beam, box_shape(2.0, 0.2));
+        const BodyId beam = cantilever(w);
         const double m = w.mass(beam);
         RevoluteJointDef rd;
         rd.body_a = wall;
