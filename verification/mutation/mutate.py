@@ -594,14 +594,17 @@ def lock_scratch(scratch):
 UNLABELLED = ".unlabelled"  # the CTest entry of an executable's cases without a label
 
 
-def ctest_entries(catalogue, labels, targets=()):
+def ctest_entries(catalogue, labels, targets=(), categories=()):
     """{test name: executable target} of the CTest entries (ctest --show-only=json-v1's
-    "tests") carrying any of labels, every labelled entry of the executables targets, and the
-    unlabelled entry (`<target>.unlabelled`: the executable's cases that carry no label) of
-    every executable so chosen: a case without a label (the sleeping, the API's guarantees) is
-    a test with an oracle all the same, and one that kills a mutant kills it."""
+    "tests") carrying any of labels, every labelled entry of the executables targets, and, of
+    every executable so chosen, the unlabelled entry (`<target>.unlabelled`: its cases that
+    carry no label) and the entries of category labels (categories: traceability/config.yaml's
+    category_labels, such as internals or reliability). A case without an SRS label (the
+    sleeping, the API's guarantees, the packs against their plain form) is a test with an
+    oracle all the same, and one that kills a mutant kills it."""
     entries = {}
     unlabelled = set()
+    by_category = []
     for t in catalogue:
         props = {p["name"]: p["value"] for p in t.get("properties", [])}
         tl = props.get("LABELS", [])
@@ -614,10 +617,27 @@ def ctest_entries(catalogue, labels, targets=()):
         target = t["name"].split("@", 1)[0]
         if set(tl) & set(labels) or target in targets:
             entries[t["name"]] = target
-    for target in set(entries.values()):
+        elif tl and set(tl) <= set(categories):
+            by_category.append((t["name"], target))
+    chosen = set(entries.values())
+    for name, target in by_category:
+        if target in chosen:
+            entries[name] = target
+    for target in chosen:
         if target + UNLABELLED in unlabelled:
             entries[target + UNLABELLED] = target
     return entries
+
+
+def category_labels(root):
+    """The test labels that are categories, not SRS items (traceability/config.yaml; none in
+    a tree without that file)."""
+    path = os.path.join(root, "traceability", "config.yaml")
+    if not os.path.exists(path):
+        return ()
+    import yaml
+    with open(path, encoding="utf-8") as f:
+        return tuple((yaml.safe_load(f) or {}).get("category_labels") or ())
 
 
 # The golden state hashes of the example scenes (tests/determinism): a project rule, not an SRS
@@ -632,11 +652,12 @@ def ctest_entries(catalogue, labels, targets=()):
 GOLDEN_TARGETS = ("determinism_tests", "snapshot_tests")
 
 
-def entries_of(catalogue, labels, relpath):
+def entries_of(catalogue, labels, relpath, categories=()):
     """The CTest entries that judge a mutant of relpath: those of its labels, and the golden
-    hashes and the snapshot suite for a file of the model or the dynamics."""
+    hashes and the snapshot suite for a file of the model or the dynamics (with the category
+    entries of their executables, ctest_entries)."""
     golden = GOLDEN_TARGETS if relpath.startswith(tuple(d + "/" for d in TARGET_DIRS)) else ()
-    return ctest_entries(catalogue, labels, golden)
+    return ctest_entries(catalogue, labels, golden, categories)
 
 
 def judge(m, src, build, entries, test_timeout, objects=None, env=None, commands=None,
@@ -1332,6 +1353,7 @@ def judge_run(a, muts, chosen, selection, shard):
     deadline = None if (a.all or a.ids) else time.monotonic() + 60.0 * a.minutes
     sanitizer = SanitizerScratch(a.scratch, src)
     commands = commands_of(catalogue)
+    categories = category_labels(a.root)
     unmutated = Unmutated(build)
     os.makedirs(a.out_dir, exist_ok=True)
     name = shard_file(*shard) if shard else "mutation.json"
@@ -1376,7 +1398,7 @@ def judge_run(a, muts, chosen, selection, shard):
         if deadline is not None and time.monotonic() > deadline:
             break
         labels = labels_of(a.root, m["file"])
-        entries = entries_of(catalogue, labels, m["file"])
+        entries = entries_of(catalogue, labels, m["file"], categories)
         t0 = time.monotonic()
         entries = {n: t for n, t in entries.items() if baseline.get(n, True)}
         verdict, log, b_secs, t_secs, failed = judge(m, src, build, entries, a.test_timeout,

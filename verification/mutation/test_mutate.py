@@ -606,6 +606,24 @@ class Tests(unittest.TestCase):
                          {"args": ["--run_test=!@IM3"], "skip": ["no test cases matching filter"]})
         self.assertIsNone(commands["engine_tests@IM3"][2])
 
+    def test_the_entries_of_a_label_bring_their_executables_category_cases(self):
+        # A case tagged with a category (internals: the packs against their plain form) of a
+        # chosen executable judges too; one of an executable not chosen does not, nor does an
+        # entry that carries an SRS label of another item.
+        def entry(name, labels):
+            return {"name": name, "command": ["/b/" + name.split("@")[0]],
+                    "properties": [{"name": "LABELS", "value": labels}]}
+        catalogue = [entry("engine_tests@IM3", ["IM3"]), entry("engine_tests@R7", ["R7"]),
+                     entry("engine_tests@internals", ["internals"]),
+                     entry("reliability_tests@internals", ["internals"])]
+        self.assertEqual(mutate.ctest_entries(catalogue, ["IM3"], categories=("internals",)),
+                         {"engine_tests@IM3": "engine_tests",
+                          "engine_tests@internals": "engine_tests"})
+        self.assertEqual(mutate.ctest_entries(catalogue, ["IM3"]),
+                         {"engine_tests@IM3": "engine_tests"})
+        root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+        self.assertIn("internals", mutate.category_labels(root))
+
     def test_the_first_failure_stops_the_others_and_a_time_out_fails(self):
         with tempfile.TemporaryDirectory() as d:
             slow = script(os.path.join(d, "slow"), "sleep 30")
