@@ -8,8 +8,9 @@ changed (c -> 2c, 0 -> 1), or an assignment statement removed. The mutant is bui
 scratch copy of the repository with its own build directory (never the caller's) and judged
 by the CTest entries labelled with the SRS items that the mutated file, or a library header it
 includes, names in its \\srs tags (a file that reaches no tag: those of the files that include
-it) and by the cases without a label in the same test executables, by the golden state hashes
-of tests/determinism and by the snapshot suite of tests/snapshot. A mutant is killed when they
+it) and by the cases without a label or with a category label (traceability/config.yaml) in
+the same test executables, by the golden state hashes of tests/determinism and by the snapshot
+suite of tests/snapshot. A mutant is killed when they
 fail (or time out); one that passes is judged again in an ASan and UBSan build of the same copy,
 where a sanitizer report kills it; it survives when it passes there too. A mutant is stillborn
 when it does not compile, not built when its objects come out bit for bit as the unmutated ones
@@ -630,14 +631,12 @@ def ctest_entries(catalogue, labels, targets=(), categories=()):
 
 
 def category_labels(root):
-    """The test labels that are categories, not SRS items (traceability/config.yaml; none in
-    a tree without that file)."""
+    """The test labels that are categories, not SRS items: traceability/config.yaml's, read
+    by the harness's own loader (none in a tree without that file)."""
+    sys.path.insert(0, ROOT)
+    from traceability.analysis import load_config
     path = os.path.join(root, "traceability", "config.yaml")
-    if not os.path.exists(path):
-        return ()
-    import yaml
-    with open(path, encoding="utf-8") as f:
-        return tuple((yaml.safe_load(f) or {}).get("category_labels") or ())
+    return tuple(load_config(path)["category_labels"] or ())
 
 
 # The golden state hashes of the example scenes (tests/determinism): a project rule, not an SRS
