@@ -141,6 +141,63 @@ BOOST_AUTO_TEST_CASE(impulse_against_static_body_obeys_restitution,
     }
 }
 
+// Oracle: DD12 acts on an impact, so a ball that has not reached the ground keeps its velocity
+// (Newton's first law: no gravity on it, gravity scale 0). An elastic ball drifts down at
+// 0.3 m/s through the speculative band (0.02 m) while boxes rest on the same ground, their
+// manifolds pushing each step in the solver's packs beside the ball's. In every step that
+// starts with the ball farther from the ground than it travels (0.005 m), its velocity is
+// exactly what it was; in the step in which it reaches the ground it leaves at +0.3 m/s
+// (C_R = 1). A box that rested on the ground since the first step is destroyed in the step in
+// which the ball comes within the band, so that the ball's manifold takes a place in the packs
+// that a pushing manifold held in the step before (the pack slots are reused from step to step).
+BOOST_AUTO_TEST_CASE(a_ball_bounces_only_in_the_step_it_reaches_the_ground,
+                     *utf::label("DD12") * utf::label("IM3")) {
+    World world(WorldDef{.gravity = {0.0, -10.0}, .enable_sleep = false});
+    BodyDef gd;
+    gd.type = BodyType::static_body;
+    world.create_shape(world.create_body(gd), box_shape(40.0, 1.0, {}, {0.0, -0.5}));
+    const auto box_at = [&](double x) {
+        BodyDef b;
+        b.position = {x, 0.5};
+        const BodyId id = world.create_body(b);
+        world.create_shape(id, box_shape(1.0, 1.0));
+        return id;
+    };
+    const BodyId first = box_at(-12.0);
+    const double radius = 0.25, speed = 0.3, dt = 1.0 / 60.0;
+    BodyDef bd;
+    bd.position = {-15.0, 5.0}; // far from everything until it is put in place
+    bd.gravity_scale = 0.0;
+    const BodyId ball = world.create_body(bd);
+    world.create_shape(ball, circle_shape(radius, Material{1.0, 1.0, 0.0}));
+    for (int k = 0; k < 12; ++k)
+        box_at(-10.0 + 2.0 * k);
+    for (int k = 0; k < 30; ++k) // the boxes settle
+        world.step(dt);
+    world.set_transform(ball, {-15.0, radius + 0.0525}, 0.0);
+    world.set_velocity(ball, {0.0, -speed});
+    int bounced_at = -1, reached_at = -1;
+    bool destroyed = false;
+    for (int k = 0; k < 20 && bounced_at < 0; ++k) {
+        const double gap = world.origin(ball).y - radius;
+        if (!destroyed && gap < world.settings().speculative_distance) {
+            world.destroy_body(first);
+            destroyed = true;
+        }
+        if (reached_at < 0 && gap <= speed * dt)
+            reached_at = k;
+        world.step(dt);
+        const double vy = world.velocity(ball).y;
+        if (vy != -speed) {
+            bounced_at = k;
+            BOOST_TEST(std::abs(vy - speed) < 1e-9);
+        }
+    }
+    BOOST_TEST(destroyed);
+    BOOST_TEST(reached_at > 0);
+    BOOST_TEST(bounced_at == reached_at);
+}
+
 // Oracle: GD1, conservation of momentum: an isolated pair of unequal bodies (1 kg vs 100 kg,
 // C_R = 1) colliding off-centre keeps its total momentum and, being elastic, its kinetic energy.
 BOOST_AUTO_TEST_CASE(unequal_masses_conserve_momentum_and_energy,

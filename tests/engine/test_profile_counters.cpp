@@ -151,12 +151,13 @@ BOOST_AUTO_TEST_CASE(counters_equal_a_hand_count, *utf::label("internals")) {
     BOOST_TEST(c.touching == s.world.contacts().size());
     BOOST_TEST(c.contact_points == points);
 
-    // One stack's top box gone: 9 bodies and shapes, 5 touching pairs (10 points), still 5
-    // islands (the stack's bottom box alone).
+    // One stack's top box gone: 9 bodies and shapes, 8 of them movable and awake, 5 touching
+    // pairs (10 points), still 5 islands (the stack's bottom box alone).
     s.world.destroy_body(s.stack_boxes[1]);
     const WorldCounters d = s.world.counters();
     BOOST_TEST(d.bodies == 9u);
     BOOST_TEST(d.shapes == 9u);
+    BOOST_TEST(d.awake_bodies == 8u);
     BOOST_TEST(d.touching == 5u);
     BOOST_TEST(d.contact_points == 10u);
     BOOST_TEST(d.islands == 5u);
