@@ -13,6 +13,9 @@
 namespace tamias2d {
 
 /// A touching pair as the pre-solve callback sees it: after the narrow phase, before the solver.
+/// Asked by the continuous pass (a fast body about to be stopped short of a shape), it holds
+/// one point, midway between the closest points of the moving shape (or of its core, when the
+/// shape already overlaps) and the other shape, with their gap as its separation.
 struct PreSolveContact {
     ShapeId shape_a;     ///< the first shape of the pair
     ShapeId shape_b;     ///< the second shape of the pair
@@ -30,7 +33,8 @@ struct PreSolveContact {
 
 /// Asked once per touching pair per step (World::set_pre_solve): true solves the contact this
 /// step, false switches it off for this step (its manifold emptied: the pair counts as not
-/// touching, with the end and begin events that follow).
+/// touching, with the end and begin events that follow). Also asked where the continuous pass
+/// would stop a fast body short of a shape: false lets it through.
 using PreSolveFunction = std::function<bool(const PreSolveContact&)>;
 
 /// Mixes two shapes' coefficients into a contact's (World::set_friction_mixing,

@@ -137,7 +137,18 @@ void ContinuousPass::sweep(const FastBody& f, bool bullet, BodyStore& store,
             // Stopped before touching if it started apart; else as its core touches.
             const ToiResult r =
                 time_of_impact(shape, sweep, other.collider, other.body_xf, target, tolerance, c.t);
-            t = r.state == ToiState::hit ? r.t : c.t;
+            const bool whole = r.state == ToiState::hit;
+            const double hit = whole ? r.t : c.t;
+            if (contacts.pre_solve) {
+                // The game's pre-solve rule decides, as for the pair's contact (a one-way
+                // platform lets a fast body through): asked where the stop would put it.
+                const ShapeDistance d = shape_distance(whole ? shape : core, sweep.at(hit),
+                                                       other.collider, other.body_xf);
+                if (!contacts.admits_impact(store, shape_store, s, o, d.normal,
+                                            0.5 * (d.point_a + d.point_b), d.distance))
+                    continue;
+            }
+            t = hit;
         }
     }
     if (t >= 1.0)

@@ -330,7 +330,8 @@ void ContactManager::update(BodyStore& bodies, const ShapeStore& shapes, const S
             Narrowed r =
                 narrow_contact(c, warm_impulses_[i], bases_[i], edge_inputs_[i], shape[c.shape_a],
                                shape[c.shape_b], speculative_distance, reuse_distance);
-            if (pre_solve && r != Narrowed::separated && c.touching && asks_pre_solve(shapes, c))
+            if (pre_solve && r != Narrowed::separated && c.touching &&
+                asks_pre_solve(shapes, c.shape_a, c.shape_b))
                 r = Narrowed(pre_solved(i, std::uint8_t(r), bodies, shapes));
             if (r == Narrowed::separated)
                 doomed_.push_back(i);
@@ -399,7 +400,8 @@ void ContactManager::update_in_blocks(BodyStore& bodies, const ShapeStore& shape
             r = narrow_contact(c, warm_impulses_[i], bases_[i], edge_inputs_[i], shape[c.shape_a],
                                shape[c.shape_b], speculative_distance, reuse_distance);
         }
-        if (pre_solve && r != Narrowed::separated && c.touching && asks_pre_solve(shapes, c))
+        if (pre_solve && r != Narrowed::separated && c.touching &&
+            asks_pre_solve(shapes, c.shape_a, c.shape_b))
             r = Narrowed(pre_solved(i, std::uint8_t(r), bodies, shapes));
         if (r == Narrowed::separated)
             doomed_.push_back(i);
@@ -457,8 +459,8 @@ const memory::vector<ContactInfo>& ContactManager::report(const BodyStore& bodie
     return infos_;
 }
 
-bool ContactManager::asks_pre_solve(const ShapeStore& shapes, const Contact& c) {
-    return shapes.defs[c.shape_a].enable_pre_solve || shapes.defs[c.shape_b].enable_pre_solve;
+bool ContactManager::asks_pre_solve(const ShapeStore& shapes, std::uint32_t sa, std::uint32_t sb) {
+    return shapes.defs[sa].enable_pre_solve || shapes.defs[sb].enable_pre_solve;
 }
 
 bool ContactManager::reports_events(const ShapeStore& shapes, std::uint32_t sa, std::uint32_t sb) {
@@ -760,6 +762,31 @@ std::uint8_t ContactManager::pre_solved(std::uint32_t i, std::uint8_t r, const B
     c.touching = false;
     edge_inputs_[i] = edge_input(c);
     return std::uint8_t(was ? Narrowed::changed : Narrowed::same);
+}
+
+bool ContactManager::admits_impact(const BodyStore& bodies, const ShapeStore& shapes,
+                                   std::uint32_t moving, std::uint32_t fixed, Vec2d normal,
+                                   Vec2d point, double gap) const {
+    if (!pre_solve || !asks_pre_solve(shapes, moving, fixed))
+        return true;
+    // The order a contact of the pair has (find_new: the lower shape index first).
+    const bool moving_first = moving < fixed;
+    const std::uint32_t sa = moving_first ? moving : fixed, sb = moving_first ? fixed : moving;
+    PreSolveContact pc;
+    pc.shape_a = shapes.id(sa);
+    pc.shape_b = shapes.id(sb);
+    pc.body_a = bodies.id(shapes.shapes[sa].body);
+    pc.body_b = bodies.id(shapes.shapes[sb].body);
+    pc.normal = moving_first ? normal : -normal;
+    pc.point_count = 1;
+    pc.points[0] = {point, gap};
+    try {
+        return pre_solve(pc);
+    } catch (...) {
+        if (!filter_error_)
+            filter_error_ = std::current_exception();
+        return true;
+    }
 }
 
 // --- definitions ---

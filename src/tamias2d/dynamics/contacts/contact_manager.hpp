@@ -170,9 +170,10 @@ class ContactManager {
     /// Whether the begin and end events of the pair of shapes sa and sb are reported: both
     /// shapes allow them (ShapeDef::enable_contact_events).
     static bool reports_events(const ShapeStore& shapes, std::uint32_t sa, std::uint32_t sb);
-    /// Whether the pre-solve callback is asked about contact c: either of its shapes allows it
+    /// Whether the pre-solve callback is asked about the pair of shapes sa and sb (their
+    /// contact, or the continuous pass's stop): either shape allows it
     /// (ShapeDef::enable_pre_solve).
-    static bool asks_pre_solve(const ShapeStore& shapes, const Contact& c);
+    static bool asks_pre_solve(const ShapeStore& shapes, std::uint32_t sa, std::uint32_t sb);
     // --- shape_control ---
     /// Shape s's material changed: its contacts take the new combined friction and restitution
     /// now (the manifolds and impulses are kept).
@@ -185,6 +186,15 @@ class ContactManager {
     // --- contact_hooks ---
     /// The user's pre-solve callback (World::set_pre_solve; empty: none).
     PreSolveFunction pre_solve;
+    /// Whether the continuous pass (DD29) may stop a body where its shape `moving` comes
+    /// within reach of shape `fixed`: the pre-solve callback's answer about that pair, asked
+    /// as about their contact (the shapes in a contact's order, the normal from shape_a into
+    /// shape_b) with one point, `point`, at the separation `gap`; `normal` runs from `moving`
+    /// towards `fixed`. True without a callback or when neither shape allows it. An exception
+    /// of the callback is kept, as pre_solved keeps it, and the pair counts as solved: the body
+    /// is stopped. A one-way platform's rule thus also lets a fast body through.
+    bool admits_impact(const BodyStore& bodies, const ShapeStore& shapes, std::uint32_t moving,
+                       std::uint32_t fixed, Vec2d normal, Vec2d point, double gap) const;
     /// The user's mixing functions (World::set_friction_mixing, set_restitution_mixing; empty:
     /// DD42's default rules).
     MaterialMixFunction friction_mixing, restitution_mixing;
