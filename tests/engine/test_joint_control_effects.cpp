@@ -508,9 +508,10 @@ BOOST_AUTO_TEST_CASE(kind_and_bodies_read_back, *utf::label("reliability")) {
     TargetJointDef td;
     td.body = b;
     const JointId t = w.create_joint(td);
-    FilterJointDef fd;
-    fd.body_a = a;
-    fd.body_b = b;
+    const BodyId c = disc(w, {3.0, 0.0}, 0.25);
+    FilterJointDef fd; // of two bodies past the first: a body left unset would read as body 0
+    fd.body_a = b;
+    fd.body_b = c;
     const JointId f = w.create_joint(fd);
     BOOST_TEST((w.joint_kind(r) == JointKind::revolute));
     BOOST_TEST((w.joint_kind(t) == JointKind::target));
@@ -519,6 +520,8 @@ BOOST_AUTO_TEST_CASE(kind_and_bodies_read_back, *utf::label("reliability")) {
     BOOST_TEST((w.joint_body_b(r) == b));
     BOOST_TEST((w.joint_body_a(t) == b));
     BOOST_TEST((w.joint_body_b(t) == b));
+    BOOST_TEST((w.joint_body_a(f) == b));
+    BOOST_TEST((w.joint_body_b(f) == c));
 }
 
 BOOST_AUTO_TEST_SUITE_END()
