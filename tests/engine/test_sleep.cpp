@@ -103,6 +103,35 @@ BOOST_AUTO_TEST_CASE(a_resting_box_falls_asleep_and_stays_put) {
     BOOST_TEST(w.contacts().size() == 1u); // it still touches the ground
 }
 
+// Oracle: the rule (at rest for time_to_sleep). A static box is made dynamic (set_body_type): it
+// is then awake, and it sleeps only once it has rested for time_to_sleep after the change
+// (0.5 s, 30 steps), not at once; the same after it is made kinematic and dynamic again. Both
+// for a box resting on the ground (its contact, dropped by the change, wakes it too) and for a
+// box alone in the air with gravity scale 0, which nothing else wakes.
+BOOST_AUTO_TEST_CASE(a_body_made_dynamic_rests_time_to_sleep_before_it_sleeps) {
+    for (const bool on_ground : {true, false}) {
+        BOOST_TEST_CONTEXT((on_ground ? "on the ground" : "in the air")) {
+            World w(def_with_sleep());
+            ground(w);
+            BodyDef d;
+            d.type = BodyType::static_body;
+            d.gravity_scale = on_ground ? 1.0 : 0.0;
+            const BodyId b = box(w, 0.0, on_ground ? 0.5 : 10.0, d);
+            for (int i = 0; i < 60; ++i)
+                w.step(dt);
+            const int needed = int(std::ceil(w.settings().time_to_sleep / dt - 1e-9));
+            for (const BodyType via : {BodyType::static_body, BodyType::kinematic}) {
+                w.set_body_type(b, via);
+                w.set_body_type(b, BodyType::dynamic);
+                BOOST_TEST(w.is_awake(b));
+                const int n = steps_until_asleep(w, {b}, 300);
+                BOOST_TEST_MESSAGE("asleep after " << n << " steps");
+                BOOST_TEST(n >= needed);
+            }
+        }
+    }
+}
+
 // Oracle: the same scene with sleeping off. Until a body sleeps, sleeping changes nothing: a
 // pyramid whose bodies never reach time_to_sleep moves bit for bit as without sleeping.
 BOOST_AUTO_TEST_CASE(sleeping_changes_nothing_until_a_body_sleeps) {
