@@ -18,14 +18,17 @@ constexpr double h = dt / 4.0; // the substep (WorldDef::substeps = 4)
 constexpr double g = 9.81;
 
 /// A circle of radius r rolling down a static slope of angle theta (0: flat ground) along
-/// d = (cos theta, -sin theta), released rolling without slipping at v0 (omega = -v0 / r).
+/// d = (cos theta, -sin theta), released rolling without slipping at v0 (omega = -v0 / r);
+/// warm is WorldDef::enable_warm_starting.
 struct Roll {
-    World world{WorldDef{.gravity = {0.0, -g}, .enable_sleep = false}};
+    World world;
     BodyId ball;
     ShapeId ball_shape;
     Vec2d d, p0;
     static constexpr double r = 0.5;
-    Roll(double theta, double v0, double c_ball, double c_ground = 0.0) {
+    Roll(double theta, double v0, double c_ball, double c_ground = 0.0, bool warm = true)
+        : world(
+              WorldDef{.gravity = {0.0, -g}, .enable_warm_starting = warm, .enable_sleep = false}) {
         d = {std::cos(theta), -std::sin(theta)};
         const Vec2d n{std::sin(theta), std::cos(theta)}; // the slope's upward normal
         BodyDef gd;
@@ -85,7 +88,8 @@ BOOST_AUTO_TEST_SUITE(surface_motion_oracles)
 
 // Oracle: closed form (stopping_distance above): on flat ground a ball of c = 0.05 at 3 m/s
 // stops after 3 v0^2 / (4 c g) = 13.76 m, within the integration bound; the ground's own
-// coefficient 0 mixes to the ball's (max). Without resistance the ball still rolls on.
+// coefficient 0 mixes to the ball's (max). With warm starting off (each step's resistance then
+// starts from none) it slows at the same rate. Without resistance the ball still rolls on.
 BOOST_AUTO_TEST_CASE(ball_rolls_to_rest_on_flat_ground, *utf::label("DD46")) {
     const double v0 = 3.0, c = 0.05;
     Roll roll(0.0, v0, c);
@@ -95,6 +99,13 @@ BOOST_AUTO_TEST_CASE(ball_rolls_to_rest_on_flat_ground, *utf::label("DD46")) {
     // The mixed coefficient is the larger: the same ball of 0 on a ground of 0.05.
     Roll swapped(0.0, v0, 0.0, c);
     BOOST_TEST(std::abs(swapped.distance_to_rest(12.0) - s) <= integration_bound(v0));
+    // Warm starting off: the same deceleration, (2/3) c g (the torque c r m g on I + m r^2 =
+    // (3/2) m r^2), read as the speed after 4 s, within one step's change of speed.
+    Roll cold(0.0, v0, c, 0.0, false);
+    for (int i = 0; i < 240; ++i)
+        cold.world.step(dt);
+    const double a = 2.0 / 3.0 * c * g;
+    BOOST_TEST(std::abs(cold.speed_along() - (v0 - a * 240 * dt)) <= a * dt);
     Roll free(0.0, v0, 0.0);
     for (int i = 0; i < 300; ++i)
         free.world.step(dt);
