@@ -155,6 +155,31 @@ BOOST_AUTO_TEST_CASE(prismatic_motor_and_limits, *utf::label("DD23") * utf::labe
     BOOST_TEST(std::abs(w.velocity(slider).x) < 1e-3);
 }
 
+// Oracle: kinematics. Without gravity, a slider whose centre of mass is off its origin (its box
+// centred at (0.5, 0.3) in its frame), set moving along its prismatic joint's axis at 1 m/s,
+// keeps that velocity; the joint's translation is how far the anchor on it has moved along the
+// axis from the one on the ground: its origin's x, within rounding, at every step.
+BOOST_AUTO_TEST_CASE(prismatic_translation_with_an_offset_centre_of_mass,
+                     *utf::label("DD23") * utf::label("T1")) {
+    World w(world_def(0.0));
+    const BodyId ground = static_body(w);
+    BodyDef bd;
+    bd.linear_velocity = {1.0, 0.0};
+    const BodyId slider = w.create_body(bd);
+    w.create_shape(slider, box_shape(1.0, 1.0, {}, {0.5, 0.3}));
+    PrismaticJointDef pd;
+    pd.body_a = ground;
+    pd.body_b = slider;
+    pd.axis = {1.0, 0.0};
+    const JointId j = w.create_joint(pd);
+    BOOST_TEST(w.joint_translation(j) == 0.0);
+    for (int k = 0; k < 30; ++k) {
+        w.step(dt);
+        BOOST_TEST(std::abs(w.joint_translation(j) - w.origin(slider).x) <= 1e-12);
+    }
+    BOOST_TEST(w.origin(slider).x == 30 * dt, tt::tolerance(1e-9));
+}
+
 // Oracle: the harmonic oscillator. A 1 kg box on a prismatic joint with an undamped spring of
 // f = 1 Hz (stiffness m (2 pi f)^2 for the sliding direction's effective mass m), given the
 // target 0.5 m at rest at 0: x(t) = 0.5 (1 - cos 2 pi f t), which first reaches its top, 1 m,
