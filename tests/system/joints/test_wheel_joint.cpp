@@ -145,4 +145,26 @@ BOOST_AUTO_TEST_CASE(a_wheel_resting_on_its_lower_limit_is_held_by_it,
     BOOST_TEST(std::abs(reaction.x) <= 1e-9);
 }
 
+// Oracle: static equilibrium, as above, with gravity turned upwards: the wheel rises onto the
+// upper limit of its travel and rests there, so the limit carries its weight the other way and
+// the joint's reaction on the wheel is (0, -m g), with its travel at the upper limit within the
+// same soft error.
+BOOST_AUTO_TEST_CASE(a_wheel_pressed_against_its_upper_limit_is_held_by_it,
+                     *utf::label("DD25") * utf::label("IM6") * utf::label("LC3")) {
+    const double upper = 0.1, dt = 1.0 / 60.0;
+    Wheel w({0.0, g}, WheelJointDef{.enable_spring = false,
+                                    .enable_limit = true,
+                                    .lower_translation = -0.1,
+                                    .upper_translation = upper});
+    for (int k = 1; k <= 120; ++k)
+        w.world.step(dt);
+    const double m = w.world.mass(w.wheel);
+    const double omega = 2.0 * std::numbers::pi * WorldDef{}.joint_hertz;
+    const Vec2d reaction = w.world.joint_reaction_force(w.joint);
+    BOOST_TEST(std::abs(w.world.joint_translation(w.joint) - upper) <= 1.5 * g / (omega * omega));
+    BOOST_TEST(std::abs(w.world.velocity(w.wheel).y) <= 1e-6);
+    BOOST_TEST(reaction.y == -m * g, boost::test_tools::tolerance(1e-6));
+    BOOST_TEST(std::abs(reaction.x) <= 1e-9);
+}
+
 BOOST_AUTO_TEST_SUITE_END()
