@@ -139,7 +139,7 @@ void ContinuousPass::sweep(const FastBody& f, bool bullet, BodyStore& store,
                 time_of_impact(shape, sweep, other.collider, other.body_xf, target, tolerance, c.t);
             const bool whole = r.state == ToiState::hit;
             const double hit = whole ? r.t : c.t;
-            if (contacts.pre_solve) {
+            if (contacts.pre_solve && ContactManager::asks_pre_solve(shape_store, s, o)) {
                 // The game's pre-solve rule decides, as for the pair's contact (a one-way
                 // platform lets a fast body through): asked where the stop would put it.
                 const ShapeDistance d = shape_distance(whole ? shape : core, sweep.at(hit),

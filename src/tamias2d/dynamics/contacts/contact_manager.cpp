@@ -767,8 +767,6 @@ std::uint8_t ContactManager::pre_solved(std::uint32_t i, std::uint8_t r, const B
 bool ContactManager::admits_impact(const BodyStore& bodies, const ShapeStore& shapes,
                                    std::uint32_t moving, std::uint32_t fixed, Vec2d normal,
                                    Vec2d point, double gap) const {
-    if (!pre_solve || !asks_pre_solve(shapes, moving, fixed))
-        return true;
     // The order a contact of the pair has (find_new: the lower shape index first).
     const bool moving_first = moving < fixed;
     const std::uint32_t sa = moving_first ? moving : fixed, sb = moving_first ? fixed : moving;

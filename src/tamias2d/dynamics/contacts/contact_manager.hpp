@@ -190,9 +190,10 @@ class ContactManager {
     /// within reach of shape `fixed`: the pre-solve callback's answer about that pair, asked
     /// as about their contact (the shapes in a contact's order, the normal from shape_a into
     /// shape_b) with one point, `point`, at the separation `gap`; `normal` runs from `moving`
-    /// towards `fixed`. True without a callback or when neither shape allows it. An exception
-    /// of the callback is kept, as pre_solved keeps it, and the pair counts as solved: the body
-    /// is stopped. A one-way platform's rule thus also lets a fast body through.
+    /// towards `fixed`. Asked only with a callback set and a shape that allows it
+    /// (asks_pre_solve), before the caller measures the point. An exception of the callback is
+    /// kept, as pre_solved keeps it, and the pair counts as solved: the body is stopped. A
+    /// one-way platform's rule thus also lets a fast body through.
     bool admits_impact(const BodyStore& bodies, const ShapeStore& shapes, std::uint32_t moving,
                        std::uint32_t fixed, Vec2d normal, Vec2d point, double gap) const;
     /// The user's mixing functions (World::set_friction_mixing, set_restitution_mixing; empty:
