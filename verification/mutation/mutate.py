@@ -23,7 +23,7 @@ score = killed / (killed + survivors not judged equivalent), with its Wilson 95 
 
     /usr/bin/python3 verification/mutation/mutate.py OUT_DIR [--sample N] [--seed S]
         [--minutes M] [--all] [--ids I,J,...] [--shard I/N] [--resume] [--scratch DIR]
-        [--list] [--coverage JSON HTML]
+        [--resume-from FILE...] [--list] [--coverage JSON HTML]
     /usr/bin/python3 verification/mutation/mutate.py --merge OUT_DIR SHARD_FILE...
 
 With --coverage the scratch build is instrumented with gcov and, before any mutant, every test
@@ -38,7 +38,8 @@ after each mutant. With
 and written to OUT_DIR/mutation-shard-I-of-N.json; --merge joins shards of one tree into
 OUT_DIR/mutation.json. Each verdict is also appended to a journal beside that file as it is
 reached; --resume keeps a journal's verdicts (of the same tree, selection and shard) and
-judges only the rest. Writes OUT_DIR/mutation.json in the verification schema
+judges only the rest; --resume-from FILE... keeps those of results files of the same tree and
+selection (a partial reference, from any machine) likewise. Writes OUT_DIR/mutation.json in the verification schema
 (docs/traceability.md): the score and its interval, one row per mutant, every survivor with
 its judgement. The report shows it; the main job runs a time-boxed sample (it is an optional
 program of traceability/config.yaml: absent, the report says "not run").
@@ -1273,6 +1274,33 @@ def merge(out_dir, files, survivors=SURVIVORS):
     return 0
 
 
+def results_to_resume(path, tree, selection, chosen):
+    """{mutant id: result} of the chosen mutants judged in a results file (a run's
+    mutation.json, a shard's file or a merge of shards, from any machine) of this tree and
+    selection: a reference judged in part goes on where it stopped, on another machine. A file
+    of another tree or selection is refused, not ignored: it was asked for by name."""
+    try:
+        with open(path, encoding="utf-8") as fh:
+            doc = json.load(fh)
+    except (OSError, ValueError) as exc:
+        raise SystemExit(f"--resume-from: {path}: unreadable ({exc})")
+    if not isinstance(doc, dict) or doc.get("program") != "mutation":
+        raise SystemExit(f"--resume-from: {path} is not the results of mutate.py")
+    if (doc.get("provenance") or {}).get("tree") != tree:
+        raise SystemExit(f"--resume-from: {path} is of tree {doc['provenance'].get('tree')}, "
+                         f"this run's is {tree}: its verdicts need not hold here")
+
+    def kind(sel):
+        return {k: v for k, v in (sel or {}).items() if k != "minutes"}
+    if kind(doc.get("selection")) != kind(selection):
+        raise SystemExit(f"--resume-from: {path} is of selection "
+                         f"{json.dumps(doc.get('selection'))}, this run's is "
+                         f"{json.dumps(selection)}")
+    by_id = {m["id"]: m for m in chosen}
+    return {r["id"]: r for r in doc.get("mutants", [])
+            if r.get("id") in by_id and survivor_key(by_id[r["id"]]) == survivor_key(r)}
+
+
 class Journal:
     """The judged mutants of a run as they are judged, one JSON line each after a header line
     (the tree, the selection and the shard), so a run that is stopped (a batch job's time
@@ -1363,6 +1391,11 @@ def judge_run(a, muts, chosen, selection, shard):
     if a.resume:
         print(f"mutation: {len(done)} of {len(chosen)} mutants judged before, from "
               f"{journal.path}", flush=True)
+    for f in a.resume_from or ():
+        kept = results_to_resume(f, tree, selection, chosen)
+        print(f"mutation: {len(kept)} of {len(chosen)} mutants judged before, from {f}",
+              flush=True)
+        done.update(kept)
     journal.start(done)
     results = []
     baseline = {}  # CTest entry -> passes on the unmutated sources (asked when it kills)
@@ -1467,6 +1500,10 @@ def main(argv=None):
     ap.add_argument("--resume", action="store_true",
                     help="keep the verdicts of OUT_DIR's journal of this tree, selection and "
                          "shard (a run stopped before its end) and judge only the rest")
+    ap.add_argument("--resume-from", nargs="+", metavar="FILE",
+                    help="keep the verdicts of these results files (mutation.json, a shard's "
+                         "file or a merge, e.g. the repository's reference) of this tree and "
+                         "selection and judge only the rest")
     ap.add_argument("--ids", help="judge these mutants (ids of --list, comma-separated) only")
     ap.add_argument("--shard", metavar="I/N",
                     help="judge the I-th (0 to N-1) of N disjoint shards of the chosen mutants "

@@ -493,6 +493,43 @@ class Shards(unittest.TestCase):
             self.assertEqual(sorted(i for i, b in self.judged if not b.endswith("build-asan")),
                              sorted(r["id"] for r in whole["mutants"]))
 
+    def test_a_partial_reference_goes_on_elsewhere_from_its_merged_results(self):
+        # Oracle: the uninterrupted shards' verdicts. Two shards stopped early are merged (the
+        # repository's partial reference); on a machine without their journals each shard goes
+        # on from that merge, judging only the mutants it lacks, and ends as if never stopped.
+        whole = {i: self.load(os.path.join(self.run_main("--all", "--shard", f"{i}/2"),
+                                           mutate.shard_file(i, 2))) for i in range(2)}
+        parts = []
+        for i in range(2):
+            self.judged, self.stop_after = [], 3
+            with self.assertRaises(KeyboardInterrupt):
+                self.run_main("--all", "--shard", f"{i}/2")
+            part = os.path.join(self.tmp.name, f"part-{i}.json")
+            shutil.copy(os.path.join(self.tmp.name, "out", mutate.shard_file(i, 2)), part)
+            parts.append(part)
+        reference = os.path.join(self.tmp.name, "reference")
+        with contextlib.redirect_stdout(io.StringIO()):
+            mutate.main(["--merge", reference, *parts, "--survivors", self.record])
+        reference = os.path.join(reference, "mutation.json")
+        before = {r["id"] for r in self.load(reference)["mutants"]}
+        self.assertTrue(before)
+        for i in range(2):
+            shutil.rmtree(os.path.join(self.tmp.name, "out"))  # another machine: no journal
+            self.judged, self.stop_after = [], None
+            out = self.run_main("--all", "--shard", f"{i}/2", "--resume-from", reference)
+            again = {j for j, b in self.judged if not b.endswith("build-asan")}
+            ids = {r["id"] for r in whole[i]["mutants"]}
+            self.assertEqual(again, ids - before)
+            done = self.load(os.path.join(out, mutate.shard_file(i, 2)))
+            self.assertEqual([(r["id"], r["verdict"]) for r in done["mutants"]],
+                             [(r["id"], r["verdict"]) for r in whole[i]["mutants"]])
+            self.assertTrue(done["shard"]["complete"])
+        # Results of another tree are refused by name, not silently judged again.
+        self.tree = "tree-2"
+        with self.assertRaises(SystemExit) as refused:
+            self.run_main("--all", "--shard", "0/2", "--resume-from", reference)
+        self.assertIn("tree", str(refused.exception))
+
     def test_a_run_of_every_mutant_stopped_early_leaves_a_seeded_sample(self):
         # Oracle: sample_of, the main job's sample: a whole run judges in its rank order, so the
         # mutants judged when it stops at a window's end are the sample of that size, and the
