@@ -6,15 +6,16 @@
 # the lint of the `try_` forms (ctest -L error_returning): only those targets, so that the lane
 # stays short. Checks that the generated config.hpp and the CMake package file record the option,
 # and that the library still defines the throwing forms (one binary for both settings). Built
-# without the library's precompiled header (TAMIAS_LIBRARY_PCH=OFF): every library file then
-# compiles from its own includes, which the other builds' shared header would hide.
+# without the library's precompiled header and file by file (TAMIAS_LIBRARY_PCH=OFF,
+# TAMIAS_UNITY_BUILD=OFF): every library file then compiles from its own includes, which the
+# other builds' shared header and batches would hide.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 start=$(date +%s)
 build=build-noexcept
 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DTAMIAS2D_EXCEPTIONS=OFF \
     -DTAMIAS_WERROR=ON -DTAMIAS_BUILD_VERIFICATION=OFF -DTAMIAS_TEST_PCH=OFF \
-    -DTAMIAS_LIBRARY_PCH=OFF >/dev/null
+    -DTAMIAS_LIBRARY_PCH=OFF -DTAMIAS_UNITY_BUILD=OFF >/dev/null
 grep -q "^#if 0 && " "$build/include/tamias2d/config.hpp" || {
     echo "FAIL: $build/include/tamias2d/config.hpp does not record TAMIAS2D_EXCEPTIONS=OFF"
     exit 1

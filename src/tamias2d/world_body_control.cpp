@@ -3,10 +3,10 @@
 // before it changes anything (or, where the check needs the change made, undoes it before it
 // throws), and a value a body already has changes nothing.
 #include <cstdint>
-#include <cstring>
 #include <string>
 
 #include "tamias2d/errors.hpp"
+#include "tamias2d/math/same_bits.hpp"
 #include "tamias2d/validation.hpp"
 #include "tamias2d/world.hpp"
 #include "tamias2d/world_impl.hpp"
@@ -15,15 +15,13 @@ namespace tamias2d {
 
 namespace {
 
-/// The same bits: 0 and -0 differ, as they do to the state hash.
-bool same(double a, double b) {
-    return std::memcmp(&a, &b, sizeof a) == 0; // (no std::bit_cast in the WebAssembly libc++)
-}
+using math::same_bits;
 bool same(const std::optional<double>& a, const std::optional<double>& b) {
-    return a.has_value() == b.has_value() && (!a || same(*a, *b));
+    return a.has_value() == b.has_value() && (!a || same_bits(*a, *b));
 }
 bool same(const std::optional<Vec2d>& a, const std::optional<Vec2d>& b) {
-    return a.has_value() == b.has_value() && (!a || (same(a->x, b->x) && same(a->y, b->y)));
+    return a.has_value() == b.has_value() &&
+           (!a || (same_bits(a->x, b->x) && same_bits(a->y, b->y)));
 }
 
 /// \srs{DCX_joint} Runs `change` on body i's mass, then checks its joints' levers with the
@@ -98,7 +96,7 @@ bool World::is_enabled(BodyId id) const {
 void World::set_gravity_scale(BodyId id, double scale) {
     Body& b = impl_->bodies.get(id);
     require_within("gravity_scale", scale, supported::input_max, "");
-    if (same(b.gravity_scale, scale))
+    if (same_bits(b.gravity_scale, scale))
         return;
     b.gravity_scale = scale;
     impl_->bodies.wake(id.index);

@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <string>
 #include <vector>
 
@@ -14,6 +13,7 @@
 #include "tamias2d/errors.hpp"
 #include "tamias2d/geometry/projected_width.hpp"
 #include "tamias2d/math/hypot.hpp"
+#include "tamias2d/math/same_bits.hpp"
 #include "tamias2d/model/dd09_chasles_theorem.hpp"
 #include "tamias2d/model/dd44_kinematic_target.hpp"
 #include "tamias2d/model/dd45_wind_force.hpp"
@@ -34,11 +34,6 @@ Geometry mover_geometry(const Capsule& mover) {
     def.geometry.capsule = mover;
     validate(def);
     return def.geometry;
-}
-
-/// The same bits (0 and -0 differ, as they do to the state hash).
-bool same(double a, double b) {
-    return std::memcmp(&a, &b, sizeof a) == 0;
 }
 
 } // namespace
@@ -130,7 +125,7 @@ void World::set_target_transform(BodyId body, Vec2d origin, double angle, double
     require_within("set_target_transform: the velocity", v, supported::state_max, "m s^-1");
     require_within("set_target_transform: the angular velocity", omega, supported::state_max,
                    "rad s^-1");
-    if (same(v.x, b.v.x) && same(v.y, b.v.y) && same(omega, b.w))
+    if (math::same_bits(v.x, b.v.x) && math::same_bits(v.y, b.v.y) && math::same_bits(omega, b.w))
         return; // already on its way: nothing changes, nothing wakes
     b.v = v;
     b.w = omega;

@@ -319,13 +319,15 @@ def prepare_scratch(root, scratch, coverage=False, build_all=True):
     # turned by one is noticed even where the stray element is never used.
     # With coverage the same build is instrumented (the counters change no arithmetic) and also
     # holds the command, whose tests reach the scene library: one build serves both analyses.
+    # File by file (no unity batches): a mutant recompiles its own file only, and its object
+    # is compared with the unmutated one's.
     rc, out = run(["cmake", "-S", src, "-B", build, "-G", "Ninja", "-DCMAKE_BUILD_TYPE=Release",
                    f"-DCMAKE_CXX_FLAGS_RELEASE={SCRATCH_FLAGS}", "-DBUILD_SHARED_LIBS=ON",
                    "-DCMAKE_LINK_DEPENDS_NO_SHARED=ON", "-DTAMIAS_BUILD_TESTS=ON",
                    "-DTAMIAS_BUILD_VERIFICATION=OFF",
                    f"-DTAMIAS_BUILD_APPS={'ON' if coverage else 'OFF'}",
                    f"-DTAMIAS_COVERAGE={'ON' if coverage else 'OFF'}",
-                   "-DTAMIAS_INSTALL=OFF"])
+                   "-DTAMIAS_INSTALL=OFF", "-DTAMIAS_UNITY_BUILD=OFF"])
     if rc != 0:
         raise SystemExit("scratch configure failed:\n" + out[-3000:])
     # Every labelled test executable once, before any mutant: a mutant's time is then its own
@@ -448,7 +450,8 @@ class SanitizerScratch:
                                "-DBUILD_SHARED_LIBS=ON", "-DCMAKE_LINK_DEPENDS_NO_SHARED=ON",
                                "-DTAMIAS_BUILD_TESTS=ON", "-DTAMIAS_BUILD_VERIFICATION=OFF",
                                "-DTAMIAS_BUILD_APPS=OFF", "-DTAMIAS_COVERAGE=OFF",
-                               "-DTAMIAS_INSTALL=OFF", *SANITIZER_OPTIONS])
+                               "-DTAMIAS_INSTALL=OFF", "-DTAMIAS_UNITY_BUILD=OFF",
+                               *SANITIZER_OPTIONS])
                 if rc != 0:
                     raise SystemExit("sanitizer scratch configure failed:\n" + out[-3000:])
                 self.configured = True

@@ -1,17 +1,15 @@
 #include "tamias2d/io/chain_runs.hpp"
 
-#include <cstring>
-
 #include "tamias2d/errors.hpp"
+#include "tamias2d/math/same_bits.hpp"
 
 namespace tamias2d::io {
 
 namespace {
 
 // Bits, not values: -0 and 0 differ in the file, and the round trip is promised bit for bit.
-// (memcmp, not std::bit_cast: the WebAssembly build's libc++ has no bit_cast.)
 bool same(double a, double b) {
-    return std::memcmp(&a, &b, sizeof a) == 0;
+    return math::same_bits(a, b);
 }
 bool same(Vec2d a, Vec2d b) {
     return same(a.x, b.x) && same(a.y, b.y);

@@ -6,13 +6,13 @@
 
 #include "box_polygon.hpp"
 #include "tamias2d/errors.hpp"
+#include "tamias2d/io/scene_read.hpp"
 #include "tamias2d/validation.hpp"
 
 namespace tamias2d::io {
 namespace {
 
-// Non-SRS rules of the scene format carry this in place of a data-constraint label.
-constexpr const char* format_rule = "scene format";
+using scene_detail::format_rule;
 
 void require_finite(const std::string& field, double v) {
     if (!std::isfinite(v))

@@ -28,7 +28,10 @@ RecordingError::RecordingError(std::size_t offset_, std::string field_, std::str
 
 using recording::Call;
 
-namespace {
+// Named, not anonymous: Replayer::Impl holds a Parsed, and a class with a member of an
+// anonymous namespace's type is an error (-Wsubobject-linkage) where this file is compiled in a
+// unity batch.
+namespace replay_detail {
 
 /// A record: its call, where its arguments are and their size.
 struct Record {
@@ -46,6 +49,13 @@ struct Parsed {
     memory::vector<Record> records;
     std::uint64_t steps = 0;
 };
+
+} // namespace replay_detail
+
+using replay_detail::Parsed;
+using replay_detail::Record;
+
+namespace {
 
 std::uint64_t read_le(std::span<const std::byte> b, std::size_t at, int n) {
     std::uint64_t v = 0;
