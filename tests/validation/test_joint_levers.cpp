@@ -84,6 +84,47 @@ BOOST_AUTO_TEST_CASE(a_far_anchor_is_refused, *utf::label("R4") * utf::label("DC
                                               .anchor_b = {c.x + 0.9999e5 * k, c.y}}));
 }
 
+// Oracle: DCX_joint's stated rule, whose lever runs from the centre of mass, not the body's
+// origin. A disc centred 6e4 m from its body's origin (k = 1.468 / sqrt(2) m, bound 1e5 k):
+// anchors just within the bound on either side of the centre of mass are accepted, and just
+// beyond it on the origin's side is refused, though that anchor lies within the bound of the
+// origin.
+BOOST_AUTO_TEST_CASE(the_lever_runs_from_the_centre_of_mass, *utf::label("DCX_joint")) {
+    const double k = 1.468 / std::sqrt(2.0), offset = 6e4;
+    for (const double side : {1.0, -1.0}) {
+        BOOST_TEST_CONTEXT("side " << side) {
+            World world{WorldDef{}};
+            BodyDef s;
+            s.type = BodyType::static_body;
+            const BodyId pivot = world.create_body(s);
+            const BodyId bob = world.create_body(BodyDef{});
+            world.create_shape(bob, circle_shape(1.468, {}, {offset, 0.0}));
+            const Vec2d c = world.position(bob);
+            BOOST_TEST_REQUIRE(std::abs(c.x - offset) < 1e-6); // the disc's centre, to rounding
+            BOOST_CHECK_NO_THROW(
+                world.create_joint(DistanceJointDef{.body_a = pivot,
+                                                    .body_b = bob,
+                                                    .anchor_a = {0.0, 0.0},
+                                                    .anchor_b = {c.x + side * 0.9999e5 * k, c.y}}));
+        }
+    }
+    World world{WorldDef{}};
+    BodyDef s;
+    s.type = BodyType::static_body;
+    const BodyId pivot = world.create_body(s);
+    const BodyId bob = world.create_body(BodyDef{});
+    world.create_shape(bob, circle_shape(1.468, {}, {offset, 0.0}));
+    const double beyond = offset - 1.0001e5 * k; // 4.4e4 m from the origin: within 1e5 k of it
+    BOOST_TEST_REQUIRE(std::abs(beyond) < 1e5 * k);
+    expect_rejected(
+        world,
+        [&] {
+            world.create_joint(DistanceJointDef{
+                .body_a = pivot, .body_b = bob, .anchor_a = {0.0, 0.0}, .anchor_b = {beyond, 0.0}});
+        },
+        "joint.anchor_b", "DCX_joint");
+}
+
 // Oracle: DCX_joint's stated rule, checked again at the step (as a_shapeless_jointed_body...).
 // F1 after the joint: the centre of mass moves when a shape comes or goes (API seed 20287469
 // reached it with a circle centred 3e8 m off). Here a second disc 3e8 m off makes a dumbbell whose
