@@ -39,10 +39,10 @@ and written to OUT_DIR/mutation-shard-I-of-N.json; --merge joins shards of one t
 OUT_DIR/mutation.json. Each verdict is also appended to a journal beside that file as it is
 reached; --resume keeps a journal's verdicts (of the same tree, selection and shard) and
 judges only the rest; --resume-from FILE... keeps those of results files of the same tree and
-selection (a partial reference, from any machine) likewise. Writes OUT_DIR/mutation.json in the verification schema
-(docs/traceability.md): the score and its interval, one row per mutant, every survivor with
-its judgement. The report shows it; the main job runs a time-boxed sample (it is an optional
-program of traceability/config.yaml: absent, the report says "not run").
+selection (a partial reference, from any machine) likewise. Writes OUT_DIR/mutation.json in the
+verification schema (docs/traceability.md): the score and its interval, one row per mutant,
+every survivor with its judgement. The report shows it; the main job runs a time-boxed sample
+(it is an optional program of traceability/config.yaml: absent, the report says "not run").
 """
 import argparse
 import datetime
@@ -1289,9 +1289,10 @@ def results_to_resume(path, tree, selection, chosen):
         raise SystemExit(f"--resume-from: {path}: unreadable ({exc})")
     if not isinstance(doc, dict) or doc.get("program") != "mutation":
         raise SystemExit(f"--resume-from: {path} is not the results of mutate.py")
-    if (doc.get("provenance") or {}).get("tree") != tree:
-        raise SystemExit(f"--resume-from: {path} is of tree {doc['provenance'].get('tree')}, "
-                         f"this run's is {tree}: its verdicts need not hold here")
+    theirs = (doc.get("provenance") or {}).get("tree")
+    if theirs != tree:
+        raise SystemExit(f"--resume-from: {path} is of tree {theirs}, this run's is {tree}: "
+                         "its verdicts need not hold here")
 
     def kind(sel):
         return {k: v for k, v in (sel or {}).items() if k != "minutes"}
