@@ -91,36 +91,37 @@ BOOST_AUTO_TEST_CASE(a_far_anchor_is_refused, *utf::label("R4") * utf::label("DC
 // origin.
 BOOST_AUTO_TEST_CASE(the_lever_runs_from_the_centre_of_mass, *utf::label("DCX_joint")) {
     const double k = 1.468 / std::sqrt(2.0), offset = 6e4;
-    for (const double side : {1.0, -1.0}) {
-        BOOST_TEST_CONTEXT("side " << side) {
-            World world{WorldDef{}};
+    // A static pivot at the origin and a body whose disc lies `offset` along x from its origin.
+    struct OffCentre {
+        World world{WorldDef{}};
+        BodyId pivot, bob;
+        explicit OffCentre(double offset) {
             BodyDef s;
             s.type = BodyType::static_body;
-            const BodyId pivot = world.create_body(s);
-            const BodyId bob = world.create_body(BodyDef{});
+            pivot = world.create_body(s);
+            bob = world.create_body(BodyDef{});
             world.create_shape(bob, circle_shape(1.468, {}, {offset, 0.0}));
-            const Vec2d c = world.position(bob);
+        }
+        void join(Vec2d anchor_b) {
+            world.create_joint(DistanceJointDef{
+                .body_a = pivot, .body_b = bob, .anchor_a = {0.0, 0.0}, .anchor_b = anchor_b});
+        }
+    };
+    for (const double side : {1.0, -1.0}) {
+        BOOST_TEST_CONTEXT("side " << side) {
+            OffCentre w(offset);
+            const Vec2d c = w.world.position(w.bob);
             BOOST_TEST_REQUIRE(std::abs(c.x - offset) < 1e-6); // the disc's centre, to rounding
-            BOOST_CHECK_NO_THROW(
-                world.create_joint(DistanceJointDef{.body_a = pivot,
-                                                    .body_b = bob,
-                                                    .anchor_a = {0.0, 0.0},
-                                                    .anchor_b = {c.x + side * 0.9999e5 * k, c.y}}));
+            BOOST_CHECK_NO_THROW(w.join({c.x + side * 0.9999e5 * k, c.y}));
         }
     }
-    World world{WorldDef{}};
-    BodyDef s;
-    s.type = BodyType::static_body;
-    const BodyId pivot = world.create_body(s);
-    const BodyId bob = world.create_body(BodyDef{});
-    world.create_shape(bob, circle_shape(1.468, {}, {offset, 0.0}));
+    OffCentre w(offset);
     const double beyond = offset - 1.0001e5 * k; // 4.4e4 m from the origin: within 1e5 k of it
     BOOST_TEST_REQUIRE(std::abs(beyond) < 1e5 * k);
     expect_rejected(
-        world,
+        w.world,
         [&] {
-            world.create_joint(DistanceJointDef{
-                .body_a = pivot, .body_b = bob, .anchor_a = {0.0, 0.0}, .anchor_b = {beyond, 0.0}});
+            w.join({beyond, 0.0});
         },
         "joint.anchor_b", "DCX_joint");
 }
