@@ -11,6 +11,7 @@
 #include <random>
 #include <set>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "support/random_contacts.hpp"
@@ -178,23 +179,17 @@ BOOST_AUTO_TEST_CASE(regions_reproduce_the_sequential_pass_in_their_order, *utf:
                 test::store(solver, stored.constraints);
                 check_same_pass(stored, seq);
 
-                for (int threads = 1; threads <= 3; ++threads) {
-                    BOOST_TEST_CONTEXT(threads << " threads") {
+                // One, two and three threads from stream 0; and one thread from each later
+                // stream, which waits for another: it must come back to it.
+                std::vector<std::pair<int, std::uint32_t>> runs{{1, 0}, {2, 0}, {3, 0}};
+                for (std::uint32_t first = 1; first <= regions; ++first)
+                    runs.emplace_back(1, first);
+                for (const auto& [threads, first] : runs) {
+                    BOOST_TEST_CONTEXT(threads << " threads from stream " << first) {
                         Scene run = scene;
                         WideContactSolver streamed;
                         test::load(streamed, run.constraints, run.bodies, regions, cut);
-                        threaded_passes(streamed, run.bodies, threads);
-                        test::store(streamed, run.constraints);
-                        check_same_pass(run, seq);
-                    }
-                }
-                // One thread that starts at a stream waiting for another: it must come back to it.
-                for (std::uint32_t first = 1; first <= regions; ++first) {
-                    BOOST_TEST_CONTEXT("one thread from stream " << first) {
-                        Scene run = scene;
-                        WideContactSolver streamed;
-                        test::load(streamed, run.constraints, run.bodies, regions, cut);
-                        threaded_passes(streamed, run.bodies, 1, first);
+                        threaded_passes(streamed, run.bodies, threads, first);
                         test::store(streamed, run.constraints);
                         check_same_pass(run, seq);
                     }
