@@ -328,6 +328,26 @@ BOOST_AUTO_TEST_CASE(a_body_put_to_sleep_is_as_one_defined_asleep) {
     BOOST_TEST(rested.state_hash() == defined.state_hash());
 }
 
+// Oracle: the documented rule of set_awake, a body put to sleep loses its one-step loads. A
+// force and a torque applied before it sleeps are gone when it wakes: without gravity the next
+// step leaves the box exactly where it was, unturned and at rest. Newton's first law for a box
+// with no load.
+BOOST_AUTO_TEST_CASE(a_body_put_to_sleep_drops_its_one_step_loads) {
+    WorldDef d = def_with_sleep();
+    d.gravity = {0.0, 0.0};
+    World w(d);
+    const BodyId a = box(w, 0.0, 1.0);
+    w.apply_force(a, {30.0, 0.0}, {0.0, 1.4});
+    w.apply_torque(a, 2.0);
+    w.set_awake(a, false);
+    w.set_awake(a, true);
+    w.step(dt);
+    BOOST_TEST(same_bits(w.position(a), {0.0, 1.0}));
+    BOOST_TEST(w.orientation(a) == 0.0);
+    BOOST_TEST(same_bits(w.velocity(a), {0.0, 0.0}));
+    BOOST_TEST(w.angular_velocity(a) == 0.0);
+}
+
 // Oracle: the rule "an island falls asleep ... Its velocities become zero" (docs/user-guide.md,
 // "Sleeping"). Without gravity a box drifts at 1 cm/s and turns at 0.01 rad/s, both below the
 // tolerances, so it falls asleep after time_to_sleep while still moving; asleep, its velocities
