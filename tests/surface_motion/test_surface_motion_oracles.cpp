@@ -20,7 +20,9 @@ constexpr double g = 9.81;
 /// A circle of radius r rolling down a static slope of angle theta (0: flat ground) along
 /// d = (cos theta, -sin theta), released rolling without slipping at v0 (omega = -v0 / r);
 /// warm is WorldDef::enable_warm_starting; ball_first creates the ball before the ground, so
-/// that the ball is the first body of their pair (a contact orders its shapes by creation).
+/// that the ball is the first body of their pair (a contact orders its shapes by creation);
+/// a ground_radius above 0 makes the ground a capsule of that radius instead of a box, its top
+/// through the origin as the box's.
 struct Roll {
     World world;
     BodyId ball;
@@ -28,19 +30,25 @@ struct Roll {
     Vec2d d, p0;
     static constexpr double r = 0.5;
     Roll(double theta, double v0, double c_ball, double c_ground = 0.0, bool warm = true,
-         bool ball_first = false)
+         bool ball_first = false, double ground_radius = 0.0)
         : world(
               WorldDef{.gravity = {0.0, -g}, .enable_warm_starting = warm, .enable_sleep = false}) {
         d = {std::cos(theta), -std::sin(theta)};
         const Vec2d n{std::sin(theta), std::cos(theta)}; // the slope's upward normal
         const auto make_ground = [&] {
+            const double depth = ground_radius > 0.0 ? ground_radius : 0.5;
             BodyDef gd;
             gd.type = BodyType::static_body;
-            gd.position = {-0.5 * n.x, -0.5 * n.y}; // top face through the origin
+            gd.position = {-depth * n.x, -depth * n.y}; // top face through the origin
             gd.angle = -theta;
             Material mg{1.0, 0.0, 0.9};
             mg.rolling_resistance = c_ground;
-            world.create_shape(world.create_body(gd), box_shape(400.0, 1.0, mg));
+            const BodyId ground = world.create_body(gd);
+            if (ground_radius > 0.0)
+                world.create_shape(ground,
+                                   capsule_shape({-200.0, 0.0}, {200.0, 0.0}, ground_radius, mg));
+            else
+                world.create_shape(ground, box_shape(400.0, 1.0, mg));
         };
         if (!ball_first)
             make_ground();
@@ -122,6 +130,20 @@ BOOST_AUTO_TEST_CASE(ball_rolls_to_rest_on_flat_ground, *utf::label("DD46")) {
     for (int i = 0; i < 300; ++i)
         free.world.step(dt);
     BOOST_TEST(free.speed_along() > 0.99 * v0); // nothing else slows a rolling ball
+}
+
+// Oracle: closed form of DD46 with its lever, the larger rolling radius: a ball of radius r on
+// the flat top of a capsule of radius R > r is resisted by the torque c R N, which takes
+// c R N s / r over the rolled angle s / r, so it stops after (3/4) v0^2 r / (c R g), r / R of
+// its distance on a box (lever r). Here 3 m/s, c = 0.05, R = 0.75: 9.17 m, within the
+// integration bound.
+BOOST_AUTO_TEST_CASE(a_capsule_gives_its_radius_as_the_lever, *utf::label("DD46")) {
+    const double v0 = 3.0, c = 0.05, R = 0.75;
+    Roll roll(0.0, v0, c, 0.0, true, false, R);
+    const double s = roll.distance_to_rest(12.0);
+    const double closed = stopping_distance(v0, c, 0.0) * Roll::r / R;
+    BOOST_TEST_MESSAGE("on a capsule: " << s << " m, closed form " << closed);
+    BOOST_TEST(std::abs(s - closed) <= integration_bound(v0));
 }
 
 // Oracle: closed form (stopping_distance above): down a slope of 0.1 rad a ball of c = 0.2 at
