@@ -381,4 +381,42 @@ BOOST_AUTO_TEST_CASE(a_wrong_section_tag_is_refused_naming_the_tag, *utf::label(
     }
 }
 
+// A contact naming its second shape by the shape count, one past the last shape, is refused at
+// its record, naming shape_a's rule, before any shape is read by that index. Oracle: the
+// contact's documented rule (contact_manager.cpp's reader: two live shapes, shape_a < shape_b,
+// of the bodies named) and the world's two shapes, indices 0 and 1; the record's first two
+// fields, shape_a then shape_b, follow the section's tag and its count (the format's).
+BOOST_AUTO_TEST_CASE(a_contact_naming_the_shape_past_the_last_is_refused,
+                     *utf::label("reliability")) {
+    World w;
+    const BodyId ground = w.create_body({.type = BodyType::static_body});
+    w.create_shape(ground, box_shape(10.0, 1.0));
+    const BodyId box = w.create_body({.position = {0.0, 0.99}});
+    w.create_shape(box, box_shape(1.0, 1.0));
+    w.step(1.0 / 60.0);
+    const std::vector<std::byte> good = w.snapshot();
+    const std::size_t at = section_bytes(good, "CONT").first + 4 + 8; // the first contact
+    const auto u32_at = [&](std::size_t k) {
+        std::uint32_t v = 0;
+        for (int b = 0; b < 4; ++b)
+            v |= std::uint32_t(good[k + std::size_t(b)]) << (8 * b);
+        return v;
+    };
+    BOOST_TEST_REQUIRE(u32_at(at) == 0u, "shape_a of the one contact");
+    BOOST_TEST_REQUIRE(u32_at(at + 4) == 1u, "shape_b of the one contact");
+    std::vector<std::byte> forged = good;
+    put_u32(forged, at + 4, 2); // the shape count
+    fix_checksum(forged);
+    World target;
+    BOOST_TEST(refused_unchanged(target, forged, "contacts[0]"));
+    try {
+        World::from_snapshot(forged);
+        BOOST_TEST(false, "accepted");
+    } catch (const SnapshotError& e) {
+        BOOST_TEST(e.offset == at, e.what());
+        BOOST_TEST(e.field.ends_with("shape_a"), e.what());
+    }
+    BOOST_TEST((World::from_snapshot(good).snapshot() == good)); // the intact one is read
+}
+
 BOOST_AUTO_TEST_SUITE_END()
