@@ -147,6 +147,43 @@ void threaded_passes(WideContactSolver& solver, std::vector<SolverBody>& bodies,
     }
 }
 
+/// The bodies' states after 120 steps of a scene under `gravity` with `regions` contact
+/// regions. Every body's gravity scale is 0: the gravity only chooses the cut's direction.
+/// The grid: 48 boxes in a loose 12 x 4 grid with seeded velocities. The diagonal: 24 discs on
+/// the line y = x moving along it, which keeps them on it exactly (every impulse's normal and
+/// every velocity have equal components, computed alike).
+std::vector<BodyState> run_regions(Vec2d gravity, int regions, bool diagonal = false) {
+    World world(WorldDef{.gravity = gravity, .contact_regions = regions});
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    std::vector<BodyId> ids;
+    for (int i = 0; i < (diagonal ? 24 : 48); ++i) {
+        BodyDef d;
+        d.gravity_scale = 0.0;
+        if (diagonal) {
+            d.position = {1.5 * i, 1.5 * i};
+            const double v = 2.0 * u(rng);
+            d.linear_velocity = {v, v};
+        } else {
+            d.position = {1.1 * (i % 12), 1.1 * (i / 12)};
+            d.linear_velocity = {2.0 * u(rng), 2.0 * u(rng)};
+            d.angular_velocity = u(rng);
+        }
+        ids.push_back(world.create_body(d));
+        world.create_shape(ids.back(), diagonal ? circle_shape(0.5) : box_shape(1.0, 1.0));
+    }
+    for (int k = 0; k < 120; ++k)
+        world.step(1.0 / 60.0);
+    std::vector<BodyState> states;
+    for (const BodyId b : ids)
+        states.push_back(world.state(b));
+    return states;
+}
+
+bool same_states(const std::vector<BodyState>& a, const std::vector<BodyState>& b) {
+    return std::memcmp(a.data(), b.data(), a.size() * sizeof(BodyState)) == 0;
+}
+
 } // namespace
 
 BOOST_AUTO_TEST_SUITE(contact_regions)
@@ -304,38 +341,34 @@ BOOST_AUTO_TEST_CASE(one_region_is_one_stream_without_waits) {
 }
 
 // Oracle: WorldDef::contact_regions' rule, "without gravity, the cuts are across x", as under
-// gravity along -y. 48 boxes in a loose grid with seeded velocities collide in a world without
-// gravity; the same scene under gravity (0, -9.81), each body's gravity scale 0, must give the
-// same bits (its bodies feel no gravity either, and its cuts are across x by the rule). The same
-// world solved in one region must not (the positive control: the regions change the order).
+// gravity along -y. The grid collides in a world without gravity; under gravity (0, -9.81) it
+// must give the same bits (its cuts are across x by the rule). The same world solved in one
+// region must not (the positive control: the regions change the order).
 BOOST_AUTO_TEST_CASE(without_gravity_the_regions_are_cut_across_x) {
-    const auto run = [](Vec2d gravity, int regions) {
-        World world(WorldDef{.gravity = gravity, .contact_regions = regions});
-        std::mt19937_64 rng(11);
-        std::uniform_real_distribution<double> u(-1.0, 1.0);
-        std::vector<BodyId> ids;
-        for (int i = 0; i < 48; ++i) {
-            BodyDef d;
-            d.position = {1.1 * (i % 12), 1.1 * (i / 12)};
-            d.linear_velocity = {2.0 * u(rng), 2.0 * u(rng)};
-            d.angular_velocity = u(rng);
-            d.gravity_scale = 0.0;
-            ids.push_back(world.create_body(d));
-            world.create_shape(ids.back(), box_shape(1.0, 1.0));
-        }
-        for (int k = 0; k < 120; ++k)
-            world.step(1.0 / 60.0);
-        std::vector<BodyState> states;
-        for (const BodyId b : ids)
-            states.push_back(world.state(b));
-        return states;
-    };
-    const auto same = [](const std::vector<BodyState>& a, const std::vector<BodyState>& b) {
-        return std::memcmp(a.data(), b.data(), a.size() * sizeof(BodyState)) == 0;
-    };
-    const std::vector<BodyState> weightless = run({0.0, 0.0}, 2);
-    BOOST_TEST(same(weightless, run({0.0, -9.81}, 2)));
-    BOOST_TEST(!same(weightless, run({0.0, 0.0}, 1)));
+    const std::vector<BodyState> weightless = run_regions({0.0, 0.0}, 2);
+    BOOST_TEST(same_states(weightless, run_regions({0.0, -9.81}, 2)));
+    BOOST_TEST(!same_states(weightless, run_regions({0.0, 0.0}, 1)));
+}
+
+// Oracle: the rule "cut across gravity", whatever its strength: under a weak gravity along x,
+// 0.5 m/s^2, the grid is cut across y as under 9.81 m/s^2 along x, to the same bits; cut
+// across x (no gravity) it is not (the positive control: the cut's direction shows).
+BOOST_AUTO_TEST_CASE(weak_gravity_cuts_the_regions_across_it_as_strong_gravity_does) {
+    const std::vector<BodyState> strong = run_regions({9.81, 0.0}, 2);
+    BOOST_TEST(same_states(strong, run_regions({0.5, 0.0}, 2)));
+    BOOST_TEST(!same_states(strong, run_regions({0.0, 0.0}, 2)));
+}
+
+// Oracle: the rule "cut across gravity" for a gravity along neither axis. Under gravity
+// (5, -5) the cut runs along (1, 1) / sqrt(2): the discs on y = x are ordered along it as by
+// x alone, so the world must give the bits of gravity (0, -9.81), whose cut is x. The same
+// world in one region must not (the positive control: the regions change the order).
+BOOST_AUTO_TEST_CASE(a_diagonal_gravity_cuts_the_regions_across_it) {
+    const std::vector<BodyState> along_x = run_regions({0.0, -9.81}, 2, true);
+    BOOST_TEST(same_states(along_x, run_regions({5.0, -5.0}, 2, true)));
+    BOOST_TEST(!same_states(along_x, run_regions({0.0, -9.81}, 1, true)));
+    for (const BodyState& b : along_x) // still on the diagonal
+        BOOST_TEST(b.position.x == b.position.y);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
