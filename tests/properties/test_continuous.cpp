@@ -348,6 +348,47 @@ BOOST_AUTO_TEST_CASE(the_pass_acts_where_a_core_comes_within_the_target_separati
     BOOST_TEST(end_x(x1 + 0.055) == x1);
 }
 
+// Oracle: DD29's rule, "a hit when d is within s* + s*/4", where the core passes a static shape
+// sideways. A disc of 1 m (its core 0.25 m) flies level at 360 m/s, in one step from 2 m left
+// of a static box 1 m wide to 2 m right of it, its core passing over the box's top face at a
+// height of m s* (s* = 5 mm, a quarter of the speculative distance); the whole disc sweeps
+// through the box's upper part. Conservative advancement brings the core down to that height
+// as it reaches the box's corner, and no nearer.
+//   m = 1.4: never within 1.25 s*: the pass does not act, and the disc ends its step at the
+//   twin world's unobstructed end (without the box), to the bit.
+//   m = 1.1: within the band: the disc is stopped at its whole shape's time of impact, its
+//   edge within [s*, 1.25 s*] of the box's corner.
+BOOST_AUTO_TEST_CASE(a_core_passing_beside_a_shape_is_stopped_only_within_the_band,
+                     *utf::label("DD29")) {
+    constexpr double radius = 1.0, core = radius / 4.0, s_star = 0.005;
+    const auto end = [&](double m, bool box) {
+        WorldDef def;
+        def.gravity = {0.0, 0.0};
+        World world(def);
+        if (box) {
+            BodyDef b;
+            b.type = BodyType::static_body;
+            world.create_shape(world.create_body(b), box_shape(1.0, 1.0));
+        }
+        BodyDef disc;
+        disc.position = {-0.5 - radius - 2.0, 0.5 + core + m * s_star};
+        disc.linear_velocity = {360.0, 0.0};
+        const BodyId body = world.create_body(disc);
+        world.create_shape(body, circle_shape(radius));
+        world.step(dt);
+        return world.state(body);
+    };
+    const BodyState beside = end(1.4, true), free = end(1.4, false);
+    BOOST_TEST_REQUIRE(free.position.x > 0.5 + radius); // unobstructed, it ends past the box
+    BOOST_TEST(std::memcmp(&beside, &free, sizeof beside) == 0);
+    // Within the band the whole disc stops as it comes within s* of the box's corner (-0.5,
+    // 0.5), no nearer and no farther than the iteration's own band.
+    const BodyState stopped = end(1.1, true);
+    const double gap = std::hypot(stopped.position.x + 0.5, stopped.position.y - 0.5) - radius;
+    BOOST_TEST(gap >= s_star, "stopped " << gap << " m from the corner");
+    BOOST_TEST(gap <= 1.25 * s_star, "stopped " << gap << " m from the corner");
+}
+
 // Oracle: determinism (same inputs, same bits): a shot the pass acts on, fired twice.
 BOOST_AUTO_TEST_CASE(continuous_deterministic, *utf::label("determinism")) {
     const Shot s{false, 0.05, 0.8, 0.3, 1500.0, 0.2, 1.3, 0.1};
