@@ -4,6 +4,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
+#include <vector>
 
 #include "system/system_support.hpp"
 
@@ -122,6 +123,46 @@ BOOST_AUTO_TEST_CASE(undamped_bodies_beside_damped_ones_keep_their_velocity,
         BOOST_TEST(world.velocity(angular_only).x == v0.x);
         BOOST_TEST(world.angular_velocity(angular_only) == 1.5 * f1,
                    boost::test_tools::tolerance(1e-12));
+    }
+}
+
+// Oracle: as above, on two workers in a world large enough for the bodies to be prepared in
+// blocks (1600 bodies, blocks of 512 from 1024): every fortieth body damped (c = 0.7 s^-1 on
+// both motions) follows the decay law, the others keep their velocities exactly.
+BOOST_AUTO_TEST_CASE(damping_holds_for_bodies_prepared_in_blocks_on_workers,
+                     *utf::label("IM5") * utf::label("DD17") * utf::label("DD18") *
+                         utf::label("LC2")) {
+    World world(WorldDef{.gravity = {0.0, 0.0}, .workers = 2});
+    const Vec2d v0{3.0, -2.0};
+    const double w0 = 1.5, c = 0.7;
+    std::vector<BodyId> ids;
+    for (int k = 0; k < 1600; ++k) {
+        BodyDef def;
+        def.position = {2.0 * (k % 40), 2.0 * (k / 40)};
+        def.linear_velocity = v0;
+        def.angular_velocity = w0;
+        def.linear_damping = def.angular_damping = k % 40 == 7 ? c : 0.0;
+        ids.push_back(world.create_body(def));
+        world.create_shape(ids.back(), box_shape(0.5, 0.25, Material{2.0, 0.0, 0.0}));
+    }
+    const int substeps = world.settings().substeps;
+    const double f = 1.0 / (1.0 + dt / substeps * c);
+    for (int step = 1; step <= 30; ++step)
+        world.step(dt);
+    const double decay = std::pow(f, 30 * substeps);
+    for (int k = 0; k < 1600; ++k) {
+        const BodyId id = ids[std::size_t(k)];
+        BOOST_TEST_CONTEXT("body " << k) {
+            if (k % 40 == 7) {
+                BOOST_TEST(world.velocity(id).x == v0.x * decay,
+                           boost::test_tools::tolerance(1e-12));
+                BOOST_TEST(world.angular_velocity(id) == w0 * decay,
+                           boost::test_tools::tolerance(1e-12));
+            } else {
+                BOOST_TEST(world.velocity(id).x == v0.x);
+                BOOST_TEST(world.angular_velocity(id) == w0);
+            }
+        }
     }
 }
 
