@@ -382,39 +382,50 @@ BOOST_AUTO_TEST_CASE(a_wrong_section_tag_is_refused_naming_the_tag, *utf::label(
 }
 
 // A contact naming its second shape by the shape count, one past the last shape, is refused at
-// its record, naming shape_a's rule, before any shape is read by that index. Oracle: the
-// contact's documented rule (contact_manager.cpp's reader: two live shapes, shape_a < shape_b,
-// of the bodies named) and the world's two shapes, indices 0 and 1; the record's first two
-// fields, shape_a then shape_b, follow the section's tag and its count (the format's).
+// its record, naming the record by its index and shape_a's rule, before any shape is read by
+// that index. Oracle: the contact's documented rule (contact_manager.cpp's reader: two live
+// shapes, shape_a < shape_b, of the bodies named) and the world's three shapes: the ground
+// (0) and two boxes resting on it apart (1, 2), so two contacts, (0, 1) then (0, 2). A record
+// starts with shape_a then shape_b (the format's); the first follows the section's tag and
+// count, the second is found by its two shapes after it.
 BOOST_AUTO_TEST_CASE(a_contact_naming_the_shape_past_the_last_is_refused,
                      *utf::label("reliability")) {
     World w;
     const BodyId ground = w.create_body({.type = BodyType::static_body});
     w.create_shape(ground, box_shape(10.0, 1.0));
-    const BodyId box = w.create_body({.position = {0.0, 0.99}});
-    w.create_shape(box, box_shape(1.0, 1.0));
+    for (const double x : {-2.0, 2.0})
+        w.create_shape(w.create_body({.position = {x, 0.99}}), box_shape(1.0, 1.0));
     w.step(1.0 / 60.0);
     const std::vector<std::byte> good = w.snapshot();
-    const std::size_t at = section_bytes(good, "CONT").first + 4 + 8; // the first contact
     const auto u32_at = [&](std::size_t k) {
         std::uint32_t v = 0;
         for (int b = 0; b < 4; ++b)
             v |= std::uint32_t(good[k + std::size_t(b)]) << (8 * b);
         return v;
     };
-    BOOST_TEST_REQUIRE(u32_at(at) == 0u, "shape_a of the one contact");
-    BOOST_TEST_REQUIRE(u32_at(at + 4) == 1u, "shape_b of the one contact");
-    std::vector<std::byte> forged = good;
-    put_u32(forged, at + 4, 2); // the shape count
-    fix_checksum(forged);
-    World target;
-    BOOST_TEST(refused_unchanged(target, forged, "contacts[0]"));
-    try {
-        World::from_snapshot(forged);
-        BOOST_TEST(false, "accepted");
-    } catch (const SnapshotError& e) {
-        BOOST_TEST(e.offset == at, e.what());
-        BOOST_TEST(e.field.ends_with("shape_a"), e.what());
+    const auto [begin, end] = section_bytes(good, "CONT");
+    std::size_t records[2] = {begin + 4 + 8, 0};
+    for (std::size_t k = records[0] + 8; k + 8 <= end && records[1] == 0; ++k)
+        if (u32_at(k) == 0u && u32_at(k + 4) == 2u)
+            records[1] = k;
+    for (std::uint32_t i = 0; i < 2; ++i) {
+        const std::size_t at = records[i];
+        BOOST_TEST_REQUIRE(at != 0u, "contact " << i << " found");
+        BOOST_TEST_REQUIRE(u32_at(at) == 0u, "shape_a of contact " << i);
+        BOOST_TEST_REQUIRE(u32_at(at + 4) == i + 1, "shape_b of contact " << i);
+        std::vector<std::byte> forged = good;
+        put_u32(forged, at + 4, 3); // the shape count
+        fix_checksum(forged);
+        const std::string record = "contacts[" + std::to_string(i) + "]";
+        World target;
+        BOOST_TEST(refused_unchanged(target, forged, record));
+        try {
+            World::from_snapshot(forged);
+            BOOST_TEST(false, "accepted");
+        } catch (const SnapshotError& e) {
+            BOOST_TEST(e.offset == at, e.what());
+            BOOST_TEST(e.field == record + ".shape_a", e.what());
+        }
     }
     BOOST_TEST((World::from_snapshot(good).snapshot() == good)); // the intact one is read
 }
