@@ -73,6 +73,31 @@ BOOST_AUTO_TEST_CASE(a_free_chain_in_regions_keeps_its_momentum,
     }
 }
 
+// Oracle: GD1, as above, after the chain loses its last 100 links (their joints go with them):
+// its 198 joints are then fewer than the split takes (JointStreams::min_joints), so the step
+// solves them unsplit, and the chain that is left keeps its momentum from then on.
+BOOST_AUTO_TEST_CASE(a_chain_cut_below_the_split_keeps_its_momentum,
+                     *utf::label("DD19") * utf::label("GD1")) {
+    World world(WorldDef{.gravity = {0.0, 0.0}, .contact_regions = 2});
+    std::vector<BodyId> ids = free_chain(world);
+    for (int k = 0; k < links; ++k)
+        world.set_velocity(ids[k], {0.3 * std::sin(0.7 * k), 0.5 * std::cos(1.3 * k)});
+    for (int i = 0; i < 10; ++i)
+        world.step(1.0 / 60.0);
+    for (int k = 0; k < 100; ++k) {
+        world.destroy_body(ids.back());
+        ids.pop_back();
+    }
+    BOOST_TEST_REQUIRE(world.joint_count() < JointStreams::min_joints);
+    double scale = 0.0;
+    for (const BodyId b : ids)
+        scale += world.mass(b) * length(world.velocity(b));
+    const Vec2d p0 = momentum(world, ids);
+    for (int i = 0; i < 60; ++i)
+        world.step(1.0 / 60.0);
+    BOOST_TEST(length(momentum(world, ids) - p0) <= 1e-12 * scale);
+}
+
 // Oracle: Newton's first law (TM1) for the chain as one body: every link starts with one
 // velocity, the joints then hold nothing apart and push nothing, and after 2 s every link is
 // where it started plus v t, to rounding (1e-9 m over the 150 m span).
