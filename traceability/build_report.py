@@ -175,7 +175,7 @@ def build(args, log=print):
     # The dated benchmark records of the checkout (verification/bench/results/), beside its own.
     records = bench_records.render(bench_records.collect(source, warnings), out, warnings)
     # The whole mutation analysis of a named commit, beside the checkout's own sample.
-    mutation_ref = mutation_reference.collect(source, warnings)
+    mutation_ref = mutation_reference.collect(source, warnings, tests)
     reach_ref = module_reach_reference.collect(source, warnings)
 
     res = analysis.analyse(srs, code_sites, tests, config, warnings)

@@ -10,14 +10,18 @@ checkout's own sample with the commit, the share of the mutants judged, and the 
 
 Its score is counted again here with the checkout's record of judged survivors
 (verification/mutation/survivors.json), so a survivor judged after the run counts as judged.
+A gap that a later test kills keeps its record (it judges the reference's tree, which lacks the
+test) and names that test (closed_by); the report looks each one up among its own run's tests,
+and counts the gap closed only where every test it names passed in that run.
 """
 from __future__ import annotations
 
 import collections
 import os
+import re
 import sys
 
-from traceability import reference_runs
+from traceability import evidence, reference_runs
 
 REFERENCE = os.path.join("verification", "mutation", "reference", "mutation.json")
 TARGETS = ("src/tamias2d/model", "src/tamias2d/dynamics")
@@ -29,8 +33,10 @@ def _mutate(source):
     return mutate
 
 
-def collect(source, warnings):
-    """The reference's figures, or None when the checkout keeps none."""
+def collect(source, warnings, tests=None):
+    """The reference's figures, or None when the checkout keeps none. tests: the report's
+    tests of this run ({id, status}), for the gaps that name the tests closing them; None
+    when the report ran none (each such gap is then counted open, its tests "not run")."""
     doc = reference_runs.read(source, REFERENCE, ["mutants"], warnings)
     if doc is None:
         return None
@@ -46,15 +52,26 @@ def collect(source, warnings):
         judgements = {}
     score, killed, equivalent, counted = mutate.score_of(rows, judgements)
     low, high = mutate.wilson(killed, counted)
+    status_of = {t["id"]: t["status"] for t in tests or ()}
+    ran = {t.get("binary") for t in tests or ()}
     survivors = []
     for r in rows:
         if r.get("verdict") != "survived":
             continue
         j = judgements.get(mutate.survivor_key(r)) or {}
+        closing = [{"test": t, "status": status_of.get(t, "not run")}
+                   for t in j.get("closed_by", ())]
+        for c in closing:
+            if c["status"] == "not run" and c["test"].split(":", 1)[0] in ran:
+                warnings.append(f"survivors.json names {c['test']} as closing the gap at "
+                                f"{r['file']}:{r['line']}, and its executable ran without such "
+                                "a test")
         survivors.append({"file": r["file"], "line": r["line"], "op": r["op"],
                           "before": r["before"].strip(), "occurrence": r["occurrence"],
                           "judgement": j.get("verdict", "not judged"),
-                          "reason": j.get("reason", "")})
+                          "reason": j.get("reason", ""), "closed_by": closing,
+                          "closed": bool(closing) and all(c["status"] == "passed"
+                                                          for c in closing)})
     judged = len(rows)
     population = doc.get("population") or judged
     complete = bool(doc.get("complete"))
@@ -85,11 +102,64 @@ def collect(source, warnings):
         "floor_applies_to": floor_on,
         "floor_met": floor_met,
         "gaps": sum(s["judgement"] == "gap" for s in survivors),
+        "gaps_closed": sum(s["judgement"] == "gap" and s["closed"] for s in survivors),
         "not_judged": sum(s["judgement"] == "not judged" for s in survivors),
         "survivors": survivors,
         "seconds_per_mutant": doc.get("seconds_per_mutant"),
         "changed_since": changed,
     }
+
+
+SUITE = re.compile(r"^\s*BOOST_AUTO_TEST_SUITE\s*\(\s*([A-Za-z_]\w*)")
+SUITE_END = re.compile(r"^\s*BOOST_AUTO_TEST_SUITE_END\s*\(")
+EXECUTABLE = re.compile(r"^\s*tamias_add_boost_test\s*\(\s*([A-Za-z_][\w-]*)")
+
+
+def declared_tests(source):
+    """The report's ids (executable:suite/case) of the test cases declared in the checkout's
+    sources: each tests/ directory's tamias_add_boost_test executable takes the cases of the
+    files under it, each case its suites' path as written."""
+    out = set()
+    base = os.path.join(source, "tests")
+    for root, _dirs, files in os.walk(base):
+        if "CMakeLists.txt" not in files:
+            continue
+        with open(os.path.join(root, "CMakeLists.txt"), encoding="utf-8") as fh:
+            exes = [m.group(1) for m in map(EXECUTABLE.match, fh) if m]
+        for sub, _d, names in os.walk(root):
+            for name in names:
+                if not name.endswith(".cpp"):
+                    continue
+                with open(os.path.join(sub, name), encoding="utf-8", errors="replace") as fh:
+                    stack = []
+                    for line in fh:
+                        if m := SUITE.match(line):
+                            stack.append(m.group(1))
+                        elif SUITE_END.match(line) and stack:
+                            stack.pop()
+                        elif m := evidence.TEST_MACRO.match(line):
+                            out.update(f"{exe}:{'/'.join(stack + [m.group(2)])}" for exe in exes)
+    return out
+
+
+def undeclared_closing_tests(source):
+    """The closed_by tests of the checkout's survivors record that its sources do not
+    declare: a record naming a renamed or removed test."""
+    mutate = _mutate(source)
+    judgements = mutate.load_judgements(os.path.join(source, "verification", "mutation",
+                                                     "survivors.json"))
+    declared = declared_tests(source)
+    return sorted({t for j in judgements.values() for t in j.get("closed_by", ())
+                   if t not in declared})
+
+
+def judgement_text(s):
+    """A survivor's judgement as both renderings show it: with the tests that close a gap at
+    the checkout and their status in this run."""
+    if not s.get("closed_by"):
+        return s["judgement"]
+    tests = "; ".join(f"{c['test']} ({c['status']})" for c in s["closed_by"])
+    return f"{s['judgement']}, {'closed' if s['closed'] else 'not closed'} at the checkout by {tests}"
 
 
 def summary(ref):
@@ -104,7 +174,8 @@ def summary(ref):
             f"{ref['generated']}: {what}; {ref['killed']} of {ref['counted']} counted mutants "
             f"killed ({pct(ref['score'])}, {round(100 * ref['confidence'])} % Wilson interval "
             f"{pct(ref['interval'][0])}-{pct(ref['interval'][1])}); survivors: "
-            f"{ref['equivalent']} judged equivalent, {ref['gaps']} judged gaps, "
-            f"{ref['not_judged']} not yet judged. The {pct(ref['floor'])} floor, on the "
+            f"{ref['equivalent']} judged equivalent, {ref['gaps']} judged gaps "
+            f"({ref['gaps_closed']} closed at the checkout by tests that passed in this run, "
+            f"{ref['gaps'] - ref['gaps_closed']} open), {ref['not_judged']} not yet judged. The {pct(ref['floor'])} floor, on the "
             f"{ref['floor_applies_to']}: {'met' if ref['floor_met'] else 'not met'}. "
             f"True of its commit: {since}.")

@@ -790,7 +790,7 @@ say how the figure is measured:<ul>{"".join(rows)}</ul></div>""")
             for s in ref["survivors"]:
                 self.w(f'<tr><td>{E(s["file"])}:{s["line"]}</td><td>{E(s["op"])}'
                        f'{" (" + str(s["occurrence"]) + ")" if s["occurrence"] > 1 else ""}</td>'
-                       f'<td><code>{E(s["before"])}</code></td><td>{E(s["judgement"])}</td>'
+                       f'<td><code>{E(s["before"])}</code></td><td>{E(mutation_reference.judgement_text(s))}</td>'
                        f'<td class="small">{E(s["reason"])}</td></tr>')
             self.w('</tbody></table></div>')
 

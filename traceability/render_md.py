@@ -193,8 +193,9 @@ def render(r):
         w(f"{mutation_reference.summary(ref)} ({ref['file']})\n")
         if ref["survivors"]:
             w(_table(["File:line", "Operator", "Line", "Judgement", "Reason"],
-                     [[f"{s_['file']}:{s_['line']}", s_["op"], s_["before"], s_["judgement"],
-                       s_["reason"]] for s_ in ref["survivors"]]))
+                     [[f"{s_['file']}:{s_['line']}", s_["op"], s_["before"],
+                       mutation_reference.judgement_text(s_), s_["reason"]]
+                      for s_ in ref["survivors"]]))
     else:
         w(f"No reference analysis is kept ({mutation_reference.REFERENCE}).\n")
     ref = r.get("module_reach_reference")

@@ -114,6 +114,57 @@ class Reference(unittest.TestCase):
         self.assertEqual(ref["changed_since"], ["src/tamias2d/model/a.hpp"])
         self.assertIn("1 of the mutated files changed", mutation_reference.summary(ref))
 
+    def test_a_gap_is_closed_only_by_named_tests_that_passed_in_this_run(self):
+        rows = [row(0, "killed"), row(1, "survived", before="q = r + s;"),
+                row(2, "survived", before="t = u + v;")]
+        closed = {"file": "src/tamias2d/model/a.hpp", "line": "q = r + s;", "op": "arith + to -",
+                  "occurrence": 1, "verdict": "gap", "reason": "made up",
+                  "closed_by": ["x_tests:suite/case"]}
+        still_open = {"file": "src/tamias2d/model/a.hpp", "line": "t = u + v;",
+                      "op": "arith + to -", "occurrence": 1, "verdict": "gap", "reason": "made up"}
+        self.write(rows, complete=False, survivors=[closed, still_open])
+        for status, count in (("passed", 1), ("failed", 0)):
+            warnings = []
+            tests = [{"id": "x_tests:suite/case", "status": status, "binary": "x_tests"}]
+            ref = mutation_reference.collect(self.root, warnings, tests)
+            self.assertEqual((ref["gaps"], ref["gaps_closed"]), (2, count), status)
+            self.assertIn(f"({count} closed at the checkout by tests that passed in this run, "
+                          f"{2 - count} open)", mutation_reference.summary(ref))
+            self.assertEqual(mutation_reference.judgement_text(ref["survivors"][0]),
+                             f"gap, {'closed' if count else 'not closed'} at the checkout by "
+                             f"x_tests:suite/case ({status})")
+            self.assertEqual(mutation_reference.judgement_text(ref["survivors"][1]), "gap")
+            self.assertEqual(warnings, [])
+        # Without a run of its executable the test is "not run", and the gap open.
+        ref = mutation_reference.collect(self.root, [], [])
+        self.assertEqual(ref["gaps_closed"], 0)
+        self.assertEqual(ref["survivors"][0]["closed_by"],
+                         [{"test": "x_tests:suite/case", "status": "not run"}])
+        # Its executable ran without it: the record names a test that is gone, a warning.
+        warnings = []
+        mutation_reference.collect(self.root, warnings,
+                                   [{"id": "x_tests:suite/other", "status": "passed",
+                                     "binary": "x_tests"}])
+        self.assertEqual(len(warnings), 1)
+        self.assertIn("x_tests:suite/case", warnings[0])
+
+    def test_declared_tests_are_named_by_executable_and_suite_path(self):
+        d = os.path.join(self.root, "tests", "x", "sub")
+        os.makedirs(d)
+        with open(os.path.join(self.root, "tests", "x", "CMakeLists.txt"), "w") as fh:
+            fh.write("tamias_add_boost_test(x_tests SOURCES a.cpp)\n")
+        with open(os.path.join(d, "test_a.cpp"), "w") as fh:
+            fh.write("BOOST_AUTO_TEST_SUITE(outer)\nBOOST_AUTO_TEST_CASE(one) {}\n"
+                     "BOOST_AUTO_TEST_SUITE(inner)\nBOOST_AUTO_TEST_CASE(two, *utf::label(\"A\")) {}\n"
+                     "BOOST_AUTO_TEST_SUITE_END()\nBOOST_AUTO_TEST_CASE(three) {}\n"
+                     "BOOST_AUTO_TEST_SUITE_END()\n")
+        self.assertEqual(mutation_reference.declared_tests(self.root),
+                         {"x_tests:outer/one", "x_tests:outer/inner/two", "x_tests:outer/three"})
+
+    def test_the_checkouts_closing_tests_are_declared(self):
+        # The repository's own record: every test it names as closing a gap exists.
+        self.assertEqual(mutation_reference.undeclared_closing_tests(ROOT), [])
+
     def test_an_unreadable_reference_is_a_warning(self):
         with open(os.path.join(self.root, mutation_reference.REFERENCE), "w") as fh:
             fh.write("{not json")

@@ -891,14 +891,19 @@ def survivor_key(m):
     return (*line_key(m), m["occurrence"])
 
 
-RECORD_FIELDS = ("file", "line", "op", "occurrence", "verdict", "reason")
+RECORD_FIELDS = ("file", "line", "op", "occurrence", "verdict", "reason", "closed_by")
+# A test the report knows by its id: the Boost.Test executable, then the case's path.
+CLOSING_TEST = re.compile(r"[A-Za-z_][\w-]*:[A-Za-z_]\w*(?:/[A-Za-z_]\w*)+")
 
 
 def load_judgements(path=SURVIVORS):
     """{key: judgement} from survivors.json: a list of {file, line, op, occurrence, verdict,
     reason}, the verdict "equivalent" (reason: why no input the code receives tells the mutant
-    apart) or "gap" (reason: what the tests lack). A malformed entry is an error, not ignored;
-    so is one that repeats a key or has a field of its own (a misspelt one would go unread)."""
+    apart) or "gap" (reason: what the tests lack). A gap that a later test closes keeps its
+    record (it judges the mutant in trees without that test) and names the test in closed_by,
+    a list of the report's test ids (executable:suite/case), so that the report can show
+    whether it passed in its run. A malformed entry is an error, not ignored; so is one that
+    repeats a key or has a field of its own (a misspelt one would go unread)."""
     if not os.path.exists(path):
         return {}
     with open(path, encoding="utf-8") as fh:
@@ -921,6 +926,15 @@ def load_judgements(path=SURVIVORS):
         if j["verdict"] not in ("equivalent", "gap"):
             raise SystemExit(f"{path}: survivors[{i}].verdict must be \"equivalent\" or "
                              f"\"gap\", not {j['verdict']!r}")
+        if "closed_by" in j:
+            closing = j["closed_by"]
+            if j["verdict"] != "gap":
+                raise SystemExit(f"{path}: survivors[{i}].closed_by belongs to a gap only (an "
+                                 f"equivalent mutant has no test to close it)")
+            if (not isinstance(closing, list) or not closing or
+                    not all(isinstance(t, str) and CLOSING_TEST.fullmatch(t) for t in closing)):
+                raise SystemExit(f"{path}: survivors[{i}].closed_by must be a non-empty list of "
+                                 f"test ids, executable:suite/case, not {closing!r}")
         key = (j["file"], j["line"].strip(), j["op"], occ)
         if key in out:
             raise SystemExit(f"{path}: survivors[{i}] repeats {key}")
@@ -1050,10 +1064,12 @@ def make_doc(results, judgements, *, population, chosen, selection, complete, pr
     unjudged = [r for r in survived if r["judged"] == "not yet judged"]
     by_sanitizer = sum(r.get("killed_by") == "sanitizer" for r in results)
     # A judgement of a mutant that the tests or the sanitizer build now kill: the record to
-    # update (it does not count; the kill does).
+    # update (it does not count; the kill does). A gap that names the tests closing it is
+    # expected to be killed where they exist: its record stays for the trees without them.
     judged_killed = [f"#{r['id']} {r['file']}:{r['line']} {r['op']} (occurrence "
                      f"{r['occurrence']})" for r in results
-                     if r["verdict"] == "killed" and survivor_key(r) in judgements]
+                     if r["verdict"] == "killed" and survivor_key(r) in judgements and
+                     not judgements[survivor_key(r)].get("closed_by")]
     judged_runs = [r for r in results
                    if r["verdict"] in ("killed", "survived", "stillborn", "not built")]
     mean = (sum(r["seconds"] for r in judged_runs) / len(judged_runs)) if judged_runs else 0.0

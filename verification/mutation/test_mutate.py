@@ -201,6 +201,19 @@ class Scoring(unittest.TestCase):
             self.judgements([good, good])
         self.assertEqual(len(self.judgements([good, dict(good, occurrence=2)])), 2)
 
+    def test_a_gap_names_the_tests_that_close_it_by_their_report_ids(self):
+        good = {"file": "f", "line": "x", "op": "o", "occurrence": 1, "verdict": "gap",
+                "reason": "r", "closed_by": ["engine_tests:suite/case", "x-tests:a/b/c"]}
+        self.assertEqual(self.judgements([good])[("f", "x", "o", 1)]["closed_by"],
+                         good["closed_by"])
+        for bad in (dict(good, verdict="equivalent"),  # nothing to close
+                    dict(good, closed_by=[]), dict(good, closed_by="engine_tests:suite/case"),
+                    dict(good, closed_by=["suite/case"]),  # no executable
+                    dict(good, closed_by=["engine_tests:case"]),  # no suite
+                    dict(good, closed_by=["engine_tests:suite/case "])):
+            with self.subTest(bad=bad), self.assertRaises(SystemExit):
+                self.judgements([bad])
+
     def test_the_repository_record_is_well_formed(self):
         # Every judged survivor names a mutant of this tree: its line text in its file with a
         # mutant of that operator, and at least as many of them as its occurrence. A record
