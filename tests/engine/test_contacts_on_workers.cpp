@@ -1,0 +1,53 @@
+// A contact world large enough for every pass of the step to run in blocks on workers (bodies
+// prepared in blocks from 1024, manifolds prepared and stored in blocks, the streams of the
+// contact regions), small enough to run for every mutant of the dynamics: the thorough
+// thread-count cases (every worker count, scrambling task systems, sleeping, joints of every
+// kind) are tests/reliability's, which the mutation tool does not pick for these files.
+#include <boost/test/unit_test.hpp>
+
+#include <cstdint>
+#include <vector>
+
+#include "support/pyramid.hpp"
+#include "tamias2d/world.hpp"
+
+namespace utf = boost::unit_test;
+using namespace tamias2d;
+
+namespace {
+
+/// The state hash after each of 12 steps of a pyramid of 48 rows (1176 boxes) with a damped
+/// box thrown into its side, on `workers` threads with `regions` contact regions.
+std::vector<std::uint64_t> hashes(int workers, int regions) {
+    World world(WorldDef{.gravity = {0.0, -10.0}, .contact_regions = regions, .workers = workers});
+    test::build_pyramid(world, 48);
+    BodyDef thrown;
+    thrown.position = {-30.0, 3.0};
+    thrown.linear_velocity = {40.0, 0.0};
+    thrown.linear_damping = 0.5;
+    world.create_shape(world.create_body(thrown), box_shape(1.0, 1.0));
+    std::vector<std::uint64_t> out;
+    for (int k = 0; k < 12; ++k) {
+        world.step(1.0 / 60.0);
+        out.push_back(world.state_hash());
+    }
+    return out;
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(contacts_on_workers)
+
+// Oracle: the determinism rule, the same bits on any number of workers, step by step.
+BOOST_AUTO_TEST_CASE(a_large_pile_gives_one_threads_bits, *utf::label("determinism")) {
+    for (const int regions : {1, 2}) {
+        const std::vector<std::uint64_t> one = hashes(1, regions);
+        for (const int workers : {2, 3}) {
+            BOOST_TEST_CONTEXT("contact_regions = " << regions << ", " << workers << " workers") {
+                BOOST_TEST(hashes(workers, regions) == one, boost::test_tools::per_element());
+            }
+        }
+    }
+}
+
+BOOST_AUTO_TEST_SUITE_END()
