@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <numbers>
+#include <optional>
 #include <random>
 #include <utility>
 #include <vector>
@@ -37,6 +38,14 @@ Shot random_shot(std::mt19937_64& rng, bool circle) {
     s.lead = 0.2 + 2.3 * u(rng);      // steps of travel between the body and the wall
     s.y = 2.0 * u(rng) - 1.0;
     return s;
+}
+
+/// A world without gravity holding `obstacle`, if any, on a static body at the origin.
+World weightless_world(const std::optional<ShapeDef>& obstacle) {
+    World world(WorldDef{.gravity = {0.0, 0.0}});
+    if (obstacle)
+        world.create_shape(world.create_body({.type = BodyType::static_body}), *obstacle);
+    return world;
 }
 
 struct Outcome {
@@ -275,14 +284,7 @@ BOOST_AUTO_TEST_CASE(a_turning_body_is_swept_from_its_centre_of_mass, *utf::labe
 BOOST_AUTO_TEST_CASE(a_stopped_body_keeps_the_velocities_of_its_time_of_impact,
                      *utf::label("DD29")) {
     const auto shot = [](bool wall) {
-        WorldDef def;
-        def.gravity = {0.0, 0.0};
-        World world(def);
-        if (wall) {
-            BodyDef w;
-            w.type = BodyType::static_body;
-            world.create_shape(world.create_body(w), box_shape(0.01, 10.0));
-        }
+        World world = weightless_world(wall ? box_shape(0.01, 10.0) : std::optional<ShapeDef>{});
         BodyDef disc;
         disc.position = {-0.005 - 0.1 - 1.0, 0.0};
         disc.linear_velocity = {100.0, 0.0};
@@ -362,14 +364,7 @@ BOOST_AUTO_TEST_CASE(a_core_passing_beside_a_shape_is_stopped_only_within_the_ba
                      *utf::label("DD29")) {
     constexpr double radius = 1.0, core = radius / 4.0, s_star = 0.005;
     const auto end = [&](double m, bool box) {
-        WorldDef def;
-        def.gravity = {0.0, 0.0};
-        World world(def);
-        if (box) {
-            BodyDef b;
-            b.type = BodyType::static_body;
-            world.create_shape(world.create_body(b), box_shape(1.0, 1.0));
-        }
+        World world = weightless_world(box ? box_shape(1.0, 1.0) : std::optional<ShapeDef>{});
         BodyDef disc;
         disc.position = {-0.5 - radius - 2.0, 0.5 + core + m * s_star};
         disc.linear_velocity = {360.0, 0.0};
