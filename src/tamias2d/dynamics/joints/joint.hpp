@@ -95,9 +95,10 @@ static_assert(std::is_standard_layout_v<Joint> && std::is_trivially_copyable_v<J
 static_assert(offsetof(Joint, step) == 64 && offsetof(Joint, reference_angle) < 192,
               "the break thresholds in the first line, the impulses in the next two");
 
-/// The angular impulse (N m s) the joint's angular parts (motor, limits, spring, held angle)
-/// applied to body B in the last substep (`st`: the joint's step state or its copy in a step):
-/// over the substep's length, its reaction torque.
+/// \srs{DD22} The angular impulse (N m s) the joint's angular parts (motor, limits, spring,
+/// held angle) applied to body B in the last substep (`st`: the joint's step state or its copy
+/// in a step): over the substep's length, its reaction torque (World::joint_reaction_torque).
+/// A distance, target or filter joint has no angular part.
 inline double reaction_angular_impulse(JointType type, const JointStepState& st) {
     switch (type) {
     case JointType::revolute:
