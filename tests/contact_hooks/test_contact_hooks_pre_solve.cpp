@@ -145,9 +145,10 @@ BOOST_AUTO_TEST_CASE(a_fast_disc_falling_onto_the_platform_is_still_stopped) {
     BOOST_TEST(std::abs(drop(false) - radius) <= 2.0 * overlap); // through it, on the floor
 }
 
-// Oracle: the callback's stated input: touching pairs only, unit normal from shape_a into
-// shape_b, 1 or 2 points; for the box resting on the floor, the normal is (0, +-1) and its two
-// points lie on the floor's top face (y = 0, within the soft contact's overlap).
+// Oracle: the callback's stated input: touching pairs only, each body the one carrying its
+// shape (World::body), unit normal from shape_a into shape_b, 1 or 2 points; for the box
+// resting on the floor, the normal is (0, +-1) and its two points lie on the floor's top face
+// (y = 0, within the soft contact's overlap).
 BOOST_AUTO_TEST_CASE(the_callback_sees_the_manifold) {
     Level level;
     std::vector<PreSolveContact> seen;
@@ -162,6 +163,8 @@ BOOST_AUTO_TEST_CASE(the_callback_sees_the_manifold) {
     BOOST_TEST(c.point_count == 2);
     BOOST_TEST(std::abs(std::abs(c.normal.y) - 1.0) < 1e-12);
     BOOST_TEST((c.body_a == level.box || c.body_b == level.box));
+    BOOST_TEST((c.body_a == level.world.body(c.shape_a)));
+    BOOST_TEST((c.body_b == level.world.body(c.shape_b)));
     for (int j = 0; j < c.point_count; ++j)
         BOOST_TEST(std::abs(c.points[j].point.y) < 1e-3);
     // A callback that always answers true changes no bit.
