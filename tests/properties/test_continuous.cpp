@@ -355,33 +355,47 @@ BOOST_AUTO_TEST_CASE(the_pass_acts_where_a_core_comes_within_the_target_separati
 // of a static box 1 m wide to 2 m right of it, its core passing over the box's top face at a
 // height of m s* (s* = 5 mm, a quarter of the speculative distance); the whole disc sweeps
 // through the box's upper part. Conservative advancement brings the core down to that height
-// as it reaches the box's corner, and no nearer.
-//   m = 1.4: never within 1.25 s*: the pass does not act, and the disc ends its step at the
+// as it reaches the box's corner, and no nearer. Then the same with a box 2 m wide whose centre
+// lies 0.6 m from its body's origin: its core is the disc of a quarter of its least
+// centre-to-edge distance (1 m) about its centroid, the disc's core again.
+//   m = 1.4: never within 1.25 s*: the pass does not act, and the body ends its step at the
 //   twin world's unobstructed end (without the box), to the bit.
-//   m = 1.1: within the band: the disc is stopped at its whole shape's time of impact, its
-//   edge within [s*, 1.25 s*] of the box's corner.
+//   m = 1.1: within the band: the body is stopped at its whole shape's time of impact: the
+//   disc's edge within [s*, 1.25 s*] of the box's corner, the box's leading face short of the
+//   static box's.
 BOOST_AUTO_TEST_CASE(a_core_passing_beside_a_shape_is_stopped_only_within_the_band,
                      *utf::label("DD29")) {
-    constexpr double radius = 1.0, core = radius / 4.0, s_star = 0.005;
-    const auto end = [&](double m, bool box) {
+    constexpr double radius = 1.0, core = radius / 4.0, s_star = 0.005, offset = 0.6;
+    const auto end = [&](double m, bool box, bool offset_box) {
         World world = weightless_world(box ? box_shape(1.0, 1.0) : std::optional<ShapeDef>{});
-        BodyDef disc;
-        disc.position = {-0.5 - radius - 2.0, 0.5 + core + m * s_star};
-        disc.linear_velocity = {360.0, 0.0};
-        const BodyId body = world.create_body(disc);
-        world.create_shape(body, circle_shape(radius));
+        BodyDef def; // the centroid starts 2 m left of the static box, m s* above its core's reach
+        def.position = {-0.5 - radius - 2.0 - (offset_box ? offset : 0.0), 0.5 + core + m * s_star};
+        def.linear_velocity = {360.0, 0.0};
+        const BodyId body = world.create_body(def);
+        world.create_shape(body, offset_box
+                                     ? box_shape(2.0 * radius, 2.0 * radius, {}, {offset, 0.0})
+                                     : circle_shape(radius));
         world.step(dt);
         return world.state(body);
     };
-    const BodyState beside = end(1.4, true), free = end(1.4, false);
-    BOOST_TEST_REQUIRE(free.position.x > 0.5 + radius); // unobstructed, it ends past the box
-    BOOST_TEST(std::memcmp(&beside, &free, sizeof beside) == 0);
-    // Within the band the whole disc stops as it comes within s* of the box's corner (-0.5,
-    // 0.5), no nearer and no farther than the iteration's own band.
-    const BodyState stopped = end(1.1, true);
-    const double gap = std::hypot(stopped.position.x + 0.5, stopped.position.y - 0.5) - radius;
-    BOOST_TEST(gap >= s_star, "stopped " << gap << " m from the corner");
-    BOOST_TEST(gap <= 1.25 * s_star, "stopped " << gap << " m from the corner");
+    for (const bool offset_box : {false, true}) {
+        BOOST_TEST_CONTEXT((offset_box ? "the offset box" : "the disc")) {
+            const BodyState beside = end(1.4, true, offset_box), free = end(1.4, false, offset_box);
+            BOOST_TEST_REQUIRE(free.position.x > 0.5 + radius); // unobstructed, past the box
+            BOOST_TEST(std::memcmp(&beside, &free, sizeof beside) == 0);
+            const BodyState stopped = end(1.1, true, offset_box);
+            if (offset_box) {
+                BOOST_TEST(stopped.position.x + radius <= -0.5, "stopped short of the box");
+                continue;
+            }
+            // The whole disc stops as it comes within s* of the box's corner (-0.5, 0.5), no
+            // nearer and no farther than the iteration's own band.
+            const double gap =
+                std::hypot(stopped.position.x + 0.5, stopped.position.y - 0.5) - radius;
+            BOOST_TEST(gap >= s_star, "stopped " << gap << " m from the corner");
+            BOOST_TEST(gap <= 1.25 * s_star, "stopped " << gap << " m from the corner");
+        }
+    }
 }
 
 // Oracle: determinism (same inputs, same bits): a shot the pass acts on, fired twice.
