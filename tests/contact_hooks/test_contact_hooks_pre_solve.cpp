@@ -1,13 +1,15 @@
 // The pre-solve callback (World::set_pre_solve) on a one-way platform: a box rising through it
 // from below passes, in free flight also where the continuous pass sweeps it, a box falling
 // onto it rests on it at the closed-form height, and a fast disc is still stopped on it; what
-// the callback sees, its exception, and equal results on 1 to 4 workers.
+// the callback sees, the events of the pairs it refuses, its exception, and equal results on 1
+// to 4 workers.
 #include <boost/test/unit_test.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <span>
 #include <stdexcept>
 #include <vector>
 
@@ -172,6 +174,48 @@ BOOST_AUTO_TEST_CASE(the_callback_sees_the_manifold) {
     for (int i = 0; i < 30; ++i)
         plain.world.step(dt);
     BOOST_TEST(plain.world.state_hash() == level.world.state_hash());
+}
+
+// Oracle: the callback's stated rule for events: a pair it switches off counts as not touching,
+// "with the end and begin events that follow" (contact_hooks.hpp). The box resting on the floor
+// has begun touching it; refused for one step, it ends (one end event, no begin), and accepted
+// again it begins (one begin event, no end). A box dropped onto the floor and refused from the
+// step it first touches gives neither event while refused.
+BOOST_AUTO_TEST_CASE(a_refused_pair_ends_and_an_accepted_one_begins_again) {
+    const auto count = [](std::span<const ContactEvent> events, BodyId body) {
+        return std::count_if(events.begin(), events.end(), [&](const ContactEvent& e) {
+            return e.body_a == body || e.body_b == body;
+        });
+    };
+    Level level;
+    for (int i = 0; i < 30; ++i)
+        level.world.step(dt);
+    BOOST_TEST_REQUIRE(level.world.contacts().size() == 1u); // resting on the floor
+    bool refuse = true;
+    level.world.set_pre_solve([&](const PreSolveContact&) { return !refuse; });
+    level.world.step(dt);
+    BOOST_TEST(count(level.world.contact_end_events(), level.box) == 1);
+    BOOST_TEST(count(level.world.contact_begin_events(), level.box) == 0);
+    refuse = false;
+    level.world.step(dt);
+    BOOST_TEST(count(level.world.contact_begin_events(), level.box) == 1);
+    BOOST_TEST(count(level.world.contact_end_events(), level.box) == 0);
+
+    Level dropped;
+    dropped.world.set_transform(dropped.box, {0.0, 1.0}, 0.0);
+    int touched = 0, begun = 0, ended = 0;
+    dropped.world.set_pre_solve([&](const PreSolveContact&) {
+        ++touched;
+        return false;
+    });
+    for (int i = 0; i < 40; ++i) {
+        dropped.world.step(dt);
+        begun += int(count(dropped.world.contact_begin_events(), dropped.box));
+        ended += int(count(dropped.world.contact_end_events(), dropped.box));
+    }
+    BOOST_TEST_REQUIRE(touched > 0); // it reached the floor and was refused
+    BOOST_TEST(begun == 0);
+    BOOST_TEST(ended == 0);
 }
 
 // Oracle: the stated rule for an exception of the callback: the step finishes with the
