@@ -430,4 +430,42 @@ BOOST_AUTO_TEST_CASE(a_contact_naming_the_shape_past_the_last_is_refused,
     BOOST_TEST((World::from_snapshot(good).snapshot() == good)); // the intact one is read
 }
 
+// A shape whose definition a forged snapshot breaks (a disc's radius made negative) is refused
+// at its record's first byte, naming the record. Oracle: World::restore's documented refusal
+// (the offset, the field, the rule) and the definitions' own rule (a radius > 0); the record
+// starts with the geometry's type, then the disc's centre (two doubles) and radius (the
+// format's), and the two discs' radii, values no other field holds, find them.
+BOOST_AUTO_TEST_CASE(a_broken_shape_is_refused_at_its_record, *utf::label("reliability")) {
+    World w;
+    for (const double r : {0.3125, 0.4375})
+        w.create_shape(w.create_body({.position = {4.0 * r, 0.0}}), circle_shape(r));
+    const std::vector<std::byte> good = w.snapshot();
+    const auto [begin, end] = section_bytes(good, "SHAP");
+    std::size_t last = 0;
+    for (const auto& [k, r] : {std::pair{0, 0.3125}, {1, 0.4375}}) {
+        const std::vector<std::byte> from = bytes(r), to = bytes(-r);
+        const auto found =
+            std::search(good.begin() + std::ptrdiff_t(begin), good.begin() + std::ptrdiff_t(end),
+                        from.begin(), from.end());
+        BOOST_TEST_REQUIRE((found != good.begin() + std::ptrdiff_t(end)), "radius " << r);
+        const auto radius_at = std::size_t(found - good.begin());
+        const std::size_t record = radius_at - 2 * sizeof(double) - sizeof(ShapeType);
+        std::vector<std::byte> forged = good;
+        std::copy(to.begin(), to.end(), forged.begin() + std::ptrdiff_t(radius_at));
+        fix_checksum(forged);
+        const std::string name = "shapes[" + std::to_string(k) + "]";
+        World target;
+        BOOST_TEST(refused_unchanged(target, forged, name));
+        try {
+            World::from_snapshot(forged);
+            BOOST_TEST(false, name << ": accepted");
+        } catch (const SnapshotError& e) {
+            BOOST_TEST(e.offset == record, e.what());
+            BOOST_TEST(e.field == name, e.what());
+        }
+        BOOST_TEST(record > last); // the second record after the first
+        last = record;
+    }
+}
+
 BOOST_AUTO_TEST_SUITE_END()
