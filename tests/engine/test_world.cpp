@@ -3,7 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <iterator>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -82,6 +84,39 @@ BOOST_AUTO_TEST_CASE(create_and_destroy, *utf::label("R1")) {
         BOOST_TEST(world.is_valid(c.body_b));
     }
     BOOST_TEST(world.body_count() == 24u);
+}
+
+// Oracle: R2's rule that a new body starts from the state its input gives, and nothing else:
+// a body created in the slot of a destroyed one (spinning, damped, pushed by a one-step force
+// and torque, with a shape) steps, with its own shape, to the bits of the same body created in
+// a fresh world: its state, mass and inertia.
+BOOST_AUTO_TEST_CASE(a_body_in_a_reused_slot_starts_afresh, *utf::label("R2")) {
+    const BodyDef def{.position = {0.0, 1.0}, .linear_velocity = {0.5, 0.0}};
+    const auto run = [&](bool reuse) {
+        World world;
+        if (reuse) {
+            const BodyId old = world.create_body({.position = {5.0, 5.0},
+                                                  .angle = 0.7,
+                                                  .linear_velocity = {1.0, 2.0},
+                                                  .angular_velocity = 3.0,
+                                                  .linear_damping = 0.5,
+                                                  .angular_damping = 0.25});
+            world.create_shape(old, box_shape(1.0, 2.0, Material{3.0, 0.1, 0.5}, {0.3, 0.1}));
+            world.apply_force(old, {10.0, 0.0}, {5.0, 6.0});
+            world.apply_torque(old, 4.0);
+            world.destroy_body(old);
+        }
+        const BodyId b = world.create_body(def);
+        world.create_shape(b, circle_shape(0.5));
+        for (int i = 0; i < 10; ++i)
+            world.step(1.0 / 60.0);
+        return std::tuple{world.state(b), world.mass(b), world.inertia(b)};
+    };
+    const auto [fresh, fresh_mass, fresh_inertia] = run(false);
+    const auto [reused, reused_mass, reused_inertia] = run(true);
+    BOOST_TEST(std::memcmp(&fresh, &reused, sizeof fresh) == 0);
+    BOOST_TEST(fresh_mass == reused_mass);
+    BOOST_TEST(fresh_inertia == reused_inertia);
 }
 
 // Oracle: the contact report's contract (world.hpp): after a destruction it lists no contact of
