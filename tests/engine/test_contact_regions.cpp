@@ -184,6 +184,78 @@ bool same_states(const std::vector<BodyState>& a, const std::vector<BodyState>& 
     return std::memcmp(a.data(), b.data(), a.size() * sizeof(BodyState)) == 0;
 }
 
+/// The streams of `regions` regions coloured from the scene's manifolds placed at `cut`: every
+/// manifold in one lane of one pack of its region's stream (or the stream between regions),
+/// no pack holding a moving body twice, and, walking the order's sequence, each manifold in a
+/// later pack than the last one on its bodies, waiting for it where that one is in another
+/// stream, whose streams never meet on a body unless one is the stream between regions.
+void check_streams(const Scene& scene, const std::vector<double>& cut, std::uint32_t regions) {
+    std::vector<GraphEdge> edges;
+    for (const ContactConstraint& c : scene.constraints)
+        edges.push_back(test::prepared_edge(c));
+    const RegionOrder order = region_order(scene, cut, regions);
+    ConstraintGraph graph;
+    graph.colour(edges, scene.bodies.size(), regions, cut);
+    const auto packs = graph.packs();
+    const std::size_t n = scene.constraints.size();
+    // Where each manifold was placed: pack, stream.
+    std::vector<std::size_t> pack_of(n, packs.size());
+    std::vector<std::uint32_t> stream_of(n, 0);
+    for (std::uint32_t s = 0; s < graph.streams(); ++s) {
+        for (std::size_t p = graph.stream_begin(s); p < graph.stream_begin(s + 1); ++p) {
+            std::set<std::uint32_t> seen;
+            for (const std::uint32_t i : packs[p]) {
+                if (i == ConstraintGraph::no_constraint)
+                    continue;
+                BOOST_TEST_REQUIRE(i < n);
+                BOOST_TEST(pack_of[i] == packs.size()); // in one lane only
+                pack_of[i] = p;
+                stream_of[i] = s;
+                BOOST_TEST(order.stream[i] == s);
+                for (const std::uint32_t body :
+                     {scene.constraints[i].body_a, scene.constraints[i].body_b})
+                    BOOST_TEST((body == 0 || seen.insert(body).second));
+            }
+        }
+    }
+    BOOST_TEST(graph.stream_begin(graph.streams()) == packs.size());
+    for (std::size_t i = 0; i < n; ++i)
+        BOOST_TEST(pack_of[i] < packs.size());
+    // Each pack's wait on each stream, counting the earlier packs' of its stream.
+    std::vector<std::vector<std::uint32_t>> waited(packs.size());
+    for (std::uint32_t s = 0; s < graph.streams(); ++s) {
+        std::vector<std::uint32_t> so_far(graph.streams(), 0);
+        for (std::size_t p = graph.stream_begin(s); p < graph.stream_begin(s + 1); ++p) {
+            for (const StreamWait& w : graph.waits(p)) {
+                BOOST_TEST(w.stream < s); // only on streams before it
+                so_far[w.stream] = std::max(so_far[w.stream], w.packs);
+            }
+            waited[p] = so_far;
+        }
+    }
+    // Walk the sequence, remembering each moving body's last manifold.
+    std::vector<std::uint32_t> last(scene.bodies.size(), ConstraintGraph::no_constraint);
+    for (const std::uint32_t i : order.sequence) {
+        for (const std::uint32_t body :
+             {scene.constraints[i].body_a, scene.constraints[i].body_b}) {
+            if (body == 0)
+                continue;
+            const std::uint32_t before = last[body];
+            last[body] = i;
+            if (before == ConstraintGraph::no_constraint)
+                continue;
+            BOOST_TEST(pack_of[before] < pack_of[i]); // solved before it
+            const std::uint32_t t = stream_of[before], s = stream_of[i];
+            // Two regions' streams never meet on a body.
+            BOOST_TEST((t == s || t == regions || s == regions));
+            if (t != s) {
+                const std::size_t position = pack_of[before] - graph.stream_begin(t);
+                BOOST_TEST(waited[pack_of[i]][t] >= position + 1);
+            }
+        }
+    }
+}
+
 } // namespace
 
 BOOST_AUTO_TEST_SUITE(contact_regions)
@@ -248,78 +320,40 @@ BOOST_AUTO_TEST_CASE(streams_keep_the_order_and_wait_for_their_predecessors) {
     for (std::uint32_t seed = 40; seed < 64; ++seed) {
         const Scene scene = random_scene(seed, 5 + int(seed % 19), 30 + int(seed * 11 % 150));
         const std::vector<double> cut = random_places(seed, scene.bodies.size());
-        std::vector<GraphEdge> edges;
-        for (const ContactConstraint& c : scene.constraints)
-            edges.push_back(test::prepared_edge(c));
         for (std::uint32_t regions = 2; regions <= 5; ++regions) {
             BOOST_TEST_CONTEXT("seed " << seed << ", " << regions << " regions") {
-                const RegionOrder order = region_order(scene, cut, regions);
-                ConstraintGraph graph;
-                graph.colour(edges, scene.bodies.size(), regions, cut);
-                const auto packs = graph.packs();
-                const std::size_t n = scene.constraints.size();
-                // Where each manifold was placed: pack, stream.
-                std::vector<std::size_t> pack_of(n, packs.size());
-                std::vector<std::uint32_t> stream_of(n, 0);
-                for (std::uint32_t s = 0; s < graph.streams(); ++s) {
-                    for (std::size_t p = graph.stream_begin(s); p < graph.stream_begin(s + 1);
-                         ++p) {
-                        std::set<std::uint32_t> seen;
-                        for (const std::uint32_t i : packs[p]) {
-                            if (i == ConstraintGraph::no_constraint)
-                                continue;
-                            BOOST_TEST_REQUIRE(i < n);
-                            BOOST_TEST(pack_of[i] == packs.size()); // in one lane only
-                            pack_of[i] = p;
-                            stream_of[i] = s;
-                            BOOST_TEST(order.stream[i] == s);
-                            for (const std::uint32_t body :
-                                 {scene.constraints[i].body_a, scene.constraints[i].body_b})
-                                BOOST_TEST((body == 0 || seen.insert(body).second));
-                        }
-                    }
-                }
-                BOOST_TEST(graph.stream_begin(graph.streams()) == packs.size());
-                for (std::size_t i = 0; i < n; ++i)
-                    BOOST_TEST(pack_of[i] < packs.size());
-                // Each pack's wait on each stream, counting the earlier packs' of its stream.
-                std::vector<std::vector<std::uint32_t>> waited(packs.size());
-                for (std::uint32_t s = 0; s < graph.streams(); ++s) {
-                    std::vector<std::uint32_t> so_far(graph.streams(), 0);
-                    for (std::size_t p = graph.stream_begin(s); p < graph.stream_begin(s + 1);
-                         ++p) {
-                        for (const StreamWait& w : graph.waits(p)) {
-                            BOOST_TEST(w.stream < s); // only on streams before it
-                            so_far[w.stream] = std::max(so_far[w.stream], w.packs);
-                        }
-                        waited[p] = so_far;
-                    }
-                }
-                // Walk the sequence, remembering each moving body's last manifold.
-                std::vector<std::uint32_t> last(scene.bodies.size(),
-                                                ConstraintGraph::no_constraint);
-                for (const std::uint32_t i : order.sequence) {
-                    for (const std::uint32_t body :
-                         {scene.constraints[i].body_a, scene.constraints[i].body_b}) {
-                        if (body == 0)
-                            continue;
-                        const std::uint32_t before = last[body];
-                        last[body] = i;
-                        if (before == ConstraintGraph::no_constraint)
-                            continue;
-                        BOOST_TEST(pack_of[before] < pack_of[i]); // solved before it
-                        const std::uint32_t t = stream_of[before], s = stream_of[i];
-                        // Two regions' streams never meet on a body.
-                        BOOST_TEST((t == s || t == regions || s == regions));
-                        if (t != s) {
-                            const std::size_t position = pack_of[before] - graph.stream_begin(t);
-                            BOOST_TEST(waited[pack_of[i]][t] >= position + 1);
-                        }
-                    }
-                }
+                check_streams(scene, cut, regions);
             }
         }
     }
+}
+
+// Oracle: as above, where the colours run out: a body with more manifolds between regions than
+// the 64 colours (the definition's "with all taken, 64", after every coloured one). A hub on
+// one side of the cut touches 70 bodies on the other, and a second hub touches the last six of
+// them again, so that the manifolds after the colours ran out meet bodies that had them.
+BOOST_AUTO_TEST_CASE(a_body_with_more_manifolds_between_regions_than_colours) {
+    Scene scene = random_scene(7, 2, 1); // the static body 0 and one body: the first hub
+    scene.constraints.clear();
+    const std::uint32_t hub = 1, leaves = 70;
+    for (std::uint32_t k = 0; k <= leaves; ++k)
+        scene.bodies.push_back(scene.bodies[hub]); // leaves 2 .. 71, then the second hub, 72
+    ContactConstraint c = random_scene(7, 3, 1).constraints.front(); // a manifold's points
+    const auto link = [&](std::uint32_t a, std::uint32_t b) {
+        c.body_a = a;
+        c.body_b = b;
+        scene.constraints.push_back(c);
+    };
+    for (std::uint32_t k = 0; k < leaves; ++k)
+        link(hub, 2 + k);
+    for (std::uint32_t k = leaves - 6; k < leaves; ++k)
+        link(2 + k, 2 + leaves);
+    std::vector<double> cut(scene.bodies.size(), 1.0); // the leaves on one side
+    cut[hub] = cut[2 + leaves] = -1.0;                 // the hubs on the other
+    const RegionOrder order = region_order(scene, cut, 2);
+    BOOST_TEST_REQUIRE(std::count(order.stream.begin(), order.stream.end(), 2u) ==
+                       std::ptrdiff_t(scene.constraints.size())); // all between the regions
+    check_streams(scene, cut, 2);
 }
 
 // Oracle: the rule for regions = 1: one stream, no waits, the packs of the sequential pass in
