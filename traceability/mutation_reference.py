@@ -117,28 +117,31 @@ EXECUTABLE = re.compile(r"^\s*tamias_add_boost_test\s*\(\s*([A-Za-z_][\w-]*)")
 
 def declared_tests(source):
     """The report's ids (executable:suite/case) of the test cases declared in the checkout's
-    sources: each tests/ directory's tamias_add_boost_test executable takes the cases of the
-    files under it, each case its suites' path as written."""
+    sources: a file's cases belong to the executables (tamias_add_boost_test) of the nearest
+    CMakeLists.txt above it under tests/ that names any, each case to its suites' path."""
     out = set()
     base = os.path.join(source, "tests")
-    for root, _dirs, files in os.walk(base):
-        if "CMakeLists.txt" not in files:
-            continue
-        with open(os.path.join(root, "CMakeLists.txt"), encoding="utf-8") as fh:
-            exes = [m.group(1) for m in map(EXECUTABLE.match, fh) if m]
-        for sub, _d, names in os.walk(root):
-            for name in names:
-                if not name.endswith(".cpp"):
-                    continue
-                with open(os.path.join(sub, name), encoding="utf-8", errors="replace") as fh:
-                    stack = []
-                    for line in fh:
-                        if m := SUITE.match(line):
-                            stack.append(m.group(1))
-                        elif SUITE_END.match(line) and stack:
-                            stack.pop()
-                        elif m := evidence.TEST_MACRO.match(line):
-                            out.update(f"{exe}:{'/'.join(stack + [m.group(2)])}" for exe in exes)
+    exes_of = {}
+    for root, _dirs, files in sorted(os.walk(base)):
+        exes = []
+        if "CMakeLists.txt" in files:
+            with open(os.path.join(root, "CMakeLists.txt"), encoding="utf-8") as fh:
+                exes = [m.group(1) for m in map(EXECUTABLE.match, fh) if m]
+        # os.walk lists a directory before those under it: the parent's are known.
+        exes_of[root] = exes or exes_of.get(os.path.dirname(root), [])
+        for name in files:
+            if not name.endswith(".cpp"):
+                continue
+            with open(os.path.join(root, name), encoding="utf-8", errors="replace") as fh:
+                stack = []
+                for line in fh:
+                    if m := SUITE.match(line):
+                        stack.append(m.group(1))
+                    elif SUITE_END.match(line) and stack:
+                        stack.pop()
+                    elif m := evidence.TEST_MACRO.match(line):
+                        path = "/".join(stack + [m.group(2)])
+                        out.update(f"{exe}:{path}" for exe in exes_of[root])
     return out
 
 
@@ -159,7 +162,8 @@ def judgement_text(s):
     if not s.get("closed_by"):
         return s["judgement"]
     tests = "; ".join(f"{c['test']} ({c['status']})" for c in s["closed_by"])
-    return f"{s['judgement']}, {'closed' if s['closed'] else 'not closed'} at the checkout by {tests}"
+    closed = "closed" if s["closed"] else "not closed"
+    return f"{s['judgement']}, {closed} at the checkout by {tests}"
 
 
 def summary(ref):
@@ -176,6 +180,6 @@ def summary(ref):
             f"{pct(ref['interval'][0])}-{pct(ref['interval'][1])}); survivors: "
             f"{ref['equivalent']} judged equivalent, {ref['gaps']} judged gaps "
             f"({ref['gaps_closed']} closed at the checkout by tests that passed in this run, "
-            f"{ref['gaps'] - ref['gaps_closed']} open), {ref['not_judged']} not yet judged. The {pct(ref['floor'])} floor, on the "
-            f"{ref['floor_applies_to']}: {'met' if ref['floor_met'] else 'not met'}. "
-            f"True of its commit: {since}.")
+            f"{ref['gaps'] - ref['gaps_closed']} open), {ref['not_judged']} not yet judged. "
+            f"The {pct(ref['floor'])} floor, on the {ref['floor_applies_to']}: "
+            f"{'met' if ref['floor_met'] else 'not met'}. True of its commit: {since}.")

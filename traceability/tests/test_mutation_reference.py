@@ -121,7 +121,8 @@ class Reference(unittest.TestCase):
                   "occurrence": 1, "verdict": "gap", "reason": "made up",
                   "closed_by": ["x_tests:suite/case"]}
         still_open = {"file": "src/tamias2d/model/a.hpp", "line": "t = u + v;",
-                      "op": "arith + to -", "occurrence": 1, "verdict": "gap", "reason": "made up"}
+                      "op": "arith + to -", "occurrence": 1, "verdict": "gap",
+                      "reason": "made up"}
         self.write(rows, complete=False, survivors=[closed, still_open])
         for status, count in (("passed", 1), ("failed", 0)):
             warnings = []
@@ -155,7 +156,8 @@ class Reference(unittest.TestCase):
             fh.write("tamias_add_boost_test(x_tests SOURCES a.cpp)\n")
         with open(os.path.join(d, "test_a.cpp"), "w") as fh:
             fh.write("BOOST_AUTO_TEST_SUITE(outer)\nBOOST_AUTO_TEST_CASE(one) {}\n"
-                     "BOOST_AUTO_TEST_SUITE(inner)\nBOOST_AUTO_TEST_CASE(two, *utf::label(\"A\")) {}\n"
+                     "BOOST_AUTO_TEST_SUITE(inner)\n"
+                     "BOOST_AUTO_TEST_CASE(two, *utf::label(\"A\")) {}\n"
                      "BOOST_AUTO_TEST_SUITE_END()\nBOOST_AUTO_TEST_CASE(three) {}\n"
                      "BOOST_AUTO_TEST_SUITE_END()\n")
         self.assertEqual(mutation_reference.declared_tests(self.root),
