@@ -468,4 +468,49 @@ BOOST_AUTO_TEST_CASE(a_broken_shape_is_refused_at_its_record, *utf::label("relia
     }
 }
 
+// A live shape on no body's shape list, naming as its body one past the last, is refused,
+// naming the shape's body field, before that body is looked up. Oracle: the snapshot's rule for
+// the bodies' shape lists (body_store.cpp: a live shape must be on the shape list of a live
+// body). Two bodies with a disc each; the second body's list is emptied and its disc made to
+// name body 2. The fields are found by the second body's x, 7.8125 (no other field holds it):
+// its record's first_shape is the u32 before its transform, and the disc's body is the u32
+// after the disc's copy of that transform (four doubles) and of the body's centre (two).
+BOOST_AUTO_TEST_CASE(a_shape_on_no_list_naming_a_body_past_the_last_is_refused,
+                     *utf::label("reliability")) {
+    World w;
+    for (const double x : {1.0, 7.8125})
+        w.create_shape(w.create_body({.position = {x, 0.0}}), circle_shape(0.25));
+    const std::vector<std::byte> good = w.snapshot();
+    const std::vector<std::byte> x = bytes(7.8125);
+    const auto find_x = [&](const char* tag) {
+        const auto [begin, end] = section_bytes(good, tag);
+        const auto it = std::search(good.begin() + std::ptrdiff_t(begin),
+                                    good.begin() + std::ptrdiff_t(end), x.begin(), x.end());
+        BOOST_TEST_REQUIRE((it != good.begin() + std::ptrdiff_t(end)), tag);
+        return std::size_t(it - good.begin());
+    };
+    const auto u32_at = [&](std::size_t k) {
+        std::uint32_t v = 0;
+        for (int b = 0; b < 4; ++b)
+            v |= std::uint32_t(good[k + std::size_t(b)]) << (8 * b);
+        return v;
+    };
+    const std::size_t first_shape = find_x("BODY") - 4;
+    const std::size_t shape_body = find_x("SHAP") + 6 * sizeof(double);
+    BOOST_TEST_REQUIRE(u32_at(first_shape) == 1u, "the second body's first shape");
+    BOOST_TEST_REQUIRE(u32_at(shape_body) == 1u, "the second disc's body");
+    std::vector<std::byte> forged = good;
+    put_u32(forged, first_shape, 0xFFFFFFFFu); // no shape
+    put_u32(forged, shape_body, 2);            // the body count
+    fix_checksum(forged);
+    World target;
+    BOOST_TEST(refused_unchanged(target, forged, "shapes[1]"));
+    try {
+        World::from_snapshot(forged);
+        BOOST_TEST(false, "accepted");
+    } catch (const SnapshotError& e) {
+        BOOST_TEST(e.field == "shapes[1].body", e.what());
+    }
+}
+
 BOOST_AUTO_TEST_SUITE_END()
