@@ -387,7 +387,7 @@ BOOST_AUTO_TEST_CASE(a_wrong_section_tag_is_refused_naming_the_tag, *utf::label(
 // shapes, shape_a < shape_b, of the bodies named) and the world's three shapes: the ground
 // (0) and two boxes resting on it apart (1, 2), so two contacts, (0, 1) then (0, 2). A record
 // starts with shape_a then shape_b (the format's); the first follows the section's tag and
-// count, the second is found by its two shapes after it.
+// count, the second is found by its two shapes after it; the bodies follow the shapes.
 BOOST_AUTO_TEST_CASE(a_contact_naming_the_shape_past_the_last_is_refused,
                      *utf::label("reliability")) {
     World w;
@@ -426,6 +426,23 @@ BOOST_AUTO_TEST_CASE(a_contact_naming_the_shape_past_the_last_is_refused,
             BOOST_TEST(e.offset == at, e.what());
             BOOST_TEST(e.field == record + ".shape_a", e.what());
         }
+    }
+    // A contact of the ground with itself (shape_b and body_b made shape_a's and body_a's):
+    // refused by the rule's shape_a < shape_b, though each shape and body it names is live and
+    // its own.
+    BOOST_TEST_REQUIRE(u32_at(records[0] + 8) == 0u, "body_a of contact 0: the ground");
+    BOOST_TEST_REQUIRE(u32_at(records[0] + 12) == 1u, "body_b of contact 0: the first box");
+    std::vector<std::byte> self = good;
+    put_u32(self, records[0] + 4, 0);  // shape_b: the ground's shape
+    put_u32(self, records[0] + 12, 0); // body_b: the ground
+    fix_checksum(self);
+    World target;
+    BOOST_TEST(refused_unchanged(target, self, "contacts[0]"));
+    try {
+        World::from_snapshot(self);
+        BOOST_TEST(false, "a contact of a shape with itself accepted");
+    } catch (const SnapshotError& e) {
+        BOOST_TEST(e.field == "contacts[0].shape_a", e.what());
     }
     BOOST_TEST((World::from_snapshot(good).snapshot() == good)); // the intact one is read
 }
