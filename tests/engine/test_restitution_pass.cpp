@@ -84,8 +84,9 @@ struct SpinningBar {
 
 BOOST_AUTO_TEST_SUITE(restitution_pass)
 
-// The pressed corner separated at 0.5 m/s before the step: it must end approaching at no more
-// than 0.5 m/s, or the impulse it took would add energy.
+// Oracle: DD12's closed form for the striking corner, the impulses' work and the energy bound
+// (above). The pressed corner separated at 0.5 m/s before the step: it must end approaching at
+// no more than 0.5 m/s, or the impulse it took would add energy.
 BOOST_AUTO_TEST_CASE(a_pressed_point_that_was_separating_adds_no_energy,
                      *utf::label("DD12") * utf::label("GD3")) {
     SpinningBar bar(0.75, 1.25, 1.0);
@@ -101,9 +102,10 @@ BOOST_AUTO_TEST_CASE(a_pressed_point_that_was_separating_adds_no_energy,
                "kinetic energy " << bar.kinetic() << " J after, " << k0 << " J before");
 }
 
-// The pressed corner approached at 0.5 m/s, under the 1 m/s threshold: it is held at rest, and
-// the bouncing corner beside it still reaches -C_R v_before. The bar turns either way, so that
-// each point of the manifold is in turn the slow one.
+// Oracle: as above, and the pass's stated target for a slow point (restitution.cpp: held at
+// rest). The pressed corner approached at 0.5 m/s, under the 1 m/s threshold: it is held at
+// rest, and the bouncing corner beside it still reaches -C_R v_before. The bar turns either
+// way, so that each point of the manifold is in turn the slow one.
 BOOST_AUTO_TEST_CASE(a_pressed_point_under_the_threshold_is_held_at_rest,
                      *utf::label("DD12") * utf::label("GD3")) {
     for (const double spin : {0.75, -0.75}) {
