@@ -122,7 +122,7 @@ def declared_tests(source):
     out = set()
     base = os.path.join(source, "tests")
     exes_of = {}
-    for root, _dirs, files in sorted(os.walk(base)):
+    for root, _dirs, files in os.walk(base):
         exes = []
         if "CMakeLists.txt" in files:
             with open(os.path.join(root, "CMakeLists.txt"), encoding="utf-8") as fh:
