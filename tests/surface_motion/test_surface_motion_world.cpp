@@ -1,8 +1,9 @@
 // Surface motion (DD46, DD47) in the world: equal results on 1 to 4 workers, a snapshot's
-// continuation and a scene file's round trip with the values, and the run-time setters' refusals
-// (the world unchanged) and their values.
+// continuation, a removed contact's rolling impulse kept from the others and a scene file's round
+// trip with the values, and the run-time setters' refusals (the world unchanged) and their values.
 #include <boost/test/unit_test.hpp>
 
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -41,6 +42,38 @@ void belt_and_balls(World& w) {
         w.create_shape(ball, k % 2 == 0 ? circle_shape(0.3, m)
                                         : capsule_shape({-0.2, 0.0}, {0.2, 0.0}, 0.25, m));
     }
+}
+
+/// Four balls (r = 0.5 m) rolling without slipping along a static floor, each at its own
+/// speed and with its own rolling resistance (DD46), friction 0.6; the first only when
+/// `with_first`. Returns the balls made, in order.
+std::vector<BodyId> rolling_balls(World& w, bool with_first) {
+    BodyDef fd;
+    fd.type = BodyType::static_body;
+    fd.position = {40.0, -0.5};
+    w.create_shape(w.create_body(fd), box_shape(100.0, 1.0, Material{.friction = 0.6}));
+    std::vector<BodyId> balls;
+    for (int k = with_first ? 0 : 1; k < 4; ++k) {
+        BodyDef d;
+        d.position = {3.0 * k, 0.5};
+        d.linear_velocity = {1.0 + 0.5 * k, 0.0};
+        d.angular_velocity = -d.linear_velocity.x / 0.5;
+        balls.push_back(w.create_body(d));
+        Material m{.friction = 0.6};
+        m.rolling_resistance = 0.02 * (k + 1);
+        w.create_shape(balls.back(), circle_shape(0.5, m));
+    }
+    return balls;
+}
+
+/// The bits of a body's pose and velocities.
+std::vector<std::uint64_t> motion_bits(const World& w, BodyId b) {
+    const double v[] = {w.position(b).x, w.position(b).y, w.orientation(b),
+                        w.velocity(b).x, w.velocity(b).y, w.angular_velocity(b)};
+    std::vector<std::uint64_t> out;
+    for (const double x : v)
+        out.push_back(std::bit_cast<std::uint64_t>(x));
+    return out;
 }
 
 } // namespace
@@ -95,6 +128,34 @@ BOOST_AUTO_TEST_CASE(snapshot_continues_with_the_same_bits) {
             r.step(dt);
             BOOST_TEST_REQUIRE(r.state_hash() == expected[std::size_t(i)]);
         }
+    }
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+BOOST_AUTO_TEST_SUITE(surface_motion_removal, *utf::label("determinism"))
+
+// Oracle: the locality of the contact solve: contacts that share no body are solved apart, so
+// a ball's motion does not depend on another ball's contact. Once the first ball is destroyed
+// (its contact removed while the others roll on, each with the rolling impulse it carries into
+// the next step), the other three move bit for bit as in a world that never held it.
+BOOST_AUTO_TEST_CASE(a_removed_contact_leaves_the_others_rolling_as_without_it) {
+    World w{WorldDef{}}, without{WorldDef{}};
+    const std::vector<BodyId> balls = rolling_balls(w, true);
+    const std::vector<BodyId> others = rolling_balls(without, false);
+    for (int i = 0; i < 60; ++i) {
+        if (i == 20)
+            w.destroy_body(balls[0]);
+        w.step(dt);
+        without.step(dt);
+        for (std::size_t k = 0; k < others.size(); ++k)
+            BOOST_TEST_REQUIRE(motion_bits(w, balls[k + 1]) == motion_bits(without, others[k]),
+                               "step " << i << ", ball " << k + 1);
+    }
+    // The balls still roll and resist it: the resistance is at work when the contact goes.
+    for (std::size_t k = 0; k < others.size(); ++k) {
+        BOOST_TEST(without.angular_velocity(others[k]) < 0.0);
+        BOOST_TEST(without.velocity(others[k]).x < 1.0 + 0.5 * double(k + 1));
     }
 }
 
