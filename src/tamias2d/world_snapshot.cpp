@@ -131,7 +131,7 @@ std::unique_ptr<World::Impl> read_snapshot(std::span<const std::byte> bytes, int
     auto w = std::make_unique<World::Impl>(def, tag);
     in("time", w->time);
     in("time_error", w->time_error);
-    w->bodies.read(in, had_load);
+    w->bodies.read(in, had_load, def.enable_sleep);
     w->shapes.read(in);
     w->bodies.check_links(in, w->shapes);
     w->contacts.read(in, w->bodies, w->shapes);

@@ -523,4 +523,72 @@ BOOST_AUTO_TEST_CASE(a_shape_on_no_list_naming_a_body_past_the_last_is_refused,
     BOOST_TEST(e->field == "shapes[1].body", e->what());
 }
 
+namespace {
+/// The offsets at which two snapshots of one length differ.
+std::vector<std::size_t> differing_bytes(const std::vector<std::byte>& a,
+                                         const std::vector<std::byte>& b) {
+    BOOST_TEST_REQUIRE(a.size() == b.size());
+    std::vector<std::size_t> out;
+    for (std::size_t k = 32; k < a.size(); ++k) // past the header and its checksum
+        if (a[k] != b[k])
+            out.push_back(k);
+    return out;
+}
+} // namespace
+
+// Oracle: the sleep states a world holds (body_store.hpp, World::set_sleeping, set_enabled): a
+// body is movable exactly when it is neither static nor disabled, only a movable body is awake,
+// and with sleeping off every movable body is. A snapshot that breaks one is refused naming
+// the body's field (the world unchanged, refused_unchanged); the flags are found by writing the
+// same world in two states and comparing the bytes, so no offset is assumed.
+BOOST_AUTO_TEST_CASE(a_sleep_state_no_world_holds_is_refused, *utf::label("reliability")) {
+    const auto make = [](bool sleeping) {
+        World w(WorldDef{.enable_sleep = sleeping});
+        w.create_shape(w.create_body({.type = BodyType::static_body}), box_shape(4.0, 1.0));
+        w.create_shape(w.create_body({.position = {0.0, 1.0}}), box_shape(1.0, 1.0));
+        return w;
+    };
+    World awake = make(true), asleep = make(true), disabled = make(true);
+    asleep.set_awake(asleep.bodies()[1], false);
+    disabled.set_enabled(disabled.bodies()[1], false);
+    // One byte tells a sleeping body from an awake one; a disabled body also differs in being
+    // movable and disabled, after it.
+    const std::vector<std::size_t> awake_flag =
+        differing_bytes(awake.snapshot(), asleep.snapshot());
+    BOOST_TEST_REQUIRE(awake_flag.size() == 1u);
+    const std::vector<std::size_t> flags = differing_bytes(awake.snapshot(), disabled.snapshot());
+    BOOST_TEST_REQUIRE(flags.size() == 3u);
+    BOOST_TEST_REQUIRE(flags[0] == awake_flag[0]);
+    const std::size_t movable_flag = flags[1];
+    // The world's sleeping setting: the one byte two empty worlds differ in.
+    const std::vector<std::size_t> setting =
+        differing_bytes(World(WorldDef{.enable_sleep = true}).snapshot(),
+                        World(WorldDef{.enable_sleep = false}).snapshot());
+    BOOST_TEST_REQUIRE(setting.size() == 1u);
+
+    struct Case {
+        const World& from;
+        std::size_t at;
+        std::byte value;
+        const char* field;
+    };
+    const Case cases[] = {
+        {asleep, setting[0], std::byte{0}, "bodies[1].awake"},       // asleep with sleeping off
+        {disabled, awake_flag[0], std::byte{1}, "bodies[1].awake"},  // awake, not movable
+        {disabled, movable_flag, std::byte{1}, "bodies[1].movable"}, // movable and disabled
+    };
+    for (const Case& c : cases) {
+        std::vector<std::byte> forged = c.from.snapshot();
+        BOOST_TEST_REQUIRE((forged[c.at] != c.value), c.field);
+        forged[c.at] = c.value;
+        fix_checksum(forged);
+        const std::optional<SnapshotError> e = refusal(forged, "bodies[1]");
+        BOOST_TEST_REQUIRE(e.has_value(), "accepted: " << c.field);
+        BOOST_TEST(e->field == c.field, e->what());
+    }
+    // The states themselves are read back (positive control).
+    for (const World* w : {&awake, &asleep, &disabled})
+        BOOST_TEST(World::from_snapshot(w->snapshot()).state_hash() == w->state_hash());
+}
+
 BOOST_AUTO_TEST_SUITE_END()

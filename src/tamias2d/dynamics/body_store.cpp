@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
 
 #include "tamias2d/dynamics/bridge/typing.hpp"
 #include "tamias2d/dynamics/bridge/velocity_control.hpp"
@@ -433,6 +434,22 @@ const char* unsupported_field(const Body& b, const BodySettings& set, const Slee
     return nullptr;
 }
 
+/// Whether a live body's sleep state read from a snapshot is one the store holds: the field and
+/// the rule it breaks, or nulls. A body is movable exactly when it is neither static nor disabled
+/// (the step moves only those), only a movable body is awake, and with sleeping off every movable
+/// body is (create, set_sleeping). A forged flag would have the step move a static body or
+/// hold still one that the world says cannot sleep.
+std::pair<const char*, const char*> unheld_sleep_state(const Body& b, const SleepState& sleep,
+                                                       bool sleeping) {
+    if (sleep.movable != (b.type != BodyType::static_body && !sleep.disabled))
+        return {"movable", "must be true exactly for a body neither static nor disabled"};
+    if (sleep.awake && !sleep.movable)
+        return {"awake", "must be false for a body that is not movable"};
+    if (!sleeping && sleep.movable && !sleep.awake)
+        return {"awake", "must be true for a movable body in a world with sleeping off"};
+    return {nullptr, nullptr};
+}
+
 } // namespace
 
 void BodyStore::write(SnapshotWriter& out) const {
@@ -444,7 +461,7 @@ void BodyStore::write(SnapshotWriter& out) const {
     }
 }
 
-void BodyStore::read(SnapshotReader& in, memory::vector<std::uint32_t>& had_load) {
+void BodyStore::read(SnapshotReader& in, memory::vector<std::uint32_t>& had_load, bool sleeping) {
     in.section("BODY");
     ++mass_epoch;
     in.in("bodies");
@@ -469,6 +486,9 @@ void BodyStore::read(SnapshotReader& in, memory::vector<std::uint32_t>& had_load
                 in.fail_at(at, field,
                            "must be finite, and within the supported ranges where only inputs set "
                            "it (DCX_finite, DCX_range)");
+        if (alive(i))
+            if (const auto [field, rule] = unheld_sleep_state(b, sleep_states[i], sleeping); field)
+                in.fail_at(at, field, rule);
         if (has_load)
             had_load.push_back(i);
         disabled_bodies += sleep_states[i].disabled ? 1 : 0;

@@ -129,10 +129,11 @@ struct BodyStore {
     /// Writes every slot (its generation, its Body, settings and sleep state, whether it had a
     /// load function) and the free slots. Pending masses must be settled first (settle).
     void write(SnapshotWriter& out) const;
-    /// Reads what write wrote into this empty store. A load function cannot be written: the
+    /// Reads what write wrote into this empty store, for a world with sleeping on or off (the
+    /// sleep states must be ones such a world holds). A load function cannot be written: the
     /// bodies that had one are listed in `had_load` (World::restore gives them the target's).
     /// Throws SnapshotError for a defect in the bytes (link_shapes checks the shape lists).
-    void read(SnapshotReader& in, memory::vector<std::uint32_t>& had_load);
+    void read(SnapshotReader& in, memory::vector<std::uint32_t>& had_load, bool sleeping);
     /// After both stores are read: each live body's shape list holds live shapes of that body
     /// (each once, ending in null_index), every live shape is on its body's list, and the free
     /// slots are dead and distinct. Rebuilds ShapeStore::last_of_body.
