@@ -1,8 +1,10 @@
 // The bytes of a snapshot: a game keeps snapshots as save files and sends them over the
 // network, so the bytes a world writes are part of the format, not only what it reads back.
-// Every example scene after at most 120 steps, as written and with manifold reuse off (the
-// contacts then keep no reuse basis), must write the payload recorded in golden_snapshots.txt:
-// its length and its FNV-1a hash. The header is left out: it names the library's version.
+// Every example scene after at most 120 steps, as written, with manifold reuse off (the
+// contacts then keep no reuse basis) and thinned (every third body destroyed after the steps,
+// so that free slots of bodies, shapes, joints and contacts are written), must write the
+// payload recorded in golden_snapshots.txt: its length and its FNV-1a hash. The header is left
+// out: it names the library's version.
 //
 // Oracle: the committed record, written by another build: a regression oracle, as the golden
 // state hashes are. It fixes what the state hash leaves out (a contact's reuse basis with reuse
@@ -48,7 +50,7 @@ std::uint64_t fnv1a(const std::vector<std::byte>& bytes, std::size_t from) {
     return h;
 }
 
-using Key = std::pair<std::string, std::string>;      // scene, "reuse" or "no_reuse"
+using Key = std::pair<std::string, std::string>;      // scene, "reuse", "no_reuse" or "thinned"
 using Record = std::pair<std::size_t, std::uint64_t>; // payload bytes, FNV-1a
 using Records = std::map<Key, Record>;
 
@@ -56,19 +58,24 @@ Records written_now() {
     Records out;
     for (const fs::path& path : example_scenes()) {
         const io::Scene scene = io::load_scene(path);
-        for (const bool reuse : {true, false}) {
+        for (const std::string mode : {"reuse", "no_reuse", "thinned"}) {
             WorldDef def = scene.world;
-            if (!reuse)
+            if (mode == "no_reuse")
                 def.manifold_reuse_distance = 0.0;
             World world(def);
             io::build_world(scene, world);
             const int last = short_steps(path.stem().string(), scene.steps);
             for (int s = 0; s < last; ++s)
                 world.step(scene.dt);
+            if (mode == "thinned") {
+                const std::vector<BodyId> bodies = world.bodies();
+                for (std::size_t k = 0; k < bodies.size(); k += 3)
+                    world.destroy_body(bodies[k]);
+            }
             const std::vector<std::byte> bytes = world.snapshot();
             BOOST_TEST_REQUIRE(bytes.size() > header_size);
-            out[{path.stem().string(), reuse ? "reuse" : "no_reuse"}] = {bytes.size() - header_size,
-                                                                         fnv1a(bytes, header_size)};
+            out[{path.stem().string(), mode}] = {bytes.size() - header_size,
+                                                 fnv1a(bytes, header_size)};
         }
     }
     return out;
@@ -102,9 +109,9 @@ Records read_golden(const fs::path& file) {
 void write_golden(const fs::path& file, const Records& records) {
     std::ofstream out(file);
     out << "# The payload (the bytes after the 32-byte header) of World::snapshot() of each\n"
-           "# example scene after at most 120 steps (the large pyramid: 5), as written (reuse)\n"
-           "# and with manifold reuse off\n"
-           "# (no_reuse): its length and FNV-1a 64 hash. The oracle of\n"
+           "# example scene after at most 120 steps (the large pyramid: 5), as written (reuse),\n"
+           "# with manifold reuse off (no_reuse) and with every third body destroyed after the\n"
+           "# steps (thinned): its length and FNV-1a 64 hash. The oracle of\n"
            "# tests/snapshot/test_snapshot_bytes.cpp. Regenerate:\n"
            "#   TAMIAS_GOLDEN_UPDATE=1 build/tests/snapshot/snapshot_tests "
            "--run_test=snapshot_bytes\n"
