@@ -46,7 +46,9 @@ struct WorldDef {
     double joint_hertz = 60.0;
     double joint_damping_ratio = 2.0; ///< of the joints' soft bias, > 0
     /// Overlap (m) tolerated before the soft contact pushes back. Default 0: soft contacts do
-    /// not jitter at rest, and any slop lets every layer of a stack sink by that much.
+    /// not jitter at rest, and any slop lets every layer of a stack sink by that much. Within
+    /// the slop a contact has no positional stiffness: a stack resting there keeps its pose by
+    /// friction alone (a frictionless one drifts sideways and tips).
     double linear_slop = 0.0;
     /// Contacts are created this far (m) before the shapes touch (speculative contacts).
     double speculative_distance = 0.02;
