@@ -117,8 +117,8 @@ inline double reaction_angular_impulse(JointType type, const JointStepState& st)
     return 0.0;
 }
 
-/// A distance joint's impulse along its axis in the last substep (N s): the rod's or spring's,
-/// the limits', and the motor's while it is enabled (DD35).
+/// \srs{DD35} A distance joint's impulse along its axis in the last substep (N s): the rod's or
+/// spring's, the limits', and the motor's while it is enabled.
 inline double distance_axial_impulse(const Joint& j, const JointStepState& st) {
     const double held = st.axial_impulse + st.lower_impulse - st.upper_impulse;
     return j.enable_motor ? held + st.motor_impulse : held;
