@@ -73,10 +73,13 @@ BOOST_AUTO_TEST_SUITE(body_control)
 
 // Oracle: R2 (a static body does not move and has no mass; a kinematic body moves with its
 // velocity and is not pushed; a dynamic body's mass is its shapes', 1 kg for a unit box of
-// density 1) and IM1's free fall from rest per substep.
-BOOST_AUTO_TEST_CASE(type_changes_follow_r2, *utf::label("R2") * utf::label("IM1")) {
+// density 1), IM1's free fall from rest per substep and IM2 without torque: a body at rest
+// that no torque turns keeps its orientation.
+BOOST_AUTO_TEST_CASE(type_changes_follow_r2,
+                     *utf::label("R2") * utf::label("IM1") * utf::label("IM2")) {
     World w(WorldDef{.gravity = {0.0, -10.0}});
-    const BodyId b = box(w, 0.0, 10.0, BodyDef{.linear_velocity = {2.0, 0.0}});
+    const BodyId b =
+        box(w, 0.0, 10.0, BodyDef{.linear_velocity = {2.0, 0.0}, .angular_velocity = 1.5});
     for (int i = 0; i < 10; ++i)
         w.step(dt);
     // Static: stopped, massless, and still for good.
@@ -85,13 +88,16 @@ BOOST_AUTO_TEST_CASE(type_changes_follow_r2, *utf::label("R2") * utf::label("IM1
     BOOST_TEST(w.mass(b) == 0.0);
     BOOST_TEST(w.velocity(b).x == 0.0);
     BOOST_TEST(w.velocity(b).y == 0.0);
+    BOOST_TEST(w.angular_velocity(b) == 0.0);
     BOOST_TEST(!w.is_awake(b));
     const Vec2d held = w.position(b);
+    const double held_angle = w.orientation(b);
     for (int i = 0; i < 30; ++i)
         w.step(dt);
     BOOST_TEST(w.position(b).x == held.x);
     BOOST_TEST(w.position(b).y == held.y);
-    // Dynamic again: its shapes' mass, and a free fall from rest.
+    BOOST_TEST(w.orientation(b) == held_angle);
+    // Dynamic again: its shapes' mass, and a free fall from rest, without turning.
     w.set_body_type(b, BodyType::dynamic);
     BOOST_TEST(w.mass(b) == 1.0);
     BOOST_TEST(w.inertia(b) == 1.0 / 6.0, boost::test_tools::tolerance(1e-15));
@@ -101,6 +107,8 @@ BOOST_AUTO_TEST_CASE(type_changes_follow_r2, *utf::label("R2") * utf::label("IM1
         BOOST_TEST(rel_err(w.position(b).y, held.y + fall_displacement(-10.0, n * substeps)) <
                    1e-12);
         BOOST_TEST(w.position(b).x == held.x);
+        BOOST_TEST(w.angular_velocity(b) == 0.0);
+        BOOST_TEST(w.orientation(b) == held_angle);
     }
     // Kinematic: keeps its velocity, ignores gravity, moves on a straight line.
     const Vec2d v = w.velocity(b);

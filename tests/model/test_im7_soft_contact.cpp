@@ -139,4 +139,31 @@ BOOST_AUTO_TEST_CASE(two_point_impulses_solve_the_complementarity_problem,
         BOOST_TEST(cases[c] > 50, "case " << c << " drawn " << cases[c] << " times");
 }
 
+// Oracle: the linear complementarity conditions and the uniqueness of their solution for a
+// positive definite K (LC1): with K = [[2, 0.3], [0.3, 0.5]] kg^-1, b = (-0.81, -1.35) m s^-1
+// and no accumulated impulse, x = (0, 2.7) N s (only the second point pushes) gives
+// w = (0.3 * 2.7 - 0.81, 0) = (0, 0): the first point lies exactly on the boundary between
+// "only the second" and "both". There the formula of "both" rounds x1 to -6e-17, so only the
+// boundary's own case (w1 >= 0, not > 0) keeps the solution. The same with the points swapped.
+BOOST_AUTO_TEST_CASE(a_point_exactly_on_the_boundary_between_cases_keeps_the_solution,
+                     *utf::label("IM7") * utf::label("LC1")) {
+    for (const bool swapped : {false, true}) {
+        const double k11 = swapped ? 0.5 : 2.0, k22 = swapped ? 2.0 : 0.5, k12 = 0.3;
+        const double v_free = -1.35, v_edge = -(k12 * 2.7); // exactly -0.81 in binary
+        const double v1 = swapped ? v_free : v_edge, v2 = swapped ? v_edge : v_free;
+        const auto x = im7::two_point_impulses(
+            pair_mass(k11, k12, k22), (1.0 / k11) * kilogram, (1.0 / k22) * kilogram,
+            v1 * metre / second, v2 * metre / second, 0.0 * metre / second, 0.0 * metre / second,
+            0.0 * kilogram * metre / second, 0.0 * kilogram * metre / second);
+        const double pushed = swapped ? x.x1.value() : x.x2.value();
+        const double idle = swapped ? x.x2.value() : x.x1.value();
+        BOOST_TEST(idle == 0.0, "swapped " << swapped);
+        BOOST_TEST(pushed == 2.7, boost::test_tools::tolerance(1e-15));
+        const double w1 = k11 * x.x1.value() + k12 * x.x2.value() + v1;
+        const double w2 = k12 * x.x1.value() + k22 * x.x2.value() + v2;
+        BOOST_TEST(w1 >= -1e-15, "swapped " << swapped);
+        BOOST_TEST(w2 >= -1e-15, "swapped " << swapped);
+    }
+}
+
 BOOST_AUTO_TEST_SUITE_END()

@@ -1,10 +1,10 @@
 // The bytes of a snapshot: a game keeps snapshots as save files and sends them over the
 // network, so the bytes a world writes are part of the format, not only what it reads back.
-// Every example scene after at most 120 steps, as written, with manifold reuse off (the
-// contacts then keep no reuse basis) and thinned (every third body destroyed after the steps,
-// so that free slots of bodies, shapes, joints and contacts are written), must write the
-// payload recorded in golden_snapshots.txt: its length and its FNV-1a hash. The header is left
-// out: it names the library's version.
+// Every example scene as built (before its first step), and after at most 120 steps: as
+// written, with manifold reuse off (the contacts then keep no reuse basis) and thinned (every
+// third body destroyed after the steps, so that free slots of bodies, shapes, joints and
+// contacts are written), must write the payload recorded in golden_snapshots.txt: its length
+// and its FNV-1a hash. The header is left out: it names the library's version.
 //
 // Oracle: the committed record, written by another build: a regression oracle, as the golden
 // state hashes are. It fixes what the state hash leaves out (a contact's reuse basis with reuse
@@ -50,7 +50,7 @@ std::uint64_t fnv1a(const std::vector<std::byte>& bytes, std::size_t from) {
     return h;
 }
 
-using Key = std::pair<std::string, std::string>;      // scene, "reuse", "no_reuse" or "thinned"
+using Key = std::pair<std::string, std::string>;      // scene and mode (below)
 using Record = std::pair<std::size_t, std::uint64_t>; // payload bytes, FNV-1a
 using Records = std::map<Key, Record>;
 
@@ -58,13 +58,13 @@ Records written_now() {
     Records out;
     for (const fs::path& path : example_scenes()) {
         const io::Scene scene = io::load_scene(path);
-        for (const std::string mode : {"reuse", "no_reuse", "thinned"}) {
+        for (const std::string mode : {"built", "reuse", "no_reuse", "thinned"}) {
             WorldDef def = scene.world;
             if (mode == "no_reuse")
                 def.manifold_reuse_distance = 0.0;
             World world(def);
             io::build_world(scene, world);
-            const int last = short_steps(path.stem().string(), scene.steps);
+            const int last = mode == "built" ? 0 : short_steps(path.stem().string(), scene.steps);
             for (int s = 0; s < last; ++s)
                 world.step(scene.dt);
             if (mode == "thinned") {
@@ -109,9 +109,10 @@ Records read_golden(const fs::path& file) {
 void write_golden(const fs::path& file, const Records& records) {
     std::ofstream out(file);
     out << "# The payload (the bytes after the 32-byte header) of World::snapshot() of each\n"
-           "# example scene after at most 120 steps (the large pyramid: 5), as written (reuse),\n"
-           "# with manifold reuse off (no_reuse) and with every third body destroyed after the\n"
-           "# steps (thinned): its length and FNV-1a 64 hash. The oracle of\n"
+           "# example scene as built, before its first step (built), and after at most 120\n"
+           "# steps (the large pyramid: 5) as written (reuse), with manifold reuse off\n"
+           "# (no_reuse) and with every third body destroyed after the steps (thinned): its\n"
+           "# length and FNV-1a 64 hash. The oracle of\n"
            "# tests/snapshot/test_snapshot_bytes.cpp. Regenerate:\n"
            "#   TAMIAS_GOLDEN_UPDATE=1 build/tests/snapshot/snapshot_tests "
            "--run_test=snapshot_bytes\n"
