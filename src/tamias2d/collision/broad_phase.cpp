@@ -99,6 +99,22 @@ void BroadPhase::descend_marked(memory::vector<Pair>& out) {
 /// \srs{R7} candidate collisions: pairs whose fat boxes overlap by \srs{IM4}.
 void BroadPhase::update_pairs(memory::vector<Pair>& out) {
     const std::size_t first = out.size();
+    try {
+        find_pairs(out, first);
+    } catch (...) {
+        // A bad_alloc (a rebuild, the pairs' growth) forgets nothing: every move is looked at
+        // again by the next call, and the pairs found so far are found again there.
+        trees_[0].clear_marks();
+        trees_[1].clear_marks();
+        for (const int p : move_buffer_)
+            if (moved_[p] != 0)
+                moved_[p] = 1;
+        out.resize(first);
+        throw;
+    }
+}
+
+void BroadPhase::find_pairs(memory::vector<Pair>& out, std::size_t first) {
     // The moved proxies' ancestors were only enlarged: restore the trees' quality first.
     trees_[0].rebuild();
     trees_[1].rebuild();

@@ -76,7 +76,8 @@ class BroadPhase {
     /// Appends every pair of proxies whose fat boxes overlap (IM4) and of which at least one
     /// moved since the last call, once each, as (min user, max user), sorted; then forgets
     /// the moves. Static-static pairs are never reported. Allocation-free once `out` and the
-    /// internal buffers have grown to the scene's size.
+    /// internal buffers have grown to the scene's size. A bad_alloc leaves `out` as it was and
+    /// the moves for the next call.
     void update_pairs(memory::vector<Pair>& out);
 
     /// Calls f(proxy) for every proxy whose fat box overlaps `box` (IM4), dynamic tree first.
@@ -116,6 +117,8 @@ class BroadPhase {
     const DynamicTree& tree(int proxy) const { return trees_[proxy & 1]; }
     DynamicTree& tree(int proxy) { return trees_[proxy & 1]; }
     void mark_moved(int proxy);
+    /// update_pairs' work, the pairs appended to `out` from index `first` on.
+    void find_pairs(memory::vector<Pair>& out, std::size_t first);
     /// update_pairs' two searches for the pairs of the moved (marked) proxies.
     void query_moved(memory::vector<Pair>& out);
     void descend_marked(memory::vector<Pair>& out);
