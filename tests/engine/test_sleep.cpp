@@ -132,6 +132,29 @@ BOOST_AUTO_TEST_CASE(a_body_made_dynamic_rests_time_to_sleep_before_it_sleeps) {
     }
 }
 
+// Oracle: the rule (at rest for time_to_sleep), as above. A sleeping box is disabled and
+// enabled again (set_enabled): it is then awake, and it sleeps only once it has rested for
+// time_to_sleep after it was enabled, not at once; on the ground and alone in the air.
+BOOST_AUTO_TEST_CASE(a_body_enabled_again_rests_time_to_sleep_before_it_sleeps) {
+    for (const bool on_ground : {true, false}) {
+        BOOST_TEST_CONTEXT((on_ground ? "on the ground" : "in the air")) {
+            World w(def_with_sleep());
+            ground(w);
+            BodyDef d;
+            d.gravity_scale = on_ground ? 1.0 : 0.0;
+            const BodyId b = box(w, 0.0, on_ground ? 0.5 : 10.0, d);
+            BOOST_TEST_REQUIRE(steps_until_asleep(w, {b}, 300) > 0); // asleep first
+            const int needed = int(std::ceil(w.settings().time_to_sleep / dt - 1e-9));
+            w.set_enabled(b, false);
+            w.set_enabled(b, true);
+            BOOST_TEST(w.is_awake(b));
+            const int n = steps_until_asleep(w, {b}, 300);
+            BOOST_TEST_MESSAGE("asleep after " << n << " steps");
+            BOOST_TEST(n >= needed);
+        }
+    }
+}
+
 // Oracle: the same scene with sleeping off. Until a body sleeps, sleeping changes nothing: a
 // pyramid whose bodies never reach time_to_sleep moves bit for bit as without sleeping.
 BOOST_AUTO_TEST_CASE(sleeping_changes_nothing_until_a_body_sleeps) {

@@ -75,6 +75,28 @@ BOOST_AUTO_TEST_CASE(a_force_threshold_below_the_weight_reports_every_step,
     BOOST_TEST(low.world.broken_joints().empty());
 }
 
+// Oracle: the event's rule (events.hpp): reported when the reaction force exceeds the
+// threshold, not when it equals it. The threshold is set to the force a twin world's joint
+// carries after 60 steps (thresholds change no motion, so both worlds move alike): in every step
+// the event is reported exactly when the force's length is greater, and at step 60, where they
+// are equal, it is not.
+BOOST_AUTO_TEST_CASE(a_force_equal_to_the_threshold_does_not_exceed_it) {
+    const auto force_length = [](Vec2d f) { return std::sqrt(f.x * f.x + f.y * f.y); };
+    Hanging twin(RevoluteJointDef{});
+    for (int s = 0; s < 60; ++s)
+        twin.world.step(dt);
+    const double threshold = force_length(twin.world.joint_reaction_force(twin.joint));
+    Hanging h(RevoluteJointDef{.force_threshold = threshold});
+    int equal = 0;
+    for (int s = 1; s <= 90; ++s) {
+        h.world.step(dt);
+        const double f = force_length(h.world.joint_reaction_force(h.joint));
+        equal += f == threshold;
+        BOOST_TEST(h.world.joint_events().size() == (f > threshold ? 1u : 0u), "step " << s);
+    }
+    BOOST_TEST(equal >= 1);
+}
+
 // Oracle: statics, closed form. A horizontal 2 m beam (1 kg) welded to a wall at its end has
 // its centre of mass L = 1 m from the weld: the weld holds the torque m g L = 10 N m. A torque
 // threshold of 9 N m is exceeded in every step once the load is carried (after a transient of

@@ -7,6 +7,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include <cstddef>
+#include <vector>
 
 #include "support/pyramid.hpp"
 #include "support/replaced_new.hpp"
@@ -86,6 +87,32 @@ BOOST_AUTO_TEST_CASE(jointed_world_steps_without_allocating, *utf::label("perfor
         previous = b;
     }
     run_steps(world, 600);
+    const Counted steady = count_steps(world, 100);
+    BOOST_TEST(steady.allocations == 0u);
+    BOOST_TEST(steady.deallocations == 0u);
+}
+
+// Oracle: the same counting operator new, on a net of pins: 12 x 12 discs, each pinned to its
+// left and upper neighbours, the top row pinned to static points, so that the pins are solved
+// in packs of four level by level (PinPacks); once it hangs, 100 more steps must not allocate.
+BOOST_AUTO_TEST_CASE(a_net_of_pins_steps_without_allocating, *utf::label("performance")) {
+    World world(WorldDef{.gravity = {0.0, -10.0}, .enable_sleep = false});
+    const BodyId anchor = world.create_body(BodyDef{.type = BodyType::static_body});
+    constexpr int n = 12;
+    std::vector<BodyId> grid;
+    for (int row = 0; row < n; ++row)
+        for (int col = 0; col < n; ++col) {
+            const BodyId b = world.create_body(BodyDef{.position = {double(col), -double(row)}});
+            world.create_shape(b, circle_shape(0.2));
+            if (col > 0)
+                world.create_joint(RevoluteJointDef{
+                    .body_a = grid.back(), .body_b = b, .anchor = {col - 0.5, -double(row)}});
+            const BodyId above = row > 0 ? grid[std::size_t((row - 1) * n + col)] : anchor;
+            world.create_joint(
+                RevoluteJointDef{.body_a = above, .body_b = b, .anchor = {double(col), 0.5 - row}});
+            grid.push_back(b);
+        }
+    run_steps(world, 300);
     const Counted steady = count_steps(world, 100);
     BOOST_TEST(steady.allocations == 0u);
     BOOST_TEST(steady.deallocations == 0u);

@@ -255,11 +255,12 @@ BOOST_AUTO_TEST_CASE(a_stopped_spinning_body_turns_part_of_its_way, *utf::label(
 // speculative distance in the step (DD29's motion bound, the reach measured from the centre of
 // mass). Its one shape, a disc of 5 cm, sits 2 m from its centre of mass (set_mass_data puts
 // the centre 1 m on the other side of the body's origin), and it turns at 20 rad/s: the disc
-// swings 0.67 m a step, across a static segment 0.25 m away. Its centre never ends a step past
-// the segment's line; without continuous collision it does (so the test can fail). The scene
-// is built along y and again turned a quarter turn, along x.
+// swings 0.67 m a step, across a static segment 0.25 m away; and at 60 rad/s, a turn of exactly
+// 1 rad a step (four substeps of 0.25 rad). Its centre never ends a step past the segment's
+// line; without continuous collision it does (so the test can fail). The scene is built along
+// y and again turned a quarter turn, along x.
 BOOST_AUTO_TEST_CASE(a_turning_body_is_swept_from_its_centre_of_mass, *utf::label("DD29")) {
-    const auto swing = [](bool continuous, bool turned) {
+    const auto swing = [](bool continuous, bool turned, double spin) {
         // The scene's points, turned a quarter turn counter-clockwise when asked.
         const auto at = [turned](double x, double y) {
             return turned ? Vec2d{-y, x} : Vec2d{x, y};
@@ -276,7 +277,7 @@ BOOST_AUTO_TEST_CASE(a_turning_body_is_swept_from_its_centre_of_mass, *utf::labe
         world.set_mass_data(body,
                             BodyMassData{.mass = 1.0, .center = at(0.0, -1.0), .inertia = 1.0});
         world.set_velocity(body, {0.0, 0.0});
-        world.set_angular_velocity(body, 20.0); // counter-clockwise: towards the segment
+        world.set_angular_velocity(body, spin); // counter-clockwise: towards the segment
         bool crossed = false;
         for (int k = 0; k < 10; ++k) {
             world.step(dt);
@@ -286,10 +287,11 @@ BOOST_AUTO_TEST_CASE(a_turning_body_is_swept_from_its_centre_of_mass, *utf::labe
         }
         return crossed;
     };
-    for (const bool turned : {false, true}) {
-        BOOST_TEST(!swing(true, turned), (turned ? "along x" : "along y"));
-        BOOST_TEST(swing(false, turned), (turned ? "along x" : "along y"));
-    }
+    for (const double spin : {20.0, 60.0})
+        for (const bool turned : {false, true}) {
+            BOOST_TEST(!swing(true, turned, spin), (turned ? "along x, " : "along y, ") << spin);
+            BOOST_TEST(swing(false, turned, spin), (turned ? "along x, " : "along y, ") << spin);
+        }
 }
 
 // Oracle: DD29's interpolation of the velocities to the time of impact, v_0 + t (v_1 - v_0) and
