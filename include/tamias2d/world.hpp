@@ -190,7 +190,8 @@ class TAMIAS2D_EXPORT World {
     void set_transform(BodyId body, Vec2d origin, double angle);
     /// Sets the velocity (m s^-1) of the centre of mass; ignored for static bodies.
     void set_velocity(BodyId body, Vec2d v);
-    /// Sets the angular velocity (rad s^-1); ignored for static bodies.
+    /// Sets the angular velocity (rad s^-1); ignored for static bodies and for a dynamic body
+    /// under the angular lock (DD39, BodyDef::fixed_rotation: nothing turns it).
     void set_angular_velocity(BodyId body, double omega);
     /// \srs{IM5} Sets the damping rates (s^-1, >= 0: DCX_damping) of BodyDef::linear_damping
     /// and BodyDef::angular_damping; they act on dynamic bodies only.
