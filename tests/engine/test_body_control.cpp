@@ -123,6 +123,24 @@ BOOST_AUTO_TEST_CASE(type_changes_follow_r2,
     }
 }
 
+// Oracle: set_body_type's statement that a body made static stops, its velocities and one-step
+// loads zero: a body given a one-step force and torque, then made static, is in the state of
+// the same body made static without them, so the two worlds write the same snapshot bytes.
+BOOST_AUTO_TEST_CASE(a_body_made_static_keeps_no_one_step_load, *utf::label("reliability")) {
+    const auto made_static = [](bool loaded) {
+        World w(WorldDef{.gravity = {0.0, -10.0}});
+        const BodyId b = box(w, 0.0, 10.0);
+        if (loaded) {
+            w.apply_force(b, {3.0, -2.0}, {0.25, 10.0});
+            w.apply_torque(b, 1.5);
+        }
+        w.set_body_type(b, BodyType::static_body);
+        return w.snapshot();
+    };
+    const std::vector<std::byte> plain = made_static(false);
+    BOOST_TEST((made_static(true) == plain));
+}
+
 // Oracle: the handles, user data, joints and settings given before the change, and the rule
 // that the body's contacts go (with an end event) and come back with the next step.
 BOOST_AUTO_TEST_CASE(type_changes_keep_handles_joints_and_find_contacts_again) {

@@ -153,6 +153,27 @@ BOOST_AUTO_TEST_CASE(locks_stop_their_motion_at_once, *utf::label("DD39") * utf:
     BOOST_TEST(w.state_hash() == before);
 }
 
+// Oracle: DD39's angular lock, "nothing turns it": an angular velocity set on a locked body is
+// ignored (as Box2D v3's b2Body_SetAngularVelocity does), so the body keeps its orientation
+// through the next steps and its kinetic energy is its translation's alone (DD15: 1/2 m v^2,
+// 3 kg at (1, 2) m/s: 7.5 J). Lifted, the lock lets the same call turn it.
+BOOST_AUTO_TEST_CASE(a_set_angular_velocity_does_not_turn_a_locked_body,
+                     *utf::label("DD39") * utf::label("DD15")) {
+    World w(WorldDef{.gravity = {0.0, 0.0}});
+    const BodyId b = w.create_body(
+        BodyDef{.angle = 0.25, .linear_velocity = {1.0, 2.0}, .fixed_rotation = true});
+    w.create_shape(b, box_shape(2.0, 1.0, Material{1.5, 0.0, 0.0}));
+    w.set_angular_velocity(b, 3.0);
+    BOOST_TEST(w.angular_velocity(b) == 0.0);
+    for (int i = 0; i < 10; ++i)
+        w.step(dt);
+    BOOST_TEST(w.orientation(b) == 0.25);
+    BOOST_TEST(w.kinetic_energy() == 7.5, boost::test_tools::tolerance(1e-14));
+    w.set_fixed_rotation(b, false);
+    w.set_angular_velocity(b, 3.0);
+    BOOST_TEST(w.angular_velocity(b) == 3.0);
+}
+
 // ----------------------------------------------------------------------------- DD41
 
 // Oracle: DD41's closed form. A 2 x 1 box (3 kg) moving at v = (1, 2) and turning at omega =
