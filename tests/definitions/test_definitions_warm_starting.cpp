@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "support/box_column.hpp"
 #include "tamias2d/world.hpp"
 
 namespace utf = boost::unit_test;
@@ -24,22 +25,10 @@ namespace {
 constexpr double dt = 1.0 / 60.0;
 constexpr int column_height = 4;
 
-/// A column of 1 m boxes (density 1, friction 0.6; four, few enough to stand without warm
-/// starting) standing on a static ground whose top face
-/// is y = 0, the boxes just touching: box k's centre at k + 0.5. Returns the boxes, bottom first.
+/// The column (support/box_column.hpp: boxes of 1 kg, friction 0.6, on a static ground whose
+/// top face is y = 0, just touching), four high: few enough to stand without warm starting.
 std::vector<BodyId> column(World& w) {
-    BodyDef g;
-    g.type = BodyType::static_body;
-    g.position = {0.0, -0.5};
-    w.create_shape(w.create_body(g), box_shape(20.0, 1.0, Material{1.0, 0.0, 0.6}));
-    std::vector<BodyId> boxes;
-    for (int k = 0; k < column_height; ++k) {
-        BodyDef d;
-        d.position = {0.0, k + 0.5};
-        boxes.push_back(w.create_body(d));
-        w.create_shape(boxes.back(), box_shape(1.0, 1.0, Material{1.0, 0.0, 0.6}));
-    }
-    return boxes;
+    return test::build_box_column(w, column_height);
 }
 
 /// How far the top box has sunk (m) below where it stood: the sum of the column's overlaps.

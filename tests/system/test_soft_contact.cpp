@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "properties/random_scenes.hpp"
+#include "support/box_column.hpp"
 #include "tamias2d/world.hpp"
 
 namespace utf = boost::unit_test;
@@ -311,26 +312,16 @@ BOOST_AUTO_TEST_CASE(a_crowd_of_contacts_conserves_linear_momentum,
 }
 
 namespace {
-/// A stack of `layers` unit boxes (1 kg each, friction 0.6, C_R = 0) on a static ground whose
-/// top face is y = 0, in a world with the given linear slop and every manifold computed afresh
-/// (each separation is then the shapes' own overlap), stepped 20 s at 60 Hz (sleeping off, the
-/// default): each box's centre height, the lowest first.
+/// A column of `layers` unit boxes (support/box_column.hpp: 1 kg each, friction 0.6, C_R = 0,
+/// on a static ground whose top face is y = 0) in a world with the given linear slop and every
+/// manifold computed afresh (each separation is then the shapes' own overlap), stepped 20 s at
+/// 60 Hz (sleeping off, the default): each box's centre height, the lowest first.
 std::vector<double> resting_heights(int layers, double slop) {
     WorldDef def;
     def.linear_slop = slop;
     def.manifold_reuse_distance = 0.0;
     World world(def);
-    BodyDef gd;
-    gd.type = BodyType::static_body;
-    gd.position = {0.0, -0.5};
-    world.create_shape(world.create_body(gd), box_shape(10.0, 1.0, Material{1.0, 0.0, 0.6}));
-    std::vector<BodyId> boxes;
-    for (int i = 0; i < layers; ++i) {
-        BodyDef bd;
-        bd.position = {0.0, 0.5 + i}; // touching the box below
-        boxes.push_back(world.create_body(bd));
-        world.create_shape(boxes.back(), box_shape(1.0, 1.0, Material{1.0, 0.0, 0.6}));
-    }
+    const std::vector<BodyId> boxes = test::build_box_column(world, layers);
     for (int k = 0; k < 1200; ++k)
         world.step(1.0 / 60.0);
     std::vector<double> y;
