@@ -174,6 +174,21 @@ BOOST_AUTO_TEST_CASE(a_set_angular_velocity_does_not_turn_a_locked_body,
     BOOST_TEST(w.angular_velocity(b) == 3.0);
 }
 
+// Oracle: DD15, 1/2 m v^2 + 1/2 I omega^2, for a dynamic body without shapes: a point of the
+// default mass (1 kg) and no moment of inertia (I = 0), moving at 3 m/s and turning at 2 rad/s,
+// carries 4.5 J, its translation's alone, before and after a step.
+BOOST_AUTO_TEST_CASE(a_turning_point_mass_carries_only_its_translations_energy,
+                     *utf::label("DD15")) {
+    World w(WorldDef{.gravity = {0.0, 0.0}});
+    const BodyId b = w.create_body(BodyDef{.linear_velocity = {3.0, 0.0}, .angular_velocity = 2.0});
+    BOOST_TEST_REQUIRE(w.mass(b) == 1.0);
+    BOOST_TEST_REQUIRE(w.inertia(b) == 0.0);
+    BOOST_TEST(w.kinetic_energy() == 4.5);
+    w.step(dt);
+    BOOST_TEST(w.angular_velocity(b) == 2.0);
+    BOOST_TEST(w.kinetic_energy() == 4.5);
+}
+
 // ----------------------------------------------------------------------------- DD41
 
 // Oracle: DD41's closed form. A 2 x 1 box (3 kg) moving at v = (1, 2) and turning at omega =

@@ -1,7 +1,7 @@
 // DD20 (the distance joint's constraint), checked against hand values: the axis and the
-// position error of a 3-4-5 triangle, the velocity error along the axis by Chasles' theorem,
-// and the rigid impulse that stops the anchors' relative motion along the axis while keeping
-// the total linear momentum.
+// position error of a 3-4-5 triangle and of coincident anchors, the velocity error along the axis
+// by Chasles' theorem, and the rigid impulse that stops the anchors' relative motion along the axis
+// while keeping the total linear momentum.
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
@@ -28,6 +28,16 @@ BOOST_AUTO_TEST_CASE(axis_and_errors_hand_values, *utf::label("DD20")) {
     const dd20::Velocities B{vec_from_values<Velocity>(1.0, 1.0), AngularVelocity::from_value(0.0)};
     const Velocity c_dot = dd20::velocity_error(A, 2.0 * metre, B, 0.0 * metre, a.n);
     BOOST_TEST(c_dot.value() == -0.6, tt::tolerance(1e-15));
+}
+
+// Oracle: DD20's convention for anchors that coincide: d = 0 has length 0 and no direction of
+// its own, so the axis is (1, 0) (any axis holds), never 0 / 0; against L = 1, C = -1.
+BOOST_AUTO_TEST_CASE(coincident_anchors_take_the_x_axis, *utf::label("DD20")) {
+    const dd20::Axis a = dd20::axis(vec_from_values<Length>(0.0, 0.0));
+    BOOST_TEST(a.length.value() == 0.0);
+    BOOST_TEST(a.n.x == 1.0);
+    BOOST_TEST(a.n.y == 0.0);
+    BOOST_TEST(dd20::position_error(a, 1.0 * metre).value() == -1.0);
 }
 
 // Oracle: the rigid impulse's defining property: applied, it leaves the velocity error along
