@@ -139,7 +139,7 @@ BOOST_AUTO_TEST_CASE(bad_alloc_in_any_allocation_of_a_step_leaves_a_valid_world,
 // Oracle: the pairs the broad phase reports once (it forgets a shape's move when it reports its
 // new pairs): a step that a bad_alloc stops while the new pairs are examined, before any body
 // moved, must leave the pairs it did not reach for the next step, so that the next step finds
-// every pair a world without the failure finds in its first step. Checked at each allocation of
+// every pair a world without the failure finds in that step. Checked at each allocation of
 // every allocating step, failing once, where the bodies are left exactly as before the step:
 // the next step's touching pairs are the twin world's. A snapshot taken then holds the pairs
 // left (the snapshot's promise: a world read from it continues with the same bits).
