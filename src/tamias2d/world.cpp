@@ -465,9 +465,7 @@ void World::set_angular_velocity(BodyId id, double omega) {
     Body& b = impl_->bodies.get(id);
     require_within("angular_velocity", omega, supported::input_max, "rad s^-1");
     // \srs{DD39} Under the angular lock nothing turns a dynamic body, a set velocity included.
-    const bool locked =
-        b.type == BodyType::dynamic && impl_->bodies.settings[id.index].fixed_rotation;
-    if (b.type != BodyType::static_body && !locked)
+    if (b.type != BodyType::static_body && !impl_->bodies.angularly_locked(id.index))
         b.w = omega;
     impl_->bodies.wake(id.index);
 }

@@ -579,7 +579,7 @@ void BodyStore::update_mass_keeping_motion(std::uint32_t i, ShapeStore& shapes) 
     const Vec2d shift = b.center - center_before;
     if (shift.x != 0.0 || shift.y != 0.0) // (else v + 0 could turn a -0 into +0)
         b.v = bridge::shifted_center_velocity(b.v, b.w, shift);
-    if (b.type == BodyType::dynamic && settings[i].fixed_rotation)
+    if (angularly_locked(i))
         b.w = 0.0;
     if (b.type == BodyType::dynamic)
         b.v = bridge::locked_velocity(b.v, settings[i].lock_linear_x, settings[i].lock_linear_y);

@@ -147,6 +147,10 @@ struct BodyStore {
     bool linearly_locked(std::uint32_t i) const {
         return settings[i].lock_linear_x || settings[i].lock_linear_y;
     }
+    /// Whether body i is dynamic under the angular lock (DD39): nothing turns it.
+    bool angularly_locked(std::uint32_t i) const {
+        return bodies[i].type == BodyType::dynamic && settings[i].fixed_rotation;
+    }
     /// Body i's type becomes `type`: velocities and one-step loads zero for a static body, the
     /// mass recomputed (update_mass), the damping flag and the sleep state to match (woken if
     /// movable and enabled; neither awake nor movable if static).
