@@ -36,25 +36,37 @@ bool finite_world(const World& w) {
     return std::isfinite(w.kinetic_energy());
 }
 
+/// The busy world after `before` steps.
+World busy_world_after(int before) {
+    World w = reliability::busy_world();
+    for (int s = 0; s < before; ++s)
+        w.step(1.0 / 60.0);
+    return w;
+}
+
+/// Steps `w` with its Nth allocation failing (once, or for good): whether the step threw
+/// std::bad_alloc.
+bool step_failing_at(World& w, long n, bool once) {
+    bool threw = false;
+    test::fail_allocation_after(n, once);
+    try {
+        w.step(1.0 / 60.0);
+    } catch (const std::bad_alloc&) {
+        threw = true;
+    }
+    test::stop_failing();
+    return threw;
+}
+
 /// Fails the Nth allocation (N = 0, 1, ...) of the step after `before` steps, for every N
 /// until the step needs fewer; after each failure the world must be valid (see above).
 void sweep(int before, bool once) {
     int failures = 0, unchanged = 0;
     for (long n = 0;; ++n) {
-        World w = reliability::busy_world();
-        for (int s = 0; s < before; ++s)
-            w.step(1.0 / 60.0);
+        World w = busy_world_after(before);
         const std::vector<BodyId> bodies = w.bodies();
         const std::uint64_t hash = w.state_hash();
-        bool threw = false;
-        test::fail_allocation_after(n, once);
-        try {
-            w.step(1.0 / 60.0);
-        } catch (const std::bad_alloc&) {
-            threw = true;
-        }
-        test::stop_failing();
-        if (!threw) {
+        if (!step_failing_at(w, n, once)) {
             BOOST_TEST_MESSAGE("step " << before + 1 << (once ? ", one failure: " : ": ")
                                        << failures << " failure points, " << unchanged
                                        << " left the world as before the step");
@@ -147,24 +159,11 @@ BOOST_AUTO_TEST_CASE(a_step_stopped_by_bad_alloc_leaves_no_new_pair_unexamined,
                      *utf::label("reliability")) {
     int compared = 0;
     for (const int before : allocating_steps()) {
-        World twin = reliability::busy_world();
-        for (int s = 0; s <= before; ++s)
-            twin.step(1.0 / 60.0);
-        const auto expected = touching_pairs(twin);
+        const auto expected = touching_pairs(busy_world_after(before + 1));
         for (long n = 0;; ++n) {
-            World w = reliability::busy_world();
-            for (int s = 0; s < before; ++s)
-                w.step(1.0 / 60.0);
+            World w = busy_world_after(before);
             const std::vector<std::uint64_t> motion = motion_bits(w);
-            bool threw = false;
-            test::fail_allocation_after(n, true);
-            try {
-                w.step(1.0 / 60.0);
-            } catch (const std::bad_alloc&) {
-                threw = true;
-            }
-            test::stop_failing();
-            if (!threw)
+            if (!step_failing_at(w, n, true))
                 break;
             if (motion_bits(w) != motion)
                 continue; // stopped after the bodies moved: the step was partly done
