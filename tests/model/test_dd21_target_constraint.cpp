@@ -33,4 +33,17 @@ BOOST_AUTO_TEST_CASE(clamp_hand_values, *utf::label("DD21")) {
     BOOST_TEST(halved.y.value() == 2.0, tt::tolerance(1e-15));
 }
 
+// Oracle: DD21's bound with F_max = 0 (a motor joint may have no force, DD26): the joint never
+// pulls, so an accumulated impulse of zero stays exactly zero, never 0 / 0.
+BOOST_AUTO_TEST_CASE(a_zero_limit_keeps_a_zero_impulse, *utf::label("DD21")) {
+    const Vec2<Impulse> zero = vec_from_values<Impulse>(0.0, 0.0);
+    const Vec2<Impulse> kept = dd21::clamp(zero, Impulse::from_value(0.0));
+    BOOST_TEST(kept.x.value() == 0.0);
+    BOOST_TEST(kept.y.value() == 0.0);
+    const Vec2<Impulse> stopped =
+        dd21::clamp(vec_from_values<Impulse>(3.0, 4.0), Impulse::from_value(0.0));
+    BOOST_TEST(stopped.x.value() == 0.0);
+    BOOST_TEST(stopped.y.value() == 0.0);
+}
+
 BOOST_AUTO_TEST_SUITE_END()

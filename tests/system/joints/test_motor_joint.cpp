@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "system/system_support.hpp"
 
@@ -82,6 +83,53 @@ BOOST_AUTO_TEST_CASE(settles_on_the_target_pose,
                                                   << turn_error << " rad");
     BOOST_TEST(norm(world.position(box) - target) <= 1e-9);
     BOOST_TEST(std::abs(turn_error) <= 1e-9);
+}
+
+// Oracle: DD26 with F_max = tau_max = 0 (DD21's bound F_max h = 0): the joint never pushes or
+// turns, so its bodies move as free bodies do: bit for bit as in a twin world without the joint
+// (the same bodies in the same order), and the joint reports no reaction. One pair starts on its
+// target pose at rest (a zero impulse against a zero bound), the other off it and moving.
+BOOST_AUTO_TEST_CASE(a_motor_without_force_or_torque_leaves_its_bodies_free,
+                     *utf::label("DD26") * utf::label("DD21") * utf::label("LC3")) {
+    struct Pair {
+        Vec2d offset, velocity_b;
+        double omega_b;
+    };
+    for (const Pair& pair :
+         {Pair{{2.0, 0.0}, {0.0, 0.0}, 0.0}, Pair{{3.0, 1.0}, {-1.0, 2.0}, 1.5}}) {
+        World joined(WorldDef{.enable_sleep = false}), free(WorldDef{.enable_sleep = false});
+        std::vector<BodyId> bodies[2];
+        for (World* w : {&joined, &free}) {
+            const BodyId a = w->create_body(BodyDef{});
+            w->create_shape(a, box_shape(0.5, 0.5));
+            const BodyId b = w->create_body(BodyDef{.position = {2.0, 0.0}});
+            w->create_shape(b, box_shape(0.5, 0.5));
+            w->set_velocity(b, pair.velocity_b);
+            w->set_angular_velocity(b, pair.omega_b);
+            bodies[w == &free].assign({a, b});
+        }
+        const JointId j = joined.create_joint(MotorJointDef{.body_a = bodies[0][0],
+                                                            .body_b = bodies[0][1],
+                                                            .linear_offset = pair.offset,
+                                                            .max_force = 0.0,
+                                                            .max_torque = 0.0});
+        for (int k = 0; k < 60; ++k) {
+            joined.step(1.0 / 60.0);
+            free.step(1.0 / 60.0);
+        }
+        for (int i = 0; i < 2; ++i) {
+            const BodyState s = joined.state(bodies[0][i]), t = free.state(bodies[1][i]);
+            BOOST_TEST(s.position.x == t.position.x);
+            BOOST_TEST(s.position.y == t.position.y);
+            BOOST_TEST(s.velocity.x == t.velocity.x);
+            BOOST_TEST(s.velocity.y == t.velocity.y);
+            BOOST_TEST(s.orientation == t.orientation);
+            BOOST_TEST(s.angular_velocity == t.angular_velocity);
+        }
+        BOOST_TEST(joined.joint_reaction_force(j).x == 0.0);
+        BOOST_TEST(joined.joint_reaction_force(j).y == 0.0);
+        BOOST_TEST(joined.joint_reaction_torque(j) == 0.0);
+    }
 }
 
 BOOST_AUTO_TEST_SUITE_END()
