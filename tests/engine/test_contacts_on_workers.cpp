@@ -18,8 +18,8 @@ namespace {
 
 /// The state hash after each of 12 steps of a pyramid of 48 rows (1176 boxes) with a damped
 /// box thrown into its side, on `workers` threads with `regions` contact regions.
-std::vector<std::uint64_t> hashes(int workers, int regions) {
-    World world(WorldDef{.gravity = {0.0, -10.0}, .contact_regions = regions, .workers = workers});
+std::vector<std::uint64_t> hashes(int workers, int regions, Vec2d gravity = {0.0, -10.0}) {
+    World world(WorldDef{.gravity = gravity, .contact_regions = regions, .workers = workers});
     test::build_pyramid(world, 48);
     BodyDef thrown;
     thrown.position = {-30.0, 3.0};
@@ -48,6 +48,15 @@ BOOST_AUTO_TEST_CASE(a_large_pile_gives_one_threads_bits, *utf::label("determini
             }
         }
     }
+}
+
+// Oracle: the determinism rule under a gravity along neither axis, where the regions' cut
+// (across gravity) weighs both coordinates: one thread prepares the bodies in sequence, two in
+// blocks, and both must place every body at the same cut.
+BOOST_AUTO_TEST_CASE(a_pile_under_a_slanted_gravity_gives_one_threads_bits,
+                     *utf::label("determinism")) {
+    const Vec2d slanted{-3.0, -10.0};
+    BOOST_TEST(hashes(2, 2, slanted) == hashes(1, 2, slanted), boost::test_tools::per_element());
 }
 
 BOOST_AUTO_TEST_SUITE_END()
