@@ -31,6 +31,7 @@ struct Level {
     World world;
     ShapeId platform;
     BodyId box;
+    ShapeId box_shape_id;
     explicit Level(WorldDef def = {}) : world(def) {
         BodyDef sd;
         sd.type = BodyType::static_body;
@@ -41,7 +42,7 @@ struct Level {
         BodyDef bd;
         bd.position = {0.0, half_height};
         box = world.create_body(bd);
-        world.create_shape(box, box_shape(0.5, 0.5, Material{1.0, 0.0, 0.5}));
+        box_shape_id = world.create_shape(box, box_shape(0.5, 0.5, Material{1.0, 0.0, 0.5}));
     }
     /// The one-way rule: a contact with the platform is solved only when its normal pushes the
     /// other body up (the normal runs from shape_a into shape_b).
@@ -216,6 +217,39 @@ BOOST_AUTO_TEST_CASE(a_refused_pair_ends_and_an_accepted_one_begins_again) {
     BOOST_TEST_REQUIRE(touched > 0); // it reached the floor and was refused
     BOOST_TEST(begun == 0);
     BOOST_TEST(ended == 0);
+}
+
+// Oracle: the callback's stated rule: a refused contact's manifold is emptied, so the next
+// narrow phase computes it afresh and no point keeps the impulse of the steps before (no warm
+// start). A twin world whose box is filtered out of the floor for that step (DD27: the contact
+// removed) and let in again meets the floor the next step as a new pair, also without a warm
+// start: every step after gives the same bits. The resting box's contact carries an impulse
+// (its weight), so a warm start from it would show.
+BOOST_AUTO_TEST_CASE(a_refused_pair_starts_again_without_a_warm_start) {
+    Level refused, filtered;
+    for (Level* l : {&refused, &filtered})
+        for (int i = 0; i < 30; ++i)
+            l->world.step(dt);
+    BOOST_TEST_REQUIRE(refused.world.contacts().size() == 1u); // resting on the floor
+    bool refuse = true;
+    refused.world.set_pre_solve([&](const PreSolveContact&) { return !refuse; });
+    refused.world.step(dt);
+    refuse = false;
+    const Filter admits = filtered.world.filter(filtered.box_shape_id);
+    filtered.world.set_filter(filtered.box_shape_id, Filter{.mask_bits = 0});
+    filtered.world.step(dt);
+    filtered.world.set_filter(filtered.box_shape_id, admits);
+    for (int i = 0; i < 10; ++i) {
+        refused.world.step(dt);
+        filtered.world.step(dt);
+        const BodyState a = refused.world.state(refused.box),
+                        b = filtered.world.state(filtered.box);
+        BOOST_TEST_REQUIRE(a.position.y == b.position.y);
+        BOOST_TEST_REQUIRE(a.velocity.y == b.velocity.y);
+        BOOST_TEST_REQUIRE(a.position.x == b.position.x);
+        BOOST_TEST_REQUIRE(a.orientation == b.orientation);
+    }
+    BOOST_TEST(refused.world.contacts().size() == 1u); // resting again
 }
 
 // Oracle: the stated rule for an exception of the callback: the step finishes with the
