@@ -1,10 +1,12 @@
 // Plain pins four at once (PinPacks, pin_packs.hpp) against the joint pass they stand for: the
-// sequential Gauss-Seidel pass over the joints in creation order, each joint's warm start and
-// iterations by its kind's own scalar code (joint_solver.cpp). The packs, their levels and the
+// sequential Gauss-Seidel pass over the joints, each joint's warm start and iterations by its
+// kind's own scalar code (joint_solver.cpp), in creation order where the streams are levelled,
+// in the colours' order where they are coloured (chains). The packs, their levels and the
 // joints solved alone between them must give that pass's bits exactly: the bodies' velocities
 // and every joint's impulses. Random scenes mix plain pins with revolute joints that have a
 // motor or limits (solved alone), put the static body 0 in some lanes, give each joint its own
-// softness, and couple bodies as chains do (a joint on a body and the next) and at random.
+// softness, and couple bodies as chains do (a joint on a body and the next) and at random, or
+// as ropes only.
 #include <boost/test/unit_test.hpp>
 
 #include <cstdint>
@@ -27,7 +29,10 @@ struct Scene {
     std::vector<JointSim> sims; ///< creation order
 };
 
-Scene random_scene(std::uint32_t seed, std::uint32_t body_count, std::uint32_t joint_count) {
+/// `ropes`: every joint holds body k and k + 1 (k = 1, 2, ... in turn, one in ten on the
+/// immovable body 0 instead), so that each stream is a chain: one joint a level.
+Scene random_scene(std::uint32_t seed, std::uint32_t body_count, std::uint32_t joint_count,
+                   bool ropes = false) {
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> u(-1.0, 1.0), pos(0.5, 2.0), unit(0.0, 1.0);
     Scene s;
@@ -52,6 +57,10 @@ Scene random_scene(std::uint32_t seed, std::uint32_t body_count, std::uint32_t j
             b = a + 1; // a chain's next link
         if (a == b)
             b = a + 1 < body_count ? a + 1 : 1;
+        if (ropes) {
+            b = 1 + i % (body_count - 2);
+            a = unit(rng) < 0.1 ? 0 : b + 1;
+        }
         if (a == b)
             continue;
         Joint j;
@@ -97,21 +106,26 @@ Scene random_scene(std::uint32_t seed, std::uint32_t body_count, std::uint32_t j
 constexpr double h = 1.0 / 240.0;
 
 /// The oracle: rounds of the warm start, the soft iteration and the relax, each over the joints
-/// one after another in creation order.
-void sequential(Scene& s, int rounds) {
+/// one after another in `order` (their indices; empty: creation order).
+void sequential(Scene& s, int rounds, const std::vector<std::uint32_t>& order = {}) {
+    std::vector<JointSim*> sims;
+    for (std::size_t k = 0; k < s.sims.size(); ++k)
+        sims.push_back(&s.sims[order.empty() ? k : order[k]]);
     for (int r = 0; r < rounds; ++r) {
-        for (JointSim& sim : s.sims)
-            warm_start_joint(sim, s.joints[sim.joint], s.bodies);
-        for (JointSim& sim : s.sims)
-            solve_joint(sim, s.joints[sim.joint], s.bodies, h, true);
-        for (JointSim& sim : s.sims)
-            solve_joint(sim, s.joints[sim.joint], s.bodies, h, false);
+        for (JointSim* sim : sims)
+            warm_start_joint(*sim, s.joints[sim->joint], s.bodies);
+        for (JointSim* sim : sims)
+            solve_joint(*sim, s.joints[sim->joint], s.bodies, h, true);
+        for (JointSim* sim : sims)
+            solve_joint(*sim, s.joints[sim->joint], s.bodies, h, false);
     }
 }
 
 /// The same rounds through PinPacks: the joints ordered into streams [bounds[i], bounds[i+1]),
-/// the records in that order, each stream's runs in turn. Returns the packs made.
-std::size_t packed(Scene& s, std::span<const std::uint32_t> bounds, int rounds) {
+/// the records in that order, each stream's runs in turn. Returns the packs made; `order`, if
+/// given, receives the joints' order.
+std::size_t packed(Scene& s, std::span<const std::uint32_t> bounds, int rounds,
+                   std::vector<std::uint32_t>* order = nullptr) {
     memory::vector<SolvedJoint> solved;
     for (const JointSim& sim : s.sims)
         solved.push_back({sim.joint, sim.solver_a, sim.solver_b,
@@ -127,8 +141,11 @@ std::size_t packed(Scene& s, std::span<const std::uint32_t> bounds, int rounds) 
     BOOST_TEST_REQUIRE(
         std::memcmp(again.data(), solved.data(), solved.size() * sizeof(SolvedJoint)) == 0);
     std::vector<JointSim> records;
-    for (const SolvedJoint& sj : solved)
+    for (const SolvedJoint& sj : solved) {
         records.push_back(s.sims[sj.joint]);
+        if (order != nullptr)
+            order->push_back(sj.joint);
+    }
     // Each pack's lanes as the step solver fills them, from what each pin's record holds.
     for (std::size_t p = 0; p < packs.pack_count(); ++p) {
         for (int lane = 0; lane < wide_lanes; ++lane) {
@@ -179,6 +196,27 @@ bool same_bits(double a, double b) {
     return std::memcmp(&a, &b, sizeof a) == 0;
 }
 
+/// Every body's velocities and every joint's impulses, bit for bit.
+void check_same_bits(const Scene& run, const Scene& seq) {
+    for (std::size_t k = 0; k < seq.bodies.size(); ++k) {
+        BOOST_TEST_CONTEXT("body " << k) {
+            BOOST_TEST(same_bits(run.bodies[k].v.x, seq.bodies[k].v.x));
+            BOOST_TEST(same_bits(run.bodies[k].v.y, seq.bodies[k].v.y));
+            BOOST_TEST(same_bits(run.bodies[k].w, seq.bodies[k].w));
+        }
+    }
+    for (std::size_t k = 0; k < seq.sims.size(); ++k) {
+        BOOST_TEST_CONTEXT("joint " << k) {
+            const JointStepState &a = run.sims[k].step, &b = seq.sims[k].step;
+            BOOST_TEST(same_bits(a.linear_impulse.x, b.linear_impulse.x));
+            BOOST_TEST(same_bits(a.linear_impulse.y, b.linear_impulse.y));
+            BOOST_TEST(same_bits(a.motor_impulse, b.motor_impulse));
+            BOOST_TEST(same_bits(a.lower_impulse, b.lower_impulse));
+            BOOST_TEST(same_bits(a.upper_impulse, b.upper_impulse));
+        }
+    }
+}
+
 } // namespace
 
 BOOST_AUTO_TEST_SUITE(pin_packs)
@@ -199,45 +237,84 @@ BOOST_AUTO_TEST_CASE(packs_reproduce_the_sequential_joint_pass, *utf::label("int
                     two_streams ? std::vector<std::uint32_t>{0, n / 2, n}
                                 : std::vector<std::uint32_t>{0, n};
                 packs_made += packed(run, bounds, 3);
-                for (std::size_t k = 0; k < seq.bodies.size(); ++k) {
-                    BOOST_TEST_CONTEXT("body " << k) {
-                        BOOST_TEST(same_bits(run.bodies[k].v.x, seq.bodies[k].v.x));
-                        BOOST_TEST(same_bits(run.bodies[k].v.y, seq.bodies[k].v.y));
-                        BOOST_TEST(same_bits(run.bodies[k].w, seq.bodies[k].w));
-                    }
-                }
-                for (std::size_t k = 0; k < seq.sims.size(); ++k) {
-                    BOOST_TEST_CONTEXT("joint " << k) {
-                        const JointStepState &a = run.sims[k].step, &b = seq.sims[k].step;
-                        BOOST_TEST(same_bits(a.linear_impulse.x, b.linear_impulse.x));
-                        BOOST_TEST(same_bits(a.linear_impulse.y, b.linear_impulse.y));
-                        BOOST_TEST(same_bits(a.motor_impulse, b.motor_impulse));
-                        BOOST_TEST(same_bits(a.lower_impulse, b.lower_impulse));
-                        BOOST_TEST(same_bits(a.upper_impulse, b.upper_impulse));
-                    }
-                }
+                check_same_bits(run, seq);
             }
         }
     }
     BOOST_TEST(packs_made > 100u); // the scenes do fill packs
 }
 
-// Oracle: the stated rule for a chain's shape: a stream whose levels hold fewer than four
-// joints on average keeps the creation order, as one run of joints solved alone.
-BOOST_AUTO_TEST_CASE(a_chain_keeps_the_creation_order, *utf::label("internals")) {
+// Oracle: the stated rule for a chain's shape (pin_packs.hpp): its levels hold one joint each,
+// so it is coloured; in creation order link k takes the lowest colour neither of its bodies
+// has, 0 for the even links and 1 for the odd ones. Each colour runs as a level: 50 links, 12
+// packs of four in creation order, then the last two alone.
+BOOST_AUTO_TEST_CASE(a_chain_is_solved_by_colour, *utf::label("internals")) {
     memory::vector<SolvedJoint> chain;
     for (std::uint32_t k = 0; k < 100; ++k)
-        chain.push_back({k, k, k + 1, 1, 0, 0});
-    const memory::vector<SolvedJoint> before = chain;
+        chain.push_back({k, k + 1, k + 2, 1, 0, 0});
     PinPacks packs;
     const std::uint32_t bounds[] = {0, 100};
     packs.order(chain, bounds, 102);
-    BOOST_TEST(packs.pack_count() == 0u);
+    BOOST_TEST(packs.pack_count() == 24u);
     BOOST_TEST_REQUIRE(packs.streams() == 1u);
-    BOOST_TEST_REQUIRE(packs.runs(0).size() == 1u);
-    BOOST_TEST(packs.runs(0)[0].count == 100u);
-    for (std::size_t k = 0; k < 100; ++k)
-        BOOST_TEST(chain[k].joint == before[k].joint);
+    BOOST_TEST_REQUIRE(packs.runs(0).size() == 4u); // each colour's packs, then its two singles
+    for (std::uint32_t colour = 0; colour < 2; ++colour) {
+        const PinRun& in_packs = packs.runs(0)[2 * colour];
+        const PinRun& alone = packs.runs(0)[2 * colour + 1];
+        BOOST_TEST((in_packs.packed && in_packs.count == 48u && in_packs.first == 50 * colour));
+        BOOST_TEST((!alone.packed && alone.count == 2u && alone.first == 50 * colour + 48));
+    }
+    for (std::uint32_t k = 0; k < 100; ++k)
+        BOOST_TEST(chain[k].joint == (k < 50 ? 2 * k : 2 * (k - 50) + 1));
+}
+
+// Oracle: the same rule's exception: joints that all hold one body take a colour each, so the
+// colours are no wider than the levels, and past 64 colours none is given: both keep the
+// creation order, one run of joints solved alone.
+BOOST_AUTO_TEST_CASE(joints_around_one_body_keep_the_creation_order, *utf::label("internals")) {
+    for (const std::uint32_t n : {40u, 100u}) {
+        memory::vector<SolvedJoint> star;
+        for (std::uint32_t k = 0; k < n; ++k)
+            star.push_back({k, 1, k + 2, 1, 0, 0});
+        PinPacks packs;
+        const std::uint32_t bounds[] = {0, n};
+        packs.order(star, bounds, n + 2);
+        BOOST_TEST(packs.pack_count() == 0u);
+        BOOST_TEST_REQUIRE(packs.runs(0).size() == 1u);
+        BOOST_TEST(packs.runs(0)[0].count == n);
+        for (std::uint32_t k = 0; k < n; ++k)
+            BOOST_TEST(star[k].joint == k);
+    }
+}
+
+// Oracle: the sequential pass (joint_solver.cpp's scalar code) over the joints in the order the
+// packs give, bit for bit, for ropes (each stream a chain, so coloured), on one stream and on
+// two; and that order is not the creation order (the colours did reorder).
+BOOST_AUTO_TEST_CASE(coloured_packs_reproduce_the_sequential_pass_in_their_order,
+                     *utf::label("internals")) {
+    std::size_t packs_made = 0;
+    for (std::uint32_t seed = 1; seed <= 6; ++seed) {
+        for (const bool two_streams : {false, true}) {
+            BOOST_TEST_CONTEXT("seed " << seed << (two_streams ? ", two streams" : "")) {
+                const Scene scene = random_scene(seed, 60 + seed * 13, 50 + seed * 11, true);
+                Scene run = scene;
+                const auto n = std::uint32_t(scene.sims.size());
+                const std::vector<std::uint32_t> bounds =
+                    two_streams ? std::vector<std::uint32_t>{0, n / 2, n}
+                                : std::vector<std::uint32_t>{0, n};
+                std::vector<std::uint32_t> order;
+                packs_made += packed(run, bounds, 3, &order);
+                bool reordered = false;
+                for (std::uint32_t k = 0; k < n; ++k)
+                    reordered = reordered || order[k] != k;
+                BOOST_TEST(reordered);
+                Scene seq = scene;
+                sequential(seq, 3, order);
+                check_same_bits(run, seq);
+            }
+        }
+    }
+    BOOST_TEST(packs_made > 50u);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -1,6 +1,7 @@
 #include "tamias2d/dynamics/joints/pin_packs.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cstring>
 
 #include "tamias2d/dynamics/bridge/joints.hpp"
@@ -114,7 +115,13 @@ void PinPacks::order_stream(const memory::vector<SolvedJoint>& solved, std::uint
     for (std::uint32_t k = first; k < last; ++k)
         mark_[solved[k].solver_a] = mark_[solved[k].solver_b] = 0;
     // Levels narrower than a pack on average (a chain: one joint a level) fill few packs: the
-    // stream keeps the creation order, one joint at a time (the same bits).
+    // stream is coloured instead, where that gives wider levels; else it keeps the creation
+    // order, one joint at a time.
+    if (std::uint64_t(n) < std::uint64_t(wide_lanes) * levels) {
+        const std::uint32_t colours = colour_stream(solved, first, last, body_count);
+        if (colours > 0)
+            levels = colours;
+    }
     if (std::uint64_t(n) < std::uint64_t(wide_lanes) * levels) {
         std::copy(solved.begin() + first, solved.begin() + last, ordered_.begin() + first);
         if (n > 0)
@@ -172,6 +179,35 @@ void PinPacks::order_stream(const memory::vector<SolvedJoint>& solved, std::uint
         begin = end;
     }
     stream_begin_.push_back(std::uint32_t(runs_.size()));
+}
+
+std::uint32_t PinPacks::colour_stream(const memory::vector<SolvedJoint>& solved,
+                                      std::uint32_t first, std::uint32_t last,
+                                      std::size_t body_count) {
+    if (colours_.size() < body_count)
+        colours_.resize(body_count, 0); // all zero between calls
+    std::uint32_t colours = 0;
+    std::uint32_t k = first;
+    for (; k < last; ++k) {
+        const SolvedJoint& s = solved[k];
+        // (The immovable body 0 takes no colour: any number of joints may hold it at once.)
+        const std::uint64_t taken = (s.solver_a != 0 ? colours_[s.solver_a] : 0) |
+                                    (s.solver_b != 0 ? colours_[s.solver_b] : 0);
+        const int c = std::countr_one(taken);
+        if (c == 64)
+            break;
+        level_of_[k - first] = std::uint32_t(c);
+        const std::uint64_t bit = std::uint64_t{1} << c;
+        if (s.solver_a != 0)
+            colours_[s.solver_a] |= bit;
+        if (s.solver_b != 0)
+            colours_[s.solver_b] |= bit;
+        colours = std::max(colours, std::uint32_t(c) + 1);
+    }
+    const bool coloured = k == last;
+    for (std::uint32_t i = first; i < k; ++i)
+        colours_[solved[i].solver_a] = colours_[solved[i].solver_b] = 0;
+    return coloured ? colours : 0;
 }
 
 void PinPacks::fill(std::size_t pack, int lane, const PinLane& pin) {

@@ -9,14 +9,22 @@
 // level's last one to three pins, are solved one by one. The static body 0 may sit in several
 // lanes of a pack: its inverse mass is 0, so every lane writes back its unchanged zeros.
 //
+// A stream whose levels hold fewer than four joints on average (a chain or a rope: one joint a
+// level) is coloured instead: in creation order each joint takes the lowest colour that no
+// joint before it on either moving body has, and the colours run in order, each as a level
+// (its joints share no moving body), so that a chain's even links and then its odd ones fill
+// packs. The Gauss-Seidel order is then the colours' (as Box2D v3 orders its joints), not the
+// creation order: a different order of the same iteration, which converges alike. A stream
+// whose colours are still fewer than four joints each on average (joints around one body), or
+// that needs more than 64 colours, keeps the creation order, one joint at a time.
+//
 // The solved joints are put in that order before their records are made (a packed pin has
 // none: its lane is filled from its joint), and a step whose solved joints, bodies and plain
-// pins are the last step's reuses its order without levelling again. A stream whose levels hold
-// fewer than four joints on average (a chain: one a level) keeps the creation order, one joint at a
-// time.
+// pins are the last step's reuses its order without ordering again.
 //
 // Why: a pin's solve is a chain of dependent scalar operations on two bodies; four unrelated
-// pins fill the four lanes of a pack of doubles (AVX2), as the contacts' packs do.
+// pins fill the four lanes of a pack of doubles (AVX2), as the contacts' packs do. A chain in
+// creation order is one long such chain (each link waits for the last); by colour it packs.
 #pragma once
 
 #include <cstdint>
@@ -102,9 +110,13 @@ class PinPacks {
     void solve(std::uint32_t first, std::uint32_t count, SolverBody* bodies, bool use_bias);
 
   private:
-    /// Levels and packs one stream, solved[first, last), into ordered_ and the runs.
+    /// Levels (or colours) and packs one stream, solved[first, last), into ordered_ and the runs.
     void order_stream(const memory::vector<SolvedJoint>& solved, std::uint32_t first,
                       std::uint32_t last, std::size_t body_count);
+    /// Each joint of solved[first, last) its colour in level_of_ (the lowest no earlier joint
+    /// on either moving body took); the number of colours, or 0 where one would exceed 64.
+    std::uint32_t colour_stream(const memory::vector<SolvedJoint>& solved, std::uint32_t first,
+                                std::uint32_t last, std::size_t body_count);
 
     LargeArray<PinPack> packs_;
     memory::vector<std::uint32_t> pack_first_; ///< per pack: its first record
@@ -115,7 +127,8 @@ class PinPacks {
     memory::vector<SolvedJoint> last_solved_, ordered_;
     memory::vector<std::uint32_t> last_bounds_;
     std::size_t last_body_count_ = 0;
-    memory::vector<std::uint32_t> mark_; ///< per solver body: one past its last level (scratch)
+    memory::vector<std::uint32_t> mark_;    ///< per solver body: one past its last level (scratch)
+    memory::vector<std::uint64_t> colours_; ///< per solver body: the colours its joints took
     memory::vector<std::uint32_t> level_of_, level_start_, sorted_; ///< order_stream's scratch
 };
 
