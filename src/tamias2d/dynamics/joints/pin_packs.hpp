@@ -14,7 +14,7 @@
 // joint before it on either moving body has, and the colours run in order, each as a level
 // (its joints share no moving body), so that a chain's even links and then its odd ones fill
 // packs. The Gauss-Seidel order is then the colours' (as Box2D v3 orders its joints), not the
-// creation order: a different order of the same iteration, which converges alike. A stream
+// creation order: a different order of the same iteration, as deterministic. A stream
 // whose colours are still fewer than four joints each on average (joints around one body), or
 // that needs more than 64 colours, keeps the creation order, one joint at a time.
 //
