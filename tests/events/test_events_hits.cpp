@@ -169,4 +169,77 @@ BOOST_AUTO_TEST_CASE(a_bouncing_ball_hits_ever_slower) {
     BOOST_TEST(speeds.back() > 1.0); // the threshold
 }
 
+// Oracle: uniform motion, closed form, and the event's rule that a hit's point pushed. A ball
+// without gravity whose lowest point is 0.019 m above the ground (inside the speculative
+// distance, 0.02 m) approaches at 0.6 m/s (above a threshold of 0.5 m/s): it reaches the ground
+// at t = 0.019 / 0.6 = 0.032 s, in the second step (dt = 0.0167 s). The first step's manifold
+// already holds its point, fast, but the ball is still 0.009 m away at that step's end, so the
+// point takes no impulse and no hit is reported; the second step reports the one hit, at 0.6
+// m/s.
+BOOST_AUTO_TEST_CASE(a_fast_point_that_does_not_arrive_within_the_step_is_no_hit,
+                     *utf::label("DD11")) {
+    World world(WorldDef{.gravity = {0.0, 0.0}, .enable_sleep = false});
+    world.set_hit_event_threshold(0.5);
+    BodyDef gd;
+    gd.type = BodyType::static_body;
+    gd.position = {0.0, -0.5};
+    world.create_shape(world.create_body(gd), box_shape(20.0, 1.0));
+    const double gap = 0.019, speed = 0.6;
+    BodyDef bd;
+    bd.position = {0.0, gap + radius};
+    bd.linear_velocity = {0.0, -speed};
+    ShapeDef disc = circle_shape(radius);
+    disc.enable_hit_events = true;
+    world.create_shape(world.create_body(bd), disc);
+    BOOST_TEST_REQUIRE(gap < WorldDef{}.speculative_distance);
+    BOOST_TEST_REQUIRE(gap / speed > dt);
+    BOOST_TEST_REQUIRE(gap / speed <= 2.0 * dt);
+    world.step(dt);
+    BOOST_TEST(world.contact_hit_events().empty());
+    world.step(dt);
+    BOOST_TEST_REQUIRE(world.contact_hit_events().size() == 1u);
+    BOOST_TEST(world.contact_hit_events()[0].approach_speed == speed,
+               boost::test_tools::tolerance(1e-12));
+}
+
+// Oracle: the event's rule, a hit's point approached faster than the threshold and pushed, on a
+// manifold of two points that each do one of the two. A 1 m x 0.2 m box stands on its left
+// bottom corner, tilted so that its right one is 0.019 m up, and turns about the corner
+// (gravity 10 m/s^2) with that corner at rest and the right one coming down at 0.6 m/s (a
+// threshold of 0.5 m/s). The left corner pushes (it bears the weight) but does not approach;
+// the right one approaches but, rigid-pivot closed form, is still up at the step's end (the
+// weight's torque about the corner turns it at alpha = g 0.5 m / 0.347 m^2 = 14.4 rad/s^2, so
+// theta = 0.019 - 0.6 dt - 14.4 dt^2 / 2 = 0.0070 rad): no hit in the first step. It lands in
+// the second: one hit, at the right corner (x = 1 m), faster than it started.
+BOOST_AUTO_TEST_CASE(a_point_that_pushes_without_approaching_is_no_hit, *utf::label("DD11")) {
+    World world(WorldDef{.gravity = {0.0, -g}, .enable_sleep = false});
+    world.set_hit_event_threshold(0.5);
+    BodyDef gd;
+    gd.type = BodyType::static_body;
+    gd.position = {0.0, -0.5};
+    world.create_shape(world.create_body(gd), box_shape(20.0, 1.0));
+    const double lift = 0.019, angle = std::asin(lift), c = std::cos(angle);
+    const double omega = -0.6 / c; // the right corner, 1 m from the left, comes down at 0.6 m/s
+    const Vec2d corner{-0.5 * c + 0.1 * lift, -0.5 * lift - 0.1 * c}; // left corner from centre
+    BodyDef bd;
+    bd.position = {-corner.x, -corner.y}; // the left corner at the origin
+    bd.angle = angle;
+    bd.angular_velocity = omega;
+    bd.linear_velocity = {omega * corner.y, -omega * corner.x}; // the left corner at rest
+    ShapeDef box = box_shape(1.0, 0.2);
+    box.enable_hit_events = true;
+    const BodyId body = world.create_body(bd);
+    world.create_shape(body, box);
+    world.step(dt);
+    BOOST_TEST_REQUIRE(world.contacts().size() == 1u);
+    BOOST_TEST_REQUIRE(world.contacts()[0].point_count == 2);
+    BOOST_TEST(world.orientation(body) > 0.0); // the right corner still up
+    BOOST_TEST(world.contact_hit_events().empty());
+    world.step(dt);
+    BOOST_TEST_REQUIRE(world.contact_hit_events().size() == 1u);
+    const ContactHitEvent& hit = world.contact_hit_events()[0];
+    BOOST_TEST(hit.point.x == 1.0, boost::test_tools::tolerance(0.01));
+    BOOST_TEST(hit.approach_speed > 0.6);
+}
+
 BOOST_AUTO_TEST_SUITE_END()
