@@ -377,8 +377,9 @@ class TAMIAS2D_EXPORT World {
     /// False for static bodies; true for all others while sleeping is off.
     bool is_awake(BodyId body) const;
     /// Puts the body to sleep (velocities, one-step loads and its time at rest zero, as for a
-    /// body defined asleep; no effect with sleeping off or on a static body), or wakes it. A body
-    /// put to sleep that touches an awake one wakes again at the next step.
+    /// body defined asleep; no effect with sleeping off or on a static body), or wakes it (its
+    /// time at rest starts again from zero, as after every wake). A body put to sleep that
+    /// touches an awake one wakes again at the next step.
     void set_awake(BodyId body, bool awake);
 
     // --- energy and momentum (SRS 5.2.7) ---

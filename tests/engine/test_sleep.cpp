@@ -155,6 +155,32 @@ BOOST_AUTO_TEST_CASE(a_body_enabled_again_rests_time_to_sleep_before_it_sleeps) 
     }
 }
 
+// Oracle: the rule (at rest for time_to_sleep), as above. A box woken by set_awake (world.hpp:
+// its time at rest starts again from zero) stays where it is, and sleeps only once it has
+// rested for time_to_sleep after it was woken: when it was asleep, and when it was awake and
+// had already rested for 20 steps (not 20 steps fewer).
+BOOST_AUTO_TEST_CASE(a_woken_body_rests_time_to_sleep_before_it_sleeps) {
+    for (const bool asleep : {true, false}) {
+        BOOST_TEST_CONTEXT((asleep ? "asleep" : "awake, at rest for 20 steps")) {
+            World w(def_with_sleep());
+            ground(w);
+            const BodyId b = box(w, 0.0, 0.5);
+            const int needed = int(std::ceil(w.settings().time_to_sleep / dt - 1e-9));
+            BOOST_TEST_REQUIRE(needed > 20);
+            if (asleep) {
+                BOOST_TEST_REQUIRE(steps_until_asleep(w, {b}, 300) > 0);
+            } else {
+                for (int k = 0; k < 20; ++k)
+                    w.step(dt);
+                BOOST_TEST_REQUIRE(w.is_awake(b));
+            }
+            w.set_awake(b, true);
+            BOOST_TEST(w.is_awake(b));
+            BOOST_TEST(steps_until_asleep(w, {b}, 300) >= needed);
+        }
+    }
+}
+
 // Oracle: the same scene with sleeping off. Until a body sleeps, sleeping changes nothing: a
 // pyramid whose bodies never reach time_to_sleep moves bit for bit as without sleeping.
 BOOST_AUTO_TEST_CASE(sleeping_changes_nothing_until_a_body_sleeps) {
