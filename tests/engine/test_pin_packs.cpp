@@ -245,9 +245,10 @@ BOOST_AUTO_TEST_CASE(packs_reproduce_the_sequential_joint_pass, *utf::label("int
 }
 
 // Oracle: the stated rule for a chain's shape (pin_packs.hpp): its levels hold one joint each,
-// so it is coloured; in creation order link k takes the lowest colour neither of its bodies
-// has, 0 for the even links and 1 for the odd ones. Each colour runs as a level: 50 links, 12
-// packs of four in creation order, then the last two alone.
+// so it is coloured, its colours holding more than four packs' worth; in creation order link k
+// takes the lowest colour neither of its bodies has, 0 for the even links and 1 for the odd
+// ones. Each colour runs as a level: 50 links, 12 packs of four in creation order, then the
+// last two alone.
 BOOST_AUTO_TEST_CASE(a_chain_is_solved_by_colour, *utf::label("internals")) {
     memory::vector<SolvedJoint> chain;
     for (std::uint32_t k = 0; k < 100; ++k)
@@ -268,22 +269,36 @@ BOOST_AUTO_TEST_CASE(a_chain_is_solved_by_colour, *utf::label("internals")) {
         BOOST_TEST(chain[k].joint == (k < 50 ? 2 * k : 2 * (k - 50) + 1));
 }
 
-// Oracle: the same rule's exception: joints that all hold one body take a colour each, so the
-// colours are no wider than the levels, and past 64 colours none is given: both keep the
-// creation order, one run of joints solved alone.
-BOOST_AUTO_TEST_CASE(joints_around_one_body_keep_the_creation_order, *utf::label("internals")) {
-    for (const std::uint32_t n : {40u, 100u}) {
-        memory::vector<SolvedJoint> star;
-        for (std::uint32_t k = 0; k < n; ++k)
-            star.push_back({k, 1, k + 2, 1, 0, 0});
+// Oracle: the same rule's exceptions, each keeping the creation order as one run of joints solved
+// alone: a chain of 30 links, whose two colours would hold 15 joints each, fewer than four
+// packs' worth; and joints that all hold one body, which take a colour each (no wider than the
+// levels), and past 64 colours none.
+BOOST_AUTO_TEST_CASE(a_short_chain_and_joints_around_one_body_keep_the_creation_order,
+                     *utf::label("internals")) {
+    const auto check = [](memory::vector<SolvedJoint> joints, std::size_t bodies) {
+        const auto n = std::uint32_t(joints.size());
         PinPacks packs;
         const std::uint32_t bounds[] = {0, n};
-        packs.order(star, bounds, n + 2);
+        packs.order(joints, bounds, bodies);
         BOOST_TEST(packs.pack_count() == 0u);
         BOOST_TEST_REQUIRE(packs.runs(0).size() == 1u);
         BOOST_TEST(packs.runs(0)[0].count == n);
         for (std::uint32_t k = 0; k < n; ++k)
-            BOOST_TEST(star[k].joint == k);
+            BOOST_TEST(joints[k].joint == k);
+    };
+    memory::vector<SolvedJoint> chain;
+    for (std::uint32_t k = 0; k < 30; ++k)
+        chain.push_back({k, k + 1, k + 2, 1, 0, 0});
+    BOOST_TEST_CONTEXT("a chain of 30") {
+        check(chain, 32);
+    }
+    for (const std::uint32_t n : {40u, 100u}) {
+        memory::vector<SolvedJoint> star;
+        for (std::uint32_t k = 0; k < n; ++k)
+            star.push_back({k, 1, k + 2, 1, 0, 0});
+        BOOST_TEST_CONTEXT(n << " joints on one body") {
+            check(star, n + 2);
+        }
     }
 }
 
@@ -296,7 +311,7 @@ BOOST_AUTO_TEST_CASE(coloured_packs_reproduce_the_sequential_pass_in_their_order
     for (std::uint32_t seed = 1; seed <= 6; ++seed) {
         for (const bool two_streams : {false, true}) {
             BOOST_TEST_CONTEXT("seed " << seed << (two_streams ? ", two streams" : "")) {
-                const Scene scene = random_scene(seed, 60 + seed * 13, 50 + seed * 11, true);
+                const Scene scene = random_scene(seed, 150 + seed * 13, 130 + seed * 11, true);
                 Scene run = scene;
                 const auto n = std::uint32_t(scene.sims.size());
                 const std::vector<std::uint32_t> bounds =

@@ -12,6 +12,11 @@ namespace tamias2d {
 
 namespace {
 
+// The packs a colour must fill on average for a chain to be coloured. A short chain gains
+// little from its few packs, and its creation order converges better where it holds a body far
+// heavier than its links (the benchmark's heavy chains).
+constexpr std::uint32_t colour_packs = 4;
+
 /// The lanes' pins from their centres in the world frame: each frame turned by its body's
 /// rotation now (joint_solver.hpp's anchor_a, four at once).
 inline Vec2<Wide> anchor(const Rot* const (&q)[wide_lanes], Vec2<Wide> frame) {
@@ -115,11 +120,11 @@ void PinPacks::order_stream(const memory::vector<SolvedJoint>& solved, std::uint
     for (std::uint32_t k = first; k < last; ++k)
         mark_[solved[k].solver_a] = mark_[solved[k].solver_b] = 0;
     // Levels narrower than a pack on average (a chain: one joint a level) fill few packs: the
-    // stream is coloured instead, where that gives wider levels; else it keeps the creation
-    // order, one joint at a time.
+    // stream is coloured instead where each colour fills several packs; else it keeps the
+    // creation order, one joint at a time.
     if (std::uint64_t(n) < std::uint64_t(wide_lanes) * levels) {
         const std::uint32_t colours = colour_stream(solved, first, last, body_count);
-        if (colours > 0)
+        if (colours > 0 && std::uint64_t(n) >= std::uint64_t(colour_packs * wide_lanes) * colours)
             levels = colours;
     }
     if (std::uint64_t(n) < std::uint64_t(wide_lanes) * levels) {

@@ -14,9 +14,10 @@
 // joint before it on either moving body has, and the colours run in order, each as a level
 // (its joints share no moving body), so that a chain's even links and then its odd ones fill
 // packs. The Gauss-Seidel order is then the colours' (as Box2D v3 orders its joints), not the
-// creation order: a different order of the same iteration, as deterministic. A stream
-// whose colours are still fewer than four joints each on average (joints around one body), or
-// that needs more than 64 colours, keeps the creation order, one joint at a time.
+// creation order: a different order of the same iteration, as deterministic. A stream whose
+// colours hold fewer than four packs' worth of joints each on average (a short chain, joints
+// around one body), or that needs more than 64 colours, keeps the creation order, one joint at
+// a time.
 //
 // The solved joints are put in that order before their records are made (a packed pin has
 // none: its lane is filled from its joint), and a step whose solved joints, bodies and plain
