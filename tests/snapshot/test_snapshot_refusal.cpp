@@ -523,6 +523,33 @@ BOOST_AUTO_TEST_CASE(a_shape_on_no_list_naming_a_body_past_the_last_is_refused,
     BOOST_TEST(e->field == "shapes[1].body", e->what());
 }
 
+// A body whose shape list starts one past the last shape is refused, naming the body's
+// first_shape, before any shape is looked up by that index. Oracle: the snapshot's rule for the
+// bodies' shape lists (body_store.cpp: the list holds live shapes of this body, each once); the
+// field is found as in the test above, by the second body's x.
+BOOST_AUTO_TEST_CASE(a_shape_list_starting_past_the_last_shape_is_refused,
+                     *utf::label("reliability")) {
+    World w;
+    for (const double x : {1.0, 7.8125})
+        w.create_shape(w.create_body({.position = {x, 0.0}}), circle_shape(0.25));
+    const std::vector<std::byte> good = w.snapshot();
+    const std::vector<std::byte> x = bytes(7.8125);
+    const auto [begin, end] = section_bytes(good, "BODY");
+    const auto it = std::search(good.begin() + std::ptrdiff_t(begin),
+                                good.begin() + std::ptrdiff_t(end), x.begin(), x.end());
+    BOOST_TEST_REQUIRE((it != good.begin() + std::ptrdiff_t(end)), "the second body's x");
+    const std::size_t first_shape = std::size_t(it - good.begin()) - 4;
+    BOOST_TEST_REQUIRE(u32_in(good, first_shape) == 1u, "the second body's first shape");
+    for (const std::uint32_t s : {2u, 3u}) { // the shape count, and one more
+        std::vector<std::byte> forged = good;
+        put_u32(forged, first_shape, s);
+        fix_checksum(forged);
+        const std::optional<SnapshotError> e = refusal(forged, "bodies[1]");
+        BOOST_TEST_REQUIRE(e.has_value(), "first_shape " << s << " accepted");
+        BOOST_TEST(e->field == "bodies[1].first_shape", e->what());
+    }
+}
+
 namespace {
 /// The offsets at which two snapshots of one length differ.
 std::vector<std::size_t> differing_bytes(const std::vector<std::byte>& a,
