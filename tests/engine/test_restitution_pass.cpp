@@ -125,4 +125,29 @@ BOOST_AUTO_TEST_CASE(a_pressed_point_under_the_threshold_is_held_at_rest,
     }
 }
 
+// Oracle: DD12 is defined for approaching points (v_i . n < 0), and restitution applies only
+// to points approaching faster than the threshold (WorldDef::restitution_threshold): strictly.
+// The bar falls flat (no spin) at exactly the 1 m/s threshold, so neither corner bounces and the
+// coefficient changes nothing: the elastic bar ends with the bits of a totally inelastic twin.
+// Falling at the next double above the threshold, both corners bounce (-C_R v_before).
+BOOST_AUTO_TEST_CASE(a_point_approaching_at_the_threshold_does_not_bounce, *utf::label("DD12")) {
+    SpinningBar elastic(1.0, 0.0, 1.0), inelastic(1.0, 0.0, 0.0);
+    BOOST_TEST(elastic.before[0] == -1.0); // closed form: the fall, on both corners
+    BOOST_TEST(elastic.before[1] == -1.0);
+    elastic.step();
+    inelastic.step();
+    BOOST_TEST_REQUIRE(elastic.c.points[0].max_normal_impulse > 0.0, "the corners are pressed");
+    BOOST_TEST_REQUIRE(elastic.c.points[1].max_normal_impulse > 0.0);
+    const SolverBody &e = elastic.bodies[1], &i = inelastic.bodies[1];
+    BOOST_TEST(e.v.x == i.v.x);
+    BOOST_TEST(e.v.y == i.v.y);
+    BOOST_TEST(e.w == i.w);
+    BOOST_TEST(std::abs(elastic.normal_velocity(0)) <= 1e-12, "stopped, not bounced");
+    SpinningBar faster(std::nextafter(1.0, 2.0), 0.0, 1.0);
+    faster.step();
+    for (int j = 0; j < 2; ++j)
+        BOOST_TEST(std::abs(faster.normal_velocity(j) - std::nextafter(1.0, 2.0)) <= 1e-12,
+                   "DD12: -C_R v_before at corner " << j);
+}
+
 BOOST_AUTO_TEST_SUITE_END()

@@ -10,6 +10,7 @@
 
 #include <bit>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <random>
 #include <span>
@@ -309,6 +310,58 @@ BOOST_AUTO_TEST_CASE(the_contact_report_after_a_restore_is_the_snapshots,
         differs_later = differs_later || k >= later.size() || !same(later[k], then[k]);
     }
     BOOST_TEST(differs_later); // so that a stale report could not pass
+}
+
+namespace {
+/// A box resting on a floor for 10 steps: sleeping off (so a wake changes nothing) and a
+/// restitution threshold no resting contact reaches (so the restitution pass applies nothing,
+/// whatever the coefficient). `change` runs between the steps and the snapshot.
+std::vector<std::byte> resting_box(double box_restitution, MaterialMixFunction mix,
+                                   const std::function<void(World&, ShapeId)>& change) {
+    WorldDef def;
+    def.enable_sleep = false;
+    def.restitution_threshold = 1.0; // m/s; the box approaches at most g dt = 0.16 m/s
+    World w(def);
+    w.create_shape(w.create_body({.type = BodyType::static_body}), box_shape(4.0, 1.0));
+    const ShapeId box = w.create_shape(w.create_body({.position = {0.0, 1.0}}),
+                                       box_shape(1.0, 1.0, Material{1.0, box_restitution, 0.5}));
+    if (mix)
+        w.set_restitution_mixing(std::move(mix));
+    for (int s = 0; s < 10; ++s)
+        w.step(1.0 / 60.0);
+    BOOST_TEST_REQUIRE(w.contacts().size() == 1u); // the box rests on the floor
+    if (change)
+        change(w, box);
+    return w.snapshot();
+}
+} // namespace
+
+// A contact whose restitution a mixing rule or a material changes between steps writes the
+// bytes of a world in which it had that restitution from the start. Oracle: one state, one
+// snapshot (World::snapshot writes the world's state and nothing of how it got there). The two
+// worlds share every bit: the restitution pass applies nothing to a resting box (the threshold
+// above), so the coefficient changes no motion, and only the contact's restitution and what the
+// step reads of it differ until the change.
+BOOST_AUTO_TEST_CASE(a_changed_restitution_writes_the_bytes_of_a_world_made_with_it,
+                     *utf::label("determinism")) {
+    const auto rule = [](double value) {
+        return MaterialMixFunction(
+            [value](double, std::uint64_t, double, std::uint64_t) { return value; });
+    };
+    const auto to_rule = [&](double value) {
+        return [&, value](World& w, ShapeId) { w.set_restitution_mixing(rule(value)); };
+    };
+    // The rule raises the contact's restitution from 0 to 0.5, and lowers it from 0.5 to 0.
+    BOOST_TEST((resting_box(0.0, rule(0.0), to_rule(0.5)) == resting_box(0.0, rule(0.5), {})));
+    BOOST_TEST((resting_box(0.0, rule(0.5), to_rule(0.0)) == resting_box(0.0, rule(0.0), {})));
+    // The box's material does (the default rule: the larger of the two).
+    const auto to_material = [](double value) {
+        return [value](World& w, ShapeId box) { w.set_restitution(box, value); };
+    };
+    BOOST_TEST((resting_box(0.0, {}, to_material(0.5)) == resting_box(0.5, {}, {})));
+    BOOST_TEST((resting_box(0.5, {}, to_material(0.0)) == resting_box(0.0, {}, {})));
+    // And the change is seen: a world that keeps its restitution writes other bytes.
+    BOOST_TEST((resting_box(0.0, {}, {}) != resting_box(0.5, {}, {})));
 }
 
 BOOST_AUTO_TEST_SUITE_END()
