@@ -618,4 +618,76 @@ BOOST_AUTO_TEST_CASE(a_sleep_state_no_world_holds_is_refused, *utf::label("relia
         BOOST_TEST(World::from_snapshot(w->snapshot()).state_hash() == w->state_hash());
 }
 
+// Oracle: the edge input a contact's last narrow phase gives it (contact_manager.cpp,
+// edge_input: its bodies, its path group, whether it touches, whether it bounces), which every
+// world holds for each contact that has one, also where the step reads it without a narrow
+// phase (a pair whose bodies sleep). A snapshot whose edge input differs from its contact's in
+// any field is refused naming that field, before a step could read a body past the last. The
+// fields are found by writing a box asleep on a floor twice, with restitution 0 and 0.5: the
+// last byte the contacts section differs in is the edge input's bounces flag, after its
+// bodies (u32 each), its path group and its touching flag.
+BOOST_AUTO_TEST_CASE(an_edge_input_its_contact_does_not_give_is_refused,
+                     *utf::label("reliability")) {
+    const auto make = [](double restitution) {
+        WorldDef def;
+        def.enable_sleep = true;
+        def.restitution_threshold = 1.0; // m/s: no resting contact bounces, so both sleep alike
+        World w(def);
+        w.create_shape(w.create_body({.type = BodyType::static_body}), box_shape(4.0, 1.0));
+        const BodyId box = w.create_body({.position = {0.0, 1.0}});
+        w.create_shape(box, box_shape(1.0, 1.0, Material{1.0, restitution, 0.5}));
+        for (int s = 0; s < 200 && w.is_awake(box); ++s)
+            w.step(1.0 / 60.0);
+        BOOST_TEST_REQUIRE(!w.is_awake(box), "the box sleeps");
+        return w.snapshot();
+    };
+    const std::vector<std::byte> still = make(0.0), bouncy = make(0.5);
+    const auto [begin, end] = section_bytes(bouncy, "CONT");
+    std::size_t bounces = 0;
+    for (const std::size_t k : differing_bytes(still, bouncy))
+        if (k >= begin && k < end)
+            bounces = k;
+    BOOST_TEST_REQUIRE(bounces != 0u);
+    BOOST_TEST_REQUIRE((bouncy[bounces] == std::byte{1} && still[bounces] == std::byte{0}));
+    const std::size_t body_a = bounces - 10, body_b = bounces - 6, touching = bounces - 1;
+    BOOST_TEST_REQUIRE(u32_in(bouncy, body_a) == 0u, "the floor");
+    BOOST_TEST_REQUIRE(u32_in(bouncy, body_b) == 1u, "the box");
+    BOOST_TEST_REQUIRE((bouncy[touching] == std::byte{1}));
+    struct Case {
+        std::size_t at;
+        std::uint32_t value; // a u32 at a body field, else a byte
+        const char* field;
+    };
+    const Case cases[] = {
+        {body_b, 2, "edge_inputs[0].body_b"},           // the body count: past the last
+        {body_b, 0xFFFFFFFFu, "edge_inputs[0].body_b"}, // no body
+        {body_a, 1, "edge_inputs[0].body_a"},           // a body, not the contact's
+        {touching, 0, "edge_inputs[0].touching"},       {bounces, 0, "edge_inputs[0].bounces"},
+    };
+    for (const Case& c : cases) {
+        std::vector<std::byte> forged = bouncy;
+        if (c.at == body_a || c.at == body_b)
+            put_u32(forged, c.at, c.value);
+        else
+            forged[c.at] = std::byte(c.value);
+        fix_checksum(forged);
+        const std::optional<SnapshotError> e = refusal(forged, "edge_inputs[0]");
+        BOOST_TEST_REQUIRE(e.has_value(), "accepted: " << c.field << " = " << c.value);
+        BOOST_TEST(e->field == c.field, e->what());
+    }
+    BOOST_TEST(World::from_snapshot(bouncy).snapshot() == bouncy); // the intact one is read
+    // A contact begun while every body sleeps (a static shape put across the sleeping box) is
+    // kept without a narrow phase: its edge input is its contact's too, and the world is read
+    // back. (The contacts section starts with its tag and its count.)
+    World w = World::from_snapshot(bouncy);
+    w.create_shape(w.create_body({.type = BodyType::static_body, .position = {0.0, 1.25}}),
+                   box_shape(0.5, 0.5));
+    w.step(1.0 / 60.0);
+    BOOST_TEST_REQUIRE(!w.is_awake(w.bodies()[1]), "the box still sleeps");
+    const std::vector<std::byte> with_new = w.snapshot();
+    BOOST_TEST_REQUIRE(u32_in(bouncy, begin + 4) == 1u);
+    BOOST_TEST_REQUIRE(u32_in(with_new, section_bytes(with_new, "CONT").first + 4) == 2u);
+    BOOST_TEST(World::from_snapshot(with_new).snapshot() == with_new);
+}
+
 BOOST_AUTO_TEST_SUITE_END()

@@ -63,7 +63,12 @@ void ContactManager::destroy(std::uint32_t i, BodyStore& bodies, const ShapeStor
         warm_impulses_[i] = warm_impulses_[last];
         total_impulses_[i] = total_impulses_[last];
         bases_[i] = bases_[last];
-        edge_inputs_[i] = edge_inputs_[last];
+        // (A step that bad_alloc stopped before its narrow phase leaves the contacts find_new
+        // added without an edge input.)
+        if (last < edge_inputs_.size())
+            edge_inputs_[i] = edge_inputs_[last];
+        else if (i < edge_inputs_.size())
+            edge_inputs_[i] = edge_input(contacts_[i]);
         if (rolling_on_)
             rolling_impulses_[i] = rolling_impulses_[last];
         index_.assign(Contact::key(contacts_[i].shape_a, contacts_[i].shape_b), i);
@@ -72,7 +77,8 @@ void ContactManager::destroy(std::uint32_t i, BodyStore& bodies, const ShapeStor
     warm_impulses_.pop_back();
     total_impulses_.pop_back();
     bases_.pop_back();
-    edge_inputs_.pop_back();
+    if (edge_inputs_.size() > contacts_.size())
+        edge_inputs_.pop_back();
     if (rolling_on_)
         rolling_impulses_.pop_back();
 }
@@ -302,6 +308,15 @@ inline void prefetch_shapes(const Contact& c, const LargeArray<Shape>& shape) {
 
 } // namespace
 
+void ContactManager::edge_inputs_for_new() {
+    for (std::size_t i = edge_inputs_.size(); i < contacts_.size(); ++i)
+        edge_inputs_.push_back(edge_input(contacts_[i]));
+}
+
+void ContactManager::keep_all() {
+    edge_inputs_for_new();
+}
+
 void ContactManager::update(BodyStore& bodies, const ShapeStore& shapes, const StepContext& step) {
     const bool sleeping = step.sleeping;
     const double speculative_distance = step.def.speculative_distance;
@@ -309,7 +324,7 @@ void ContactManager::update(BodyStore& bodies, const ShapeStore& shapes, const S
     const StepTasks& tasks = step.tasks;
     doomed_.clear();
     const auto count = std::uint32_t(contacts_.size()); // the loop adds and removes none
-    edge_inputs_.resize(count);
+    edge_inputs_for_new();
     constexpr std::uint32_t block = 128; // contacts: ~5 us of work
     if (tasks.parallel() && count > block) {
         update_in_blocks(bodies, shapes, sleeping, speculative_distance, reuse_distance, tasks,
@@ -614,7 +629,19 @@ void ContactManager::read(SnapshotReader& in, const BodyStore& bodies, const Sha
     edge_inputs_.resize(edges);
     for (std::size_t k = 0; k < edges; ++k) {
         in.in("edge_inputs", k);
-        edge_input_fields(in, edge_inputs_[k]);
+        const std::size_t at = in.offset();
+        EdgeInput& e = edge_inputs_[k];
+        edge_input_fields(in, e);
+        // Every world holds its contacts' own (edge_input), and a step reads a sleeping pair's
+        // without a narrow phase: its bodies name solver slots.
+        const EdgeInput own = edge_input(contacts_[k]);
+        in.require(e.body_a == own.body_a, "body_a", "must be its contact's body_a", at);
+        in.require(e.body_b == own.body_b, "body_b", "must be its contact's body_b", at);
+        in.require(e.group == own.group, "group",
+                   "must be the path group of its contact's manifold", at);
+        in.require(e.touching == own.touching, "touching", "must be its contact's touching", at);
+        in.require(e.bounces == own.bounces, "bounces",
+                   "must be whether its contact's restitution is > 0", at);
     }
     for (auto* events : {&begin_events_, &end_events_}) {
         const std::size_t m = in.count("events", 32);

@@ -125,8 +125,9 @@ class ContactManager {
     /// (`reuse_distance`: StepContext::def's manifold_reuse_distance; the speculative
     /// distance is its speculative_distance.)
     void update(BodyStore& bodies, const ShapeStore& shapes, const StepContext& step);
-    /// Every body asleep: every contact stands as it is, its edge input included.
-    void keep_all() { edge_inputs_.resize(contacts_.size()); }
+    /// Every body asleep: every contact stands as it is, its edge input included (a new one
+    /// gets its contact's, edge_inputs_for_new).
+    void keep_all();
     /// Destroys every contact of shape s (its end events and wakes included).
     void destroy_of_shape(std::uint32_t s, BodyStore& bodies, const ShapeStore& shapes);
     /// Destroys every contact between bodies a and b (a joint now keeps them apart).
@@ -228,6 +229,9 @@ class ContactManager {
     std::uint8_t pre_solved(std::uint32_t i, std::uint8_t r, const BodyStore& bodies,
                             const ShapeStore& shapes);
     memory::vector<Mixed> remixed_; ///< remix's values, all computed before any is written
+    /// The edge inputs of the contacts find_new added, each its contact's: a step keeps a pair
+    /// whose bodies are asleep without a narrow phase, and still reads its edge input.
+    void edge_inputs_for_new();
 
     /// Tests fill the arrays of their own contacts (tests/support).
     friend struct ContactManagerAccess;
