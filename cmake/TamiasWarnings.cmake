@@ -12,7 +12,10 @@ if(TAMIAS_WERROR)
   target_compile_options(tamias_warnings INTERFACE -Werror)
 endif()
 if(TAMIAS_SANITIZE)
+  # With the standard library's own bounds checks: ASan does not see an index past a vector's
+  # size that stays within its capacity.
   add_compile_options(-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)
+  add_compile_definitions(_GLIBCXX_ASSERTIONS)
   add_link_options(-fsanitize=address,undefined)
 endif()
 if(TAMIAS_TSAN)

@@ -53,7 +53,15 @@ void ShapeStore::destroy(std::uint32_t i, Body& b) {
     release(i);
 }
 
+void ShapeStore::forget_pending(std::uint32_t s) {
+    std::erase(undecided_, s);
+    const int proxy = shapes[s].proxy;
+    std::erase_if(proxy_moves_,
+                  [proxy](const BroadPhase::ProxyMove& m) { return m.proxy == proxy; });
+}
+
 void ShapeStore::release(std::uint32_t i) {
+    forget_pending(i);
     broad_phase.destroy_proxy(shapes[i].proxy);
     shapes[i].proxy = -1;
     slots.release(i);
@@ -349,6 +357,7 @@ void ShapeStore::refile_proxies(const Body& b) {
             broad_phase.touch_proxy(sh.proxy);
             continue;
         }
+        forget_pending(s);
         broad_phase.destroy_proxy(sh.proxy);
         sh.proxy = broad_phase.create_proxy(box(sh, b), s, is_static); // (counts as moved)
         sh.fat_box = broad_phase.fat_aabb(sh.proxy);

@@ -114,6 +114,10 @@ class ShapeStore {
         broad_phase.move_proxies(proxy_moves_);
         proxy_moves_.clear();
     }
+    /// Drops shape s's entries from the lists above, which are empty between steps unless a
+    /// bad_alloc stopped the last one: its proxy is about to be destroyed, and the next step
+    /// must not refit or move it.
+    void forget_pending(std::uint32_t s);
 
     /// The handles of body b's shapes, in its list's order.
     std::vector<ShapeId> ids_of(const Body& b) const;
