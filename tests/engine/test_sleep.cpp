@@ -132,6 +132,33 @@ BOOST_AUTO_TEST_CASE(a_body_made_dynamic_rests_time_to_sleep_before_it_sleeps) {
     }
 }
 
+// Oracle: the rule (at rest for time_to_sleep), as above. A dynamic box alone in the air
+// (gravity scale 0), awake and at rest for 20 steps, is made static or kinematic and dynamic
+// again: its time at rest starts again from the change, so it sleeps only once it has rested
+// for time_to_sleep after it (not 20 steps fewer). Nothing else wakes it.
+BOOST_AUTO_TEST_CASE(a_body_at_rest_whose_type_changes_rests_time_to_sleep_again) {
+    for (const BodyType via : {BodyType::static_body, BodyType::kinematic}) {
+        BOOST_TEST_CONTEXT((via == BodyType::static_body ? "via static" : "via kinematic")) {
+            World w(def_with_sleep());
+            ground(w);
+            BodyDef d;
+            d.gravity_scale = 0.0;
+            const BodyId b = box(w, 0.0, 10.0, d);
+            const int needed = int(std::ceil(w.settings().time_to_sleep / dt - 1e-9));
+            BOOST_TEST_REQUIRE(needed > 20);
+            for (int k = 0; k < 20; ++k)
+                w.step(dt);
+            BOOST_TEST_REQUIRE(w.is_awake(b));
+            w.set_body_type(b, via);
+            w.set_body_type(b, BodyType::dynamic);
+            BOOST_TEST(w.is_awake(b));
+            const int n = steps_until_asleep(w, {b}, 300);
+            BOOST_TEST_MESSAGE("asleep after " << n << " steps");
+            BOOST_TEST(n >= needed);
+        }
+    }
+}
+
 // Oracle: the rule (at rest for time_to_sleep), as above. A sleeping box is disabled and
 // enabled again (set_enabled): it is then awake, and it sleeps only once it has rested for
 // time_to_sleep after it was enabled, not at once; on the ground and alone in the air.

@@ -29,7 +29,7 @@ BOOST_AUTO_TEST_SUITE(dd31_chain_segment_normal)
 
 // Oracle: DD31's statement. At a flat vertex only n_k is admissible, within the tolerance:
 // n_k x N <= 0.01 on the side of the end vertex, n_k x N >= -0.01 on the side of the start.
-// N = (-t, s) gives n_k x N = t, N = (t, s) gives -t, exactly.
+// N = (-t, s) gives n_k x N = t, N = (t, s) gives -t, exactly. -n_k is not n_k.
 BOOST_AUTO_TEST_CASE(flat_vertices_admit_n_k_within_the_tolerance_inclusive, *utf::label("DD31")) {
     BOOST_TEST(dd31::admissible(up, up, up, up, tolerance));
     // Towards the end vertex (N turned counter-clockwise from n_k).
@@ -38,6 +38,11 @@ BOOST_AUTO_TEST_CASE(flat_vertices_admit_n_k_within_the_tolerance_inclusive, *ut
     // Towards the start vertex (clockwise).
     BOOST_TEST(dd31::admissible(up, up, up, V{tolerance, other(tolerance)}, tolerance));
     BOOST_TEST(!dd31::admissible(up, up, up, V{beyond, other(beyond)}, tolerance));
+    // The back of the edge is not n_k, though its cross product with n_k is as small: N =
+    // (-t, -s) gives n_k x N = t, N = (t, -s) gives -t, both facing away.
+    BOOST_TEST(!dd31::admissible(up, up, up, V{-tolerance, -other(tolerance)}, tolerance));
+    BOOST_TEST(!dd31::admissible(up, up, up, V{tolerance, -other(tolerance)}, tolerance));
+    BOOST_TEST(!dd31::admissible(up, up, up, V{0.0, -1.0}, tolerance));
 }
 
 // Oracle: DD31's statement. At a convex vertex the arc between the two edges' normals is

@@ -690,4 +690,32 @@ BOOST_AUTO_TEST_CASE(an_edge_input_its_contact_does_not_give_is_refused,
     BOOST_TEST(World::from_snapshot(with_new).snapshot() == with_new);
 }
 
+// Oracle: the snapshot's rule for indices (SnapshotReader::index: an index is below its limit)
+// at its boundary, on the bodies' free slots (slot_map.hpp: each must name a dead slot). Three
+// bodies, the last destroyed: the section holds its tag, the slot count (u64), each slot's live
+// flag and generation (5 bytes), the free count (u64) and the free slots (u32 each); the one
+// free slot is made the slot count, then one more, and each is refused naming the field.
+BOOST_AUTO_TEST_CASE(a_free_slot_naming_the_slot_count_is_refused, *utf::label("reliability")) {
+    World w;
+    std::vector<BodyId> bodies;
+    for (int k = 0; k < 3; ++k)
+        bodies.push_back(w.create_body({.position = {2.0 * k, 0.0}}));
+    w.destroy_body(bodies[2]);
+    const std::vector<std::byte> good = w.snapshot();
+    const std::size_t begin = section_bytes(good, "BODY").first;
+    const std::size_t free_count = begin + 4 + 8 + 3 * 5, free_slot = free_count + 8;
+    BOOST_TEST_REQUIRE(u32_in(good, begin + 4) == 3u, "the slot count");
+    BOOST_TEST_REQUIRE(u32_in(good, free_count) == 1u, "the free count");
+    BOOST_TEST_REQUIRE(u32_in(good, free_slot) == 2u, "the free slot");
+    for (const std::uint32_t slot : {3u, 4u}) {
+        std::vector<std::byte> forged = good;
+        put_u32(forged, free_slot, slot);
+        fix_checksum(forged);
+        const std::optional<SnapshotError> e = refusal(forged, "bodies");
+        BOOST_TEST_REQUIRE(e.has_value(), "free slot " << slot << " accepted");
+        BOOST_TEST(e->offset == free_slot, e->what());
+        BOOST_TEST(e->field.find("free_slot") != std::string::npos, e->what());
+    }
+}
+
 BOOST_AUTO_TEST_SUITE_END()
