@@ -6,6 +6,7 @@
 // static deflection (DD37), and collide_connected's effect on a pair.
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -519,6 +520,51 @@ BOOST_AUTO_TEST_CASE(collide_connected_switches_the_pair, *utf::label("DD27") * 
         w.step(dt);
     BOOST_TEST(w.velocity(boxes[1]).y == -10.0 * n * dt, tt::tolerance(1e-6));
     BOOST_TEST(w.position(boxes[1]).y < y0 - 0.05);
+}
+
+// Oracle: DD27's joint filter and DD20's rigid rod. A box rests on a static floor, held by a
+// horizontal 1 m distance rod to an anchor on the floor's body. Made with collide_connected (in
+// its definition) the pair collides: the box stays on the floor, touching it. Made without, the
+// floor does not hold it: it swings down through the floor as a pendulum, to 1 m below its
+// start. Either way the rod
+// keeps its length (DD20: the anchors' distance, within a millimetre).
+BOOST_AUTO_TEST_CASE(a_distance_rod_made_to_collide_connected_keeps_its_box_on_the_floor,
+                     *utf::label("DD27") * utf::label("DD20")) {
+    for (const bool collide : {true, false}) {
+        BOOST_TEST_CONTEXT("collide_connected " << collide) {
+            World w(world_def(10.0));
+            const BodyId floor = static_body(w, {0.0, -0.5});
+            w.create_shape(floor, box_shape(10.0, 1.0));
+            BodyDef bd;
+            bd.position = {0.0, 0.25};
+            const BodyId box = w.create_body(bd);
+            w.create_shape(box, box_shape(0.5, 0.5));
+            DistanceJointDef dd;
+            dd.body_a = floor;
+            dd.body_b = box;
+            dd.anchor_a = {-1.0, 0.25};
+            dd.anchor_b = bd.position;
+            dd.collide_connected = collide;
+            const JointId rod = w.create_joint(dd);
+            BOOST_TEST(w.joint_collide_connected(rod) == collide);
+            bool touching = false;
+            double lowest = w.position(box).y;
+            for (int k = 0; k < 240; ++k) { // 1 s
+                w.step(dt);
+                lowest = std::min(lowest, w.position(box).y);
+                touching = false;
+                for (const ContactInfo& c : w.contacts())
+                    touching = touching || c.body_a == box || c.body_b == box;
+                const Vec2d d = w.position(box) - Vec2d{-1.0, 0.25};
+                BOOST_TEST_REQUIRE(std::abs(std::hypot(d.x, d.y) - 1.0) < 1e-3);
+            }
+            BOOST_TEST(touching == collide);
+            if (collide)
+                BOOST_TEST(w.position(box).y == 0.25, tt::tolerance(0.01));
+            else
+                BOOST_TEST(lowest < -0.7); // the pendulum's bottom: 0.25 - 1 m
+        }
+    }
 }
 
 // Oracle: the definitions the joints were made from: each joint's kind and bodies read back.

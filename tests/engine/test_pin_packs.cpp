@@ -332,4 +332,51 @@ BOOST_AUTO_TEST_CASE(coloured_packs_reproduce_the_sequential_pass_in_their_order
     BOOST_TEST(packs_made > 50u);
 }
 
+// Oracle: the order is a function of the joints, their bodies and their pins (pin_packs.hpp;
+// order keeps the last one only for the same inputs). A PinPacks that ordered one scene's
+// joints orders another's of the same count, bodies and streams exactly as a new PinPacks does:
+// the same passes' order and the same runs and packs, in one stream and in two.
+BOOST_AUTO_TEST_CASE(other_joints_of_the_same_count_are_ordered_afresh, *utf::label("internals")) {
+    const auto solved_of = [](const Scene& s) {
+        memory::vector<SolvedJoint> out;
+        for (const JointSim& sim : s.sims)
+            out.push_back({sim.joint, sim.solver_a, sim.solver_b,
+                           plain_pin(sim.type, sim.spring, sim.motor, sim.limit) ? 1u : 0u, 0, 0});
+        return out;
+    };
+    const auto same_runs = [](const PinPacks& a, const PinPacks& b) {
+        bool same = a.streams() == b.streams() && a.pack_count() == b.pack_count();
+        for (std::uint32_t s = 0; same && s < a.streams(); ++s) {
+            const auto ra = a.runs(s), rb = b.runs(s);
+            same = ra.size() == rb.size();
+            for (std::size_t k = 0; same && k < ra.size(); ++k)
+                same = ra[k].first == rb[k].first && ra[k].count == rb[k].count &&
+                       ra[k].pack == rb[k].pack && ra[k].packed == rb[k].packed;
+        }
+        for (std::size_t p = 0; same && p < a.pack_count(); ++p)
+            same = a.first_record(p) == b.first_record(p);
+        return same;
+    };
+    for (const bool two_streams : {false, true}) {
+        BOOST_TEST_CONTEXT((two_streams ? "two streams" : "one stream")) {
+            const Scene first = random_scene(3, 60, 300), second = random_scene(4, 60, 300);
+            const auto n = std::uint32_t(first.sims.size());
+            BOOST_TEST_REQUIRE(second.sims.size() == n);
+            const std::vector<std::uint32_t> bounds = two_streams
+                                                          ? std::vector<std::uint32_t>{0, n / 2, n}
+                                                          : std::vector<std::uint32_t>{0, n};
+            memory::vector<SolvedJoint> a = solved_of(first), b = solved_of(second),
+                                        fresh_b = solved_of(second);
+            BOOST_TEST_REQUIRE((std::memcmp(a.data(), b.data(), n * sizeof(SolvedJoint)) != 0));
+            PinPacks reused, fresh;
+            reused.order(a, bounds, first.bodies.size());
+            reused.order(b, bounds, second.bodies.size());
+            fresh.order(fresh_b, bounds, second.bodies.size());
+            BOOST_TEST((std::memcmp(b.data(), fresh_b.data(), n * sizeof(SolvedJoint)) == 0));
+            BOOST_TEST(same_runs(reused, fresh));
+            BOOST_TEST(fresh.pack_count() > 0u); // the scene fills packs
+        }
+    }
+}
+
 BOOST_AUTO_TEST_SUITE_END()

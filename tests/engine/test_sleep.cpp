@@ -132,6 +132,29 @@ BOOST_AUTO_TEST_CASE(a_body_made_dynamic_rests_time_to_sleep_before_it_sleeps) {
     }
 }
 
+// Oracle: the rule (at rest: slower than both tolerances, WorldDef::linear_sleep_tolerance and
+// angular_sleep_tolerance). A box alone in the air (gravity scale 0, no damping) turning in
+// place at twice the angular tolerance never rests, so it never sleeps; at half of it, it sleeps
+// once it has turned so for time_to_sleep. Linearly it is still in both cases.
+BOOST_AUTO_TEST_CASE(a_body_turning_faster_than_the_angular_tolerance_does_not_sleep) {
+    for (const double factor : {2.0, 0.5}) {
+        BOOST_TEST_CONTEXT("turning at " << factor << " times the tolerance") {
+            World w(def_with_sleep());
+            BodyDef d;
+            d.gravity_scale = 0.0;
+            const BodyId b = box(w, 0.0, 10.0, d);
+            w.set_angular_velocity(b, factor * w.settings().angular_sleep_tolerance);
+            const int needed = int(std::ceil(w.settings().time_to_sleep / dt - 1e-9));
+            const int n = steps_until_asleep(w, {b}, 4 * needed);
+            BOOST_TEST_MESSAGE("asleep after " << n << " steps");
+            if (factor > 1.0)
+                BOOST_TEST(w.is_awake(b));
+            else
+                BOOST_TEST(n >= needed);
+        }
+    }
+}
+
 // Oracle: the rule (at rest for time_to_sleep), as above. A dynamic box alone in the air
 // (gravity scale 0), awake and at rest for 20 steps, is made static or kinematic and dynamic
 // again: its time at rest starts again from the change, so it sleeps only once it has rested
