@@ -255,6 +255,26 @@ BOOST_AUTO_TEST_CASE(a_centre_moved_along_one_axis_takes_the_rigid_velocity,
     }
 }
 
+// Oracle: DD41's closed form under DD39's lock: a body locked along x, moving at v = (0, 2) and
+// turning at omega = 3 rad/s, is given its centre at (0, 0.5) in its frame: the new centre's
+// rigid velocity v + omega x d is (-1.5, 2), and the lock keeps its x at zero: (0, 2). Over the
+// next steps the body's x does not move.
+BOOST_AUTO_TEST_CASE(a_centre_moved_on_a_body_locked_along_x_keeps_x_still,
+                     *utf::label("DD41") * utf::label("DD39")) {
+    World w(WorldDef{.gravity = {0.0, 0.0}});
+    const BodyId b = w.create_body(BodyDef{.linear_velocity = {0.0, 2.0}, .angular_velocity = 3.0});
+    w.create_shape(b, box_shape(2.0, 1.0));
+    w.set_motion_locks(b, MotionLocks{.linear_x = true});
+    const double x = w.position(b).x;
+    w.set_mass_data(b, BodyMassData{6.0, {0.0, 0.5}, 4.0});
+    BOOST_TEST(w.velocity(b).x == 0.0);
+    BOOST_TEST(w.velocity(b).y == 2.0);
+    BOOST_TEST(w.angular_velocity(b) == 3.0);
+    for (int n = 0; n < 10; ++n)
+        w.step(dt);
+    BOOST_TEST(w.position(b).x == x);
+}
+
 // Oracle: R4's strong guarantee and the rule that mass belongs to dynamic bodies (R2): the
 // refusals name the field and constraint (DCI_m, DCI_I) or the handle (WrongKind), and change
 // nothing; the same mass data changes no bit.
@@ -340,6 +360,32 @@ BOOST_AUTO_TEST_CASE(a_bodys_sleep_threshold_replaces_the_worlds) {
     // wake_touching: the ground's touching boxes wake (the rule of World::wake_touching).
     w.wake_touching(g);
     BOOST_TEST(w.is_awake(b));
+}
+
+// Oracle: the rule of World::wake_touching: it wakes the bodies touching the one named, and no
+// other. Two boxes sleep, one on a platform and one on the ground (two static bodies): waking
+// what touches the platform wakes the first box and leaves the second asleep; then waking what
+// touches the ground wakes the second.
+BOOST_AUTO_TEST_CASE(wake_touching_wakes_only_what_touches_the_body) {
+    World w(WorldDef{.gravity = {0.0, -10.0}, .enable_sleep = true});
+    const BodyId ground =
+        w.create_body(BodyDef{.type = BodyType::static_body, .position = {0.0, -0.5}});
+    w.create_shape(ground, box_shape(40.0, 1.0));
+    const BodyId platform =
+        w.create_body(BodyDef{.type = BodyType::static_body, .position = {10.0, 2.0}});
+    w.create_shape(platform, box_shape(2.0, 1.0));
+    const BodyId on_platform = w.create_body(BodyDef{.position = {10.0, 3.0}});
+    w.create_shape(on_platform, box_shape(1.0, 1.0));
+    const BodyId on_ground = w.create_body(BodyDef{.position = {-10.0, 0.5}});
+    w.create_shape(on_ground, box_shape(1.0, 1.0));
+    for (int i = 0; i < 200 && w.awake_body_count() > 0; ++i)
+        w.step(dt);
+    BOOST_TEST_REQUIRE(w.awake_body_count() == 0u);
+    w.wake_touching(platform);
+    BOOST_TEST(w.is_awake(on_platform));
+    BOOST_TEST(!w.is_awake(on_ground));
+    w.wake_touching(ground);
+    BOOST_TEST(w.is_awake(on_ground));
 }
 
 BOOST_AUTO_TEST_SUITE_END()

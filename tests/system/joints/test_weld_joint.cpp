@@ -124,18 +124,21 @@ double soft_weld_error(int steps_per_second, const DampedOscillator& osc, double
 // Oracle: the damped harmonic oscillator. With the anchor at the box's centre of mass and the
 // other body static, the rigid point holds the centre still and the soft angle is a torsional
 // spring of frequency f for the box's inertia: from theta = 0 at speed w0, theta(t) = w0 /
-// omega_d e^(-zeta omega t) sin(omega_d t). First order: the error halves with the step
-// (ratio >= 1.8) and is below 2 % of the amplitude w0 / omega at 1/480 s.
+// omega_d e^(-zeta omega t) sin(omega_d t). At 1.5 Hz and at 0.8 Hz (a spring below 1 Hz is a
+// spring too), zeta 0.2: first order, the error halves with the step (ratio >= 1.8) and is
+// below 2 % of the amplitude w0 / omega at 1/480 s.
 BOOST_AUTO_TEST_CASE(soft_angle_is_a_damped_oscillator,
                      *utf::label("DD24") * utf::label("IM6") * utf::label("LC3")) {
-    const DampedOscillator osc{1.5, 0.2};
-    const double w0 = 2.0;
-    const double e240 = soft_weld_error(240, osc, w0, SoftPart::angle);
-    const double e480 = soft_weld_error(480, osc, w0, SoftPart::angle);
-    BOOST_TEST_MESSAGE("soft weld: max deviation " << e240 << " rad at 1/240 s, " << e480
-                                                   << " rad at 1/480 s");
-    BOOST_TEST(e480 <= 0.02 * w0 / osc.omega());
-    BOOST_TEST(e240 / e480 >= 1.8);
+    for (const double hertz : {1.5, 0.8}) {
+        const DampedOscillator osc{hertz, 0.2};
+        const double w0 = 2.0;
+        const double e240 = soft_weld_error(240, osc, w0, SoftPart::angle);
+        const double e480 = soft_weld_error(480, osc, w0, SoftPart::angle);
+        BOOST_TEST_MESSAGE("soft weld at " << hertz << " Hz: max deviation " << e240
+                                           << " rad at 1/240 s, " << e480 << " rad at 1/480 s");
+        BOOST_TEST(e480 <= 0.02 * w0 / osc.omega());
+        BOOST_TEST(e240 / e480 >= 1.8);
+    }
 }
 
 // Oracle: the damped harmonic oscillator, as above, for the soft point: with the anchor at the
