@@ -25,7 +25,7 @@ struct SleepState {
     bool disabled = false;   ///< World::set_enabled(false): the step skips it
 };
 
-/// At rest: slower than both tolerances (m s^-1, rad s^-1).
+/// At rest: no faster than both tolerances (m s^-1, rad s^-1).
 inline bool at_rest(Vec2d v, double w, double linear_tolerance, double angular_tolerance) {
     return dot(v, v) <= linear_tolerance * linear_tolerance &&
            w * w <= angular_tolerance * angular_tolerance;
