@@ -63,6 +63,17 @@ int steps_until_asleep(World& w, const std::vector<BodyId>& ids, int limit) {
     return -1;
 }
 
+/// Makes b `via` and dynamic again: it is then awake, and sleeps only after `needed` steps at
+/// rest or more.
+void made_dynamic_sleeps_after(World& w, BodyId b, BodyType via, int needed) {
+    w.set_body_type(b, via);
+    w.set_body_type(b, BodyType::dynamic);
+    BOOST_TEST(w.is_awake(b));
+    const int n = steps_until_asleep(w, {b}, 300);
+    BOOST_TEST_MESSAGE("asleep after " << n << " steps");
+    BOOST_TEST(n >= needed);
+}
+
 /// A generator's bodies built into `w` (io::build_world): their handles, in order.
 std::vector<BodyId> build(World& w, std::vector<io::SceneBody> bodies) {
     io::Scene scene;
@@ -120,14 +131,8 @@ BOOST_AUTO_TEST_CASE(a_body_made_dynamic_rests_time_to_sleep_before_it_sleeps) {
             for (int i = 0; i < 60; ++i)
                 w.step(dt);
             const int needed = int(std::ceil(w.settings().time_to_sleep / dt - 1e-9));
-            for (const BodyType via : {BodyType::static_body, BodyType::kinematic}) {
-                w.set_body_type(b, via);
-                w.set_body_type(b, BodyType::dynamic);
-                BOOST_TEST(w.is_awake(b));
-                const int n = steps_until_asleep(w, {b}, 300);
-                BOOST_TEST_MESSAGE("asleep after " << n << " steps");
-                BOOST_TEST(n >= needed);
-            }
+            for (const BodyType via : {BodyType::static_body, BodyType::kinematic})
+                made_dynamic_sleeps_after(w, b, via, needed);
         }
     }
 }
@@ -173,12 +178,7 @@ BOOST_AUTO_TEST_CASE(a_body_at_rest_whose_type_changes_rests_time_to_sleep_again
             for (int k = 0; k < 20; ++k)
                 w.step(dt);
             BOOST_TEST_REQUIRE(w.is_awake(b));
-            w.set_body_type(b, via);
-            w.set_body_type(b, BodyType::dynamic);
-            BOOST_TEST(w.is_awake(b));
-            const int n = steps_until_asleep(w, {b}, 300);
-            BOOST_TEST_MESSAGE("asleep after " << n << " steps");
-            BOOST_TEST(n >= needed);
+            made_dynamic_sleeps_after(w, b, via, needed);
         }
     }
 }
