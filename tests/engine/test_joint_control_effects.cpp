@@ -567,6 +567,30 @@ BOOST_AUTO_TEST_CASE(a_distance_rod_made_to_collide_connected_keeps_its_box_on_t
     }
 }
 
+// Oracle: DD23's translation s = a . (p_B + r_B - p_A - r_A) and uniform motion (IM1, no
+// force): a box on a prismatic joint along x, anchored 0.5 m off its centre (and off the
+// static body's origin), is set sliding at 1.5 m/s: after t its anchors are 1.5 t apart along
+// the axis, so the joint reads s = 1.5 t, at every step (to round-off).
+BOOST_AUTO_TEST_CASE(joint_translation_reads_the_slide_of_an_anchor_off_the_centre,
+                     *utf::label("DD23")) {
+    World w(world_def(0.0));
+    const BodyId ground = static_body(w, {-3.0, 0.0});
+    const BodyId slider = w.create_body(BodyDef{.position = {1.0, 0.0}});
+    w.create_shape(slider, box_shape(2.0, 0.5));
+    PrismaticJointDef pd;
+    pd.body_a = ground;
+    pd.body_b = slider;
+    pd.anchor = {1.5, 0.0};
+    pd.axis = {1.0, 0.0};
+    const JointId j = w.create_joint(pd);
+    BOOST_TEST(std::abs(w.joint_translation(j)) <= 1e-15);
+    w.set_velocity(slider, {1.5, 0.0});
+    for (int k = 1; k <= 120; ++k) {
+        w.step(dt);
+        BOOST_TEST_REQUIRE(w.joint_translation(j) == 1.5 * k * dt, tt::tolerance(1e-9));
+    }
+}
+
 // Oracle: the definitions the joints were made from: each joint's kind and bodies read back.
 BOOST_AUTO_TEST_CASE(kind_and_bodies_read_back, *utf::label("reliability")) {
     World w(world_def(10.0));
