@@ -316,11 +316,13 @@ BOOST_AUTO_TEST_CASE(regions_reproduce_the_sequential_pass_in_their_order, *utf:
 // the order's sequence; the regions' streams share no moving body; and a manifold whose
 // predecessor on a body is in another stream waits (by its pack's or an earlier pack's waits)
 // for that stream to have finished the predecessor's pack, a stream that comes before it.
+// Every region count the settings allow (up to ConstraintGraph::max_regions, the largest
+// WorldDef::contact_regions validate() accepts).
 BOOST_AUTO_TEST_CASE(streams_keep_the_order_and_wait_for_their_predecessors) {
     for (std::uint32_t seed = 40; seed < 64; ++seed) {
         const Scene scene = random_scene(seed, 5 + int(seed % 19), 30 + int(seed * 11 % 150));
         const std::vector<double> cut = random_places(seed, scene.bodies.size());
-        for (std::uint32_t regions = 2; regions <= 5; ++regions) {
+        for (std::uint32_t regions = 2; regions <= ConstraintGraph::max_regions; ++regions) {
             BOOST_TEST_CONTEXT("seed " << seed << ", " << regions << " regions") {
                 check_streams(scene, cut, regions);
             }

@@ -161,6 +161,44 @@ BOOST_AUTO_TEST_CASE(a_body_turning_faster_than_the_angular_tolerance_does_not_s
     }
 }
 
+// Oracle: the rule at its boundary: an island sleeps once it has rested for time_to_sleep,
+// inclusive (as Box2D v3 has it: solver.c keeps an island awake while a body's rest time is
+// below the time to sleep). With a step of 1/64 s every rest time is a sum of k/64 s, exact in
+// a double, so a box alone in the air (gravity scale 0, at rest from its creation) has rested
+// exactly time_to_sleep after time_to_sleep * 64 steps: it sleeps at that step, not one before
+// or after. Two times to sleep, both multiples of 1/64 s; and a pair of boxes joined by a weld
+// (one island) sleeps at the same step.
+BOOST_AUTO_TEST_CASE(an_island_sleeps_the_step_its_rest_reaches_time_to_sleep) {
+    constexpr double step = 1.0 / 64.0;
+    for (const double time_to_sleep : {0.5, 0.25}) {
+        for (const bool pair : {false, true}) {
+            BOOST_TEST_CONTEXT("time_to_sleep " << time_to_sleep << (pair ? ", a pair" : "")) {
+                WorldDef def = def_with_sleep();
+                def.time_to_sleep = time_to_sleep;
+                World w(def);
+                BodyDef d;
+                d.gravity_scale = 0.0;
+                std::vector<BodyId> ids{box(w, 0.0, 10.0, d)};
+                if (pair) {
+                    ids.push_back(box(w, 1.0, 10.0, d));
+                    w.create_joint(
+                        WeldJointDef{.body_a = ids[0], .body_b = ids[1], .anchor = {0.5, 10.0}});
+                }
+                const int expected = int(time_to_sleep / step);
+                int asleep_at = -1;
+                for (int k = 1; k <= expected + 2 && asleep_at < 0; ++k) {
+                    w.step(step);
+                    if (!w.is_awake(ids[0]))
+                        asleep_at = k;
+                    for (const BodyId b : ids)
+                        BOOST_TEST(w.is_awake(b) == (asleep_at < 0), "body awake at step " << k);
+                }
+                BOOST_TEST(asleep_at == expected);
+            }
+        }
+    }
+}
+
 // Oracle: the rule (at rest for time_to_sleep), as above. A dynamic box alone in the air
 // (gravity scale 0), awake and at rest for 20 steps, is made static or kinematic and dynamic
 // again: its time at rest starts again from the change, so it sleeps only once it has rested

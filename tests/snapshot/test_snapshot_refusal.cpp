@@ -309,6 +309,46 @@ BOOST_AUTO_TEST_CASE(a_joints_impulse_bound_forged_negative_is_refused,
     }
 }
 
+// A live joint whose body_a or body_b is forged to the body slot count (one past the last
+// body) is refused at its record, naming the joint, where the solve would read a body past the
+// array. Oracle: the reader's rule, "a live joint's bodies must live" (a body index below the
+// slot count, of a live body), at its boundary; and the format's record order (type,
+// collide_connected, then body_a and body_b just before the local anchors), the local anchor's
+// value, which no other field holds, finding them.
+BOOST_AUTO_TEST_CASE(a_joint_naming_the_body_past_the_last_is_refused, *utf::label("reliability")) {
+    World w;
+    BodyDef d;
+    w.create_body({.type = BodyType::static_body});
+    d.position = {1.0, 0.0};
+    const BodyId a = w.create_body(d);
+    d.position = {2.0, 0.0};
+    const BodyId b = w.create_body(d);
+    w.create_shape(a, circle_shape(0.25));
+    w.create_shape(b, circle_shape(0.25));
+    w.create_joint(RevoluteJointDef{.body_a = a, .body_b = b, .anchor = {1.40625, 0.0}});
+    w.step(1.0 / 60.0);
+    const std::vector<std::byte> good = w.snapshot();
+    const auto [begin, end] = section_bytes(good, "JOIN");
+    const std::vector<std::byte> anchor = bytes(0.40625); // local_anchor_a.x
+    const auto it = std::search(good.begin() + std::ptrdiff_t(begin),
+                                good.begin() + std::ptrdiff_t(end), anchor.begin(), anchor.end());
+    BOOST_TEST_REQUIRE((it != good.begin() + std::ptrdiff_t(end)));
+    const std::size_t anchor_at = std::size_t(it - good.begin());
+    const std::size_t body_a = anchor_at - 8, body_b = anchor_at - 4;
+    BOOST_TEST_REQUIRE(u32_in(good, body_a) == a.index);
+    BOOST_TEST_REQUIRE(u32_in(good, body_b) == b.index);
+    for (const std::size_t at : {body_a, body_b}) {
+        std::vector<std::byte> forged = good;
+        put_u32(forged, at, 3); // the body slot count
+        fix_checksum(forged);
+        const std::optional<SnapshotError> e = refusal(forged, "joints[0]");
+        BOOST_TEST_REQUIRE(e.has_value(), (at == body_a ? "body_a" : "body_b") << " accepted");
+        BOOST_TEST(e->field == "joints[0].body_a", e->what());
+        BOOST_TEST(e->offset < body_a, e->what()); // the record's start, before its bodies
+    }
+    BOOST_TEST((World::from_snapshot(good).snapshot() == good)); // the intact one is read
+}
+
 // A record count forged beyond what the bytes left can hold (the broad phase's first tree's
 // node count, set to the number of bytes left after it) is refused by its own rule, before any
 // record is read or allocated, not later as a cut-short snapshot. Oracle: SnapshotError's
