@@ -123,6 +123,49 @@ BOOST_AUTO_TEST_CASE(type_changes_follow_r2,
     }
 }
 
+// Oracle: IM5's closed form without applied forces (no gravity), per substep v_k = v_0 (1 + h
+// c_v)^(-k) and omega_k = omega_0 (1 + h c_omega)^(-k), for a dynamic body; and R2's kinematic
+// body, which keeps the velocity it is given (damping is IM5's, of dynamic bodies). A body with
+// both damping coefficients, created static, is damped once made dynamic and not while
+// kinematic, and damped again once dynamic; a body created kinematic likewise.
+BOOST_AUTO_TEST_CASE(damping_acts_on_a_body_while_it_is_dynamic,
+                     *utf::label("IM5") * utf::label("R2")) {
+    constexpr double c_v = 0.5, c_w = 0.25;
+    for (const BodyType created : {BodyType::static_body, BodyType::kinematic}) {
+        BOOST_TEST_CONTEXT(
+            (created == BodyType::static_body ? "created static" : "created kinematic")) {
+            World w(WorldDef{.gravity = {0.0, 0.0}});
+            const BodyId b =
+                box(w, 0.0, 0.0,
+                    BodyDef{.type = created, .linear_damping = c_v, .angular_damping = c_w});
+            const auto dynamic_decays = [&] {
+                w.set_body_type(b, BodyType::dynamic);
+                w.set_velocity(b, {2.0, -1.0});
+                w.set_angular_velocity(b, 1.5);
+                for (int n = 1; n <= 20; ++n) {
+                    w.step(dt);
+                    const int k = n * substeps;
+                    BOOST_TEST(rel_err(w.velocity(b).x, 2.0 * std::pow(1.0 + h * c_v, -k)) < 1e-12);
+                    BOOST_TEST(rel_err(w.velocity(b).y, -std::pow(1.0 + h * c_v, -k)) < 1e-12);
+                    BOOST_TEST(rel_err(w.angular_velocity(b), 1.5 * std::pow(1.0 + h * c_w, -k)) <
+                               1e-12);
+                }
+            };
+            dynamic_decays();
+            w.set_body_type(b, BodyType::kinematic);
+            w.set_velocity(b, {2.0, -1.0});
+            w.set_angular_velocity(b, 1.5);
+            for (int n = 1; n <= 20; ++n) {
+                w.step(dt);
+                BOOST_TEST(w.velocity(b).x == 2.0);
+                BOOST_TEST(w.velocity(b).y == -1.0);
+                BOOST_TEST(w.angular_velocity(b) == 1.5);
+            }
+            dynamic_decays();
+        }
+    }
+}
+
 // Oracle: set_body_type's statement that a body made static stops, its velocities and one-step
 // loads zero: a body given a one-step force and torque, then made static, is in the state of
 // the same body made static without them, so the two worlds write the same snapshot bytes.
