@@ -202,6 +202,41 @@ BOOST_AUTO_TEST_CASE(a_fast_point_that_does_not_arrive_within_the_step_is_no_hit
                boost::test_tools::tolerance(1e-12));
 }
 
+// Oracle: the threshold's definition at its boundary: a hit approaches *faster* than
+// hit_event_threshold (world_def.hpp), strictly. The ball above (no gravity, 0.6 m/s) hits in
+// its second step; the same ball with the threshold set to the approach speed that hit reported
+// gives no event, and with the threshold one double below it gives the same hit again.
+BOOST_AUTO_TEST_CASE(a_hit_at_exactly_the_threshold_is_no_hit, *utf::label("DD11")) {
+    const auto hits = [](double threshold) {
+        World world(WorldDef{.gravity = {0.0, 0.0}, .enable_sleep = false});
+        world.set_hit_event_threshold(threshold);
+        BodyDef gd;
+        gd.type = BodyType::static_body;
+        gd.position = {0.0, -0.5};
+        world.create_shape(world.create_body(gd), box_shape(20.0, 1.0));
+        BodyDef bd;
+        bd.position = {0.0, 0.019 + radius};
+        bd.linear_velocity = {0.0, -0.6};
+        ShapeDef disc = circle_shape(radius);
+        disc.enable_hit_events = true;
+        world.create_shape(world.create_body(bd), disc);
+        std::vector<ContactHitEvent> out;
+        for (int s = 0; s < 2; ++s) {
+            world.step(dt);
+            const auto step_hits = world.contact_hit_events();
+            out.insert(out.end(), step_hits.begin(), step_hits.end());
+        }
+        return out;
+    };
+    const std::vector<ContactHitEvent> first = hits(0.5);
+    BOOST_TEST_REQUIRE(first.size() == 1u);
+    const double speed = first[0].approach_speed;
+    BOOST_TEST(hits(speed).empty());
+    const std::vector<ContactHitEvent> below = hits(std::nextafter(speed, 0.0));
+    BOOST_TEST_REQUIRE(below.size() == 1u);
+    BOOST_TEST(below[0].approach_speed == speed);
+}
+
 // Oracle: the event's rule, a hit's point approached faster than the threshold and pushed, on a
 // manifold of two points that each do one of the two. A 1 m x 0.2 m box stands on its left
 // bottom corner, tilted so that its right one is 0.019 m up, and turns about the corner
