@@ -5,6 +5,7 @@
 // a value the body already has changes no bit of what follows).
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <numbers>
@@ -164,6 +165,41 @@ BOOST_AUTO_TEST_CASE(damping_acts_on_a_body_while_it_is_dynamic,
             dynamic_decays();
         }
     }
+}
+
+// Oracle: R7 (every collision detected; the candidates are the pairs whose fat boxes overlap,
+// IM4) and the scene's geometry. A type change gives the body's shapes new proxies, fattened
+// about where the body is now; the step decides whether a shape left its proxy from the box the
+// proxy holds. Without gravity a unit box rises 0.08 m inside its fat box (margin 0.1 m, so the
+// broad phase does not move it), is made static and dynamic again there, then sinks at 0.3 m/s
+// onto a static peg (a disc of radius 5 mm) whose top lies 0.145 m below the box's bottom: the
+// peg's fat box (margin 0.02 m) is outside the box's new fat box but inside its old one. The
+// peg holds the box up: its bottom never sinks into the peg by 5 mm (a pair found in time stops
+// it at the peg's top), and it rests there.
+BOOST_AUTO_TEST_CASE(a_body_made_dynamic_again_collides_below_its_old_fat_box,
+                     *utf::label("IM4") * utf::label("R7")) {
+    World w(WorldDef{.gravity = {0.0, 0.0}});
+    const BodyId b = box(w, 0.0, 0.0);
+    const double peg_top = -0.565;
+    BodyDef peg;
+    peg.type = BodyType::static_body;
+    peg.position = {0.0, peg_top - 0.005};
+    w.create_shape(w.create_body(peg), circle_shape(0.005));
+    w.set_velocity(b, {0.0, 0.08 / dt});
+    w.step(dt);
+    BOOST_TEST_REQUIRE(std::abs(w.position(b).y - 0.08) < 1e-12);
+    w.set_body_type(b, BodyType::static_body);
+    w.set_body_type(b, BodyType::dynamic);
+    w.set_velocity(b, {0.0, -0.3});
+    double deepest = 0.0;
+    for (int i = 0; i < 120; ++i) {
+        w.step(dt);
+        deepest = std::max(deepest, peg_top - (w.position(b).y - 0.5));
+    }
+    BOOST_TEST_MESSAGE("deepest overlap with the peg: " << deepest << " m");
+    BOOST_TEST(deepest < 0.005);
+    BOOST_TEST(std::abs(w.position(b).y - 0.5 - peg_top) < 0.005); // resting on it
+    BOOST_TEST(std::abs(w.velocity(b).y) < 1e-3);
 }
 
 // Oracle: set_body_type's statement that a body made static stops, its velocities and one-step

@@ -5,6 +5,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <random>
 #include <string>
@@ -464,6 +465,30 @@ BOOST_AUTO_TEST_CASE(a_body_put_to_sleep_is_as_one_defined_asleep) {
     BOOST_TEST(rested.state_hash() != defined.state_hash()); // its time at rest is counted
     rested.set_awake(a, false);
     BOOST_TEST(rested.state_hash() == defined.state_hash());
+}
+
+// Oracle: the body_control rule (world.hpp): setting a value a body already has changes no bit
+// of the simulation. A box on the ground that the sleep rule put to sleep is asleep, so
+// set_awake(false) on it (which zeroes velocities, one-step loads and time at rest) must leave
+// the world's state_hash, which reads the sleep timers, as it was; and its world steps on with
+// the bits of a twin that was not told.
+BOOST_AUTO_TEST_CASE(a_body_the_rule_put_to_sleep_is_asleep_as_set_awake_puts_it) {
+    World told(def_with_sleep()), twin(def_with_sleep());
+    ground(told);
+    ground(twin);
+    const BodyId a = box(told, 0.0, 1.0), b = box(twin, 0.0, 1.0);
+    const int n = steps_until_asleep(told, {a}, 300);
+    BOOST_TEST_REQUIRE(n > 0);
+    BOOST_TEST_REQUIRE(steps_until_asleep(twin, {b}, 300) == n);
+    const std::uint64_t before = told.state_hash();
+    told.set_awake(a, false);
+    BOOST_TEST(told.state_hash() == before);
+    for (int i = 0; i < 30; ++i) {
+        told.step(dt);
+        twin.step(dt);
+    }
+    BOOST_TEST(told.state_hash() == twin.state_hash());
+    BOOST_TEST((told.snapshot() == twin.snapshot()));
 }
 
 // Oracle: the documented rule of set_awake, a body put to sleep loses its one-step loads. A
