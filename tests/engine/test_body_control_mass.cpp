@@ -174,6 +174,30 @@ BOOST_AUTO_TEST_CASE(a_set_angular_velocity_does_not_turn_a_locked_body,
     BOOST_TEST(w.angular_velocity(b) == 3.0);
 }
 
+// Oracle: DD39's angular lock, "nothing turns it", which acts on dynamic bodies: a kinematic
+// body keeps the turn it is given (R2) though its definition locks its rotation. Made dynamic,
+// the lock holds it: no angular velocity, its orientation kept through the next steps, and its
+// kinetic energy its translation's alone (DD15: 3 kg at (1, 2) m/s, 7.5 J).
+BOOST_AUTO_TEST_CASE(a_turning_kinematic_body_made_dynamic_under_a_lock_stops_turning,
+                     *utf::label("DD39") * utf::label("DD15")) {
+    World w(WorldDef{.gravity = {0.0, 0.0}});
+    const BodyId b = w.create_body(BodyDef{.type = BodyType::kinematic,
+                                           .linear_velocity = {1.0, 2.0},
+                                           .angular_velocity = 3.0,
+                                           .fixed_rotation = true});
+    w.create_shape(b, box_shape(2.0, 1.0, Material{1.5, 0.0, 0.0}));
+    w.step(dt);
+    BOOST_TEST(w.angular_velocity(b) == 3.0);
+    BOOST_TEST(w.orientation(b) == 3.0 * dt, boost::test_tools::tolerance(1e-12));
+    w.set_body_type(b, BodyType::dynamic);
+    BOOST_TEST(w.angular_velocity(b) == 0.0);
+    const double held = w.orientation(b);
+    for (int i = 0; i < 10; ++i)
+        w.step(dt);
+    BOOST_TEST(w.orientation(b) == held);
+    BOOST_TEST(w.kinetic_energy() == 7.5, boost::test_tools::tolerance(1e-14));
+}
+
 // Oracle: DD15, 1/2 m v^2 + 1/2 I omega^2, for a dynamic body without shapes: a point of the
 // default mass (1 kg) and no moment of inertia (I = 0), moving at 3 m/s and turning at 2 rad/s,
 // carries 4.5 J, its translation's alone, before and after a step.
