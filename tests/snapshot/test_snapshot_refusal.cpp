@@ -349,6 +349,39 @@ BOOST_AUTO_TEST_CASE(a_joint_naming_the_body_past_the_last_is_refused, *utf::lab
     BOOST_TEST((World::from_snapshot(good).snapshot() == good)); // the intact one is read
 }
 
+// A list of move-event flags one shorter than the bodies (its count lowered, the last flag's
+// byte taken out, the header's payload size and checksum made right) is refused at its count,
+// naming it: every world keeps one flag per body slot, and a step reads the flag of each.
+// Oracle: the reader's rule; and the format's tail (the flags' count, a byte per flag, then
+// thresholds_used: the last 12 bytes for 3 bodies), checked on the good snapshot first.
+BOOST_AUTO_TEST_CASE(a_move_flag_list_shorter_than_the_bodies_is_refused,
+                     *utf::label("reliability")) {
+    World w;
+    BodyDef d;
+    d.enable_move_events = true;
+    w.create_body(d);
+    d.enable_move_events = false;
+    w.create_body(d);
+    w.create_body(d);
+    w.step(1.0 / 60.0);
+    const std::vector<std::byte> good = w.snapshot();
+    const std::size_t count_at = good.size() - 12;
+    BOOST_TEST_REQUIRE(u32_in(good, count_at) == 3u);
+    BOOST_TEST_REQUIRE(u32_in(good, count_at + 4) == 0u);
+    BOOST_TEST_REQUIRE(std::to_integer<int>(good[count_at + 8]) == 1);  // body 0's flag
+    BOOST_TEST_REQUIRE(std::to_integer<int>(good[count_at + 10]) == 0); // body 2's
+    std::vector<std::byte> forged = good;
+    put_u32(forged, count_at, 2);
+    forged.erase(forged.begin() + std::ptrdiff_t(count_at + 10));
+    put_u32(forged, 16, u32_in(good, 16) - 1); // the payload size (below 2^32)
+    fix_checksum(forged);
+    const std::optional<SnapshotError> e = refusal(forged, "move_flags");
+    BOOST_TEST_REQUIRE(e.has_value(), "accepted");
+    BOOST_TEST(e->offset == count_at, e->what());
+    BOOST_TEST(e->field == "move_flags", e->what());
+    BOOST_TEST((World::from_snapshot(good).snapshot() == good)); // the intact one is read
+}
+
 // A record count forged beyond what the bytes left can hold (the broad phase's first tree's
 // node count, set to the number of bytes left after it) is refused by its own rule, before any
 // record is read or allocated, not later as a cut-short snapshot. Oracle: SnapshotError's

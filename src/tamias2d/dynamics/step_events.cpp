@@ -263,7 +263,11 @@ void StepEvents::read(SnapshotReader& in, const BodyStore& bodies, const ShapeSt
         joint_event_fields(in, joint_events[k]);
     }
     in.in(nullptr);
+    // One flag per body slot, as body_created keeps them: a shorter list is no world's.
+    const std::size_t flags_at = in.offset();
     move_flag_.resize(in.count("move_flags", 1, bodies.size()));
+    in.require(move_flag_.size() == bodies.size(), "move_flags", "must be one per body slot",
+               flags_at);
     move_bodies_ = 0;
     for (std::uint32_t i = 0; i < move_flag_.size(); ++i) {
         const std::size_t at = in.offset();
