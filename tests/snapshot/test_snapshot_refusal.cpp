@@ -452,6 +452,34 @@ BOOST_AUTO_TEST_CASE(a_bodys_inertia_is_read_up_to_the_largest_finite_value,
     }
 }
 
+// A body's rotation (cos, sin) forged off unit length is refused, naming xf: a rotation that
+// is not one would scale the body's shapes. Oracle: the reader's rule (body_store.cpp's
+// unsupported_field: c^2 + s^2 within 1e-6 of 1) on each side of its bound: off by 1.5e-6,
+// refused; off by 0.5e-6, read. The rotation's cosine is found by its bytes: a body at 0.5 rad
+// alone in its world, cos 0.5 a value no other field holds.
+BOOST_AUTO_TEST_CASE(a_bodys_rotation_off_unit_length_is_refused, *utf::label("reliability")) {
+    World w(WorldDef{.gravity = {0.0, 0.0}});
+    w.create_shape(w.create_body(BodyDef{.angle = 0.5}), circle_shape(0.5));
+    const std::vector<std::byte> good = w.snapshot();
+    const std::pair<std::size_t, std::size_t> body = section_bytes(good, "BODY");
+    const auto forged = [&](double off) {
+        std::vector<std::byte> b = good;
+        const std::vector<std::byte> f = bytes(std::cos(0.5));
+        const auto at = std::search(b.begin() + std::ptrdiff_t(body.first),
+                                    b.begin() + std::ptrdiff_t(body.second), f.begin(), f.end());
+        BOOST_TEST_REQUIRE((at != b.begin() + std::ptrdiff_t(body.second)));
+        const double s = std::sin(0.5), c = std::sqrt(1.0 + off - s * s);
+        const std::vector<std::byte> t = bytes(c);
+        std::copy(t.begin(), t.end(), at);
+        fix_checksum(b);
+        return b;
+    };
+    const std::optional<SnapshotError> e = refusal(forged(1.5e-6), "bodies[0]");
+    BOOST_TEST_REQUIRE(e.has_value(), "a rotation 1.5e-6 off unit accepted");
+    BOOST_TEST(e->field == "bodies[0].xf", e->what());
+    BOOST_TEST(World::from_snapshot(forged(0.5e-6)).bodies().size() == 1u);
+}
+
 // Oracle: SnapshotReader's rule for a section's tag: a payload whose section tag is not the one
 // the reader expects there is refused at the tag's offset, naming "section" and the tag it
 // must be, the world unchanged. Each of the eight sections' tags, one letter changed, with the
