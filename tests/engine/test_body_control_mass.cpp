@@ -198,6 +198,25 @@ BOOST_AUTO_TEST_CASE(a_turning_kinematic_body_made_dynamic_under_a_lock_stops_tu
     BOOST_TEST(w.kinetic_energy() == 7.5, boost::test_tools::tolerance(1e-14));
 }
 
+// Oracle: a uniform rectangle's moment of inertia in closed form, m (w^2 + h^2) / 12, and R2's
+// rule for a given mass: it replaces the shapes' mass and keeps their distribution. A 2 m x 1 m
+// box of density 1 (2 kg, 5/6 kg m^2) given a mass of 6 kg has 6 * 5 / 12 = 2.5 kg m^2, as the
+// same box of density 3 has; given a moment of inertia as well, it has that one.
+BOOST_AUTO_TEST_CASE(a_given_mass_scales_the_shapes_moment_of_inertia, *utf::label("R2")) {
+    World w(WorldDef{.gravity = {0.0, 0.0}});
+    const BodyId given = w.create_body(BodyDef{.mass = 6.0});
+    w.create_shape(given, box_shape(2.0, 1.0));
+    BOOST_TEST(w.mass(given) == 6.0);
+    BOOST_TEST(w.inertia(given) == 2.5, boost::test_tools::tolerance(1e-14));
+    const BodyId dense = w.create_body(BodyDef{});
+    w.create_shape(dense, box_shape(2.0, 1.0, Material{3.0, 0.0, 0.6}));
+    BOOST_TEST(w.mass(dense) == 6.0, boost::test_tools::tolerance(1e-14));
+    BOOST_TEST(w.inertia(dense) == 2.5, boost::test_tools::tolerance(1e-14));
+    const BodyId both = w.create_body(BodyDef{.mass = 6.0, .inertia = 4.0});
+    w.create_shape(both, box_shape(2.0, 1.0));
+    BOOST_TEST(w.inertia(both) == 4.0);
+}
+
 // Oracle: DD15, 1/2 m v^2 + 1/2 I omega^2, for a dynamic body without shapes: a point of the
 // default mass (1 kg) and no moment of inertia (I = 0), moving at 3 m/s and turning at 2 rad/s,
 // carries 4.5 J, its translation's alone, before and after a step.
