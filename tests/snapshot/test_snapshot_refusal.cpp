@@ -480,6 +480,36 @@ BOOST_AUTO_TEST_CASE(a_bodys_rotation_off_unit_length_is_refused, *utf::label("r
     BOOST_TEST(World::from_snapshot(forged(0.5e-6)).bodies().size() == 1u);
 }
 
+// A body's time at rest forged infinite is refused, naming sleep_time: a step adds to it and
+// compares it with time_to_sleep, and an infinite one would put the body to sleep at once.
+// Oracle: the reader's rule (body_store.cpp's unsupported_field: 0 <= sleep_time < inf) at its
+// upper end; the largest finite value is read. The field is found by its bytes: a body at rest
+// for 5 steps of 1/64 s in a world with sleeping has rested 5/64 s, a value no other field holds.
+BOOST_AUTO_TEST_CASE(a_bodys_time_at_rest_forged_infinite_is_refused, *utf::label("reliability")) {
+    World w(WorldDef{.gravity = {0.0, 0.0}, .enable_sleep = true});
+    w.create_shape(w.create_body(BodyDef{}), circle_shape(0.5));
+    for (int k = 0; k < 5; ++k)
+        w.step(1.0 / 64.0);
+    const std::vector<std::byte> good = w.snapshot();
+    const std::pair<std::size_t, std::size_t> body = section_bytes(good, "BODY");
+    const auto forged = [&](double to) {
+        std::vector<std::byte> b = good;
+        const std::vector<std::byte> f = bytes(5.0 / 64.0), t = bytes(to);
+        const auto at = std::search(b.begin() + std::ptrdiff_t(body.first),
+                                    b.begin() + std::ptrdiff_t(body.second), f.begin(), f.end());
+        BOOST_TEST_REQUIRE((at != b.begin() + std::ptrdiff_t(body.second)));
+        std::copy(t.begin(), t.end(), at);
+        fix_checksum(b);
+        return b;
+    };
+    const std::optional<SnapshotError> e =
+        refusal(forged(std::numeric_limits<double>::infinity()), "bodies[0]");
+    BOOST_TEST_REQUIRE(e.has_value(), "an infinite time at rest accepted");
+    BOOST_TEST(e->field == "bodies[0].sleep_time", e->what());
+    BOOST_TEST(World::from_snapshot(forged(std::numeric_limits<double>::max())).bodies().size() ==
+               1u);
+}
+
 // Oracle: SnapshotReader's rule for a section's tag: a payload whose section tag is not the one
 // the reader expects there is refused at the tag's offset, naming "section" and the tag it
 // must be, the world unchanged. Each of the eight sections' tags, one letter changed, with the
