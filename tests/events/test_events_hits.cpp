@@ -237,6 +237,40 @@ BOOST_AUTO_TEST_CASE(a_hit_at_exactly_the_threshold_is_no_hit, *utf::label("DD11
     BOOST_TEST(below[0].approach_speed == speed);
 }
 
+// Oracle: the event's rule, a hit is the fastest of the manifold's points that approached
+// faster than the threshold and pushed, and DD11's approach speed in closed form. Without
+// gravity a flat 1 m x 0.2 m box 5 mm above the ground falls at 1 m/s turning at 0.5 rad/s:
+// its bottom corners (0.5 m either side of the centre) approach at 1 + 0.25 and 1 - 0.25 m/s
+// (v + omega x r) and both land within the first step. The hit is the faster corner's, 1.25
+// m/s, on its side; turning the other way, the other corner's, so that either point of the
+// manifold is in turn the faster one.
+BOOST_AUTO_TEST_CASE(a_hit_is_the_fastest_point_of_its_manifold, *utf::label("DD11")) {
+    for (const double spin : {0.5, -0.5}) {
+        World world(WorldDef{.gravity = {0.0, 0.0}, .enable_sleep = false});
+        world.set_hit_event_threshold(0.5);
+        BodyDef gd;
+        gd.type = BodyType::static_body;
+        gd.position = {0.0, -0.5};
+        world.create_shape(world.create_body(gd), box_shape(20.0, 1.0));
+        BodyDef bd;
+        bd.position = {0.0, 0.005 + 0.1};
+        bd.linear_velocity = {0.0, -1.0};
+        bd.angular_velocity = spin;
+        ShapeDef bar = box_shape(1.0, 0.2);
+        bar.enable_hit_events = true;
+        world.create_shape(world.create_body(bd), bar);
+        world.step(dt);
+        BOOST_TEST_REQUIRE(world.contacts().size() == 1u);
+        BOOST_TEST_REQUIRE(world.contacts()[0].point_count == 2);
+        for (int j = 0; j < 2; ++j)
+            BOOST_TEST_REQUIRE(world.contacts()[0].points[j].normal_impulse > 0.0, "corner " << j);
+        BOOST_TEST_REQUIRE(world.contact_hit_events().size() == 1u);
+        const ContactHitEvent& hit = world.contact_hit_events()[0];
+        BOOST_TEST(hit.approach_speed == 1.25, boost::test_tools::tolerance(1e-12));
+        BOOST_TEST(hit.point.x * spin < 0.0, "the faster corner's side, spin " << spin);
+    }
+}
+
 // Oracle: the event's rule, a hit's point approached faster than the threshold and pushed, on a
 // manifold of two points that each do one of the two. A 1 m x 0.2 m box stands on its left
 // bottom corner, tilted so that its right one is 0.019 m up, and turns about the corner
