@@ -54,6 +54,14 @@ struct Drop {
     }
 };
 
+/// A static ground 20 m wide whose top face is y = 0.
+void ground(World& world) {
+    BodyDef gd;
+    gd.type = BodyType::static_body;
+    gd.position = {0.0, -0.5};
+    world.create_shape(world.create_body(gd), box_shape(20.0, 1.0));
+}
+
 } // namespace
 
 BOOST_AUTO_TEST_SUITE(events_hits)
@@ -146,10 +154,7 @@ BOOST_AUTO_TEST_CASE(hits_are_reported_when_either_shape_asks) {
 // first within g (dt + h_s) of sqrt(2 g h) (above).
 BOOST_AUTO_TEST_CASE(a_bouncing_ball_hits_ever_slower) {
     World world(WorldDef{.gravity = {0.0, -g}, .enable_sleep = false});
-    BodyDef gd;
-    gd.type = BodyType::static_body;
-    gd.position = {0.0, -0.5};
-    world.create_shape(world.create_body(gd), box_shape(20.0, 1.0));
+    ground(world);
     BodyDef bd;
     bd.position = {0.0, 2.0 + radius};
     const BodyId ball = world.create_body(bd);
@@ -180,10 +185,7 @@ BOOST_AUTO_TEST_CASE(a_fast_point_that_does_not_arrive_within_the_step_is_no_hit
                      *utf::label("DD11")) {
     World world(WorldDef{.gravity = {0.0, 0.0}, .enable_sleep = false});
     world.set_hit_event_threshold(0.5);
-    BodyDef gd;
-    gd.type = BodyType::static_body;
-    gd.position = {0.0, -0.5};
-    world.create_shape(world.create_body(gd), box_shape(20.0, 1.0));
+    ground(world);
     const double gap = 0.019, speed = 0.6;
     BodyDef bd;
     bd.position = {0.0, gap + radius};
@@ -210,10 +212,7 @@ BOOST_AUTO_TEST_CASE(a_hit_at_exactly_the_threshold_is_no_hit, *utf::label("DD11
     const auto hits = [](double threshold) {
         World world(WorldDef{.gravity = {0.0, 0.0}, .enable_sleep = false});
         world.set_hit_event_threshold(threshold);
-        BodyDef gd;
-        gd.type = BodyType::static_body;
-        gd.position = {0.0, -0.5};
-        world.create_shape(world.create_body(gd), box_shape(20.0, 1.0));
+        ground(world);
         BodyDef bd;
         bd.position = {0.0, 0.019 + radius};
         bd.linear_velocity = {0.0, -0.6};
@@ -248,10 +247,7 @@ BOOST_AUTO_TEST_CASE(a_hit_is_the_fastest_point_of_its_manifold, *utf::label("DD
     for (const double spin : {0.5, -0.5}) {
         World world(WorldDef{.gravity = {0.0, 0.0}, .enable_sleep = false});
         world.set_hit_event_threshold(0.5);
-        BodyDef gd;
-        gd.type = BodyType::static_body;
-        gd.position = {0.0, -0.5};
-        world.create_shape(world.create_body(gd), box_shape(20.0, 1.0));
+        ground(world);
         BodyDef bd;
         bd.position = {0.0, 0.005 + 0.1};
         bd.linear_velocity = {0.0, -1.0};
@@ -283,10 +279,7 @@ BOOST_AUTO_TEST_CASE(a_hit_is_the_fastest_point_of_its_manifold, *utf::label("DD
 BOOST_AUTO_TEST_CASE(a_point_that_pushes_without_approaching_is_no_hit, *utf::label("DD11")) {
     World world(WorldDef{.gravity = {0.0, -g}, .enable_sleep = false});
     world.set_hit_event_threshold(0.5);
-    BodyDef gd;
-    gd.type = BodyType::static_body;
-    gd.position = {0.0, -0.5};
-    world.create_shape(world.create_body(gd), box_shape(20.0, 1.0));
+    ground(world);
     const double lift = 0.019, angle = std::asin(lift), c = std::cos(angle);
     const double omega = -0.6 / c; // the right corner, 1 m from the left, comes down at 0.6 m/s
     const Vec2d corner{-0.5 * c + 0.1 * lift, -0.5 * lift - 0.1 * c}; // left corner from centre

@@ -57,6 +57,19 @@ bool refused_unchanged(World& target, std::span<const std::byte> bytes,
     return false;
 }
 
+/// A static ground body (no shape) and two dynamic discs of radius 0.25 m at (1, 0) and (2, 0).
+struct TwoDiscs {
+    BodyId ground, a, b;
+};
+TwoDiscs two_discs(World& w) {
+    const BodyId ground = w.create_body({.type = BodyType::static_body});
+    const BodyId a = w.create_body({.position = {1.0, 0.0}});
+    const BodyId b = w.create_body({.position = {2.0, 0.0}});
+    w.create_shape(a, circle_shape(0.25));
+    w.create_shape(b, circle_shape(0.25));
+    return {ground, a, b};
+}
+
 /// The snapshot's checksum (its header's first 24 bytes, then the payload) made right again,
 /// so that a change reaches the reader of the sections.
 void fix_checksum(std::vector<std::byte>& b) {
@@ -270,14 +283,7 @@ BOOST_AUTO_TEST_CASE(every_byte_of_every_section_forged, *utf::label("reliabilit
 BOOST_AUTO_TEST_CASE(a_joints_impulse_bound_forged_negative_is_refused,
                      *utf::label("reliability")) {
     World w;
-    BodyDef d;
-    const BodyId ground = w.create_body({.type = BodyType::static_body});
-    d.position = {1.0, 0.0};
-    const BodyId a = w.create_body(d);
-    d.position = {2.0, 0.0};
-    const BodyId b = w.create_body(d);
-    w.create_shape(a, circle_shape(0.25));
-    w.create_shape(b, circle_shape(0.25));
+    const auto [ground, a, b] = two_discs(w);
     RevoluteJointDef rj{.body_a = ground, .body_b = a, .anchor = {0.0, 0.0}};
     rj.enable_motor = true;
     rj.max_motor_torque = 3.0625; // (values no other field holds: found by their bytes)
@@ -317,14 +323,8 @@ BOOST_AUTO_TEST_CASE(a_joints_impulse_bound_forged_negative_is_refused,
 // value, which no other field holds, finding them.
 BOOST_AUTO_TEST_CASE(a_joint_naming_the_body_past_the_last_is_refused, *utf::label("reliability")) {
     World w;
-    BodyDef d;
-    w.create_body({.type = BodyType::static_body});
-    d.position = {1.0, 0.0};
-    const BodyId a = w.create_body(d);
-    d.position = {2.0, 0.0};
-    const BodyId b = w.create_body(d);
-    w.create_shape(a, circle_shape(0.25));
-    w.create_shape(b, circle_shape(0.25));
+    const TwoDiscs discs = two_discs(w);
+    const BodyId a = discs.a, b = discs.b;
     w.create_joint(RevoluteJointDef{.body_a = a, .body_b = b, .anchor = {1.40625, 0.0}});
     w.step(1.0 / 60.0);
     const std::vector<std::byte> good = w.snapshot();
