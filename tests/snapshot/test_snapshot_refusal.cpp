@@ -131,6 +131,21 @@ std::pair<std::size_t, std::size_t> section_bytes(const std::vector<std::byte>& 
     return {begin, end};
 }
 
+/// `b` with the first bytes of the double `from` in the section tagged `tag` made those of `to`
+/// (a value found by its bytes: one no other field of the section holds), its checksum made
+/// right again.
+std::vector<std::byte> with_double(std::vector<std::byte> b, const std::string& tag, double from,
+                                   double to) {
+    const auto [begin, end] = section_bytes(b, tag);
+    const std::vector<std::byte> f = bytes(from), t = bytes(to);
+    const auto at = std::search(b.begin() + std::ptrdiff_t(begin), b.begin() + std::ptrdiff_t(end),
+                                f.begin(), f.end());
+    BOOST_TEST_REQUIRE((at != b.begin() + std::ptrdiff_t(end)), tag << ": " << from << " found");
+    std::copy(t.begin(), t.end(), at);
+    fix_checksum(b);
+    return b;
+}
+
 } // namespace
 
 BOOST_AUTO_TEST_SUITE(snapshot_refusal)
@@ -294,16 +309,9 @@ BOOST_AUTO_TEST_CASE(a_joints_impulse_bound_forged_negative_is_refused,
     w.create_joint(mj);
     w.step(1.0 / 60.0);
     const std::vector<std::byte> good = w.snapshot();
-    const auto [begin, end] = section_bytes(good, "JOIN");
     for (const auto& [field, value] :
          {std::pair{"max_motor", 3.0625}, {"max_torque", 5.1875}, {"max_force", 7.3125}}) {
-        std::vector<std::byte> forged = good;
-        const std::vector<std::byte> from = bytes(value), to = bytes(-value);
-        const auto at = std::search(forged.begin() + std::ptrdiff_t(begin),
-                                    forged.begin() + std::ptrdiff_t(end), from.begin(), from.end());
-        BOOST_TEST_REQUIRE((at != forged.begin() + std::ptrdiff_t(end)), field);
-        std::copy(to.begin(), to.end(), at);
-        fix_checksum(forged);
+        const std::vector<std::byte> forged = with_double(good, "JOIN", value, -value);
         World target;
         BOOST_TEST(refused_unchanged(target, forged, std::string("joints[")), field);
         try {
@@ -422,20 +430,8 @@ BOOST_AUTO_TEST_CASE(a_bodys_inertia_is_read_up_to_the_largest_finite_value,
     w.create_shape(disc, circle_shape(0.5));
     const double inertia = w.inertia(disc);
     const std::vector<std::byte> good = w.snapshot();
-    // Not a structured binding: Debian 12's clang cannot capture one in a lambda.
-    const std::pair<std::size_t, std::size_t> body = section_bytes(good, "BODY");
-    const std::size_t begin = body.first, end = body.second;
     const auto forged = [&](double to) {
-        std::vector<std::byte> b = good;
-        for (const auto& [from, into] : {std::pair{inertia, to}, {1.0 / inertia, 1.0 / to}}) {
-            const std::vector<std::byte> f = bytes(from), t = bytes(into);
-            const auto at = std::search(b.begin() + std::ptrdiff_t(begin),
-                                        b.begin() + std::ptrdiff_t(end), f.begin(), f.end());
-            BOOST_TEST_REQUIRE((at != b.begin() + std::ptrdiff_t(end)));
-            std::copy(t.begin(), t.end(), at);
-        }
-        fix_checksum(b);
-        return b;
+        return with_double(with_double(good, "BODY", inertia, to), "BODY", 1.0 / inertia, 1.0 / to);
     };
     const double largest = std::numeric_limits<double>::max();
     World loaded = World::from_snapshot(forged(largest));
@@ -461,18 +457,9 @@ BOOST_AUTO_TEST_CASE(a_bodys_rotation_off_unit_length_is_refused, *utf::label("r
     World w(WorldDef{.gravity = {0.0, 0.0}});
     w.create_shape(w.create_body(BodyDef{.angle = 0.5}), circle_shape(0.5));
     const std::vector<std::byte> good = w.snapshot();
-    const std::pair<std::size_t, std::size_t> body = section_bytes(good, "BODY");
     const auto forged = [&](double off) {
-        std::vector<std::byte> b = good;
-        const std::vector<std::byte> f = bytes(std::cos(0.5));
-        const auto at = std::search(b.begin() + std::ptrdiff_t(body.first),
-                                    b.begin() + std::ptrdiff_t(body.second), f.begin(), f.end());
-        BOOST_TEST_REQUIRE((at != b.begin() + std::ptrdiff_t(body.second)));
-        const double s = std::sin(0.5), c = std::sqrt(1.0 + off - s * s);
-        const std::vector<std::byte> t = bytes(c);
-        std::copy(t.begin(), t.end(), at);
-        fix_checksum(b);
-        return b;
+        const double s = std::sin(0.5);
+        return with_double(good, "BODY", std::cos(0.5), std::sqrt(1.0 + off - s * s));
     };
     const std::optional<SnapshotError> e = refusal(forged(1.5e-6), "bodies[0]");
     BOOST_TEST_REQUIRE(e.has_value(), "a rotation 1.5e-6 off unit accepted");
@@ -491,17 +478,7 @@ BOOST_AUTO_TEST_CASE(a_bodys_time_at_rest_forged_infinite_is_refused, *utf::labe
     for (int k = 0; k < 5; ++k)
         w.step(1.0 / 64.0);
     const std::vector<std::byte> good = w.snapshot();
-    const std::pair<std::size_t, std::size_t> body = section_bytes(good, "BODY");
-    const auto forged = [&](double to) {
-        std::vector<std::byte> b = good;
-        const std::vector<std::byte> f = bytes(5.0 / 64.0), t = bytes(to);
-        const auto at = std::search(b.begin() + std::ptrdiff_t(body.first),
-                                    b.begin() + std::ptrdiff_t(body.second), f.begin(), f.end());
-        BOOST_TEST_REQUIRE((at != b.begin() + std::ptrdiff_t(body.second)));
-        std::copy(t.begin(), t.end(), at);
-        fix_checksum(b);
-        return b;
-    };
+    const auto forged = [&](double to) { return with_double(good, "BODY", 5.0 / 64.0, to); };
     const std::optional<SnapshotError> e =
         refusal(forged(std::numeric_limits<double>::infinity()), "bodies[0]");
     BOOST_TEST_REQUIRE(e.has_value(), "an infinite time at rest accepted");
