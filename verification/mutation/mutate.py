@@ -942,20 +942,37 @@ def load_judgements(path=SURVIVORS):
     return out
 
 
-def stale_judgements(judgements, muts):
-    """The keys of judgements that name no mutant of muts: the line changed, or the occurrence
-    is past the number of such mutants in the file. A stale record is an error."""
-    keys = {survivor_key(m) for m in muts}
+REFERENCE = os.path.join("verification", "mutation", "reference", "mutation.json")
+
+
+def reference_survivors(root):
+    """The survivor keys of the reference analysis kept in root (REFERENCE; none when it keeps
+    none): the record judges them for the reference's own tree, also after their lines change
+    in the checkout."""
+    path = os.path.join(root, REFERENCE)
+    if not os.path.exists(path):
+        return set()
+    with open(path, encoding="utf-8") as fh:
+        rows = json.load(fh).get("mutants", [])
+    return {survivor_key(r) for r in rows if r.get("verdict") == "survived"}
+
+
+def stale_judgements(judgements, muts, reference=()):
+    """The keys of judgements that name no mutant of muts nor a survivor of the reference
+    (keys): the line changed, or the occurrence is past the number of such mutants in the
+    file. A stale record is an error."""
+    keys = {survivor_key(m) for m in muts} | set(reference)
     return sorted(k for k in judgements if k not in keys)
 
 
-def check_record(path, muts):
+def check_record(path, muts, reference=()):
     """load_judgements, and a stale record an error too."""
     judgements = load_judgements(path)
-    stale = stale_judgements(judgements, muts)
+    stale = stale_judgements(judgements, muts, reference)
     if stale:
-        raise SystemExit(f"{path}: {len(stale)} judgement(s) name no mutant of this tree (the "
-                         f"line changed or the occurrence is past its last): "
+        raise SystemExit(f"{path}: {len(stale)} judgement(s) name no mutant of this tree nor a "
+                         f"survivor of its reference analysis (the line changed or the "
+                         f"occurrence is past its last): "
                          + "; ".join(f"{f} '{t}' {o} occurrence {n}" for f, t, o, n in stale[:5]))
     return judgements
 
@@ -1561,7 +1578,7 @@ def main(argv=None):
             pass
         return 0
     # A malformed or stale record stops the run before any build.
-    check_record(a.survivors, muts)
+    check_record(a.survivors, muts, reference_survivors(a.root))
     if a.ids:
         by_id = {m["id"]: m for m in muts}
         chosen = [by_id[int(x)] for x in a.ids.split(",") if x.strip()]

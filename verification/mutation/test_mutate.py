@@ -186,6 +186,15 @@ class Scoring(unittest.TestCase):
         self.assertEqual(mutate.stale_judgements(stale, muts),
                          [("f.cpp", "y = a + b + c;", "arith + to -", 3)])
         self.assertEqual(mutate.stale_judgements(j, muts), [])
+        # A survivor of the reference analysis is judged for the reference's tree: its record
+        # is not stale where its line changed since, but a key the reference killed is.
+        gone = ("f.cpp", "y = a * b;", "arith * to /", 1)
+        changed = self.judgements([{"file": gone[0], "line": gone[1], "op": gone[2],
+                                    "occurrence": 1, "verdict": "gap", "reason": "r"}])
+        self.assertEqual(mutate.stale_judgements(changed, muts), [gone])
+        self.assertEqual(mutate.stale_judgements(changed, muts, {gone}), [])
+        self.assertEqual(mutate.stale_judgements(stale, muts, {gone}),
+                         [("f.cpp", "y = a + b + c;", "arith + to -", 3)])
 
     def test_malformed_judgement_is_an_error(self):
         good = {"file": "f", "line": "x", "op": "o", "occurrence": 1, "verdict": "gap",
@@ -214,13 +223,28 @@ class Scoring(unittest.TestCase):
             with self.subTest(bad=bad), self.assertRaises(SystemExit):
                 self.judgements([bad])
 
+    def test_the_reference_survivors_are_read_from_its_file(self):
+        # Only the survivors: a killed or stillborn mutant of the reference needs no record.
+        row = {"file": "f.cpp", "before": "  y = a * b;", "op": "arith * to /", "occurrence": 1}
+        with tempfile.TemporaryDirectory() as root:
+            self.assertEqual(mutate.reference_survivors(root), set())
+            path = os.path.join(root, mutate.REFERENCE)
+            os.makedirs(os.path.dirname(path))
+            with open(path, "w", encoding="utf-8") as fh:
+                json.dump({"mutants": [dict(row, verdict="survived"),
+                                       dict(row, occurrence=2, verdict="killed"),
+                                       dict(row, occurrence=3, verdict="stillborn")]}, fh)
+            self.assertEqual(mutate.reference_survivors(root),
+                             {("f.cpp", "y = a * b;", "arith * to /", 1)})
+
     def test_the_repository_record_is_well_formed(self):
         # Every judged survivor names a mutant of this tree: its line text in its file with a
         # mutant of that operator, and at least as many of them as its occurrence. A record
         # that no mutant reaches any more is stale.
         muts = mutate.all_mutants(mutate.ROOT)
-        self.assertEqual(mutate.stale_judgements(mutate.load_judgements(), muts), [])
-        mutate.check_record(mutate.SURVIVORS, muts)
+        reference = mutate.reference_survivors(mutate.ROOT)
+        self.assertEqual(mutate.stale_judgements(mutate.load_judgements(), muts, reference), [])
+        mutate.check_record(mutate.SURVIVORS, muts, reference)
 
     def test_failed_entries_from_a_ctest_log(self):
         log = ("50% tests passed, 1 tests failed out of 2\n\nThe following tests FAILED:\n"
