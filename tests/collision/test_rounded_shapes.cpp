@@ -228,6 +228,31 @@ BOOST_AUTO_TEST_CASE(convex_vertex_keeps_its_arc, *utf::label("DD31")) {
     }
 }
 
+// Oracle: hand geometry of DD31 and its one-sidedness. A wide triangle (centre 0.02 m in front
+// of the edge, top 0.45 m above its line, apex 0.85 m below) overlaps the edge least along -y:
+// two-sided, the separating axis test gives the back of the edge. DD31 admits no normal facing
+// away from the edge's arcs, so the edge answers with its face, +y, whether the vertex before
+// it is flat or convex by only 0.3 degrees (an arc narrower than the tolerance's angle).
+BOOST_AUTO_TEST_CASE(a_barely_convex_vertex_admits_no_back_normal,
+                     *utf::label("DD31") * utf::label("T5")) {
+    const Vec2d corners[] = {
+        {-2.0, 0.3 + 0.4 / 3.0}, {2.0, 0.3 + 0.4 / 3.0}, {0.0, -1.0 + 0.4 / 3.0}};
+    const Geometry wedge = to_geometry(make_polygon(corners));
+    const Transform xb = at(0.2, 0.02);
+    const Geometry two_sided = to_geometry(make_segment({1.0, 0.0}, {-1.0, 0.0}));
+    const Manifold back = collide(two_sided, wedge, input(at(0, 0), xb, 0.05));
+    BOOST_TEST_REQUIRE(back.count >= 1);
+    BOOST_TEST(back.normal.y == -1.0, tt::tolerance(1e-12)); // the back, shown
+    for (const double drop : {0.0, 2.0 * std::tan(0.3 * std::numbers::pi / 180.0)}) {
+        const Geometry e = edge({3.0, -drop}, {1.0, 0.0}, {-1.0, 0.0}, {-3.0, 0.0});
+        const Manifold m = collide(e, wedge, input(at(0, 0), xb, 0.05));
+        BOOST_TEST_REQUIRE(m.count >= 1);
+        BOOST_TEST(m.normal.x == 0.0, tt::tolerance(1e-15));
+        BOOST_TEST_INFO("the vertex's drop " << drop);
+        BOOST_TEST(m.normal.y == 1.0, tt::tolerance(1e-15));
+    }
+}
+
 // Oracle: brute-force distance (oracles.hpp) and DD31's one-sidedness: a chain edge whose
 // ghosts make its ends right-angle convex corners (an open chain of one edge) admits every
 // normal into the half-plane in front of it, so against any shape wholly in front of its line
