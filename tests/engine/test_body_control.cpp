@@ -205,8 +205,10 @@ BOOST_AUTO_TEST_CASE(a_body_made_dynamic_again_collides_below_its_old_fat_box,
 // Oracle: set_body_type's statement that a body made static stops, its velocities and one-step
 // loads zero: a body given a one-step force and torque, then made static, is in the state of
 // the same body made static without them, so the two worlds write the same snapshot bytes.
+// Made dynamic again at once, with or without them, it has no load left: its step moves it as
+// gravity alone does, IM1's fall straight down and IM2 without torque, no turn at all.
 BOOST_AUTO_TEST_CASE(a_body_made_static_keeps_no_one_step_load, *utf::label("reliability")) {
-    const auto made_static = [](bool loaded) {
+    const auto made_static = [](bool loaded, bool dynamic_again) {
         World w(WorldDef{.gravity = {0.0, -10.0}});
         const BodyId b = box(w, 0.0, 10.0);
         if (loaded) {
@@ -214,10 +216,18 @@ BOOST_AUTO_TEST_CASE(a_body_made_static_keeps_no_one_step_load, *utf::label("rel
             w.apply_torque(b, 1.5);
         }
         w.set_body_type(b, BodyType::static_body);
+        if (dynamic_again) {
+            w.set_body_type(b, BodyType::dynamic);
+            w.step(dt);
+            BOOST_TEST(w.angular_velocity(b) == 0.0);
+            BOOST_TEST(w.velocity(b).x == 0.0);
+            BOOST_TEST(w.velocity(b).y < 0.0);
+        }
         return w.snapshot();
     };
-    const std::vector<std::byte> plain = made_static(false);
-    BOOST_TEST((made_static(true) == plain));
+    const std::vector<std::byte> plain = made_static(false, false);
+    BOOST_TEST((made_static(true, false) == plain));
+    BOOST_TEST((made_static(true, true) == made_static(false, true)));
 }
 
 // Oracle: the handles, user data, joints and settings given before the change, and the rule

@@ -330,6 +330,40 @@ BOOST_AUTO_TEST_CASE(streams_keep_the_order_and_wait_for_their_predecessors) {
     }
 }
 
+// Oracle: the order is a function of its inputs (the rule of world_def.hpp names no history):
+// a graph that coloured other scenes and other region counts before gives each scene the packs,
+// streams and waits a new graph gives it, as the world's solver reuses its graph step by step.
+BOOST_AUTO_TEST_CASE(a_graph_used_before_colours_as_a_new_one) {
+    ConstraintGraph reused;
+    int compared = 0;
+    for (std::uint32_t seed = 40; seed < 52; ++seed) {
+        const Scene scene = random_scene(seed, 5 + int(seed % 19), 30 + int(seed * 11 % 150));
+        const std::vector<double> cut = random_places(seed, scene.bodies.size());
+        std::vector<GraphEdge> edges;
+        for (const ContactConstraint& c : scene.constraints)
+            edges.push_back(test::prepared_edge(c));
+        for (std::uint32_t regions = 2; regions <= 4; ++regions) {
+            BOOST_TEST_CONTEXT("seed " << seed << ", " << regions << " regions") {
+                ConstraintGraph fresh;
+                fresh.colour(edges, scene.bodies.size(), regions, cut);
+                reused.colour(edges, scene.bodies.size(), regions, cut);
+                BOOST_TEST_REQUIRE(reused.streams() == fresh.streams());
+                BOOST_TEST(std::ranges::equal(reused.packs(), fresh.packs()));
+                for (std::uint32_t st = 0; st <= fresh.streams(); ++st)
+                    BOOST_TEST(reused.stream_begin(st) == fresh.stream_begin(st));
+                for (std::size_t p = 0; p < std::min(reused.packs().size(), fresh.packs().size());
+                     ++p)
+                    BOOST_TEST(std::ranges::equal(
+                        reused.waits(p), fresh.waits(p), [](StreamWait a, StreamWait b) {
+                            return a.stream == b.stream && a.packs == b.packs;
+                        }));
+                ++compared;
+            }
+        }
+    }
+    BOOST_TEST(compared == 36);
+}
+
 // Oracle: as above, where the colours run out: a body with more manifolds between regions than
 // the 64 colours (the definition's "with all taken, 64", after every coloured one). A hub on
 // one side of the cut touches 70 bodies on the other, and a second hub touches the last six of
