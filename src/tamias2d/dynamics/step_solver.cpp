@@ -38,6 +38,23 @@ bool immovable(const BodyStore& store, std::uint32_t i, const WorldDef& def) {
            !store.alive(i) || b.type == BodyType::static_body;
 }
 
+/// A body's place along the regions' cut axis (`across`: across gravity, unit).
+double cut_place(const Body& b, Vec2d across) {
+    return b.center.x * across.x + b.center.y * across.y;
+}
+
+/// IM5's factors of a body for substeps of h, linear and angular: 1 for an undamped body.
+struct Decay {
+    double linear, angular;
+};
+
+Decay decay_of(const Body& b, const BodySettings& set, double h) {
+    if (!b.damped)
+        return {1.0, 1.0};
+    return {bridge::linear_decay_factor(set.linear_damping, h),
+            bridge::angular_decay_factor(set.angular_damping, h)};
+}
+
 /// A moving body's accelerations from gravity and its loads (IM1, IM2).
 struct Accelerations {
     Vec2d a{};
@@ -113,7 +130,7 @@ void StepSolver::prepare_bodies(const BodyStore& store, const StepContext& step)
         solver_index_[i] = std::uint32_t(solver_bodies_.size());
         solver_bodies_.push_back({b.v, b.w, b.inv_mass, b.inv_inertia, {}, 0.0});
         if (regions)
-            cut_.push_back(b.center.x * across.x + b.center.y * across.y);
+            cut_.push_back(cut_place(b, across));
         const Accelerations acc = accelerations_of(b, i, loads, def);
         accelerations_.push_back(acc.a);
         angular_accelerations_.push_back(acc.alpha);
@@ -123,11 +140,9 @@ void StepSolver::prepare_bodies(const BodyStore& store, const StepContext& step)
             angular_decay_.resize(solver_bodies_.size() - 1, 1.0);
         }
         if (any_damped_) {
-            const BodySettings& set = store.settings[i];
-            linear_decay_.push_back(b.damped ? bridge::linear_decay_factor(set.linear_damping, h)
-                                             : 1.0);
-            angular_decay_.push_back(b.damped ? bridge::angular_decay_factor(set.angular_damping, h)
-                                              : 1.0);
+            const Decay d = decay_of(b, store.settings[i], h);
+            linear_decay_.push_back(d.linear);
+            angular_decay_.push_back(d.angular);
         }
     }
     list_locked();
@@ -191,16 +206,14 @@ void StepSolver::prepare_bodies_in_blocks(const BodyStore& store, const memory::
                 const Body& b = bodies[i];
                 solver_bodies_[s] = {b.v, b.w, b.inv_mass, b.inv_inertia, {}, 0.0};
                 if (regions)
-                    cut_[s] = b.center.x * across.x + b.center.y * across.y;
+                    cut_[s] = cut_place(b, across);
                 const Accelerations acc = accelerations_of(b, i, loads, def);
                 accelerations_[s] = acc.a;
                 angular_accelerations_[s] = acc.alpha;
                 if (any_damped_) {
-                    const BodySettings& set = store.settings[i];
-                    linear_decay_[s] =
-                        b.damped ? bridge::linear_decay_factor(set.linear_damping, h) : 1.0;
-                    angular_decay_[s] =
-                        b.damped ? bridge::angular_decay_factor(set.angular_damping, h) : 1.0;
+                    const Decay d = decay_of(b, store.settings[i], h);
+                    linear_decay_[s] = d.linear;
+                    angular_decay_[s] = d.angular;
                 }
             }
         }
