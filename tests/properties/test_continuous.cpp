@@ -258,7 +258,9 @@ BOOST_AUTO_TEST_CASE(a_stopped_spinning_body_turns_part_of_its_way, *utf::label(
 // swings 0.67 m a step, across a static segment 0.25 m away; and at 60 rad/s, a turn of exactly
 // 1 rad a step (four substeps of 0.25 rad). Its centre never ends a step past the segment's
 // line; without continuous collision it does (so the test can fail). The scene is built along
-// y and again turned a quarter turn, along x.
+// y and again turned a quarter turn, along x. Where the pass stops the body, as after any step,
+// it stays one rigid frame: its centre of mass is its origin plus its turned local centre, and
+// its disc sits at its origin plus the disc's turned offset (the body's definition).
 BOOST_AUTO_TEST_CASE(a_turning_body_is_swept_from_its_centre_of_mass, *utf::label("DD29")) {
     const auto swing = [](bool continuous, bool turned, double spin) {
         // The scene's points, turned a quarter turn counter-clockwise when asked.
@@ -284,6 +286,15 @@ BOOST_AUTO_TEST_CASE(a_turning_body_is_swept_from_its_centre_of_mass, *utf::labe
             const Aabb box = world.shape_aabb(disc);
             const Vec2d c{0.5 * (box.min_x + box.max_x), 0.5 * (box.min_y + box.max_y)};
             crossed = crossed || (turned ? c.y : c.x) < -0.3; // the unturned scene's x
+            const Vec2d o = world.origin(body), p = world.position(body);
+            const double q = world.orientation(body), cq = std::cos(q), sq = std::sin(q);
+            const auto turn = [&](Vec2d v) {
+                return Vec2d{cq * v.x - sq * v.y, sq * v.x + cq * v.y};
+            };
+            const Vec2d lc = turn(world.local_center(body)), offset = turn(at(0.0, 1.0));
+            BOOST_TEST(std::hypot(o.x + lc.x - p.x, o.y + lc.y - p.y) <= 1e-12, "step " << k);
+            BOOST_TEST(std::hypot(o.x + offset.x - c.x, o.y + offset.y - c.y) <= 1e-12,
+                       "step " << k);
         }
         return crossed;
     };

@@ -417,6 +417,36 @@ BOOST_AUTO_TEST_CASE(a_count_beyond_the_bytes_left_is_refused_as_such, *utf::lab
     }
 }
 
+// A dynamic body's mass is read as any positive finite value: the smallest positive normal
+// double is accepted (its inverse, finite, written to match), and zero of either sign is
+// refused, naming the field, though its inverse is written to match too (1 / 0: infinite).
+// Oracle: the rule of the mass properties as update_mass leaves them (body_store.cpp's reader:
+// a dynamic body's mass > 0 and finite, the inverses its own; R2: a dynamic body has a positive
+// mass), the boundary on each side. The fields are found by their bytes: a disc of radius 0.5
+// alone in its world has m = pi / 4 kg, a value no other field of its section holds, and 1 / m.
+BOOST_AUTO_TEST_CASE(a_dynamic_bodys_mass_of_zero_is_refused, *utf::label("reliability")) {
+    World w(WorldDef{.gravity = {0.0, 0.0}});
+    const BodyId disc = w.create_body(BodyDef{});
+    w.create_shape(disc, circle_shape(0.5));
+    const double mass = w.mass(disc);
+    const std::vector<std::byte> good = w.snapshot();
+    const auto forged = [&](double to) {
+        return with_double(with_double(good, "BODY", mass, to), "BODY", 1.0 / mass, 1.0 / to);
+    };
+    const double smallest = std::numeric_limits<double>::min();
+    World loaded = World::from_snapshot(forged(smallest));
+    for (const BodyId b : loaded.bodies())
+        BOOST_TEST(loaded.mass(b) == smallest);
+    for (const double zero : {0.0, -0.0}) {
+        try {
+            World::from_snapshot(forged(zero));
+            BOOST_TEST(false, "a mass of " << zero << " accepted");
+        } catch (const SnapshotError& e) {
+            BOOST_TEST(e.field.ends_with("mass"), e.what());
+        }
+    }
+}
+
 // A body's moment of inertia is read as any finite non-negative value: the largest finite
 // double is accepted (its inverse written to match), and infinity is refused, naming the field.
 // Oracle: the rule of the mass properties as update_mass leaves them (body_store.cpp's reader:
