@@ -64,24 +64,15 @@ void ConstraintGraph::between_by_colour(std::span<const GraphEdge> edges,
     // order (bottom up) those across one bound are a chain up the pile, each sharing a box with
     // the one below it: one level per manifold, so one lane per pack. Greedy colours (at most
     // `colours`, the rest after them) make that chain two or three levels.
-    constexpr std::uint32_t colours = 64;
-    body_colours_.resize(body_count, 0); // all zero between calls
+    constexpr std::uint32_t colours = GreedyColours::colours;
+    body_colours_.cover(body_count);
     colour_of_.resize(between.size());
     std::array<std::uint32_t, colours + 2> start{};
     for (std::size_t k = 0; k < between.size(); ++k) {
         const GraphEdge& e = edges[between[k]];
-        // Body 0 stands for every static body: never written, so it bars no colour.
-        const std::uint64_t used = (e.body_a != 0 ? body_colours_[e.body_a] : 0) |
-                                   (e.body_b != 0 ? body_colours_[e.body_b] : 0);
-        const auto c = std::uint32_t(std::countr_zero(~used)); // 64: all taken
+        const std::uint32_t c = body_colours_.take(e.body_a, e.body_b); // 64: all taken
         colour_of_[k] = c;
         ++start[c + 1];
-        if (c < colours) {
-            if (e.body_a != 0)
-                body_colours_[e.body_a] |= std::uint64_t{1} << c;
-            if (e.body_b != 0)
-                body_colours_[e.body_b] |= std::uint64_t{1} << c;
-        }
     }
     for (std::uint32_t c = 0; c <= colours; ++c)
         start[c + 1] += start[c];
@@ -89,10 +80,8 @@ void ConstraintGraph::between_by_colour(std::span<const GraphEdge> edges,
     for (std::size_t k = 0; k < between.size(); ++k)
         between_scratch_[start[colour_of_[k]]++] = between[k];
     std::copy(between_scratch_.begin(), between_scratch_.end(), between.begin());
-    for (const std::uint32_t i : between) {
-        body_colours_[edges[i].body_a] = 0;
-        body_colours_[edges[i].body_b] = 0;
-    }
+    for (const std::uint32_t i : between)
+        body_colours_.release(edges[i].body_a, edges[i].body_b);
 }
 
 std::size_t ConstraintGraph::regrouped(std::span<const GraphEdge> edges, std::uint32_t R,

@@ -31,6 +31,7 @@
 #include <span>
 #include <vector>
 
+#include "tamias2d/dynamics/greedy_colours.hpp"
 #include "tamias2d/math/wide.hpp"
 #include "tamias2d/memory/allocator.hpp"
 
@@ -163,8 +164,8 @@ class ConstraintGraph {
     memory::vector<GraphEdge> coloured_edges_;
     std::uint32_t coloured_regions_ = 0;
     std::size_t coloured_bodies_ = 0;
-    memory::vector<std::uint32_t> sequence_;     ///< the manifolds in the pass's order
-    memory::vector<std::uint64_t> body_colours_; ///< per body: the colours taken on it (scratch)
+    memory::vector<std::uint32_t> sequence_; ///< the manifolds in the pass's order
+    GreedyColours body_colours_;             ///< the colours taken on each body (scratch)
     memory::vector<std::uint32_t> colour_of_, between_scratch_; ///< scratch of between_by_colour
     /// A constraint, its bodies and its stream, in solve order (what placing it reads).
     struct Placement {

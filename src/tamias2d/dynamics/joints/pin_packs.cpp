@@ -189,29 +189,19 @@ void PinPacks::order_stream(const memory::vector<SolvedJoint>& solved, std::uint
 std::uint32_t PinPacks::colour_stream(const memory::vector<SolvedJoint>& solved,
                                       std::uint32_t first, std::uint32_t last,
                                       std::size_t body_count) {
-    if (colours_.size() < body_count)
-        colours_.resize(body_count, 0); // all zero between calls
+    colours_.cover(body_count);
     std::uint32_t colours = 0;
     std::uint32_t k = first;
     for (; k < last; ++k) {
-        const SolvedJoint& s = solved[k];
-        // (The immovable body 0 takes no colour: any number of joints may hold it at once.)
-        const std::uint64_t taken = (s.solver_a != 0 ? colours_[s.solver_a] : 0) |
-                                    (s.solver_b != 0 ? colours_[s.solver_b] : 0);
-        const int c = std::countr_one(taken);
-        if (c == 64)
+        const std::uint32_t c = colours_.take(solved[k].solver_a, solved[k].solver_b);
+        if (c == GreedyColours::colours)
             break;
-        level_of_[k - first] = std::uint32_t(c);
-        const std::uint64_t bit = std::uint64_t{1} << c;
-        if (s.solver_a != 0)
-            colours_[s.solver_a] |= bit;
-        if (s.solver_b != 0)
-            colours_[s.solver_b] |= bit;
-        colours = std::max(colours, std::uint32_t(c) + 1);
+        level_of_[k - first] = c;
+        colours = std::max(colours, c + 1);
     }
     const bool coloured = k == last;
     for (std::uint32_t i = first; i < k; ++i)
-        colours_[solved[i].solver_a] = colours_[solved[i].solver_b] = 0;
+        colours_.release(solved[i].solver_a, solved[i].solver_b);
     return coloured ? colours : 0;
 }
 

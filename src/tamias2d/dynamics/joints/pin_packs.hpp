@@ -31,6 +31,7 @@
 #include <cstdint>
 #include <span>
 
+#include "tamias2d/dynamics/greedy_colours.hpp"
 #include "tamias2d/dynamics/joints/joint_sim.hpp"
 #include "tamias2d/dynamics/joints/joint_streams.hpp"
 #include "tamias2d/dynamics/softness.hpp"
@@ -128,8 +129,8 @@ class PinPacks {
     memory::vector<SolvedJoint> last_solved_, ordered_;
     memory::vector<std::uint32_t> last_bounds_;
     std::size_t last_body_count_ = 0;
-    memory::vector<std::uint32_t> mark_;    ///< per solver body: one past its last level (scratch)
-    memory::vector<std::uint64_t> colours_; ///< per solver body: the colours its joints took
+    memory::vector<std::uint32_t> mark_; ///< per solver body: one past its last level (scratch)
+    GreedyColours colours_;              ///< the colours each solver body's joints took
     memory::vector<std::uint32_t> level_of_, level_start_, sorted_; ///< order_stream's scratch
 };
 
