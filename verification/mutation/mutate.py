@@ -653,14 +653,24 @@ def category_labels(root):
 # writes the same bytes; a forged snapshot is refused, naming its field) are the only tests of
 # that code.
 GOLDEN_TARGETS = ("determinism_tests", "snapshot_tests")
+# The suites of the World API's own guarantees: its events, its recording and replay, its
+# behaviour out of memory, its definitions' checks, its embedding (allocator and error hooks)
+# and its contact hooks. Their cases carry category labels, or SRS labels that a file's own
+# labels need not share (an event's DD11 for the events' bookkeeping), yet each drives the
+# dynamics through the API against its own oracle, and each kills mutants there that the
+# labelled tests miss (the step events' flags, the snapshot writer's growth, a pair kept over a
+# failed allocation, a joint's creation). They cost a few seconds per mutant.
+API_TARGETS = ("events_tests", "recording_tests", "reliability_oom_tests", "definition_tests",
+               "embedding_tests", "contact_hooks_tests")
 
 
 def entries_of(catalogue, labels, relpath, categories=()):
     """The CTest entries that judge a mutant of relpath: those of its labels, and the golden
-    hashes and the snapshot suite for a file of the model or the dynamics (with the category
-    entries of their executables, ctest_entries)."""
-    golden = GOLDEN_TARGETS if relpath.startswith(tuple(d + "/" for d in TARGET_DIRS)) else ()
-    return ctest_entries(catalogue, labels, golden, categories)
+    hashes, the snapshot suite and the API suites for a file of the model or the dynamics (with
+    the category entries of their executables, ctest_entries)."""
+    whole = relpath.startswith(tuple(d + "/" for d in TARGET_DIRS))
+    return ctest_entries(catalogue, labels, GOLDEN_TARGETS + API_TARGETS if whole else (),
+                         categories)
 
 
 def judge(m, src, build, entries, test_timeout, objects=None, env=None, commands=None,
@@ -1154,8 +1164,8 @@ def make_doc(results, judgements, *, population, chosen, selection, complete, pr
                                + ("the score (every mutant judged)" if complete else
                                   "the lower bound of the score's 95 % interval (a sample)")),
                     "figure": figure,
-                    "oracle": "the SRS-labelled tests, the golden state hashes or the snapshot "
-                              "suite fail on each "
+                    "oracle": "the SRS-labelled tests, the golden state hashes, the snapshot "
+                              "suite or the API suites fail on each "
                               "mutant, or a survivor's tests report an error in the sanitizer "
                               "build; survivors judged equivalent are argued in "
                               "verification/mutation/survivors.json",

@@ -312,21 +312,28 @@ class Judges(unittest.TestCase):
     CATALOGUE = [{"name": n, "properties": [{"name": "LABELS", "value": [n.split("@")[1]]}]}
                  for n in ("model_tests@DD8", "engine_tests@IM3", "engine_tests@R7",
                            "determinism_tests@determinism", "reliability_tests@determinism",
-                           "snapshot_tests@determinism", "snapshot_tests@reliability")]
+                           "snapshot_tests@determinism", "snapshot_tests@reliability",
+                           "events_tests@DD11", "events_tests@reliability",
+                           "recording_tests@determinism")]
     GOLDEN = {"determinism_tests@determinism": "determinism_tests",
               "snapshot_tests@determinism": "snapshot_tests",
-              "snapshot_tests@reliability": "snapshot_tests"}
+              "snapshot_tests@reliability": "snapshot_tests",
+              "events_tests@DD11": "events_tests", "events_tests@reliability": "events_tests",
+              "recording_tests@determinism": "recording_tests"}
 
     def test_golden_hashes_judge_every_mutant_of_the_model_and_the_dynamics(self):
         for rel in ("src/tamias2d/dynamics/joints/joint_store.cpp", "src/tamias2d/model/x.hpp"):
             with self.subTest(rel=rel):
                 self.assertEqual(mutate.entries_of(self.CATALOGUE, ["IM3"], rel),
                                  {"engine_tests@IM3": "engine_tests", **self.GOLDEN})
-        # A file with no label is judged by the golden hashes and the snapshot suite (every entry
-        # of it) alone; a test of another target carrying the same category label (run-to-run
-        # repeatability) is not one of them.
+        # A file with no label is judged by the golden hashes, the snapshot suite and the API
+        # suites (every entry of each, its SRS labels' too) alone; a test of another target
+        # carrying the same category label (run-to-run repeatability) is not one of them.
         self.assertEqual(mutate.entries_of(self.CATALOGUE, [], "src/tamias2d/dynamics/y.cpp"),
                          self.GOLDEN)
+        # A file outside the model and the dynamics: its labels' entries only.
+        self.assertEqual(mutate.entries_of(self.CATALOGUE, ["IM3"], "src/tamias2d/io/z.cpp"),
+                         {"engine_tests@IM3": "engine_tests"})
 
     def sanitizer_run(self, asan_log, unmutated_fails=False):
         """SanitizerScratch.judge of a mutant whose tests fail in the sanitizer build with
