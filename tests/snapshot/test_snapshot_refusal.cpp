@@ -146,6 +146,21 @@ std::vector<std::byte> with_double(std::vector<std::byte> b, const std::string& 
     return b;
 }
 
+/// A disc of radius 0.5 alone in a world without gravity: its mass, pi / 4 kg, and its moment
+/// of inertia, pi / 32 kg m^2, are values no other field of its body's section holds.
+struct LoneDisc {
+    World world{WorldDef{.gravity = {0.0, 0.0}}};
+    BodyId disc = world.create_body(BodyDef{});
+    LoneDisc() { world.create_shape(disc, circle_shape(0.5)); }
+};
+
+/// `b` with the body section's double `from` made `to`, and its inverse 1 / from made 1 / to
+/// (the reader asks that a mass property and its inverse agree).
+std::vector<std::byte> with_value_and_inverse(const std::vector<std::byte>& b, double from,
+                                              double to) {
+    return with_double(with_double(b, "BODY", from, to), "BODY", 1.0 / from, 1.0 / to);
+}
+
 } // namespace
 
 BOOST_AUTO_TEST_SUITE(snapshot_refusal)
@@ -422,17 +437,12 @@ BOOST_AUTO_TEST_CASE(a_count_beyond_the_bytes_left_is_refused_as_such, *utf::lab
 // refused, naming the field, though its inverse is written to match too (1 / 0: infinite).
 // Oracle: the rule of the mass properties as update_mass leaves them (body_store.cpp's reader:
 // a dynamic body's mass > 0 and finite, the inverses its own; R2: a dynamic body has a positive
-// mass), the boundary on each side. The fields are found by their bytes: a disc of radius 0.5
-// alone in its world has m = pi / 4 kg, a value no other field of its section holds, and 1 / m.
+// mass), the boundary on each side. The fields are found by their bytes (LoneDisc).
 BOOST_AUTO_TEST_CASE(a_dynamic_bodys_mass_of_zero_is_refused, *utf::label("reliability")) {
-    World w(WorldDef{.gravity = {0.0, 0.0}});
-    const BodyId disc = w.create_body(BodyDef{});
-    w.create_shape(disc, circle_shape(0.5));
-    const double mass = w.mass(disc);
-    const std::vector<std::byte> good = w.snapshot();
-    const auto forged = [&](double to) {
-        return with_double(with_double(good, "BODY", mass, to), "BODY", 1.0 / mass, 1.0 / to);
-    };
+    LoneDisc lone;
+    const double mass = lone.world.mass(lone.disc);
+    const std::vector<std::byte> good = lone.world.snapshot();
+    const auto forged = [&](double to) { return with_value_and_inverse(good, mass, to); };
     const double smallest = std::numeric_limits<double>::min();
     World loaded = World::from_snapshot(forged(smallest));
     for (const BodyId b : loaded.bodies())
@@ -451,18 +461,13 @@ BOOST_AUTO_TEST_CASE(a_dynamic_bodys_mass_of_zero_is_refused, *utf::label("relia
 // double is accepted (its inverse written to match), and infinity is refused, naming the field.
 // Oracle: the rule of the mass properties as update_mass leaves them (body_store.cpp's reader:
 // a dynamic body's inertia finite and >= 0, the inverses its own), the boundary on each side.
-// The fields are found by their bytes: a disc of radius 0.5 alone in its world has
-// I = m r^2 / 2 = pi / 32 kg m^2, a value no other field holds, and 1 / I.
+// The fields are found by their bytes (LoneDisc: I = m r^2 / 2 = pi / 32 kg m^2).
 BOOST_AUTO_TEST_CASE(a_bodys_inertia_is_read_up_to_the_largest_finite_value,
                      *utf::label("reliability")) {
-    World w(WorldDef{.gravity = {0.0, 0.0}});
-    const BodyId disc = w.create_body(BodyDef{});
-    w.create_shape(disc, circle_shape(0.5));
-    const double inertia = w.inertia(disc);
-    const std::vector<std::byte> good = w.snapshot();
-    const auto forged = [&](double to) {
-        return with_double(with_double(good, "BODY", inertia, to), "BODY", 1.0 / inertia, 1.0 / to);
-    };
+    LoneDisc lone;
+    const double inertia = lone.world.inertia(lone.disc);
+    const std::vector<std::byte> good = lone.world.snapshot();
+    const auto forged = [&](double to) { return with_value_and_inverse(good, inertia, to); };
     const double largest = std::numeric_limits<double>::max();
     World loaded = World::from_snapshot(forged(largest));
     for (const BodyId b : loaded.bodies()) { // the one body, by the new world's handle
