@@ -3,6 +3,7 @@
 // other and to rays, end events on destruction, and a deterministic order.
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -166,6 +167,25 @@ BOOST_AUTO_TEST_CASE(events_are_deterministic, *utf::label("DD28") * utf::label(
         return std::pair{log, gate.world.state_hash()};
     };
     BOOST_TEST((record() == record()));
+}
+
+// Oracle: DD28's statement, the boundary of an overlap: a sensor and a shape overlap when their
+// signed distance is negative, so a shape touching the sensor along a face is no visitor. A
+// 1 m box at rest with its left face exactly on the 2 m sensor box's right face (x = 1: both
+// faces' places are exact doubles, so their separation is exactly 0) is not in
+// sensor_overlaps; 1 mm further in it is, 1 mm further out it is not.
+BOOST_AUTO_TEST_CASE(a_shape_touching_the_sensor_is_no_visitor, *utf::label("DD28")) {
+    for (const double x : {half_width + 0.5, half_width + 0.5 - 1e-3, half_width + 0.5 + 1e-3}) {
+        Gate gate;
+        BodyDef bd;
+        bd.position = {x, 0.0};
+        const BodyId b = gate.world.create_body(bd);
+        const ShapeId box = gate.world.create_shape(b, box_shape(1.0, 1.0));
+        gate.world.step(dt);
+        const std::vector<ShapeId> inside = gate.world.sensor_overlaps(gate.sensor);
+        const bool seen = std::find(inside.begin(), inside.end(), box) != inside.end();
+        BOOST_TEST(seen == (x < half_width + 0.5), "the box's centre at x = " << x);
+    }
 }
 
 // Oracle: the analytic schedule, sensor and visitor swapped: a sensor disc on a moving body
