@@ -448,6 +448,20 @@ BOOST_AUTO_TEST_CASE(a_disabled_visitor_leaves_a_sensor, *utf::label("DD28")) {
 
 // ----------------------------------------------------------------------------- gravity scale
 
+// Oracle: DD16 by hand, summed over the world's dynamic bodies (World::potential_energy: each
+// body's share of gravity, the origin as the reference; static and kinematic bodies have no
+// mass): under g = (0, -10), 2 kg at height 3 m and 0.5 kg with gravity scale 2 at height -4 m
+// give 2 x 10 x 3 + 0.5 x 20 x (-4) = 60 - 40 = 20 J, wherever they are across x.
+BOOST_AUTO_TEST_CASE(the_potential_energy_sums_dd16_over_the_dynamic_bodies, *utf::label("DD16")) {
+    World w(WorldDef{.gravity = {0.0, -10.0}});
+    BOOST_TEST(w.potential_energy() == 0.0);
+    ground(w);
+    box(w, 7.0, 3.0, BodyDef{.mass = 2.0});
+    box(w, -5.0, -4.0, BodyDef{.mass = 0.5, .gravity_scale = 2.0});
+    box(w, 0.0, 9.0, BodyDef{.type = BodyType::kinematic});
+    BOOST_TEST(w.potential_energy() == 20.0, boost::test_tools::tolerance(1e-14));
+}
+
 // Oracle: IM1's free fall with the body's share of gravity, s g, per substep.
 BOOST_AUTO_TEST_CASE(gravity_scale_scales_the_fall, *utf::label("IM1") * utf::label("GD2")) {
     World w(WorldDef{.gravity = {0.0, -10.0}});
