@@ -522,6 +522,44 @@ BOOST_AUTO_TEST_CASE(collide_connected_switches_the_pair, *utf::label("DD27") * 
     BOOST_TEST(w.position(boxes[1]).y < y0 - 0.05);
 }
 
+// Oracle: DD27's joint filter: a joint whose bodies do not collide ends the contacts between
+// them when it is made, and no other. Two boxes rest side by side on a static floor, touching:
+// each touches the floor (the floor made first, so it is each pair's first body) and the other.
+// Welded, the pair's contact ends (one end event) and both keep their floor's.
+BOOST_AUTO_TEST_CASE(a_joint_ends_the_contacts_between_its_bodies_only, *utf::label("DD27")) {
+    World w(world_def(10.0));
+    const BodyId floor = static_body(w, {0.0, -0.5});
+    w.create_shape(floor, box_shape(10.0, 1.0));
+    BodyId boxes[2];
+    for (int i = 0; i < 2; ++i) {
+        BodyDef bd;
+        bd.position = {1.0 * i, 0.5};
+        boxes[i] = w.create_body(bd);
+        w.create_shape(boxes[i], box_shape(1.0, 1.0));
+    }
+    for (int k = 0; k < 30; ++k)
+        w.step(dt);
+    const auto touches = [&](BodyId b, BodyId other) {
+        for (const ContactInfo& c : w.contacts(b))
+            if (c.body_a == other || c.body_b == other)
+                return true;
+        return false;
+    };
+    BOOST_TEST_REQUIRE(touches(boxes[0], boxes[1]));
+    WeldJointDef weld;
+    weld.body_a = boxes[0];
+    weld.body_b = boxes[1];
+    weld.anchor = {0.5, 0.5};
+    w.create_joint(weld);
+    BOOST_TEST(!touches(boxes[0], boxes[1]));
+    BOOST_TEST(touches(boxes[0], floor));
+    BOOST_TEST(touches(boxes[1], floor));
+    BOOST_TEST_REQUIRE(w.contact_end_events().size() == 1u);
+    const ContactEvent& e = w.contact_end_events()[0];
+    BOOST_TEST(((e.body_a == boxes[0] && e.body_b == boxes[1]) ||
+                (e.body_a == boxes[1] && e.body_b == boxes[0])));
+}
+
 // Oracle: DD27's joint filter and DD20's rigid rod. A box rests on a static floor, held by a
 // horizontal 1 m distance rod to an anchor on the floor's body. Made with collide_connected (in
 // its definition) the pair collides: the box stays on the floor, touching it. Made without, the
