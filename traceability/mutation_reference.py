@@ -23,14 +23,17 @@ import sys
 
 from traceability import evidence, reference_runs
 
-REFERENCE = os.path.join("verification", "mutation", "reference", "mutation.json")
-TARGETS = ("src/tamias2d/model", "src/tamias2d/dynamics")
-
 
 def _mutate(source):
     sys.path.insert(0, os.path.join(source, "verification", "mutation"))
     import mutate  # noqa: E402  (the scoring rules live there, once)
     return mutate
+
+
+# The reference's file and the mutated directories, as the tool names them.
+_TOOL = _mutate(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+REFERENCE = _TOOL.REFERENCE
+TARGETS = _TOOL.TARGET_DIRS
 
 
 def collect(source, warnings, tests=None):
