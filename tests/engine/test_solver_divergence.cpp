@@ -26,7 +26,7 @@ constexpr double dt = 1.0 / 60.0;
 constexpr double g = 10.0;
 
 struct LightPendulum {
-    World world{WorldDef{.gravity = {0.0, -g}}}; // sleeping on: its states are restored too
+    World world{WorldDef{.gravity = {0.0, -g}, .enable_sleep = true}}; // sleep states restored too
     BodyId ground, disc, slider;
     JointId pin, slide;
 

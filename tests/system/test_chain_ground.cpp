@@ -105,6 +105,23 @@ Throw throw_up(double ledge, double v0, double r, int steps) {
     return t;
 }
 
+/// Where a disc (radius 0.5 m, no gravity) shot along the line of a chain's edges from 3 m
+/// before its end, at 10 m a step, is after one step; `above` (m) lifts its start off the line.
+Vec2d shot_along_the_line(double above) {
+    World world(WorldDef{.gravity = {0.0, 0.0}});
+    const BodyId g = world.create_body(BodyDef{.type = BodyType::static_body});
+    // Listed right to left, from (10, 0) to (0, 0): each edge's collision side is up.
+    std::vector<Vec2d> points;
+    for (int i = 10; i >= 0; --i)
+        points.push_back({double(i), 0.0});
+    world.create_chain(g, chain_shapes(points, false));
+    const BodyId disc =
+        world.create_body(BodyDef{.position = {-3.0, above}, .linear_velocity = {10.0 / dt, 0.0}});
+    world.create_shape(disc, circle_shape(0.5));
+    world.step(dt);
+    return world.position(disc);
+}
+
 } // namespace
 
 BOOST_AUTO_TEST_SUITE(chain_ground)
@@ -163,6 +180,25 @@ BOOST_AUTO_TEST_CASE(thrown_up_fast_through_a_raised_chain_lands_on_it,
     BOOST_TEST(t.worst < 1e-11);
     BOOST_TEST(t.end.position.y == ledge + r, tt::tolerance(0.05)); // resting on the top side
     BOOST_TEST(std::abs(t.end.velocity.y) < 1e-2);
+}
+
+// Oracle: DD29's rule for chain edges (srs/data_definitions.yaml): only a body that starts
+// behind an edge (strictly: on the side opposite its normal) is not swept against it. A disc
+// whose centre starts exactly on the edges' line is not behind, so it is swept like one that
+// starts a hair (1e-9 m) in front and stopped at the chain's end vertex (0, 0), within the
+// speculative distance (0.02 m) of touching it; one that starts a hair behind passes (IM1's
+// free flight: 10 m in the step, to x = 7).
+BOOST_AUTO_TEST_CASE(a_fast_body_starting_on_the_edges_line_is_stopped_at_the_end,
+                     *utf::label("DD29") * utf::label("DD31")) {
+    const Vec2d on = shot_along_the_line(0.0);
+    const Vec2d front = shot_along_the_line(1e-9);
+    const Vec2d behind = shot_along_the_line(-1e-9);
+    BOOST_TEST_MESSAGE("on the line: x " << on.x << ", in front: x " << front.x << ", behind: x "
+                                         << behind.x);
+    BOOST_TEST(front.x <= -0.5);
+    BOOST_TEST(front.x >= -0.52);
+    BOOST_TEST(on.x == front.x, tt::tolerance(1e-9));
+    BOOST_TEST(behind.x == 7.0, tt::tolerance(1e-12));
 }
 
 BOOST_AUTO_TEST_SUITE_END()
