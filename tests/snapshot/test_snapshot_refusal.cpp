@@ -861,4 +861,34 @@ BOOST_AUTO_TEST_CASE(a_free_slot_naming_the_slot_count_is_refused, *utf::label("
     }
 }
 
+// A sensor's visitor list naming one shape twice is refused at the repeated entry. Oracle: the
+// snapshot's rule for a sensor's visitors (sensor_overlaps.cpp: ascending shape indices, so each
+// shape at most once, as DD28's set of overlapping shapes holds it); the list is found by its
+// bytes: the count 2, then the two discs' shape indices 1 and 2 (the sensor's is 0).
+BOOST_AUTO_TEST_CASE(a_sensor_visitor_named_twice_is_refused, *utf::label("reliability")) {
+    World w(WorldDef{.gravity = {0.0, 0.0}});
+    ShapeDef zone = box_shape(4.0, 4.0);
+    zone.is_sensor = true;
+    w.create_shape(w.create_body({.type = BodyType::static_body}), zone);
+    for (const double x : {-1.0, 1.0})
+        w.create_shape(w.create_body({.position = {x, 0.0}}), circle_shape(0.25));
+    w.step(1.0 / 60.0);
+    BOOST_TEST_REQUIRE(w.sensor_begin_events().size() == 2u);
+    const std::vector<std::byte> good = w.snapshot();
+    std::vector<std::byte> list(16);
+    list[0] = std::byte{2};  // the visitor count, a u64
+    list[8] = std::byte{1};  // the first visitor's shape index
+    list[12] = std::byte{2}; // the second's
+    const auto [begin, end] = section_bytes(good, "SENS");
+    const auto it = std::search(good.begin() + std::ptrdiff_t(begin),
+                                good.begin() + std::ptrdiff_t(end), list.begin(), list.end());
+    BOOST_TEST_REQUIRE((it != good.begin() + std::ptrdiff_t(end)), "the visitor list found");
+    std::vector<std::byte> forged = good;
+    put_u32(forged, std::size_t(it - good.begin()) + 12, 1); // the first disc again
+    fix_checksum(forged);
+    const std::optional<SnapshotError> e = refusal(forged, "sensors[0]");
+    BOOST_TEST_REQUIRE(e.has_value(), "accepted");
+    BOOST_TEST(e->field == "sensors[0].visitor", e->what());
+}
+
 BOOST_AUTO_TEST_SUITE_END()
