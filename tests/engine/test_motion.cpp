@@ -153,6 +153,32 @@ BOOST_AUTO_TEST_CASE(constant_torque_history, *utf::label("R6") * utf::label("IM
     }
 }
 
+// Oracle: the same closed form of IM2 (T4), omega(t) = omega0 + (tau / I) t, for the bodies of
+// a world stepped on two workers and large enough (1100 boxes, 3 m apart) for the bodies to be
+// prepared in blocks: every third box is turned by -2.5 N m, every third by +1.25 N m, the rest
+// by none.
+BOOST_AUTO_TEST_CASE(a_torque_turns_bodies_prepared_in_blocks_on_workers,
+                     *utf::label("IM2") * utf::label("T4")) {
+    World world(WorldDef{.gravity = {0.0, 0.0}, .workers = 2});
+    std::vector<BodyId> ids;
+    const double torques[] = {-2.5, 1.25, 0.0};
+    for (int k = 0; k < 1100; ++k) {
+        BodyDef def;
+        def.position = {3.0 * (k % 40), 3.0 * (k / 40)};
+        def.angular_velocity = 0.5;
+        def.torque = torques[k % 3];
+        ids.push_back(make_box_body(world, def));
+    }
+    const double dt = 1.0 / 60.0;
+    for (int n = 1; n <= 30; ++n)
+        world.step(dt);
+    for (std::size_t k = 0; k < ids.size(); ++k) {
+        const double alpha = torques[k % 3] / world.inertia(ids[k]);
+        BOOST_TEST(rel_err(world.angular_velocity(ids[k]), 0.5 + alpha * 30 * dt) < 1e-12,
+                   "box " << k);
+    }
+}
+
 // Oracle: DD13 by hand. A force F = (0, 2) N at the world point (1, 0) m from the centre gives
 // tau = r x F = 1 * 2 = 2 N m, so after one step of dt: omega = alpha dt = (2 / I) dt and
 // v = (F / m) dt.

@@ -118,4 +118,21 @@ BOOST_AUTO_TEST_CASE(target_joint_holds_the_target_of_its_definition,
     BOOST_TEST(std::abs(world.position(disc).x - 2.0) <= 1e-3);
 }
 
+// Oracle: T1 at equilibrium. A free disc at (2, 1), grabbed on its rim at (2.25, 1) by a target
+// joint whose target is that same point, feels no force (the grabbed point is on the target),
+// so it stays where it is: after 1 s its centre is at (2, 1) and its angle 0, to 1e-9. Grabbed
+// at its centre instead, the same target would pull it 0.25 m to the right.
+BOOST_AUTO_TEST_CASE(a_body_grabbed_off_its_centre_stays_where_it_is,
+                     *utf::label("DD21") * utf::label("IM6")) {
+    World world(WorldDef{.gravity = {0.0, 0.0}});
+    const BodyId disc = world.create_body(BodyDef{.position = {2.0, 1.0}});
+    world.create_shape(disc, circle_shape(0.25));
+    world.create_joint(TargetJointDef{.body = disc, .target = {2.25, 1.0}, .hertz = 3.0});
+    for (int k = 1; k <= 60; ++k)
+        world.step(1.0 / 60.0);
+    BOOST_TEST(std::abs(world.position(disc).x - 2.0) <= 1e-9);
+    BOOST_TEST(std::abs(world.position(disc).y - 1.0) <= 1e-9);
+    BOOST_TEST(std::abs(std::remainder(world.orientation(disc), 2.0 * std::numbers::pi)) <= 1e-9);
+}
+
 BOOST_AUTO_TEST_SUITE_END()
