@@ -35,7 +35,7 @@ std::vector<std::uint64_t> hashes(int workers, int regions, Vec2d gravity = {0.0
 }
 
 /// The state hash after each step of a row of 200 boxes resting 2 m apart on the ground, with
-/// sleeping on: a ball on the ground (its contact the first made) is thrown up once every box
+/// sleeping on: a ball on the ground (made before the boxes) is thrown up once every box
 /// sleeps, so that its contact is destroyed and the last one, a sleeping box's, moves into its
 /// slot while neither of that pair's bodies moves.
 std::vector<std::uint64_t> sleeping_row_hashes(int workers) {
