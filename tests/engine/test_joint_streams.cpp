@@ -118,4 +118,29 @@ BOOST_AUTO_TEST_CASE(one_region_or_few_joints_keep_the_creation_order, *utf::lab
     }
 }
 
+// Oracle: the same floors, met exactly: min_joints joints, or as many moving bodies as regions
+// (a run of one body each), are cut by the rule of the first case.
+BOOST_AUTO_TEST_CASE(the_floors_met_exactly_are_split, *utf::label("internals")) {
+    for (const auto& [R, n, m] :
+         {std::tuple{4u, JointStreams::min_joints, 500u}, std::tuple{4u, std::size_t(1000), 4u},
+          std::tuple{JointStreams::max_regions, std::size_t(600), JointStreams::max_regions}}) {
+        BOOST_TEST_CONTEXT(R << " regions, " << n << " joints, " << m << " moving") {
+            const memory::vector<SolvedJoint> in = random_joints(11, n, m);
+            memory::vector<SolvedJoint> joints = in;
+            JointStreams streams;
+            streams.split(joints, R, m);
+            BOOST_TEST_REQUIRE(streams.regions() == R);
+            std::vector<std::uint32_t> got, expected;
+            for (const SolvedJoint& s : joints)
+                got.push_back(s.joint);
+            for (const auto& stream : expected_streams(in, R, m))
+                expected.insert(expected.end(), stream.begin(), stream.end());
+            BOOST_TEST(got == expected, boost::test_tools::per_element());
+            for (std::uint32_t r = 0; r < R; ++r)
+                BOOST_TEST(streams.begin(r + 1) - streams.begin(r) ==
+                           expected_streams(in, R, m)[r].size());
+        }
+    }
+}
+
 BOOST_AUTO_TEST_SUITE_END()
