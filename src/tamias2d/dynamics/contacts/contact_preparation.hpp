@@ -13,8 +13,9 @@
 
 namespace tamias2d::preparation {
 
-/// Bounds on K's condition for solving two points together; beyond them the two rows are nearly
-/// the same constraint and the sequential solve is used. The iterations keep Box2D 2.4's 1000
+/// Bounds on K's condition for solving two points together: the block needs k11^2 < bound * det
+/// (strictly, as Box2D 2.4's test), and otherwise the two rows are nearly the same constraint and
+/// the sequential solve is used. The iterations keep Box2D 2.4's 1000
 /// (1e6 there changed the rain scene enough for two boxes to splash over its wall, finding O3).
 /// The restitution pass must be exact for a two-point bounce to conserve energy (finding E3,
 /// docs/verification.md: seed 2000114 has a condition of 1408); in double a condition of 1e6
