@@ -128,12 +128,13 @@ BOOST_AUTO_TEST_CASE(type_changes_follow_r2,
 // Oracle: IM5's closed form without applied forces (no gravity), per substep v_k = v_0 (1 + h
 // c_v)^(-k) and omega_k = omega_0 (1 + h c_omega)^(-k), for a dynamic body; and R2's kinematic
 // body, which keeps the velocity it is given (damping is IM5's, of dynamic bodies). A body with
-// both damping coefficients, or either alone (also a round 1 s^-1), created static, is damped
+// both damping coefficients, or either alone (each also a round 1 s^-1), created static, is damped
 // once made dynamic and not while kinematic, and damped again once dynamic; a body created
 // kinematic likewise.
 BOOST_AUTO_TEST_CASE(damping_acts_on_a_body_while_it_is_dynamic,
                      *utf::label("IM5") * utf::label("R2")) {
-    const std::pair<double, double> dampings[] = {{0.5, 0.25}, {0.5, 0.0}, {0.0, 0.25}, {1.0, 0.0}};
+    const std::pair<double, double> dampings[] = {
+        {0.5, 0.25}, {0.5, 0.0}, {0.0, 0.25}, {1.0, 0.0}, {0.0, 1.0}};
     for (const auto& damping : dampings)
         for (const BodyType created : {BodyType::static_body, BodyType::kinematic}) {
             const double c_v = damping.first, c_w = damping.second; // (lambdas capture them)
