@@ -22,8 +22,10 @@ struct ContactHitEvent {
     ShapeId shape_b; ///< the second shape of the pair
     BodyId body_a;   ///< the body carrying shape_a
     BodyId body_b;   ///< the body carrying shape_b
-    Vec2d point{};   ///< m, world frame: the manifold point that approached fastest
-    Vec2d normal{};  ///< unit, from shape_a into shape_b
+    /// m, world frame: the manifold point that approached fastest (of two that approached
+    /// equally fast, the first in the manifold's order, ContactInfo::points).
+    Vec2d point{};
+    Vec2d normal{}; ///< unit, from shape_a into shape_b
     /// m s^-1, > 0: the speed at which the two bodies' points approached along the normal at
     /// the step's start, before the solver acted: -(v_B - v_A) . n at the point (DD11).
     double approach_speed = 0.0;

@@ -274,6 +274,35 @@ BOOST_AUTO_TEST_CASE(a_hit_is_the_fastest_point_of_its_manifold, *utf::label("DD
     }
 }
 
+// Oracle: the event's rule for a tie (events.hpp: of two points that approached equally fast,
+// the first in the manifold's order) and DD11's approach speed. Without gravity a flat 1 m x
+// 0.2 m box 5 mm above the ground falls at 1 m/s without turning: both bottom corners approach
+// at exactly 1 m/s and both land and push within the first step. The hit is the manifold's
+// first point, as contacts() lists it.
+BOOST_AUTO_TEST_CASE(of_two_points_as_fast_the_hit_is_the_first, *utf::label("DD11")) {
+    World world(WorldDef{.gravity = {0.0, 0.0}, .enable_sleep = false});
+    world.set_hit_event_threshold(0.5);
+    ground(world);
+    BodyDef bd;
+    bd.position = {0.0, 0.005 + 0.1};
+    bd.linear_velocity = {0.0, -1.0};
+    ShapeDef bar = box_shape(1.0, 0.2);
+    bar.enable_hit_events = true;
+    world.create_shape(world.create_body(bd), bar);
+    world.step(dt);
+    BOOST_TEST_REQUIRE(world.contacts().size() == 1u);
+    const ContactInfo& c = world.contacts()[0];
+    BOOST_TEST_REQUIRE(c.point_count == 2);
+    for (int j = 0; j < 2; ++j)
+        BOOST_TEST_REQUIRE(c.points[j].normal_impulse > 0.0, "corner " << j);
+    BOOST_TEST_REQUIRE(c.points[0].point.x != c.points[1].point.x);
+    BOOST_TEST_REQUIRE(world.contact_hit_events().size() == 1u);
+    const ContactHitEvent& hit = world.contact_hit_events()[0];
+    BOOST_TEST(hit.approach_speed == 1.0);
+    BOOST_TEST(hit.point.x == c.points[0].point.x);
+    BOOST_TEST(hit.point.y == c.points[0].point.y);
+}
+
 // Oracle: the event's rule, a hit's point approached faster than the threshold and pushed, on a
 // manifold of two points that each do one of the two. A 1 m x 0.2 m box stands on its left
 // bottom corner, tilted so that its right one is 0.019 m up, and turns about the corner
