@@ -441,4 +441,14 @@ BOOST_AUTO_TEST_CASE(a_diagonal_gravity_cuts_the_regions_across_it) {
         BOOST_TEST(b.position.x == b.position.y);
 }
 
+// Oracle: the rule "cut across gravity" for a slanted gravity of two strengths: (3, -4) and
+// (0.3, -0.4) m/s^2 point the same way, so both cut the grid along (0.8, 0.6) (the same
+// doubles: 4 / 5 and 0.4 / 0.5 round alike) and must give the same bits; cut across x
+// (gravity along -y) it is not (the positive control: this direction shows in the grid).
+BOOST_AUTO_TEST_CASE(a_slanted_gravity_cuts_alike_at_any_strength) {
+    const std::vector<BodyState> strong = run_regions({3.0, -4.0}, 2);
+    BOOST_TEST(same_states(strong, run_regions({0.3, -0.4}, 2)));
+    BOOST_TEST(!same_states(strong, run_regions({0.0, -9.81}, 2)));
+}
+
 BOOST_AUTO_TEST_SUITE_END()
