@@ -85,7 +85,8 @@ BOOST_AUTO_TEST_CASE(vertex_edge_matches_im3_closed_form,
 
 // Oracle: conservation laws for a 1-D elastic collision of equal masses (GD1 and kinetic
 // energy DD15): the bodies exchange velocities exactly; by symmetry no spin arises. Box2D v3
-// fails this (sequential points leave spin and lose energy), see docs/design.md.
+// fails this (sequential points leave spin and lose energy), see docs/design.md. The impulses
+// the contact reports are the momentum exchanged (Newton's second law).
 BOOST_AUTO_TEST_CASE(equal_boxes_face_to_face_swap_velocities,
                      *utf::label("R8") * utf::label("LC1") * utf::label("GD1") *
                          utf::label("DD15") * utf::label("DD12")) {
@@ -104,7 +105,17 @@ BOOST_AUTO_TEST_CASE(equal_boxes_face_to_face_swap_velocities,
     const double e0 = world.kinetic_energy();
     world.step(1.0 / 60.0);
     BOOST_TEST_REQUIRE(world.contacts().size() == 1u);
-    BOOST_TEST(world.contacts()[0].point_count == 2); // LC1: edge-edge gives two points
+    const ContactInfo& c = world.contacts()[0];
+    BOOST_TEST(c.point_count == 2); // LC1: edge-edge gives two points
+    // The impulses reported are the momentum each box took (Newton's second law: 1 kg from
+    // 3 to -1 m/s, 4 N s along the normal, split evenly by symmetry), and without friction
+    // none along the tangent (Coulomb's |P_t| <= mu P_n with mu = 0).
+    BOOST_TEST(c.points[0].normal_impulse + c.points[1].normal_impulse == 4.0,
+               boost::test_tools::tolerance(1e-9));
+    BOOST_TEST(c.points[0].normal_impulse == c.points[1].normal_impulse,
+               boost::test_tools::tolerance(1e-9));
+    BOOST_TEST(c.points[0].tangent_impulse == 0.0);
+    BOOST_TEST(c.points[1].tangent_impulse == 0.0);
     BOOST_TEST(std::abs(world.velocity(a).x - (-1.0)) < 1e-9);
     BOOST_TEST(std::abs(world.velocity(b).x - 3.0) < 1e-9);
     BOOST_TEST(std::abs(world.velocity(a).y) < 1e-9);
