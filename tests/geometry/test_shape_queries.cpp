@@ -53,28 +53,39 @@ BOOST_AUTO_TEST_CASE(aabb_encloses_tightly, *utf::label("IM4")) {
     BOOST_TEST(c.max_y == 0.5, tt::tolerance(1e-15)); // centre (1, 0) -> (1, 0)
 }
 
-// Oracle: T5's containment predicates (model::t5::contains) on random points.
+// Oracle: T5's containment predicates (model::t5::contains, the cross-product form) on random
+// points, for a quadrilateral and for an octagon (the most vertices a polygon holds) whose
+// centroid lies off its body's origin.
 BOOST_AUTO_TEST_CASE(test_point_matches_t5, *utf::label("T5")) {
     std::mt19937_64 rng(31);
     std::uniform_real_distribution<double> u(-2.0, 2.0);
-    const Polygon poly =
-        make_polygon(std::vector<Vec2d>{{-1, -0.5}, {1, -0.7}, {1.2, 0.4}, {0, 1}});
-    const Circle circ = make_circle(0.8, {0.3, -0.2});
-    int inside = 0;
-    for (int k = 0; k < 5000; ++k) {
-        const Transform xf{{u(rng) * 0.2, u(rng) * 0.2}, Rot::from_angle(u(rng))};
-        const Vec2d p{u(rng), u(rng)};
-        const auto wp = world_polygon(poly, xf);
-        const bool in_poly =
-            t5::contains(t5::ConvexPolygon(wp), units::vec_from_values<Length>(p.x, p.y));
-        BOOST_TEST(test_point(to_geometry(poly), xf, p) == in_poly);
-        const Vec2d c = placed(xf, circ.center);
-        const t5::Disc disc{units::vec_from_values<Length>(c.x, c.y), Length::from_value(0.8)};
-        BOOST_TEST(test_point(to_geometry(circ), xf, p) ==
-                   t5::contains(disc, units::vec_from_values<Length>(p.x, p.y)));
-        inside += in_poly;
+    std::vector<Vec2d> octagon;
+    for (int i = 0; i < max_polygon_vertices; ++i) {
+        const double a = 2.0 * std::numbers::pi * i / max_polygon_vertices;
+        octagon.push_back({0.6 + 0.9 * std::cos(a), -0.4 + 0.9 * std::sin(a)});
     }
-    BOOST_TEST(inside > 500);
+    const Polygon polys[] = {
+        make_polygon(std::vector<Vec2d>{{-1, -0.5}, {1, -0.7}, {1.2, 0.4}, {0, 1}}),
+        make_polygon(octagon)};
+    BOOST_TEST_REQUIRE(polys[1].count == max_polygon_vertices);
+    const Circle circ = make_circle(0.8, {0.3, -0.2});
+    for (const Polygon& poly : polys) {
+        int inside = 0;
+        for (int k = 0; k < 5000; ++k) {
+            const Transform xf{{u(rng) * 0.2, u(rng) * 0.2}, Rot::from_angle(u(rng))};
+            const Vec2d p{u(rng), u(rng)};
+            const auto wp = world_polygon(poly, xf);
+            const bool in_poly =
+                t5::contains(t5::ConvexPolygon(wp), units::vec_from_values<Length>(p.x, p.y));
+            BOOST_TEST(test_point(to_geometry(poly), xf, p) == in_poly);
+            const Vec2d c = placed(xf, circ.center);
+            const t5::Disc disc{units::vec_from_values<Length>(c.x, c.y), Length::from_value(0.8)};
+            BOOST_TEST(test_point(to_geometry(circ), xf, p) ==
+                       t5::contains(disc, units::vec_from_values<Length>(p.x, p.y)));
+            inside += in_poly;
+        }
+        BOOST_TEST(inside > 500);
+    }
 }
 
 // Oracle: closed forms: a ray along x hits the unit box's face x = -0.5 at fraction
