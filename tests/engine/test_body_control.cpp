@@ -174,6 +174,26 @@ BOOST_AUTO_TEST_CASE(damping_acts_on_a_body_while_it_is_dynamic,
         }
 }
 
+// Oracle: R7 (every collision detected) and statics: a box created static 2 m above a static
+// ground and then made dynamic falls (IM1) and comes to rest on the ground, its centre half
+// its height above the ground's top (0.5 m, within the soft contact's few millimetres), as a
+// box created dynamic does; a shape of a static body is filed with the static ones, and the
+// type change must file it with the moving ones, or no pair with the ground is ever found.
+BOOST_AUTO_TEST_CASE(a_body_created_static_and_made_dynamic_lands_on_the_ground,
+                     *utf::label("R7")) {
+    World w(WorldDef{.gravity = {0.0, -10.0}});
+    ground(w);
+    const BodyId made = box(w, -2.0, 2.5, BodyDef{.type = BodyType::static_body});
+    const BodyId born = box(w, 2.0, 2.5);
+    w.set_body_type(made, BodyType::dynamic);
+    for (int k = 0; k < 180; ++k)
+        w.step(dt);
+    for (const BodyId b : {made, born}) {
+        BOOST_TEST(std::abs(w.position(b).y - 0.5) < 0.01, w.position(b).y);
+        BOOST_TEST(std::abs(w.velocity(b).y) < 1e-3);
+    }
+}
+
 // Oracle: R7 (every collision detected; the candidates are the pairs whose fat boxes overlap,
 // IM4) and the scene's geometry. A type change gives the body's shapes new proxies, fattened
 // about where the body is now; the step decides whether a shape left its proxy from the box the

@@ -475,6 +475,61 @@ BOOST_AUTO_TEST_CASE(tuning_to_the_worlds_values_changes_no_bit, *utf::label("DD
     BOOST_TEST(states[0] == states[1], tt::per_element());
 }
 
+// Oracle: DD27's joint filter as each kind's definition sets it: two unit boxes overlapping by
+// half their width (no gravity), joined by a joint of each kind that has the field, touch
+// after a step exactly when the definition says collide_connected, and the joint reads it back.
+BOOST_AUTO_TEST_CASE(each_kinds_definition_sets_whether_its_bodies_collide, *utf::label("DD27")) {
+    for (const bool collide : {false, true}) {
+        for (int kind = 0; kind < 6; ++kind) {
+            BOOST_TEST_CONTEXT("kind " << kind << ", collide_connected " << collide) {
+                World w(world_def(0.0));
+                BodyDef bd;
+                const BodyId a = w.create_body(bd);
+                bd.position = {0.5, 0.0};
+                const BodyId b = w.create_body(bd);
+                w.create_shape(a, box_shape(1.0, 1.0));
+                w.create_shape(b, box_shape(1.0, 1.0));
+                const Vec2d at{0.25, 0.0};
+                JointId j;
+                switch (kind) {
+                case 0:
+                    j = w.create_joint(RevoluteJointDef{
+                        .body_a = a, .body_b = b, .anchor = at, .collide_connected = collide});
+                    break;
+                case 1:
+                    j = w.create_joint(DistanceJointDef{.body_a = a,
+                                                        .body_b = b,
+                                                        .anchor_a = {0.0, 0.0},
+                                                        .anchor_b = {0.5, 0.0},
+                                                        .collide_connected = collide});
+                    break;
+                case 2:
+                    j = w.create_joint(PrismaticJointDef{
+                        .body_a = a, .body_b = b, .anchor = at, .collide_connected = collide});
+                    break;
+                case 3:
+                    j = w.create_joint(WeldJointDef{
+                        .body_a = a, .body_b = b, .anchor = at, .collide_connected = collide});
+                    break;
+                case 4:
+                    j = w.create_joint(WheelJointDef{
+                        .body_a = a, .body_b = b, .anchor = at, .collide_connected = collide});
+                    break;
+                default:
+                    j = w.create_joint(MotorJointDef{.body_a = a,
+                                                     .body_b = b,
+                                                     .linear_offset = {0.5, 0.0},
+                                                     .collide_connected = collide});
+                    break;
+                }
+                BOOST_TEST(w.joint_collide_connected(j) == collide);
+                w.step(dt);
+                BOOST_TEST(w.contacts().size() == (collide ? 1u : 0u));
+            }
+        }
+    }
+}
+
 // Oracle: free fall (IM1) and DD27's joint filter. A box on a vertical prismatic joint above a
 // static floor, not colliding with it (collide_connected false) falls through it freely; a
 // second one, switched to collide at run time, lands and rests on it; switched back while
@@ -608,24 +663,36 @@ BOOST_AUTO_TEST_CASE(a_distance_rod_made_to_collide_connected_keeps_its_box_on_t
 // Oracle: DD23's translation s = a . (p_B + r_B - p_A - r_A) and uniform motion (IM1, no
 // force): a box on a prismatic joint along x, anchored 0.5 m off its centre (and off the
 // static body's origin), is set sliding at 1.5 m/s: after t its anchors are 1.5 t apart along
-// the axis, so the joint reads s = 1.5 t, at every step (to round-off).
+// the axis, so the joint reads s = 1.5 t, at every step (to round-off). The same with body A a
+// free dynamic carriage whose centre of mass lies off its origin (a box centred at (0.7, 0.4)
+// in its frame): sliding along the axis, the box pulls on nothing, so A stays where it is.
 BOOST_AUTO_TEST_CASE(joint_translation_reads_the_slide_of_an_anchor_off_the_centre,
                      *utf::label("DD23")) {
-    World w(world_def(0.0));
-    const BodyId ground = static_body(w, {-3.0, 0.0});
-    const BodyId slider = w.create_body(BodyDef{.position = {1.0, 0.0}});
-    w.create_shape(slider, box_shape(2.0, 0.5));
-    PrismaticJointDef pd;
-    pd.body_a = ground;
-    pd.body_b = slider;
-    pd.anchor = {1.5, 0.0};
-    pd.axis = {1.0, 0.0};
-    const JointId j = w.create_joint(pd);
-    BOOST_TEST(std::abs(w.joint_translation(j)) <= 1e-15);
-    w.set_velocity(slider, {1.5, 0.0});
-    for (int k = 1; k <= 120; ++k) {
-        w.step(dt);
-        BOOST_TEST_REQUIRE(w.joint_translation(j) == 1.5 * k * dt, tt::tolerance(1e-9));
+    for (const bool carriage : {false, true}) {
+        BOOST_TEST_CONTEXT((carriage ? "a dynamic carriage" : "a static body")) {
+            World w(world_def(0.0));
+            BodyId a;
+            if (carriage) {
+                a = w.create_body(BodyDef{.position = {-3.0, 0.0}});
+                w.create_shape(a, box_shape(1.0, 1.0, {}, {0.7, 0.4}));
+            } else {
+                a = static_body(w, {-3.0, 0.0});
+            }
+            const BodyId slider = w.create_body(BodyDef{.position = {1.0, 0.0}});
+            w.create_shape(slider, box_shape(2.0, 0.5));
+            PrismaticJointDef pd;
+            pd.body_a = a;
+            pd.body_b = slider;
+            pd.anchor = {1.5, 0.0};
+            pd.axis = {1.0, 0.0};
+            const JointId j = w.create_joint(pd);
+            BOOST_TEST(std::abs(w.joint_translation(j)) <= 1e-15);
+            w.set_velocity(slider, {1.5, 0.0});
+            for (int k = 1; k <= 120; ++k) {
+                w.step(dt);
+                BOOST_TEST_REQUIRE(w.joint_translation(j) == 1.5 * k * dt, tt::tolerance(1e-9));
+            }
+        }
     }
 }
 

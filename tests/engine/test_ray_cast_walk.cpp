@@ -74,6 +74,8 @@ ShapeDef random_shape(std::mt19937_64& rng) {
 
 } // namespace
 
+BOOST_AUTO_TEST_SUITE(ray_cast_walk)
+
 // Oracle: a brute-force search written in the test, apart from the broad phase's trees: every
 // live non-sensor shape ray-cast on its own (the shape-level ray_cast of shape_queries.hpp) at
 // its body's pose as the test set it, the least fraction kept and at equal fractions the lowest
@@ -139,3 +141,41 @@ BOOST_AUTO_TEST_CASE(ray_cast_walk_matches_brute_force_on_random_worlds, *utf::l
     BOOST_TEST(hits > 500);
     BOOST_TEST(misses > 100);
 }
+
+// Oracle: the tie rule of World::ray_cast ("ties go to the lower shape index"), by the same
+// brute force: four equal boxes on one spot, on bodies created in turn (one shape destroyed and
+// its slot given to a later one, so that creation order and index order differ), are hit at
+// the same fraction by rays from every side; the answer is the lowest live index.
+BOOST_AUTO_TEST_CASE(shapes_hit_at_one_fraction_go_to_the_lowest_index, *utf::label("internals")) {
+    World world(WorldDef{.gravity = {0.0, 0.0}});
+    std::vector<Placed> shapes;
+    std::vector<Pose> poses;
+    const ShapeDef box = box_shape(1.0, 1.0);
+    for (int i = 0; i < 4; ++i) {
+        BodyDef bd;
+        bd.type = BodyType::static_body;
+        bd.position = {2.0, 1.0};
+        const BodyId b = world.create_body(bd);
+        poses.resize(b.index + 1);
+        poses[b.index] = {bd.position, 0.0};
+        shapes.push_back({world.create_shape(b, box), b, box});
+    }
+    world.destroy_shape(shapes[0].id);
+    shapes.erase(shapes.begin());
+    shapes.push_back({world.create_shape(shapes[1].body, box), shapes[1].body, box});
+    const std::pair<Vec2d, Vec2d> rays[] = {{{-3.0, 1.0}, {10.0, 0.0}},
+                                            {{7.0, 1.0}, {-10.0, 0.0}},
+                                            {{2.0, -4.0}, {0.0, 10.0}},
+                                            {{2.0, 6.0}, {0.0, -10.0}},
+                                            {{-3.0, -3.0}, {10.0, 8.0}}};
+    for (const auto& ray : rays) {
+        const auto got = world.ray_cast(ray.first, ray.second);
+        const auto want = brute_force(shapes, poses, ray.first, ray.second);
+        BOOST_TEST_REQUIRE(want.has_value());
+        BOOST_TEST_REQUIRE(got.has_value());
+        BOOST_TEST((got->shape == want->shape), "ray from " << ray.first.x << ", " << ray.first.y);
+        BOOST_TEST(got->fraction == want->fraction);
+    }
+}
+
+BOOST_AUTO_TEST_SUITE_END()

@@ -11,6 +11,7 @@
 #include <bit>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <random>
 #include <span>
@@ -407,6 +408,40 @@ BOOST_AUTO_TEST_CASE(loads_set_back_to_zero_leave_no_trace_after_the_step,
         return w.snapshot();
     };
     BOOST_TEST((world(true) == world(false)));
+}
+
+// Oracle: world.hpp's contract for user data (any value of UserData, the game's own, kept as
+// given) and the snapshot's promise: the extreme values 0, 1, the largest UserData and the top
+// bit alone, on the world, a body, a shape and a joint, come back from a snapshot unchanged.
+BOOST_AUTO_TEST_CASE(user_data_of_any_value_comes_back_from_a_snapshot,
+                     *utf::label("reliability")) {
+    constexpr UserData largest = std::numeric_limits<UserData>::max();
+    for (const UserData v : {UserData(0), UserData(1), largest, largest - largest / 2}) {
+        BOOST_TEST_CONTEXT("user data " << v) {
+            World w;
+            const BodyId a = w.create_body({});
+            BodyDef bd;
+            bd.position = {2.0, 0.0};
+            const BodyId b = w.create_body(bd);
+            const ShapeId s = w.create_shape(a, circle_shape(0.5));
+            const JointId j = w.create_joint(RevoluteJointDef{.body_a = a, .body_b = b});
+            w.set_user_data(v);
+            w.set_user_data(b, v);
+            w.set_user_data(s, v);
+            w.set_user_data(j, v);
+            const World copy = World::from_snapshot(w.snapshot());
+            const BodyId a2 = in_world(copy, a), b2 = in_world(copy, b);
+            BOOST_TEST_REQUIRE(copy.shapes(a2).size() == 1u);
+            BOOST_TEST_REQUIRE(copy.joints(b2).size() == 1u);
+            BOOST_TEST(copy.user_data() == v);
+            BOOST_TEST(copy.user_data(b2) == v);
+            BOOST_TEST(copy.user_data(copy.shapes(a2)[0]) == v);
+            BOOST_TEST(copy.user_data(copy.joints(b2)[0]) == v);
+            BOOST_TEST(copy.user_data(a2) == UserData(0));
+            BOOST_TEST(w.user_data(s) == v);
+            BOOST_TEST(w.user_data(j) == v);
+        }
+    }
 }
 
 BOOST_AUTO_TEST_SUITE_END()
