@@ -130,15 +130,15 @@ BOOST_AUTO_TEST_CASE(the_floors_met_exactly_are_split, *utf::label("internals"))
             JointStreams streams;
             streams.split(joints, R, m);
             BOOST_TEST_REQUIRE(streams.regions() == R);
+            const auto by_rule = expected_streams(in, R, m);
             std::vector<std::uint32_t> got, expected;
             for (const SolvedJoint& s : joints)
                 got.push_back(s.joint);
-            for (const auto& stream : expected_streams(in, R, m))
+            for (const auto& stream : by_rule)
                 expected.insert(expected.end(), stream.begin(), stream.end());
             BOOST_TEST(got == expected, boost::test_tools::per_element());
             for (std::uint32_t r = 0; r < R; ++r)
-                BOOST_TEST(streams.begin(r + 1) - streams.begin(r) ==
-                           expected_streams(in, R, m)[r].size());
+                BOOST_TEST(streams.begin(r + 1) - streams.begin(r) == by_rule[r].size());
         }
     }
 }
