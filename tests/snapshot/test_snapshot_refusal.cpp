@@ -457,6 +457,33 @@ BOOST_AUTO_TEST_CASE(a_dynamic_bodys_mass_of_zero_is_refused, *utf::label("relia
     }
 }
 
+// A dynamic body's mass is read up to the largest finite double (its inverse written to match,
+// a subnormal) and is then stepped to finite velocities; infinity is refused, naming the field.
+// Oracle: the rule of the mass properties as update_mass leaves them (body_store.cpp's reader:
+// a dynamic body's mass > 0 and finite, the inverses its own), the upper boundary on each side.
+// The fields are found by their bytes (LoneDisc).
+BOOST_AUTO_TEST_CASE(a_dynamic_bodys_mass_is_read_up_to_the_largest_finite_value,
+                     *utf::label("reliability")) {
+    LoneDisc lone;
+    const double mass = lone.world.mass(lone.disc);
+    const std::vector<std::byte> good = lone.world.snapshot();
+    const auto forged = [&](double to) { return with_value_and_inverse(good, mass, to); };
+    const double largest = std::numeric_limits<double>::max();
+    World loaded = World::from_snapshot(forged(largest));
+    for (const BodyId b : loaded.bodies()) { // the one body, by the new world's handle
+        BOOST_TEST(loaded.mass(b) == largest);
+        loaded.step(1.0 / 60.0);
+        BOOST_TEST(std::isfinite(loaded.velocity(b).x));
+        BOOST_TEST(std::isfinite(loaded.velocity(b).y));
+    }
+    try {
+        World::from_snapshot(forged(std::numeric_limits<double>::infinity()));
+        BOOST_TEST(false, "an infinite mass accepted");
+    } catch (const SnapshotError& e) {
+        BOOST_TEST(e.field.ends_with("mass"), e.what());
+    }
+}
+
 // A body's moment of inertia is read as any finite non-negative value: the largest finite
 // double is accepted (its inverse written to match), and infinity is refused, naming the field.
 // Oracle: the rule of the mass properties as update_mass leaves them (body_store.cpp's reader:
