@@ -201,13 +201,21 @@ BOOST_AUTO_TEST_CASE(a_turning_kinematic_body_made_dynamic_under_a_lock_stops_tu
 // Oracle: a uniform rectangle's moment of inertia in closed form, m (w^2 + h^2) / 12, and R2's
 // rule for a given mass: it replaces the shapes' mass and keeps their distribution. A 2 m x 1 m
 // box of density 1 (2 kg, 5/6 kg m^2) given a mass of 6 kg has 6 * 5 / 12 = 2.5 kg m^2, as the
-// same box of density 3 has; given a moment of inertia as well, it has that one.
+// same box of density 3 has; given a moment of inertia as well, it has that one. Boxes of 1 kg
+// and of 0.5 kg (1 m x 1 m, 1 m x 0.5 m) given 6 kg have 6 (w^2 + h^2) / 12 too: the rule holds
+// whatever the shapes' own mass.
 BOOST_AUTO_TEST_CASE(a_given_mass_scales_the_shapes_moment_of_inertia, *utf::label("R2")) {
     World w(WorldDef{.gravity = {0.0, 0.0}});
-    const BodyId given = w.create_body(BodyDef{.mass = 6.0});
-    w.create_shape(given, box_shape(2.0, 1.0));
-    BOOST_TEST(w.mass(given) == 6.0);
-    BOOST_TEST(w.inertia(given) == 2.5, boost::test_tools::tolerance(1e-14));
+    for (const auto& [width, height] :
+         {std::pair{2.0, 1.0}, std::pair{1.0, 1.0}, std::pair{1.0, 0.5}}) {
+        BOOST_TEST_CONTEXT(width << " m x " << height << " m") {
+            const BodyId given = w.create_body(BodyDef{.mass = 6.0});
+            w.create_shape(given, box_shape(width, height));
+            BOOST_TEST(w.mass(given) == 6.0);
+            BOOST_TEST(w.inertia(given) == 6.0 * (width * width + height * height) / 12.0,
+                       boost::test_tools::tolerance(1e-14));
+        }
+    }
     const BodyId dense = w.create_body(BodyDef{});
     w.create_shape(dense, box_shape(2.0, 1.0, Material{3.0, 0.0, 0.6}));
     BOOST_TEST(w.mass(dense) == 6.0, boost::test_tools::tolerance(1e-14));

@@ -118,6 +118,41 @@ BOOST_AUTO_TEST_CASE(target_joint_holds_the_target_of_its_definition,
     BOOST_TEST(std::abs(world.position(disc).x - 2.0) <= 1e-3);
 }
 
+// Oracle: the soft step's definition (LC3; Catto, "Soft Step", 2024): a step of n substeps of
+// h = dt / n is n steps of one substep of h, each substep seeing the positions the ones before
+// it moved to, the joint's impulse carried from substep to substep as from step to step (warm
+// starting). A disc dragged by a target joint over 1 s at 1/60 s with 4 substeps is where the
+// same disc is after every 4th step at 1/240 s with 1 substep, to 1e-12 m (the positions sum
+// their substeps' moves in another order).
+BOOST_AUTO_TEST_CASE(a_targets_substeps_are_steps_of_one_substep,
+                     *utf::label("DD21") * utf::label("IM6") * utf::label("LC3")) {
+    const auto run = [](int substeps, double dt, int steps, int every) {
+        World world(WorldDef{.gravity = {0.0, 0.0}, .substeps = substeps});
+        const BodyId disc = world.create_body(BodyDef{});
+        world.create_shape(disc, circle_shape(0.25));
+        const JointId j = world.create_joint(TargetJointDef{
+            .body = disc, .hertz = 3.0, .damping_ratio = 0.7, .max_force = INFINITY});
+        world.set_joint_target(j, {1.0, 0.5});
+        std::vector<Vec2d> at;
+        for (int k = 1; k <= steps; ++k) {
+            world.step(dt);
+            if (k % every == 0)
+                at.push_back(world.position(disc));
+        }
+        return at;
+    };
+    const std::vector<Vec2d> substepped = run(4, 1.0 / 60.0, 60, 1);
+    const std::vector<Vec2d> stepped = run(1, 1.0 / 240.0, 240, 4);
+    BOOST_TEST_REQUIRE(substepped.size() == stepped.size());
+    for (std::size_t k = 0; k < stepped.size(); ++k) {
+        BOOST_TEST_CONTEXT("step " << k + 1) {
+            BOOST_TEST(std::abs(substepped[k].x - stepped[k].x) <= 1e-12);
+            BOOST_TEST(std::abs(substepped[k].y - stepped[k].y) <= 1e-12);
+        }
+    }
+    BOOST_TEST(stepped.back().x > 0.9); // it moved most of the way to the target
+}
+
 // Oracle: T1 at equilibrium. A free disc at (2, 1), grabbed on its rim at (2.25, 1) by a target
 // joint whose target is that same point, feels no force (the grabbed point is on the target),
 // so it stays where it is: after 1 s its centre is at (2, 1) and its angle 0, to 1e-9. Grabbed
