@@ -48,10 +48,11 @@ bool ended(const World& w, ShapeId a, ShapeId b) {
 BOOST_AUTO_TEST_SUITE(shape_control_effects)
 
 // Oracle: Coulomb's law (LC2) in closed form. A box sliding on level ground with the combined
-// coefficient mu (geometric mean of the two shapes') decelerates at mu g. Frictionless at first
-// (the box's coefficient 0), it keeps its speed; set to 0.25 against the ground's 1, mu = 0.5, and
-// the speed drops by 0.5 g t.
-BOOST_AUTO_TEST_CASE(friction_set_while_sliding_decelerates_at_mu_g, *utf::label("LC2")) {
+// coefficient mu (DD42's default: the geometric mean of the two shapes') decelerates at mu g.
+// Frictionless at first (the box's coefficient 0), it keeps its speed; set to 0.25 against the
+// ground's 1, mu = 0.5, and the speed drops by 0.5 g t.
+BOOST_AUTO_TEST_CASE(friction_set_while_sliding_decelerates_at_mu_g,
+                     *utf::label("LC2") * utf::label("DD42")) {
     World w(plain_world());
     add_ground(w, Material{1.0, 0.0, 1.0});
     BodyDef bd;
@@ -74,9 +75,10 @@ BOOST_AUTO_TEST_CASE(friction_set_while_sliding_decelerates_at_mu_g, *utf::label
 }
 
 // Oracle: DD12's rebound, v_after = e v_before, for a disc falling on a static floor whose
-// restitution is raised from 0 to 0.5 while the disc falls (the pair's restitution is the
-// larger of the two: 0.5).
-BOOST_AUTO_TEST_CASE(restitution_set_in_flight_gives_the_rebound_e_v, *utf::label("DD12")) {
+// restitution is raised from 0 to 0.5 while the disc falls (the pair's restitution is DD42's
+// default, the larger of the two: 0.5).
+BOOST_AUTO_TEST_CASE(restitution_set_in_flight_gives_the_rebound_e_v,
+                     *utf::label("DD12") * utf::label("DD42")) {
     World w(plain_world());
     const ShapeId floor = add_ground(w);
     BodyDef bd;

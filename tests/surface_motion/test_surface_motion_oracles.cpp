@@ -22,17 +22,19 @@ constexpr double g = 9.81;
 /// warm is WorldDef::enable_warm_starting; ball_first creates the ball before the ground, so
 /// that the ball is the first body of their pair (a contact orders its shapes by creation);
 /// a ground_radius above 0 makes the ground a capsule of that radius instead of a box, its top
-/// through the origin as the box's.
+/// through the origin as the box's; radius is the ball's.
 struct Roll {
     World world;
     BodyId ball;
     ShapeId ball_shape;
     Vec2d d, p0;
-    static constexpr double r = 0.5;
+    static constexpr double default_radius = 0.5;
+    double r;
     Roll(double theta, double v0, double c_ball, double c_ground = 0.0, bool warm = true,
-         bool ball_first = false, double ground_radius = 0.0)
+         bool ball_first = false, double ground_radius = 0.0, double radius = default_radius)
         : world(
-              WorldDef{.gravity = {0.0, -g}, .enable_warm_starting = warm, .enable_sleep = false}) {
+              WorldDef{.gravity = {0.0, -g}, .enable_warm_starting = warm, .enable_sleep = false}),
+          r(radius) {
         d = {std::cos(theta), -std::sin(theta)};
         const Vec2d n{std::sin(theta), std::cos(theta)}; // the slope's upward normal
         const auto make_ground = [&] {
@@ -105,7 +107,8 @@ BOOST_AUTO_TEST_SUITE(surface_motion_oracles)
 // Oracle: closed form (stopping_distance above): on flat ground a ball of c = 0.05 at 3 m/s
 // stops after 3 v0^2 / (4 c g) = 13.76 m, within the integration bound; the ground's own
 // coefficient 0 mixes to the ball's (max), and the ball stops alike when it is the pair's first
-// body. With warm starting off (each step's resistance then
+// body. The distance does not depend on the radius: a ball of 2 m (I = 8 pi kg m^2, so that
+// 1 / I is below 1) stops there too. With warm starting off (each step's resistance then
 // starts from none) it slows at the same rate. Without resistance the ball still rolls on.
 BOOST_AUTO_TEST_CASE(ball_rolls_to_rest_on_flat_ground, *utf::label("DD46")) {
     const double v0 = 3.0, c = 0.05;
@@ -119,6 +122,9 @@ BOOST_AUTO_TEST_CASE(ball_rolls_to_rest_on_flat_ground, *utf::label("DD46")) {
     // The ball as the pair's first body: DD46 reads the relative spin omega_b - omega_a.
     Roll first(0.0, v0, c, 0.0, true, true);
     BOOST_TEST(std::abs(first.distance_to_rest(12.0) - s) <= integration_bound(v0));
+    Roll big(0.0, v0, c, 0.0, true, false, 0.0, 2.0);
+    BOOST_TEST(std::abs(big.distance_to_rest(12.0) - stopping_distance(v0, c, 0.0)) <=
+               integration_bound(v0));
     // Warm starting off: the same deceleration, (2/3) c g (the torque c r m g on I + m r^2 =
     // (3/2) m r^2), read as the speed after 4 s, within one step's change of speed.
     Roll cold(0.0, v0, c, 0.0, false);
@@ -141,7 +147,7 @@ BOOST_AUTO_TEST_CASE(a_capsule_gives_its_radius_as_the_lever, *utf::label("DD46"
     const double v0 = 3.0, c = 0.05, R = 0.75;
     Roll roll(0.0, v0, c, 0.0, true, false, R);
     const double s = roll.distance_to_rest(12.0);
-    const double closed = stopping_distance(v0, c, 0.0) * Roll::r / R;
+    const double closed = stopping_distance(v0, c, 0.0) * Roll::default_radius / R;
     BOOST_TEST_MESSAGE("on a capsule: " << s << " m, closed form " << closed);
     BOOST_TEST(std::abs(s - closed) <= integration_bound(v0));
 }
