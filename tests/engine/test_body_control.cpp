@@ -125,6 +125,45 @@ BOOST_AUTO_TEST_CASE(type_changes_follow_r2,
     }
 }
 
+// Oracle: R2 and set_body_type's statement that the mass follows the new type: a body made
+// kinematic has no mass, as one created kinematic, so its centre is its origin. A dynamic body
+// whose box lies 1 m off its origin (its centre of mass there), made kinematic and set moving
+// and turning, has the mass data and steps bit for bit as a body created kinematic with the
+// same box, pose and velocities, in a world of its own.
+BOOST_AUTO_TEST_CASE(a_body_made_kinematic_is_one_created_kinematic, *utf::label("R2")) {
+    const ShapeDef offset = box_shape(1.0, 0.5, Material{}, {1.0, 0.0});
+    const Vec2d v{1.0, -2.0};
+    const double omega = 3.0;
+    World made(WorldDef{.gravity = {0.0, 0.0}}), created(WorldDef{.gravity = {0.0, 0.0}});
+    const BodyId a = made.create_body(BodyDef{.position = {2.0, 1.0}, .angle = 0.5});
+    made.create_shape(a, offset);
+    BOOST_TEST_REQUIRE(made.local_center(a).x == 1.0); // the box's centre, off the origin
+    made.set_body_type(a, BodyType::kinematic);
+    const BodyId b = created.create_body(
+        BodyDef{.type = BodyType::kinematic, .position = {2.0, 1.0}, .angle = 0.5});
+    created.create_shape(b, offset);
+    for (World* w : {&made, &created}) {
+        const BodyId id = w == &made ? a : b;
+        w->set_velocity(id, v);
+        w->set_angular_velocity(id, omega);
+    }
+    BOOST_TEST(made.local_center(a).x == created.local_center(b).x);
+    BOOST_TEST(made.local_center(a).y == created.local_center(b).y);
+    BOOST_TEST(made.mass(a) == 0.0);
+    for (int n = 1; n <= 30; ++n) {
+        made.step(dt);
+        created.step(dt);
+        const BodyState s = made.state(a), r = created.state(b);
+        BOOST_TEST_CONTEXT("step " << n) {
+            BOOST_TEST(s.position.x == r.position.x);
+            BOOST_TEST(s.position.y == r.position.y);
+            BOOST_TEST(s.orientation == r.orientation);
+            BOOST_TEST(s.velocity.x == r.velocity.x);
+            BOOST_TEST(s.velocity.y == r.velocity.y);
+        }
+    }
+}
+
 // Oracle: IM5's closed form without applied forces (no gravity), per substep v_k = v_0 (1 + h
 // c_v)^(-k) and omega_k = omega_0 (1 + h c_omega)^(-k), for a dynamic body; and R2's kinematic
 // body, which keeps the velocity it is given (damping is IM5's, of dynamic bodies). A body with

@@ -255,6 +255,44 @@ BOOST_AUTO_TEST_CASE(damped_and_undamped_bodies_in_one_world,
                boost::test_tools::tolerance(1e-12));
 }
 
+// Oracle: IM5's decay law in closed form, as in the first case: a body made kinematic with
+// damping along one motion only (c = 0.9 s^-1 linear, none angular; the other body the
+// reverse), turned dynamic and set moving, decays along that motion by f^n with
+// f = 1 / (1 + h c) and keeps the other velocity exactly. The damping is the body's setting, so
+// a change of type keeps it.
+BOOST_AUTO_TEST_CASE(a_body_turned_dynamic_keeps_its_damping,
+                     *utf::label("IM5") * utf::label("DD17") * utf::label("DD18") *
+                         utf::label("LC2")) {
+    const double c = 0.9, w0 = 2.0;
+    const Vec2d v0{1.5, -0.5};
+    World world(WorldDef{.gravity = {0.0, 0.0}});
+    BodyId bodies[2];
+    for (int k = 0; k < 2; ++k) {
+        BodyDef def;
+        def.type = BodyType::kinematic;
+        def.position = {3.0 * k, 0.0};
+        def.linear_damping = k == 0 ? c : 0.0;
+        def.angular_damping = k == 0 ? 0.0 : c;
+        bodies[k] = world.create_body(def);
+        world.create_shape(bodies[k], box_shape(0.5, 0.25, Material{2.0, 0.0, 0.0}));
+        world.set_body_type(bodies[k], BodyType::dynamic);
+        world.set_velocity(bodies[k], v0);
+        world.set_angular_velocity(bodies[k], w0);
+    }
+    const double h = dt / world.settings().substeps;
+    const double f = 1.0 / (1.0 + h * c);
+    for (int step = 1; step <= 60; ++step)
+        world.step(dt);
+    const double decay = std::pow(f, 60 * world.settings().substeps);
+    const BodyState linear = world.state(bodies[0]), angular = world.state(bodies[1]);
+    BOOST_TEST(linear.velocity.x == v0.x * decay, boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(linear.velocity.y == v0.y * decay, boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(linear.angular_velocity == w0);
+    BOOST_TEST(angular.velocity.x == v0.x);
+    BOOST_TEST(angular.velocity.y == v0.y);
+    BOOST_TEST(angular.angular_velocity == w0 * decay, boost::test_tools::tolerance(1e-12));
+}
+
 // Oracle: IM5's factor is exactly 1 for a zero rate (A6's regime), so a body whose damping is
 // switched off by set_damping moves bit for bit as one created undamped, and switching it on
 // later equals creating it damped at that state (same state hashes). Not an SRS-level check of
