@@ -188,4 +188,34 @@ BOOST_AUTO_TEST_CASE(distance_limits_bound_a_soft_spring,
     }
 }
 
+// Oracle: Newton's first law at rest. Without gravity a persistent force F = 10 N pushes a
+// disc towards a static point, to which a soft distance spring (1 Hz, rest length 1 m) holds it
+// with its travel limited to [0.9, 2] m: the spring alone would yield to 0.75 m, so the disc
+// comes to rest on the minimum length, where the spring and the limit together push it back
+// with F. The joint's reaction force on the disc is then -F, and the disc rests at 0.9 m
+// within 5 mm (the soft bias's give under the load).
+BOOST_AUTO_TEST_CASE(a_spring_resting_on_its_minimum_length_holds_the_load,
+                     *utf::label("DD20") * utf::label("LC3")) {
+    constexpr double F = 10.0;
+    World world(WorldDef{.gravity = {0.0, 0.0}, .enable_sleep = false});
+    const BodyId anchor = world.create_body(BodyDef{.type = BodyType::static_body});
+    const BodyId disc = world.create_body(BodyDef{.position = {1.0, 0.0}, .force = {-F, 0.0}});
+    world.create_shape(disc, circle_shape(0.1));
+    const JointId j = world.create_joint(DistanceJointDef{.body_a = anchor,
+                                                          .body_b = disc,
+                                                          .anchor_a = {0.0, 0.0},
+                                                          .anchor_b = {1.0, 0.0},
+                                                          .hertz = 1.0,
+                                                          .damping_ratio = 1.0,
+                                                          .enable_limit = true,
+                                                          .min_length = 0.9,
+                                                          .max_length = 2.0});
+    for (int k = 0; k < 300; ++k)
+        world.step(1.0 / 60.0);
+    BOOST_TEST(std::abs(world.velocity(disc).x) < 1e-9);
+    BOOST_TEST(std::abs(world.position(disc).x - 0.9) <= 5e-3);
+    BOOST_TEST(world.joint_reaction_force(j).x == F, boost::test_tools::tolerance(1e-9));
+    BOOST_TEST(world.joint_reaction_force(j).y == 0.0);
+}
+
 BOOST_AUTO_TEST_SUITE_END()
