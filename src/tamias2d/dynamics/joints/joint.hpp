@@ -117,8 +117,8 @@ inline double reaction_angular_impulse(JointType type, const JointStepState& st)
     return 0.0;
 }
 
-/// \srs{DD35} A distance joint's impulse along its axis in the last substep (N s): the rod's or
-/// spring's, the limits', and the motor's while it is enabled.
+/// \srs{DD20, DD35} A distance joint's impulse along its axis in the last substep (N s): the
+/// rod's or spring's and the limits' (DD20), and the motor's while it is enabled (DD35).
 inline double distance_axial_impulse(const Joint& j, const JointStepState& st) {
     const double held = st.axial_impulse + st.lower_impulse - st.upper_impulse;
     return j.enable_motor ? held + st.motor_impulse : held;
@@ -131,8 +131,10 @@ inline double distance_axial_impulse(const Joint& j) {
     return distance_axial_impulse(j, j.step);
 }
 
-/// The impulse (N s) the joint applied to body B in the last substep: over the substep's
-/// length, its reaction force.
+/// \srs{DD20, DD23, DD25} The impulse (N s) the joint applied to body B in the last substep:
+/// over the substep's length, its reaction force. The distance, prismatic and wheel joints'
+/// parts along and across their axes are summed here (DD20, DD23, DD25); the other kinds keep
+/// theirs as one linear impulse.
 inline Vec2d reaction_impulse(const Joint& j) {
     switch (j.type) {
     case JointType::distance:
