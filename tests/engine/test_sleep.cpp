@@ -222,19 +222,35 @@ BOOST_AUTO_TEST_CASE(a_body_at_rest_whose_type_changes_rests_time_to_sleep_again
     }
 }
 
-// Oracle: the rule (at rest for time_to_sleep), as above. A sleeping box is disabled and
-// enabled again (set_enabled): it is then awake, and it sleeps only once it has rested for
-// time_to_sleep after it was enabled, not at once; on the ground and alone in the air.
+// Oracle: the rule (at rest for time_to_sleep), as above. A box is disabled and enabled again
+// (set_enabled, which wakes it: its time at rest starts again from zero): it is then awake, and
+// it sleeps only once it has rested for time_to_sleep after it was enabled, not at once: when
+// it was asleep, on the ground and alone in the air, and when it was awake in the air and had
+// already rested for 20 steps (not 20 steps fewer; on the ground the contacts found again
+// after enabling move it, which restarts its time at rest in any case).
 BOOST_AUTO_TEST_CASE(a_body_enabled_again_rests_time_to_sleep_before_it_sleeps) {
-    for (const bool on_ground : {true, false}) {
-        BOOST_TEST_CONTEXT((on_ground ? "on the ground" : "in the air")) {
+    struct Case {
+        bool on_ground, asleep;
+        const char* name;
+    };
+    for (const Case c :
+         {Case{true, true, "asleep on the ground"}, Case{false, true, "asleep in the air"},
+          Case{false, false, "awake in the air, at rest for 20 steps"}}) {
+        BOOST_TEST_CONTEXT(c.name) {
             World w(def_with_sleep());
             ground(w);
             BodyDef d;
-            d.gravity_scale = on_ground ? 1.0 : 0.0;
-            const BodyId b = box(w, 0.0, on_ground ? 0.5 : 10.0, d);
-            BOOST_TEST_REQUIRE(steps_until_asleep(w, {b}, 300) > 0); // asleep first
+            d.gravity_scale = c.on_ground ? 1.0 : 0.0;
+            const BodyId b = box(w, 0.0, c.on_ground ? 0.5 : 10.0, d);
             const int needed = int(std::ceil(w.settings().time_to_sleep / dt - 1e-9));
+            BOOST_TEST_REQUIRE(needed > 20);
+            if (c.asleep) {
+                BOOST_TEST_REQUIRE(steps_until_asleep(w, {b}, 300) > 0);
+            } else {
+                for (int k = 0; k < 20; ++k)
+                    w.step(dt);
+                BOOST_TEST_REQUIRE(w.is_awake(b));
+            }
             w.set_enabled(b, false);
             w.set_enabled(b, true);
             BOOST_TEST(w.is_awake(b));
