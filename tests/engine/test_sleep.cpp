@@ -527,6 +527,28 @@ BOOST_AUTO_TEST_CASE(a_body_put_to_sleep_drops_its_one_step_loads) {
     BOOST_TEST(w.angular_velocity(a) == 0.0);
 }
 
+// Oracle: the documented rule of set_awake, a body put to sleep has zero velocities, and
+// Newton's first law once it is woken: without gravity a box moving at (1, 0.5) m/s and turning
+// at 2 rad/s, put to sleep and woken, reads zero velocities and stays exactly where it was,
+// unturned, over the next step.
+BOOST_AUTO_TEST_CASE(a_moving_body_put_to_sleep_stops_moving_and_turning) {
+    WorldDef d = def_with_sleep();
+    d.gravity = {0.0, 0.0};
+    World w(d);
+    const BodyId a =
+        box(w, 0.0, 1.0, BodyDef{.linear_velocity = {1.0, 0.5}, .angular_velocity = 2.0});
+    w.step(dt);
+    const Vec2d p = w.position(a);
+    const double phi = w.orientation(a);
+    w.set_awake(a, false);
+    BOOST_TEST(same_bits(w.velocity(a), {0.0, 0.0}));
+    BOOST_TEST(w.angular_velocity(a) == 0.0);
+    w.set_awake(a, true);
+    w.step(dt);
+    BOOST_TEST(same_bits(w.position(a), p));
+    BOOST_TEST(w.orientation(a) == phi);
+}
+
 // Oracle: the rule "an island falls asleep ... Its velocities become zero" (docs/user-guide.md,
 // "Sleeping"). Without gravity a box drifts at 1 cm/s and turns at 0.01 rad/s, both below the
 // tolerances, so it falls asleep after time_to_sleep while still moving; asleep, its velocities
