@@ -111,7 +111,8 @@ class WideContactSolver {
     /// neither fill nor read it.
     LargeArray<WideSurfaceMotion> surfaces_;
     bool with_surfaces_ = false;
-    /// The surface motion from pack i on, or nullptr in a step without any.
+    /// \srs{DD46, DD47} The surface motion (rolling resistance, tangent speed) from pack i on,
+    /// or nullptr in a step without any.
     WideSurfaceMotion* surface(std::size_t i) {
         return with_surfaces_ ? surfaces_.data() + i : nullptr;
     }
