@@ -21,14 +21,15 @@ BOOST_AUTO_TEST_SUITE(dd38_explosion_impulse)
 // strength, with or without a falloff, also where (r + f - d) / f rounds below 1 (r = 0.7 m,
 // f = 0.1 m: 0.9999999999999998).
 BOOST_AUTO_TEST_CASE(strength_in_each_case_and_on_its_boundaries, *utf::label("DD38")) {
-    BOOST_TEST(strength(0.5, 1.0, 2.0) == 1.0); // within the radius
-    BOOST_TEST(strength(0.0, 0.0, 0.0) == 1.0); // a point blast at its own centre
-    BOOST_TEST(strength(1.0, 1.0, 0.0) == 1.0); // on the radius, no falloff
-    BOOST_TEST(strength(0.7, 0.7, 0.1) == 1.0); // on the radius, with a falloff
-    BOOST_TEST(strength(3.0, 2.0, 2.0) == 0.5); // half way through the falloff
-    BOOST_TEST(strength(4.0, 2.0, 2.0) == 0.0); // at its end
-    BOOST_TEST(strength(9.0, 2.0, 2.0) == 0.0); // beyond it
-    BOOST_TEST(strength(1.5, 1.0, 0.0) == 0.0); // beyond the radius, no falloff
+    BOOST_TEST(strength(0.5, 1.0, 2.0) == 1.0);  // within the radius
+    BOOST_TEST(strength(0.0, 0.0, 0.0) == 1.0);  // a point blast at its own centre
+    BOOST_TEST(strength(1.0, 1.0, 0.0) == 1.0);  // on the radius, no falloff
+    BOOST_TEST(strength(0.7, 0.7, 0.1) == 1.0);  // on the radius, with a falloff
+    BOOST_TEST(strength(3.0, 2.0, 2.0) == 0.5);  // half way through the falloff
+    BOOST_TEST(strength(4.0, 2.0, 2.0) == 0.0);  // at its end
+    BOOST_TEST(strength(9.0, 2.0, 2.0) == 0.0);  // beyond it
+    BOOST_TEST(strength(1.5, 1.0, 0.0) == 0.0);  // beyond the radius, no falloff
+    BOOST_TEST(strength(1.5, 1.0, -0.0) == 0.0); // a falloff of -0 is none too
 }
 
 // Oracle: DD38's products by hand: J_shape = s j_w w = 0.5 * 2 N s/m * 3 m = 3 N s;
