@@ -288,15 +288,15 @@ BOOST_AUTO_TEST_CASE(mass_data_changed_mid_flight_keeps_the_rigid_motion,
 
 // Oracle: DD41's closed form where the centre moves along one axis only: a body at angle 0
 // moving at v = (1, 2) and turning at omega = 3 rad/s is given its centre at (0.5, 0), then at
-// (0, 0.5), then at (0, 1) in its frame: the new centre moves at v + omega x d, (1, 3.5),
-// (-0.5, 2) and (-2, 2).
+// (0, 0.5), then at (1, 0), then at (0, 1) in its frame: the new centre moves at
+// v + omega x d, (1, 3.5), (-0.5, 2), (1, 5) and (-2, 2).
 BOOST_AUTO_TEST_CASE(a_centre_moved_along_one_axis_takes_the_rigid_velocity,
                      *utf::label("DD41") * utf::label("DD9")) {
     struct Case {
         Vec2d center, velocity;
     };
     for (const Case& c : {Case{{0.5, 0.0}, {1.0, 3.5}}, Case{{0.0, 0.5}, {-0.5, 2.0}},
-                          Case{{0.0, 1.0}, {-2.0, 2.0}}}) {
+                          Case{{1.0, 0.0}, {1.0, 5.0}}, Case{{0.0, 1.0}, {-2.0, 2.0}}}) {
         World w(WorldDef{.gravity = {0.0, 0.0}});
         const BodyId b =
             w.create_body(BodyDef{.linear_velocity = {1.0, 2.0}, .angular_velocity = 3.0});
